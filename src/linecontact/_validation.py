@@ -1,0 +1,75 @@
+"""Input checks at the public boundary: every message names the parameter and its range."""
+
+from __future__ import annotations
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+
+def _first_bad(arr: NDArray, bad: NDArray) -> object:
+    v = arr[bad].flat[0]
+    return float(v)
+
+
+def check_array(name: str, value: ArrayLike, *, low: float = 0.0, low_inclusive: bool = False,
+                high: float = np.inf, high_inclusive: bool = False,
+                allow_inf: bool = False) -> NDArray[np.float64]:
+    """Return ``value`` as a float array after checking that it lies in the stated range.
+
+    Raises
+    ------
+    ValueError
+        Naming ``name``, the valid range and the first offending value.
+    """
+    try:
+        arr = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise ValueError(f"{name} must be a real number or an array of them, got {value!r}") \
+            from None
+    lo_br = "[" if low_inclusive else "("
+    hi_br = "]" if high_inclusive else ")"
+    hi_txt = "inf" if np.isinf(high) else f"{high:g}"
+    rng = f"{lo_br}{low:g}, {hi_txt}{hi_br}"
+    if arr.size == 0:
+        raise ValueError(f"{name} must not be empty")
+    nan = np.isnan(arr)
+    if nan.any():
+        raise ValueError(f"{name} must be a finite number in {rng}, got nan")
+    if not allow_inf and np.isinf(arr).any():
+        raise ValueError(f"{name} must be a finite number in {rng}, got "
+                         f"{_first_bad(arr, np.isinf(arr))}")
+    too_low = arr < low if low_inclusive else arr <= low
+    too_high = arr > high if high_inclusive else arr >= high
+    if np.isinf(high) and allow_inf:
+        too_high = np.zeros_like(too_low)
+    bad = too_low | too_high
+    if bad.any():
+        raise ValueError(f"{name} must be in {rng}, got {_first_bad(arr, bad)}")
+    return arr
+
+
+def positive(name: str, value: ArrayLike) -> NDArray[np.float64]:
+    """Finite and strictly positive."""
+    return check_array(name, value)
+
+
+def non_negative(name: str, value: ArrayLike) -> NDArray[np.float64]:
+    """Finite and >= 0."""
+    return check_array(name, value, low_inclusive=True)
+
+
+def finite(name: str, value: ArrayLike) -> NDArray[np.float64]:
+    """Any finite real number."""
+    return check_array(name, value, low=-np.inf, low_inclusive=True)
+
+
+def scalar_or_array(*arrays: NDArray) -> bool:
+    """True when every input is 0-d (results are then returned as scalars)."""
+    return all(np.ndim(a) == 0 for a in arrays)
+
+
+def out(value: NDArray, scalar: bool):
+    """Return a Python float (or bool/int) for scalar calls, the array otherwise."""
+    if scalar:
+        return value.item() if isinstance(value, np.ndarray) else value
+    return value

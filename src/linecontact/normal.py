@@ -1,0 +1,799 @@
+r"""Normal contact of a cylinder with Maugis--Dugdale adhesion (paper Eqs. 5--14).
+
+Units as in :mod:`linecontact.reference`: ``a/R``, ``c/R``, ``F/(E h)``, ``sigma0/E``,
+``R/h``; compressive pressure and load positive.
+
+Two solvers give the same :class:`NormalContact`:
+
+``method="closed-form"`` (default)
+    The Maugis--Dugdale line-contact solution (Baney & Hui 1997; Johnson & Greenwood
+    2008), one scalar root per point.
+``method="collocation"``
+    The paper's route: the singular integral equation (Eq. 9) for the bounded pressure
+    :math:`\bar p = p + \sigma_0` on :math:`|x| < a`, solved by Gauss--Chebyshev collocation
+    (:class:`linecontact.sie.BoundedSolver`), with the separation condition (Eq. 11) for the
+    end ``c`` of the adhesive zone and equilibrium (Eq. 12) for the load. The log kernel of
+    Eq. 11, singular at :math:`\xi = a`, is integrated by product integration. The number of
+    collocation points adapts per point to the distance between ``c`` and ``a`` (the log
+    source at ``x = c`` limits the convergence rate to :math:`(c/a + \sqrt{c^2/a^2-1})^{-n}`).
+
+In plane strain the rigid approach of remote points is defined only up to a logarithmic
+constant, so no approach is reported: the load is controlled by ``F`` or by ``a``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, fields
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from . import reference as _ref
+from ._validation import check_array, finite, non_negative, positive, scalar_or_array
+from .errors import ConvergenceError, NoEquilibriumError
+from .sie import BoundedSolver
+
+__all__ = [
+    "Equilibrium",
+    "LoadCurve",
+    "NonContact",
+    "NormalContact",
+    "PullOff",
+    "ZERO_WIDTH_RTOL",
+    "contact_for_load",
+    "equilibria",
+    "load_curve",
+    "non_contact",
+    "normal_contact",
+    "pull_off",
+]
+
+#: A load minimum closer to Eq. (14) than this (relative) is reported as pull-off at zero
+#: width: it lies at a contact width exponentially small in 1/kappa (see docs/derivations.md).
+ZERO_WIDTH_RTOL = 1e-9
+
+_SIZES = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, 768, 1024, 1536, 2048)
+
+
+def _as_output(value, scalar: bool):
+    if isinstance(value, np.ndarray) and scalar and value.ndim == 0:
+        return value.item()
+    if isinstance(value, np.ndarray) and scalar and value.size == 1:
+        return value.reshape(()).item()
+    return value
+
+
+class _Result:
+    """Mixin: dict / record export of frozen result dataclasses."""
+
+    def to_dict(self) -> dict:
+        """All fields, arrays as lists (JSON-ready)."""
+        d = {}
+        for f in fields(self):  # type: ignore[arg-type]
+            if not f.repr:
+                continue
+            v = getattr(self, f.name)
+            d[f.name] = v.tolist() if isinstance(v, np.ndarray) else v
+        return d
+
+    def to_records(self) -> list[dict]:
+        """One dict per point (arrays are broadcast; scalars repeat)."""
+        d = {k: np.atleast_1d(np.asarray(v, dtype=object if isinstance(v, str) else None))
+             for k, v in self.to_dict().items()}
+        n = max(v.size for v in d.values())
+        recs = []
+        for i in range(n):
+            rec = {}
+            for k, v in d.items():
+                x = v.reshape(-1)[i if v.size == n else 0]
+                rec[k] = x.item() if hasattr(x, "item") else x
+            recs.append(rec)
+        return recs
+
+
+@dataclass(frozen=True)
+class NormalContact(_Result):
+    """Adhesive normal contact at given contact half-widths.
+
+    Attributes
+    ----------
+    a_over_R, c_over_R : ndarray or float
+        Contact and adhesive-zone half-widths over the radius.
+    F_over_Eh : ndarray or float
+        Load per unit length over ``E h`` (compressive positive).
+    R_over_h, sigma0_over_E : ndarray or float
+        The parameters, broadcast.
+    method : str
+        ``"closed-form"`` or ``"collocation"``.
+    n_collocation : ndarray or int
+        Collocation nodes used at each point (0 for the closed form).
+    residual_separation : ndarray or float
+        Residual of the separation condition (gap at ``c`` minus ``h``) over ``h``.
+    residual_consistency : ndarray or float
+        Residual of the collocation consistency condition (0 for the closed form).
+    error_estimate : ndarray or float
+        Estimated discretisation error (Chebyshev tail over the largest coefficient; 0 for
+        the closed form).
+    converged : ndarray or bool
+        All tolerances met.
+    stable : ndarray or bool
+        ``dF/da > 0``: the state is stable under load control.
+    """
+
+    a_over_R: NDArray | float
+    c_over_R: NDArray | float
+    F_over_Eh: NDArray | float
+    R_over_h: NDArray | float
+    sigma0_over_E: NDArray | float
+    method: str
+    n_collocation: NDArray | int
+    residual_separation: NDArray | float
+    residual_consistency: NDArray | float
+    error_estimate: NDArray | float
+    converged: NDArray | bool
+    stable: NDArray | bool
+
+    @property
+    def c_over_a(self):
+        """Adhesive-zone to contact half-width ratio ``c/a`` (>= 1)."""
+        return np.asarray(self.c_over_R) / np.asarray(self.a_over_R)
+
+    def pressure(self, x_over_R: ArrayLike) -> NDArray:
+        r"""Contact pressure ``p/E`` (compressive positive) at ``x/R``.
+
+        ``x_over_R`` has shape ``(m,)`` (or broadcasts against the points plus one trailing
+        axis); the result has shape ``points.shape + (m,)``. Inside the contact it is the
+        solution of the method used; ``-sigma0/E`` in the adhesive zones; zero beyond.
+        """
+        x = np.asarray(x_over_R, dtype=float)
+        A = np.asarray(self.a_over_R, dtype=float)[..., None]
+        C = np.asarray(self.c_over_R, dtype=float)[..., None]
+        s = np.asarray(self.sigma0_over_E, dtype=float)[..., None]
+        ax = np.abs(x)
+        if self.method == "closed-form":
+            with np.errstate(divide="ignore", invalid="ignore"):
+                inner = 0.5 * np.sqrt(np.clip(A * A - x * x, 0, None)) - (2 * s / np.pi) * \
+                    np.arctan(np.sqrt((C * C - A * A) / np.clip(A * A - x * x, 1e-300, None)))
+        else:
+            inner = self._collocation_pressure(x)
+        p = np.where(ax < A, inner, np.where(ax <= C, -s, 0.0))
+        return p
+
+    def _collocation_pressure(self, x: NDArray) -> NDArray:
+        A = np.atleast_1d(np.asarray(self.a_over_R, dtype=float))
+        C = np.atleast_1d(np.asarray(self.c_over_R, dtype=float))
+        rho = np.broadcast_to(np.asarray(self.R_over_h, float), A.shape)
+        s = np.broadcast_to(np.asarray(self.sigma0_over_E, float), A.shape)
+        nn = np.broadcast_to(np.asarray(self.n_collocation), A.shape)
+        m = C / A
+        u = np.arccosh(np.maximum(m, 1.0))
+        xx = np.broadcast_to(x, A.shape + x.shape[-1:]) if x.ndim <= 1 else \
+            np.broadcast_to(x, A.shape + x.shape[-1:])
+        result = np.zeros(A.shape + x.shape[-1:])
+        for n in np.unique(nn):
+            sel = nn == n
+            solver = BoundedSolver(int(n))
+            f = _rhs(solver, A[sel], s[sel], u[sel])[0]
+            sol = solver.solve(f)
+            phi = solver.evaluate(sol, xx[sel] / A[sel, None])
+            result[sel] = phi - s[sel, None]
+        del rho
+        return result.reshape(np.shape(self.a_over_R) + x.shape[-1:])
+
+
+# --------------------------------------------------------------------------------------------
+# closed form
+
+
+def _closed_form_from_u(u, kap, rho, s, ustar):
+    bp = _ref._branch_point(u, kap)
+    sq = np.sqrt(2 / rho)
+    A = bp["abar"] * sq
+    C = bp["X"] * bp["Ct"] * sq
+    F = (np.pi / 2) * bp["phi"]
+    stable = u <= ustar
+    return A, C, F, stable
+
+
+def _ustar(kap: NDArray) -> NDArray:
+    """U of the load minimum (inf where the minimum sits at vanishing width, kappa = 0)."""
+    kap = np.asarray(kap, dtype=float)
+    us = np.full(kap.shape, np.inf)
+    pos = kap > 0
+    if pos.any():
+        us[pos] = _ref._u_stationary(kap[pos])
+    return us
+
+
+def _closed_form(A, rho, s):
+    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    abar = A * np.sqrt(rho / 2)
+    u, res, it = _ref._u_of_abar(abar, kap)
+    bp = _ref._branch_point(u, kap)
+    C = bp["X"] * bp["Ct"] * np.sqrt(2 / rho)
+    F = (np.pi / 2) * bp["phi"]
+    return u, C, F, res, bp["dphi"] < 0
+
+
+# --------------------------------------------------------------------------------------------
+# collocation
+
+
+def _rhs(solver: BoundedSolver, A, s, u):
+    """Right-hand side of Eq. 9 on [-1, 1] (x/a) and its derivative in u = arccosh(c/a)."""
+    x = solver.collocation_unit
+    A = A[..., None]
+    s = s[..., None]
+    u = u[..., None]
+    m = np.cosh(u)
+    m1 = 2 * np.sinh(u / 2) ** 2  # m - 1 without cancellation
+    mmx = m1 + (1 - x)  # m - x
+    mpx = m + x
+    f = -0.5 * A * x + (s / np.pi) * np.log(mmx / mpx)
+    df = (s / np.pi) * np.sinh(u) * (1 / mmx - 1 / mpx)
+    return f, df
+
+
+def _log_weights(n: int, u: NDArray) -> tuple[NDArray, NDArray]:
+    """mu_j(cosh u) - mu_j(1) and d mu_j(cosh u)/du for the bounded product rule."""
+    k = np.arange(n + 2)
+    e = np.exp(-k * u[..., None])
+    j = np.arange(n)
+    mu = (np.pi / 2) * e[..., j + 2] / (j + 2)
+    mu[..., 1:] -= (np.pi / 2) * e[..., 1:n] / j[1:]
+    mu[..., 0] += (np.pi / 2) * u  # c0(m) - c0(1) = u
+    mu1 = (np.pi / 2) / (j + 2)
+    mu1[1:] -= (np.pi / 2) / j[1:]
+    dmu = -(np.pi / 2) * e[..., j + 2]
+    dmu[..., 1:] += (np.pi / 2) * e[..., 1:n]
+    dmu[..., 0] += np.pi / 2
+    return mu - mu1, dmu
+
+
+def _I(u: NDArray) -> tuple[NDArray, NDArray]:
+    """I(m) = int_1^m ln((m-t)/(m+t)) dt and dI/du, m = cosh u."""
+    m = np.cosh(np.minimum(u, 700))
+    small = u < 1.0
+    us = np.where(small, u, 1.0)
+    mm1 = 2 * np.sinh(us / 2) ** 2
+    mp1 = 2 * np.cosh(us / 2) ** 2
+    ms = np.cosh(us)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        i_small = np.where(mm1 > 0, mm1 * np.log(mm1), 0.0) + mp1 * np.log(mp1) - 2 * ms * \
+            np.log(2 * ms)
+    ul = np.where(small, 1.0, u)
+    q = np.exp(-2 * ul)
+    ln_tanh = np.log1p(-q) - np.log1p(q)
+    ln_tanh_half = np.log1p(-np.exp(-ul)) - np.log1p(np.exp(-ul))
+    i_large = 2 * np.cosh(np.minimum(ul, 700)) * (ln_tanh - np.log(2.0)) - 2 * ln_tanh_half
+    val = np.where(small, i_small, i_large)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        dval = 2 * np.sinh(np.minimum(u, 700)) * (np.log(np.tanh(np.maximum(u, 1e-300))) -
+                                                  np.log(2.0))
+    dval = np.where(u > 0, dval, 0.0)
+    del m
+    return val, dval
+
+
+def _colloc_eval(solver: BoundedSolver, A, s, rho, u):
+    """Residual of the separation condition (scaled by rho, R(0)=1), its u-derivative, extras."""
+    n = solver.n
+    f, df = _rhs(solver, A, s, u)
+    sol = solver.solve(f)
+    dsol = solver.solve(df)
+    b, db = sol.coefficients, dsol.coefficients
+    dmu, dmu_du = _log_weights(n, u)
+    J = np.sum(b * dmu, axis=-1)
+    dJ = np.sum(db * dmu, axis=-1) + np.sum(b * dmu_du, axis=-1)
+    Iv, dI = _I(u)
+    sh = np.sinh(u)
+    ch = np.cosh(u)
+    Rv = 1 + rho * ((2 * A / np.pi) * J + (2 * s * A / np.pi) * Iv - 0.5 * A * A * sh * sh)
+    dR = rho * ((2 * A / np.pi) * dJ + (2 * s * A / np.pi) * dI - A * A * sh * ch)
+    resultant = (np.pi / 2) * b[..., 0]
+    tail = np.max(np.abs(b[..., -2:]), axis=-1) / np.maximum(np.max(np.abs(b), axis=-1), 1e-300)
+    return Rv, dR, resultant, sol.consistency, tail
+
+
+def _newton_u(solver, A, s, rho, u0, lo, hi, maxiter=80, tol=1e-14):
+    """Bracketed Newton on the decreasing residual R(u); returns u, R, converged."""
+    u = u0.copy()
+    lo = lo.copy()
+    hi = hi.copy()
+    active = np.ones(u.shape, bool)
+    Rv = np.ones(u.shape)
+    for _ in range(maxiter):
+        idx = np.nonzero(active)[0]
+        if idx.size == 0:
+            break
+        Ri, dRi, *_ = _colloc_eval(solver, A[idx], s[idx], rho[idx], u[idx])
+        Rv[idx] = Ri
+        lo[idx] = np.where(Ri > 0, u[idx], lo[idx])
+        hi[idx] = np.where(Ri <= 0, u[idx], hi[idx])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            un = u[idx] - Ri / dRi
+        mid = np.where(np.isfinite(hi[idx]), 0.5 * (lo[idx] + hi[idx]), 2 * u[idx] + 1)
+        bad = ~np.isfinite(un) | (un <= lo[idx]) | (un >= hi[idx])
+        un = np.where(bad, mid, un)
+        done = np.abs(Ri) <= tol
+        un = np.where(done, u[idx], un)
+        step = np.abs(un - u[idx])
+        u[idx] = un
+        active[idx] = ~done & (step > 4e-16 * np.maximum(u[idx], 1e-3))
+    return u, Rv, ~active | (np.abs(Rv) <= 1e-10)
+
+
+def _collocation(A, rho, s, n, tol):
+    A, rho, s = np.broadcast_arrays(A, rho, s)
+    shape = A.shape
+    A, rho, s = (np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (A, rho, s))
+    P = A.size
+    # stage 1: a coarse solve locates c/a
+    n0 = 16 if n == "auto" else int(n)
+    solver = BoundedSolver(n0)
+    u0 = np.arccosh(np.sqrt(1 + 2 / (rho * A * A)))  # rigid-cylinder estimate
+    lo = np.zeros(P)
+    hi = np.full(P, np.inf)
+    u, Rv, conv = _newton_u(solver, A, s, rho, u0, lo, hi)
+    nsel = np.full(P, n0)
+    if n == "auto":
+        need = (np.log(1 / tol) + 4.0) / np.maximum(u, 1e-300)
+        sizes = np.asarray(_SIZES)
+        pos = np.searchsorted(sizes, need)
+        nsel = np.where(pos >= sizes.size, sizes[-1], sizes[np.minimum(pos, sizes.size - 1)])
+        nsel = np.maximum(nsel, 16)
+        for nn in np.unique(nsel):
+            if nn == n0:
+                continue
+            idx = np.nonzero(nsel == nn)[0]
+            sv = BoundedSolver(int(nn))
+            ui, Ri, ci = _newton_u(sv, A[idx], s[idx], rho[idx], u[idx], np.zeros(idx.size),
+                                   np.full(idx.size, np.inf))
+            u[idx], Rv[idx], conv[idx] = ui, Ri, ci
+    # final evaluation for diagnostics
+    F = np.empty(P)
+    cons = np.empty(P)
+    tail = np.empty(P)
+    Rf = np.empty(P)
+    for nn in np.unique(nsel):
+        idx = np.nonzero(nsel == nn)[0]
+        sv = BoundedSolver(int(nn))
+        Ri, _, res_, ci, ti = _colloc_eval(sv, A[idx], s[idx], rho[idx], u[idx])
+        m = np.cosh(u[idx])
+        F[idx] = rho[idx] * A[idx] * (res_ - 2 * m * s[idx])
+        cons[idx], tail[idx], Rf[idx] = ci, ti, Ri
+    C = A * np.cosh(u)
+    converged = conv & (tail <= max(tol, 1e-15) * 10) & np.isfinite(F)
+    out = dict(u=u, C=C, F=F, res=np.abs(Rf), cons=np.abs(cons), tail=tail, n=nsel,
+               converged=converged)
+    return {k: v.reshape(shape) for k, v in out.items()}
+
+
+def normal_contact(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *,
+                   method: str = "closed-form", n: int | str = "auto", tol: float = 1e-12,
+                   raise_on_failure: bool = True) -> NormalContact:
+    r"""Adhesive-zone width and load for given contact half-widths (Eqs. 9, 11, 12).
+
+    Parameters
+    ----------
+    a_over_R : array_like
+        Contact half-width over the radius, ``> 0``.
+    R_over_h : array_like
+        Radius over the range of the adhesive stress, ``> 0``.
+    sigma0_over_E : array_like
+        Adhesive (Dugdale) stress over the composite modulus, ``>= 0`` (0 gives Hertz).
+    method : {"closed-form", "collocation"}
+        Solver (see the module docstring).
+    n : int or "auto"
+        Collocation nodes (``"auto"``: chosen per point for ``tol``).
+    tol : float
+        Target discretisation error of the collocation solver.
+    raise_on_failure : bool
+        Raise :class:`~linecontact.errors.ConvergenceError` when a point misses its
+        tolerance (default); otherwise flag it in ``converged``.
+
+    Returns
+    -------
+    NormalContact
+        The inputs broadcast together; scalars in, scalars out.
+
+    Examples
+    --------
+    >>> r = normal_contact(0.05, 100.0, 0.0)        # Hertz: F/(Eh) = (pi/4)(a/R)^2 R/h
+    >>> round(r.F_over_Eh, 12) == round(3.141592653589793 / 4 * 0.05**2 * 100, 12)
+    True
+    >>> r2 = normal_contact(0.05, 100.0, 0.01, method="collocation")
+    >>> abs(r2.F_over_Eh - normal_contact(0.05, 100.0, 0.01).F_over_Eh) < 1e-10
+    True
+    """
+    A = positive("a_over_R", a_over_R)
+    rho = positive("R_over_h", R_over_h)
+    s = non_negative("sigma0_over_E", sigma0_over_E)
+    if method not in ("closed-form", "collocation"):
+        raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
+    if not (n == "auto" or (isinstance(n, (int, np.integer)) and not isinstance(n, bool)
+                            and 2 <= n <= 8192)):
+        raise ValueError(f"n must be 'auto' or an integer in [2, 8192], got {n!r}")
+    if not (isinstance(tol, float | int) and 1e-15 <= tol < 1e-2):
+        raise ValueError(f"tol must be in [1e-15, 1e-2), got {tol!r}")
+    scalar = scalar_or_array(A, rho, s)
+    A, rho, s = np.broadcast_arrays(A, rho, s)
+    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    if method == "closed-form":
+        u, C, F, res, stable = _closed_form(A, rho, s)
+        ncol = np.zeros(A.shape, dtype=int)
+        cons = np.zeros(A.shape)
+        err = np.zeros(A.shape)
+        converged = res < 1e-12
+    else:
+        r = _collocation(A, rho, s, n, tol)
+        u, C, F = r["u"], r["C"], r["F"]
+        res, cons, err, ncol = r["res"], r["cons"], r["tail"], r["n"]
+        converged = r["converged"]
+        # residual R is scaled so that 1 <-> h; it is the separation residual over h
+        stable = _ref._branch_point(u, kap)["dphi"] < 0
+    if raise_on_failure and not np.all(converged):
+        i = np.flatnonzero(~np.asarray(converged).reshape(-1))[0]
+        raise ConvergenceError(
+            f"normal_contact ({method}) did not converge at a_over_R="
+            f"{A.reshape(-1)[i]!r}, R_over_h={rho.reshape(-1)[i]!r}, sigma0_over_E="
+            f"{s.reshape(-1)[i]!r} (separation residual {np.reshape(res, -1)[i]:.3g}, error "
+            f"estimate {np.reshape(err, -1)[i]:.3g}); the adhesive zone is too thin for "
+            f"n <= {_SIZES[-1]} or the point is outside the solver's range")
+    vals = dict(a_over_R=A, c_over_R=C, F_over_Eh=F, R_over_h=rho, sigma0_over_E=s,
+                n_collocation=ncol, residual_separation=res, residual_consistency=cons,
+                error_estimate=err, converged=converged, stable=stable)
+    vals = {k: _as_output(np.asarray(v), scalar) for k, v in vals.items()}
+    return NormalContact(method=method, **vals)
+
+
+# --------------------------------------------------------------------------------------------
+# pull-off, inverse, non-contact branch
+
+
+@dataclass(frozen=True)
+class PullOff(_Result):
+    """Pull-off under load control: the global minimum of the load on the contact branch.
+
+    Attributes
+    ----------
+    F_pulloff_over_Eh : ndarray or float
+        The pull-off force over ``E h`` (negative).
+    a_over_R_at_pulloff, c_over_R_at_pulloff : ndarray or float
+        Half-widths at pull-off (``a = 0`` at zero width).
+    mechanism : ndarray of str or str
+        ``"snap-off"`` (interior minimum) or ``"zero-width"`` (Eq. 14).
+    F_zero_width_over_Eh : ndarray or float
+        Eq. (14), the load at vanishing contact width.
+    F_minimum_over_Eh, a_over_R_at_minimum : ndarray or float
+        The exact interior minimum, reported even when it is indistinguishable from Eq. (14)
+        (its width is then exponentially small in ``1/kappa``).
+    kappa, maugis_parameter : ndarray or float
+        The group that fixes the shape of the load curve, and Baney & Hui's lambda.
+    """
+
+    F_pulloff_over_Eh: NDArray | float
+    a_over_R_at_pulloff: NDArray | float
+    c_over_R_at_pulloff: NDArray | float
+    mechanism: NDArray | str
+    F_zero_width_over_Eh: NDArray | float
+    F_minimum_over_Eh: NDArray | float
+    a_over_R_at_minimum: NDArray | float
+    R_over_h: NDArray | float
+    sigma0_over_E: NDArray | float
+    kappa: NDArray | float
+    maugis_parameter: NDArray | float
+
+
+def _pulloff_arrays(rho: NDArray, s: NDArray):
+    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    F0 = _ref._zero_width(rho, s)
+    us = _ustar(kap)
+    fin = np.isfinite(us)
+    A_min = np.zeros(kap.shape)
+    C_min = np.zeros(kap.shape)
+    F_min = F0.copy()
+    if fin.any():
+        A_, C_, F_, _ = _closed_form_from_u(us[fin], kap[fin], rho[fin], s[fin], us[fin])
+        A_min[fin], C_min[fin], F_min[fin] = A_, C_, np.minimum(F_, F0[fin])
+    zero_c = np.sqrt(2 / rho) * 2 / (kap * _ref.LN2 + np.sqrt(kap * kap * _ref.LN2 ** 2 + 4))
+    snap = (F0 - F_min) > ZERO_WIDTH_RTOL * np.abs(F0)
+    F_po = np.where(snap, F_min, F0)
+    A_po = np.where(snap, A_min, 0.0)
+    C_po = np.where(snap, C_min, zero_c)
+    mech = np.where(snap, "snap-off", "zero-width")
+    return dict(F_pulloff_over_Eh=F_po, a_over_R_at_pulloff=A_po, c_over_R_at_pulloff=C_po,
+                mechanism=mech, F_zero_width_over_Eh=F0, F_minimum_over_Eh=F_min,
+                a_over_R_at_minimum=A_min, kappa=kap, us=us)
+
+
+def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
+    r"""Pull-off force under load control, vectorised over parameter points.
+
+    The load along the contact branch has exactly one stationary point, a minimum, for every
+    :math:`\sigma_0 > 0` (``docs/derivations.md``); it is found as the root of a monotone
+    function of :math:`u = \operatorname{arccosh}(c/a)`, so no grid can miss it. When it lies
+    below Eq. (14) by more than :data:`ZERO_WIDTH_RTOL` (relative) the mechanism is
+    ``"snap-off"``; otherwise the contact peels to zero width at the load of Eq. (14).
+
+    Parameters
+    ----------
+    R_over_h : array_like
+        ``> 0``.
+    sigma0_over_E : array_like
+        ``>= 0`` (0: Hertz, pull-off force 0 at zero width).
+
+    Returns
+    -------
+    PullOff
+
+    Examples
+    --------
+    >>> po = pull_off(100.0, 0.01)
+    >>> po.mechanism
+    'zero-width'
+    >>> po.F_pulloff_over_Eh == po.F_zero_width_over_Eh
+    True
+    >>> pull_off(100.0, 0.2).mechanism
+    'snap-off'
+    """
+    rho = positive("R_over_h", R_over_h)
+    s = non_negative("sigma0_over_E", sigma0_over_E)
+    scalar = scalar_or_array(rho, s)
+    rho, s = np.broadcast_arrays(rho, s)
+    d = _pulloff_arrays(rho.astype(float), s.astype(float))
+    d.pop("us")
+    lam = 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
+    vals = {k: _as_output(np.asarray(v), scalar) for k, v in d.items()}
+    return PullOff(R_over_h=_as_output(rho, scalar), sigma0_over_E=_as_output(s, scalar),
+                   maugis_parameter=_as_output(lam, scalar), **vals)
+
+
+def _solve_u_for_phi(target, kap, lo_w, hi_w, increasing):
+    """Bisection in w = ln u for Phi(u) = target on a monotone piece [e^lo_w, e^hi_w]."""
+    lo = lo_w.copy()
+    hi = hi_w.copy()
+    for _ in range(120):
+        mid = 0.5 * (lo + hi)
+        ph = _ref._branch_point(np.exp(mid), kap)["phi"]
+        above = ph > target
+        if increasing:
+            hi = np.where(above, mid, hi)
+            lo = np.where(above, lo, mid)
+        else:
+            lo = np.where(above, mid, lo)
+            hi = np.where(above, hi, mid)
+    return np.exp(0.5 * (lo + hi))
+
+
+def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *,
+                     branch: str = "stable") -> NormalContact:
+    r"""The contact state(s) carrying a given load (closed form).
+
+    Parameters
+    ----------
+    F_over_Eh : array_like
+        Load over ``E h`` (compressive positive).
+    R_over_h, sigma0_over_E : array_like
+        As in :func:`normal_contact`.
+    branch : {"stable", "unstable"}
+        ``"stable"``: the state with ``dF/da > 0`` (exists for ``F >= F_pulloff``);
+        ``"unstable"``: the narrower state with ``dF/da < 0`` (exists only between the load
+        minimum and Eq. 14).
+
+    Raises
+    ------
+    NoEquilibriumError
+        If no contact of the requested branch carries the load, naming the pull-off force.
+    """
+    F = finite("F_over_Eh", F_over_Eh)
+    rho = positive("R_over_h", R_over_h)
+    s = non_negative("sigma0_over_E", sigma0_over_E)
+    if branch not in ("stable", "unstable"):
+        raise ValueError(f"branch must be 'stable' or 'unstable', got {branch!r}")
+    scalar = scalar_or_array(F, rho, s)
+    F, rho, s = (np.asarray(v, float) for v in np.broadcast_arrays(F, rho, s))
+    d = _pulloff_arrays(rho, s)
+    Fmin, F0, us, kap = d["F_minimum_over_Eh"], d["F_zero_width_over_Eh"], d["us"], d["kappa"]
+    if branch == "stable":
+        bad = F < Fmin
+        if bad.any():
+            i = np.flatnonzero(bad.reshape(-1))[0]
+            raise NoEquilibriumError(
+                f"no contact carries F_over_Eh={F.reshape(-1)[i]!r}: it is below the pull-off "
+                f"force F_pulloff_over_Eh={Fmin.reshape(-1)[i]!r} (R_over_h="
+                f"{rho.reshape(-1)[i]!r}, sigma0_over_E={s.reshape(-1)[i]!r}); the cylinder "
+                f"has pulled off")
+        hi = np.log(np.where(np.isfinite(us), us, 745.0))
+        lo = np.full(F.shape, np.log(1e-12))
+        u = _solve_u_for_phi(F * (2 / np.pi), kap, lo, hi, increasing=False)
+    else:
+        bad = ~((F > Fmin) & (F < F0))
+        if bad.any():
+            i = np.flatnonzero(bad.reshape(-1))[0]
+            raise NoEquilibriumError(
+                f"no unstable contact carries F_over_Eh={F.reshape(-1)[i]!r}: that branch "
+                f"exists only for F_minimum_over_Eh={Fmin.reshape(-1)[i]!r} < F_over_Eh < "
+                f"F_zero_width_over_Eh={F0.reshape(-1)[i]!r}")
+        lo = np.log(us)
+        hi = np.full(F.shape, np.log(745.0))
+        u = _solve_u_for_phi(F * (2 / np.pi), kap, lo, hi, increasing=True)
+    A, C, Fc, stable = _closed_form_from_u(u, kap, rho, s, us)
+    res = np.abs(Fc - F) / np.maximum(np.abs(F), 1e-300)
+    z = np.zeros(F.shape)
+    vals = dict(a_over_R=A, c_over_R=C, F_over_Eh=Fc, R_over_h=rho, sigma0_over_E=s,
+                n_collocation=z.astype(int), residual_separation=z, residual_consistency=z,
+                error_estimate=res, converged=np.isfinite(Fc), stable=stable)
+    vals = {k: _as_output(np.asarray(v), scalar) for k, v in vals.items()}
+    return NormalContact(method="closed-form", **vals)
+
+
+@dataclass(frozen=True)
+class NonContact(_Result):
+    """Equilibrium without contact: the adhesive zone ``|x| < c`` only, central gap ``g0``.
+
+    Attributes
+    ----------
+    central_gap_over_h : ndarray or float
+        ``g0/h`` in ``[0, 1]``.
+    c_over_R : ndarray or float
+        Half-width of the adhesive zone.
+    F_over_Eh : ndarray or float
+        ``-2 sigma0 c / (E h)``; Eq. (14) at ``g0 = 0``.
+    stable : ndarray or bool
+        Always False: unstable under load control (stable under displacement control).
+    """
+
+    central_gap_over_h: NDArray | float
+    c_over_R: NDArray | float
+    F_over_Eh: NDArray | float
+    R_over_h: NDArray | float
+    sigma0_over_E: NDArray | float
+    stable: NDArray | bool
+
+
+def non_contact(central_gap_over_h: ArrayLike, R_over_h: ArrayLike,
+                sigma0_over_E: ArrayLike) -> NonContact:
+    r"""The non-contact branch: attractive force versus the central gap ``g0`` in ``[0, h]``.
+
+    With a uniform tensile stress on :math:`|x| < c` the gap rises from ``g0`` at the centre
+    to ``h`` at ``c``: :math:`h - g_0 = c^2/(2R) + 4\ln 2\,\sigma_0 c/(\pi E)`, and
+    :math:`F = -2\sigma_0 c`. At ``g0 = 0`` this is Eq. (14).
+    """
+    g = check_array("central_gap_over_h", central_gap_over_h, low=0.0, low_inclusive=True,
+                    high=1.0, high_inclusive=True)
+    rho = positive("R_over_h", R_over_h)
+    s = non_negative("sigma0_over_E", sigma0_over_E)
+    scalar = scalar_or_array(g, rho, s)
+    g, rho, s = (np.asarray(v, float) for v in np.broadcast_arrays(g, rho, s))
+    k = 4 * _ref.LN2 * s / np.pi
+    rhs = 2 * (1 - g) / rho
+    C = rhs / (k + np.sqrt(k * k + rhs))
+    F = -2 * s * rho * C
+    vals = dict(central_gap_over_h=g, c_over_R=C, F_over_Eh=F, R_over_h=rho, sigma0_over_E=s,
+                stable=np.zeros(g.shape, bool))
+    return NonContact(**{k_: _as_output(v, scalar) for k_, v in vals.items()})
+
+
+@dataclass(frozen=True)
+class Equilibrium:
+    """One equilibrium state at a given load.
+
+    ``branch`` is ``"contact"`` or ``"non-contact"``; ``stable`` refers to load control.
+    """
+
+    branch: str
+    stable: bool
+    F_over_Eh: float
+    a_over_R: float
+    c_over_R: float
+    central_gap_over_h: float
+
+
+def equilibria(F_over_Eh: float, R_over_h: float, sigma0_over_E: float) -> tuple[Equilibrium, ...]:
+    """Every equilibrium state carrying the load ``F_over_Eh`` (scalar parameters).
+
+    Stable contact (``F >= F_pulloff``), unstable narrow contact (between the load minimum and
+    Eq. 14), and the non-contact state (between Eq. 14 and 0). Empty below the pull-off
+    force; the caller says so.
+    """
+    F = float(finite("F_over_Eh", F_over_Eh))
+    rho = float(positive("R_over_h", R_over_h))
+    s = float(non_negative("sigma0_over_E", sigma0_over_E))
+    po = pull_off(rho, s)
+    states: list[Equilibrium] = []
+    if F >= po.F_minimum_over_Eh:
+        r = contact_for_load(F, rho, s, branch="stable")
+        states.append(Equilibrium("contact", True, F, r.a_over_R, r.c_over_R, 0.0))
+    if po.F_minimum_over_Eh < F < po.F_zero_width_over_Eh:
+        r = contact_for_load(F, rho, s, branch="unstable")
+        states.append(Equilibrium("contact", False, F, r.a_over_R, r.c_over_R, 0.0))
+    if s > 0 and po.F_zero_width_over_Eh <= F < 0:
+        # invert F = -2 s rho C for C, then the gap
+        C = -F / (2 * s * rho)
+        k = 4 * _ref.LN2 * s / np.pi
+        g = 1 - rho * (C * C / 2 + k * C)
+        states.append(Equilibrium("non-contact", False, F, 0.0, C, float(np.clip(g, 0, 1))))
+    return tuple(states)
+
+
+@dataclass(frozen=True)
+class LoadCurve(_Result):
+    """The whole load curve: non-contact branch then the contact branch.
+
+    Arrays are ordered from the largest central gap (``g0 = h``, ``F = 0``) through
+    touch-down (``a = 0``, Eq. 14) to the largest contact width.
+
+    Attributes
+    ----------
+    branch : ndarray of str
+        ``"non-contact"`` or ``"contact"``.
+    central_gap_over_h, a_over_R, c_over_R, F_over_Eh : ndarray
+        The states (``a = 0`` off contact, ``g0 = 0`` in contact).
+    stable : ndarray of bool
+        Stability under load control.
+    turning_point : ndarray of bool
+        Marks the load minimum (the single turning point of the contact branch).
+    pulloff : PullOff
+        The pull-off result.
+    """
+
+    branch: NDArray
+    central_gap_over_h: NDArray
+    a_over_R: NDArray
+    c_over_R: NDArray
+    F_over_Eh: NDArray
+    stable: NDArray
+    turning_point: NDArray
+    R_over_h: float
+    sigma0_over_E: float
+    pulloff: PullOff = field(repr=False)
+
+
+def load_curve(R_over_h: float, sigma0_over_E: float, *, a_max_over_R: float | None = None,
+               num: int = 200, num_noncontact: int = 40) -> LoadCurve:
+    """Sample the load curve (scalar parameters), pull-off and turning point included.
+
+    Parameters
+    ----------
+    R_over_h, sigma0_over_E : float
+        Parameters (scalars).
+    a_max_over_R : float, optional
+        Largest contact half-width; default: three times the width at pull-off, at least
+        the Hertz width at ``F = 10 |F_pulloff|`` and at least ``0.02``.
+    num, num_noncontact : int
+        Points on the contact and the non-contact branches (>= 2 each).
+    """
+    rho = float(positive("R_over_h", R_over_h))
+    s = float(non_negative("sigma0_over_E", sigma0_over_E))
+    for name, v in (("num", num), ("num_noncontact", num_noncontact)):
+        if not isinstance(v, (int, np.integer)) or v < 2:
+            raise ValueError(f"{name} must be an integer >= 2, got {v!r}")
+    po = pull_off(rho, s)
+    if a_max_over_R is None:
+        a_h = np.sqrt(4 * 10 * abs(po.F_pulloff_over_Eh) / (np.pi * rho))
+        a_max_over_R = max(3 * po.a_over_R_at_minimum, a_h, 0.02)
+    amax = float(positive("a_max_over_R", a_max_over_R))
+    A = np.unique(np.concatenate([np.geomspace(amax * 1e-4, amax, num // 2),
+                                  np.linspace(amax / num, amax, num - num // 2)]))
+    if 0 < po.a_over_R_at_minimum < amax:
+        A = np.unique(np.append(A, po.a_over_R_at_minimum))
+    nc = normal_contact(A, rho, s)
+    parts_branch = []
+    gaps = np.linspace(1.0, 0.0, num_noncontact) if s > 0 else np.array([])
+    if gaps.size:
+        ncb = non_contact(gaps, rho, s)
+        parts_branch = ["non-contact"] * gaps.size
+        g_nc, c_nc, F_nc = ncb.central_gap_over_h, ncb.c_over_R, ncb.F_over_Eh
+    else:
+        g_nc = c_nc = F_nc = np.array([])
+    branch = np.array(parts_branch + ["contact"] * A.size)
+    gap = np.concatenate([g_nc, np.zeros(A.size)])
+    a = np.concatenate([np.zeros(gaps.size), A])
+    c = np.concatenate([c_nc, nc.c_over_R])
+    F = np.concatenate([F_nc, nc.F_over_Eh])
+    stable = np.concatenate([np.zeros(gaps.size, bool), nc.stable])
+    turning = np.zeros(a.size, bool)
+    if po.a_over_R_at_minimum > 0:
+        turning[gaps.size + int(np.argmin(np.abs(A - po.a_over_R_at_minimum)))] = True
+    return LoadCurve(branch, gap, a, c, F, stable, turning, rho, s, po)

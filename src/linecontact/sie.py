@@ -1,0 +1,512 @@
+r"""Gauss--Chebyshev quadrature and collocation for Cauchy singular integral equations.
+
+This module knows no physics. It solves the dominant equation
+
+.. math::
+
+    \frac{1}{\pi}\,\mathrm{PV}\!\int_{\alpha}^{\beta} \frac{\phi(t)}{t - x}\,dt = f(x),
+    \qquad \alpha < x < \beta,
+
+by the method of Erdogan, Gupta & Cook (1973) for the three classes of solution:
+
+``BoundedSolver``
+    :math:`\phi = \sqrt{1-\tau^2}\,g(\tau)`, bounded at both ends. ``n`` nodes
+    :math:`\tau_i = \cos(i\pi/(n+1))` and ``n + 1`` collocation points
+    :math:`x_k = \cos((2k-1)\pi/(2n+2))`: one equation too many, which is the
+    consistency condition :math:`\int f/\sqrt{1-x^2} = 0`. For odd (symmetric) problems it
+    holds by itself (the middle equation, at :math:`x = 0`, is dropped); for the others an
+    extra unknown multiplying a given right-hand side is determined by it.
+``EndBoundedSolver``
+    :math:`\phi = \sqrt{(1-\tau)/(1+\tau)}\,g(\tau)`, bounded at one end (either), ``n``
+    equations in ``n`` unknowns.
+``UnboundedSolver``
+    :math:`\phi = g(\tau)/\sqrt{1-\tau^2}`, unbounded at both ends, with the side condition
+    :math:`\int \phi = C`.
+
+In every case :math:`\tau = (2t - \alpha - \beta)/(\beta - \alpha)` maps the interval onto
+``[-1, 1]``; the equation keeps its form and :math:`\phi` its values under the map. The
+bounded solver works in the Chebyshev basis: :math:`g = \sum_j b_j U_j` and
+:math:`\frac{1}{\pi}\int_{-1}^{1}\sqrt{1-t^2}\,U_j(t)/(t-x)\,dt = -T_{j+1}(x)`, so the
+collocation system is inverted exactly by the discrete orthogonality of :math:`T_j` at the
+zeros of :math:`T_{n+1}` (the solution is identical to that of the collocation matrix of
+Erdogan, Gupta & Cook; the tests check it).
+
+Linear functionals of the solution are evaluated exactly for polynomial ``g`` of degree
+``< n``: the resultant :math:`\int\phi`, the first moment :math:`\int t\phi`, and the
+logarithmic moments :math:`\int \phi(t)\ln|y - t|\,dt` for any real ``y`` (inside, at an
+end point, or outside the interval) by product integration, so that a logarithmic kernel
+that is singular at an end point does not spoil convergence.
+
+All solvers take right-hand sides with arbitrary leading (batch) dimensions: the last axis
+runs over the collocation points.
+
+References
+----------
+F. Erdogan, G. D. Gupta, T. S. Cook, "Numerical solution of singular integral equations",
+in *Methods of Analysis and Solutions of Crack Problems*, G. C. Sih (ed.), Noordhoff (1973),
+368--425. doi:10.1007/978-94-017-2260-5_7
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+import scipy.linalg
+from numpy.typing import ArrayLike, NDArray
+
+__all__ = [
+    "BoundedSolution",
+    "BoundedSolver",
+    "EndBoundedSolver",
+    "UnboundedSolver",
+    "bounded_rule",
+    "chebyshev_log_expansion",
+]
+
+
+def _check_n(n: int, minimum: int = 1) -> int:
+    if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < minimum:
+        raise ValueError(f"n must be an integer >= {minimum}, got {n!r}")
+    return int(n)
+
+
+def _check_interval(interval: tuple[float, float]) -> tuple[float, float]:
+    lo, hi = (float(v) for v in interval)
+    if not (np.isfinite(lo) and np.isfinite(hi) and hi > lo):
+        raise ValueError(f"interval must be finite with lo < hi, got {interval!r}")
+    return lo, hi
+
+
+def bounded_rule(n: int) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    r"""Nodes, weights and collocation points of the bounded Gauss--Chebyshev rule.
+
+    Parameters
+    ----------
+    n : int
+        Number of nodes, ``n >= 1``.
+
+    Returns
+    -------
+    nodes : ndarray, shape (n,)
+        :math:`\tau_i = \cos(i\pi/(n+1))`, the zeros of :math:`U_n`, decreasing.
+    weights : ndarray, shape (n,)
+        :math:`W_i = \pi(1-\tau_i^2)/(n+1)`; :math:`\sum_i W_i g(\tau_i)` equals
+        :math:`\int_{-1}^{1}\sqrt{1-\tau^2}\,g(\tau)\,d\tau` for polynomials ``g`` of degree
+        ``<= 2n - 1``.
+    collocation : ndarray, shape (n + 1,)
+        :math:`x_k = \cos((2k-1)\pi/(2n+2))`, the zeros of :math:`T_{n+1}`.
+    """
+    n = _check_n(n)
+    i = np.arange(1, n + 1)
+    nodes = np.cos(i * np.pi / (n + 1))
+    weights = np.pi * np.sin(i * np.pi / (n + 1)) ** 2 / (n + 1)
+    k = np.arange(1, n + 2)
+    collocation = np.cos((2 * k - 1) * np.pi / (2 * (n + 1)))
+    return nodes, weights, collocation
+
+
+def chebyshev_log_expansion(y: ArrayLike, kmax: int) -> tuple[NDArray, NDArray]:
+    r"""Chebyshev expansion of :math:`\ln|y - t|` in ``t`` on ``[-1, 1]``.
+
+    .. math::  \ln|y - t| = c_0(y) - 2\sum_{k\ge1} \frac{e_k(y)}{k} T_k(t)
+
+    with :math:`c_0 = v - \ln 2`, :math:`e_k = \operatorname{sign}(y)^k e^{-kv}` and
+    :math:`|y| = \cosh v` outside the interval, and :math:`c_0 = -\ln 2`,
+    :math:`e_k = T_k(y)` inside it (``|y| <= 1``).
+
+    Parameters
+    ----------
+    y : array_like
+        Real points, any shape.
+    kmax : int
+        Highest index ``k`` returned.
+
+    Returns
+    -------
+    c0 : ndarray, shape y.shape
+    e : ndarray, shape y.shape + (kmax + 1,)
+        ``e[..., k]`` for ``k = 0..kmax`` (``e[..., 0] = 1``).
+    """
+    y = np.asarray(y, dtype=float)
+    k = np.arange(kmax + 1)
+    ay = np.abs(y)
+    outside = ay > 1.0
+    v = np.arccosh(np.where(outside, ay, 1.0))
+    c0 = v - np.log(2.0)
+    theta = np.arccos(np.clip(y, -1.0, 1.0))
+    e_in = np.cos(k * theta[..., None])
+    sgn = np.where(y < 0, -1.0, 1.0)[..., None] ** k
+    e_out = sgn * np.exp(-k * v[..., None])
+    e = np.where(outside[..., None], e_out, e_in)
+    return c0, e
+
+
+@dataclass(frozen=True)
+class BoundedSolution:
+    """Solution of the bounded problem, on ``[-1, 1]`` after the map.
+
+    Attributes
+    ----------
+    coefficients : ndarray, shape (..., n)
+        ``b_j`` in ``g = sum_j b_j U_j``.
+    values : ndarray, shape (..., n)
+        ``g`` at the nodes.
+    consistency : ndarray, shape (...)
+        The residual of the consistency condition, ``mean_k f(x_k)`` (zero for a solvable
+        right-hand side; the component of ``f`` the bounded solution cannot match).
+    extra : ndarray or None, shape (...)
+        The extra unknown fixed by the consistency condition, when one was asked for.
+    """
+
+    coefficients: NDArray[np.float64]
+    values: NDArray[np.float64]
+    consistency: NDArray[np.float64]
+    extra: NDArray[np.float64] | None = None
+
+
+class BoundedSolver:
+    r"""Collocation solver for solutions bounded at both ends.
+
+    Parameters
+    ----------
+    n : int
+        Number of nodes (unknowns), ``n >= 1``.
+    interval : tuple of float, optional
+        ``(alpha, beta)``, default ``(-1, 1)``.
+
+    Notes
+    -----
+    With :math:`x_k` the zeros of :math:`T_{n+1}`, the collocation equations
+    :math:`-\sum_{j<n} b_j T_{j+1}(x_k) = f(x_k)` are solved by
+    :math:`b_j = -\frac{2}{n+1}\sum_k f(x_k)T_{j+1}(x_k)`; the remaining component,
+    :math:`\frac{1}{n+1}\sum_k f(x_k)`, is the discrete consistency condition.
+
+    Examples
+    --------
+    The Hertz-like pair :math:`\phi = \sqrt{1-t^2}` , :math:`f = -x`:
+
+    >>> import numpy as np
+    >>> s = BoundedSolver(4)
+    >>> sol = s.solve(-s.collocation)
+    >>> bool(np.allclose(sol.values, 1.0))
+    True
+    >>> float(s.resultant(sol))  # pi/2
+    1.5707963267948966
+    """
+
+    def __init__(self, n: int, interval: tuple[float, float] = (-1.0, 1.0)) -> None:
+        self.n = _check_n(n)
+        self.interval = _check_interval(interval)
+        self._half = 0.5 * (self.interval[1] - self.interval[0])
+        self._mid = 0.5 * (self.interval[1] + self.interval[0])
+        self.nodes_unit, self.weights_unit, self.collocation_unit = bounded_rule(self.n)
+        ops = _bounded_operators(self.n)
+        self._coef_from_f = ops[0]  # (n+1, n): b = f @ C
+        self._values_from_coef = ops[1]  # (n, n): g = b @ V
+
+    @property
+    def nodes(self) -> NDArray[np.float64]:
+        """Quadrature nodes on the interval."""
+        return self._mid + self._half * self.nodes_unit
+
+    @property
+    def collocation(self) -> NDArray[np.float64]:
+        """Collocation points on the interval (``n + 1`` of them)."""
+        return self._mid + self._half * self.collocation_unit
+
+    @property
+    def weights(self) -> NDArray[np.float64]:
+        r"""Weights for :math:`\int_\alpha^\beta \phi\,h\,dt \approx \sum_i W_i g_i h(t_i)`."""
+        return self._half * self.weights_unit
+
+    def solve(self, f: ArrayLike, extra: ArrayLike | None = None) -> BoundedSolution:
+        r"""Solve for the bounded solution.
+
+        Parameters
+        ----------
+        f : array_like, shape (..., n + 1)
+            Right-hand side at :attr:`collocation`.
+        extra : array_like, shape (..., n + 1), optional
+            A second right-hand side :math:`f_1`; the equation solved is then
+            :math:`\ldots = f + \lambda f_1` with the unknown :math:`\lambda` fixed by the
+            consistency condition (the non-symmetric case).
+
+        Returns
+        -------
+        BoundedSolution
+        """
+        f = np.asarray(f, dtype=float)
+        if f.shape[-1] != self.n + 1:
+            raise ValueError(f"f must have n + 1 = {self.n + 1} values on its last axis, "
+                             f"got {f.shape[-1]}")
+        lam = None
+        if extra is not None:
+            f1 = np.asarray(extra, dtype=float)
+            if f1.shape[-1] != self.n + 1:
+                raise ValueError(f"extra must have n + 1 = {self.n + 1} values on its last "
+                                 f"axis, got {f1.shape[-1]}")
+            s1 = f1.mean(axis=-1)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                lam = -f.mean(axis=-1) / s1
+            f = f + lam[..., None] * f1
+        b = f @ self._coef_from_f
+        g = b @ self._values_from_coef
+        return BoundedSolution(b, g, f.mean(axis=-1), lam)
+
+    # --- linear functionals (on the interval, with the map's Jacobian) ---------------------
+    def resultant(self, sol: BoundedSolution) -> NDArray[np.float64]:
+        r""":math:`\int_\alpha^\beta \phi(t)\,dt`."""
+        return self._half * (np.pi / 2) * sol.coefficients[..., 0]
+
+    def first_moment(self, sol: BoundedSolution) -> NDArray[np.float64]:
+        r""":math:`\int_\alpha^\beta t\,\phi(t)\,dt`."""
+        b = sol.coefficients
+        b1 = b[..., 1] if self.n > 1 else np.zeros_like(b[..., 0])
+        return self._half * (self._mid * (np.pi / 2) * b[..., 0] + self._half * (np.pi / 4) * b1)
+
+    def log_moment(self, sol: BoundedSolution, y: ArrayLike) -> NDArray[np.float64]:
+        r""":math:`\int_\alpha^\beta \phi(t)\ln|y - t|\,dt`, exact for polynomial ``g``.
+
+        ``y`` may lie inside the interval, at an end point or outside it; it broadcasts
+        against the batch shape of ``sol``.
+        """
+        y_unit = (np.asarray(y, dtype=float) - self._mid) / self._half
+        mu = _log_moment_vector(y_unit, self.n)
+        b = sol.coefficients
+        val = np.sum(b * mu, axis=-1)
+        return self._half * (val + np.log(self._half) * (np.pi / 2) * b[..., 0])
+
+    def log_moment_derivative(self, sol: BoundedSolution, y: ArrayLike) -> NDArray[np.float64]:
+        r""":math:`\int_\alpha^\beta \phi(t)\,dv/(y - t)`-type derivative in ``v``.
+
+        Returns :math:`\partial/\partial v` of :meth:`log_moment` for ``y`` outside the
+        interval written as ``y = mid + half * cosh(v)`` (``y`` right of the interval), at
+        fixed ``sol``. Useful in Newton iterations on an end point of a cohesive zone.
+        """
+        y_unit = (np.asarray(y, dtype=float) - self._mid) / self._half
+        dmu = _log_moment_vector_dv(y_unit, self.n)
+        return self._half * np.sum(sol.coefficients * dmu, axis=-1)
+
+    def evaluate(self, sol: BoundedSolution, t: ArrayLike) -> NDArray[np.float64]:
+        r""":math:`\phi(t) = \sqrt{1-\tau^2}\sum_j b_j U_j(\tau)`, zero outside the interval.
+
+        ``t`` has shape ``(..., m)`` broadcasting against the batch shape of ``sol`` plus
+        one trailing axis.
+        """
+        tau = (np.asarray(t, dtype=float) - self._mid) / self._half
+        inside = np.abs(tau) <= 1.0
+        tc = np.clip(tau, -1.0, 1.0)
+        b = sol.coefficients
+        # Clenshaw recurrence for sum b_j U_j
+        bk1 = np.zeros(np.broadcast_shapes(b.shape[:-1] + (1,), tc.shape))
+        bk2 = np.zeros_like(bk1)
+        for j in range(self.n - 1, -1, -1):
+            bk1, bk2 = b[..., j, None] + 2 * tc * bk1 - bk2, bk1
+        g = bk1
+        return np.where(inside, np.sqrt(np.clip(1 - tc * tc, 0.0, None)) * g, 0.0)
+
+
+@lru_cache(maxsize=64)
+def _bounded_operators(n: int) -> tuple[NDArray, NDArray]:
+    nodes, _, x = bounded_rule(n)
+    j = np.arange(n)
+    # T_{j+1}(x_k), shape (n+1, n)
+    theta_x = np.arccos(x)
+    T = np.cos((j + 1)[None, :] * theta_x[:, None])
+    coef_from_f = -(2.0 / (n + 1)) * T
+    # U_j(tau_i) = sin((j+1) th)/sin(th), shape (n, n) indexed [j, i]
+    theta_t = np.arange(1, n + 1) * np.pi / (n + 1)
+    U = np.sin((j + 1)[:, None] * theta_t[None, :]) / np.sin(theta_t)[None, :]
+    coef_from_f.setflags(write=False)
+    U.setflags(write=False)
+    return coef_from_f, U
+
+
+def _log_moment_vector(y: NDArray, n: int) -> NDArray:
+    r"""mu_j(y) = int sqrt(1-t^2) U_j(t) ln|y - t| dt, j < n; shape y.shape + (n,)."""
+    c0, e = chebyshev_log_expansion(y, n + 1)
+    j = np.arange(n)
+    mu = np.zeros(y.shape + (n,))
+    # (pi/2)[ e_{j+2}/(j+2) - e_j/j (j>=1) ] + c0 (pi/2) delta_j0
+    mu += (np.pi / 2) * e[..., j + 2] / (j + 2)
+    mu[..., 1:] -= (np.pi / 2) * e[..., 1:n] / j[1:]
+    mu[..., 0] += (np.pi / 2) * c0
+    return mu
+
+
+def _log_moment_vector_dv(y: NDArray, n: int) -> NDArray:
+    """Derivative of :func:`_log_moment_vector` in v for y = cosh(v) >= 1."""
+    y = np.asarray(y, dtype=float)
+    v = np.arccosh(np.maximum(y, 1.0))
+    k = np.arange(n + 2)
+    e = np.exp(-k * v[..., None])  # d(e_k/k)/dv = -e_k
+    j = np.arange(n)
+    dmu = -(np.pi / 2) * e[..., j + 2]
+    dmu[..., 1:] += (np.pi / 2) * e[..., 1:n]
+    dmu[..., 0] += np.pi / 2
+    return dmu
+
+
+class EndBoundedSolver:
+    r"""Collocation solver for solutions bounded at one end, unbounded at the other.
+
+    Parameters
+    ----------
+    n : int
+        Number of nodes, ``n >= 1``.
+    interval : tuple of float, optional
+        ``(alpha, beta)``, default ``(-1, 1)``.
+    bounded_at : {"right", "left"}
+        The end where the solution is bounded.
+
+    Notes
+    -----
+    For ``bounded_at="right"``: :math:`\phi = \sqrt{(1-\tau)/(1+\tau)}\,g`, nodes
+    :math:`\tau_i = \cos(2\pi i/(2n+1))`, collocation :math:`x_k = \cos(\pi(2k-1)/(2n+1))`,
+    weights :math:`2\pi(1-\tau_i)/(2n+1)`: ``n`` equations in ``n`` unknowns, no side
+    condition (the index of the problem is zero). ``"left"`` is its mirror image.
+    """
+
+    def __init__(self, n: int, interval: tuple[float, float] = (-1.0, 1.0),
+                 bounded_at: str = "right") -> None:
+        self.n = _check_n(n)
+        self.interval = _check_interval(interval)
+        if bounded_at not in ("right", "left"):
+            raise ValueError(f"bounded_at must be 'right' or 'left', got {bounded_at!r}")
+        self.bounded_at = bounded_at
+        self._half = 0.5 * (self.interval[1] - self.interval[0])
+        self._mid = 0.5 * (self.interval[1] + self.interval[0])
+        i = np.arange(1, self.n + 1)
+        t = np.cos(2 * np.pi * i / (2 * self.n + 1))
+        x = np.cos(np.pi * (2 * i - 1) / (2 * self.n + 1))
+        w = 2 * np.pi * (1 - t) / (2 * self.n + 1)
+        self._sign = 1.0 if bounded_at == "right" else -1.0
+        self.nodes_unit = self._sign * t
+        self.collocation_unit = self._sign * x
+        self.weights_unit = w
+        mat = (w[None, :] / (np.pi * (self.nodes_unit[None, :] - self.collocation_unit[:, None])))
+        self._lu = scipy.linalg.lu_factor(mat)
+
+    @property
+    def nodes(self) -> NDArray[np.float64]:
+        """Quadrature nodes on the interval."""
+        return self._mid + self._half * self.nodes_unit
+
+    @property
+    def collocation(self) -> NDArray[np.float64]:
+        """Collocation points on the interval (``n`` of them)."""
+        return self._mid + self._half * self.collocation_unit
+
+    @property
+    def weights(self) -> NDArray[np.float64]:
+        r"""Weights for :math:`\int_\alpha^\beta \phi\,h\,dt \approx \sum_i W_i g_i h(t_i)`."""
+        return self._half * self.weights_unit
+
+    def solve(self, f: ArrayLike) -> NDArray[np.float64]:
+        """Values of ``g`` at the nodes for the right-hand side ``f`` at the collocation points.
+
+        ``f`` has shape ``(..., n)``; so has the result.
+        """
+        f = np.asarray(f, dtype=float)
+        if f.shape[-1] != self.n:
+            raise ValueError(f"f must have n = {self.n} values on its last axis, got {f.shape[-1]}")
+        flat = f.reshape(-1, self.n).T
+        g = scipy.linalg.lu_solve(self._lu, flat).T
+        return g.reshape(f.shape)
+
+    def resultant(self, g: ArrayLike) -> NDArray[np.float64]:
+        r""":math:`\int_\alpha^\beta \phi(t)\,dt` from the node values ``g``."""
+        return np.asarray(g) @ self.weights
+
+
+class UnboundedSolver:
+    r"""Collocation solver for solutions unbounded at both ends, with a side condition.
+
+    Parameters
+    ----------
+    n : int
+        Number of nodes, ``n >= 2``.
+    interval : tuple of float, optional
+        ``(alpha, beta)``, default ``(-1, 1)``.
+
+    Notes
+    -----
+    :math:`\phi = g/\sqrt{1-\tau^2}`, nodes :math:`\tau_i = \cos((2i-1)\pi/(2n))`, weights
+    :math:`\pi/n`, collocation :math:`x_k = \cos(k\pi/n)` for ``k = 1..n-1``; the side
+    condition :math:`\int_\alpha^\beta\phi\,dt = C` closes the system.
+    """
+
+    def __init__(self, n: int, interval: tuple[float, float] = (-1.0, 1.0)) -> None:
+        self.n = _check_n(n, 2)
+        self.interval = _check_interval(interval)
+        self._half = 0.5 * (self.interval[1] - self.interval[0])
+        self._mid = 0.5 * (self.interval[1] + self.interval[0])
+        i = np.arange(1, self.n + 1)
+        self.nodes_unit = np.cos((2 * i - 1) * np.pi / (2 * self.n))
+        self.weights_unit = np.full(self.n, np.pi / self.n)
+        self.collocation_unit = np.cos(np.arange(1, self.n) * np.pi / self.n)
+        mat = np.empty((self.n, self.n))
+        mat[:-1] = self.weights_unit[None, :] / (
+            np.pi * (self.nodes_unit[None, :] - self.collocation_unit[:, None]))
+        mat[-1] = self.weights_unit * self._half
+        self._lu = scipy.linalg.lu_factor(mat)
+
+    @property
+    def nodes(self) -> NDArray[np.float64]:
+        """Quadrature nodes on the interval."""
+        return self._mid + self._half * self.nodes_unit
+
+    @property
+    def collocation(self) -> NDArray[np.float64]:
+        """Collocation points on the interval (``n - 1`` of them)."""
+        return self._mid + self._half * self.collocation_unit
+
+    @property
+    def weights(self) -> NDArray[np.float64]:
+        r"""Weights for :math:`\int_\alpha^\beta \phi\,h\,dt \approx \sum_i W_i g_i h(t_i)`."""
+        return self._half * self.weights_unit
+
+    def solve(self, f: ArrayLike, resultant: ArrayLike) -> NDArray[np.float64]:
+        r"""Values of ``g`` at the nodes.
+
+        Parameters
+        ----------
+        f : array_like, shape (..., n - 1)
+            Right-hand side at the collocation points.
+        resultant : array_like, shape (...)
+            :math:`C = \int_\alpha^\beta \phi\,dt`.
+        """
+        f = np.asarray(f, dtype=float)
+        if f.shape[-1] != self.n - 1:
+            raise ValueError(f"f must have n - 1 = {self.n - 1} values on its last axis, "
+                             f"got {f.shape[-1]}")
+        c = np.broadcast_to(np.asarray(resultant, dtype=float), f.shape[:-1])
+        rhs = np.concatenate([f, c[..., None]], axis=-1)
+        flat = rhs.reshape(-1, self.n).T
+        g = scipy.linalg.lu_solve(self._lu, flat).T
+        return g.reshape(rhs.shape)
+
+    def resultant(self, g: ArrayLike) -> NDArray[np.float64]:
+        r""":math:`\int_\alpha^\beta \phi(t)\,dt` from the node values ``g``."""
+        return np.asarray(g) @ self.weights
+
+    def log_moment(self, g: ArrayLike, y: ArrayLike) -> NDArray[np.float64]:
+        r""":math:`\int_\alpha^\beta \phi(t)\ln|y-t|\,dt` by product integration."""
+        g = np.asarray(g, dtype=float)
+        n = self.n
+        # Chebyshev-T coefficients of g from its values at the T_n zeros
+        k = np.arange(n)
+        theta = (2 * np.arange(1, n + 1) - 1) * np.pi / (2 * n)
+        Tm = np.cos(k[:, None] * theta[None, :])  # [k, i]
+        a = (2.0 / n) * (g @ Tm.T)
+        a[..., 0] *= 0.5
+        y_unit = (np.asarray(y, dtype=float) - self._mid) / self._half
+        c0, e = chebyshev_log_expansion(y_unit, n)
+        # int T_k ln|y-t|/sqrt(1-t^2) = pi c0 (k=0), -pi e_k/k (k>=1)
+        mom = np.empty(np.shape(y_unit) + (n,))
+        mom[..., 0] = np.pi * c0
+        mom[..., 1:] = -np.pi * e[..., 1:n] / k[1:]
+        val = np.sum(a * mom, axis=-1)
+        return self._half * (val + np.log(self._half) * np.pi * a[..., 0])
