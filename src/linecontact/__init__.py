@@ -1,3 +1,58 @@
-"""linecontact: adhesive contact mechanics of a cylinder on an elastic substrate."""
+"""linecontact: adhesive contact mechanics of a cylinder on an elastic substrate.
+
+The public API, in the paper's nondimensional groups (lengths over ``R``, force per unit
+length over ``E h``, stresses over ``E``; compressive load positive):
+
+- :func:`normal_contact`, :func:`contact_for_load`, :func:`equilibria`, :func:`non_contact`,
+  :func:`pull_off`, :func:`load_curve` -- normal loading with Maugis--Dugdale adhesion;
+- :mod:`linecontact.reference` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14);
+- :mod:`linecontact.sie` -- the Gauss--Chebyshev singular-integral core;
+- :class:`Cylinder` -- the SI layer (materials, adhesion as (sigma0, h) or (w, z0)).
+"""
 
 __version__ = "0.1.0"
+
+from .errors import ConvergenceError, CouplingWarning, NoEquilibriumError
+from .materials import (
+    Cylinder,
+    adhesion_from_work,
+    compliance_constants,
+    composite_modulus,
+    dundurs_beta,
+)
+from .normal import (
+    NormalContact,
+    PullOff,
+    contact_for_load,
+    equilibria,
+    load_curve,
+    non_contact,
+    normal_contact,
+    pull_off,
+)
+from .reference import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
+
+__all__ = [
+    "ConvergenceError",
+    "CouplingWarning",
+    "Cylinder",
+    "NoEquilibriumError",
+    "NormalContact",
+    "PullOff",
+    "__version__",
+    "adhesion_from_work",
+    "compliance_constants",
+    "composite_modulus",
+    "contact_for_load",
+    "dundurs_beta",
+    "equilibria",
+    "hertz_load",
+    "jkr_load",
+    "kappa",
+    "load_curve",
+    "maugis_parameter",
+    "non_contact",
+    "normal_contact",
+    "pull_off",
+    "zero_width_load",
+]

@@ -486,6 +486,14 @@ class PullOff(_Result):
 
 
 def _pulloff_arrays(rho: NDArray, s: NDArray):
+    shape = np.shape(rho)
+    rho = np.atleast_1d(rho).astype(float)
+    s = np.atleast_1d(s).astype(float)
+    d = _pulloff_flat(rho, s)
+    return {k: v.reshape(shape) for k, v in d.items()}
+
+
+def _pulloff_flat(rho: NDArray, s: NDArray):
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     F0 = _ref._zero_width(rho, s)
     us = _ustar(kap)
@@ -619,7 +627,8 @@ def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: A
         hi = np.full(F.shape, np.log(745.0))
         u = _solve_u_for_phi(F * (2 / np.pi), kap, lo, hi, increasing=True)
     A, C, Fc, stable = _closed_form_from_u(u, kap, rho, s, us)
-    res = np.abs(Fc - F) / np.maximum(np.abs(F), 1e-300)
+    scale = np.maximum.reduce([np.abs(F), np.abs(F0), np.pi / 4 * A * A * rho])
+    res = np.abs(Fc - F) / np.maximum(scale, 1e-300)
     z = np.zeros(F.shape)
     vals = dict(a_over_R=A, c_over_R=C, F_over_Eh=Fc, R_over_h=rho, sigma0_over_E=s,
                 n_collocation=z.astype(int), residual_separation=z, residual_consistency=z,

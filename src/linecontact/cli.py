@@ -1,0 +1,345 @@
+"""Command-line interface: a thin shell over the public API.
+
+Every subcommand takes the paper's nondimensional groups or SI inputs, prints a readable
+table, or with ``--json`` machine-readable JSON. Bad input: one ``error:`` line on stderr and
+exit status 2. A solver that misses its tolerance: exit status 1.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import io
+import json
+import math
+import sys
+from collections.abc import Sequence
+
+import numpy as np
+
+from . import __version__
+from .errors import ConvergenceError
+
+CITATION = f"""linecontact {__version__}: adhesive contact mechanics of a cylinder on a substrate.
+
+If you use it, please cite the paper it implements:
+  I. Sari, G. G. Adams, S. Muftu, "Nano-scale effects in the adherence, sliding and rolling
+  of a cylinder on a substrate", and the closed forms used (see the README, "References"):
+  J. M. Baney, C.-Y. Hui, J. Adhesion Sci. Technol. 11 (1997) 393, doi:10.1163/156856197X00796
+  K. L. Johnson, J. A. Greenwood, J. Phys. D 41 (2008) 155315, doi:10.1088/0022-3727/41/15/155315
+"""
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message: str):  # argparse's own errors: one line, exit 2
+        self.exit(2, f"{self.prog}: error: {message}\n")
+
+
+def _finite(v):
+    if isinstance(v, float) and not math.isfinite(v):
+        return None
+    return v
+
+
+def _dump_json(obj) -> str:
+    def clean(o):
+        if isinstance(o, dict):
+            return {k: clean(v) for k, v in o.items()}
+        if isinstance(o, (list, tuple)):
+            return [clean(v) for v in o]
+        if isinstance(o, np.generic):
+            o = o.item()
+        return _finite(o)
+
+    return json.dumps(clean(obj), indent=2, allow_nan=False)
+
+
+def _table(records: list[dict], keys: Sequence[str]) -> str:
+    def fmt(v):
+        if isinstance(v, bool):
+            return "yes" if v else "no"
+        if isinstance(v, float):
+            return f"{v:.10g}"
+        return str(v)
+
+    rows = [[fmt(r[k]) for k in keys] for r in records]
+    widths = [max(len(k), *(len(row[i]) for row in rows)) for i, k in enumerate(keys)]
+    lines = ["  ".join(k.rjust(w) for k, w in zip(keys, widths, strict=True))]
+    lines += ["  ".join(c.rjust(w) for c, w in zip(row, widths, strict=True)) for row in rows]
+    return "\n".join(lines)
+
+
+# --- shared arguments ---------------------------------------------------------------------
+
+
+def _add_groups(p: argparse.ArgumentParser) -> None:
+    g = p.add_argument_group("nondimensional groups (the paper's)")
+    g.add_argument("--R-over-h", type=float, help="cylinder radius over adhesion range, > 0")
+    g.add_argument("--sigma0-over-E", type=float,
+                   help="adhesive stress over composite modulus, >= 0 (0: Hertz)")
+    si = p.add_argument_group("SI inputs (instead of the groups)")
+    si.add_argument("--radius", type=float, help="R [m]")
+    si.add_argument("--modulus", type=float, help="composite plane-strain modulus E [Pa]")
+    si.add_argument("--E1", type=float, help="cylinder Young's modulus [Pa]")
+    si.add_argument("--nu1", type=float, help="cylinder Poisson ratio, in (-1, 0.5]")
+    si.add_argument("--E2", type=float, help="substrate Young's modulus [Pa]")
+    si.add_argument("--nu2", type=float, help="substrate Poisson ratio, in (-1, 0.5]")
+    si.add_argument("--sigma0", type=float, help="adhesive (Dugdale) stress [Pa]")
+    si.add_argument("--h", type=float, help="range of the adhesive stress [m]")
+    si.add_argument("--work-of-adhesion", type=float, help="w [J/m^2] (with --z0)")
+    si.add_argument("--z0", type=float, help="equilibrium spacing [m] (Maugis: h = 0.974 z0)")
+
+
+def _cylinder(args):
+    """A Cylinder for SI mode, or None in nondimensional mode."""
+    from .materials import Cylinder
+
+    si_given = any(getattr(args, k) is not None for k in
+                   ("radius", "modulus", "E1", "nu1", "E2", "nu2", "sigma0", "h",
+                    "work_of_adhesion", "z0"))
+    groups_given = args.R_over_h is not None or args.sigma0_over_E is not None
+    if si_given and groups_given:
+        raise ValueError("give either the nondimensional groups (--R-over-h, --sigma0-over-E) "
+                         "or SI inputs (--radius, ...), not both")
+    if not si_given:
+        if args.R_over_h is None or args.sigma0_over_E is None:
+            raise ValueError("give --R-over-h and --sigma0-over-E (or SI inputs with --radius)")
+        return None
+    if args.radius is None:
+        raise ValueError("SI inputs need --radius [m]")
+    adh = dict(cohesive_stress=args.sigma0, adhesion_range=args.h,
+               work_of_adhesion=args.work_of_adhesion, equilibrium_spacing=args.z0)
+    mats = (args.E1, args.nu1, args.E2, args.nu2)
+    if args.modulus is not None:
+        if any(v is not None for v in mats):
+            raise ValueError("give either --modulus or --E1 --nu1 --E2 --nu2, not both")
+        return Cylinder.from_modulus(args.radius, args.modulus, **adh)
+    if any(v is None for v in mats):
+        raise ValueError("SI inputs need --modulus, or all of --E1 --nu1 --E2 --nu2")
+    return Cylinder.from_materials(args.radius, *mats, **adh)
+
+
+def _groups(args):
+    cyl = _cylinder(args)
+    if cyl is None:
+        return args.R_over_h, args.sigma0_over_E, None
+    return cyl.R_over_h, cyl.sigma0_over_E, cyl
+
+
+# --- subcommands --------------------------------------------------------------------------
+
+
+def _cmd_normal(args) -> int:
+    from .normal import contact_for_load, normal_contact
+
+    rho, s, cyl = _groups(args)
+    given = [args.a_over_R is not None, args.a_over_R_range is not None,
+             args.F_over_Eh is not None, args.a is not None, args.load is not None]
+    if sum(given) != 1:
+        raise ValueError("give exactly one of --a-over-R, --a-over-R-range, --F-over-Eh, "
+                         "--a [m] or --load [N/m]")
+    if (args.a is not None or args.load is not None) and cyl is None:
+        raise ValueError("--a and --load are SI inputs: give --radius and the materials too")
+    if args.a_over_R_range is not None:
+        start, stop, num = args.a_over_R_range
+        if not float(num).is_integer() or num < 1:
+            raise ValueError(f"--a-over-R-range NUM must be an integer >= 1, got {num!r}")
+        A = np.linspace(start, stop, int(num))
+    elif args.a_over_R is not None:
+        A = np.asarray(args.a_over_R, float)
+    elif args.a is not None:
+        A = np.asarray(args.a, float) / cyl.radius
+    else:
+        A = None
+    if A is not None:
+        r = normal_contact(A, rho, s, method=args.method)
+    else:
+        F = np.asarray(args.F_over_Eh if args.F_over_Eh is not None else
+                       np.asarray(args.load, float) / (cyl.modulus * cyl.adhesion_range), float)
+        r = contact_for_load(F, rho, s, branch=args.branch)
+    recs = []
+    for i in range(np.size(r.a_over_R)):
+        def g(name, i=i):
+            return np.atleast_1d(getattr(r, name))[i]
+
+        rec = {"a_over_R": float(g("a_over_R")), "c_over_R": float(g("c_over_R")),
+               "F_over_Eh": float(g("F_over_Eh")),
+               "c_over_a": float(g("c_over_R") / g("a_over_R")),
+               "stable": bool(g("stable")), "R_over_h": float(rho), "sigma0_over_E": float(s),
+               "method": r.method, "n_collocation": int(g("n_collocation")),
+               "residual_separation": float(g("residual_separation")),
+               "error_estimate": float(g("error_estimate")), "converged": bool(g("converged"))}
+        if cyl is not None:
+            rec.update(a_m=rec["a_over_R"] * cyl.radius, c_m=rec["c_over_R"] * cyl.radius,
+                       F_N_per_m=rec["F_over_Eh"] * cyl.modulus * cyl.adhesion_range)
+        recs.append(rec)
+    if args.json:
+        print(_dump_json(recs))
+    else:
+        keys = ["a_over_R", "c_over_R", "F_over_Eh", "c_over_a", "stable"]
+        if cyl is not None:
+            keys += ["a_m", "c_m", "F_N_per_m"]
+        print(f"# normal contact, R/h = {rho:g}, sigma0/E = {s:g} ({r.method})")
+        print(_table(recs, keys))
+    return 0
+
+
+def _cmd_pulloff(args) -> int:
+    from .normal import pull_off
+
+    rho, s, cyl = _groups(args)
+    p = pull_off(rho, s)
+    rec = p.to_dict()
+    if cyl is not None:
+        Eh = cyl.modulus * cyl.adhesion_range
+        rec.update(F_pulloff_N_per_m=rec["F_pulloff_over_Eh"] * Eh,
+                   a_at_pulloff_m=rec["a_over_R_at_pulloff"] * cyl.radius,
+                   F_zero_width_N_per_m=rec["F_zero_width_over_Eh"] * Eh)
+    if args.json:
+        print(_dump_json(rec))
+    else:
+        print(f"# pull-off under load control, R/h = {rho:g}, sigma0/E = {s:g}")
+        w = max(len(k) for k in rec)
+        for k, v in rec.items():
+            print(f"{k.ljust(w)}  {v:.10g}" if isinstance(v, float) else f"{k.ljust(w)}  {v}")
+    return 0
+
+
+def _cmd_curve(args) -> int:
+    from .normal import load_curve
+
+    rho, s, _ = _groups(args)
+    c = load_curve(rho, s, a_max_over_R=args.a_max_over_R, num=args.num,
+                   num_noncontact=args.num_noncontact)
+    keys = ["branch", "central_gap_over_h", "a_over_R", "c_over_R", "F_over_Eh", "stable",
+            "turning_point", "pulloff"]
+    po = c.pulloff
+    recs = []
+    for i in range(c.a_over_R.size):
+        is_po = (c.branch[i] == "contact" and
+                 ((po.mechanism == "zero-width" and i == int(np.argmax(c.branch == "contact")))
+                  or (po.mechanism == "snap-off" and bool(c.turning_point[i]))))
+        recs.append({"branch": str(c.branch[i]),
+                     "central_gap_over_h": float(c.central_gap_over_h[i]),
+                     "a_over_R": float(c.a_over_R[i]), "c_over_R": float(c.c_over_R[i]),
+                     "F_over_Eh": float(c.F_over_Eh[i]), "stable": bool(c.stable[i]),
+                     "turning_point": bool(c.turning_point[i]), "pulloff": bool(is_po)})
+    if args.format == "json":
+        text = _dump_json({"R_over_h": rho, "sigma0_over_E": s, "pulloff": po.to_dict(),
+                           "points": recs})
+    else:
+        buf = io.StringIO()
+        buf.write(f"# linecontact {__version__} load curve\n# command: linecontact "
+                  f"{' '.join(sys.argv[1:]) if args.argv is None else ' '.join(args.argv)}\n"
+                  f"# R_over_h = {rho!r}, sigma0_over_E = {s!r}\n"
+                  f"# units: lengths over R, gap over h, force per unit length over E h\n"
+                  f"# pull-off: F_over_Eh = {po.F_pulloff_over_Eh!r} ({po.mechanism}) at "
+                  f"a_over_R = {po.a_over_R_at_pulloff!r}\n")
+        w = csv.DictWriter(buf, fieldnames=keys, lineterminator="\n")
+        w.writeheader()
+        w.writerows(recs)
+        text = buf.getvalue()
+    if args.output:
+        with open(args.output, "w", encoding="utf-8") as fh:
+            fh.write(text if text.endswith("\n") else text + "\n")
+        print(f"wrote {args.output}", file=sys.stderr)
+    else:
+        print(text.rstrip("\n"))
+    return 0
+
+
+def _cmd_paper(args) -> int:
+    from .figures import paper_figures
+
+    def progress(msg: str) -> None:
+        print(msg, file=sys.stderr)
+
+    paths = paper_figures(args.outdir, progress=progress)
+    print(f"wrote {len(paths)} files to {args.outdir}/:")
+    for p in paths:
+        print(f"  {p}")
+    return 0
+
+
+def _cmd_cite(args) -> int:
+    print(CITATION.rstrip("\n"))
+    return 0
+
+
+def build_parser() -> argparse.ArgumentParser:
+    """The argparse parser of the ``linecontact`` command."""
+    p = _Parser(prog="linecontact",
+                description="Adhesive (Maugis-Dugdale) contact of a cylinder on a substrate.",
+                epilog="Conventions: compressive load positive (pull-off forces are negative); "
+                       "forces per unit length.")
+    p.add_argument("--version", action="version", version=CITATION.rstrip("\n"))
+    sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+
+    n = sub.add_parser("normal", help="adhesive-zone width and load for given contact widths "
+                                      "(or the contact for given loads)")
+    _add_groups(n)
+    n.add_argument("--a-over-R", type=float, nargs="+", metavar="A", help="contact half-widths")
+    n.add_argument("--a-over-R-range", type=float, nargs=3, metavar=("START", "STOP", "NUM"),
+                   help="linearly spaced contact half-widths")
+    n.add_argument("--F-over-Eh", type=float, nargs="+", metavar="F",
+                   help="loads (inverse problem)")
+    n.add_argument("--a", type=float, nargs="+", help="contact half-widths [m] (SI mode)")
+    n.add_argument("--load", type=float, nargs="+", help="loads [N/m] (SI mode)")
+    n.add_argument("--branch", choices=("stable", "unstable"), default="stable",
+                   help="for given loads: the stable (default) or unstable contact")
+    n.add_argument("--method", choices=("closed-form", "collocation"), default="closed-form")
+    n.add_argument("--json", action="store_true", help="JSON array of records on stdout")
+    n.set_defaults(func=_cmd_normal)
+
+    po = sub.add_parser("pulloff", help="pull-off force under load control")
+    _add_groups(po)
+    po.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    po.set_defaults(func=_cmd_pulloff)
+
+    cu = sub.add_parser("curve", help="the whole load curve (non-contact branch included)")
+    _add_groups(cu)
+    cu.add_argument("--a-max-over-R", type=float, default=None)
+    cu.add_argument("--num", type=int, default=200, help="points on the contact branch")
+    cu.add_argument("--num-noncontact", type=int, default=40)
+    cu.add_argument("--format", choices=("csv", "json"), default="csv")
+    cu.add_argument("--json", action="store_const", dest="format", const="json",
+                    help="same as --format json")
+    cu.add_argument("-o", "--output", help="write to this file instead of stdout")
+    cu.set_defaults(func=_cmd_curve)
+
+    pa = sub.add_parser("paper", help="reproduce the paper's figures (PNG and SVG)")
+    pa.add_argument("--outdir", default="paper-figures")
+    pa.set_defaults(func=_cmd_paper)
+
+    ci = sub.add_parser("cite", help="how to cite linecontact and the paper")
+    ci.set_defaults(func=_cmd_cite)
+    return p
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Run the CLI; returns the exit status (also usable in-process by tests)."""
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    args.argv = list(argv) if argv is not None else None
+    if args.command is None:
+        parser.print_help()
+        return 2
+    try:
+        return int(args.func(args))
+    except ConvergenceError as exc:
+        print(f"linecontact {args.command}: error: {exc}", file=sys.stderr)
+        return 1
+    except (ValueError, OverflowError) as exc:
+        print(f"linecontact {args.command}: error: {exc}", file=sys.stderr)
+        return 2
+    except ImportError as exc:
+        print(f"linecontact {args.command}: error: {exc}", file=sys.stderr)
+        return 1
+    except Exception as exc:  # noqa: BLE001 - the CLI never shows a traceback
+        print(f"linecontact {args.command}: error: internal error "
+              f"({type(exc).__name__}: {exc}); please report it", file=sys.stderr)
+        return 1
+
+
+if __name__ == "__main__":  # pragma: no cover
+    sys.exit(main())
