@@ -225,34 +225,40 @@ def _rhs(solver: BoundedSolver, A, s, u):
     A = A[..., None]
     s = s[..., None]
     u = u[..., None]
-    m = np.cosh(u)
-    m1 = 2 * np.sinh(u / 2) ** 2  # m - 1 without cancellation
+    m1 = 2 * np.sinh(u / 2) ** 2  # m - 1 without cancellation, m = cosh u
     mmx = m1 + (1 - x)  # m - x
-    mpx = m + x
+    mpx = m1 + (1 + x)  # m + x
     f = -0.5 * A * x + (s / np.pi) * np.log(mmx / mpx)
-    df = (s / np.pi) * np.sinh(u) * (1 / mmx - 1 / mpx)
+    df = (2 * s / np.pi) * np.sinh(u) * x / (mmx * mpx)
     return f, df
 
 
 def _log_weights(n: int, u: NDArray) -> tuple[NDArray, NDArray]:
     """mu_j(cosh u) - mu_j(1) and d mu_j(cosh u)/du for the bounded product rule."""
-    k = np.arange(n + 2)
-    e = np.exp(-k * u[..., None])
+    e = np.empty(u.shape + (n + 2,))
+    e[..., 0] = 1.0
+    e[..., 1:] = np.exp(-u)[..., None]
+    np.cumprod(e, axis=-1, out=e)  # e_k = exp(-k u)
     j = np.arange(n)
-    mu = (np.pi / 2) * e[..., j + 2] / (j + 2)
+    mu = (np.pi / 2) * e[..., 2:] / (j + 2)
     mu[..., 1:] -= (np.pi / 2) * e[..., 1:n] / j[1:]
     mu[..., 0] += (np.pi / 2) * u  # c0(m) - c0(1) = u
-    mu1 = (np.pi / 2) / (j + 2)
-    mu1[1:] -= (np.pi / 2) / j[1:]
-    dmu = -(np.pi / 2) * e[..., j + 2]
+    mu -= _mu_at_one(n)
+    dmu = -(np.pi / 2) * e[..., 2:]
     dmu[..., 1:] += (np.pi / 2) * e[..., 1:n]
     dmu[..., 0] += np.pi / 2
-    return mu - mu1, dmu
+    return mu, dmu
+
+
+def _mu_at_one(n: int) -> NDArray:
+    j = np.arange(n)
+    mu1 = (np.pi / 2) / (j + 2)
+    mu1[1:] -= (np.pi / 2) / j[1:]
+    return mu1
 
 
 def _I(u: NDArray) -> tuple[NDArray, NDArray]:
-    """I(m) = int_1^m ln((m-t)/(m+t)) dt and dI/du, m = cosh u."""
-    m = np.cosh(np.minimum(u, 700))
+    """I(m) = int_1^m ln((m-t)/(m+t)) dt and dI/du, m = cosh u (the last term of Eq. 11)."""
     small = u < 1.0
     us = np.where(small, u, 1.0)
     mm1 = 2 * np.sinh(us / 2) ** 2
@@ -261,110 +267,108 @@ def _I(u: NDArray) -> tuple[NDArray, NDArray]:
     with np.errstate(divide="ignore", invalid="ignore"):
         i_small = np.where(mm1 > 0, mm1 * np.log(mm1), 0.0) + mp1 * np.log(mp1) - 2 * ms * \
             np.log(2 * ms)
+    # large u: I = 2m ln(tanh(u)/2) + 2 ln coth(u/2)
     ul = np.where(small, 1.0, u)
     q = np.exp(-2 * ul)
     ln_tanh = np.log1p(-q) - np.log1p(q)
     ln_tanh_half = np.log1p(-np.exp(-ul)) - np.log1p(np.exp(-ul))
     i_large = 2 * np.cosh(np.minimum(ul, 700)) * (ln_tanh - np.log(2.0)) - 2 * ln_tanh_half
     val = np.where(small, i_small, i_large)
+    # dI/du = I'(m) sinh u = 2 sinh u ln(tanh(u)/2)
+    qq = np.exp(-2 * u)
     with np.errstate(divide="ignore", invalid="ignore"):
-        dval = 2 * np.sinh(np.minimum(u, 700)) * (np.log(np.tanh(np.maximum(u, 1e-300))) -
+        dval = 2 * np.sinh(np.minimum(u, 700)) * (np.log(-np.expm1(-2 * u)) - np.log1p(qq) -
                                                   np.log(2.0))
     dval = np.where(u > 0, dval, 0.0)
-    del m
     return val, dval
 
 
 def _colloc_eval(solver: BoundedSolver, A, s, rho, u):
-    """Residual of the separation condition (scaled by rho, R(0)=1), its u-derivative, extras."""
+    """Separation residual (Eq. 11 times R/h; 1 at u = 0), its u-derivative and extras."""
     n = solver.n
     f, df = _rhs(solver, A, s, u)
-    sol = solver.solve(f)
-    dsol = solver.solve(df)
+    sol = solver.solve(f, values=False)
+    dsol = solver.solve(df, values=False)
     b, db = sol.coefficients, dsol.coefficients
     dmu, dmu_du = _log_weights(n, u)
-    J = np.sum(b * dmu, axis=-1)
-    dJ = np.sum(db * dmu, axis=-1) + np.sum(b * dmu_du, axis=-1)
+    J = np.einsum("...j,...j->...", b, dmu)
+    dJ = np.einsum("...j,...j->...", db, dmu) + np.einsum("...j,...j->...", b, dmu_du)
     Iv, dI = _I(u)
     sh = np.sinh(u)
     ch = np.cosh(u)
     Rv = 1 + rho * ((2 * A / np.pi) * J + (2 * s * A / np.pi) * Iv - 0.5 * A * A * sh * sh)
     dR = rho * ((2 * A / np.pi) * dJ + (2 * s * A / np.pi) * dI - A * A * sh * ch)
     resultant = (np.pi / 2) * b[..., 0]
-    tail = np.max(np.abs(b[..., -2:]), axis=-1) / np.maximum(np.max(np.abs(b), axis=-1), 1e-300)
+    # coefficients of the even g: the last two non-zero ones estimate the truncation error
+    tail = np.max(np.abs(b[..., -3:]), axis=-1) / np.maximum(np.max(np.abs(b), axis=-1), 1e-300)
     return Rv, dR, resultant, sol.consistency, tail
 
 
-def _newton_u(solver, A, s, rho, u0, lo, hi, maxiter=80, tol=1e-14):
-    """Bracketed Newton on the decreasing residual R(u); returns u, R, converged."""
+def _newton_u(solver, A, s, rho, u0, maxiter=80, tol=1e-14):
+    """Bracketed Newton on the decreasing residual R(u) (R(0) = 1 > 0).
+
+    Returns u, converged, and the last evaluation (R, resultant, consistency, tail).
+    """
+    P = u0.size
     u = u0.copy()
-    lo = lo.copy()
-    hi = hi.copy()
-    active = np.ones(u.shape, bool)
-    Rv = np.ones(u.shape)
+    lo = np.zeros(P)
+    hi = np.full(P, np.inf)
+    active = np.ones(P, bool)
+    last = [np.ones(P), np.zeros(P), np.zeros(P), np.full(P, np.inf)]
     for _ in range(maxiter):
         idx = np.nonzero(active)[0]
         if idx.size == 0:
             break
-        Ri, dRi, *_ = _colloc_eval(solver, A[idx], s[idx], rho[idx], u[idx])
-        Rv[idx] = Ri
-        lo[idx] = np.where(Ri > 0, u[idx], lo[idx])
-        hi[idx] = np.where(Ri <= 0, u[idx], hi[idx])
+        ui = u[idx]
+        Ri, dRi, res_, cons, tail = _colloc_eval(solver, A[idx], s[idx], rho[idx], ui)
+        for arr, v in zip(last, (Ri, res_, cons, tail), strict=True):
+            arr[idx] = v
+        lo[idx] = np.where(Ri > 0, ui, lo[idx])
+        hi[idx] = np.where(Ri <= 0, ui, hi[idx])
         with np.errstate(divide="ignore", invalid="ignore"):
-            un = u[idx] - Ri / dRi
-        mid = np.where(np.isfinite(hi[idx]), 0.5 * (lo[idx] + hi[idx]), 2 * u[idx] + 1)
+            un = ui - Ri / dRi
+        mid = np.where(np.isfinite(hi[idx]), 0.5 * (lo[idx] + hi[idx]), 2 * ui + 1)
         bad = ~np.isfinite(un) | (un <= lo[idx]) | (un >= hi[idx])
         un = np.where(bad, mid, un)
         done = np.abs(Ri) <= tol
-        un = np.where(done, u[idx], un)
-        step = np.abs(un - u[idx])
+        un = np.where(done, ui, un)
         u[idx] = un
-        active[idx] = ~done & (step > 4e-16 * np.maximum(u[idx], 1e-3))
-    return u, Rv, ~active | (np.abs(Rv) <= 1e-10)
+        active[idx] = ~done & (np.abs(un - ui) > 4e-16 * np.maximum(ui, 1e-3))
+    converged = ~active & (np.abs(last[0]) <= 1e-10)
+    return u, converged, last
 
 
 def _collocation(A, rho, s, n, tol):
     A, rho, s = np.broadcast_arrays(A, rho, s)
     shape = A.shape
     A, rho, s = (np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (A, rho, s))
-    P = A.size
-    # stage 1: a coarse solve locates c/a
+    sizes = np.asarray(_SIZES)
+    # first pass: n0 nodes (or the n asked for) locate c/a
     n0 = 16 if n == "auto" else int(n)
-    solver = BoundedSolver(n0)
     u0 = np.arccosh(np.sqrt(1 + 2 / (rho * A * A)))  # rigid-cylinder estimate
-    lo = np.zeros(P)
-    hi = np.full(P, np.inf)
-    u, Rv, conv = _newton_u(solver, A, s, rho, u0, lo, hi)
-    nsel = np.full(P, n0)
+    u, conv, (Rv, res_, cons, tail) = _newton_u(BoundedSolver(n0), A, s, rho, u0)
+    nsel = np.full(A.size, n0)
     if n == "auto":
-        need = (np.log(1 / tol) + 4.0) / np.maximum(u, 1e-300)
-        sizes = np.asarray(_SIZES)
-        pos = np.searchsorted(sizes, need)
-        nsel = np.where(pos >= sizes.size, sizes[-1], sizes[np.minimum(pos, sizes.size - 1)])
-        nsel = np.maximum(nsel, 16)
-        for nn in np.unique(nsel):
-            if nn == n0:
-                continue
-            idx = np.nonzero(nsel == nn)[0]
-            sv = BoundedSolver(int(nn))
-            ui, Ri, ci = _newton_u(sv, A[idx], s[idx], rho[idx], u[idx], np.zeros(idx.size),
-                                   np.full(idx.size, np.inf))
-            u[idx], Rv[idx], conv[idx] = ui, Ri, ci
-    # final evaluation for diagnostics
-    F = np.empty(P)
-    cons = np.empty(P)
-    tail = np.empty(P)
-    Rf = np.empty(P)
-    for nn in np.unique(nsel):
-        idx = np.nonzero(nsel == nn)[0]
-        sv = BoundedSolver(int(nn))
-        Ri, _, res_, ci, ti = _colloc_eval(sv, A[idx], s[idx], rho[idx], u[idx])
-        m = np.cosh(u[idx])
-        F[idx] = rho[idx] * A[idx] * (res_ - 2 * m * s[idx])
-        cons[idx], tail[idx], Rf[idx] = ci, ti, Ri
+        # the log source at x = c limits convergence to about exp(-1.5 u n): pick n for tol,
+        # then move points whose error estimate still exceeds tol one size up
+        need = np.log(1 / tol) / (1.5 * np.maximum(u, 1e-300))
+        pending = tail > tol
+        target = sizes[np.minimum(np.searchsorted(sizes, need), sizes.size - 1)]
+        nsel = np.where(pending, np.maximum(target, sizes[1]), nsel)
+        while pending.any():
+            for nn in np.unique(nsel[pending]):
+                idx = np.nonzero(pending & (nsel == nn))[0]
+                ui, ci, (Ri, ri, co, ti) = _newton_u(BoundedSolver(int(nn)), A[idx], s[idx],
+                                                     rho[idx], u[idx])
+                u[idx], conv[idx], Rv[idx], res_[idx], cons[idx], tail[idx] = \
+                    ui, ci, Ri, ri, co, ti
+            pending = pending & (tail > tol) & (nsel < sizes[-1])
+            nsel = np.where(pending, sizes[np.minimum(np.searchsorted(sizes, nsel) + 1,
+                                                      sizes.size - 1)], nsel)
+    F = rho * A * (res_ - 2 * np.cosh(u) * s)
     C = A * np.cosh(u)
-    converged = conv & (tail <= max(tol, 1e-15) * 10) & np.isfinite(F)
-    out = dict(u=u, C=C, F=F, res=np.abs(Rf), cons=np.abs(cons), tail=tail, n=nsel,
+    converged = conv & (tail <= 10 * tol) & np.isfinite(F)
+    out = dict(u=u, C=C, F=F, res=np.abs(Rv), cons=np.abs(cons), tail=tail, n=nsel,
                converged=converged)
     return {k: v.reshape(shape) for k, v in out.items()}
 

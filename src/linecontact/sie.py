@@ -53,6 +53,7 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
+import scipy.fft
 import scipy.linalg
 from numpy.typing import ArrayLike, NDArray
 
@@ -64,6 +65,9 @@ __all__ = [
     "bounded_rule",
     "chebyshev_log_expansion",
 ]
+
+
+_DCT_FROM = 48  # from this size on the bounded solve uses the fast cosine transform
 
 
 def _check_n(n: int, minimum: int = 1) -> int:
@@ -161,7 +165,7 @@ class BoundedSolution:
     """
 
     coefficients: NDArray[np.float64]
-    values: NDArray[np.float64]
+    values: NDArray[np.float64] | None
     consistency: NDArray[np.float64]
     extra: NDArray[np.float64] | None = None
 
@@ -221,7 +225,8 @@ class BoundedSolver:
         r"""Weights for :math:`\int_\alpha^\beta \phi\,h\,dt \approx \sum_i W_i g_i h(t_i)`."""
         return self._half * self.weights_unit
 
-    def solve(self, f: ArrayLike, extra: ArrayLike | None = None) -> BoundedSolution:
+    def solve(self, f: ArrayLike, extra: ArrayLike | None = None, *,
+              values: bool = True) -> BoundedSolution:
         r"""Solve for the bounded solution.
 
         Parameters
@@ -232,6 +237,9 @@ class BoundedSolver:
             A second right-hand side :math:`f_1`; the equation solved is then
             :math:`\ldots = f + \lambda f_1` with the unknown :math:`\lambda` fixed by the
             consistency condition (the non-symmetric case).
+        values : bool
+            Also return ``g`` at the nodes (``values`` is None otherwise; the linear
+            functionals need only the coefficients).
 
         Returns
         -------
@@ -251,8 +259,12 @@ class BoundedSolver:
             with np.errstate(divide="ignore", invalid="ignore"):
                 lam = -f.mean(axis=-1) / s1
             f = f + lam[..., None] * f1
-        b = f @ self._coef_from_f
-        g = b @ self._values_from_coef
+        if self.n >= _DCT_FROM:
+            # b_j = -(2/(n+1)) sum_k f_k T_{j+1}(x_k) is a type-II DCT of f
+            b = -scipy.fft.dct(f, type=2, axis=-1)[..., 1:] / (self.n + 1)
+        else:
+            b = f @ self._coef_from_f
+        g = b @ self._values_from_coef if values else None
         return BoundedSolution(b, g, f.mean(axis=-1), lam)
 
     # --- linear functionals (on the interval, with the map's Jacobian) ---------------------

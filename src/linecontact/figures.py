@@ -1,0 +1,377 @@
+r"""Reproduce the normal-loading figures (Figs. 2--6) of Sari, Adams & Müftü.
+
+The paper's figures are not in its text; only what they show is described. This module
+redraws them from the library's solvers with :mod:`matplotlib` (an optional dependency,
+imported only when a figure is drawn: ``pip install 'linecontact[plot]'``).
+
+Figures and parameters
+----------------------
+fig02_load_R100, fig03_load_R200
+    Load ``F/(E h)`` versus contact half-width ``a/R`` for ``R/h = 100`` (Fig. 2) and
+    ``R/h = 200`` (Fig. 3), the values the paper states. It gives no ``sigma0/E``; we use
+    :data:`LOAD_SIGMA0_OVER_E` = 0 (Hertz), 0.001, 0.005, 0.01, 0.02, 0.05, 0.1 over
+    ``0 < a/R <= 0.1`` (:data:`A_MAX_OVER_R`). The small values show the approach to Hertz
+    (Eq. 13) that the text notes; 0.001--0.01 peel to zero width at the load of Eq. (14);
+    0.05 and 0.1 have a load minimum inside the plotted range (snap-off at
+    ``a/R ~ 0.02`` and ``~ 0.05``, 1--10 % below Eq. 14), which the text describes "for
+    larger values of sigma0/E". The range ``a/R <= 0.1`` keeps the Hertz loads (0.8 and 1.6)
+    comparable with the pull-off forces (down to -1.7 and -2.2) so both ends are legible.
+    Solid lines: the closed form, dense; dotted: its part with ``dF/da < 0`` (unstable under
+    load control); markers: the paper's route, Gauss--Chebyshev collocation of Eq. (9), at
+    :data:`N_COLLOCATION_MARKERS` points per curve; dashed black: Hertz (Eq. 13); dashed
+    grey: JKR line contact (``w = sigma0 h``) for the largest ``sigma0/E``; open circles:
+    pull-off, at ``a = 0`` on Eq. (14) for the zero-width mechanism. Lines are continued to
+    their ``a -> 0`` limit, Eq. (14).
+fig04_zone_R100, fig05_zone_R200
+    Adhesive-zone half-width ``c/R`` versus ``a/R``, same ``R/h``, ``sigma0/E`` and styles
+    (``c/R`` at ``a -> 0`` is the zero-width adhesive zone of the touching state). Stronger adhesion gives the smaller ``c/R`` at a
+    given ``a/R``, as the paper remarks.
+fig06_zero_width
+    Eq. (14), the load at vanishing contact width, versus ``sigma0/E`` in ``[0, 0.1]``
+    (:data:`ZERO_WIDTH_SIGMA0_MAX`) for ``R/h`` in :data:`ZERO_WIDTH_R_OVER_H` = 10, 50,
+    100, 200, 500, 1000 (the paper: "different cylinder radii", values not given; these
+    span two decades around the ``R/h`` of Figs. 2--3). Markers: the true pull-off force,
+    open where it is Eq. (14) (zero-width mechanism), filled where the contact snaps off
+    at a lower load; the fan of filled markers below the lines shows where Eq. (14) stops
+    being the pull-off force. The dotted line is the ``sigma0/E -> inf`` limit of Eq. (14),
+    ``-pi/(2 ln 2)``, independent of ``R/h``.
+
+All curves depend on ``(R/h, sigma0/E)`` only through
+:math:`\kappa = (4/\pi)(\sigma_0/E)\sqrt{2R/h}` once ``a/R`` is scaled by ``sqrt(R/h)``
+(see :mod:`linecontact.reference`).
+"""
+
+from __future__ import annotations
+
+import os
+import pathlib
+from collections.abc import Callable, Iterable
+
+import numpy as np
+
+from . import __version__
+from . import reference as _ref
+from .normal import non_contact, normal_contact, pull_off
+
+__all__ = [
+    "A_MAX_OVER_R",
+    "LOAD_R_OVER_H",
+    "LOAD_SIGMA0_OVER_E",
+    "N_COLLOCATION_MARKERS",
+    "ZERO_WIDTH_R_OVER_H",
+    "ZERO_WIDTH_SIGMA0_MAX",
+    "paper_figures",
+]
+
+#: ``R/h`` of Figs. 2/4 and 3/5 (given in the paper).
+LOAD_R_OVER_H = (100.0, 200.0)
+#: ``sigma0/E`` of the curves of Figs. 2--5 (chosen here; the paper gives none).
+LOAD_SIGMA0_OVER_E = (0.0, 0.001, 0.005, 0.01, 0.02, 0.05, 0.1)
+#: Largest ``a/R`` drawn in Figs. 2--5.
+A_MAX_OVER_R = 0.1
+#: Collocation solutions drawn as markers per curve.
+N_COLLOCATION_MARKERS = 15
+#: ``R/h`` of the curves of Fig. 6 (chosen here).
+ZERO_WIDTH_R_OVER_H = (10.0, 50.0, 100.0, 200.0, 500.0, 1000.0)
+#: Largest ``sigma0/E`` of Fig. 6.
+ZERO_WIDTH_SIGMA0_MAX = 0.1
+
+_MISSING_MPL = "linecontact paper needs matplotlib: pip install 'linecontact[plot]'"
+_CITE = "Sari, Adams & Müftü"
+_METADATA_FORMATS = ("png", "svg", "pdf")
+_DPI = 150
+
+
+# --------------------------------------------------------------------------------------------
+# data
+
+
+def _branch_data(rho: float, sigmas: Iterable[float]) -> list[dict]:
+    """Closed-form (dense), collocation (sparse) and pull-off data, one dict per sigma0/E."""
+    sig = np.asarray(tuple(sigmas), dtype=float)
+    rhos = np.full(sig.shape, rho)
+    po = pull_off(rhos, sig)  # arrays: one vectorised call for all curves
+    # the a -> 0 limit of the contact branch is the touching non-contact state (g0 = 0)
+    c_touch = non_contact(np.zeros(sig.shape), rhos, sig).c_over_R
+    a_col = np.linspace(A_MAX_OVER_R / N_COLLOCATION_MARKERS, A_MAX_OVER_R,
+                        N_COLLOCATION_MARKERS)
+    base = np.union1d(np.geomspace(A_MAX_OVER_R * 1e-6, A_MAX_OVER_R, 120),
+                      np.linspace(A_MAX_OVER_R / 500, A_MAX_OVER_R, 500))
+    out = []
+    for i, s in enumerate(sig):
+        a_min = float(po.a_over_R_at_minimum[i])
+        snap = po.mechanism[i] == "snap-off"
+        a = np.union1d(base, [a_min]) if snap and a_min < A_MAX_OVER_R else base
+        cf = normal_contact(a, rho, s)
+        col = normal_contact(a_col, rho, s, method="collocation")
+        F0 = float(po.F_zero_width_over_Eh[i])
+        c0 = float(c_touch[i])
+        out.append(dict(
+            sigma=float(s),
+            # the a -> 0 limit (Eq. 14 and the zero-width adhesive zone) closes each line
+            a=np.concatenate([[0.0], a]),
+            F=np.concatenate([[F0], cf.F_over_Eh]),
+            c=np.concatenate([[c0], cf.c_over_R]),
+            unstable=np.concatenate([[snap], snap & (a <= a_min)]),
+            a_col=a_col, F_col=col.F_over_Eh, c_col=col.c_over_R,
+            a_po=float(po.a_over_R_at_pulloff[i]), F_po=float(po.F_pulloff_over_Eh[i]),
+            c_po=float(po.c_over_R_at_pulloff[i]), mechanism=str(po.mechanism[i]),
+        ))
+    return out
+
+
+# --------------------------------------------------------------------------------------------
+# matplotlib plumbing (imported lazily)
+
+
+def _mpl():
+    """Import the matplotlib pieces used here, or raise the install hint."""
+    try:
+        from matplotlib import colormaps
+        from matplotlib.backends.backend_agg import FigureCanvasAgg
+        from matplotlib.figure import Figure
+        from matplotlib.lines import Line2D
+    except ImportError as err:  # pragma: no cover - exercised only without matplotlib
+        raise ImportError(_MISSING_MPL) from err
+    return Figure, FigureCanvasAgg, Line2D, colormaps
+
+
+def _new_axes(title: str, xlabel: str, ylabel: str):
+    """A figure with one axes on the Agg canvas (no pyplot, no window), shared styling."""
+    Figure, FigureCanvasAgg, _, _ = _mpl()
+    fig = Figure(figsize=(9.6, 5.4))
+    FigureCanvasAgg(fig)
+    ax = fig.add_subplot()
+    ax.set_title(title, fontsize=11)
+    ax.set_xlabel(xlabel, fontsize=12)
+    ax.set_ylabel(ylabel, fontsize=12)
+    ax.grid(True, color="0.88", linewidth=0.6)
+    ax.tick_params(labelsize=10)
+    return fig, ax
+
+
+def _colors(n: int) -> list:
+    cmap = _mpl()[3]["viridis"]
+    return [cmap(x) for x in np.linspace(0.0, 0.85, n)]
+
+
+def _sigma_colors(sigmas) -> list:
+    """Viridis for sigma0 > 0; light grey for sigma0 = 0 so dashed Hertz stays visible on it."""
+    pos = _colors(sum(s > 0 for s in sigmas))[::-1]
+    return ["0.72" if s == 0 else pos.pop() for s in sigmas]
+
+
+def _save(fig, outdir: pathlib.Path, stem: str, formats: tuple[str, ...]) -> list[pathlib.Path]:
+    """Stamp the version, lay out, save in every format, release the figure."""
+    from matplotlib import rc_context
+
+    tag = f"linecontact {__version__}"
+    fig.text(0.995, 0.005, tag, ha="right", va="bottom", fontsize=7, color="0.45")
+    fig.tight_layout(rect=(0, 0.02, 1, 1))
+    paths = []
+    # a fixed hash salt and no date make the SVG output reproducible
+    with rc_context({"svg.hashsalt": "linecontact"}):
+        for fmt in formats:
+            path = outdir / f"{stem}.{fmt}"
+            meta = None
+            if fmt in _METADATA_FORMATS:
+                meta = {"Creator": tag}
+                if fmt == "svg":
+                    meta["Date"] = None
+            fig.savefig(path, format=fmt, dpi=_DPI, metadata=meta)
+            paths.append(path)
+    fig.clear()
+    return paths
+
+
+def _legends(ax, title: str, colors, labels, entries) -> None:
+    """Colour key (top) and line-style key (bottom), both outside the axes on the right."""
+    Line2D = _mpl()[2]
+    key = ax.legend([Line2D([], [], color=c, lw=2.5) for c in colors], labels, title=title,
+                    loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=9,
+                    title_fontsize=10, borderaxespad=0.0)
+    ax.add_artist(key)
+    ax.legend([Line2D([], [], **kw) for _, kw in entries], [t for t, _ in entries],
+              loc="lower left", bbox_to_anchor=(1.02, 0.0), fontsize=8.5, borderaxespad=0.0)
+
+
+def _sigma_labels(sigmas) -> list[str]:
+    return ["0 (Hertz)" if s == 0 else f"{s:g}" for s in sigmas]
+
+
+_COL_KW = dict(ls="none", marker="s", ms=4.5, mec="k", mew=0.5)
+_PO_KW = dict(ls="none", marker="o", ms=10, mfc="none", mew=1.6)
+_OPEN_KW = dict(ls="none", marker="o", ms=6, mfc="none", mew=1.3)
+_FILLED_KW = dict(ls="none", marker="o", ms=6)
+
+
+def _branch_lines(ax, x, y, unstable, color, lw: float) -> None:
+    """Solid where stable under load control, dotted on the dF/da < 0 part."""
+    if unstable.any():
+        k = int(np.flatnonzero(unstable)[-1])  # the minimum closes the unstable part
+        ax.plot(x[:k + 1], y[:k + 1], color=color, lw=lw, ls=":")
+        ax.plot(x[k:], y[k:], color=color, lw=lw)
+    else:
+        ax.plot(x, y, color=color, lw=lw)
+
+
+# --------------------------------------------------------------------------------------------
+# the figures
+
+
+def _lw(sigma: float) -> float:
+    return 3.2 if sigma == 0 else 1.8
+
+
+def _branch_figure(ax, data: list[dict], key: str) -> list:
+    """Closed-form lines, collocation markers and pull-off circles of ``key`` ("F" or "c")."""
+    colors = _sigma_colors([d["sigma"] for d in data])
+    for d, col in zip(data, colors, strict=True):
+        _branch_lines(ax, d["a"], d[key], d["unstable"], col, _lw(d["sigma"]))
+        ax.plot(d["a_col"], d[f"{key}_col"], color=col, **_COL_KW, zorder=5)
+        if d["sigma"] > 0:
+            ax.plot(d["a_po"], d[f"{key}_po"], color=col, mec=col, **_PO_KW, zorder=6)
+    ax.set_xlim(-0.03 * A_MAX_OVER_R, A_MAX_OVER_R * 1.02)
+    return colors
+
+
+_STYLE_BRANCH = [
+    ("closed form", dict(color="0.2", lw=1.8)),
+    ("closed form, unstable\n($dF/da<0$, load control)", dict(color="0.2", lw=1.6, ls=":")),
+    ("collocation of Eq. 9", dict(color="0.6", **_COL_KW)),
+]
+
+
+def _load_figure(number: int, rho: float, data: list[dict]):
+    """Figs. 2, 3: F/(Eh) versus a/R."""
+    fig, ax = _new_axes(
+        f"Fig. {number} ({_CITE}): normal load, $R/h = {rho:g}$",
+        r"contact half-width $a/R$", r"load $F/(Eh)$")
+    a = data[0]["a"][1:]
+    ax.axhline(0.0, color="0.3", lw=0.8)
+    ax.plot(np.concatenate([[0.0], a]), np.concatenate([[0.0], _ref.hertz_load(a, rho)]),
+            color="k", ls="--", lw=1.2, zorder=4)
+    big = data[-1]
+    ax.plot(a, _ref.jkr_load(a, rho, big["sigma"]), color="0.45", ls=(0, (6, 3)), lw=1.0)
+    colors = _branch_figure(ax, data, "F")
+    lo = min(d["F_po"] for d in data)
+    hi = float(_ref.hertz_load(A_MAX_OVER_R, rho))
+    ax.set_ylim(lo - 0.06 * (hi - lo), hi + 0.05 * (hi - lo))
+    _legends(ax, r"$\sigma_0/E$", colors, _sigma_labels([d["sigma"] for d in data]), [
+        *_STYLE_BRANCH,
+        ("Hertz (Eq. 13)", dict(color="k", ls="--", lw=1.2)),
+        (f"JKR line contact, $w=\\sigma_0 h$,\n$\\sigma_0/E={big['sigma']:g}$",
+         dict(color="0.45", ls=(0, (6, 3)), lw=1.0)),
+        ("pull-off (at $a=0$: Eq. 14)", dict(color="0.2", **_PO_KW)),
+    ])
+    return fig
+
+
+def _zone_figure(number: int, rho: float, data: list[dict]):
+    """Figs. 4, 5: c/R versus a/R."""
+    fig, ax = _new_axes(
+        f"Fig. {number} ({_CITE}): adhesive-zone width, $R/h = {rho:g}$",
+        r"contact half-width $a/R$", r"adhesive-zone half-width $c/R$")
+    colors = _branch_figure(ax, data, "c")
+    _legends(ax, r"$\sigma_0/E$", colors, _sigma_labels([d["sigma"] for d in data]), [
+        *_STYLE_BRANCH,
+        ("pull-off", dict(color="0.2", **_PO_KW)),
+    ])
+    return fig
+
+
+def _zero_width_figure():
+    """Fig. 6: Eq. (14) versus sigma0/E, with the true pull-off force as markers."""
+    fig, ax = _new_axes(
+        f"Fig. 6 ({_CITE}): zero-contact-width force, Eq. (14)",
+        r"adhesive stress $\sigma_0/E$", r"load $F/(Eh)$")
+    rhos = np.asarray(ZERO_WIDTH_R_OVER_H)
+    colors = _colors(rhos.size)
+    s_line = np.linspace(0.0, ZERO_WIDTH_SIGMA0_MAX, 300)
+    s_mark = np.linspace(ZERO_WIDTH_SIGMA0_MAX / 12, ZERO_WIDTH_SIGMA0_MAX, 12)
+    F_line = _ref.zero_width_load(rhos[:, None], s_line[None, :])
+    po = pull_off(rhos[:, None], s_mark[None, :])
+    ax.axhline(0.0, color="0.3", lw=0.8)
+    ax.axhline(-np.pi / (2 * _ref.LN2), color="0.5", ls=":", lw=1.0)
+    for i, col in enumerate(colors):
+        ax.plot(s_line, F_line[i], color=col, lw=1.8)
+        snap = po.mechanism[i] == "snap-off"
+        F = po.F_pulloff_over_Eh[i]
+        ax.plot(s_mark[~snap], F[~snap], color=col, mec=col, **_OPEN_KW)
+        ax.plot(s_mark[snap], F[snap], color=col, mec=col, **_FILLED_KW)
+    ax.set_xlim(0.0, ZERO_WIDTH_SIGMA0_MAX * 1.02)
+    _legends(ax, "$R/h$", colors, [f"{r:g}" for r in rhos], [
+        ("Eq. 14 (zero contact width)", dict(color="0.2", lw=1.8)),
+        ("pull-off = Eq. 14\n(peels to zero width)", dict(color="0.2", **_OPEN_KW)),
+        ("pull-off below Eq. 14\n(snap-off at finite width)", dict(color="0.2", **_FILLED_KW)),
+        ("Eq. 14 as $\\sigma_0/E\\to\\infty$:\n$-\\pi/(2\\ln 2)$, any $R/h$",
+         dict(color="0.5", ls=":", lw=1.0)),
+    ])
+    return fig
+
+
+# --------------------------------------------------------------------------------------------
+# public
+
+
+def paper_figures(outdir: str | os.PathLike = "paper-figures", *,
+                  formats: Iterable[str] = ("png", "svg"),
+                  progress: Callable[[str], object] | None = None) -> list[pathlib.Path]:
+    """Draw the normal-loading figures of the paper (Figs. 2--6) into ``outdir``.
+
+    Parameters
+    ----------
+    outdir : str or os.PathLike
+        Output directory, created if missing; existing files of the same names are
+        overwritten.
+    formats : iterable of str
+        File formats understood by matplotlib (a single string is one format). PNG is
+        written at 150 dpi; PNG, SVG and PDF carry ``Creator: linecontact <version>``.
+    progress : callable, optional
+        Called with a short message before each step; nothing is printed otherwise.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written, figure by figure, in the order of ``formats``.
+
+    Raises
+    ------
+    ImportError
+        If matplotlib is not installed.
+    ValueError
+        If ``formats`` is empty.
+
+    Notes
+    -----
+    The parameters of each figure and the reasons for them are in the module docstring.
+    """
+    _mpl()
+    fmts = (formats,) if isinstance(formats, str) else tuple(formats)
+    if not fmts or not all(isinstance(f, str) and f for f in fmts):
+        raise ValueError(f"formats must be a non-empty sequence of format names, got "
+                         f"{formats!r}")
+    fmts = tuple(f.lower().lstrip(".") for f in fmts)
+    say = progress if progress is not None else (lambda msg: None)
+    out = pathlib.Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+
+    written: list[pathlib.Path] = []
+    rho_a, rho_b = LOAD_R_OVER_H
+    data = {}
+    for rho in LOAD_R_OVER_H:
+        say(f"computing load curves for R/h = {rho:g} "
+            f"({len(LOAD_SIGMA0_OVER_E)} values of sigma0/E)")
+        data[rho] = _branch_data(rho, LOAD_SIGMA0_OVER_E)
+    jobs = [
+        ("fig02_load_R100", lambda: _load_figure(2, rho_a, data[rho_a])),
+        ("fig03_load_R200", lambda: _load_figure(3, rho_b, data[rho_b])),
+        ("fig04_zone_R100", lambda: _zone_figure(4, rho_a, data[rho_a])),
+        ("fig05_zone_R200", lambda: _zone_figure(5, rho_b, data[rho_b])),
+        ("fig06_zero_width", _zero_width_figure),
+    ]
+    for stem, build in jobs:
+        say(f"drawing {stem} ({', '.join(fmts)})")
+        written += _save(build(), out, stem, fmts)
+    say(f"wrote {len(written)} files to {out}")
+    return written
