@@ -1,0 +1,163 @@
+"""CLI: wiring and format only (the numbers are tested in the physics tests)."""
+
+import json
+import math
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from linecontact import normal_contact, pull_off, zero_width_load
+from linecontact.cli import main
+
+CONTRACT = Path(__file__).resolve().parents[2] / "shared" / "tools" / "check-cli-contract"
+
+
+def run(capsys, *argv):
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_normal_json_contract(capsys):
+    code, out, err = run(capsys, "normal", "--R-over-h", "100", "--sigma0-over-E", "0.01",
+                         "--a-over-R", "0.01", "0.05", "--json")
+    assert code == 0, err
+    recs = json.loads(out)
+    assert len(recs) == 2
+    ref = normal_contact([0.01, 0.05], 100, 0.01)
+    for rec, a, c, F in zip(recs, ref.a_over_R, ref.c_over_R, ref.F_over_Eh, strict=True):
+        assert rec["a_over_R"] == a and rec["c_over_R"] == c and rec["F_over_Eh"] == F
+
+
+def test_normal_range_and_collocation(capsys):
+    code, out, _ = run(capsys, "normal", "--R-over-h", "200", "--sigma0-over-E", "0.02",
+                       "--a-over-R-range", "0.01", "0.05", "5", "--method", "collocation",
+                       "--json")
+    assert code == 0
+    recs = json.loads(out)
+    np.testing.assert_allclose([r["a_over_R"] for r in recs], np.linspace(0.01, 0.05, 5))
+    assert all(r["method"] == "collocation" and r["n_collocation"] >= 16 for r in recs)
+
+
+def test_normal_inverse_branches(capsys):
+    po = pull_off(100, 0.2)
+    F = 0.5 * (po.F_pulloff_over_Eh + po.F_zero_width_over_Eh)
+    code, out, _ = run(capsys, "normal", "--R-over-h", "100", "--sigma0-over-E", "0.2",
+                       "--F-over-Eh", repr(F), "--branch", "unstable", "--json")
+    assert code == 0
+    rec = json.loads(out)[0]
+    assert rec["stable"] is False and rec["a_over_R"] < po.a_over_R_at_pulloff
+    assert math.isclose(rec["F_over_Eh"], F, rel_tol=1e-9)
+
+
+def test_pulloff_json(capsys):
+    code, out, _ = run(capsys, "pulloff", "--R-over-h", "100", "--sigma0-over-E", "0.01",
+                       "--json")
+    assert code == 0
+    rec = json.loads(out)
+    assert rec["mechanism"] == "zero-width" and rec["a_over_R_at_pulloff"] == 0
+    assert rec["F_pulloff_over_Eh"] == rec["F_zero_width_over_Eh"] == zero_width_load(100, 0.01)
+    code, out, _ = run(capsys, "pulloff", "--R-over-h", "100", "--sigma0-over-E", "0.2",
+                       "--json")
+    rec = json.loads(out)
+    assert rec["mechanism"] == "snap-off" and rec["a_over_R_at_pulloff"] > 0
+    assert rec["F_pulloff_over_Eh"] < rec["F_zero_width_over_Eh"] < 0
+
+
+def test_si_mode_matches_groups(capsys):
+    # R = 50 nm, E = 100 GPa, sigma0 = 1 GPa, h = 0.5 nm  ->  R/h = 100, sigma0/E = 0.01
+    code, out, _ = run(capsys, "pulloff", "--radius", "50e-9", "--modulus", "100e9",
+                       "--sigma0", "1e9", "--h", "0.5e-9", "--json")
+    assert code == 0
+    rec = json.loads(out)
+    assert math.isclose(rec["F_pulloff_over_Eh"], zero_width_load(100, 0.01), rel_tol=1e-12)
+    assert math.isclose(rec["F_pulloff_N_per_m"], rec["F_pulloff_over_Eh"] * 100e9 * 0.5e-9,
+                        rel_tol=1e-12)
+
+
+def test_curve_csv_and_json(capsys, tmp_path):
+    target = tmp_path / "curve.csv"
+    code, _, err = run(capsys, "curve", "--R-over-h", "100", "--sigma0-over-E", "0.1",
+                       "--num", "20", "--num-noncontact", "5", "-o", str(target))
+    assert code == 0 and "wrote" in err
+    text = target.read_text().splitlines()
+    assert text[0].startswith("# linecontact") and any("pull-off" in t for t in text[:6])
+    rows = [r for r in text if not r.startswith("#")]
+    assert rows[0].split(",")[0] == "branch" and len(rows) >= 1 + 5 + 20
+    code, out, _ = run(capsys, "curve", "--R-over-h", "100", "--sigma0-over-E", "0.1",
+                       "--num", "20", "--num-noncontact", "5", "--json")
+    doc = json.loads(out)
+    pts = doc["points"]
+    assert sum(p["pulloff"] for p in pts) == 1
+    assert {p["branch"] for p in pts} == {"contact", "non-contact"}
+    assert min(p["F_over_Eh"] for p in pts) == pytest.approx(doc["pulloff"]["F_pulloff_over_Eh"])
+
+
+def test_cite_and_version(capsys):
+    code, out, _ = run(capsys, "cite")
+    assert code == 0 and "Sari" in out and "doi" in out
+    with pytest.raises(SystemExit) as exc:
+        main(["--version"])
+    assert exc.value.code == 0
+
+
+BAD = [
+    (["normal", "--R-over-h", "-1", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],
+     "R_over_h must be in"),
+    (["normal", "--R-over-h", "100", "--sigma0-over-E", "0.01", "--a-over-R", "0"],
+     "a_over_R must be in"),
+    (["normal", "--R-over-h", "100", "--sigma0-over-E", "0.01"], "exactly one of"),
+    (["normal", "--R-over-h", "100", "--sigma0-over-E", "0.2", "--F-over-Eh", "-100"],
+     "pull-off"),
+    (["pulloff", "--R-over-h", "100", "--sigma0-over-E", "nan"], "sigma0_over_E"),
+    (["pulloff", "--R-over-h", "100"], "--sigma0-over-E"),
+    (["pulloff", "--R-over-h", "100", "--sigma0-over-E", "0.1", "--radius", "1e-8"],
+     "not both"),
+    (["pulloff", "--radius", "1e-8", "--E1", "1e11", "--nu1", "0.7", "--E2", "1e11", "--nu2",
+      "0.3", "--sigma0", "1e9", "--h", "1e-9"], "nu1 must be in"),
+    (["normal", "--R-over-h", "x", "--sigma0-over-E", "0.1", "--a-over-R", "0.1"],
+     "invalid float"),
+    (["curve", "--R-over-h", "100", "--sigma0-over-E", "0.1", "--num", "1"], "num must be"),
+]
+
+
+@pytest.mark.parametrize(("argv", "message"), BAD)
+def test_bad_input_exit_2(capsys, argv, message):
+    with pytest.raises(SystemExit) if "invalid float" in message else _nullcontext() as exc:
+        code = main(argv)
+    if "invalid float" in message:
+        code = exc.value.code
+    _, err = capsys.readouterr()
+    assert code == 2
+    assert "error:" in err and message in err and "Traceback" not in err
+    assert len(err.strip().splitlines()) == 1
+
+
+class _nullcontext:
+    def __enter__(self):
+        return None
+
+    def __exit__(self, *exc):
+        return False
+
+
+def test_module_entry_point():
+    p = subprocess.run([sys.executable, "-m", "linecontact", "pulloff", "--R-over-h", "10",
+                        "--sigma0-over-E", "0.001", "--json"], capture_output=True, text=True,
+                       timeout=120)
+    assert p.returncode == 0, p.stderr
+    assert json.loads(p.stdout)["mechanism"] in ("zero-width", "snap-off")
+
+
+@pytest.mark.skipif(not CONTRACT.exists() or shutil.which("linecontact") is None,
+                    reason="the shared contract checker or the console script is absent")
+def test_shared_cli_contract():
+    p = subprocess.run([sys.executable, str(CONTRACT)], capture_output=True, text=True,
+                       timeout=600, env=dict(os.environ))
+    assert "BROKEN" not in p.stdout, p.stdout
+    assert p.returncode == 0, p.stdout + p.stderr
