@@ -23,9 +23,10 @@ fig02_load_R100, fig03_load_R200
     pull-off, at ``a = 0`` on Eq. (14) for the zero-width mechanism. Lines are continued to
     their ``a -> 0`` limit, Eq. (14).
 fig04_zone_R100, fig05_zone_R200
-    Adhesive-zone half-width ``c/R`` versus ``a/R``, same ``R/h``, ``sigma0/E`` and styles
-    (``c/R`` at ``a -> 0`` is the zero-width adhesive zone of the touching state). Stronger adhesion gives the smaller ``c/R`` at a
-    given ``a/R``, as the paper remarks.
+    Adhesive-zone half-width ``c/R`` versus ``a/R``, same ``R/h``, ``sigma0/E`` and styles;
+    at ``a -> 0`` the lines end on the adhesive zone of the touching state (central gap
+    zero). Stronger adhesion gives the smaller ``c/R`` at a given ``a/R``, as the paper
+    remarks.
 fig06_zero_width
     Eq. (14), the load at vanishing contact width, versus ``sigma0/E`` in ``[0, 0.1]``
     (:data:`ZERO_WIDTH_SIGMA0_MAX`) for ``R/h`` in :data:`ZERO_WIDTH_R_OVER_H` = 10, 50,

@@ -72,8 +72,8 @@ def composite_modulus(E1: ArrayLike, nu1: ArrayLike, E2: ArrayLike, nu2: ArrayLi
 
     Examples
     --------
-    >>> composite_modulus(70e9, 0.17, 70e9, 0.17) == 70e9 / (2 * (1 - 0.17**2))
-    True
+    >>> round(composite_modulus(70e9, 0.17, 70e9, 0.17) / 1e9, 6)  # E1/(2(1 - nu^2))
+    36.041602
     """
     E1, nu1, E2, nu2 = _moduli(E1, nu1, E2, nu2)
     val = 1.0 / ((1 - nu1 ** 2) / E1 + (1 - nu2 ** 2) / E2)
@@ -186,7 +186,7 @@ class Cylinder:
     Examples
     --------
     >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
-    >>> cyl.R_over_h, cyl.sigma0_over_E
+    >>> round(cyl.R_over_h, 9), cyl.sigma0_over_E
     (100.0, 0.01)
     """
 
