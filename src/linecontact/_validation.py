@@ -71,5 +71,5 @@ def scalar_or_array(*arrays: NDArray) -> bool:
 def out(value: NDArray, scalar: bool):
     """Return a Python float (or bool/int) for scalar calls, the array otherwise."""
     if scalar:
-        return value.item() if isinstance(value, np.ndarray) else value
+        return value.item() if isinstance(value, (np.ndarray, np.generic)) else value
     return value

@@ -56,6 +56,8 @@ _SIZES = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, 768, 1024, 1536, 2048
 
 
 def _as_output(value, scalar: bool):
+    if isinstance(value, np.generic):
+        return value.item() if scalar else np.asarray(value)
     if isinstance(value, np.ndarray) and scalar and value.ndim == 0:
         return value.item()
     if isinstance(value, np.ndarray) and scalar and value.size == 1:
@@ -228,7 +230,11 @@ def _rhs(solver: BoundedSolver, A, s, u):
     m1 = 2 * np.sinh(u / 2) ** 2  # m - 1 without cancellation, m = cosh u
     mmx = m1 + (1 - x)  # m - x
     mpx = m1 + (1 + x)  # m + x
-    f = -0.5 * A * x + (s / np.pi) * np.log(mmx / mpx)
+    ratio = mmx / mpx
+    # ln((m-x)/(m+x)): log1p where the ratio is near 1 (wide adhesive zones, m >> 1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        lg = np.where(ratio > 0.5, np.log1p(-2 * x / mpx), np.log(ratio))
+    f = -0.5 * A * x + (s / np.pi) * lg
     df = (2 * s / np.pi) * np.sinh(u) * x / (mmx * mpx)
     return f, df
 
@@ -438,12 +444,16 @@ def normal_contact(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: Arra
         stable = _ref._branch_point(u, kap)["dphi"] < 0
     if raise_on_failure and not np.all(converged):
         i = np.flatnonzero(~np.asarray(converged).reshape(-1))[0]
+        nn = int(np.reshape(ncol, -1)[i])
+        hint = (f"the adhesive zone is too thin (c/a = {np.reshape(C / A, -1)[i]:.6g}) for "
+                f"n <= {_SIZES[-1]} nodes" if n == "auto" else
+                f"n = {nn} nodes are too few for tol = {tol:g}; try n='auto'")
         raise ConvergenceError(
             f"normal_contact ({method}) did not converge at a_over_R="
-            f"{A.reshape(-1)[i]!r}, R_over_h={rho.reshape(-1)[i]!r}, sigma0_over_E="
-            f"{s.reshape(-1)[i]!r} (separation residual {np.reshape(res, -1)[i]:.3g}, error "
-            f"estimate {np.reshape(err, -1)[i]:.3g}); the adhesive zone is too thin for "
-            f"n <= {_SIZES[-1]} or the point is outside the solver's range")
+            f"{float(A.reshape(-1)[i])!r}, R_over_h={float(rho.reshape(-1)[i])!r}, "
+            f"sigma0_over_E={float(s.reshape(-1)[i])!r} (separation residual "
+            f"{float(np.reshape(res, -1)[i]):.3g}, error estimate "
+            f"{float(np.reshape(err, -1)[i]):.3g}): {hint}")
     vals = dict(a_over_R=A, c_over_R=C, F_over_Eh=F, R_over_h=rho, sigma0_over_E=s,
                 n_collocation=ncol, residual_separation=res, residual_consistency=cons,
                 error_estimate=err, converged=converged, stable=stable)
@@ -612,10 +622,10 @@ def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: A
         if bad.any():
             i = np.flatnonzero(bad.reshape(-1))[0]
             raise NoEquilibriumError(
-                f"no contact carries F_over_Eh={F.reshape(-1)[i]!r}: it is below the pull-off "
-                f"force F_pulloff_over_Eh={Fmin.reshape(-1)[i]!r} (R_over_h="
-                f"{rho.reshape(-1)[i]!r}, sigma0_over_E={s.reshape(-1)[i]!r}); the cylinder "
-                f"has pulled off")
+                f"no contact carries F_over_Eh={float(F.reshape(-1)[i])!r}: it is below the "
+                f"pull-off force, the minimum load on the contact branch F_minimum_over_Eh="
+                f"{float(Fmin.reshape(-1)[i])!r} (R_over_h={float(rho.reshape(-1)[i])!r}, "
+                f"sigma0_over_E={float(s.reshape(-1)[i])!r}); the cylinder has pulled off")
         hi = np.log(np.where(np.isfinite(us), us, 745.0))
         lo = np.full(F.shape, np.log(1e-12))
         u = _solve_u_for_phi(F * (2 / np.pi), kap, lo, hi, increasing=False)
@@ -624,9 +634,9 @@ def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: A
         if bad.any():
             i = np.flatnonzero(bad.reshape(-1))[0]
             raise NoEquilibriumError(
-                f"no unstable contact carries F_over_Eh={F.reshape(-1)[i]!r}: that branch "
-                f"exists only for F_minimum_over_Eh={Fmin.reshape(-1)[i]!r} < F_over_Eh < "
-                f"F_zero_width_over_Eh={F0.reshape(-1)[i]!r}")
+                f"no unstable contact carries F_over_Eh={float(F.reshape(-1)[i])!r}: that "
+                f"branch exists only for F_minimum_over_Eh={float(Fmin.reshape(-1)[i])!r} < "
+                f"F_over_Eh < F_zero_width_over_Eh={float(F0.reshape(-1)[i])!r}")
         lo = np.log(us)
         hi = np.full(F.shape, np.log(745.0))
         u = _solve_u_for_phi(F * (2 / np.pi), kap, lo, hi, increasing=True)

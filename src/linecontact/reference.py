@@ -77,7 +77,7 @@ def kappa(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | float:
     :math:`\kappa = (4/\pi)(\sigma_0/E)\sqrt{2R/h}`.
 
     Small :math:`\kappa` is the DMT-like (rigid, long-range) end, large :math:`\kappa` the
-    JKR-like (compliant, short-range) end. :math:`\kappa = (2\sqrt2/\pi^{2/3})\,\lambda^{3/2}`
+    JKR-like (compliant, short-range) end. :math:`\kappa = \lambda^{3/2}/\sqrt2`
     with :math:`\lambda` of :func:`maugis_parameter`.
     """
     rho = positive("R_over_h", R_over_h)
