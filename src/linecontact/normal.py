@@ -230,10 +230,15 @@ def _rhs(solver: BoundedSolver, A, s, u):
     m1 = 2 * np.sinh(u / 2) ** 2  # m - 1 without cancellation, m = cosh u
     mmx = m1 + (1 - x)  # m - x
     mpx = m1 + (1 + x)  # m + x
-    ratio = mmx / mpx
-    # ln((m-x)/(m+x)): log1p where the ratio is near 1 (wide adhesive zones, m >> 1)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        lg = np.where(ratio > 0.5, np.log1p(-2 * x / mpx), np.log(ratio))
+    # ln((m-x)/(m+x)): as log1p for wide adhesive zones (m > 2, the ratio is near 1 and the
+    # values are O(1/m)), as log of the ratio otherwise (it may be small near x = 1)
+    wide = (m1 > 1.0).reshape(-1)
+    mmx2 = mmx.reshape(-1, x.size)
+    mpx2 = mpx.reshape(-1, x.size)
+    lg = np.empty(mmx2.shape)
+    lg[wide] = np.log1p(-2 * x / mpx2[wide])
+    lg[~wide] = np.log(mmx2[~wide] / mpx2[~wide])
+    lg = lg.reshape(mmx.shape)
     f = -0.5 * A * x + (s / np.pi) * lg
     df = (2 * s / np.pi) * np.sinh(u) * x / (mmx * mpx)
     return f, df
