@@ -162,24 +162,19 @@ class NormalContact(_Result):
         return p
 
     def _collocation_pressure(self, x: NDArray) -> NDArray:
+        """Bounded pressure minus sigma0 inside the contact, re-solved at the stored c/a."""
         A = np.atleast_1d(np.asarray(self.a_over_R, dtype=float))
         C = np.atleast_1d(np.asarray(self.c_over_R, dtype=float))
-        rho = np.broadcast_to(np.asarray(self.R_over_h, float), A.shape)
         s = np.broadcast_to(np.asarray(self.sigma0_over_E, float), A.shape)
         nn = np.broadcast_to(np.asarray(self.n_collocation), A.shape)
-        m = C / A
-        u = np.arccosh(np.maximum(m, 1.0))
-        xx = np.broadcast_to(x, A.shape + x.shape[-1:]) if x.ndim <= 1 else \
-            np.broadcast_to(x, A.shape + x.shape[-1:])
+        u = np.arccosh(np.maximum(C / A, 1.0))
+        xx = np.broadcast_to(x, A.shape + x.shape[-1:])
         result = np.zeros(A.shape + x.shape[-1:])
         for n in np.unique(nn):
             sel = nn == n
             solver = BoundedSolver(int(n))
-            f = _rhs(solver, A[sel], s[sel], u[sel])[0]
-            sol = solver.solve(f)
-            phi = solver.evaluate(sol, xx[sel] / A[sel, None])
-            result[sel] = phi - s[sel, None]
-        del rho
+            sol = solver.solve(_rhs(solver, A[sel], s[sel], u[sel])[0], values=False)
+            result[sel] = solver.evaluate(sol, xx[sel] / A[sel, None]) - s[sel, None]
         return result.reshape(np.shape(self.a_over_R) + x.shape[-1:])
 
 
@@ -187,7 +182,7 @@ class NormalContact(_Result):
 # closed form
 
 
-def _closed_form_from_u(u, kap, rho, s, ustar):
+def _closed_form_from_u(u, kap, rho, ustar):
     bp = _ref._branch_point(u, kap)
     sq = np.sqrt(2 / rho)
     A = bp["abar"] * sq
@@ -521,7 +516,7 @@ def _pulloff_flat(rho: NDArray, s: NDArray):
     C_min = np.zeros(kap.shape)
     F_min = F0.copy()
     if fin.any():
-        A_, C_, F_, _ = _closed_form_from_u(us[fin], kap[fin], rho[fin], s[fin], us[fin])
+        A_, C_, F_, _ = _closed_form_from_u(us[fin], kap[fin], rho[fin], us[fin])
         A_min[fin], C_min[fin], F_min[fin] = A_, C_, np.minimum(F_, F0[fin])
     zero_c = np.sqrt(2 / rho) * 2 / (kap * _ref.LN2 + np.sqrt(kap * kap * _ref.LN2 ** 2 + 4))
     snap = (F0 - F_min) > ZERO_WIDTH_RTOL * np.abs(F0)
@@ -645,7 +640,7 @@ def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: A
         lo = np.log(us)
         hi = np.full(F.shape, np.log(745.0))
         u = _solve_u_for_phi(F * (2 / np.pi), kap, lo, hi, increasing=True)
-    A, C, Fc, stable = _closed_form_from_u(u, kap, rho, s, us)
+    A, C, Fc, stable = _closed_form_from_u(u, kap, rho, us)
     scale = np.maximum.reduce([np.abs(F), np.abs(F0), np.pi / 4 * A * A * rho])
     res = np.abs(Fc - F) / np.maximum(scale, 1e-300)
     z = np.zeros(F.shape)

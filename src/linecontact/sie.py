@@ -291,11 +291,11 @@ class BoundedSolver:
         return self._half * (val + np.log(self._half) * (np.pi / 2) * b[..., 0])
 
     def log_moment_derivative(self, sol: BoundedSolution, y: ArrayLike) -> NDArray[np.float64]:
-        r""":math:`\int_\alpha^\beta \phi(t)\,dv/(y - t)`-type derivative in ``v``.
+        r"""Derivative of :meth:`log_moment` in ``v`` for ``y = mid + half cosh(v)``.
 
-        Returns :math:`\partial/\partial v` of :meth:`log_moment` for ``y`` outside the
-        interval written as ``y = mid + half * cosh(v)`` (``y`` right of the interval), at
-        fixed ``sol``. Useful in Newton iterations on an end point of a cohesive zone.
+        For ``y`` at or right of the interval's right end, at fixed ``sol``:
+        :math:`\partial_v \int \phi(t)\ln(y - t)\,dt` (useful in Newton iterations on the
+        end of a zone that begins at the interval's end).
         """
         y_unit = (np.asarray(y, dtype=float) - self._mid) / self._half
         dmu = _log_moment_vector_dv(y_unit, self.n)
