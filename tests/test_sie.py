@@ -608,3 +608,14 @@ def test_numpy_integer_n_accepted():
     s = BoundedSolver(np.int64(5))
     assert s.n == 5 and type(s.n) is int
     assert UnboundedSolver(np.int32(3)).n == 3
+
+
+def test_log_moment_derivative_matches_finite_difference():
+    s = BoundedSolver(12, (0.5, 2.5))
+    sol = s.solve(np.cos(s.collocation) * s.collocation, extra=np.ones(13))
+    for v in (0.05, 0.7, 3.0):
+        y = 1.5 + np.cosh(v)
+        h = 1e-6
+        up, down = (s.log_moment(sol, 1.5 + np.cosh(v + d)) for d in (h, -h))
+        fd = (up - down) / (2 * h)
+        assert abs(s.log_moment_derivative(sol, y) - fd) < 1e-7 * max(1.0, abs(fd)), v
