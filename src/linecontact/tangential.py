@@ -162,10 +162,14 @@ def _check_matrix(n: int) -> NDArray:
 
 
 def _tail(b: NDArray) -> NDArray:
-    """Chebyshev tail (largest of the last three coefficients) over the largest one."""
-    big = np.max(np.abs(b), axis=-1)
-    return np.where(big > 0, np.max(np.abs(b[..., -3:]), axis=-1) / np.where(big > 0, big, 1),
-                    0.0)
+    """Chebyshev tail: the largest of the last three coefficients over the largest one.
+
+    The coefficients are in units of the friction stress (``tau0`` or ``mu p0``); a solution
+    much smaller than that (a short stick zone) is measured against it instead, so that
+    round-off in a tiny solution does not count as truncation error.
+    """
+    big = np.maximum(np.max(np.abs(b), axis=-1), 1.0)
+    return np.max(np.abs(b[..., -3:]), axis=-1) / big
 
 
 def _adaptive(kernel, delta: NDArray, rate: NDArray, n, tol: float) -> dict[str, NDArray]:
@@ -514,7 +518,8 @@ class SlidingInitiation(_Tangential):
     residual_consistency : ndarray or float
         Collocation consistency residual (zero by symmetry).
     error_estimate : ndarray or float
-        Chebyshev tail of the solution over its largest coefficient.
+        Chebyshev tail of the solution over its largest coefficient (or over ``tau0`` when
+        the solution is smaller), 0 for the closed form.
     converged : ndarray or bool
         Every tolerance met.
     """
