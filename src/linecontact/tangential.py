@@ -82,6 +82,7 @@ K. L. Johnson, *Contact Mechanics*, Cambridge University Press (1985), Ch. 7
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import lru_cache
 
@@ -255,7 +256,7 @@ def _G(x):
 
 
 def _init_slip_closed(x, delta):
-    r"""The slip s/a over (4 tau0/(pi E)) for delta <= x <= 1 (docs/tangential.md, Eq T7).
+    r"""The slip s/a over (4 tau0/(pi E)) for delta <= x <= 1 (docs/tangential.md, Eq T6).
 
     S = k ln(x + r) - ln(x k + r) + (1 - k) ln(delta) + ((1 - x)/2) ln(1 - x^2) + x ln(k + r)
     with k = sqrt(1 - delta^2), r = sqrt(x^2 - delta^2); written so that delta -> 0 is
@@ -776,17 +777,17 @@ class _Problem:
     """What distinguishes the four problems (units: T over a tau0, or over mu F)."""
 
     name: str
-    kernel: object
-    rate: object
-    T_closed: object  # T(delta)
-    dT_closed: object  # dT/d delta
-    delta_closed: object  # delta(T/T_full), for 0 <= T/T_full <= 1
+    kernel: Callable[[NDArray, int], dict[str, NDArray]]
+    rate: Callable[[NDArray], NDArray]
+    T_closed: Callable[[NDArray], NDArray]  # T(delta)
+    dT_closed: Callable[[NDArray], NDArray]  # dT/d delta
+    delta_closed: Callable[[NDArray], NDArray]  # delta(T/T_full), for 0 <= T/T_full <= 1
     T_full: float
     d_low: float
     d_low_inclusive: bool
     d_stick: float  # delta at T = 0
     constant: bool = True  # constant tau0 (load T_over_Ea) or Coulomb (load T_over_muF)
-    creep_closed: object = None  # creep(delta) in the kernel's units, rolling only
+    creep_closed: Callable[[NDArray], NDArray] | None = None  # rolling only
     n_auto: int | None = None  # fixed n for n="auto" (Coulomb: linear right-hand sides)
 
 
