@@ -25,7 +25,9 @@ Sign conventions
 Body 1 is the cylinder, body 2 the substrate, ``x`` along the surface, origin at the contact
 centre. ``T >= 0`` is the tangential force per unit length transmitted through the
 interface and ``traction(x)`` the shear traction carrying it (positive in the direction of
-``T``, :math:`\int_{-a}^{a} q\,dx = T`, magnitude ``tau0`` or ``mu p`` in the slip zones).
+``T``, its integral over the contact is ``T``, magnitude ``tau0`` or ``mu p`` in the slip
+zones). ``docs/tangential.md`` works with ``q``, the traction on the substrate, which is
+the traction for the initiation and minus it for rolling.
 
 * **Initiation of sliding**: a force ``T`` pulls the cylinder along ``+x``; the traction is
   the one the cylinder exerts on the substrate. Stick zone :math:`|x| < d`, slip zones
@@ -59,11 +61,13 @@ Closed forms (constant ``tau0``; :math:`\delta = d/a`):
 .. math::
 
     \text{initiation:}\quad \frac{T}{2a\tau_0} = \sqrt{1 - \delta^2},\qquad
-    q = \frac{2\tau_0}{\pi}\arctan\sqrt{\frac{a^2 - d^2}{d^2 - x^2}}\ (|x| < d),
+    \mathrm{traction} = \frac{2\tau_0}{\pi}\arctan\sqrt{\frac{a^2 - d^2}{d^2 - x^2}}
+    \ (|x| < d),
 
     \text{rolling:}\quad \frac{T}{2a\tau_0} = \sqrt{\frac{1 + \delta}{2}},\qquad
     \frac{\dot C}{V} = -\frac{4\tau_0}{\pi E}\,\operatorname{artanh}\frac{T}{2a\tau_0},\qquad
-    q = \frac{2\tau_0}{\pi}\arctan\sqrt{\frac{(a + d)(a - x)}{2a(x - d)}}\ (d < x < a).
+    \mathrm{traction} = \frac{2\tau_0}{\pi}\arctan\sqrt{\frac{(a + d)(a - x)}{2a(x - d)}}
+    \ (d < x < a).
 
 Coulomb: Cattaneo--Mindlin :math:`T/(\mu F) = 1 - \delta^2`; Carter
 :math:`T/(\mu F) = 1 - ((1 - \delta)/2)^2`, :math:`\dot C/V = -(\mu a/R)(1 + \delta)/2`.
@@ -525,8 +529,8 @@ class SlidingInitiation(_Tangential):
         Every tolerance met.
     """
 
-    T_over_Ea: NDArray | float = 0.0
-    tau0_over_E: NDArray | float = 0.0
+    T_over_Ea: NDArray | float
+    tau0_over_E: NDArray | float
 
     def traction(self, x_over_a: ArrayLike) -> NDArray:
         r"""Shear traction ``q/E`` at ``x/a`` (positive along ``T``; ``tau0/E`` when slipping).
@@ -629,9 +633,9 @@ error_estimate, converged
         the extra collocation equation that fixes the creep.
     """
 
-    T_over_Ea: NDArray | float = 0.0
-    creep_over_V: NDArray | float = 0.0
-    tau0_over_E: NDArray | float = 0.0
+    T_over_Ea: NDArray | float
+    creep_over_V: NDArray | float
+    tau0_over_E: NDArray | float
 
     def traction(self, x_over_a: ArrayLike) -> NDArray:
         r"""Shear traction ``q/E`` on the cylinder at ``x/a``.
@@ -679,10 +683,10 @@ error_estimate, converged
         As in :class:`SlidingInitiation` (stresses over ``mu p0``).
     """
 
-    T_over_muF: NDArray | float = 0.0
-    T_over_Ea: NDArray | float = 0.0
-    mu: NDArray | float = 0.0
-    a_over_R: NDArray | float = 0.0
+    T_over_muF: NDArray | float
+    T_over_Ea: NDArray | float
+    mu: NDArray | float
+    a_over_R: NDArray | float
 
     def traction(self, x_over_a: ArrayLike) -> NDArray:
         r"""Shear traction ``q/E`` at ``x/a`` (shape ``points.shape + (m,)``).
@@ -731,11 +735,11 @@ error_estimate, converged
         As in :class:`SteadyRolling` (stresses over ``mu p0``).
     """
 
-    T_over_muF: NDArray | float = 0.0
-    T_over_Ea: NDArray | float = 0.0
-    creep_over_V: NDArray | float = 0.0
-    mu: NDArray | float = 0.0
-    a_over_R: NDArray | float = 0.0
+    T_over_muF: NDArray | float
+    T_over_Ea: NDArray | float
+    creep_over_V: NDArray | float
+    mu: NDArray | float
+    a_over_R: NDArray | float
 
     def traction(self, x_over_a: ArrayLike) -> NDArray:
         r"""Shear traction ``q/E`` on the cylinder at ``x/a`` (along the rolling direction).
