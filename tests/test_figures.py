@@ -1,4 +1,5 @@
-"""Smoke tests of the paper figures (Figs. 2-6): files, formats, no printing, lazy import."""
+"""Smoke tests of the paper figures (Figs. 2-7, 13, 14): files, formats, no printing, lazy
+import."""
 
 import subprocess
 import sys
@@ -12,7 +13,8 @@ matplotlib.use("Agg")
 from linecontact.figures import paper_figures  # noqa: E402
 
 STEMS = ("fig02_load_R100", "fig03_load_R200", "fig04_zone_R100", "fig05_zone_R200",
-         "fig06_zero_width")
+         "fig06_zero_width",
+         "fig07_sliding_initiation", "fig13_rolling_force", "fig14_rolling_creep")
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
@@ -24,7 +26,7 @@ def written(tmp_path_factory):
     return outdir, paths, messages
 
 
-def test_writes_ten_files(written):
+def test_writes_every_figure_in_both_formats(written):
     outdir, paths, _ = written
     expected = [outdir / f"{s}.{ext}" for s in STEMS for ext in ("png", "svg")]
     assert paths == expected

@@ -7,6 +7,8 @@ length over ``E h``, stresses over ``E``; compressive load positive):
   :func:`pull_off`, :func:`load_curve` -- normal loading with Maugis--Dugdale adhesion;
 - :mod:`linecontact.reference` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14);
 - :mod:`linecontact.sie` -- the Gauss--Chebyshev singular-integral core;
+- :func:`sliding_initiation`, :func:`steady_rolling` (and their ``_coulomb`` counterparts)
+  -- tangential loading (:mod:`linecontact.tangential`; forces over ``E a``);
 - :class:`Cylinder` -- the SI layer (materials, adhesion as (sigma0, h) or (w, z0)).
 """
 
@@ -31,6 +33,14 @@ from .normal import (
     pull_off,
 )
 from .reference import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
+from .tangential import (
+    cylinder_sliding_initiation,
+    cylinder_steady_rolling,
+    sliding_initiation,
+    sliding_initiation_coulomb,
+    steady_rolling,
+    steady_rolling_coulomb,
+)
 
 __all__ = [
     "ConvergenceError",
@@ -55,4 +65,12 @@ __all__ = [
     "normal_contact",
     "pull_off",
     "zero_width_load",
+]
+__all__ += [
+    "cylinder_sliding_initiation",
+    "cylinder_steady_rolling",
+    "sliding_initiation",
+    "sliding_initiation_coulomb",
+    "steady_rolling",
+    "steady_rolling_coulomb",
 ]

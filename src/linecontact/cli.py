@@ -307,6 +307,9 @@ def build_parser() -> argparse.ArgumentParser:
     cu.add_argument("-o", "--output", help="write to this file instead of stdout")
     cu.set_defaults(func=_cmd_curve)
 
+    from .cli_tangential import add_subcommands as _add_tangential  # slide-init, roll
+    _add_tangential(sub)
+
     pa = sub.add_parser("paper", help="reproduce the paper's figures (PNG and SVG)")
     pa.add_argument("--outdir", default="paper-figures")
     pa.set_defaults(func=_cmd_paper)

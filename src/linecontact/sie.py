@@ -206,9 +206,16 @@ class BoundedSolver:
         self._half = 0.5 * (self.interval[1] - self.interval[0])
         self._mid = 0.5 * (self.interval[1] + self.interval[0])
         self.nodes_unit, self.weights_unit, self.collocation_unit = bounded_rule(self.n)
-        ops = _bounded_operators(self.n)
-        self._coef_from_f = ops[0]  # (n+1, n): b = f @ C
-        self._values_from_coef = ops[1]  # (n, n): g = b @ V
+
+    @property
+    def _coef_from_f(self) -> NDArray:
+        """(n+1, n) matrix with b = f @ C (built on first use: large n solve by the DCT)."""
+        return _bounded_operators(self.n)[0]
+
+    @property
+    def _values_from_coef(self) -> NDArray:
+        """(n, n) matrix with g = b @ V (built on first use)."""
+        return _bounded_operators(self.n)[1]
 
     @property
     def nodes(self) -> NDArray[np.float64]:
