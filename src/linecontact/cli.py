@@ -18,6 +18,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from . import __version__
+from .cli_sliding import register_slide
 from .errors import ConvergenceError
 
 CITATION = f"""linecontact {__version__}: adhesive contact mechanics of a cylinder on a substrate.
@@ -306,6 +307,8 @@ def build_parser() -> argparse.ArgumentParser:
                     help="same as --format json")
     cu.add_argument("-o", "--output", help="write to this file instead of stdout")
     cu.set_defaults(func=_cmd_curve)
+
+    register_slide(sub)
 
     pa = sub.add_parser("paper", help="reproduce the paper's figures (PNG and SVG)")
     pa.add_argument("--outdir", default="paper-figures")
