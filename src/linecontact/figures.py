@@ -371,6 +371,8 @@ def paper_figures(outdir: str | os.PathLike = "paper-figures", *,
         ("fig05_zone_R200", lambda: _zone_figure(5, rho_b, data[rho_b])),
         ("fig06_zero_width", _zero_width_figure),
     ]
+    from .figures_sliding import figure_jobs as _sliding_jobs  # Figs. 8-12 (steady sliding)
+    jobs += _sliding_jobs(say)
     for stem, build in jobs:
         say(f"drawing {stem} ({', '.join(fmts)})")
         written += _save(build(), out, stem, fmts)
