@@ -6,6 +6,8 @@ length over ``E h``, stresses over ``E``; compressive load positive):
 - :func:`normal_contact`, :func:`contact_for_load`, :func:`equilibria`, :func:`non_contact`,
   :func:`pull_off`, :func:`load_curve` -- normal loading with Maugis--Dugdale adhesion;
 - :mod:`linecontact.reference` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14);
+- :func:`sliding_contact`, :func:`sliding_contact_for_load`, :func:`sliding_pull_off` --
+  steady sliding with different trailing and leading adhesion (:mod:`linecontact.sliding`);
 - :mod:`linecontact.sie` -- the Gauss--Chebyshev singular-integral core;
 - :class:`Cylinder` -- the SI layer (materials, adhesion as (sigma0, h) or (w, z0)).
 """
@@ -31,6 +33,13 @@ from .normal import (
     pull_off,
 )
 from .reference import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
+from .sliding import (
+    SlidingContact,
+    SlidingPullOff,
+    sliding_contact,
+    sliding_contact_for_load,
+    sliding_pull_off,
+)
 
 __all__ = [
     "ConvergenceError",
@@ -56,3 +65,5 @@ __all__ = [
     "pull_off",
     "zero_width_load",
 ]
+__all__ += ["SlidingContact", "SlidingPullOff", "sliding_contact", "sliding_contact_for_load",
+            "sliding_pull_off"]
