@@ -258,7 +258,9 @@ class SlidingContact(_Result):
         :math:`g(x) = \frac{(x-e)^2-(x_0-e)^2}{2R} - \frac{2}{\pi E}\int p(\xi)
         \ln\left|\frac{x-\xi}{x_0-\xi}\right|d\xi` with :math:`x_0 = \pm a` the nearer contact
         edge; by the separation conditions it equals ``h1`` at ``-c1`` and ``h2`` at ``c2``.
-        ``x_over_R`` has shape ``(m,)``; the result has shape ``points.shape + (m,)``.
+        The pressure is the closed-form solution of Eq. (20) at the computed ``c1``, ``c2``
+        (integrated by product integration). ``x_over_R`` has shape ``(m,)`` (or one row
+        per point); the result has shape ``points.shape + (m,)``.
         """
         x = np.asarray(x_over_R, dtype=float)
         shape = np.shape(self.a_over_R)
