@@ -15,6 +15,8 @@ from linecontact.figures import paper_figures  # noqa: E402
 STEMS = ("fig02_load_R100", "fig03_load_R200", "fig04_zone_R100", "fig05_zone_R200",
          "fig06_zero_width",
          "fig07_sliding_initiation", "fig13_rolling_force", "fig14_rolling_creep")
+STEMS += ("fig08_sliding_schematic", "fig09_zone_difference_s001",  # steady sliding
+          "fig10_zone_difference_s004", "fig11_moment_s001", "fig12_moment_s004")
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
@@ -26,7 +28,7 @@ def written(tmp_path_factory):
     return outdir, paths, messages
 
 
-def test_writes_every_figure_in_both_formats(written):
+def test_writes_every_figure_in_every_format(written):
     outdir, paths, _ = written
     expected = [outdir / f"{s}.{ext}" for s in STEMS for ext in ("png", "svg")]
     assert paths == expected

@@ -5,7 +5,13 @@ length over ``E h``, stresses over ``E``; compressive load positive):
 
 - :func:`normal_contact`, :func:`contact_for_load`, :func:`equilibria`, :func:`non_contact`,
   :func:`pull_off`, :func:`load_curve` -- normal loading with Maugis--Dugdale adhesion;
+- :func:`sliding_initiation`, :func:`steady_rolling` (and their Coulomb counterparts) --
+  tangential loading with a constant friction stress (:mod:`linecontact.tangential`);
+- :func:`sliding_contact`, :func:`sliding_contact_for_load`, :func:`sliding_pull_off` --
+  steady sliding with different trailing and leading adhesion (:mod:`linecontact.sliding`);
 - :mod:`linecontact.reference` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14);
+- :func:`sliding_contact`, :func:`sliding_contact_for_load`, :func:`sliding_pull_off` --
+  steady sliding with different trailing and leading adhesion (:mod:`linecontact.sliding`);
 - :mod:`linecontact.sie` -- the Gauss--Chebyshev singular-integral core;
 - :func:`sliding_initiation`, :func:`steady_rolling` (and their ``_coulomb`` counterparts)
   -- tangential loading (:mod:`linecontact.tangential`; forces over ``E a``);
@@ -33,6 +39,13 @@ from .normal import (
     pull_off,
 )
 from .reference import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
+from .sliding import (
+    SlidingContact,
+    SlidingPullOff,
+    sliding_contact,
+    sliding_contact_for_load,
+    sliding_pull_off,
+)
 from .tangential import (
     cylinder_sliding_initiation,
     cylinder_steady_rolling,
@@ -74,3 +87,5 @@ __all__ += [
     "steady_rolling",
     "steady_rolling_coulomb",
 ]
+__all__ += ["SlidingContact", "SlidingPullOff", "sliding_contact", "sliding_contact_for_load",
+            "sliding_pull_off"]

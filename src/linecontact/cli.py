@@ -18,6 +18,7 @@ from collections.abc import Sequence
 import numpy as np
 
 from . import __version__
+from .cli_sliding import register_slide
 from .errors import ConvergenceError
 
 CITATION = f"""linecontact {__version__}: adhesive contact mechanics of a cylinder on a substrate.
@@ -309,6 +310,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     from .cli_tangential import add_subcommands as _add_tangential  # slide-init, roll
     _add_tangential(sub)
+    register_slide(sub)
 
     pa = sub.add_parser("paper", help="reproduce the paper's figures (PNG and SVG)")
     pa.add_argument("--outdir", default="paper-figures")

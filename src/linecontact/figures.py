@@ -373,6 +373,8 @@ def paper_figures(outdir: str | os.PathLike = "paper-figures", *,
     ]
     from .figures_tangential import jobs as _tangential_jobs  # Figs. 7, 13, 14
     jobs += _tangential_jobs()
+    from .figures_sliding import figure_jobs as _sliding_jobs  # Figs. 8-12 (steady sliding)
+    jobs += _sliding_jobs(say)
     for stem, build in jobs:
         say(f"drawing {stem} ({', '.join(fmts)})")
         written += _save(build(), out, stem, fmts)

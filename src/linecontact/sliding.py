@@ -1,0 +1,1010 @@
+r"""Steady sliding with different trailing and leading adhesion (paper Eqs. 18--22).
+
+A cylinder slides steadily over the substrate. Sliding wipes the surface ahead of it, so the
+adhesion at the trailing edge has a longer range ``h1`` than at the leading edge ``h2``
+(the Dugdale stress ``sigma0`` is the same at both); the contact, its adhesive zones and the
+pressure lose their symmetry, the cylinder's apex is offset from the contact centre and the
+pressure has a resultant moment. Any positive ``h1/h2`` is accepted (``h1 < h2`` is the
+mirror image).
+
+Axes and signs
+--------------
+``x`` runs along the sliding direction (the cylinder moves towards ``+x``), with its origin
+at the centre of the contact ``-a < x < a``; ``y`` is normal to the substrate, pointing up
+into the cylinder, which lies above the substrate. Figures are drawn with ``x`` to the right
+and ``y`` up, so the cylinder moves to the right and "clockwise" is as seen in them.
+
+- Trailing adhesive zone ``-c1 < x < -a`` (range ``h1``), leading zone ``a < x < c2``
+  (range ``h2``); the apex of the cylinder (its axis) is at ``x = e`` (eccentricity).
+- The pressure ``p`` is compressive positive: ``p = pbar - sigma0`` on ``[-c1, c2]`` with
+  ``pbar`` supported on the contact and bounded (zero) at both of its ends (Eq. 8).
+- The load ``F = int p dx`` is compressive positive (Eq. 12 with two zones).
+- The moment ``M = int x p(x) dx`` about the contact centre is **clockwise positive**: it is
+  the clockwise moment of the contact pressure on the substrate, equivalently the clockwise
+  moment about the contact centre that must act on the cylinder, together with the load, to
+  hold it in equilibrium. The pressure's own moment on the cylinder is ``M``
+  counterclockwise: with ``h1 > h2`` it opposes forward (clockwise) rolling -- the resisting
+  moment. ``M_axis = M - e F`` is the same moment taken about the cylinder's axis.
+
+Units (as in :mod:`linecontact.reference`, with ``h2`` as the unit of gap): lengths over
+``R`` (``a/R``, ``c1/R``, ``c2/R``, ``e/R``), force per unit length over ``E h2``, moment per
+unit length over ``E h2 R``, stresses over ``E``, ``R/h2`` and ``h1/h2``.
+
+Equations
+---------
+Eq. (20), the bounded pressure on the contact,
+
+.. math::
+
+    \frac{1}{\pi E}\int_{-a}^{a}\frac{\bar p(\xi)}{\xi - x}\,d\xi = -\frac{x - e}{2R}
+    + \frac{\sigma_0}{\pi E}\ln\frac{c_2 - x}{c_1 + x}, \qquad |x| < a,
+
+is not odd, so its consistency condition (the extra collocation equation) does not hold by
+itself: it fixes the eccentricity, which enters linearly through :math:`e/(2R)`. The two
+separation conditions are the gap ``h2`` at ``x = c2`` (Eq. 21) and ``h1`` at ``x = -c1``
+(Eq. 22, corrupted in the text; derived in ``docs/sliding.md``):
+
+.. math::
+
+    \frac{2}{\pi E}\int_{-a}^{a}\bar p\ln\frac{c_2-\xi}{a-\xi}\,d\xi
+    = \frac{(c_2-e)^2-(a-e)^2}{2R} - h_2 - \frac{2\sigma_0}{\pi E}\int_a^{c_2}
+      \ln\frac{c_2-x}{c_1+x}\,dx,
+
+    \frac{2}{\pi E}\int_{-a}^{a}\bar p\ln\frac{c_1+\xi}{a+\xi}\,d\xi
+    = \frac{(c_1+e)^2-(a+e)^2}{2R} - h_1 + \frac{2\sigma_0}{\pi E}\int_{-c_1}^{-a}
+      \ln\frac{c_2-x}{c_1+x}\,dx.
+
+Two solvers give the same :class:`SlidingContact`:
+
+``method="collocation"`` (default)
+    The paper's route: Eq. (20) by Gauss--Chebyshev collocation
+    (:class:`linecontact.sie.BoundedSolver` with the eccentricity as the extra unknown of the
+    consistency condition), Eqs. (21)--(22) by product integration of their logarithmic
+    kernels (singular at the contact edges), Newton's method in
+    :math:`u_i = \operatorname{arccosh}(c_i/a)`, an adaptive number of nodes with a
+    Chebyshev-tail error estimate (as :func:`linecontact.normal.normal_contact`).
+``method="closed-form"``
+    The asymmetric Maugis--Dugdale solution derived in ``docs/sliding.md``. With
+    :math:`c_i = a\cosh u_i`, :math:`\sigma = (u_1+u_2)/2`, :math:`\delta = (u_1-u_2)/2`,
+    :math:`t = x/a = \cos\theta`, :math:`q_i = e^{-u_i}`:
+
+    .. math::
+
+        \bar p/E = \frac{a}{2R}\sin\theta + \frac{2\sigma_0}{\pi E}\left[
+            \arctan\frac{q_2\sin\theta}{1 - q_2\cos\theta}
+            + \arctan\frac{q_1\sin\theta}{1 + q_1\cos\theta}\right],
+
+        e = \frac{2\sigma_0 R}{\pi E}(u_1 - u_2),\qquad
+        F = \frac{\pi E a^2}{4R} - \sigma_0\left(\sqrt{c_1^2-a^2} + \sqrt{c_2^2-a^2}\right),
+
+        M = \frac{\sigma_0}{2}\left(c_1\sqrt{c_1^2-a^2} - c_2\sqrt{c_2^2-a^2}\right),
+
+        h_i = \frac{a^2}{2R}f_1(u_i) + \frac{4\sigma_0 a}{\pi E}\cosh\delta\left[
+            u_i\sinh\sigma - \cosh\sigma\ln\frac{\cosh\sigma}{\cosh\delta}\right],
+
+    :math:`f_1 = \sinh u\cosh u - u`; at ``u1 = u2`` the last bracket is Baney & Hui's
+    :math:`f_2`, so everything reduces to :mod:`linecontact.normal`. Two algebraic
+    equations in :math:`(u_1, u_2)` per point, solved by a safeguarded Newton iteration.
+
+With :math:`\bar a = (a/R)\sqrt{R/(2h_2)}` and :math:`\kappa = (4/\pi)(\sigma_0/E)\sqrt{2R/h_2}`
+the separation conditions read :math:`\bar a^2 f_1(u_2) + \kappa\bar a\,G_2 = 1`,
+:math:`\bar a^2 f_1(u_1) + \kappa\bar a\,G_1 = h_1/h_2`, and
+:math:`F/(Eh_2) = (\pi/2)(\bar a^2 - \kappa\bar a\sinh\sigma\cosh\delta)`: the family depends
+on ``kappa`` and ``h1/h2`` once ``a`` is scaled.
+
+References
+----------
+I. Sari, G. G. Adams, S. Müftü, "Nano-scale effects in the adherence, sliding and rolling of
+a cylinder on a substrate" (Eqs. 18--22, Figs. 8--12).
+J. M. Baney, C.-Y. Hui, "A cohesive zone model for the adhesion of cylinders",
+J. Adhesion Sci. Technol. 11 (1997) 393--406. doi:10.1163/156856197X00796
+F. Erdogan, G. D. Gupta, T. S. Cook, "Numerical solution of singular integral equations"
+(1973). doi:10.1007/978-94-017-2260-5_7
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from . import reference as _ref
+from ._validation import finite, non_negative, positive, scalar_or_array
+from .errors import ConvergenceError, NoEquilibriumError
+from .normal import _SIZES, _as_output, _log_weights, _Result
+from .sie import BoundedSolution, BoundedSolver
+
+__all__ = [
+    "SlidingContact",
+    "SlidingPullOff",
+    "sliding_contact",
+    "sliding_contact_for_load",
+    "sliding_pull_off",
+]
+
+#: As :data:`linecontact.normal.ZERO_WIDTH_RTOL`: an interior load minimum closer than this
+#: (relative) to the zero-width load is reported as pull-off at zero width.
+ZERO_WIDTH_RTOL = 1e-9
+
+
+# --------------------------------------------------------------------------------------------
+# results
+
+
+@dataclass(frozen=True)
+class SlidingContact(_Result):
+    """Steady sliding at given contact half-widths (or loads).
+
+    Attributes
+    ----------
+    a_over_R : ndarray or float
+        Contact half-width ``a/R``.
+    c1_over_R, c2_over_R : ndarray or float
+        Ends of the trailing (``-c1 < x < -a``) and leading (``a < x < c2``) adhesive zones,
+        measured from the contact centre, over ``R``.
+    e_over_R : ndarray or float
+        Eccentricity: position of the cylinder's apex (axis) relative to the contact centre,
+        along the sliding direction, over ``R``.
+    F_over_Eh2 : ndarray or float
+        Load per unit length over ``E h2`` (compressive positive).
+    M_over_Eh2R : ndarray or float
+        Moment about the contact centre per unit length over ``E h2 R``, clockwise positive
+        (see the module docstring): ``int x p dx``.
+    M_axis_over_Eh2R : ndarray or float
+        The same about the cylinder's axis, ``M - e F``.
+    R_over_h2, h1_over_h2, sigma0_over_E : ndarray or float
+        The parameters, broadcast.
+    tau0_over_E : ndarray or float
+        Shear (friction) stress over ``E`` if given, else nan.
+    T_over_Eh2 : ndarray or float
+        Friction force per unit length ``2 a tau0`` over ``E h2`` if ``tau0`` was given,
+        else nan.
+    method : str
+        ``"collocation"`` or ``"closed-form"``.
+    n_collocation : ndarray or int
+        Collocation nodes used at each point (0 for the closed form).
+    residual_trailing, residual_leading : ndarray or float
+        Residuals of the separation conditions: gap at ``-c1`` minus ``h1`` over ``h1``, gap
+        at ``c2`` minus ``h2`` over ``h2`` (Eqs. 22, 21), up to sign.
+    residual_consistency : ndarray or float
+        Residual of the consistency condition after the eccentricity was fixed by it.
+    error_estimate : ndarray or float
+        Chebyshev tail of the collocation solution over its largest coefficient (0 for the
+        closed form).
+    converged : ndarray or bool
+        All tolerances met.
+    stable : ndarray or bool
+        ``dF/da > 0``: stable under load control.
+    """
+
+    a_over_R: NDArray | float
+    c1_over_R: NDArray | float
+    c2_over_R: NDArray | float
+    e_over_R: NDArray | float
+    F_over_Eh2: NDArray | float
+    M_over_Eh2R: NDArray | float
+    M_axis_over_Eh2R: NDArray | float
+    R_over_h2: NDArray | float
+    h1_over_h2: NDArray | float
+    sigma0_over_E: NDArray | float
+    tau0_over_E: NDArray | float
+    T_over_Eh2: NDArray | float
+    method: str
+    n_collocation: NDArray | int
+    residual_trailing: NDArray | float
+    residual_leading: NDArray | float
+    residual_consistency: NDArray | float
+    error_estimate: NDArray | float
+    converged: NDArray | bool
+    stable: NDArray | bool
+
+    @property
+    def c1_over_a(self):
+        """``c1/a`` (>= 1)."""
+        return np.asarray(self.c1_over_R) / np.asarray(self.a_over_R)
+
+    @property
+    def c2_over_a(self):
+        """``c2/a`` (>= 1)."""
+        return np.asarray(self.c2_over_R) / np.asarray(self.a_over_R)
+
+    def friction_force(self, tau0_over_E: ArrayLike) -> NDArray | float:
+        """Friction force per unit length ``2 a tau0`` over ``E h2``, for ``tau0/E >= 0``."""
+        t = non_negative("tau0_over_E", tau0_over_E)
+        val = 2 * np.asarray(self.a_over_R) * np.asarray(self.R_over_h2) * t
+        return val.item() if np.ndim(val) == 0 else val
+
+    def _coefficients(self, n: int | None = None):
+        """Chebyshev-U coefficients of ``pbar/E`` on ``t = x/a`` (closed form, truncated).
+
+        Returns (A, s, coefficients) flattened over the points.
+        """
+        A = np.atleast_1d(np.asarray(self.a_over_R, float)).reshape(-1)
+        s = np.broadcast_to(np.asarray(self.sigma0_over_E, float), np.shape(self.a_over_R))
+        s = np.atleast_1d(s).reshape(-1)
+        u1 = np.arccosh(np.maximum(np.atleast_1d(self.c1_over_a).reshape(-1), 1.0))
+        u2 = np.arccosh(np.maximum(np.atleast_1d(self.c2_over_a).reshape(-1), 1.0))
+        if n is None:
+            umin = max(float(np.min(np.minimum(u1, u2))), 1e-3)
+            n = int(np.clip(np.ceil(40.0 / umin), 16, 4096))
+        return A, s, _cf_coefficients(A, s, u1, u2, n)
+
+    def pressure(self, x_over_R: ArrayLike) -> NDArray:
+        r"""Contact pressure ``p/E`` (compressive positive) at ``x/R``.
+
+        ``x_over_R`` has shape ``(m,)``; the result has shape ``points.shape + (m,)``.
+        Inside the contact: the closed-form bounded solution of Eq. (20) at the computed
+        ``c1``, ``c2`` (the collocation solution is the same function to its tolerance);
+        ``-sigma0/E`` in the adhesive zones; zero beyond.
+        """
+        x = np.asarray(x_over_R, dtype=float)
+        A = np.asarray(self.a_over_R, dtype=float)[..., None]
+        C1 = np.asarray(self.c1_over_R, dtype=float)[..., None]
+        C2 = np.asarray(self.c2_over_R, dtype=float)[..., None]
+        s = np.asarray(self.sigma0_over_E, dtype=float)[..., None]
+        q1 = np.exp(-np.arccosh(np.maximum(C1 / A, 1.0)))
+        q2 = np.exp(-np.arccosh(np.maximum(C2 / A, 1.0)))
+        t = np.clip(x / A, -1.0, 1.0)
+        sn = np.sqrt(np.clip(1 - t * t, 0.0, None))
+        inner = 0.5 * A * sn + (2 * s / np.pi) * (np.arctan2(q2 * sn, 1 - q2 * t) +
+                                                  np.arctan2(q1 * sn, 1 + q1 * t)) - s
+        return np.where(np.abs(x) < A, inner, np.where((x >= -C1) & (x <= C2), -s, 0.0))
+
+    def gap(self, x_over_R: ArrayLike) -> NDArray:
+        r"""The gap between the surfaces over ``h2`` at ``x/R`` (zero in the contact).
+
+        Outside the contact
+        :math:`g(x) = \frac{(x-e)^2-(x_0-e)^2}{2R} - \frac{2}{\pi E}\int p(\xi)
+        \ln\left|\frac{x-\xi}{x_0-\xi}\right|d\xi` with :math:`x_0 = \pm a` the nearer contact
+        edge; by the separation conditions it equals ``h1`` at ``-c1`` and ``h2`` at ``c2``.
+        The pressure is the closed-form solution of Eq. (20) at the computed ``c1``, ``c2``
+        (integrated by product integration). ``x_over_R`` has shape ``(m,)`` (or one row
+        per point); the result has shape ``points.shape + (m,)``.
+        """
+        x = np.asarray(x_over_R, dtype=float)
+        shape = np.shape(self.a_over_R)
+        A, s, b = self._coefficients()
+        n = b.shape[-1]
+        C1 = np.atleast_1d(np.asarray(self.c1_over_R, float)).reshape(-1)
+        C2 = np.atleast_1d(np.asarray(self.c2_over_R, float)).reshape(-1)
+        ecc = np.atleast_1d(np.asarray(self.e_over_R, float)).reshape(-1)
+        rho = np.broadcast_to(np.asarray(self.R_over_h2, float), shape)
+        rho = np.atleast_1d(rho).reshape(-1)
+        xs = np.broadcast_to(x, (A.size,) + x.shape[-1:])
+        t = xs / A[:, None]
+        x0 = np.where(t >= 0, 1.0, -1.0)
+        solver = BoundedSolver(n)
+        sol = BoundedSolution(b[:, None, :], None, np.zeros((A.size, 1)))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            lm = solver.log_moment(sol, np.where(np.abs(t) <= 1, x0, t)) - \
+                solver.log_moment(sol, x0)
+        # int_{-c1}^{c2} ln|(x - xi)/(x0 - xi)| dxi for the constant -sigma0 (unit: a)
+        m1 = (C1 / A)[:, None]
+        m2 = (C2 / A)[:, None]
+        strip = _log_strip(t, m1, m2) - _log_strip(x0, m1, m2)
+        elastic = (2 / np.pi) * A[:, None] * (lm - s[:, None] * strip)  # over R
+        geom = ((xs - ecc[:, None]) ** 2 - (x0 * A[:, None] - ecc[:, None]) ** 2) / 2
+        g = rho[:, None] * (geom - elastic)
+        g = np.where(np.abs(t) < 1, 0.0, g)
+        return g.reshape(shape + x.shape[-1:])
+
+
+def _xlogx(x):
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(x > 0, x * np.log(np.where(x > 0, x, 1.0)), 0.0)
+
+
+def _log_strip(y, m1, m2):
+    """int_{-m1}^{m2} ln|y - t| dt."""
+    return _xlogx(np.abs(m2 - y)) * np.sign(m2 - y) + _xlogx(np.abs(y + m1)) * \
+        np.sign(y + m1) - (m1 + m2)
+
+
+@dataclass(frozen=True)
+class SlidingPullOff(_Result):
+    """The most tensile load a steadily sliding contact carries (load control).
+
+    Attributes
+    ----------
+    F_pulloff_over_Eh2 : ndarray or float
+        Pull-off force over ``E h2`` (negative).
+    a_over_R_at_pulloff : ndarray or float
+        Contact half-width at pull-off (0 for the zero-width mechanism).
+    mechanism : ndarray of str or str
+        ``"snap-off"`` (interior load minimum) or ``"zero-width"``.
+    F_zero_width_over_Eh2 : ndarray or float
+        The load as the contact width vanishes (the two-zone analogue of Eq. 14).
+    c1_over_R_zero_width, c2_over_R_zero_width : ndarray or float
+        The adhesive zones of that limit state.
+    """
+
+    F_pulloff_over_Eh2: NDArray | float
+    a_over_R_at_pulloff: NDArray | float
+    mechanism: NDArray | str
+    F_zero_width_over_Eh2: NDArray | float
+    c1_over_R_zero_width: NDArray | float
+    c2_over_R_zero_width: NDArray | float
+    R_over_h2: NDArray | float
+    h1_over_h2: NDArray | float
+    sigma0_over_E: NDArray | float
+
+
+# --------------------------------------------------------------------------------------------
+# closed form
+
+
+def _f1(u):
+    """f1 = sinh u cosh u - u (Baney & Hui), by its series below u = 0.5."""
+    u = np.asarray(u, dtype=float)
+    small = u < 0.5
+    us = np.where(small, u, 0.0)
+    x = 4 * us * us
+    # sum_{k>=1} 4^k u^(2k+1)/(2k+1)! = u sum_k x^k/(2k+1)!, Horner over k = 1..12
+    acc = np.zeros_like(us)
+    for k in range(12, 0, -1):
+        acc = (acc + 1.0) * x / ((2 * k) * (2 * k + 1))
+    with np.errstate(over="ignore"):
+        big = 0.5 * np.sinh(2 * np.where(small, 1.0, u)) - np.where(small, 1.0, u)
+    return np.where(small, us * acc, big)
+
+
+def _cf_parts(u1, u2):
+    """G1, G2 (the brackets of the separation conditions) and their u-derivatives."""
+    sh1, sh2 = np.sinh(u1), np.sinh(u2)
+    ch1, ch2 = np.cosh(u1), np.cosh(u2)
+    cd = np.cosh(0.5 * (u1 - u2))
+    # ell = ln(cosh sigma / cosh delta), cosh sigma - cosh delta = 2 sinh(u1/2) sinh(u2/2)
+    ell = np.log1p(2 * np.sinh(0.5 * u1) * np.sinh(0.5 * u2) / cd)
+    Sb = 0.5 * (sh1 + sh2)  # cosh(delta) sinh(sigma)
+    Cb = 0.5 * (ch1 + ch2)  # cosh(delta) cosh(sigma)
+    G1 = u1 * Sb - Cb * ell
+    G2 = u2 * Sb - Cb * ell
+    # d ell/du1 = (tanh sigma - tanh delta)/2, so Cb d ell/du1 = sinh(u2)/2 (and mirror)
+    w1 = -0.5 * (sh1 * ell + sh2)
+    w2 = -0.5 * (sh2 * ell + sh1)
+    dG1 = (Sb + 0.5 * u1 * ch1 + w1, 0.5 * u1 * ch2 + w2)
+    dG2 = (0.5 * u2 * ch1 + w1, Sb + 0.5 * u2 * ch2 + w2)
+    return G1, G2, dG1, dG2, Sb
+
+
+def _cf_eval(ab, kap, r, u1, u2):
+    """Residuals E1 (over h1), E2 (over h2) and the 2x2 Jacobian in (u1, u2)."""
+    G1, G2, dG1, dG2, _ = _cf_parts(u1, u2)
+    a2 = ab * ab
+    E1 = (a2 * _f1(u1) + kap * ab * G1) / r - 1
+    E2 = a2 * _f1(u2) + kap * ab * G2 - 1
+    J11 = (a2 * 2 * np.sinh(u1) ** 2 + kap * ab * dG1[0]) / r
+    J12 = kap * ab * dG1[1] / r
+    J21 = kap * ab * dG2[0]
+    J22 = a2 * 2 * np.sinh(u2) ** 2 + kap * ab * dG2[1]
+    return E1, E2, J11, J12, J21, J22
+
+
+def _initial_u(ab, kap, r):
+    """Each edge as if the contact were symmetric with its own range (normal closed form)."""
+    u2, _, _ = _ref._u_of_abar(ab, kap)
+    sr = np.sqrt(r)
+    u1, _, _ = _ref._u_of_abar(ab / sr, kap / sr)
+    return u1, u2
+
+
+def _newton2(evaluate, u1, u2, *, maxiter=60, tol=1e-15, floor=2e-14, umax=300.0):
+    """Damped Newton for two residuals in (u1, u2) > 0, vectorised over points.
+
+    ``evaluate(idx, u1, u2)`` returns ``(E1, E2, J11, J12, J21, J22, extra)`` for the points
+    ``idx``. Steps are limited to keep ``u`` positive and halved (at most 12 times) while
+    they do not reduce the larger residual; below ``floor`` (rounding level) any step is
+    accepted. A point stops when its residual is below ``tol``, its step is at rounding
+    level or no step reduces its residual. Returns ``u1, u2, |E1|, |E2|, extra`` of the last
+    evaluation at the returned ``u``.
+    """
+    P = u1.size
+    u1 = u1.astype(float).copy()
+    u2 = u2.astype(float).copy()
+    idx = np.arange(P)
+    E1, E2, J11, J12, J21, J22, extra = evaluate(idx, u1, u2)
+    E1, E2 = np.asarray(E1, float).copy(), np.asarray(E2, float).copy()
+    extra = {k: np.asarray(v).copy() for k, v in extra.items()}
+    J = [np.asarray(j, float).copy() for j in (J11, J12, J21, J22)]
+    active = np.ones(P, bool)
+    for _ in range(maxiter):
+        nrm = np.maximum(np.abs(E1), np.abs(E2))
+        active &= nrm > tol
+        ia = np.nonzero(active)[0]
+        if ia.size == 0:
+            break
+        j11, j12, j21, j22 = (j[ia] for j in J)
+        det = j11 * j22 - j12 * j21
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            d1 = (-E1[ia] * j22 + E2[ia] * j12) / det
+            d2 = (-E2[ia] * j11 + E1[ia] * j21) / det
+            # fall back to the diagonal (each residual is monotone in its own u) if singular
+            bad = ~(np.isfinite(d1) & np.isfinite(d2))
+            d1 = np.nan_to_num(np.where(bad, -E1[ia] / j11, d1))
+            d2 = np.nan_to_num(np.where(bad, -E2[ia] / j22, d2))
+        lam = np.ones(ia.size)
+        # positivity: never more than 3/4 of the way to u = 0, never beyond umax
+        for d, u in ((d1, u1[ia]), (d2, u2[ia])):
+            neg = d < -0.75 * u
+            lam = np.where(neg, np.minimum(lam, 0.75 * u / np.where(neg, -d, 1.0)), lam)
+            big = u + d > umax
+            lam = np.where(big, np.minimum(lam, (umax - u) / np.where(big, d, 1.0)), lam)
+        tiny_step = (np.abs(d1) <= 4e-16 * np.maximum(u1[ia], 1e-3)) & \
+            (np.abs(d2) <= 4e-16 * np.maximum(u2[ia], 1e-3))
+        todo = ~tiny_step
+        active[ia[tiny_step]] = False
+        for ls in range(13):
+            it = np.nonzero(todo)[0]
+            if it.size == 0:
+                break
+            gi = ia[it]
+            n1 = u1[gi] + lam[it] * d1[it]
+            n2 = u2[gi] + lam[it] * d2[it]
+            r = evaluate(gi, n1, n2)
+            nn = np.maximum(np.abs(r[0]), np.abs(r[1]))
+            ok = np.isfinite(nn) & ((nn < nrm[gi]) | (nn <= floor))
+            acc = it[ok]
+            ga = ia[acc]
+            u1[ga], u2[ga] = n1[ok], n2[ok]
+            E1[ga], E2[ga] = r[0][ok], r[1][ok]
+            for j, v in zip(J, r[2:6], strict=True):
+                j[ga] = v[ok]
+            for k, v in r[6].items():
+                extra[k][ga] = v[ok]
+            todo[acc] = False
+            # a step at rounding level: quadratic convergence leaves nothing to gain
+            small = (np.abs(lam[acc] * d1[acc]) <= 1e-12 * np.maximum(u1[ga], 1e-3)) & \
+                (np.abs(lam[acc] * d2[acc]) <= 1e-12 * np.maximum(u2[ga], 1e-3))
+            active[ga[small]] = False
+            lam[it[~ok]] *= 0.5
+            if ls == 12:  # no step reduces the residual: it is at its rounding floor
+                active[ia[it[~ok]]] = False
+    return u1, u2, np.abs(E1), np.abs(E2), extra
+
+
+def _closed_form(A, rho, r, s, u1=None, u2=None):
+    """u1, u2 and residuals of the closed-form separation conditions, flat arrays."""
+    ab = A * np.sqrt(rho / 2)
+    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    if u1 is None or u2 is None:
+        u1, u2 = _initial_u(ab, kap, r)
+
+    def evaluate(idx, v1, v2):
+        return (*_cf_eval(ab[idx], kap[idx], r[idx], v1, v2), {})
+
+    u1, u2, e1, e2, _ = _newton2(evaluate, u1, u2)
+    return u1, u2, e1, e2
+
+
+def _cf_outputs(A, rho, r, s, u1, u2):
+    """e, F, M, dF/da from u1, u2 (closed form; also used for the stability of any method)."""
+    ab = A * np.sqrt(rho / 2)
+    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    ecc = (2 * s / np.pi) * (u1 - u2)
+    sh1, sh2 = np.sinh(u1), np.sinh(u2)
+    F = (np.pi / 2) * (ab * ab - kap * ab * 0.5 * (sh1 + sh2))
+    # M = (sigma0 a^2 / 4)(sinh 2u1 - sinh 2u2) = sigma0 a^2 cosh(2 sigma) sinh(2 delta) / 2
+    M = 0.5 * s * A * A * rho * np.cosh(u1 + u2) * np.sinh(u1 - u2)
+    # dF/d(abar) along the branch: implicit differentiation of the separation conditions
+    G1, G2, dG1, dG2, Sb = _cf_parts(u1, u2)
+    _, _, J11, J12, J21, J22 = _cf_eval(ab, kap, r, u1, u2)
+    b1 = (2 * ab * _f1(u1) + kap * G1) / r
+    b2 = 2 * ab * _f1(u2) + kap * G2
+    det = J11 * J22 - J12 * J21
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        du1 = -(b1 * J22 - b2 * J12) / det
+        du2 = -(b2 * J11 - b1 * J21) / det
+        dPhi = 2 * ab - kap * Sb - kap * ab * 0.5 * (np.cosh(u1) * du1 + np.cosh(u2) * du2)
+    return ecc, F, M, dPhi
+
+
+def _cf_coefficients(A, s, u1, u2, n):
+    """Chebyshev-U coefficients b_j (j < n) of pbar/E on [-1, 1] (closed form)."""
+    k = np.arange(1, n + 1)
+    q1 = np.exp(-u1)[:, None]
+    q2 = np.exp(-u2)[:, None]
+    with np.errstate(under="ignore"):
+        b = (2 * s[:, None] / np.pi) * (q2 ** k - (-q1) ** k) / k
+    b[:, 0] += 0.5 * A
+    return b
+
+
+# --------------------------------------------------------------------------------------------
+# collocation
+
+
+def _colloc_rhs(x, A, s, u1, u2):
+    """Eq. 20 on t = x/a (without the e/(2R) term) and its derivatives in u1, u2."""
+    A, s, u1, u2 = (v[:, None] for v in (A, s, u1, u2))
+    m1m1 = 2 * np.sinh(u1 / 2) ** 2
+    m2m1 = 2 * np.sinh(u2 / 2) ** 2
+    m2mx = m2m1 + (1 - x)  # m2 - x
+    m1px = m1m1 + (1 + x)  # m1 + x
+    c = s / np.pi
+    f = -0.5 * A * x + c * np.log(m2mx / m1px)
+    df1 = -c * np.sinh(u1) / m1px
+    df2 = c * np.sinh(u2) / m2mx
+    return np.stack([f, df1, df2], axis=1)  # (P, 3, n + 1)
+
+
+def _K(mm1_own, m_own, m_other):
+    """(1/a) int over the own zone of ln((c_own - x)/(c_other + x)) and its d/dm's.
+
+    K = (m-1) ln((m-1)/(m+m')) + (m'+1) ln((m'+1)/(m+m')); dK/dm = ln((m-1)/(m+m')),
+    dK/dm' = ln((m'+1)/(m+m')).
+    """
+    tot = m_own + m_other
+    with np.errstate(divide="ignore", invalid="ignore"):
+        l_own = np.log(mm1_own / tot)
+        l_oth = np.log((m_other + 1) / tot)
+    K = np.where(mm1_own > 0, mm1_own * l_own, 0.0) + (m_other + 1) * l_oth
+    return K, np.where(mm1_own > 0, l_own, -np.inf), l_oth
+
+
+def _colloc_eval(solver: BoundedSolver, A, s, rho, r, u1, u2):
+    """Residuals of Eqs. 22 (trailing, over h1) and 21 (leading, over h2), Jacobian, extras."""
+    n = solver.n
+    x = solver.collocation_unit
+    f = _colloc_rhs(x, A, s, u1, u2)
+    sol = solver.solve(f, extra=np.full(n + 1, 0.5), values=False)
+    B = sol.coefficients  # (P, 3, n): b, db/du1, db/du2
+    lam = sol.extra  # (P, 3): e/R and its derivatives
+    b, db1, db2 = B[:, 0], B[:, 1], B[:, 2]
+    ecc, de1, de2 = lam[:, 0], lam[:, 1], lam[:, 2]
+    sg = (-1.0) ** np.arange(n)
+    mu2, dmu2 = _log_weights(n, u2)  # ln((m2 - t)/(1 - t)) moments
+    mu1, dmu1 = _log_weights(n, u1)  # ln((m1 + t)/(1 + t)) moments of g(-t)
+    mu1s, dmu1s = mu1 * sg, dmu1 * sg
+    J2 = np.einsum("pj,pj->p", b, mu2)
+    J1 = np.einsum("pj,pj->p", b, mu1s)
+    dJ2 = (np.einsum("pj,pj->p", db1, mu2),
+           np.einsum("pj,pj->p", db2, mu2) + np.einsum("pj,pj->p", b, dmu2))
+    dJ1 = (np.einsum("pj,pj->p", db1, mu1s) + np.einsum("pj,pj->p", b, dmu1s),
+           np.einsum("pj,pj->p", db2, mu1s))
+    sh1, sh2 = np.sinh(u1), np.sinh(u2)
+    m1, m2 = np.cosh(u1), np.cosh(u2)
+    mm1_1 = 2 * np.sinh(u1 / 2) ** 2
+    mm1_2 = 2 * np.sinh(u2 / 2) ** 2
+    K2, dK2_own, dK2_oth = _K(mm1_2, m2, m1)
+    K1, dK1_own, dK1_oth = _K(mm1_1, m1, m2)
+    with np.errstate(invalid="ignore"):
+        dK2 = (dK2_oth * sh1, np.where(sh2 > 0, dK2_own * sh2, 0.0))
+        dK1 = (np.where(sh1 > 0, dK1_own * sh1, 0.0), dK1_oth * sh2)
+    c = 2 * A / np.pi
+    rho1 = rho / r
+    # leading: 1 + (R/h2)[(2A/pi) J2 + (2 s A/pi) K2 - A^2 sh2^2/2 + A e (m2 - 1)]
+    R2 = 1 + rho * (c * J2 + c * s * K2 - 0.5 * A * A * sh2 * sh2 + A * ecc * mm1_2)
+    R1 = 1 + rho1 * (c * J1 + c * s * K1 - 0.5 * A * A * sh1 * sh1 - A * ecc * mm1_1)
+    J21 = rho * (c * dJ2[0] + c * s * dK2[0] + A * de1 * mm1_2)
+    J22 = rho * (c * dJ2[1] + c * s * dK2[1] - A * A * sh2 * m2 + A * de2 * mm1_2 +
+                 A * ecc * sh2)
+    J11 = rho1 * (c * dJ1[0] + c * s * dK1[0] - A * A * sh1 * m1 - A * de1 * mm1_1 -
+                  A * ecc * sh1)
+    J12 = rho1 * (c * dJ1[1] + c * s * dK1[1] - A * de2 * mm1_1)
+    res = (np.pi / 2) * b[:, 0]
+    mom = (np.pi / 4) * b[:, 1] if n > 1 else np.zeros_like(res)
+    tail = np.max(np.abs(b[:, -3:]), axis=-1) / np.maximum(np.max(np.abs(b), axis=-1), 1e-300)
+    extra = dict(ecc=ecc, resultant=res, moment=mom, consistency=np.abs(sol.consistency[:, 0]),
+                 tail=tail)
+    # residuals as (gap - h)/h, the sign of the closed-form ones
+    return -R1, -R2, -J11, -J12, -J21, -J22, extra
+
+
+def _collocation(A, rho, r, s, n, tol):
+    """Flat arrays in, dict of flat arrays out."""
+    sizes = np.asarray(_SIZES)
+    ab = A * np.sqrt(rho / 2)
+    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    u1, u2 = _initial_u(ab, kap, r)  # each edge from the symmetric solution with its range
+
+    def run(nn, idx, v1, v2):
+        solver = BoundedSolver(int(nn))
+
+        def evaluate(i, w1, w2):
+            g = idx[i]
+            return _colloc_eval(solver, A[g], s[g], rho[g], r[g], w1, w2)
+
+        return _newton2(evaluate, v1, v2)
+
+    n0 = 16 if n == "auto" else int(n)
+    P = A.size
+    idx = np.arange(P)
+    u1, u2, e1, e2, ex = run(n0, idx, u1, u2)
+    nsel = np.full(P, n0)
+    if n == "auto":
+        need = np.log(1 / tol) / (1.5 * np.maximum(np.minimum(u1, u2), 1e-300))
+        pending = ex["tail"] > tol
+        target = sizes[np.minimum(np.searchsorted(sizes, need), sizes.size - 1)]
+        nsel = np.where(pending, np.maximum(target, sizes[1]), nsel)
+        while pending.any():
+            for nn in np.unique(nsel[pending]):
+                sel = np.nonzero(pending & (nsel == nn))[0]
+                v1, v2, f1, f2, x2 = run(nn, sel, u1[sel], u2[sel])
+                u1[sel], u2[sel], e1[sel], e2[sel] = v1, v2, f1, f2
+                for k in ex:
+                    ex[k][sel] = x2[k]
+            pending = pending & (ex["tail"] > tol) & (nsel < sizes[-1])
+            nsel = np.where(pending, sizes[np.minimum(np.searchsorted(sizes, nsel) + 1,
+                                                      sizes.size - 1)], nsel)
+    m1, m2 = np.cosh(u1), np.cosh(u2)
+    F = rho * A * (ex["resultant"] - s * (m1 + m2))
+    # strips: -sigma0 (int_a^c2 x + int_-c1^-a x) = sigma0 (c1^2 - c2^2)/2,
+    # (m1^2 - m2^2) = sinh(u1 + u2) sinh(u1 - u2)
+    M = rho * A * A * (ex["moment"] + 0.5 * s * np.sinh(u1 + u2) * np.sinh(u1 - u2))
+    converged = (np.maximum(e1, e2) <= 1e-10) & (ex["tail"] <= 10 * tol) & np.isfinite(F)
+    return dict(u1=u1, u2=u2, ecc=ex["ecc"], F=F, M=M, res1=e1, res2=e2,
+                cons=ex["consistency"], tail=ex["tail"], n=nsel, converged=converged)
+
+
+# --------------------------------------------------------------------------------------------
+# public: direct problem
+
+
+def _check_common(R_over_h2, h1_over_h2, sigma0_over_E):
+    rho = positive("R_over_h2", R_over_h2)
+    r = positive("h1_over_h2", h1_over_h2)
+    s = non_negative("sigma0_over_E", sigma0_over_E)
+    return rho, r, s
+
+
+def _check_method(method, n, tol):
+    if method not in ("collocation", "closed-form"):
+        raise ValueError(f"method must be 'collocation' or 'closed-form', got {method!r}")
+    if not (n == "auto" or (isinstance(n, (int, np.integer)) and not isinstance(n, bool)
+                            and 2 <= n <= 8192)):
+        raise ValueError(f"n must be 'auto' or an integer in [2, 8192], got {n!r}")
+    if not (isinstance(tol, float | int) and not isinstance(tol, bool) and 1e-15 <= tol < 1e-2):
+        raise ValueError(f"tol must be in [1e-15, 1e-2), got {tol!r}")
+
+
+def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
+    """Solve at flat arrays; returns a dict of flat arrays (both methods)."""
+    if method == "closed-form":
+        g1, g2 = (None, None) if u_guess is None else u_guess
+        u1, u2, e1, e2 = _closed_form(A, rho, r, s, g1, g2)
+        ecc, F, M, dphi = _cf_outputs(A, rho, r, s, u1, u2)
+        z = np.zeros(A.shape)
+        d = dict(u1=u1, u2=u2, ecc=ecc, F=F, M=M, res1=e1, res2=e2, cons=z,
+                 tail=z, n=np.zeros(A.shape, int),
+                 converged=(np.maximum(e1, e2) <= 1e-12) & np.isfinite(F))
+    else:
+        d = _collocation(A, rho, r, s, n, tol)
+        _, _, _, dphi = _cf_outputs(A, rho, r, s, d["u1"], d["u2"])
+    d["stable"] = dphi > 0
+    return d
+
+
+def _pack(d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure, where):
+    conv = d["converged"]
+    if raise_on_failure and not np.all(conv):
+        i = np.flatnonzero(~conv)[0]
+        raise ConvergenceError(
+            f"{where} ({method}) did not converge at a_over_R={float(A[i])!r}, "
+            f"R_over_h2={float(rho[i])!r}, h1_over_h2={float(r[i])!r}, "
+            f"sigma0_over_E={float(s[i])!r} (separation residuals "
+            f"{d['res1'][i]:.3g}, {d['res2'][i]:.3g}, error estimate {d['tail'][i]:.3g}); an "
+            f"adhesive zone is too thin for n <= {_SIZES[-1]} or the point is outside the "
+            f"solver's range")
+    C1 = A * np.cosh(d["u1"])
+    C2 = A * np.cosh(d["u2"])
+    T = 2 * A * rho * tau
+    vals = dict(a_over_R=A, c1_over_R=C1, c2_over_R=C2, e_over_R=d["ecc"], F_over_Eh2=d["F"],
+                M_over_Eh2R=d["M"], M_axis_over_Eh2R=d["M"] - d["ecc"] * d["F"],
+                R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau, T_over_Eh2=T,
+                n_collocation=d["n"], residual_trailing=d["res1"], residual_leading=d["res2"],
+                residual_consistency=d["cons"], error_estimate=d["tail"], converged=conv,
+                stable=d["stable"])
+    vals = {k: _as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
+    return SlidingContact(method=method, **vals)
+
+
+def sliding_contact(a_over_R: ArrayLike, R_over_h2: ArrayLike, h1_over_h2: ArrayLike,
+                    sigma0_over_E: ArrayLike, *, tau0_over_E: ArrayLike | None = None,
+                    method: str = "collocation", n: int | str = "auto", tol: float = 1e-12,
+                    raise_on_failure: bool = True) -> SlidingContact:
+    r"""Zones, eccentricity, load and moment of steady sliding at given ``a`` (Eqs. 20--22).
+
+    Parameters
+    ----------
+    a_over_R : array_like
+        Contact half-width over the radius, ``> 0``.
+    R_over_h2 : array_like
+        Radius over the range of adhesion at the leading edge, ``> 0``.
+    h1_over_h2 : array_like
+        Trailing over leading range of adhesion, ``> 0`` (``>= 1`` in the paper; 1 gives
+        the symmetric normal contact).
+    sigma0_over_E : array_like
+        Adhesive (Dugdale) stress over the composite modulus, ``>= 0`` (0 gives Hertz).
+    tau0_over_E : array_like, optional
+        Shear strength of the interface over ``E``, ``>= 0``: adds the friction force
+        ``2 a tau0`` (``T_over_Eh2``).
+    method : {"collocation", "closed-form"}
+        Solver (see the module docstring); both give the same state to about 1e-12.
+    n : int or "auto"
+        Collocation nodes (``"auto"``: chosen per point for ``tol``).
+    tol : float
+        Target discretisation error of the collocation solver.
+    raise_on_failure : bool
+        Raise :class:`~linecontact.errors.ConvergenceError` when a point misses its
+        tolerance (default); otherwise flag it in ``converged``.
+
+    Returns
+    -------
+    SlidingContact
+        The inputs broadcast together; scalars in, scalars out.
+
+    Examples
+    --------
+    >>> import linecontact as lc
+    >>> r = sliding_contact(0.03, 100.0, 2.0, 0.01)
+    >>> bool(r.c1_over_R > r.c2_over_R and r.e_over_R > 0 and r.M_over_Eh2R > 0)
+    True
+    >>> s = sliding_contact(0.03, 100.0, 1.0, 0.01)          # h1 = h2: the normal contact
+    >>> abs(s.F_over_Eh2 - lc.normal_contact(0.03, 100.0, 0.01).F_over_Eh) < 1e-10
+    True
+    """
+    A = positive("a_over_R", a_over_R)
+    rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
+    tau = (np.full((), np.nan) if tau0_over_E is None
+           else non_negative("tau0_over_E", tau0_over_E))
+    _check_method(method, n, tol)
+    scalar = scalar_or_array(A, rho, r, s, tau)
+    A, rho, r, s, tau = np.broadcast_arrays(A, rho, r, s, tau)
+    shape = A.shape
+    A, rho, r, s, tau = (np.ascontiguousarray(v, dtype=float).reshape(-1)
+                         for v in (A, rho, r, s, tau))
+    d = _solve_flat(A, rho, r, s, method, n, tol)
+    return _pack(d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure,
+                 "sliding_contact")
+
+
+# --------------------------------------------------------------------------------------------
+# zero width, pull-off and the inverse
+
+
+def _zero_width(kap, r):
+    """The a -> 0 limit, X_i = (c_i/R) sqrt(R/(2 h2)).
+
+    X2^2 + kappa S/2 ln(S/X1) = 1 and X1^2 + kappa S/2 ln(S/X2) = h1/h2 with S = X1 + X2
+    (the separation conditions as u1, u2 -> inf at fixed c_i).
+    """
+    ln2 = _ref.LN2
+    X2 = 2.0 / (kap * ln2 + np.sqrt(kap * kap * ln2 * ln2 + 4))
+    X1 = 2.0 * r / (kap * ln2 + np.sqrt(kap * kap * ln2 * ln2 + 4 * r))
+
+    def evaluate(idx, x1, x2):
+        k = kap[idx]
+        S = x1 + x2
+        L2 = np.log(S / x1)
+        L1 = np.log(S / x2)
+        E1 = (x1 * x1 + 0.5 * k * S * L1) / r[idx] - 1
+        E2 = x2 * x2 + 0.5 * k * S * L2 - 1
+        J11 = (2 * x1 + 0.5 * k * (L1 + 1)) / r[idx]
+        J12 = 0.5 * k * (L1 - x1 / x2) / r[idx]
+        J21 = 0.5 * k * (L2 - x2 / x1)
+        J22 = 2 * x2 + 0.5 * k * (L2 + 1)
+        return E1, E2, J11, J12, J21, J22, {}
+
+    X1, X2, e1, e2, _ = _newton2(evaluate, X1, X2)
+    return X1, X2, np.maximum(e1, e2)
+
+
+def _phi_at(lab, kap, r):
+    """Phi = (2/pi) F/(E h2), dPhi/dabar, u1, u2 at abar = exp(lab) (closed form).
+
+    Each call starts from the symmetric guesses (robust; warm starts from a distant abar
+    can lead Newton astray).
+    """
+    ab = np.exp(lab)
+    one = np.ones_like(ab)  # the closed form depends on abar and kappa only: take R/h2 = 1
+    A = ab * np.sqrt(2.0)
+    s = kap * (np.pi / 4) / np.sqrt(2.0)
+    u1, u2, _, _ = _closed_form(A, one, r, s)
+    _, F, _, dphi = _cf_outputs(A, one, r, s, u1, u2)
+    return F * (2 / np.pi), dphi, u1, u2
+
+
+_LAB_LO = np.log(1e-9)  # abar below which the load is indistinguishable from its a -> 0 limit
+
+
+def _pulloff_flat(kap, r):
+    """Minimum of Phi(abar) along the branch: grid in ln abar, then a secant on dPhi."""
+    P = kap.size
+    X1, X2, _ = _zero_width(kap, r)
+    phi0 = -0.5 * kap * (X1 + X2)
+    # upper end: Hertz dominates beyond abar ~ 1 + kappa
+    lab_hi = np.log(3.0 + 3.0 * kap)
+    grid = np.linspace(0.0, 1.0, 41)
+    labs = _LAB_LO + grid[:, None] * (lab_hi - _LAB_LO)[None, :]
+    phis = np.empty((grid.size, P))
+    dphis = np.empty((grid.size, P))
+    for i in range(grid.size):
+        phis[i], dphis[i], _, _ = _phi_at(labs[i], kap, r)
+    # interior minimum: bracket the smallest grid value
+    k = np.argmin(phis, axis=0)
+    cols = np.arange(P)
+    interior = (k > 0) & (k < grid.size - 1)
+    kk = np.clip(k, 1, grid.size - 2)
+    lo, hi = labs[kk - 1, cols], labs[kk + 1, cols]
+    _, flo, _, _ = _phi_at(lo, kap, r)
+    _, fhi, _, _ = _phi_at(hi, kap, r)
+    # secant on dPhi, kept inside the bracket (bisection otherwise); the load is flat at its
+    # minimum, so locating it to 1e-10 in ln(abar) gives the load to rounding
+    xp, fp, x, fx = lo, flo, hi, fhi
+    todo = interior.copy()
+    for _ in range(100):
+        if not todo.any():
+            break
+        with np.errstate(divide="ignore", invalid="ignore"):
+            nx = x - fx * (x - xp) / (fx - fp)
+        ok = np.isfinite(nx) & (nx > lo) & (nx < hi)
+        nx = np.where(ok, nx, 0.5 * (lo + hi))
+        i = np.nonzero(todo)[0]
+        _, fn, _, _ = _phi_at(nx[i], kap[i], r[i])
+        f_new = fx.copy()
+        f_new[i] = fn
+        xp, fp = np.where(todo, x, xp), np.where(todo, fx, fp)
+        x, fx = np.where(todo, nx, x), np.where(todo, f_new, fx)
+        up = todo & (fx > 0)
+        dn = todo & (fx <= 0)
+        hi, fhi = np.where(up, x, hi), np.where(up, fx, fhi)
+        lo, flo = np.where(dn, x, lo), np.where(dn, fx, flo)
+        todo &= (np.abs(x - xp) > 1e-10 * np.maximum(1.0, np.abs(x))) & (fx != 0)
+    lab_min = x
+    ph, _, _, _ = _phi_at(lab_min, kap, r)
+    interior &= ph < phi0
+    phi_min = np.where(interior, ph, phi0)
+    lab_min = np.where(interior, lab_min, -np.inf)
+    snap = (phi0 - phi_min) > ZERO_WIDTH_RTOL * np.abs(phi0)
+    return dict(X1=X1, X2=X2, phi0=phi0, phi_min=phi_min, lab_min=lab_min, snap=snap,
+                lab_hi=lab_hi)
+
+
+def sliding_pull_off(R_over_h2: ArrayLike, h1_over_h2: ArrayLike,
+                     sigma0_over_E: ArrayLike) -> SlidingPullOff:
+    r"""The most tensile load a steadily sliding contact carries (closed form).
+
+    The load along the branch of sliding contacts has a minimum either inside the branch
+    (``"snap-off"``) or as the contact width vanishes (``"zero-width"``), where the two
+    adhesive zones ``-c1 < x < c2`` of the touching state carry
+    ``F = -sigma0 (c1 + c2)``; the rule is that of :func:`linecontact.pull_off` (an interior
+    minimum within :data:`ZERO_WIDTH_RTOL` of the zero-width load counts as zero width). At
+    ``h1 = h2`` this is the pull-off of :func:`linecontact.pull_off`.
+
+    Parameters
+    ----------
+    R_over_h2, h1_over_h2, sigma0_over_E : array_like
+        As in :func:`sliding_contact`; ``sigma0_over_E > 0``.
+
+    Returns
+    -------
+    SlidingPullOff
+    """
+    rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
+    s = positive("sigma0_over_E", s)
+    scalar = scalar_or_array(rho, r, s)
+    rho, r, s = np.broadcast_arrays(rho, r, s)
+    shape = rho.shape
+    rho, r, s = (np.ascontiguousarray(v, float).reshape(-1) for v in (rho, r, s))
+    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    d = _pulloff_flat(kap, r)
+    sq = np.sqrt(2 / rho)
+    F0 = (np.pi / 2) * d["phi0"]
+    Fmin = (np.pi / 2) * d["phi_min"]
+    a_min = np.where(d["snap"], np.exp(d["lab_min"]) * sq, 0.0)
+    vals = dict(F_pulloff_over_Eh2=np.where(d["snap"], Fmin, F0), a_over_R_at_pulloff=a_min,
+                mechanism=np.where(d["snap"], "snap-off", "zero-width"),
+                F_zero_width_over_Eh2=F0, c1_over_R_zero_width=d["X1"] * sq,
+                c2_over_R_zero_width=d["X2"] * sq, R_over_h2=rho, h1_over_h2=r,
+                sigma0_over_E=s)
+    vals = {k: _as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
+    return SlidingPullOff(**vals)
+
+
+def sliding_contact_for_load(F_over_Eh2: ArrayLike, R_over_h2: ArrayLike,
+                             h1_over_h2: ArrayLike, sigma0_over_E: ArrayLike, *,
+                             tau0_over_E: ArrayLike | None = None,
+                             method: str = "collocation", n: int | str = "auto",
+                             tol: float = 1e-12,
+                             raise_on_failure: bool = True) -> SlidingContact:
+    r"""The steadily sliding contact carrying a given normal load (stable branch).
+
+    Solves ``F(a) = F`` for the contact half-width on the branch with ``dF/da > 0`` (stable
+    under load control) with the closed form, then computes the state at that width with
+    ``method``; with ``tau0_over_E`` the friction force ``2 a tau0`` is reported as
+    ``T_over_Eh2``.
+
+    Parameters
+    ----------
+    F_over_Eh2 : array_like
+        Normal load per unit length over ``E h2``, compressive positive.
+    R_over_h2, h1_over_h2, sigma0_over_E, tau0_over_E, method, n, tol, raise_on_failure
+        As in :func:`sliding_contact`.
+
+    Returns
+    -------
+    SlidingContact
+
+    Raises
+    ------
+    NoEquilibriumError
+        If the load is below the pull-off force of steady sliding (:func:`sliding_pull_off`),
+        naming it.
+
+    Examples
+    --------
+    >>> r = sliding_contact_for_load(0.5, 100.0, 2.0, 0.01, tau0_over_E=0.005)
+    >>> abs(r.F_over_Eh2 - 0.5) < 1e-10, bool(r.stable)
+    (True, True)
+    """
+    F = finite("F_over_Eh2", F_over_Eh2)
+    rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
+    tau = (np.full((), np.nan) if tau0_over_E is None
+           else non_negative("tau0_over_E", tau0_over_E))
+    _check_method(method, n, tol)
+    scalar = scalar_or_array(F, rho, r, s, tau)
+    F, rho, r, s, tau = np.broadcast_arrays(F, rho, r, s, tau)
+    shape = F.shape
+    F, rho, r, s, tau = (np.ascontiguousarray(v, dtype=float).reshape(-1)
+                         for v in (F, rho, r, s, tau))
+    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    phi_t = F * (2 / np.pi)
+    # lower end of the stable branch and its load
+    lab_lo = np.full(F.shape, _LAB_LO)
+    phi_lo = np.zeros(F.shape)
+    adh = s > 0
+    if adh.any():
+        d = _pulloff_flat(kap[adh], r[adh])
+        phi_po = np.where(d["snap"], d["phi_min"], d["phi0"])
+        bad = phi_t[adh] < phi_po
+        if bad.any():
+            i = np.flatnonzero(bad)[0]
+            g = np.flatnonzero(adh)[i]
+            raise NoEquilibriumError(
+                f"no steadily sliding contact carries F_over_Eh2={float(F[g])!r}: it is below "
+                f"the pull-off force F_pulloff_over_Eh2={float(np.pi / 2 * phi_po[i])!r} "
+                f"(R_over_h2={float(rho[g])!r}, h1_over_h2={float(r[g])!r}, "
+                f"sigma0_over_E={float(s[g])!r}); the cylinder has pulled off")
+        lab_lo[adh] = np.where(d["snap"], d["lab_min"], _LAB_LO)
+        phi_lo[adh] = np.where(d["snap"], d["phi_min"], d["phi0"])
+    if np.any(~adh & (phi_t <= 0)):
+        i = np.flatnonzero(~adh & (phi_t <= 0))[0]
+        raise NoEquilibriumError(
+            f"no contact carries F_over_Eh2={float(F[i])!r} without adhesion "
+            f"(sigma0_over_E=0): the load must be > 0")
+    # upper end: where Phi exceeds the target (Hertz: Phi >= abar^2 - kappa abar sinh ...)
+    lab_hi = np.log(np.sqrt(np.maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
+    ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
+    for _ in range(60):
+        low = ph_hi < phi_t
+        if not low.any():
+            break
+        lab_hi = np.where(low, lab_hi + np.log(2.0), lab_hi)
+        ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
+    # bracketed Newton in ln abar on [lab_lo, lab_hi], where Phi increases
+    lo, hi = lab_lo.copy(), lab_hi.copy()
+    lab = 0.5 * (lo + hi)
+    u1 = u2 = None
+    active = np.ones(F.shape, bool)
+    for _ in range(200):
+        ph, dph, u1, u2 = _phi_at(lab, kap, r)
+        fx = ph - phi_t
+        up = fx > 0
+        hi = np.where(up, lab, hi)
+        lo = np.where(up, lo, lab)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            nxt = lab - fx / (dph * np.exp(lab))
+        nxt = np.where(np.isfinite(nxt) & (nxt > lo) & (nxt < hi), nxt, 0.5 * (lo + hi))
+        done = (np.abs(fx) <= 4e-16 * np.maximum(1.0, np.abs(phi_t))) | \
+            (np.abs(nxt - lab) <= 1e-15 * np.maximum(1.0, np.abs(lab))) | \
+            (hi - lo <= 1e-15 * np.maximum(1.0, np.abs(hi)))
+        active &= ~done
+        if not active.any():
+            break
+        lab = np.where(active, nxt, lab)
+    A = np.exp(lab) * np.sqrt(2 / rho)
+    dd = _solve_flat(A, rho, r, s, method, n, tol,
+                     u_guess=(u1, u2) if method == "closed-form" else None)
+    return _pack(dd, A, rho, r, s, tau, method, shape, scalar, raise_on_failure,
+                 "sliding_contact_for_load")
