@@ -11,33 +11,11 @@ of F and c between them, and the time of the pull-off search for 1,000 parameter
 from __future__ import annotations
 
 import argparse
-import time
 
 import numpy as np
 
+from _common import best_of, sample_normal
 from linecontact import normal_contact, pull_off, zero_width_load
-
-
-def sample(n: int, rng: np.random.Generator):
-    s = 10 ** rng.uniform(-4, np.log10(0.3), n)
-    rho = 10 ** rng.uniform(1, 4, n)
-    A = 10 ** rng.uniform(-4, np.log10(0.2), n)
-    # thin adhesive zones (c/a -> 1): strong adhesion, large radius, wide contact
-    k = n // 10
-    s[:k] = 10 ** rng.uniform(-1, np.log10(0.3), k)
-    rho[:k] = 10 ** rng.uniform(3, 4, k)
-    A[:k] = rng.uniform(0.1, 0.2, k)
-    return A, rho, s
-
-
-def best_of(fn, repeat=3):
-    best = np.inf
-    out = None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t0)
-    return best, out
 
 
 def main() -> None:
@@ -46,7 +24,7 @@ def main() -> None:
     ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args()
     rng = np.random.default_rng(args.seed)
-    A, rho, s = sample(args.points, rng)
+    A, rho, s = sample_normal(args.points, rng)
     N = A.size
 
     t_cf, cf = best_of(lambda: normal_contact(A, rho, s))

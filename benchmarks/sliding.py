@@ -15,35 +15,18 @@ convergence with the number of nodes at a thin-zone point; and the time of the i
 from __future__ import annotations
 
 import argparse
-import time
 
 import numpy as np
 
+from _common import best_of, sample_normal
 from linecontact import normal_contact
 from linecontact.sliding import sliding_contact, sliding_contact_for_load, sliding_pull_off
 
 
 def sample(n: int, rng: np.random.Generator):
-    s = 10 ** rng.uniform(-4, np.log10(0.3), n)
-    rho = 10 ** rng.uniform(1, 4, n)
+    A, rho, s = sample_normal(n, rng)
     ratio = 10 ** rng.uniform(-1, 1, n)
-    A = 10 ** rng.uniform(-4, np.log10(0.2), n)
-    # thin adhesive zones (c/a -> 1): strong adhesion, large radius, wide contact
-    k = n // 10
-    s[:k] = 10 ** rng.uniform(-1, np.log10(0.3), k)
-    rho[:k] = 10 ** rng.uniform(3, 4, k)
-    A[:k] = rng.uniform(0.1, 0.2, k)
     return A, rho, ratio, s
-
-
-def best_of(fn, repeat=3):
-    best = np.inf
-    out = None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t0)
-    return best, out
 
 
 def scales(r):

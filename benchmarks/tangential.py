@@ -16,10 +16,10 @@ of the right-hand side approaches the end of the collocation interval.
 from __future__ import annotations
 
 import argparse
-import time
 
 import numpy as np
 
+from _common import best_of
 from linecontact import (
     sliding_initiation,
     sliding_initiation_coulomb,
@@ -27,16 +27,6 @@ from linecontact import (
     steady_rolling_coulomb,
 )
 from linecontact import tangential as tg
-
-
-def best_of(fn, repeat=3):
-    best = np.inf
-    out = None
-    for _ in range(repeat):
-        t0 = time.perf_counter()
-        out = fn()
-        best = min(best, time.perf_counter() - t0)
-    return best, out
 
 
 def rel(a, b):

@@ -127,17 +127,16 @@ def _groups(args):
     return cyl.R_over_h, cyl.sigma0_over_E, cyl
 
 
-# --- subcommands --------------------------------------------------------------------------
+def _half_widths(args, cyl, load_attr: str):
+    """Contact half-widths a/R from --a-over-R, --a-over-R-range or --a [m]; None for loads.
 
-
-def _cmd_normal(args) -> int:
-    from .normal import contact_for_load, normal_contact
-
-    rho, s, cyl = _groups(args)
+    Exactly one of those, ``--<load_attr>`` or ``--load`` [N/m] must be given.
+    """
+    flag = "--" + load_attr.replace("_", "-")
     given = [args.a_over_R is not None, args.a_over_R_range is not None,
-             args.F_over_Eh is not None, args.a is not None, args.load is not None]
+             getattr(args, load_attr) is not None, args.a is not None, args.load is not None]
     if sum(given) != 1:
-        raise ValueError("give exactly one of --a-over-R, --a-over-R-range, --F-over-Eh, "
+        raise ValueError(f"give exactly one of --a-over-R, --a-over-R-range, {flag}, "
                          "--a [m] or --load [N/m]")
     if (args.a is not None or args.load is not None) and cyl is None:
         raise ValueError("--a and --load are SI inputs: give --radius and the materials too")
@@ -145,13 +144,22 @@ def _cmd_normal(args) -> int:
         start, stop, num = args.a_over_R_range
         if not float(num).is_integer() or num < 1:
             raise ValueError(f"--a-over-R-range NUM must be an integer >= 1, got {num!r}")
-        A = np.linspace(start, stop, int(num))
-    elif args.a_over_R is not None:
-        A = np.asarray(args.a_over_R, float)
-    elif args.a is not None:
-        A = np.asarray(args.a, float) / cyl.radius
-    else:
-        A = None
+        return np.linspace(start, stop, int(num))
+    if args.a_over_R is not None:
+        return np.asarray(args.a_over_R, float)
+    if args.a is not None:
+        return np.asarray(args.a, float) / cyl.radius
+    return None
+
+
+# --- subcommands --------------------------------------------------------------------------
+
+
+def _cmd_normal(args) -> int:
+    from .normal import contact_for_load, normal_contact
+
+    rho, s, cyl = _groups(args)
+    A = _half_widths(args, cyl, "F_over_Eh")
     if A is not None:
         r = normal_contact(A, rho, s, method=args.method)
     else:

@@ -98,28 +98,11 @@ def _setup(args):
 
 
 def _cmd_slide(args) -> int:
-    from .cli import _dump_json, _table
+    from .cli import _dump_json, _half_widths, _table
     from .sliding import sliding_contact, sliding_contact_for_load
 
     rho, r, s, tau, cyl = _setup(args)
-    given = [args.a_over_R is not None, args.a_over_R_range is not None,
-             args.F_over_Eh2 is not None, args.a is not None, args.load is not None]
-    if sum(given) != 1:
-        raise ValueError("give exactly one of --a-over-R, --a-over-R-range, --F-over-Eh2, "
-                         "--a [m] or --load [N/m]")
-    if (args.a is not None or args.load is not None) and cyl is None:
-        raise ValueError("--a and --load are SI inputs: give --radius and the materials too")
-    if args.a_over_R_range is not None:
-        start, stop, num = args.a_over_R_range
-        if not float(num).is_integer() or num < 1:
-            raise ValueError(f"--a-over-R-range NUM must be an integer >= 1, got {num!r}")
-        A = np.linspace(start, stop, int(num))
-    elif args.a_over_R is not None:
-        A = np.asarray(args.a_over_R, float)
-    elif args.a is not None:
-        A = np.asarray(args.a, float) / cyl.radius
-    else:
-        A = None
+    A = _half_widths(args, cyl, "F_over_Eh2")
     if A is not None:
         res = sliding_contact(A, rho, r, s, tau0_over_E=tau, method=args.method)
     else:
