@@ -73,11 +73,8 @@ def _table(records: list[dict], keys: Sequence[str]) -> str:
 # --- shared arguments ---------------------------------------------------------------------
 
 
-def _add_groups(p: argparse.ArgumentParser) -> None:
-    g = p.add_argument_group("nondimensional groups (the paper's)")
-    g.add_argument("--R-over-h", type=float, help="cylinder radius over adhesion range, > 0")
-    g.add_argument("--sigma0-over-E", type=float,
-                   help="adhesive stress over composite modulus, >= 0 (0: Hertz)")
+def _add_si_materials(p: argparse.ArgumentParser):
+    """The SI group with radius, moduli and adhesive stress; the caller adds the ranges."""
     si = p.add_argument_group("SI inputs (instead of the groups)")
     si.add_argument("--radius", type=float, help="R [m]")
     si.add_argument("--modulus", type=float, help="composite plane-strain modulus E [Pa]")
@@ -86,6 +83,15 @@ def _add_groups(p: argparse.ArgumentParser) -> None:
     si.add_argument("--E2", type=float, help="substrate Young's modulus [Pa]")
     si.add_argument("--nu2", type=float, help="substrate Poisson ratio, in (-1, 0.5]")
     si.add_argument("--sigma0", type=float, help="adhesive (Dugdale) stress [Pa]")
+    return si
+
+
+def _add_groups(p: argparse.ArgumentParser) -> None:
+    g = p.add_argument_group("nondimensional groups (the paper's)")
+    g.add_argument("--R-over-h", type=float, help="cylinder radius over adhesion range, > 0")
+    g.add_argument("--sigma0-over-E", type=float,
+                   help="adhesive stress over composite modulus, >= 0 (0: Hertz)")
+    si = _add_si_materials(p)
     si.add_argument("--h", type=float, help="range of the adhesive stress [m]")
     si.add_argument("--work-of-adhesion", type=float, help="w [J/m^2] (with --z0)")
     si.add_argument("--z0", type=float, help="equilibrium spacing [m] (Maugis: h = 0.974 z0)")

@@ -27,6 +27,8 @@ _EPILOG = ("Axes: x along the sliding direction (the cylinder moves to +x), orig
 
 def register_slide(sub) -> argparse.ArgumentParser:
     """Add the ``slide`` subcommand to the subparsers ``sub``; returns its parser."""
+    from .cli import _add_si_materials
+
     p = sub.add_parser("slide", help="steady sliding: adhesive zones, eccentricity, load and "
                                      "moment with different trailing/leading adhesion",
                        epilog=_EPILOG)
@@ -39,14 +41,7 @@ def register_slide(sub) -> argparse.ArgumentParser:
                    help="adhesive stress over composite modulus, >= 0 (0: Hertz)")
     g.add_argument("--tau0-over-E", type=float,
                    help="interface shear strength over E, >= 0: adds the friction force 2 a tau0")
-    si = p.add_argument_group("SI inputs (instead of the groups)")
-    si.add_argument("--radius", type=float, help="R [m]")
-    si.add_argument("--modulus", type=float, help="composite plane-strain modulus E [Pa]")
-    si.add_argument("--E1", type=float, help="cylinder Young's modulus [Pa]")
-    si.add_argument("--nu1", type=float, help="cylinder Poisson ratio, in (-1, 0.5]")
-    si.add_argument("--E2", type=float, help="substrate Young's modulus [Pa]")
-    si.add_argument("--nu2", type=float, help="substrate Poisson ratio, in (-1, 0.5]")
-    si.add_argument("--sigma0", type=float, help="adhesive (Dugdale) stress [Pa]")
+    si = _add_si_materials(p)
     si.add_argument("--h2", dest="h", type=float, help="leading-edge adhesion range h2 [m]")
     si.add_argument("--h1", type=float,
                     help="trailing-edge adhesion range h1 [m] (or give --h1-over-h2)")
