@@ -209,7 +209,7 @@ def _u_of_abar(abar: NDArray, kap: NDArray, *, maxiter: int = 60) -> tuple[NDArr
                                                                              NDArray]:
     """Solve abar(u; kappa) = abar for u by bracketed Newton in w = ln u.
 
-    Returns (u, relative residual of abar, iterations used).
+    Returns (u, separation residual (gap at c minus h, over h), iterations used).
     """
     abar, kap = np.broadcast_arrays(np.asarray(abar, float), np.asarray(kap, float))
     target = np.log(abar)
@@ -245,8 +245,11 @@ def _u_of_abar(abar: NDArray, kap: NDArray, *, maxiter: int = 60) -> tuple[NDArr
         if not active.any():
             break
     u = np.exp(w)
-    bp = _branch_point(u, kap)
-    res = np.abs(bp["abar"] / abar - 1)
+    # separation residual (gap(c) - gap(a))/h - 1 = abar^2 f1 + kappa abar f2 - 1 at the
+    # given abar, in the scaled form (Y = abar e^u / 2)
+    p = _scaled(u)
+    Y = abar * np.exp(np.minimum(u, 700.0)) / 2
+    res = np.abs(Y * Y * p["F1"] + kap * Y * p["F2"] - 1)
     return u, res, it
 
 
