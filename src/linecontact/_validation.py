@@ -11,6 +11,28 @@ def _first_bad(arr: NDArray, bad: NDArray) -> object:
     return float(v)
 
 
+def _real_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
+    """``value`` as a float array; bools, strings, complex numbers and None are refused.
+
+    ``np.asarray(value, dtype=float)`` alone would read ``True`` as 1, ``"0.5"`` as 0.5,
+    ``None`` as nan and drop the imaginary part of a complex number.
+    """
+    bad = f"{name} must be a real number or an array of them, got {value!r}"
+    if value is None or isinstance(value, (bool, np.bool_, str, bytes)):
+        raise ValueError(bad)
+    try:
+        raw = np.asarray(value)
+    except (TypeError, ValueError):  # ragged nested sequences
+        raise ValueError(bad) from None
+    if raw.dtype.kind not in "iuf":
+        # object arrays of plain numbers (e.g. [1, 2.5] of mixed Python types) are fine
+        if raw.dtype.kind != "O" or not all(
+                isinstance(v, (int, float, np.integer, np.floating))
+                and not isinstance(v, (bool, np.bool_)) for v in raw.flat):
+            raise ValueError(bad)
+    return np.asarray(raw, dtype=float)
+
+
 def check_array(name: str, value: ArrayLike, *, low: float = 0.0, low_inclusive: bool = False,
                 high: float = np.inf, high_inclusive: bool = False,
                 allow_inf: bool = False) -> NDArray[np.float64]:
@@ -21,22 +43,20 @@ def check_array(name: str, value: ArrayLike, *, low: float = 0.0, low_inclusive:
     ValueError
         Naming ``name``, the valid range and the first offending value.
     """
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a real number or an array of them, got {value!r}") \
-            from None
+    arr = _real_array(name, value)
     lo_br = "[" if low_inclusive else "("
     hi_br = "]" if high_inclusive else ")"
     hi_txt = "inf" if np.isinf(high) else f"{high:g}"
     rng = f"{lo_br}{low:g}, {hi_txt}{hi_br}"
+    # "a finite number in (-inf, inf)" says no more than "a finite number"
+    in_rng = "" if np.isinf(low) and np.isinf(high) else f" in {rng}"
     if arr.size == 0:
         raise ValueError(f"{name} must not be empty")
     nan = np.isnan(arr)
     if nan.any():
-        raise ValueError(f"{name} must be a finite number in {rng}, got nan")
+        raise ValueError(f"{name} must be a finite number{in_rng}, got nan")
     if not allow_inf and np.isinf(arr).any():
-        raise ValueError(f"{name} must be a finite number in {rng}, got "
+        raise ValueError(f"{name} must be a finite number{in_rng}, got "
                          f"{_first_bad(arr, np.isinf(arr))}")
     too_low = arr < low if low_inclusive else arr <= low
     too_high = arr > high if high_inclusive else arr >= high

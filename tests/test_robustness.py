@@ -1,0 +1,90 @@
+"""Bad and edge input at every public entry point: plain ValueErrors, never garbage.
+
+The messages are part of the API (they name the parameter and its valid range); the
+inputs here are the ones an adversarial sweep found mishandled.
+"""
+
+import warnings
+
+import numpy as np
+import pytest
+
+import linecontact as lc
+from linecontact import Cylinder
+
+X = object()  # placeholder for the argument under test
+
+
+def _call(fn, args, kwargs, value):
+    args = tuple(value if a is X else a for a in args)
+    kwargs = {k: (value if v is X else v) for k, v in kwargs.items()}
+    return fn(*args, **kwargs)
+
+
+# every vectorised entry point, with the parameter under test
+ENTRY_POINTS = [
+    (lc.kappa, (X, 0.01), {}, "R_over_h"),
+    (lc.maugis_parameter, (100.0, X), {}, "sigma0_over_E"),
+    (lc.hertz_load, (X, 100.0), {}, "a_over_R"),
+    (lc.jkr_load, (0.01, 100.0, X), {}, "sigma0_over_E"),
+    (lc.zero_width_load, (X, 0.01), {}, "R_over_h"),
+    (lc.normal_contact, (X, 100.0, 0.01), {}, "a_over_R"),
+    (lc.contact_for_load, (X, 100.0, 0.01), {}, "F_over_Eh"),
+    (lc.non_contact, (X, 100.0, 0.2), {}, "central_gap_over_h"),
+    (lc.pull_off, (100.0, X), {}, "sigma0_over_E"),
+    (lc.equilibria, (X, 100.0, 0.2), {}, "F_over_Eh"),
+    (lc.load_curve, (X, 0.01), {}, "R_over_h"),
+    (lc.sliding_initiation, (0.01, X), {}, "d_over_a"),
+    (lc.steady_rolling, (0.01,), {"T_over_Ea": X}, "T_over_Ea"),
+    (lc.sliding_initiation_coulomb, (X, 0.01, 0.5), {}, "mu"),
+    (lc.steady_rolling_coulomb, (0.3, 0.01), {"T_over_muF": X}, "T_over_muF"),
+    (lc.sliding_contact, (0.03, 100.0, X, 0.01), {}, "h1_over_h2"),
+    (lc.sliding_contact_for_load, (X, 100.0, 2.0, 0.01), {}, "F_over_Eh2"),
+    (lc.sliding_pull_off, (100.0, 2.0, X), {}, "sigma0_over_E"),
+    (lc.composite_modulus, (70e9, X, 160e9, 0.22), {}, "nu1"),
+    (lc.dundurs_beta, (70e9, 0.17, X, 0.22), {}, "E2"),
+    (lc.adhesion_from_work, (X, 0.3e-9), {}, "work_of_adhesion"),
+    (Cylinder.from_modulus, (X, 100e9), {"cohesive_stress": 1e9, "adhesion_range": 0.5e-9},
+     "radius"),
+    (Cylinder.from_modulus, (50e-9, 100e9), {"cohesive_stress": X, "adhesion_range": 0.5e-9},
+     "cohesive_stress"),
+]
+
+NOT_REAL = [True, np.bool_(False), "0.5", b"1", 1 + 1j, np.array([0.5 + 1j]), [0.5, None],
+            np.datetime64("2020-01-01")]
+
+
+def _ids(entry):
+    return f"{entry[0].__qualname__}-{entry[3]}"
+
+
+@pytest.mark.parametrize("value", NOT_REAL, ids=repr)
+@pytest.mark.parametrize("entry", ENTRY_POINTS, ids=_ids)
+def test_not_a_real_number_is_refused(entry, value):
+    """A bool, a numeric string, a complex number or None is not silently converted."""
+    fn, args, kwargs, name = entry
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # ComplexWarning would mean a silent conversion
+        with pytest.raises(ValueError, match=rf"^{name} must be a real number or an array of "
+                                             r"them, got "):
+            _call(fn, args, kwargs, value)
+
+
+# None means "not given" for the optional state variables and adhesion parameters
+_NONE_IS_A_DEFAULT = ("d_over_a", "T_over_Ea", "T_over_muF", "cohesive_stress")
+
+
+@pytest.mark.parametrize("entry", [e for e in ENTRY_POINTS if e[3] not in _NONE_IS_A_DEFAULT],
+                         ids=_ids)
+def test_none_is_refused_where_it_is_no_default(entry):
+    fn, args, kwargs, name = entry
+    with pytest.raises(ValueError, match=rf"^{name} must be a real number or an array of "
+                                         r"them, got None"):
+        _call(fn, args, kwargs, None)
+
+
+def test_finite_without_a_range_says_so_plainly():
+    with pytest.raises(ValueError, match=r"^F_over_Eh must be a finite number, got nan$"):
+        lc.contact_for_load(np.nan, 100.0, 0.01)
+    with pytest.raises(ValueError, match=r"^F_over_Eh2 must be a finite number, got inf$"):
+        lc.sliding_contact_for_load(np.inf, 100.0, 2.0, 0.01)
