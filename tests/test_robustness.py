@@ -88,3 +88,58 @@ def test_finite_without_a_range_says_so_plainly():
         lc.contact_for_load(np.nan, 100.0, 0.01)
     with pytest.raises(ValueError, match=r"^F_over_Eh2 must be a finite number, got inf$"):
         lc.sliding_contact_for_load(np.inf, 100.0, 2.0, 0.01)
+
+
+CYL = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
+A3, B2 = [0.01, 0.02, 0.03], [1.0, 2.0]
+
+
+@pytest.mark.parametrize("fn, args, kwargs, message", [
+    (lc.kappa, (A3, B2), {}, r"R_over_h has shape \(3,\), sigma0_over_E has shape \(2,\)"),
+    (lc.jkr_load, (A3, B2, 0.01), {}, r"a_over_R has shape \(3,\), R_over_h has shape \(2,\)"),
+    (lc.normal_contact, (A3, B2, 0.01), {},
+     r"a_over_R has shape \(3,\), R_over_h has shape \(2,\)"),
+    (lc.contact_for_load, (A3, 100.0, B2), {},
+     r"F_over_Eh has shape \(3,\), sigma0_over_E has shape \(2,\)"),
+    (lc.non_contact, (A3, B2, 0.01), {},
+     r"central_gap_over_h has shape \(3,\), R_over_h has shape \(2,\)"),
+    (lc.pull_off, (A3, B2), {}, r"R_over_h has shape \(3,\), sigma0_over_E has shape \(2,\)"),
+    (lc.sliding_initiation, (A3, [0.1, 0.2]), {},
+     r"tau0_over_E has shape \(3,\), d_over_a has shape \(2,\)"),
+    (lc.steady_rolling_coulomb, (0.3, A3), {"T_over_muF": B2},
+     r"a_over_R has shape \(3,\), T_over_muF has shape \(2,\)"),
+    (lc.sliding_contact, (0.03, A3, B2, 0.01), {},
+     r"R_over_h2 has shape \(3,\), h1_over_h2 has shape \(2,\)"),
+    (lc.sliding_pull_off, (100.0, A3, B2), {},
+     r"h1_over_h2 has shape \(3,\), sigma0_over_E has shape \(2,\)"),
+    (lc.composite_modulus, ([1e9, 2e9, 3e9], 0.3, [1e9, 2e9], 0.3), {},
+     r"E1 has shape \(3,\), E2 has shape \(2,\)"),
+    (lc.adhesion_from_work, (A3, [1e-9, 2e-9]), {},
+     r"work_of_adhesion has shape \(3,\), equilibrium_spacing has shape \(2,\)"),
+    (lc.cylinder_steady_rolling, (CYL, [0.5, 1.0, 2.0]),
+     {"friction_stress": 1e9, "tangential_load": [0.1, 0.2]},
+     r"normal_load has shape \(3,\), tangential_load has shape \(2,\)"),
+    (lc.cylinder_sliding_initiation, (CYL, 1.0), {"friction_stress": [1e9, 2e9, 3e9],
+                                                  "d_over_a": [0.1, 0.2]},
+     r"friction_stress has shape \(3,\), d_over_a has shape \(2,\)"),
+])
+def test_shapes_that_do_not_broadcast_are_named(fn, args, kwargs, message):
+    with pytest.raises(ValueError, match=r"^the array arguments must broadcast together: "
+                                         + message + "$"):
+        fn(*args, **kwargs)
+
+
+@pytest.mark.parametrize("fn", [lc.cylinder_sliding_initiation, lc.cylinder_steady_rolling])
+@pytest.mark.parametrize("cylinder", [None, "cyl", 50e-9])
+def test_cylinder_functions_want_a_cylinder(fn, cylinder):
+    with pytest.raises(ValueError, match=r"^cylinder must be a linecontact.Cylinder"):
+        fn(cylinder, 1.0, friction_stress=1e9, d_over_a=0.5)
+
+
+@pytest.mark.parametrize("fn, d, message", [
+    (lc.cylinder_sliding_initiation, 1.0, r"^d_over_a must be in \[0, 1\), got 1.0$"),
+    (lc.cylinder_steady_rolling, -1.0, r"^d_over_a must be in \(-1, 1\), got -1.0$"),
+])
+def test_cylinder_functions_check_the_stick_zone_first(fn, d, message):
+    with pytest.raises(ValueError, match=message):
+        fn(CYL, 1.0, friction_stress=1e9, d_over_a=d)

@@ -83,6 +83,21 @@ def finite(name: str, value: ArrayLike) -> NDArray[np.float64]:
     return check_array(name, value, low=-np.inf, low_inclusive=True)
 
 
+def broadcast(**named: NDArray) -> list[NDArray]:
+    """``np.broadcast_arrays`` of the named inputs; shapes that do not broadcast are named.
+
+    NumPy's own message ("shape mismatch: ... arg 0 with shape (3,) and arg 1 ...") does
+    not say which parameters disagree.
+    """
+    arrays = [np.asarray(v) for v in named.values()]
+    try:
+        return list(np.broadcast_arrays(*arrays))
+    except ValueError:
+        shapes = ", ".join(f"{k} has shape {np.shape(v)}" for k, v in named.items()
+                           if np.ndim(v) > 0)
+        raise ValueError(f"the array arguments must broadcast together: {shapes}") from None
+
+
 def scalar_or_array(*arrays: NDArray) -> bool:
     """True when every input is 0-d (results are then returned as scalars)."""
     return all(np.ndim(a) == 0 for a in arrays)

@@ -39,7 +39,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from . import normal as _normal
 from . import reference as _ref
-from ._validation import check_array, positive
+from ._validation import broadcast, check_array, positive
 from .errors import CouplingWarning
 
 __all__ = [
@@ -62,6 +62,7 @@ def _moduli(E1, nu1, E2, nu2):
     E2 = check_array("E2", E2, allow_inf=True)
     nu1 = check_array("nu1", nu1, low=-1.0, high=0.5, high_inclusive=True)
     nu2 = check_array("nu2", nu2, low=-1.0, high=0.5, high_inclusive=True)
+    E1, nu1, E2, nu2 = broadcast(E1=E1, nu1=nu1, E2=E2, nu2=nu2)
     if np.any(np.isinf(E1) & np.isinf(E2)):
         raise ValueError("E1 and E2 cannot both be infinite (two rigid bodies)")
     return E1, nu1, E2, nu2
@@ -110,6 +111,7 @@ def adhesion_from_work(work_of_adhesion: ArrayLike, equilibrium_spacing: ArrayLi
     """
     w = positive("work_of_adhesion", work_of_adhesion)
     z0 = positive("equilibrium_spacing", equilibrium_spacing)
+    w, z0 = broadcast(work_of_adhesion=w, equilibrium_spacing=z0)
     s0 = 16 * w / (9 * np.sqrt(3) * z0)
     h = w / s0
     return (s0.item(), h.item()) if s0.ndim == 0 else (s0, h)

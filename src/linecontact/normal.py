@@ -29,7 +29,14 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import reference as _ref
-from ._validation import check_array, finite, non_negative, positive, scalar_or_array
+from ._validation import (
+    broadcast,
+    check_array,
+    finite,
+    non_negative,
+    positive,
+    scalar_or_array,
+)
 from .errors import ConvergenceError, NoEquilibriumError
 from .sie import BoundedSolver
 
@@ -427,7 +434,7 @@ def normal_contact(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: Arra
     if not (isinstance(tol, float | int) and 1e-15 <= tol < 1e-2):
         raise ValueError(f"tol must be in [1e-15, 1e-2), got {tol!r}")
     scalar = scalar_or_array(A, rho, s)
-    A, rho, s = np.broadcast_arrays(A, rho, s)
+    A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     if method == "closed-form":
         u, C, F, res, stable = _closed_form(A, rho, s)
@@ -562,7 +569,7 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     rho = positive("R_over_h", R_over_h)
     s = non_negative("sigma0_over_E", sigma0_over_E)
     scalar = scalar_or_array(rho, s)
-    rho, s = np.broadcast_arrays(rho, s)
+    rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     d = _pulloff_arrays(rho.astype(float), s.astype(float))
     d.pop("us")
     lam = 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
@@ -614,7 +621,8 @@ def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: A
     if branch not in ("stable", "unstable"):
         raise ValueError(f"branch must be 'stable' or 'unstable', got {branch!r}")
     scalar = scalar_or_array(F, rho, s)
-    F, rho, s = (np.asarray(v, float) for v in np.broadcast_arrays(F, rho, s))
+    F, rho, s = (np.asarray(v, float) for v in broadcast(F_over_Eh=F, R_over_h=rho,
+                                                          sigma0_over_E=s))
     d = _pulloff_arrays(rho, s)
     Fmin, F0, us, kap = d["F_minimum_over_Eh"], d["F_zero_width_over_Eh"], d["us"], d["kappa"]
     if branch == "stable":
@@ -688,7 +696,8 @@ def non_contact(central_gap_over_h: ArrayLike, R_over_h: ArrayLike,
     rho = positive("R_over_h", R_over_h)
     s = non_negative("sigma0_over_E", sigma0_over_E)
     scalar = scalar_or_array(g, rho, s)
-    g, rho, s = (np.asarray(v, float) for v in np.broadcast_arrays(g, rho, s))
+    g, rho, s = (np.asarray(v, float) for v in broadcast(central_gap_over_h=g, R_over_h=rho,
+                                                          sigma0_over_E=s))
     k = 4 * _ref.LN2 * s / np.pi
     rhs = 2 * (1 - g) / rho
     C = rhs / (k + np.sqrt(k * k + rhs))

@@ -55,7 +55,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._validation import non_negative, out, positive, scalar_or_array
+from ._validation import broadcast, non_negative, out, positive, scalar_or_array
 
 __all__ = [
     "hertz_load",
@@ -82,6 +82,7 @@ def kappa(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | float:
     """
     rho = positive("R_over_h", R_over_h)
     s = non_negative("sigma0_over_E", sigma0_over_E)
+    rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     return out((4 / np.pi) * s * np.sqrt(2 * rho), scalar_or_array(rho, s))
 
 
@@ -95,6 +96,7 @@ def maugis_parameter(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray |
     """
     rho = positive("R_over_h", R_over_h)
     s = non_negative("sigma0_over_E", sigma0_over_E)
+    rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     return out(4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3), scalar_or_array(rho, s))
 
 
@@ -106,6 +108,7 @@ def hertz_load(a_over_R: ArrayLike, R_over_h: ArrayLike) -> NDArray | float:
     r"""Hertz line contact, Eq. (13): :math:`F/(Eh) = (\pi/4)(a/R)^2 (R/h)`."""
     A = positive("a_over_R", a_over_R)
     rho = positive("R_over_h", R_over_h)
+    A, rho = broadcast(a_over_R=A, R_over_h=rho)
     return out(np.pi / 4 * A * A * rho, scalar_or_array(A, rho))
 
 
@@ -119,6 +122,7 @@ def jkr_load(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike)
     A = positive("a_over_R", a_over_R)
     rho = positive("R_over_h", R_over_h)
     s = non_negative("sigma0_over_E", sigma0_over_E)
+    A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
     val = np.pi / 4 * A * A * rho - np.sqrt(2 * np.pi * s * rho * A)
     return out(val, scalar_or_array(A, rho, s))
 
@@ -136,6 +140,7 @@ def zero_width_load(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | 
     """
     rho = positive("R_over_h", R_over_h)
     s = non_negative("sigma0_over_E", sigma0_over_E)
+    rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     return out(_zero_width(rho, s), scalar_or_array(rho, s))
 
 

@@ -110,7 +110,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import reference as _ref
-from ._validation import finite, non_negative, positive, scalar_or_array
+from ._validation import broadcast, finite, non_negative, positive, scalar_or_array
 from .errors import ConvergenceError, NoEquilibriumError
 from .normal import _SIZES, _as_output, _log_weights, _Result
 from .sie import BoundedSolution, BoundedSolver
@@ -750,7 +750,8 @@ def sliding_contact(a_over_R: ArrayLike, R_over_h2: ArrayLike, h1_over_h2: Array
            else non_negative("tau0_over_E", tau0_over_E))
     _check_method(method, n, tol)
     scalar = scalar_or_array(A, rho, r, s, tau)
-    A, rho, r, s, tau = np.broadcast_arrays(A, rho, r, s, tau)
+    A, rho, r, s, tau = broadcast(a_over_R=A, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s,
+                                  tau0_over_E=tau)
     shape = A.shape
     A, rho, r, s, tau = (np.ascontiguousarray(v, dtype=float).reshape(-1)
                          for v in (A, rho, r, s, tau))
@@ -884,7 +885,7 @@ def sliding_pull_off(R_over_h2: ArrayLike, h1_over_h2: ArrayLike,
     rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
     s = positive("sigma0_over_E", s)
     scalar = scalar_or_array(rho, r, s)
-    rho, r, s = np.broadcast_arrays(rho, r, s)
+    rho, r, s = broadcast(R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s)
     shape = rho.shape
     rho, r, s = (np.ascontiguousarray(v, float).reshape(-1) for v in (rho, r, s))
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
@@ -944,7 +945,8 @@ def sliding_contact_for_load(F_over_Eh2: ArrayLike, R_over_h2: ArrayLike,
            else non_negative("tau0_over_E", tau0_over_E))
     _check_method(method, n, tol)
     scalar = scalar_or_array(F, rho, r, s, tau)
-    F, rho, r, s, tau = np.broadcast_arrays(F, rho, r, s, tau)
+    F, rho, r, s, tau = broadcast(F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s,
+                                  tau0_over_E=tau)
     shape = F.shape
     F, rho, r, s, tau = (np.ascontiguousarray(v, dtype=float).reshape(-1)
                          for v in (F, rho, r, s, tau))

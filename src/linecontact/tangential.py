@@ -94,7 +94,7 @@ import numpy as np
 import scipy.special
 from numpy.typing import ArrayLike, NDArray
 
-from ._validation import check_array, non_negative, positive, scalar_or_array
+from ._validation import broadcast, check_array, non_negative, positive, scalar_or_array
 from .errors import ConvergenceError, NoEquilibriumError
 from .normal import _as_output, _Result
 from .sie import BoundedSolver, _log_moment_vector
@@ -810,7 +810,9 @@ def _run(pb: _Problem, d_over_a, load, load_name, method, n, tol, raise_on_failu
         dl = None
         given = (load_name, non_negative(load_name, load))
     scalar = scalar_or_array(*arrays, given[1])
-    *arrays, g = (np.asarray(v, float) for v in np.broadcast_arrays(*arrays, given[1]))
+    *arrays, g = (np.asarray(v, float) for v in broadcast(**dict(zip(names, arrays,
+                                                                   strict=True)),
+                                                          **{given[0]: given[1]}))
     shape = g.shape
     if dl is not None:
         dl = g
@@ -1149,6 +1151,11 @@ class CylinderTangential:
 
 def _cylinder_tangential(problem, cylinder, normal_load, friction_stress, friction_coefficient,
                          d_over_a, tangential_load, method, on_sliding) -> CylinderTangential:
+    from .materials import Cylinder
+
+    if not isinstance(cylinder, Cylinder):
+        raise ValueError(f"cylinder must be a linecontact.Cylinder (Cylinder.from_modulus or "
+                         f"Cylinder.from_materials), got {cylinder!r}")
     if (friction_stress is None) == (friction_coefficient is None):
         raise ValueError("give exactly one of friction_stress (constant tau0 [Pa]) or "
                          "friction_coefficient (Coulomb mu)")
@@ -1156,31 +1163,46 @@ def _cylinder_tangential(problem, cylinder, normal_load, friction_stress, fricti
         raise ValueError("give exactly one of d_over_a or tangential_load [N/m]")
     E = cylinder.modulus
     rolling = problem == "steady rolling"
-    if friction_coefficient is not None:
+    coulomb = friction_coefficient is not None
+    pb = (_CARTER if coulomb else _ROLLING) if rolling else \
+        (_CATTANEO_MINDLIN if coulomb else _INITIATION)
+    # every input checked, and the shapes against each other, before any solve
+    if coulomb:
+        F = check_array("normal_load", normal_load)
+        fr_name, fr = "friction_coefficient", positive("friction_coefficient",
+                                                       friction_coefficient)
+    else:
+        F = check_array("normal_load", normal_load, low=-np.inf)
+        fr_name, fr = "friction_stress", positive("friction_stress", friction_stress)
+    if d_over_a is not None:
+        st_name = "d_over_a"
+        st = check_array("d_over_a", d_over_a, low=pb.d_low, low_inclusive=pb.d_low_inclusive,
+                         high=1.0)
+    else:
+        st_name, st = "tangential_load", non_negative("tangential_load", tangential_load)
+    broadcast(normal_load=F, **{fr_name: fr, st_name: st})
+    d = st if d_over_a is not None else None
+    if coulomb:
         if cylinder.cohesive_stress != 0:
             raise ValueError("Coulomb friction is the macro-scale counterpart for the "
                              "non-adhesive Hertz contact: use a Cylinder without adhesion "
                              "(cohesive_stress = 0), or give friction_stress")
-        F = check_array("normal_load", normal_load)
         contact = cylinder.contact(load=F)
         A = np.asarray(contact.contact_half_width) / cylinder.radius
-        mu = positive("friction_coefficient", friction_coefficient)
-        T = None if tangential_load is None else \
-            non_negative("tangential_load", tangential_load) / (mu * F)
+        mu = fr
+        T = None if d is not None else st / (mu * F)
         fn = steady_rolling_coulomb if rolling else sliding_initiation_coulomb
-        r = fn(mu, A, d_over_a, T_over_muF=T, method=method, on_sliding=on_sliding)
+        r = fn(mu, A, d, T_over_muF=T, method=method, on_sliding=on_sliding)
         full = mu * F
         friction = "coulomb"
     else:
-        F = check_array("normal_load", normal_load, low=-np.inf)
         contact = cylinder.contact(load=F)
         a = np.asarray(contact.contact_half_width)
-        t0 = positive("friction_stress", friction_stress)
-        T = None if tangential_load is None else \
-            non_negative("tangential_load", tangential_load) / (E * a)
+        t0 = fr
+        T = None if d is not None else st / (E * a)
         fn = steady_rolling if rolling else sliding_initiation
         # broadcast with a so that every field has the shape of the points
-        r = fn(t0 / E + 0 * a, d_over_a, T_over_Ea=T, method=method, on_sliding=on_sliding)
+        r = fn(t0 / E + 0 * a, d, T_over_Ea=T, method=method, on_sliding=on_sliding)
         full = 2 * a * t0
         friction = "constant"
     a = np.asarray(contact.contact_half_width)
