@@ -143,3 +143,62 @@ def test_cylinder_functions_want_a_cylinder(fn, cylinder):
 def test_cylinder_functions_check_the_stick_zone_first(fn, d, message):
     with pytest.raises(ValueError, match=message):
         fn(CYL, 1.0, friction_stress=1e9, d_over_a=d)
+
+
+@pytest.mark.parametrize("fn, args, kwargs, name", [
+    (lc.equilibria, ([-1.0, 0.0], 100.0, 0.2), {}, "F_over_Eh"),
+    (lc.equilibria, (-1.0, np.full((2, 2), 100.0), 0.2), {}, "R_over_h"),
+    (lc.load_curve, (100.0, [0.01]), {}, "sigma0_over_E"),
+    (lc.load_curve, (100.0, 0.01), {"a_max_over_R": [0.1, 0.2]}, "a_max_over_R"),
+    (Cylinder.from_modulus, ([50e-9, 60e-9], 100e9), {"adhesion_range": 0.5e-9}, "radius"),
+    (Cylinder.from_modulus, (50e-9, 100e9), {"cohesive_stress": [1e9, 2e9],
+                                             "adhesion_range": 0.5e-9}, "cohesive_stress"),
+    (Cylinder.from_modulus, (50e-9, 100e9), {"work_of_adhesion": [0.1, 0.2],
+                                             "equilibrium_spacing": 0.3e-9}, "work_of_adhesion"),
+    (Cylinder.from_materials, (50e-9, [70e9, 80e9], 0.17, 160e9, 0.22),
+     {"adhesion_range": 0.5e-9}, "E1"),
+])
+def test_scalar_parameters_refuse_arrays(fn, args, kwargs, name):
+    """These take one parameter point; an array gave TypeError from float()."""
+    with pytest.raises(ValueError, match=rf"^{name} must be a single number, got an array of "
+                                         r"shape \("):
+        fn(*args, **kwargs)
+
+
+@pytest.mark.parametrize("fields, message", [
+    ((-1.0, 100e9, 1e9, 0.5e-9), r"^radius must be in \(0, inf\), got -1.0$"),
+    ((50e-9, "x", 1e9, 0.5e-9), r"^modulus must be a real number"),
+    ((50e-9, 100e9, None, 0.5e-9), r"^cohesive_stress must be a real number"),
+    ((50e-9, 100e9, 1e9, 0.0), r"^adhesion_range must be in \(0, inf\), got 0.0$"),
+    ((50e-9, 100e9, 1e9, 0.5e-9, np.nan), r"^dundurs_beta must be a finite number, got nan$"),
+    ((50e-9, 1e-300, 1e9, 0.5e-9), r"^cohesive_stress/modulus \(sigma0/E\) = inf is not a "
+                                   r"finite positive number"),
+    ((1e-300, 100e9, 1e9, 1e300), r"^radius/adhesion_range \(R/h\) = 0.0 is not"),
+    ((50e-9, 1e-300, 0.0, 1e-300), r"^modulus\*adhesion_range \(E h, the unit of force per "
+                                   r"length\) = 0.0 is not"),
+])
+def test_cylinder_checks_its_fields(fields, message):
+    """Built directly (a frozen dataclass) or through from_modulus: same checks."""
+    with pytest.raises(ValueError, match=message):
+        Cylinder(*fields)
+
+
+def test_cylinder_from_modulus_with_groups_out_of_range():
+    """sigma0/E = inf from E = 1e-300 Pa: refused, not an overflow in the load conversion."""
+    with pytest.raises(ValueError, match=r"^cohesive_stress/modulus \(sigma0/E\) = inf"):
+        Cylinder.from_modulus(50e-9, 1e-300, cohesive_stress=1e9, adhesion_range=0.5e-9)
+
+
+def test_cylinder_fields_are_python_floats():
+    c = Cylinder(np.float64(50e-9), 100_000_000_000, np.array(1e9), 0.5e-9)
+    assert all(type(v) is float for v in (c.radius, c.modulus, c.cohesive_stress,
+                                          c.adhesion_range, c.dundurs_beta))
+
+
+def test_cylinder_contact_scalar_in_python_scalars_out():
+    r = CYL.contact(load=1.0)
+    assert type(r.contact_half_width) is float and type(r.load) is float
+    assert type(r.adhesive_zone_half_width) is float and type(r.stable) is bool
+    r = CYL.contact(contact_half_width=np.array(3e-9))
+    assert type(r.contact_half_width) is float
+    assert CYL.contact(load=[0.5, 1.0]).load.shape == (2,)

@@ -68,6 +68,18 @@ def check_array(name: str, value: ArrayLike, *, low: float = 0.0, low_inclusive:
     return arr
 
 
+def scalar(name: str, value: ArrayLike, **limits) -> float:
+    """A single number checked as by :func:`check_array` (same keywords), as a Python float.
+
+    For the functions that take scalar parameters only; an array gets a plain message
+    instead of ``TypeError: only 0-dimensional arrays can be converted to Python scalars``.
+    """
+    arr = check_array(name, value, **limits)
+    if arr.ndim != 0:
+        raise ValueError(f"{name} must be a single number, got an array of shape {arr.shape}")
+    return float(arr)
+
+
 def positive(name: str, value: ArrayLike) -> NDArray[np.float64]:
     """Finite and strictly positive."""
     return check_array(name, value)

@@ -39,7 +39,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from . import normal as _normal
 from . import reference as _ref
-from ._validation import broadcast, check_array, positive
+from ._validation import broadcast, check_array, positive, scalar
 from .errors import CouplingWarning
 
 __all__ = [
@@ -198,13 +198,32 @@ class Cylinder:
     adhesion_range: float
     dundurs_beta: float = 0.0
 
+    def __post_init__(self) -> None:
+        # the fields as Python floats, checked (also when the class is built directly)
+        for name, limits in (("radius", {}), ("modulus", {}),
+                             ("cohesive_stress", {"low_inclusive": True}),
+                             ("adhesion_range", {}),
+                             ("dundurs_beta", {"low": -np.inf, "low_inclusive": True})):
+            object.__setattr__(self, name, scalar(name, getattr(self, name), **limits))
+        # the units of the groups must be representable: R/h, sigma0/E and E h
+        for what, v in (("radius/adhesion_range (R/h)", self.radius / self.adhesion_range),
+                        ("cohesive_stress/modulus (sigma0/E)",
+                         self.cohesive_stress / self.modulus),
+                        ("modulus*adhesion_range (E h, the unit of force per length)",
+                         self.modulus * self.adhesion_range)):
+            if not (np.isfinite(v) and (v > 0 or (v == 0 and what.startswith("cohesive")))):
+                raise ValueError(f"{what} = {v!r} is not a finite positive number: radius="
+                                 f"{self.radius!r}, modulus={self.modulus!r}, cohesive_stress="
+                                 f"{self.cohesive_stress!r}, adhesion_range="
+                                 f"{self.adhesion_range!r} are too far apart in scale")
+
     @classmethod
     def from_modulus(cls, radius: float, modulus: float, *, cohesive_stress: float | None = None,
                      adhesion_range: float | None = None, work_of_adhesion: float | None = None,
                      equilibrium_spacing: float | None = None) -> Cylinder:
         """From the composite modulus ``E`` [Pa]; adhesion as ``(sigma0, h)`` or ``(w, z0)``."""
-        R = float(positive("radius", radius))
-        E = float(positive("modulus", modulus))
+        R = scalar("radius", radius)
+        E = scalar("modulus", modulus)
         s0, h = _adhesion(cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
         return cls(R, E, s0, h, 0.0)
 
@@ -214,7 +233,11 @@ class Cylinder:
                        work_of_adhesion: float | None = None,
                        equilibrium_spacing: float | None = None) -> Cylinder:
         """From the moduli [Pa] and Poisson ratios of cylinder (1) and substrate (2)."""
-        R = float(positive("radius", radius))
+        R = scalar("radius", radius)
+        for name, v in zip(("E1", "nu1", "E2", "nu2"), _moduli(E1, nu1, E2, nu2), strict=True):
+            if v.ndim != 0:
+                raise ValueError(f"{name} must be a single number, got an array of shape "
+                                 f"{v.shape}")
         E = float(composite_modulus(E1, nu1, E2, nu2))
         beta = float(dundurs_beta(E1, nu1, E2, nu2))
         if abs(beta) > BETA_WARN:
@@ -253,8 +276,13 @@ class Cylinder:
     # problems ----------------------------------------------------------------------------
     def _wrap(self, r: _normal.NormalContact) -> CylinderContact:
         R, Eh = self.radius, self.modulus * self.adhesion_range
-        return CylinderContact(np.multiply(r.a_over_R, R), np.multiply(r.c_over_R, R),
-                               np.multiply(r.F_over_Eh, Eh), r.stable, r)
+
+        def si(v, unit):
+            v = np.multiply(v, unit)
+            return v.item() if np.ndim(v) == 0 else v
+
+        return CylinderContact(si(r.a_over_R, R), si(r.c_over_R, R), si(r.F_over_Eh, Eh),
+                               r.stable, r)
 
     def contact(self, *, contact_half_width: ArrayLike | None = None,
                 load: ArrayLike | None = None, method: str = "closed-form",
@@ -294,11 +322,12 @@ def _adhesion(s0, h, w, z0) -> tuple[float, float]:
     if by_work:
         if w is None or z0 is None:
             raise ValueError("give both work_of_adhesion and equilibrium_spacing")
-        s, hh = adhesion_from_work(w, z0)
+        s, hh = adhesion_from_work(scalar("work_of_adhesion", w),
+                                   scalar("equilibrium_spacing", z0))
         return float(s), float(hh)
     if h is None:
         raise ValueError("give adhesion_range h (> 0): it sets the length scale R/h even "
                          "without adhesion")
-    hh = float(positive("adhesion_range", h))
-    s = 0.0 if s0 is None else float(check_array("cohesive_stress", s0, low_inclusive=True))
+    hh = scalar("adhesion_range", h)
+    s = 0.0 if s0 is None else scalar("cohesive_stress", s0, low_inclusive=True)
     return s, hh

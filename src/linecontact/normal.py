@@ -35,6 +35,7 @@ from ._validation import (
     finite,
     non_negative,
     positive,
+    scalar,
     scalar_or_array,
 )
 from .errors import ConvergenceError, NoEquilibriumError
@@ -729,9 +730,9 @@ def equilibria(F_over_Eh: float, R_over_h: float, sigma0_over_E: float) -> tuple
     Eq. 14), and the non-contact state (between Eq. 14 and 0). Empty below the pull-off
     force; the caller says so.
     """
-    F = float(finite("F_over_Eh", F_over_Eh))
-    rho = float(positive("R_over_h", R_over_h))
-    s = float(non_negative("sigma0_over_E", sigma0_over_E))
+    F = scalar("F_over_Eh", F_over_Eh, low=-np.inf, low_inclusive=True)
+    rho = scalar("R_over_h", R_over_h)
+    s = scalar("sigma0_over_E", sigma0_over_E, low_inclusive=True)
     po = pull_off(rho, s)
     states: list[Equilibrium] = []
     if F >= po.F_minimum_over_Eh:
@@ -796,8 +797,8 @@ def load_curve(R_over_h: float, sigma0_over_E: float, *, a_max_over_R: float | N
     num, num_noncontact : int
         Points on the contact and the non-contact branches (>= 2 each).
     """
-    rho = float(positive("R_over_h", R_over_h))
-    s = float(non_negative("sigma0_over_E", sigma0_over_E))
+    rho = scalar("R_over_h", R_over_h)
+    s = scalar("sigma0_over_E", sigma0_over_E, low_inclusive=True)
     for name, v in (("num", num), ("num_noncontact", num_noncontact)):
         if not isinstance(v, (int, np.integer)) or v < 2:
             raise ValueError(f"{name} must be an integer >= 2, got {v!r}")
@@ -805,7 +806,7 @@ def load_curve(R_over_h: float, sigma0_over_E: float, *, a_max_over_R: float | N
     if a_max_over_R is None:
         a_h = np.sqrt(4 * 10 * abs(po.F_pulloff_over_Eh) / (np.pi * rho))
         a_max_over_R = max(3 * po.a_over_R_at_minimum, a_h, 0.02)
-    amax = float(positive("a_max_over_R", a_max_over_R))
+    amax = scalar("a_max_over_R", a_max_over_R)
     A = np.unique(np.concatenate([np.geomspace(amax * 1e-4, amax, num // 2),
                                   np.linspace(amax / num, amax, num - num // 2)]))
     if 0 < po.a_over_R_at_minimum < amax:
