@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import linecontact as lc
-from linecontact import Cylinder
+from linecontact import ConvergenceError, Cylinder
 
 X = object()  # placeholder for the argument under test
 
@@ -202,3 +202,53 @@ def test_cylinder_contact_scalar_in_python_scalars_out():
     r = CYL.contact(contact_half_width=np.array(3e-9))
     assert type(r.contact_half_width) is float
     assert CYL.contact(load=[0.5, 1.0]).load.shape == (2,)
+
+
+SOLVERS = [
+    (lc.normal_contact, (0.01, 100.0, 0.01), {"method": "collocation"}),
+    (lc.sliding_initiation, (0.01, 0.5), {"method": "collocation"}),
+    (lc.steady_rolling_coulomb, (0.3, 0.01, 0.5), {"method": "collocation"}),
+    (lc.sliding_contact, (0.03, 100.0, 2.0, 0.01), {}),
+    (lc.sliding_contact_for_load, (0.5, 100.0, 2.0, 0.01), {"method": "closed-form"}),
+]
+
+
+@pytest.mark.parametrize("option, value, message", [
+    ("raise_on_failure", "no", r"^raise_on_failure must be True or False, got 'no'$"),
+    ("raise_on_failure", None, r"^raise_on_failure must be True or False, got None$"),
+    ("tol", True, r"^tol must be in \[1e-15, 1e-2\), got True$"),
+    ("tol", np.nan, r"^tol must be in \[1e-15, 1e-2\), got nan$"),
+    ("tol", "1e-10", r"^tol must be in \[1e-15, 1e-2\), got '1e-10'$"),
+    ("n", np.array(16), r"^n must be 'auto' or an integer in \[2, \d+\], got array\(16\)$"),
+    ("n", "AUTO", r"^n must be 'auto' or an integer in \[2, \d+\], got 'AUTO'$"),
+])
+@pytest.mark.parametrize("fn, args, kwargs", SOLVERS, ids=lambda v: getattr(v, "__name__", ""))
+def test_solver_options(fn, args, kwargs, option, value, message):
+    with pytest.raises(ValueError, match=message):
+        fn(*args, **kwargs, **{option: value})
+
+
+@pytest.mark.parametrize("fn, args, kwargs", SOLVERS, ids=lambda v: getattr(v, "__name__", ""))
+def test_numpy_float_tolerance_is_accepted(fn, args, kwargs):
+    """np.float32(1e-10) was refused as 'tol must be in [1e-15, 1e-2)'."""
+    assert np.all(fn(*args, **kwargs, tol=np.float32(1e-10)).converged)
+
+
+def test_fixed_n_too_small_says_so():
+    with pytest.raises(ConvergenceError, match=r"n = 16 nodes are too few for tol; try "
+                                               r"n='auto'$"):
+        lc.sliding_initiation(0.01, 0.5, method="collocation", n=16)
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    ({"load": 1.0, "method": "x"}, r"^method must be 'closed-form' or 'collocation', got 'x'$"),
+    ({"load": 1.0, "method": "collocation"}, r"^the contact for a given load is found by the "
+                                             r"closed form"),
+    ({"contact_half_width": 3e-9, "branch": "x"}, r"^branch must be 'stable' or 'unstable'"),
+    ({"contact_half_width": 3e-9, "branch": "unstable"}, r"^branch applies to a given load "
+                                                         r"only"),
+])
+def test_cylinder_contact_options_are_never_ignored(kwargs, message):
+    """method was ignored for a load, branch for a half-width."""
+    with pytest.raises(ValueError, match=message):
+        CYL.contact(**kwargs)

@@ -110,6 +110,24 @@ def broadcast(**named: NDArray) -> list[NDArray]:
         raise ValueError(f"the array arguments must broadcast together: {shapes}") from None
 
 
+def check_solver_options(n: object, tol: object, raise_on_failure: object, *,
+                         n_max: int) -> None:
+    """The collocation options shared by the solvers: ``n``, ``tol`` and ``raise_on_failure``.
+
+    ``tol`` may be any real number type (a ``numpy.float32`` was refused as out of range);
+    ``raise_on_failure`` must be a bool (a string such as ``"no"`` was taken as true).
+    """
+    if not (isinstance(n, str) and n == "auto" or (isinstance(n, (int, np.integer))
+                                                   and not isinstance(n, bool)
+                                                   and 2 <= n <= n_max)):
+        raise ValueError(f"n must be 'auto' or an integer in [2, {n_max}], got {n!r}")
+    if not (isinstance(tol, (int, float, np.integer, np.floating))
+            and not isinstance(tol, (bool, np.bool_)) and 1e-15 <= tol < 1e-2):
+        raise ValueError(f"tol must be in [1e-15, 1e-2), got {tol!r}")
+    if not isinstance(raise_on_failure, (bool, np.bool_)):
+        raise ValueError(f"raise_on_failure must be True or False, got {raise_on_failure!r}")
+
+
 def scalar_or_array(*arrays: NDArray) -> bool:
     """True when every input is 0-d (results are then returned as scalars)."""
     return all(np.ndim(a) == 0 for a in arrays)

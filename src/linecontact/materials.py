@@ -295,6 +295,16 @@ class Cylinder:
         """
         if (contact_half_width is None) == (load is None):
             raise ValueError("give exactly one of contact_half_width or load")
+        if method not in ("closed-form", "collocation"):
+            raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
+        if branch not in ("stable", "unstable"):
+            raise ValueError(f"branch must be 'stable' or 'unstable', got {branch!r}")
+        if load is not None and method != "closed-form":
+            raise ValueError("the contact for a given load is found by the closed form: "
+                             "method='collocation' applies to contact_half_width only")
+        if contact_half_width is not None and branch != "stable":
+            raise ValueError("branch applies to a given load only: a contact half-width "
+                             "fixes the state")
         if contact_half_width is not None:
             a = positive("contact_half_width", contact_half_width)
             r = _normal.normal_contact(a / self.radius, self.R_over_h, self.sigma0_over_E,

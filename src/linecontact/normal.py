@@ -32,6 +32,7 @@ from . import reference as _ref
 from ._validation import (
     broadcast,
     check_array,
+    check_solver_options,
     finite,
     non_negative,
     positive,
@@ -429,11 +430,7 @@ def normal_contact(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: Arra
     s = non_negative("sigma0_over_E", sigma0_over_E)
     if method not in ("closed-form", "collocation"):
         raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
-    if not (n == "auto" or (isinstance(n, (int, np.integer)) and not isinstance(n, bool)
-                            and 2 <= n <= 8192)):
-        raise ValueError(f"n must be 'auto' or an integer in [2, 8192], got {n!r}")
-    if not (isinstance(tol, float | int) and 1e-15 <= tol < 1e-2):
-        raise ValueError(f"tol must be in [1e-15, 1e-2), got {tol!r}")
+    check_solver_options(n, tol, raise_on_failure, n_max=8192)
     scalar = scalar_or_array(A, rho, s)
     A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)

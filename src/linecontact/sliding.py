@@ -110,7 +110,14 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import reference as _ref
-from ._validation import broadcast, finite, non_negative, positive, scalar_or_array
+from ._validation import (
+    broadcast,
+    check_solver_options,
+    finite,
+    non_negative,
+    positive,
+    scalar_or_array,
+)
 from .errors import ConvergenceError, NoEquilibriumError
 from .normal import _SIZES, _as_output, _log_weights, _Result
 from .sie import BoundedSolution, BoundedSolver
@@ -648,14 +655,10 @@ def _check_common(R_over_h2, h1_over_h2, sigma0_over_E):
     return rho, r, s
 
 
-def _check_method(method, n, tol):
+def _check_method(method, n, tol, raise_on_failure):
     if method not in ("collocation", "closed-form"):
         raise ValueError(f"method must be 'collocation' or 'closed-form', got {method!r}")
-    if not (n == "auto" or (isinstance(n, (int, np.integer)) and not isinstance(n, bool)
-                            and 2 <= n <= 8192)):
-        raise ValueError(f"n must be 'auto' or an integer in [2, 8192], got {n!r}")
-    if not (isinstance(tol, float | int) and not isinstance(tol, bool) and 1e-15 <= tol < 1e-2):
-        raise ValueError(f"tol must be in [1e-15, 1e-2), got {tol!r}")
+    check_solver_options(n, tol, raise_on_failure, n_max=8192)
 
 
 def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
@@ -748,7 +751,7 @@ def sliding_contact(a_over_R: ArrayLike, R_over_h2: ArrayLike, h1_over_h2: Array
     rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
     tau = (np.full((), np.nan) if tau0_over_E is None
            else non_negative("tau0_over_E", tau0_over_E))
-    _check_method(method, n, tol)
+    _check_method(method, n, tol, raise_on_failure)
     scalar = scalar_or_array(A, rho, r, s, tau)
     A, rho, r, s, tau = broadcast(a_over_R=A, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s,
                                   tau0_over_E=tau)
@@ -943,7 +946,7 @@ def sliding_contact_for_load(F_over_Eh2: ArrayLike, R_over_h2: ArrayLike,
     rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
     tau = (np.full((), np.nan) if tau0_over_E is None
            else non_negative("tau0_over_E", tau0_over_E))
-    _check_method(method, n, tol)
+    _check_method(method, n, tol, raise_on_failure)
     scalar = scalar_or_array(F, rho, r, s, tau)
     F, rho, r, s, tau = broadcast(F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s,
                                   tau0_over_E=tau)

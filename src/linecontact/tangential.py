@@ -94,7 +94,14 @@ import numpy as np
 import scipy.special
 from numpy.typing import ArrayLike, NDArray
 
-from ._validation import broadcast, check_array, non_negative, positive, scalar_or_array
+from ._validation import (
+    broadcast,
+    check_array,
+    check_solver_options,
+    non_negative,
+    positive,
+    scalar_or_array,
+)
 from .errors import ConvergenceError, NoEquilibriumError
 from .normal import _as_output, _Result
 from .sie import BoundedSolver, _log_moment_vector
@@ -132,14 +139,10 @@ _SLIDING = "sliding"
 # input checks
 
 
-def _check_options(method, n, tol, on_sliding):
+def _check_options(method, n, tol, raise_on_failure, on_sliding):
     if method not in ("closed-form", "collocation"):
         raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
-    if not (n == "auto" or (isinstance(n, (int, np.integer)) and not isinstance(n, bool)
-                            and 2 <= n <= SIZES[-1])):
-        raise ValueError(f"n must be 'auto' or an integer in [2, {SIZES[-1]}], got {n!r}")
-    if not (isinstance(tol, float | int) and not isinstance(tol, bool) and 1e-15 <= tol < 1e-2):
-        raise ValueError(f"tol must be in [1e-15, 1e-2), got {tol!r}")
+    check_solver_options(n, tol, raise_on_failure, n_max=SIZES[-1])
     if on_sliding not in ("report", "raise"):
         raise ValueError(f"on_sliding must be 'report' or 'raise', got {on_sliding!r}")
 
@@ -415,7 +418,7 @@ def _solve_points(delta, active, method, n, tol, kernel, rate, T_closed, dT_clos
     return out
 
 
-def _raise_unconverged(name, converged, labels: dict, out) -> None:
+def _raise_unconverged(name, converged, labels: dict, out, n) -> None:
     conv = np.asarray(converged).reshape(-1)
     if conv.all():
         return
@@ -424,8 +427,10 @@ def _raise_unconverged(name, converged, labels: dict, out) -> None:
     raise ConvergenceError(
         f"{name} (collocation) did not converge at {where} (error estimate "
         f"{out['tail'][i]:.3g}, stick residual {out['stick'][i]:.3g}, force residual "
-        f"{out['force'][i]:.3g}, n = {out['n'][i]}): the stick zone is too close to its "
-        f"limit for n <= {SIZES[-1]}; use method='closed-form'")
+        f"{out['force'][i]:.3g}, n = {out['n'][i]}): " + (
+            f"the stick zone is too close to its limit for n <= {SIZES[-1]}; use "
+            f"method='closed-form'" if n == "auto" else
+            f"n = {out['n'][i]} nodes are too few for tol; try n='auto'"))
 
 
 def _raise_sliding(name, sliding, T_name, T, T_full) -> None:
@@ -799,7 +804,7 @@ def _run(pb: _Problem, d_over_a, load, load_name, method, n, tol, raise_on_failu
          on_sliding, params: dict):
     """Validate the state variable, solve, return (fields, diagnostics, scalar-flag parts)."""
     _one_of(d_over_a, load, load_name)
-    _check_options(method, n, tol, on_sliding)
+    _check_options(method, n, tol, raise_on_failure, on_sliding)
     names = list(params)
     arrays = list(params.values())
     if d_over_a is not None:
@@ -855,7 +860,7 @@ def _run(pb: _Problem, d_over_a, load, load_name, method, n, tol, raise_on_failu
         if raise_on_failure:
             labels = dict(zip(names, arrays, strict=True))
             labels[given[0]] = g
-            _raise_unconverged(pb.name, converged, labels, out)
+            _raise_unconverged(pb.name, converged, labels, out, n)
     diag = dict(n_collocation=out["n"].reshape(shape), residual_stick=out["stick"].reshape(shape),
                 residual_force=out["force"].reshape(shape),
                 residual_consistency=out["cons"].reshape(shape),
