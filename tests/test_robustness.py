@@ -252,3 +252,75 @@ def test_cylinder_contact_options_are_never_ignored(kwargs, message):
     """method was ignored for a load, branch for a half-width."""
     with pytest.raises(ValueError, match=message):
         CYL.contact(**kwargs)
+
+
+# --- huge and tiny parameters: correct, or refused; never an overflow or a silent zero ---
+
+def test_zero_width_load_has_no_overflow():
+    """s^2 overflowed for sigma0/E = 1e300 and Eq. 14 came out as -0.0."""
+    limit = -np.pi / (2 * np.log(2.0))  # sigma0/E -> inf at fixed R/h
+    assert lc.zero_width_load(100.0, 1e300) == pytest.approx(limit, rel=1e-14)
+    assert lc.zero_width_load(1e300, 0.01) == pytest.approx(limit, rel=1e-14)
+    assert lc.zero_width_load(100.0, 1e-300) == pytest.approx(-8 * np.log(2) / np.pi * 100.0
+                                                              * 1e-300 * (1e-300 - np.sqrt(
+                                                                  (np.pi / np.log(2)) ** 2
+                                                                  / 800)), rel=1e-12)
+
+
+def test_non_contact_has_no_overflow():
+    limit = -(1 - 0.5) * np.pi / (2 * np.log(2.0))  # F at g0/h = 0.5 as sigma0/E -> inf
+    assert lc.non_contact(0.5, 100.0, 1e300).F_over_Eh == pytest.approx(limit, rel=1e-14)
+
+
+@pytest.mark.parametrize("fn, args, message", [
+    (lc.hertz_load, (1e300, 100.0), r"^the Hertz load is beyond the floating-point range at "
+                                    r"a_over_R=1e\+300, R_over_h=100.0$"),
+    (lc.jkr_load, (1e300, 100.0, 0.01), r"^the JKR load is beyond the floating-point range"),
+    (lc.kappa, (1e300, 1e300), r"^kappa is beyond the floating-point range"),
+    (lc.adhesion_from_work, (1e300, 3e-10), r"^work_of_adhesion=1e\+300 and equilibrium_spacing"
+                                            r"=3e-10 give sigma0 = .* = inf \[Pa\]"),
+    (lc.adhesion_from_work, (1e-300, 1e300), r"give sigma0 = .* = 0.0 \[Pa\], not a finite "
+                                             r"positive number$"),
+])
+def test_results_beyond_the_floating_point_range_are_refused(fn, args, message):
+    with pytest.raises(ValueError, match=message):
+        fn(*args)
+
+
+_KAPPA = r"kappa = \(4/pi\) sigma0_over_E sqrt\(2 {}\) must be <= 1e\+12 \(the range of the " \
+         r"solvers\), got kappa="
+
+
+@pytest.mark.parametrize("fn, args, rho_name", [
+    (lc.pull_off, (100.0, 1e300), "R_over_h"),
+    (lc.pull_off, (1e300, 0.01), "R_over_h"),
+    (lc.normal_contact, (0.01, 100.0, 1e20), "R_over_h"),
+    (lc.contact_for_load, (0.0, 1e40, 0.1), "R_over_h"),
+    (lc.equilibria, (-1.0, 100.0, 1e300), "R_over_h"),
+    (lc.load_curve, (1e300, 0.01), "R_over_h"),
+    (lc.sliding_pull_off, (100.0, 2.0, 1e300), "R_over_h2"),
+    (lc.sliding_contact, (0.03, 100.0, 2.0, 1e20), "R_over_h2"),
+    (lc.sliding_contact_for_load, (0.5, 1e300, 2.0, 0.01), "R_over_h2"),
+])
+def test_kappa_beyond_the_solvers_is_refused(fn, args, rho_name):
+    """pull_off(100, 1e300) gave F = -0.0 with overflow warnings; contact_for_load at
+    kappa ~ 1e20 a load of -3e12 flagged converged."""
+    with pytest.raises(ValueError, match="^" + _KAPPA.format(rho_name)):
+        fn(*args)
+
+
+def test_kappa_at_the_limit_is_solved():
+    s = 1e12 * np.pi / 4 / np.sqrt(2 * 100.0)
+    po = lc.pull_off(100.0, s)
+    assert po.F_pulloff_over_Eh <= po.F_zero_width_over_Eh < 0
+    nc = lc.normal_contact(po.a_over_R_at_minimum, 100.0, s)
+    assert nc.F_over_Eh == pytest.approx(po.F_minimum_over_Eh, rel=1e-10)
+
+
+def test_contact_for_load_outside_its_bracket_raises():
+    """F/(Eh) = 1e300 came back as a contact carrying 2.4e36, flagged converged."""
+    with pytest.raises(ConvergenceError, match=r"^contact_for_load did not converge at "
+                                               r"F_over_Eh=1e\+300, R_over_h=100.0, "
+                                               r"sigma0_over_E=0.01: the closest contact "
+                                               r"carries F_over_Eh=2.35"):
+        lc.contact_for_load(1e300, 100.0, 0.01)

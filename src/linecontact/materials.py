@@ -112,7 +112,14 @@ def adhesion_from_work(work_of_adhesion: ArrayLike, equilibrium_spacing: ArrayLi
     w = positive("work_of_adhesion", work_of_adhesion)
     z0 = positive("equilibrium_spacing", equilibrium_spacing)
     w, z0 = broadcast(work_of_adhesion=w, equilibrium_spacing=z0)
-    s0 = 16 * w / (9 * np.sqrt(3) * z0)
+    with np.errstate(over="ignore", under="ignore"):
+        s0 = 16 * w / (9 * np.sqrt(3) * z0)
+    bad = ~(np.isfinite(s0) & (s0 > 0))
+    if np.any(bad):
+        i = int(np.flatnonzero(bad.reshape(-1))[0])
+        raise ValueError(f"work_of_adhesion={float(w.reshape(-1)[i])!r} and equilibrium_spacing="
+                         f"{float(z0.reshape(-1)[i])!r} give sigma0 = 16 w/(9 sqrt(3) z0) = "
+                         f"{float(s0.reshape(-1)[i])!r} [Pa], not a finite positive number")
     h = w / s0
     return (s0.item(), h.item()) if s0.ndim == 0 else (s0, h)
 

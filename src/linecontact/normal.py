@@ -61,6 +61,10 @@ __all__ = [
 #: width: it lies at a contact width exponentially small in 1/kappa (see docs/derivations.md).
 ZERO_WIDTH_RTOL = 1e-9
 
+#: Relative load residual (over the larger of |F|, |Eq. 14| and the Hertz term) that
+#: contact_for_load must meet; it reaches ~1e-15 wherever the solver's bracket holds the state.
+_LOAD_RTOL = 1e-9
+
 _SIZES = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, 768, 1024, 1536, 2048)
 
 
@@ -400,7 +404,10 @@ def normal_contact(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: Arra
     R_over_h : array_like
         Radius over the range of the adhesive stress, ``> 0``.
     sigma0_over_E : array_like
-        Adhesive (Dugdale) stress over the composite modulus, ``>= 0`` (0 gives Hertz).
+        Adhesive (Dugdale) stress over the composite modulus, ``>= 0`` (0 gives Hertz);
+        ``kappa = (4/pi) sigma0_over_E sqrt(2 R_over_h)`` at most
+        :data:`~linecontact.reference.KAPPA_MAX` (1e12) here and in every normal and sliding
+        solver.
     method : {"closed-form", "collocation"}
         Solver (see the module docstring).
     n : int or "auto"
@@ -433,6 +440,7 @@ def normal_contact(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: Arra
     check_solver_options(n, tol, raise_on_failure, n_max=8192)
     scalar = scalar_or_array(A, rho, s)
     A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
+    _ref._check_kappa(rho, s)
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     if method == "closed-form":
         u, C, F, res, stable = _closed_form(A, rho, s)
@@ -568,6 +576,7 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     s = non_negative("sigma0_over_E", sigma0_over_E)
     scalar = scalar_or_array(rho, s)
     rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
+    _ref._check_kappa(rho, s)
     d = _pulloff_arrays(rho.astype(float), s.astype(float))
     d.pop("us")
     lam = 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
@@ -621,6 +630,7 @@ def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: A
     scalar = scalar_or_array(F, rho, s)
     F, rho, s = (np.asarray(v, float) for v in broadcast(F_over_Eh=F, R_over_h=rho,
                                                           sigma0_over_E=s))
+    _ref._check_kappa(rho, s)
     d = _pulloff_arrays(rho, s)
     Fmin, F0, us, kap = d["F_minimum_over_Eh"], d["F_zero_width_over_Eh"], d["us"], d["kappa"]
     if branch == "stable":
@@ -649,10 +659,18 @@ def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: A
     A, C, Fc, stable = _closed_form_from_u(u, kap, rho, us)
     scale = np.maximum.reduce([np.abs(F), np.abs(F0), np.pi / 4 * A * A * rho])
     res = np.abs(Fc - F) / np.maximum(scale, 1e-300)
+    converged = np.isfinite(Fc) & (res <= _LOAD_RTOL)
+    if not np.all(converged):
+        i = np.flatnonzero(~converged.reshape(-1))[0]
+        raise ConvergenceError(
+            f"contact_for_load did not converge at F_over_Eh={float(F.reshape(-1)[i])!r}, "
+            f"R_over_h={float(rho.reshape(-1)[i])!r}, sigma0_over_E="
+            f"{float(s.reshape(-1)[i])!r}: the closest contact carries F_over_Eh="
+            f"{float(Fc.reshape(-1)[i])!r} (the load is outside the range of the solver)")
     z = np.zeros(F.shape)
     vals = dict(a_over_R=A, c_over_R=C, F_over_Eh=Fc, R_over_h=rho, sigma0_over_E=s,
                 n_collocation=z.astype(int), residual_separation=z, residual_consistency=z,
-                error_estimate=res, converged=np.isfinite(Fc), stable=stable)
+                error_estimate=res, converged=converged, stable=stable)
     vals = {k: _as_output(np.asarray(v), scalar) for k, v in vals.items()}
     return NormalContact(method="closed-form", **vals)
 
@@ -698,7 +716,7 @@ def non_contact(central_gap_over_h: ArrayLike, R_over_h: ArrayLike,
                                                           sigma0_over_E=s))
     k = 4 * _ref.LN2 * s / np.pi
     rhs = 2 * (1 - g) / rho
-    C = rhs / (k + np.sqrt(k * k + rhs))
+    C = rhs / (k + np.hypot(k, np.sqrt(rhs)))  # no overflow of k^2
     F = -2 * s * rho * C
     vals = dict(central_gap_over_h=g, c_over_R=C, F_over_Eh=F, R_over_h=rho, sigma0_over_E=s,
                 stable=np.zeros(g.shape, bool))

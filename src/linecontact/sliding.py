@@ -755,6 +755,7 @@ def sliding_contact(a_over_R: ArrayLike, R_over_h2: ArrayLike, h1_over_h2: Array
     scalar = scalar_or_array(A, rho, r, s, tau)
     A, rho, r, s, tau = broadcast(a_over_R=A, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s,
                                   tau0_over_E=tau)
+    _ref._check_kappa(rho, s, "R_over_h2")
     shape = A.shape
     A, rho, r, s, tau = (np.ascontiguousarray(v, dtype=float).reshape(-1)
                          for v in (A, rho, r, s, tau))
@@ -889,6 +890,7 @@ def sliding_pull_off(R_over_h2: ArrayLike, h1_over_h2: ArrayLike,
     s = positive("sigma0_over_E", s)
     scalar = scalar_or_array(rho, r, s)
     rho, r, s = broadcast(R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s)
+    _ref._check_kappa(rho, s, "R_over_h2")
     shape = rho.shape
     rho, r, s = (np.ascontiguousarray(v, float).reshape(-1) for v in (rho, r, s))
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
@@ -950,6 +952,7 @@ def sliding_contact_for_load(F_over_Eh2: ArrayLike, R_over_h2: ArrayLike,
     scalar = scalar_or_array(F, rho, r, s, tau)
     F, rho, r, s, tau = broadcast(F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s,
                                   tau0_over_E=tau)
+    _ref._check_kappa(rho, s, "R_over_h2")
     shape = F.shape
     F, rho, r, s, tau = (np.ascontiguousarray(v, dtype=float).reshape(-1)
                          for v in (F, rho, r, s, tau))
