@@ -324,3 +324,35 @@ def test_contact_for_load_outside_its_bracket_raises():
                                                r"sigma0_over_E=0.01: the closest contact "
                                                r"carries F_over_Eh=2.35"):
         lc.contact_for_load(1e300, 100.0, 0.01)
+
+
+# --- no RuntimeWarning escapes for any positive input (pytest turns them into errors) ---
+
+def test_tiny_contact_width_closed_form_is_silent():
+    """a/R = 1e-300 gave the right load (Eq. 14) with a divide-by-zero RuntimeWarning."""
+    r = lc.normal_contact(1e-300, 100.0, 0.01)
+    assert r.F_over_Eh == pytest.approx(lc.zero_width_load(100.0, 0.01), rel=1e-12)
+
+
+@pytest.mark.parametrize("a_over_R", [1e-300, 1e300])
+@pytest.mark.parametrize("method", ["closed-form", "collocation"])
+@pytest.mark.parametrize("fn, args", [(lc.normal_contact, (100.0, 0.01)),
+                                      (lc.sliding_contact, (100.0, 2.0, 0.01))])
+def test_widths_outside_the_solvers_range_raise_convergence_error_only(fn, args, method,
+                                                                        a_over_R):
+    """These overflowed on the way (dozens of RuntimeWarnings) before the ConvergenceError;
+    normal_contact's hint called the zone 'too thin (c/a = inf)'."""
+    if fn is lc.normal_contact and method == "closed-form" and a_over_R < 1:
+        pytest.skip("solved (test above)")
+    with pytest.raises(ConvergenceError, match=r"a_over_R=1e[+-]300.*(outside the solver's "
+                                               r"range)"):
+        fn(a_over_R, *args, method=method)
+    r = fn(a_over_R, *args, method=method, raise_on_failure=False)
+    assert not np.any(r.converged)
+
+
+@pytest.mark.parametrize("fn", [lc.sliding_initiation, lc.steady_rolling])
+def test_newton_on_the_stick_zone_is_silent_at_its_end(fn):
+    """A load of 1e-300 puts d at a, where dT/dd is infinite: divide-by-zero warning."""
+    with pytest.raises(ConvergenceError, match=r"use method='closed-form'$"):
+        fn(0.01, T_over_Ea=1e-300, method="collocation")

@@ -442,25 +442,32 @@ def normal_contact(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: Arra
     A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
     _ref._check_kappa(rho, s)
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
-    if method == "closed-form":
-        u, C, F, res, stable = _closed_form(A, rho, s)
-        ncol = np.zeros(A.shape, dtype=int)
-        cons = np.zeros(A.shape)
-        err = np.zeros(A.shape)
-        converged = res < 1e-12
-    else:
-        r = _collocation(A, rho, s, n, tol)
-        u, C, F = r["u"], r["C"], r["F"]
-        res, cons, err, ncol = r["res"], r["cons"], r["tail"], r["n"]
-        converged = r["converged"]
-        # residual R is scaled so that 1 <-> h; it is the separation residual over h
-        stable = _ref._branch_point(u, kap)["dphi"] < 0
+    # a contact half-width far outside the solvers' range (a/R ~ 1e-200 or 1e20) overflows
+    # on the way; the residual and finiteness checks below turn that into non-convergence
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        if method == "closed-form":
+            u, C, F, res, stable = _closed_form(A, rho, s)
+            ncol = np.zeros(A.shape, dtype=int)
+            cons = np.zeros(A.shape)
+            err = np.zeros(A.shape)
+            converged = (res < 1e-12) & np.isfinite(C) & np.isfinite(F)
+        else:
+            r = _collocation(A, rho, s, n, tol)
+            u, C, F = r["u"], r["C"], r["F"]
+            res, cons, err, ncol = r["res"], r["cons"], r["tail"], r["n"]
+            converged = r["converged"] & np.isfinite(C)
+            # residual R is scaled so that 1 <-> h; it is the separation residual over h
+            stable = _ref._branch_point(u, kap)["dphi"] < 0
+        ca = np.reshape(C / A, -1)
     if raise_on_failure and not np.all(converged):
         i = np.flatnonzero(~np.asarray(converged).reshape(-1))[0]
         nn = int(np.reshape(ncol, -1)[i])
-        hint = (f"the adhesive zone is too thin (c/a = {np.reshape(C / A, -1)[i]:.6g}) for "
-                f"n <= {_SIZES[-1]} nodes" if n == "auto" else
-                f"n = {nn} nodes are too few for tol = {tol:g}; try n='auto'")
+        if not (np.isfinite(ca[i]) and ca[i] >= 1):
+            hint = "the contact half-width is outside the solver's range"
+        elif n == "auto":
+            hint = f"the adhesive zone is too thin (c/a = {ca[i]:.6g}) for n <= {_SIZES[-1]} nodes"
+        else:
+            hint = f"n = {nn} nodes are too few for tol = {tol:g}; try n='auto'"
         raise ConvergenceError(
             f"normal_contact ({method}) did not converge at a_over_R="
             f"{float(A.reshape(-1)[i])!r}, R_over_h={float(rho.reshape(-1)[i])!r}, "

@@ -267,8 +267,9 @@ def _u_of_abar(abar: NDArray, kap: NDArray, *, maxiter: int = 60) -> tuple[NDArr
     X_inf = 2.0 / (kap * LN2 + np.sqrt(kap * kap * LN2 * LN2 + 4))
     u_large = np.log(np.maximum(2 * X_inf / abar, 1.0 + 1e-12))
     # small u: (2/3) abar^2 u^3 + kappa abar u^2 / 2 = 1  -> take the larger of the two roots
-    u_small = np.minimum((1.5 / abar ** 2) ** (1 / 3),
-                         np.sqrt(2.0 / np.maximum(kap * abar, 1e-300)))
+    with np.errstate(over="ignore", divide="ignore"):  # abar**2 under/overflows at the ends
+        u_small = np.minimum((1.5 / abar ** 2) ** (1 / 3),
+                             np.sqrt(2.0 / np.maximum(kap * abar, 1e-300)))
     u0 = np.clip(np.where(u_large > 1.0, u_large, u_small), 1e-9, 700.0)
     w = np.log(u0)
     it = np.zeros(abar.shape, dtype=int)

@@ -400,7 +400,8 @@ def _solve_points(delta, active, method, n, tol, kernel, rate, T_closed, dT_clos
             if T_target is None:
                 break
             err = r["T"] - T_target[idx]
-            slope = dT_closed(d)
+            with np.errstate(divide="ignore", invalid="ignore"):  # infinite slope at d = a
+                slope = dT_closed(d)
             ok = np.abs(err) <= _FORCE_TOL * T_full
             if ok.all():
                 break
