@@ -356,3 +356,71 @@ def test_newton_on_the_stick_zone_is_silent_at_its_end(fn):
     """A load of 1e-300 puts d at a, where dT/dd is infinite: divide-by-zero warning."""
     with pytest.raises(ConvergenceError, match=r"use method='closed-form'$"):
         fn(0.01, T_over_Ea=1e-300, method="collocation")
+
+
+# --- the distribution methods: positions checked, one shape rule, no overflow ---
+
+_R = {
+    "normal/collocation": lambda: lc.normal_contact(0.01, 100.0, 0.01, method="collocation"),
+    "normal/vector": lambda: lc.normal_contact([0.01, 0.02], 100.0, 0.01),
+    "initiation/collocation": lambda: lc.sliding_initiation(0.01, 0.5, method="collocation"),
+    "rolling/vector": lambda: lc.steady_rolling(0.01, [0.2, 0.5], method="collocation"),
+    "cattaneo-mindlin": lambda: lc.sliding_initiation_coulomb(0.3, 0.01, 0.5),
+    "carter": lambda: lc.steady_rolling_coulomb(0.3, 0.01, [0.2, 0.5]),
+    "sliding/vector": lambda: lc.sliding_contact([0.03, 0.05], 100.0, 2.0, 0.01,
+                                                 method="closed-form"),
+}
+_METHODS = [(k, m) for k, m in [("normal/collocation", "pressure"), ("normal/vector", "pressure"),
+                                ("initiation/collocation", "traction"),
+                                ("initiation/collocation", "slip"),
+                                ("rolling/vector", "traction"), ("cattaneo-mindlin", "traction"),
+                                ("carter", "traction"), ("sliding/vector", "pressure"),
+                                ("sliding/vector", "gap")]]
+
+
+def _method(key, name):
+    r = _R[key]()
+    return r, getattr(r, name), "x_over_a" if name in ("traction", "slip") else "x_over_R"
+
+
+@pytest.mark.parametrize("key, name", _METHODS)
+@pytest.mark.parametrize("x, message", [
+    (np.nan, "must be a finite number, got nan$"),
+    (np.inf, "must be a finite number, got inf$"),
+    (None, "must be a real number or an array of them, got None$"),
+    (True, "must be a real number or an array of them, got True$"),
+    ([], "must not be empty$"),
+    (np.zeros((1, 1, 3)), r"must have shape \(m,\) or broadcast to the points' shape plus one "
+                          r"axis, \(.*\), got shape \(1, 1, 3\)$"),
+])
+def test_distribution_positions_are_checked(key, name, x, message):
+    """NaN positions gave 0 or nan silently; a 0-d position gave TypeError (collocation
+    pressure) or 'cannot reshape array of size 4 into shape (2,)' (gap)."""
+    _, method, xname = _method(key, name)
+    with pytest.raises(ValueError, match=f"^{xname} {message}"):
+        method(x)
+
+
+@pytest.mark.parametrize("key, name", _METHODS)
+def test_distribution_of_one_position(key, name):
+    """A single position is m = 1: shape points.shape + (1,), as for the closed forms."""
+    r, method, _ = _method(key, name)
+    points = np.shape(getattr(r, "a_over_R", None) if name in ("pressure", "gap")
+                      else r.d_over_a)
+    one = method(0.001)
+    assert one.shape == points + (1,)
+    np.testing.assert_array_equal(one, method(np.array([0.001])))
+
+
+@pytest.mark.parametrize("key, name", [(k, m) for k, m in _METHODS if m != "gap"])
+def test_distribution_far_outside_the_contact_is_silent(key, name):
+    """x*x overflowed (RuntimeWarning) at |x| = 1e300; the value there is 0 (nan for slip)."""
+    _, method, _ = _method(key, name)
+    v = method(np.array([-1e300, 1e300]))
+    assert np.all((v == 0) | np.isnan(v))
+
+
+def test_gap_beyond_the_floating_point_range_is_refused():
+    with pytest.raises(ValueError, match=r"^the gap is beyond the floating-point range at "
+                                         r"x_over_R=1e\+300$"):
+        _R["sliding/vector"]().gap(np.array([0.5, 1e300]))

@@ -68,6 +68,24 @@ def check_array(name: str, value: ArrayLike, *, low: float = 0.0, low_inclusive:
     return arr
 
 
+def positions(name: str, value: ArrayLike, points_shape: tuple) -> NDArray[np.float64]:
+    """Finite positions for the distribution methods of a result with ``points_shape``.
+
+    The results have shape ``points_shape + (m,)``: ``value`` is one position (``m = 1``),
+    ``m`` of them, or an array broadcasting to ``points_shape + (m,)`` (one row per point).
+    """
+    x = np.atleast_1d(check_array(name, value, low=-np.inf, low_inclusive=True))
+    want = tuple(points_shape) + x.shape[-1:]
+    try:
+        ok = x.ndim <= len(want) and np.broadcast_shapes(want, x.shape) == want
+    except ValueError:
+        ok = False
+    if not ok:
+        raise ValueError(f"{name} must have shape (m,) or broadcast to the points' shape plus "
+                         f"one axis, {want}, got shape {x.shape}")
+    return x
+
+
 def scalar(name: str, value: ArrayLike, **limits) -> float:
     """A single number checked as by :func:`check_array` (same keywords), as a Python float.
 

@@ -35,6 +35,7 @@ from ._validation import (
     check_solver_options,
     finite,
     non_negative,
+    positions,
     positive,
     scalar,
     scalar_or_array,
@@ -160,13 +161,13 @@ class NormalContact(_Result):
         axis); the result has shape ``points.shape + (m,)``. Inside the contact it is the
         solution of the method used; ``-sigma0/E`` in the adhesive zones; zero beyond.
         """
-        x = np.asarray(x_over_R, dtype=float)
+        x = positions("x_over_R", x_over_R, np.shape(self.a_over_R))
         A = np.asarray(self.a_over_R, dtype=float)[..., None]
         C = np.asarray(self.c_over_R, dtype=float)[..., None]
         s = np.asarray(self.sigma0_over_E, dtype=float)[..., None]
         ax = np.abs(x)
         if self.method == "closed-form":
-            with np.errstate(divide="ignore", invalid="ignore"):
+            with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # x*x, |x| >> a
                 inner = 0.5 * np.sqrt(np.clip(A * A - x * x, 0, None)) - (2 * s / np.pi) * \
                     np.arctan(np.sqrt((C * C - A * A) / np.clip(A * A - x * x, 1e-300, None)))
         else:

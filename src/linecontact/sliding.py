@@ -115,6 +115,7 @@ from ._validation import (
     check_solver_options,
     finite,
     non_negative,
+    positions,
     positive,
     scalar_or_array,
 )
@@ -245,7 +246,7 @@ class SlidingContact(_Result):
         ``c1``, ``c2`` (the collocation solution is the same function to its tolerance);
         ``-sigma0/E`` in the adhesive zones; zero beyond.
         """
-        x = np.asarray(x_over_R, dtype=float)
+        x = positions("x_over_R", x_over_R, np.shape(self.a_over_R))
         A = np.asarray(self.a_over_R, dtype=float)[..., None]
         C1 = np.asarray(self.c1_over_R, dtype=float)[..., None]
         C2 = np.asarray(self.c2_over_R, dtype=float)[..., None]
@@ -269,7 +270,7 @@ class SlidingContact(_Result):
         (integrated by product integration). ``x_over_R`` has shape ``(m,)`` (or one row
         per point); the result has shape ``points.shape + (m,)``.
         """
-        x = np.asarray(x_over_R, dtype=float)
+        x = positions("x_over_R", x_over_R, np.shape(self.a_over_R))
         shape = np.shape(self.a_over_R)
         A, s, b = self._coefficients()
         n = b.shape[-1]
@@ -290,10 +291,15 @@ class SlidingContact(_Result):
         m1 = (C1 / A)[:, None]
         m2 = (C2 / A)[:, None]
         strip = _log_strip(t, m1, m2) - _log_strip(x0, m1, m2)
-        elastic = (2 / np.pi) * A[:, None] * (lm - s[:, None] * strip)  # over R
-        geom = ((xs - ecc[:, None]) ** 2 - (x0 * A[:, None] - ecc[:, None]) ** 2) / 2
-        g = rho[:, None] * (geom - elastic)
+        with np.errstate(over="ignore", invalid="ignore"):
+            elastic = (2 / np.pi) * A[:, None] * (lm - s[:, None] * strip)  # over R
+            geom = ((xs - ecc[:, None]) ** 2 - (x0 * A[:, None] - ecc[:, None]) ** 2) / 2
+            g = rho[:, None] * (geom - elastic)
         g = np.where(np.abs(t) < 1, 0.0, g)
+        if not np.all(np.isfinite(g)):
+            i = np.unravel_index(int(np.flatnonzero(~np.isfinite(g))[0]), g.shape)
+            raise ValueError(f"the gap is beyond the floating-point range at x_over_R="
+                             f"{float(xs[i])!r}")
         return g.reshape(shape + x.shape[-1:])
 
 

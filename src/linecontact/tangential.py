@@ -99,6 +99,7 @@ from ._validation import (
     check_array,
     check_solver_options,
     non_negative,
+    positions,
     positive,
     scalar_or_array,
 )
@@ -471,7 +472,7 @@ class _Tangential(_Result):
     converged: NDArray | bool
 
     def _points(self, x_over_a):
-        x = np.asarray(x_over_a, dtype=float)
+        x = positions("x_over_a", x_over_a, np.shape(self.d_over_a))
         dlt = np.asarray(self.d_over_a, dtype=float)[..., None]
         st = np.asarray(self.state)[..., None]
         return x, dlt, st
@@ -703,9 +704,10 @@ error_estimate, converged
         x, dlt, st = self._points(x_over_a)
         p0 = np.asarray(self.a_over_R, dtype=float)[..., None] / 2
         mu = np.asarray(self.mu, dtype=float)[..., None]
-        hertz = np.sqrt(np.clip(1 - x * x, 0.0, None))
+        xq = np.clip(x, -2.0, 2.0)  # the terms vanish beyond |x| = a; no overflow of x*x
+        hertz = np.sqrt(np.clip(1 - xq * xq, 0.0, None))
         if self.method == "closed-form":
-            corr = np.sqrt(np.clip(dlt * dlt - x * x, 0.0, None))
+            corr = np.sqrt(np.clip(dlt * dlt - xq * xq, 0.0, None))
         else:
             b = self._coefficients(lambda d, n: _solver(n).solve(
                 -d[:, None] * _solver(n).collocation_unit, values=False).coefficients)
@@ -756,11 +758,12 @@ error_estimate, converged
         x, dlt, st = self._points(x_over_a)
         p0 = np.asarray(self.a_over_R, dtype=float)[..., None] / 2
         mu = np.asarray(self.mu, dtype=float)[..., None]
-        hertz = np.sqrt(np.clip(1 - x * x, 0.0, None))
+        xq = np.clip(x, -2.0, 2.0)  # the terms vanish beyond |x| = a; no overflow of x*x
+        hertz = np.sqrt(np.clip(1 - xq * xq, 0.0, None))
         m = (1 + dlt) / 2
         h = (1 - dlt) / 2
         if self.method == "closed-form":
-            corr = np.sqrt(np.clip(h * h - (x - m) ** 2, 0.0, None))
+            corr = np.sqrt(np.clip(h * h - (xq - m) ** 2, 0.0, None))
         else:
             def coef(d, n):
                 mm, hh = (1 + d) / 2, (1 - d) / 2
