@@ -424,3 +424,20 @@ def test_gap_beyond_the_floating_point_range_is_refused():
     with pytest.raises(ValueError, match=r"^the gap is beyond the floating-point range at "
                                          r"x_over_R=1e\+300$"):
         _R["sliding/vector"]().gap(np.array([0.5, 1e300]))
+
+
+@pytest.mark.parametrize("ratio, expected", [
+    (1e-300, lc.pull_off(100.0, 0.01).F_pulloff_over_Eh / 2),  # the leading edge alone
+    (1e12, -141421.40319686857),  # the trailing zone dominates: ~ sqrt(h1/h2)
+])
+def test_sliding_pull_off_far_from_equal_ranges_is_silent(ratio, expected):
+    """h1/h2 = 1e-300 or 1e12 overflowed through RuntimeWarnings to a finite answer."""
+    po = lc.sliding_pull_off(100.0, ratio, 0.01)
+    assert po.F_pulloff_over_Eh2 == pytest.approx(expected, rel=1e-6)
+
+
+def test_sliding_contact_for_load_outside_the_range_raises_only():
+    """Overflow warnings in the search came before the ConvergenceError."""
+    with pytest.raises(ConvergenceError, match=r"^sliding_contact_for_load \(closed-form\) "
+                                               r"did not converge at a_over_R="):
+        lc.sliding_contact_for_load(0.5, 100.0, 1e-300, 0.01, method="closed-form")

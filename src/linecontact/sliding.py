@@ -903,11 +903,21 @@ def sliding_pull_off(R_over_h2: ArrayLike, h1_over_h2: ArrayLike,
     shape = rho.shape
     rho, r, s = (np.ascontiguousarray(v, float).reshape(-1) for v in (rho, r, s))
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
-    d = _pulloff_flat(kap, r)
-    sq = np.sqrt(2 / rho)
-    F0 = (np.pi / 2) * d["phi0"]
-    Fmin = (np.pi / 2) * d["phi_min"]
-    a_min = np.where(d["snap"], np.exp(d["lab_min"]) * sq, 0.0)
+    # h1/h2 far from 1 (1e-300, 1e12) overflows on the way to a finite answer; a result that
+    # is not finite is reported below
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        d = _pulloff_flat(kap, r)
+        sq = np.sqrt(2 / rho)
+        F0 = (np.pi / 2) * d["phi0"]
+        Fmin = (np.pi / 2) * d["phi_min"]
+        a_min = np.where(d["snap"], np.exp(d["lab_min"]) * sq, 0.0)
+    bad = ~(np.isfinite(F0) & np.isfinite(Fmin) & np.isfinite(a_min))
+    if np.any(bad):
+        i = int(np.flatnonzero(bad)[0])
+        raise ConvergenceError(
+            f"sliding_pull_off did not converge at R_over_h2={float(rho[i])!r}, h1_over_h2="
+            f"{float(r[i])!r}, sigma0_over_E={float(s[i])!r}: the point is outside the "
+            f"solver's range")
     vals = dict(F_pulloff_over_Eh2=np.where(d["snap"], Fmin, F0), a_over_R_at_pulloff=a_min,
                 mechanism=np.where(d["snap"], "snap-off", "zero-width"),
                 F_zero_width_over_Eh2=F0, c1_over_R_zero_width=d["X1"] * sq,
@@ -967,60 +977,63 @@ def sliding_contact_for_load(F_over_Eh2: ArrayLike, R_over_h2: ArrayLike,
                          for v in (F, rho, r, s, tau))
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     phi_t = F * (2 / np.pi)
-    # lower end of the stable branch and its load
-    lab_lo = np.full(F.shape, _LAB_LO)
-    phi_lo = np.zeros(F.shape)
-    adh = s > 0
-    if adh.any():
-        d = _pulloff_flat(kap[adh], r[adh])
-        phi_po = np.where(d["snap"], d["phi_min"], d["phi0"])
-        bad = phi_t[adh] < phi_po
-        if bad.any():
-            i = np.flatnonzero(bad)[0]
-            g = np.flatnonzero(adh)[i]
+    # as in sliding_pull_off: far from h1 = h2 the search overflows on the way; the
+    # convergence check of the state found reports a failure
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        # lower end of the stable branch and its load
+        lab_lo = np.full(F.shape, _LAB_LO)
+        phi_lo = np.zeros(F.shape)
+        adh = s > 0
+        if adh.any():
+            d = _pulloff_flat(kap[adh], r[adh])
+            phi_po = np.where(d["snap"], d["phi_min"], d["phi0"])
+            bad = phi_t[adh] < phi_po
+            if bad.any():
+                i = np.flatnonzero(bad)[0]
+                g = np.flatnonzero(adh)[i]
+                raise NoEquilibriumError(
+                    f"no steadily sliding contact carries F_over_Eh2={float(F[g])!r}: it is below "
+                    f"the pull-off force F_pulloff_over_Eh2={float(np.pi / 2 * phi_po[i])!r} "
+                    f"(R_over_h2={float(rho[g])!r}, h1_over_h2={float(r[g])!r}, "
+                    f"sigma0_over_E={float(s[g])!r}); the cylinder has pulled off")
+            lab_lo[adh] = np.where(d["snap"], d["lab_min"], _LAB_LO)
+            phi_lo[adh] = np.where(d["snap"], d["phi_min"], d["phi0"])
+        if np.any(~adh & (phi_t <= 0)):
+            i = np.flatnonzero(~adh & (phi_t <= 0))[0]
             raise NoEquilibriumError(
-                f"no steadily sliding contact carries F_over_Eh2={float(F[g])!r}: it is below "
-                f"the pull-off force F_pulloff_over_Eh2={float(np.pi / 2 * phi_po[i])!r} "
-                f"(R_over_h2={float(rho[g])!r}, h1_over_h2={float(r[g])!r}, "
-                f"sigma0_over_E={float(s[g])!r}); the cylinder has pulled off")
-        lab_lo[adh] = np.where(d["snap"], d["lab_min"], _LAB_LO)
-        phi_lo[adh] = np.where(d["snap"], d["phi_min"], d["phi0"])
-    if np.any(~adh & (phi_t <= 0)):
-        i = np.flatnonzero(~adh & (phi_t <= 0))[0]
-        raise NoEquilibriumError(
-            f"no contact carries F_over_Eh2={float(F[i])!r} without adhesion "
-            f"(sigma0_over_E=0): the load must be > 0")
-    # upper end: where Phi exceeds the target (Hertz: Phi >= abar^2 - kappa abar sinh ...)
-    lab_hi = np.log(np.sqrt(np.maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
-    ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
-    for _ in range(60):
-        low = ph_hi < phi_t
-        if not low.any():
-            break
-        lab_hi = np.where(low, lab_hi + np.log(2.0), lab_hi)
+                f"no contact carries F_over_Eh2={float(F[i])!r} without adhesion "
+                f"(sigma0_over_E=0): the load must be > 0")
+        # upper end: where Phi exceeds the target (Hertz: Phi >= abar^2 - kappa abar sinh ...)
+        lab_hi = np.log(np.sqrt(np.maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
         ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
-    # bracketed Newton in ln abar on [lab_lo, lab_hi], where Phi increases
-    lo, hi = lab_lo.copy(), lab_hi.copy()
-    lab = 0.5 * (lo + hi)
-    u1 = u2 = None
-    active = np.ones(F.shape, bool)
-    for _ in range(200):
-        ph, dph, u1, u2 = _phi_at(lab, kap, r)
-        fx = ph - phi_t
-        up = fx > 0
-        hi = np.where(up, lab, hi)
-        lo = np.where(up, lo, lab)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            nxt = lab - fx / (dph * np.exp(lab))
-        nxt = np.where(np.isfinite(nxt) & (nxt > lo) & (nxt < hi), nxt, 0.5 * (lo + hi))
-        done = (np.abs(fx) <= 4e-16 * np.maximum(1.0, np.abs(phi_t))) | \
-            (np.abs(nxt - lab) <= 1e-15 * np.maximum(1.0, np.abs(lab))) | \
-            (hi - lo <= 1e-15 * np.maximum(1.0, np.abs(hi)))
-        active &= ~done
-        if not active.any():
-            break
-        lab = np.where(active, nxt, lab)
-    A = np.exp(lab) * np.sqrt(2 / rho)
+        for _ in range(60):
+            low = ph_hi < phi_t
+            if not low.any():
+                break
+            lab_hi = np.where(low, lab_hi + np.log(2.0), lab_hi)
+            ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
+        # bracketed Newton in ln abar on [lab_lo, lab_hi], where Phi increases
+        lo, hi = lab_lo.copy(), lab_hi.copy()
+        lab = 0.5 * (lo + hi)
+        u1 = u2 = None
+        active = np.ones(F.shape, bool)
+        for _ in range(200):
+            ph, dph, u1, u2 = _phi_at(lab, kap, r)
+            fx = ph - phi_t
+            up = fx > 0
+            hi = np.where(up, lab, hi)
+            lo = np.where(up, lo, lab)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                nxt = lab - fx / (dph * np.exp(lab))
+            nxt = np.where(np.isfinite(nxt) & (nxt > lo) & (nxt < hi), nxt, 0.5 * (lo + hi))
+            done = (np.abs(fx) <= 4e-16 * np.maximum(1.0, np.abs(phi_t))) | \
+                (np.abs(nxt - lab) <= 1e-15 * np.maximum(1.0, np.abs(lab))) | \
+                (hi - lo <= 1e-15 * np.maximum(1.0, np.abs(hi)))
+            active &= ~done
+            if not active.any():
+                break
+            lab = np.where(active, nxt, lab)
+        A = np.exp(lab) * np.sqrt(2 / rho)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # see sliding_contact
         dd = _solve_flat(A, rho, r, s, method, n, tol,
                          u_guess=(u1, u2) if method == "closed-form" else None)
