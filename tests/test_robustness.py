@@ -441,3 +441,34 @@ def test_sliding_contact_for_load_outside_the_range_raises_only():
     with pytest.raises(ConvergenceError, match=r"^sliding_contact_for_load \(closed-form\) "
                                                r"did not converge at a_over_R="):
         lc.sliding_contact_for_load(0.5, 100.0, 1e-300, 0.01, method="closed-form")
+
+
+# --- the Gauss-Chebyshev core ---
+
+@pytest.mark.parametrize("interval", [("a", 1.0), None, (1.0, 2.0, 3.0), 5.0])
+def test_sie_interval_must_be_a_pair(interval):
+    """("a", 1) gave "could not convert string to float", None a TypeError."""
+    from linecontact.sie import BoundedSolver
+    with pytest.raises(ValueError, match=r"^interval must be a pair \(lo, hi\) of real numbers"):
+        BoundedSolver(4, interval)
+
+
+@pytest.mark.parametrize("solve, message", [
+    (lambda s: s.BoundedSolver(4).solve(1.0), r"^f must have n \+ 1 = 5 values on its last "
+                                              r"axis, got a scalar$"),
+    (lambda s: s.BoundedSolver(4).solve(None), r"^f must have n \+ 1 = 5 .* got a scalar$"),
+    (lambda s: s.EndBoundedSolver(4).solve(1.0), r"^f must have n = 4 values .* got a scalar$"),
+    (lambda s: s.UnboundedSolver(4).solve(1.0, 0.0), r"^f must have n - 1 = 3 values .* got a "
+                                                     r"scalar$"),
+    (lambda s: s.UnboundedSolver(4).solve(np.zeros((2, 3)), np.zeros(3)),
+     r"^resultant must broadcast to the batch shape of f, \(2,\), got shape \(3,\)$"),
+    (lambda s: s.BoundedSolver(4).solve(np.ones(5), extra=np.zeros(5)),
+     r"^extra must have a non-zero mean over the collocation points"),
+    (lambda s: s.chebyshev_log_expansion(0.5, "3"), r"^kmax must be an integer >= 0, got '3'$"),
+])
+def test_sie_right_hand_sides(solve, message):
+    """A scalar f raised IndexError: tuple index out of range; an extra right-hand side of
+    zero mean gave nan with an 'invalid value' warning."""
+    from linecontact import sie
+    with pytest.raises(ValueError, match=message):
+        solve(sie)
