@@ -96,3 +96,18 @@ def test_solver_failure_exit_1_one_line(capsys):
                          "collocation", "--json")
     assert code == 1 and out == "" and err.count("\n") == 1
     assert "did not converge" in err and "RuntimeWarning" not in err
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["normal", *G, "--a-over-R", "0.01", "--branch", "unstable"],
+     r"--branch applies to given loads \(--F-over-Eh or --load\)"),
+    (["normal", *G, "--F-over-Eh", "1", "--method", "collocation"],
+     r"--method collocation applies to given contact half-widths"),
+    (["normal", *SI, "--load", "1", "--method", "collocation"],
+     r"--method collocation applies to given contact half-widths"),
+])
+def test_options_that_do_not_apply_are_refused(capsys, argv, message):
+    """Both were silently ignored: the output carried the closed form or the stable state."""
+    code, out, err = run(capsys, *argv)
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert re.search(message, err), err

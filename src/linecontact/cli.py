@@ -190,8 +190,15 @@ def _cmd_normal(args) -> int:
     rho, s, cyl = _groups(args)
     A = _half_widths(args, cyl, "F_over_Eh")
     if A is not None:
+        if args.branch != "stable":
+            raise ValueError("--branch applies to given loads (--F-over-Eh or --load): a "
+                             "contact half-width fixes the state")
         r = normal_contact(A, rho, s, method=args.method)
     else:
+        if args.method != "closed-form":
+            raise ValueError("--method collocation applies to given contact half-widths "
+                             "(--a-over-R, --a-over-R-range or --a); the contact for a given "
+                             "load is found by the closed form")
         F = np.asarray(args.F_over_Eh if args.F_over_Eh is not None else
                        np.asarray(args.load, float) / (cyl.modulus * cyl.adhesion_range), float)
         r = contact_for_load(F, rho, s, branch=args.branch)
