@@ -111,3 +111,10 @@ def test_options_that_do_not_apply_are_refused(capsys, argv, message):
     code, out, err = run(capsys, *argv)
     assert code == 2 and out == "" and err.count("\n") == 1
     assert re.search(message, err), err
+
+
+@pytest.mark.parametrize("cmd", [["normal"], ["slide-init", "--tau0", "1e8", "--d-over-a", "0.5"]])
+def test_si_load_below_pull_off_in_newton_per_metre(capsys, cmd):
+    code, _, err = run(capsys, *cmd, *SI, "--load", "-1000")
+    assert code == 2 and err.count("\n") == 1
+    assert "no contact carries load=-1000.0 N/m: it is below the pull-off force" in err, err

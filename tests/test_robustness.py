@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import linecontact as lc
-from linecontact import ConvergenceError, Cylinder
+from linecontact import ConvergenceError, Cylinder, NoEquilibriumError
 
 X = object()  # placeholder for the argument under test
 
@@ -472,3 +472,13 @@ def test_sie_right_hand_sides(solve, message):
     from linecontact import sie
     with pytest.raises(ValueError, match=message):
         solve(sie)
+
+
+def test_cylinder_load_below_pull_off_is_said_in_newton_per_metre():
+    """The SI layer said 'no contact carries F_over_Eh=-2.0' for a load of -100 N/m."""
+    with pytest.raises(NoEquilibriumError, match=r"^no contact carries load=-100.0 N/m: it is "
+                                                 r"below the pull-off force, the minimum load "
+                                                 r"on the contact branch -13.287\d* N/m"):
+        CYL.contact(load=[1.0, -100.0])
+    with pytest.raises(NoEquilibriumError, match=r"^no contact carries load=-50.0 N/m"):
+        lc.cylinder_steady_rolling(CYL, -50.0, friction_stress=1e8, d_over_a=0.1)

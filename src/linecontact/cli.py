@@ -199,9 +199,10 @@ def _cmd_normal(args) -> int:
             raise ValueError("--method collocation applies to given contact half-widths "
                              "(--a-over-R, --a-over-R-range or --a); the contact for a given "
                              "load is found by the closed form")
-        F = np.asarray(args.F_over_Eh if args.F_over_Eh is not None else
-                       np.asarray(args.load, float) / (cyl.modulus * cyl.adhesion_range), float)
-        r = contact_for_load(F, rho, s, branch=args.branch)
+        if args.F_over_Eh is not None:
+            r = contact_for_load(np.asarray(args.F_over_Eh, float), rho, s, branch=args.branch)
+        else:  # through the Cylinder, which speaks of a load below pull-off in N/m
+            r = cyl.contact(load=np.asarray(args.load, float), branch=args.branch).nondimensional
     recs = []
     for i in range(np.size(r.a_over_R)):
         def g(name, i=i):

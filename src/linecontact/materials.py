@@ -40,7 +40,7 @@ from numpy.typing import ArrayLike, NDArray
 from . import normal as _normal
 from . import reference as _ref
 from ._validation import broadcast, check_array, positive, scalar
-from .errors import CouplingWarning
+from .errors import CouplingWarning, NoEquilibriumError
 
 __all__ = [
     "BETA_WARN",
@@ -318,8 +318,17 @@ class Cylinder:
                                        method=method)
         else:
             F = check_array("load", load, low=-np.inf, low_inclusive=True)
-            r = _normal.contact_for_load(F / (self.modulus * self.adhesion_range),
-                                         self.R_over_h, self.sigma0_over_E, branch=branch)
+            Eh = self.modulus * self.adhesion_range
+            if branch == "stable":
+                # said in the units given ([N/m]), not only as F_over_Eh
+                F_min = _normal.pull_off(self.R_over_h, self.sigma0_over_E).F_minimum_over_Eh * Eh
+                if np.any(F < F_min):
+                    raise NoEquilibriumError(
+                        f"no contact carries load={float(F[F < F_min].flat[0])!r} N/m: it is "
+                        f"below the pull-off force, the minimum load on the contact branch "
+                        f"{F_min!r} N/m; the cylinder has pulled off")
+            r = _normal.contact_for_load(F / Eh, self.R_over_h, self.sigma0_over_E,
+                                         branch=branch)
         return self._wrap(r)
 
     def pull_off(self) -> CylinderPullOff:
