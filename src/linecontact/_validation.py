@@ -11,6 +11,28 @@ def _first_bad(arr: NDArray, bad: NDArray) -> object:
     return float(v)
 
 
+def _real_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
+    """``value`` as a float array; bools, strings, complex numbers and None are refused.
+
+    ``np.asarray(value, dtype=float)`` alone would read ``True`` as 1, ``"0.5"`` as 0.5,
+    ``None`` as nan and drop the imaginary part of a complex number.
+    """
+    bad = f"{name} must be a real number or an array of them, got {value!r}"
+    if value is None or isinstance(value, (bool, np.bool_, str, bytes)):
+        raise ValueError(bad)
+    try:
+        raw = np.asarray(value)
+    except (TypeError, ValueError):  # ragged nested sequences
+        raise ValueError(bad) from None
+    if raw.dtype.kind not in "iuf":
+        # object arrays of plain numbers (e.g. [1, 2.5] of mixed Python types) are fine
+        if raw.dtype.kind != "O" or not all(
+                isinstance(v, (int, float, np.integer, np.floating))
+                and not isinstance(v, (bool, np.bool_)) for v in raw.flat):
+            raise ValueError(bad)
+    return np.asarray(raw, dtype=float)
+
+
 def check_array(name: str, value: ArrayLike, *, low: float = 0.0, low_inclusive: bool = False,
                 high: float = np.inf, high_inclusive: bool = False,
                 allow_inf: bool = False) -> NDArray[np.float64]:
@@ -21,22 +43,20 @@ def check_array(name: str, value: ArrayLike, *, low: float = 0.0, low_inclusive:
     ValueError
         Naming ``name``, the valid range and the first offending value.
     """
-    try:
-        arr = np.asarray(value, dtype=float)
-    except (TypeError, ValueError):
-        raise ValueError(f"{name} must be a real number or an array of them, got {value!r}") \
-            from None
+    arr = _real_array(name, value)
     lo_br = "[" if low_inclusive else "("
     hi_br = "]" if high_inclusive else ")"
     hi_txt = "inf" if np.isinf(high) else f"{high:g}"
     rng = f"{lo_br}{low:g}, {hi_txt}{hi_br}"
+    # "a finite number in (-inf, inf)" says no more than "a finite number"
+    in_rng = "" if np.isinf(low) and np.isinf(high) else f" in {rng}"
     if arr.size == 0:
         raise ValueError(f"{name} must not be empty")
     nan = np.isnan(arr)
     if nan.any():
-        raise ValueError(f"{name} must be a finite number in {rng}, got nan")
+        raise ValueError(f"{name} must be a finite number{in_rng}, got nan")
     if not allow_inf and np.isinf(arr).any():
-        raise ValueError(f"{name} must be a finite number in {rng}, got "
+        raise ValueError(f"{name} must be a finite number{in_rng}, got "
                          f"{_first_bad(arr, np.isinf(arr))}")
     too_low = arr < low if low_inclusive else arr <= low
     too_high = arr > high if high_inclusive else arr >= high
@@ -46,6 +66,36 @@ def check_array(name: str, value: ArrayLike, *, low: float = 0.0, low_inclusive:
     if bad.any():
         raise ValueError(f"{name} must be in {rng}, got {_first_bad(arr, bad)}")
     return arr
+
+
+def positions(name: str, value: ArrayLike, points_shape: tuple) -> NDArray[np.float64]:
+    """Finite positions for the distribution methods of a result with ``points_shape``.
+
+    The results have shape ``points_shape + (m,)``: ``value`` is one position (``m = 1``),
+    ``m`` of them, or an array broadcasting to ``points_shape + (m,)`` (one row per point).
+    """
+    x = np.atleast_1d(check_array(name, value, low=-np.inf, low_inclusive=True))
+    want = tuple(points_shape) + x.shape[-1:]
+    try:
+        ok = x.ndim <= len(want) and np.broadcast_shapes(want, x.shape) == want
+    except ValueError:
+        ok = False
+    if not ok:
+        raise ValueError(f"{name} must have shape (m,) or broadcast to the points' shape plus "
+                         f"one axis, {want}, got shape {x.shape}")
+    return x
+
+
+def scalar(name: str, value: ArrayLike, **limits) -> float:
+    """A single number checked as by :func:`check_array` (same keywords), as a Python float.
+
+    For the functions that take scalar parameters only; an array gets a plain message
+    instead of ``TypeError: only 0-dimensional arrays can be converted to Python scalars``.
+    """
+    arr = check_array(name, value, **limits)
+    if arr.ndim != 0:
+        raise ValueError(f"{name} must be a single number, got an array of shape {arr.shape}")
+    return float(arr)
 
 
 def positive(name: str, value: ArrayLike) -> NDArray[np.float64]:
@@ -61,6 +111,39 @@ def non_negative(name: str, value: ArrayLike) -> NDArray[np.float64]:
 def finite(name: str, value: ArrayLike) -> NDArray[np.float64]:
     """Any finite real number."""
     return check_array(name, value, low=-np.inf, low_inclusive=True)
+
+
+def broadcast(**named: NDArray) -> list[NDArray]:
+    """``np.broadcast_arrays`` of the named inputs; shapes that do not broadcast are named.
+
+    NumPy's own message ("shape mismatch: ... arg 0 with shape (3,) and arg 1 ...") does
+    not say which parameters disagree.
+    """
+    arrays = [np.asarray(v) for v in named.values()]
+    try:
+        return list(np.broadcast_arrays(*arrays))
+    except ValueError:
+        shapes = ", ".join(f"{k} has shape {np.shape(v)}" for k, v in named.items()
+                           if np.ndim(v) > 0)
+        raise ValueError(f"the array arguments must broadcast together: {shapes}") from None
+
+
+def check_solver_options(n: object, tol: object, raise_on_failure: object, *,
+                         n_max: int) -> None:
+    """The collocation options shared by the solvers: ``n``, ``tol`` and ``raise_on_failure``.
+
+    ``tol`` may be any real number type (a ``numpy.float32`` was refused as out of range);
+    ``raise_on_failure`` must be a bool (a string such as ``"no"`` was taken as true).
+    """
+    if not (isinstance(n, str) and n == "auto" or (isinstance(n, (int, np.integer))
+                                                   and not isinstance(n, bool)
+                                                   and 2 <= n <= n_max)):
+        raise ValueError(f"n must be 'auto' or an integer in [2, {n_max}], got {n!r}")
+    if not (isinstance(tol, (int, float, np.integer, np.floating))
+            and not isinstance(tol, (bool, np.bool_)) and 1e-15 <= tol < 1e-2):
+        raise ValueError(f"tol must be in [1e-15, 1e-2), got {tol!r}")
+    if not isinstance(raise_on_failure, (bool, np.bool_)):
+        raise ValueError(f"raise_on_failure must be True or False, got {raise_on_failure!r}")
 
 
 def scalar_or_array(*arrays: NDArray) -> bool:

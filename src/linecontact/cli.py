@@ -12,6 +12,7 @@ import csv
 import io
 import json
 import math
+import re
 import sys
 from collections.abc import Sequence
 
@@ -31,7 +32,17 @@ If you use it, please cite the paper it implements:
 """
 
 
+#: Values that are numbers even though they start with "-": argparse (before Python 3.13)
+#: knows only -5 and -0.5, so "--load -1e-3" failed with "expected one argument".
+_NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$",
+                              re.IGNORECASE)
+
+
 class _Parser(argparse.ArgumentParser):
+    def __init__(self, *args, **kwargs) -> None:
+        super().__init__(*args, **kwargs)
+        self._negative_number_matcher = _NEGATIVE_NUMBER
+
     def error(self, message: str):  # argparse's own errors: one line, exit 2
         self.exit(2, f"{self.prog}: error: {message}\n")
 
@@ -70,6 +81,10 @@ def _table(records: list[dict], keys: Sequence[str]) -> str:
     return "\n".join(lines)
 
 
+#: Most points a range option may ask for (1e9 exhausted the memory instead of failing).
+_MAX_POINTS = 1_000_000
+
+
 # --- shared arguments ---------------------------------------------------------------------
 
 
@@ -97,7 +112,7 @@ def _add_groups(p: argparse.ArgumentParser) -> None:
     si.add_argument("--z0", type=float, help="equilibrium spacing [m] (Maugis: h = 0.974 z0)")
 
 
-def _cylinder(args):
+def _cylinder(args, h_flag: str = "--h"):
     """A Cylinder for SI mode, or None in nondimensional mode."""
     from .materials import Cylinder
 
@@ -114,6 +129,9 @@ def _cylinder(args):
         return None
     if args.radius is None:
         raise ValueError("SI inputs need --radius [m]")
+    if args.h is None and args.work_of_adhesion is None and args.z0 is None:
+        raise ValueError(f"SI inputs need the adhesion range {h_flag} [m] (it sets R/h even "
+                         f"without adhesion), or --work-of-adhesion with --z0")
     adh = dict(cohesive_stress=args.sigma0, adhesion_range=args.h,
                work_of_adhesion=args.work_of_adhesion, equilibrium_spacing=args.z0)
     mats = (args.E1, args.nu1, args.E2, args.nu2)
@@ -148,8 +166,13 @@ def _half_widths(args, cyl, load_attr: str):
         raise ValueError("--a and --load are SI inputs: give --radius and the materials too")
     if args.a_over_R_range is not None:
         start, stop, num = args.a_over_R_range
-        if not float(num).is_integer() or num < 1:
-            raise ValueError(f"--a-over-R-range NUM must be an integer >= 1, got {num!r}")
+        for name, v in (("START", start), ("STOP", stop)):
+            if not (math.isfinite(v) and v > 0):
+                raise ValueError(f"--a-over-R-range {name} must be a finite number > 0, got "
+                                 f"{v!r}")
+        if not (math.isfinite(num) and float(num).is_integer() and 1 <= num <= _MAX_POINTS):
+            raise ValueError(f"--a-over-R-range NUM must be an integer in [1, {_MAX_POINTS}], "
+                             f"got {num!r}")
         return np.linspace(start, stop, int(num))
     if args.a_over_R is not None:
         return np.asarray(args.a_over_R, float)
@@ -167,11 +190,19 @@ def _cmd_normal(args) -> int:
     rho, s, cyl = _groups(args)
     A = _half_widths(args, cyl, "F_over_Eh")
     if A is not None:
+        if args.branch != "stable":
+            raise ValueError("--branch applies to given loads (--F-over-Eh or --load): a "
+                             "contact half-width fixes the state")
         r = normal_contact(A, rho, s, method=args.method)
     else:
-        F = np.asarray(args.F_over_Eh if args.F_over_Eh is not None else
-                       np.asarray(args.load, float) / (cyl.modulus * cyl.adhesion_range), float)
-        r = contact_for_load(F, rho, s, branch=args.branch)
+        if args.method != "closed-form":
+            raise ValueError("--method collocation applies to given contact half-widths "
+                             "(--a-over-R, --a-over-R-range or --a); the contact for a given "
+                             "load is found by the closed form")
+        if args.F_over_Eh is not None:
+            r = contact_for_load(np.asarray(args.F_over_Eh, float), rho, s, branch=args.branch)
+        else:  # through the Cylinder, which speaks of a load below pull-off in N/m
+            r = cyl.contact(load=np.asarray(args.load, float), branch=args.branch).nondimensional
     recs = []
     for i in range(np.size(r.a_over_R)):
         def g(name, i=i):
@@ -224,6 +255,9 @@ def _cmd_curve(args) -> int:
     from .normal import load_curve
 
     rho, s, _ = _groups(args)
+    for flag, v in (("--num", args.num), ("--num-noncontact", args.num_noncontact)):
+        if not 2 <= v <= _MAX_POINTS:
+            raise ValueError(f"{flag} must be an integer in [2, {_MAX_POINTS}], got {v!r}")
     c = load_curve(rho, s, a_max_over_R=args.a_max_over_R, num=args.num,
                    num_noncontact=args.num_noncontact)
     keys = ["branch", "central_gap_over_h", "a_over_R", "c_over_R", "F_over_Eh", "stable",
@@ -255,8 +289,12 @@ def _cmd_curve(args) -> int:
         w.writerows(recs)
         text = buf.getvalue()
     if args.output:
-        with open(args.output, "w", encoding="utf-8") as fh:
-            fh.write(text if text.endswith("\n") else text + "\n")
+        try:
+            with open(args.output, "w", encoding="utf-8") as fh:
+                fh.write(text if text.endswith("\n") else text + "\n")
+        except OSError as exc:
+            raise ValueError(f"cannot write -o/--output {args.output!r}: "
+                             f"{exc.strerror or exc}") from None
         print(f"wrote {args.output}", file=sys.stderr)
     else:
         print(text.rstrip("\n"))
@@ -269,7 +307,11 @@ def _cmd_paper(args) -> int:
     def progress(msg: str) -> None:
         print(msg, file=sys.stderr)
 
-    paths = paper_figures(args.outdir, progress=progress)
+    try:
+        paths = paper_figures(args.outdir, progress=progress)
+    except OSError as exc:
+        raise ValueError(f"cannot write the figures to --outdir {args.outdir!r}: "
+                         f"{exc.strerror or exc}") from None
     print(f"wrote {len(paths)} files to {args.outdir}/:")
     for p in paths:
         print(f"  {p}")
@@ -341,7 +383,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = parser.parse_args(argv)
     args.argv = list(argv) if argv is not None else None
     if args.command is None:
-        parser.print_help()
+        print("linecontact: error: give a command: normal, pulloff, curve, slide-init, roll, "
+              "slide, paper or cite (linecontact --help lists them)", file=sys.stderr)
         return 2
     try:
         return int(args.func(args))

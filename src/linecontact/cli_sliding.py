@@ -86,7 +86,7 @@ def _setup(args):
         raise ValueError("SI inputs need --radius [m]")
     args.R_over_h = None  # what the shared SI builder reads
     args.sigma0_over_E = None
-    cyl = _cylinder(args)
+    cyl = _cylinder(args, h_flag="--h2")
     r = args.h1_over_h2 if args.h1 is None else args.h1 / cyl.adhesion_range
     tau = None if args.tau0 is None else args.tau0 / cyl.modulus
     return cyl.R_over_h, r, cyl.sigma0_over_E, tau, cyl

@@ -16,6 +16,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import cli as _cli
+from ._validation import non_negative
 
 __all__ = ["add_subcommands"]
 
@@ -151,6 +152,10 @@ def _run(args, rolling: bool) -> int:
         raise ValueError("--tangential-load [N/m] is an SI input: give --radius, the "
                          "materials and --load too, or use --T-over-Ea")
     values = np.asarray(getattr(args, state), float)
+    if state != "d_over_a":
+        # checked before any conversion (T/(Ea) to T/(mu F), ...), so that the message names
+        # the option given and its value
+        non_negative(state, values)
     d = values if state == "d_over_a" else None
     kw = dict(method=args.method)
 

@@ -39,8 +39,8 @@ from numpy.typing import ArrayLike, NDArray
 
 from . import normal as _normal
 from . import reference as _ref
-from ._validation import check_array, positive
-from .errors import CouplingWarning
+from ._validation import broadcast, check_array, positive, scalar
+from .errors import CouplingWarning, NoEquilibriumError
 
 __all__ = [
     "BETA_WARN",
@@ -62,6 +62,7 @@ def _moduli(E1, nu1, E2, nu2):
     E2 = check_array("E2", E2, allow_inf=True)
     nu1 = check_array("nu1", nu1, low=-1.0, high=0.5, high_inclusive=True)
     nu2 = check_array("nu2", nu2, low=-1.0, high=0.5, high_inclusive=True)
+    E1, nu1, E2, nu2 = broadcast(E1=E1, nu1=nu1, E2=E2, nu2=nu2)
     if np.any(np.isinf(E1) & np.isinf(E2)):
         raise ValueError("E1 and E2 cannot both be infinite (two rigid bodies)")
     return E1, nu1, E2, nu2
@@ -110,7 +111,15 @@ def adhesion_from_work(work_of_adhesion: ArrayLike, equilibrium_spacing: ArrayLi
     """
     w = positive("work_of_adhesion", work_of_adhesion)
     z0 = positive("equilibrium_spacing", equilibrium_spacing)
-    s0 = 16 * w / (9 * np.sqrt(3) * z0)
+    w, z0 = broadcast(work_of_adhesion=w, equilibrium_spacing=z0)
+    with np.errstate(over="ignore", under="ignore"):
+        s0 = 16 * w / (9 * np.sqrt(3) * z0)
+    bad = ~(np.isfinite(s0) & (s0 > 0))
+    if np.any(bad):
+        i = int(np.flatnonzero(bad.reshape(-1))[0])
+        raise ValueError(f"work_of_adhesion={float(w.reshape(-1)[i])!r} and equilibrium_spacing="
+                         f"{float(z0.reshape(-1)[i])!r} give sigma0 = 16 w/(9 sqrt(3) z0) = "
+                         f"{float(s0.reshape(-1)[i])!r} [Pa], not a finite positive number")
     h = w / s0
     return (s0.item(), h.item()) if s0.ndim == 0 else (s0, h)
 
@@ -196,13 +205,32 @@ class Cylinder:
     adhesion_range: float
     dundurs_beta: float = 0.0
 
+    def __post_init__(self) -> None:
+        # the fields as Python floats, checked (also when the class is built directly)
+        for name, limits in (("radius", {}), ("modulus", {}),
+                             ("cohesive_stress", {"low_inclusive": True}),
+                             ("adhesion_range", {}),
+                             ("dundurs_beta", {"low": -np.inf, "low_inclusive": True})):
+            object.__setattr__(self, name, scalar(name, getattr(self, name), **limits))
+        # the units of the groups must be representable: R/h, sigma0/E and E h
+        for what, v in (("radius/adhesion_range (R/h)", self.radius / self.adhesion_range),
+                        ("cohesive_stress/modulus (sigma0/E)",
+                         self.cohesive_stress / self.modulus),
+                        ("modulus*adhesion_range (E h, the unit of force per length)",
+                         self.modulus * self.adhesion_range)):
+            if not (np.isfinite(v) and (v > 0 or (v == 0 and what.startswith("cohesive")))):
+                raise ValueError(f"{what} = {v!r} is not a finite positive number: radius="
+                                 f"{self.radius!r}, modulus={self.modulus!r}, cohesive_stress="
+                                 f"{self.cohesive_stress!r}, adhesion_range="
+                                 f"{self.adhesion_range!r} are too far apart in scale")
+
     @classmethod
     def from_modulus(cls, radius: float, modulus: float, *, cohesive_stress: float | None = None,
                      adhesion_range: float | None = None, work_of_adhesion: float | None = None,
                      equilibrium_spacing: float | None = None) -> Cylinder:
         """From the composite modulus ``E`` [Pa]; adhesion as ``(sigma0, h)`` or ``(w, z0)``."""
-        R = float(positive("radius", radius))
-        E = float(positive("modulus", modulus))
+        R = scalar("radius", radius)
+        E = scalar("modulus", modulus)
         s0, h = _adhesion(cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
         return cls(R, E, s0, h, 0.0)
 
@@ -212,7 +240,11 @@ class Cylinder:
                        work_of_adhesion: float | None = None,
                        equilibrium_spacing: float | None = None) -> Cylinder:
         """From the moduli [Pa] and Poisson ratios of cylinder (1) and substrate (2)."""
-        R = float(positive("radius", radius))
+        R = scalar("radius", radius)
+        for name, v in zip(("E1", "nu1", "E2", "nu2"), _moduli(E1, nu1, E2, nu2), strict=True):
+            if v.ndim != 0:
+                raise ValueError(f"{name} must be a single number, got an array of shape "
+                                 f"{v.shape}")
         E = float(composite_modulus(E1, nu1, E2, nu2))
         beta = float(dundurs_beta(E1, nu1, E2, nu2))
         if abs(beta) > BETA_WARN:
@@ -251,8 +283,13 @@ class Cylinder:
     # problems ----------------------------------------------------------------------------
     def _wrap(self, r: _normal.NormalContact) -> CylinderContact:
         R, Eh = self.radius, self.modulus * self.adhesion_range
-        return CylinderContact(np.multiply(r.a_over_R, R), np.multiply(r.c_over_R, R),
-                               np.multiply(r.F_over_Eh, Eh), r.stable, r)
+
+        def si(v, unit):
+            v = np.multiply(v, unit)
+            return v.item() if np.ndim(v) == 0 else v
+
+        return CylinderContact(si(r.a_over_R, R), si(r.c_over_R, R), si(r.F_over_Eh, Eh),
+                               r.stable, r)
 
     def contact(self, *, contact_half_width: ArrayLike | None = None,
                 load: ArrayLike | None = None, method: str = "closed-form",
@@ -265,14 +302,33 @@ class Cylinder:
         """
         if (contact_half_width is None) == (load is None):
             raise ValueError("give exactly one of contact_half_width or load")
+        if method not in ("closed-form", "collocation"):
+            raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
+        if branch not in ("stable", "unstable"):
+            raise ValueError(f"branch must be 'stable' or 'unstable', got {branch!r}")
+        if load is not None and method != "closed-form":
+            raise ValueError("the contact for a given load is found by the closed form: "
+                             "method='collocation' applies to contact_half_width only")
+        if contact_half_width is not None and branch != "stable":
+            raise ValueError("branch applies to a given load only: a contact half-width "
+                             "fixes the state")
         if contact_half_width is not None:
             a = positive("contact_half_width", contact_half_width)
             r = _normal.normal_contact(a / self.radius, self.R_over_h, self.sigma0_over_E,
                                        method=method)
         else:
             F = check_array("load", load, low=-np.inf, low_inclusive=True)
-            r = _normal.contact_for_load(F / (self.modulus * self.adhesion_range),
-                                         self.R_over_h, self.sigma0_over_E, branch=branch)
+            Eh = self.modulus * self.adhesion_range
+            if branch == "stable":
+                # said in the units given ([N/m]), not only as F_over_Eh
+                F_min = _normal.pull_off(self.R_over_h, self.sigma0_over_E).F_minimum_over_Eh * Eh
+                if np.any(F < F_min):
+                    raise NoEquilibriumError(
+                        f"no contact carries load={float(F[F < F_min].flat[0])!r} N/m: it is "
+                        f"below the pull-off force, the minimum load on the contact branch "
+                        f"{F_min!r} N/m; the cylinder has pulled off")
+            r = _normal.contact_for_load(F / Eh, self.R_over_h, self.sigma0_over_E,
+                                         branch=branch)
         return self._wrap(r)
 
     def pull_off(self) -> CylinderPullOff:
@@ -292,11 +348,12 @@ def _adhesion(s0, h, w, z0) -> tuple[float, float]:
     if by_work:
         if w is None or z0 is None:
             raise ValueError("give both work_of_adhesion and equilibrium_spacing")
-        s, hh = adhesion_from_work(w, z0)
+        s, hh = adhesion_from_work(scalar("work_of_adhesion", w),
+                                   scalar("equilibrium_spacing", z0))
         return float(s), float(hh)
     if h is None:
         raise ValueError("give adhesion_range h (> 0): it sets the length scale R/h even "
                          "without adhesion")
-    hh = float(positive("adhesion_range", h))
-    s = 0.0 if s0 is None else float(check_array("cohesive_stress", s0, low_inclusive=True))
+    hh = scalar("adhesion_range", h)
+    s = 0.0 if s0 is None else scalar("cohesive_stress", s0, low_inclusive=True)
     return s, hh

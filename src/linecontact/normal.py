@@ -29,7 +29,17 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import reference as _ref
-from ._validation import check_array, finite, non_negative, positive, scalar_or_array
+from ._validation import (
+    broadcast,
+    check_array,
+    check_solver_options,
+    finite,
+    non_negative,
+    positions,
+    positive,
+    scalar,
+    scalar_or_array,
+)
 from .errors import ConvergenceError, NoEquilibriumError
 from .sie import BoundedSolver
 
@@ -51,6 +61,10 @@ __all__ = [
 #: A load minimum closer to Eq. (14) than this (relative) is reported as pull-off at zero
 #: width: it lies at a contact width exponentially small in 1/kappa (see docs/derivations.md).
 ZERO_WIDTH_RTOL = 1e-9
+
+#: Relative load residual (over the larger of |F|, |Eq. 14| and the Hertz term) that
+#: contact_for_load must meet; it reaches ~1e-15 wherever the solver's bracket holds the state.
+_LOAD_RTOL = 1e-9
 
 _SIZES = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, 768, 1024, 1536, 2048)
 
@@ -147,13 +161,13 @@ class NormalContact(_Result):
         axis); the result has shape ``points.shape + (m,)``. Inside the contact it is the
         solution of the method used; ``-sigma0/E`` in the adhesive zones; zero beyond.
         """
-        x = np.asarray(x_over_R, dtype=float)
+        x = positions("x_over_R", x_over_R, np.shape(self.a_over_R))
         A = np.asarray(self.a_over_R, dtype=float)[..., None]
         C = np.asarray(self.c_over_R, dtype=float)[..., None]
         s = np.asarray(self.sigma0_over_E, dtype=float)[..., None]
         ax = np.abs(x)
         if self.method == "closed-form":
-            with np.errstate(divide="ignore", invalid="ignore"):
+            with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # x*x, |x| >> a
                 inner = 0.5 * np.sqrt(np.clip(A * A - x * x, 0, None)) - (2 * s / np.pi) * \
                     np.arctan(np.sqrt((C * C - A * A) / np.clip(A * A - x * x, 1e-300, None)))
         else:
@@ -391,7 +405,10 @@ def normal_contact(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: Arra
     R_over_h : array_like
         Radius over the range of the adhesive stress, ``> 0``.
     sigma0_over_E : array_like
-        Adhesive (Dugdale) stress over the composite modulus, ``>= 0`` (0 gives Hertz).
+        Adhesive (Dugdale) stress over the composite modulus, ``>= 0`` (0 gives Hertz);
+        ``kappa = (4/pi) sigma0_over_E sqrt(2 R_over_h)`` at most
+        :data:`~linecontact.reference.KAPPA_MAX` (1e12) here and in every normal and sliding
+        solver.
     method : {"closed-form", "collocation"}
         Solver (see the module docstring).
     n : int or "auto"
@@ -421,33 +438,37 @@ def normal_contact(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: Arra
     s = non_negative("sigma0_over_E", sigma0_over_E)
     if method not in ("closed-form", "collocation"):
         raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
-    if not (n == "auto" or (isinstance(n, (int, np.integer)) and not isinstance(n, bool)
-                            and 2 <= n <= 8192)):
-        raise ValueError(f"n must be 'auto' or an integer in [2, 8192], got {n!r}")
-    if not (isinstance(tol, float | int) and 1e-15 <= tol < 1e-2):
-        raise ValueError(f"tol must be in [1e-15, 1e-2), got {tol!r}")
+    check_solver_options(n, tol, raise_on_failure, n_max=8192)
     scalar = scalar_or_array(A, rho, s)
-    A, rho, s = np.broadcast_arrays(A, rho, s)
+    A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
+    _ref._check_kappa(rho, s)
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
-    if method == "closed-form":
-        u, C, F, res, stable = _closed_form(A, rho, s)
-        ncol = np.zeros(A.shape, dtype=int)
-        cons = np.zeros(A.shape)
-        err = np.zeros(A.shape)
-        converged = res < 1e-12
-    else:
-        r = _collocation(A, rho, s, n, tol)
-        u, C, F = r["u"], r["C"], r["F"]
-        res, cons, err, ncol = r["res"], r["cons"], r["tail"], r["n"]
-        converged = r["converged"]
-        # residual R is scaled so that 1 <-> h; it is the separation residual over h
-        stable = _ref._branch_point(u, kap)["dphi"] < 0
+    # a contact half-width far outside the solvers' range (a/R ~ 1e-200 or 1e20) overflows
+    # on the way; the residual and finiteness checks below turn that into non-convergence
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        if method == "closed-form":
+            u, C, F, res, stable = _closed_form(A, rho, s)
+            ncol = np.zeros(A.shape, dtype=int)
+            cons = np.zeros(A.shape)
+            err = np.zeros(A.shape)
+            converged = (res < 1e-12) & np.isfinite(C) & np.isfinite(F)
+        else:
+            r = _collocation(A, rho, s, n, tol)
+            u, C, F = r["u"], r["C"], r["F"]
+            res, cons, err, ncol = r["res"], r["cons"], r["tail"], r["n"]
+            converged = r["converged"] & np.isfinite(C)
+            # residual R is scaled so that 1 <-> h; it is the separation residual over h
+            stable = _ref._branch_point(u, kap)["dphi"] < 0
+        ca = np.reshape(C / A, -1)
     if raise_on_failure and not np.all(converged):
         i = np.flatnonzero(~np.asarray(converged).reshape(-1))[0]
         nn = int(np.reshape(ncol, -1)[i])
-        hint = (f"the adhesive zone is too thin (c/a = {np.reshape(C / A, -1)[i]:.6g}) for "
-                f"n <= {_SIZES[-1]} nodes" if n == "auto" else
-                f"n = {nn} nodes are too few for tol = {tol:g}; try n='auto'")
+        if not (np.isfinite(ca[i]) and ca[i] >= 1):
+            hint = "the contact half-width is outside the solver's range"
+        elif n == "auto":
+            hint = f"the adhesive zone is too thin (c/a = {ca[i]:.6g}) for n <= {_SIZES[-1]} nodes"
+        else:
+            hint = f"n = {nn} nodes are too few for tol = {tol:g}; try n='auto'"
         raise ConvergenceError(
             f"normal_contact ({method}) did not converge at a_over_R="
             f"{float(A.reshape(-1)[i])!r}, R_over_h={float(rho.reshape(-1)[i])!r}, "
@@ -562,7 +583,8 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     rho = positive("R_over_h", R_over_h)
     s = non_negative("sigma0_over_E", sigma0_over_E)
     scalar = scalar_or_array(rho, s)
-    rho, s = np.broadcast_arrays(rho, s)
+    rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
+    _ref._check_kappa(rho, s)
     d = _pulloff_arrays(rho.astype(float), s.astype(float))
     d.pop("us")
     lam = 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
@@ -614,7 +636,9 @@ def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: A
     if branch not in ("stable", "unstable"):
         raise ValueError(f"branch must be 'stable' or 'unstable', got {branch!r}")
     scalar = scalar_or_array(F, rho, s)
-    F, rho, s = (np.asarray(v, float) for v in np.broadcast_arrays(F, rho, s))
+    F, rho, s = (np.asarray(v, float) for v in broadcast(F_over_Eh=F, R_over_h=rho,
+                                                          sigma0_over_E=s))
+    _ref._check_kappa(rho, s)
     d = _pulloff_arrays(rho, s)
     Fmin, F0, us, kap = d["F_minimum_over_Eh"], d["F_zero_width_over_Eh"], d["us"], d["kappa"]
     if branch == "stable":
@@ -643,10 +667,18 @@ def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: A
     A, C, Fc, stable = _closed_form_from_u(u, kap, rho, us)
     scale = np.maximum.reduce([np.abs(F), np.abs(F0), np.pi / 4 * A * A * rho])
     res = np.abs(Fc - F) / np.maximum(scale, 1e-300)
+    converged = np.isfinite(Fc) & (res <= _LOAD_RTOL)
+    if not np.all(converged):
+        i = np.flatnonzero(~converged.reshape(-1))[0]
+        raise ConvergenceError(
+            f"contact_for_load did not converge at F_over_Eh={float(F.reshape(-1)[i])!r}, "
+            f"R_over_h={float(rho.reshape(-1)[i])!r}, sigma0_over_E="
+            f"{float(s.reshape(-1)[i])!r}: the closest contact carries F_over_Eh="
+            f"{float(Fc.reshape(-1)[i])!r} (the load is outside the range of the solver)")
     z = np.zeros(F.shape)
     vals = dict(a_over_R=A, c_over_R=C, F_over_Eh=Fc, R_over_h=rho, sigma0_over_E=s,
                 n_collocation=z.astype(int), residual_separation=z, residual_consistency=z,
-                error_estimate=res, converged=np.isfinite(Fc), stable=stable)
+                error_estimate=res, converged=converged, stable=stable)
     vals = {k: _as_output(np.asarray(v), scalar) for k, v in vals.items()}
     return NormalContact(method="closed-form", **vals)
 
@@ -688,10 +720,11 @@ def non_contact(central_gap_over_h: ArrayLike, R_over_h: ArrayLike,
     rho = positive("R_over_h", R_over_h)
     s = non_negative("sigma0_over_E", sigma0_over_E)
     scalar = scalar_or_array(g, rho, s)
-    g, rho, s = (np.asarray(v, float) for v in np.broadcast_arrays(g, rho, s))
+    g, rho, s = (np.asarray(v, float) for v in broadcast(central_gap_over_h=g, R_over_h=rho,
+                                                          sigma0_over_E=s))
     k = 4 * _ref.LN2 * s / np.pi
     rhs = 2 * (1 - g) / rho
-    C = rhs / (k + np.sqrt(k * k + rhs))
+    C = rhs / (k + np.hypot(k, np.sqrt(rhs)))  # no overflow of k^2
     F = -2 * s * rho * C
     vals = dict(central_gap_over_h=g, c_over_R=C, F_over_Eh=F, R_over_h=rho, sigma0_over_E=s,
                 stable=np.zeros(g.shape, bool))
@@ -720,9 +753,9 @@ def equilibria(F_over_Eh: float, R_over_h: float, sigma0_over_E: float) -> tuple
     Eq. 14), and the non-contact state (between Eq. 14 and 0). Empty below the pull-off
     force; the caller says so.
     """
-    F = float(finite("F_over_Eh", F_over_Eh))
-    rho = float(positive("R_over_h", R_over_h))
-    s = float(non_negative("sigma0_over_E", sigma0_over_E))
+    F = scalar("F_over_Eh", F_over_Eh, low=-np.inf, low_inclusive=True)
+    rho = scalar("R_over_h", R_over_h)
+    s = scalar("sigma0_over_E", sigma0_over_E, low_inclusive=True)
     po = pull_off(rho, s)
     states: list[Equilibrium] = []
     if F >= po.F_minimum_over_Eh:
@@ -787,8 +820,8 @@ def load_curve(R_over_h: float, sigma0_over_E: float, *, a_max_over_R: float | N
     num, num_noncontact : int
         Points on the contact and the non-contact branches (>= 2 each).
     """
-    rho = float(positive("R_over_h", R_over_h))
-    s = float(non_negative("sigma0_over_E", sigma0_over_E))
+    rho = scalar("R_over_h", R_over_h)
+    s = scalar("sigma0_over_E", sigma0_over_E, low_inclusive=True)
     for name, v in (("num", num), ("num_noncontact", num_noncontact)):
         if not isinstance(v, (int, np.integer)) or v < 2:
             raise ValueError(f"{name} must be an integer >= 2, got {v!r}")
@@ -796,7 +829,7 @@ def load_curve(R_over_h: float, sigma0_over_E: float, *, a_max_over_R: float | N
     if a_max_over_R is None:
         a_h = np.sqrt(4 * 10 * abs(po.F_pulloff_over_Eh) / (np.pi * rho))
         a_max_over_R = max(3 * po.a_over_R_at_minimum, a_h, 0.02)
-    amax = float(positive("a_max_over_R", a_max_over_R))
+    amax = scalar("a_max_over_R", a_max_over_R)
     A = np.unique(np.concatenate([np.geomspace(amax * 1e-4, amax, num // 2),
                                   np.linspace(amax / num, amax, num - num // 2)]))
     if 0 < po.a_over_R_at_minimum < amax:

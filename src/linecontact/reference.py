@@ -55,9 +55,10 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._validation import non_negative, out, positive, scalar_or_array
+from ._validation import broadcast, non_negative, out, positive, scalar_or_array
 
 __all__ = [
+    "KAPPA_MAX",
     "hertz_load",
     "jkr_load",
     "kappa",
@@ -66,6 +67,36 @@ __all__ = [
 ]
 
 LN2 = float(np.log(2.0))
+
+#: Largest ``kappa`` the Maugis--Dugdale solvers accept. Their brackets in
+#: ``u = arccosh(c/a)`` reach down to 1e-9 (the pull-off to 1e-10), and the load minimum sits
+#: at ``u ~ 2.8 kappa**(-2/3)``: beyond ``kappa ~ 1e13`` the minimum and the contacts near it
+#: fall outside, so pull-off forces and contacts for a given load would be wrong.
+KAPPA_MAX = 1e12
+
+
+def _check_kappa(rho: NDArray, s: NDArray, rho_name: str = "R_over_h") -> None:
+    """Refuse parameter points beyond :data:`KAPPA_MAX`, naming both parameters."""
+    with np.errstate(over="ignore"):
+        kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    bad = ~(kap <= KAPPA_MAX)
+    if np.any(bad):
+        i = int(np.flatnonzero(np.reshape(bad, -1))[0])
+        pick = [float(np.reshape(v, -1)[i if np.size(v) > 1 else 0]) for v in (kap, rho, s)]
+        raise ValueError(
+            f"kappa = (4/pi) sigma0_over_E sqrt(2 {rho_name}) must be <= {KAPPA_MAX:g} (the "
+            f"range of the solvers), got kappa={pick[0]:.3g} at {rho_name}={pick[1]!r}, "
+            f"sigma0_over_E={pick[2]!r}")
+
+
+def _representable(what: str, value: NDArray, **params: NDArray) -> NDArray:
+    """``value`` if it is finite everywhere; otherwise say which inputs overflow it."""
+    if not np.all(np.isfinite(value)):
+        i = int(np.flatnonzero(~np.isfinite(np.reshape(value, -1)))[0])
+        at = ", ".join(f"{k}={float(np.reshape(v, -1)[i if np.size(v) > 1 else 0])!r}"
+                       for k, v in params.items())
+        raise ValueError(f"{what} is beyond the floating-point range at {at}")
+    return value
 
 # --------------------------------------------------------------------------------------------
 # groups
@@ -82,7 +113,11 @@ def kappa(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | float:
     """
     rho = positive("R_over_h", R_over_h)
     s = non_negative("sigma0_over_E", sigma0_over_E)
-    return out((4 / np.pi) * s * np.sqrt(2 * rho), scalar_or_array(rho, s))
+    rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
+    with np.errstate(over="ignore"):
+        val = (4 / np.pi) * s * np.sqrt(2 * rho)
+    val = _representable("kappa", val, R_over_h=rho, sigma0_over_E=s)
+    return out(val, scalar_or_array(rho, s))
 
 
 def maugis_parameter(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | float:
@@ -95,7 +130,11 @@ def maugis_parameter(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray |
     """
     rho = positive("R_over_h", R_over_h)
     s = non_negative("sigma0_over_E", sigma0_over_E)
-    return out(4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3), scalar_or_array(rho, s))
+    rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
+    with np.errstate(over="ignore"):
+        val = 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
+    val = _representable("the Maugis parameter", val, R_over_h=rho, sigma0_over_E=s)
+    return out(val, scalar_or_array(rho, s))
 
 
 # --------------------------------------------------------------------------------------------
@@ -106,7 +145,11 @@ def hertz_load(a_over_R: ArrayLike, R_over_h: ArrayLike) -> NDArray | float:
     r"""Hertz line contact, Eq. (13): :math:`F/(Eh) = (\pi/4)(a/R)^2 (R/h)`."""
     A = positive("a_over_R", a_over_R)
     rho = positive("R_over_h", R_over_h)
-    return out(np.pi / 4 * A * A * rho, scalar_or_array(A, rho))
+    A, rho = broadcast(a_over_R=A, R_over_h=rho)
+    with np.errstate(over="ignore"):
+        val = np.pi / 4 * A * A * rho
+    val = _representable("the Hertz load", val, a_over_R=A, R_over_h=rho)
+    return out(val, scalar_or_array(A, rho))
 
 
 def jkr_load(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | float:
@@ -119,7 +162,10 @@ def jkr_load(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike)
     A = positive("a_over_R", a_over_R)
     rho = positive("R_over_h", R_over_h)
     s = non_negative("sigma0_over_E", sigma0_over_E)
-    val = np.pi / 4 * A * A * rho - np.sqrt(2 * np.pi * s * rho * A)
+    A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
+    with np.errstate(over="ignore", invalid="ignore"):
+        val = np.pi / 4 * A * A * rho - np.sqrt(2 * np.pi * s * rho * A)
+    val = _representable("the JKR load", val, a_over_R=A, R_over_h=rho, sigma0_over_E=s)
     return out(val, scalar_or_array(A, rho, s))
 
 
@@ -136,13 +182,15 @@ def zero_width_load(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | 
     """
     rho = positive("R_over_h", R_over_h)
     s = non_negative("sigma0_over_E", sigma0_over_E)
+    rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     return out(_zero_width(rho, s), scalar_or_array(rho, s))
 
 
 def _zero_width(rho: NDArray, s: NDArray) -> NDArray:
     k = (np.pi / LN2) ** 2 / (8 * rho)
-    # s - sqrt(s^2 + k) written without cancellation
-    return -(8 * LN2 / np.pi) * rho * s * k / (s + np.sqrt(s * s + k))
+    # s - sqrt(s^2 + k) written without cancellation, and without overflow of s^2 (hypot)
+    # or of rho s k (rho k is a constant)
+    return -(8 * LN2 / np.pi) * ((np.pi / LN2) ** 2 / 8) * s / (s + np.hypot(s, np.sqrt(k)))
 
 
 # --------------------------------------------------------------------------------------------
@@ -219,8 +267,9 @@ def _u_of_abar(abar: NDArray, kap: NDArray, *, maxiter: int = 60) -> tuple[NDArr
     X_inf = 2.0 / (kap * LN2 + np.sqrt(kap * kap * LN2 * LN2 + 4))
     u_large = np.log(np.maximum(2 * X_inf / abar, 1.0 + 1e-12))
     # small u: (2/3) abar^2 u^3 + kappa abar u^2 / 2 = 1  -> take the larger of the two roots
-    u_small = np.minimum((1.5 / abar ** 2) ** (1 / 3),
-                         np.sqrt(2.0 / np.maximum(kap * abar, 1e-300)))
+    with np.errstate(over="ignore", divide="ignore"):  # abar**2 under/overflows at the ends
+        u_small = np.minimum((1.5 / abar ** 2) ** (1 / 3),
+                             np.sqrt(2.0 / np.maximum(kap * abar, 1e-300)))
     u0 = np.clip(np.where(u_large > 1.0, u_large, u_small), 1e-9, 700.0)
     w = np.log(u0)
     it = np.zeros(abar.shape, dtype=int)

@@ -70,17 +70,30 @@ __all__ = [
 _DCT_FROM = 48  # from this size on the bounded solve uses the fast cosine transform
 
 
-def _check_n(n: int, minimum: int = 1) -> int:
+def _check_n(n: int, minimum: int = 1, name: str = "n") -> int:
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or n < minimum:
-        raise ValueError(f"n must be an integer >= {minimum}, got {n!r}")
+        raise ValueError(f"{name} must be an integer >= {minimum}, got {n!r}")
     return int(n)
 
 
 def _check_interval(interval: tuple[float, float]) -> tuple[float, float]:
-    lo, hi = (float(v) for v in interval)
+    try:
+        lo, hi = (float(v) for v in interval)
+    except (TypeError, ValueError):  # not a pair of real numbers
+        raise ValueError(f"interval must be a pair (lo, hi) of real numbers, got "
+                         f"{interval!r}") from None
     if not (np.isfinite(lo) and np.isfinite(hi) and hi > lo):
         raise ValueError(f"interval must be finite with lo < hi, got {interval!r}")
     return lo, hi
+
+
+def _check_rhs(name: str, f: ArrayLike, m: int, what: str) -> NDArray:
+    """``f`` as a float array with ``m`` values on its last axis (``what`` says why)."""
+    arr = np.asarray(f, dtype=float)
+    if arr.ndim == 0 or arr.shape[-1] != m:
+        got = "a scalar" if arr.ndim == 0 else arr.shape[-1]
+        raise ValueError(f"{name} must have {what} = {m} values on its last axis, got {got}")
+    return arr
 
 
 def bounded_rule(n: int) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
@@ -133,6 +146,7 @@ def chebyshev_log_expansion(y: ArrayLike, kmax: int) -> tuple[NDArray, NDArray]:
     e : ndarray, shape y.shape + (kmax + 1,)
         ``e[..., k]`` for ``k = 0..kmax`` (``e[..., 0] = 1``).
     """
+    kmax = _check_n(kmax, 0, "kmax")
     y = np.asarray(y, dtype=float)
     k = np.arange(kmax + 1)
     ay = np.abs(y)
@@ -252,17 +266,14 @@ class BoundedSolver:
         -------
         BoundedSolution
         """
-        f = np.asarray(f, dtype=float)
-        if f.shape[-1] != self.n + 1:
-            raise ValueError(f"f must have n + 1 = {self.n + 1} values on its last axis, "
-                             f"got {f.shape[-1]}")
+        f = _check_rhs("f", f, self.n + 1, "n + 1")
         lam = None
         if extra is not None:
-            f1 = np.asarray(extra, dtype=float)
-            if f1.shape[-1] != self.n + 1:
-                raise ValueError(f"extra must have n + 1 = {self.n + 1} values on its last "
-                                 f"axis, got {f1.shape[-1]}")
+            f1 = _check_rhs("extra", extra, self.n + 1, "n + 1")
             s1 = f1.mean(axis=-1)
+            if np.any(s1 == 0):
+                raise ValueError("extra must have a non-zero mean over the collocation points: "
+                                 "the consistency condition fixes its multiplier through it")
             with np.errstate(divide="ignore", invalid="ignore"):
                 lam = -f.mean(axis=-1) / s1
             f = f + lam[..., None] * f1
@@ -428,9 +439,7 @@ class EndBoundedSolver:
 
         ``f`` has shape ``(..., n)``; so has the result.
         """
-        f = np.asarray(f, dtype=float)
-        if f.shape[-1] != self.n:
-            raise ValueError(f"f must have n = {self.n} values on its last axis, got {f.shape[-1]}")
+        f = _check_rhs("f", f, self.n, "n")
         flat = f.reshape(-1, self.n).T
         g = scipy.linalg.lu_solve(self._lu, flat).T
         return g.reshape(f.shape)
@@ -497,11 +506,12 @@ class UnboundedSolver:
         resultant : array_like, shape (...)
             :math:`C = \int_\alpha^\beta \phi\,dt`.
         """
-        f = np.asarray(f, dtype=float)
-        if f.shape[-1] != self.n - 1:
-            raise ValueError(f"f must have n - 1 = {self.n - 1} values on its last axis, "
-                             f"got {f.shape[-1]}")
-        c = np.broadcast_to(np.asarray(resultant, dtype=float), f.shape[:-1])
+        f = _check_rhs("f", f, self.n - 1, "n - 1")
+        try:
+            c = np.broadcast_to(np.asarray(resultant, dtype=float), f.shape[:-1])
+        except ValueError:
+            raise ValueError(f"resultant must broadcast to the batch shape of f, "
+                             f"{f.shape[:-1]}, got shape {np.shape(resultant)}") from None
         rhs = np.concatenate([f, c[..., None]], axis=-1)
         flat = rhs.reshape(-1, self.n).T
         g = scipy.linalg.lu_solve(self._lu, flat).T

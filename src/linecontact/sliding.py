@@ -110,7 +110,15 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import reference as _ref
-from ._validation import finite, non_negative, positive, scalar_or_array
+from ._validation import (
+    broadcast,
+    check_solver_options,
+    finite,
+    non_negative,
+    positions,
+    positive,
+    scalar_or_array,
+)
 from .errors import ConvergenceError, NoEquilibriumError
 from .normal import _SIZES, _as_output, _log_weights, _Result
 from .sie import BoundedSolution, BoundedSolver
@@ -238,7 +246,7 @@ class SlidingContact(_Result):
         ``c1``, ``c2`` (the collocation solution is the same function to its tolerance);
         ``-sigma0/E`` in the adhesive zones; zero beyond.
         """
-        x = np.asarray(x_over_R, dtype=float)
+        x = positions("x_over_R", x_over_R, np.shape(self.a_over_R))
         A = np.asarray(self.a_over_R, dtype=float)[..., None]
         C1 = np.asarray(self.c1_over_R, dtype=float)[..., None]
         C2 = np.asarray(self.c2_over_R, dtype=float)[..., None]
@@ -262,7 +270,7 @@ class SlidingContact(_Result):
         (integrated by product integration). ``x_over_R`` has shape ``(m,)`` (or one row
         per point); the result has shape ``points.shape + (m,)``.
         """
-        x = np.asarray(x_over_R, dtype=float)
+        x = positions("x_over_R", x_over_R, np.shape(self.a_over_R))
         shape = np.shape(self.a_over_R)
         A, s, b = self._coefficients()
         n = b.shape[-1]
@@ -283,10 +291,15 @@ class SlidingContact(_Result):
         m1 = (C1 / A)[:, None]
         m2 = (C2 / A)[:, None]
         strip = _log_strip(t, m1, m2) - _log_strip(x0, m1, m2)
-        elastic = (2 / np.pi) * A[:, None] * (lm - s[:, None] * strip)  # over R
-        geom = ((xs - ecc[:, None]) ** 2 - (x0 * A[:, None] - ecc[:, None]) ** 2) / 2
-        g = rho[:, None] * (geom - elastic)
+        with np.errstate(over="ignore", invalid="ignore"):
+            elastic = (2 / np.pi) * A[:, None] * (lm - s[:, None] * strip)  # over R
+            geom = ((xs - ecc[:, None]) ** 2 - (x0 * A[:, None] - ecc[:, None]) ** 2) / 2
+            g = rho[:, None] * (geom - elastic)
         g = np.where(np.abs(t) < 1, 0.0, g)
+        if not np.all(np.isfinite(g)):
+            i = np.unravel_index(int(np.flatnonzero(~np.isfinite(g))[0]), g.shape)
+            raise ValueError(f"the gap is beyond the floating-point range at x_over_R="
+                             f"{float(xs[i])!r}")
         return g.reshape(shape + x.shape[-1:])
 
 
@@ -648,14 +661,10 @@ def _check_common(R_over_h2, h1_over_h2, sigma0_over_E):
     return rho, r, s
 
 
-def _check_method(method, n, tol):
+def _check_method(method, n, tol, raise_on_failure):
     if method not in ("collocation", "closed-form"):
         raise ValueError(f"method must be 'collocation' or 'closed-form', got {method!r}")
-    if not (n == "auto" or (isinstance(n, (int, np.integer)) and not isinstance(n, bool)
-                            and 2 <= n <= 8192)):
-        raise ValueError(f"n must be 'auto' or an integer in [2, 8192], got {n!r}")
-    if not (isinstance(tol, float | int) and not isinstance(tol, bool) and 1e-15 <= tol < 1e-2):
-        raise ValueError(f"tol must be in [1e-15, 1e-2), got {tol!r}")
+    check_solver_options(n, tol, raise_on_failure, n_max=8192)
 
 
 def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
@@ -748,15 +757,20 @@ def sliding_contact(a_over_R: ArrayLike, R_over_h2: ArrayLike, h1_over_h2: Array
     rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
     tau = (np.full((), np.nan) if tau0_over_E is None
            else non_negative("tau0_over_E", tau0_over_E))
-    _check_method(method, n, tol)
+    _check_method(method, n, tol, raise_on_failure)
     scalar = scalar_or_array(A, rho, r, s, tau)
-    A, rho, r, s, tau = np.broadcast_arrays(A, rho, r, s, tau)
+    A, rho, r, s, tau = broadcast(a_over_R=A, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s,
+                                  tau0_over_E=tau)
+    _ref._check_kappa(rho, s, "R_over_h2")
     shape = A.shape
     A, rho, r, s, tau = (np.ascontiguousarray(v, dtype=float).reshape(-1)
                          for v in (A, rho, r, s, tau))
-    d = _solve_flat(A, rho, r, s, method, n, tol)
-    return _pack(d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure,
-                 "sliding_contact")
+    # a contact half-width far outside the solvers' range overflows on the way; _pack's
+    # convergence check reports it
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        d = _solve_flat(A, rho, r, s, method, n, tol)
+        return _pack(d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure,
+                     "sliding_contact")
 
 
 # --------------------------------------------------------------------------------------------
@@ -884,15 +898,26 @@ def sliding_pull_off(R_over_h2: ArrayLike, h1_over_h2: ArrayLike,
     rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
     s = positive("sigma0_over_E", s)
     scalar = scalar_or_array(rho, r, s)
-    rho, r, s = np.broadcast_arrays(rho, r, s)
+    rho, r, s = broadcast(R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s)
+    _ref._check_kappa(rho, s, "R_over_h2")
     shape = rho.shape
     rho, r, s = (np.ascontiguousarray(v, float).reshape(-1) for v in (rho, r, s))
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
-    d = _pulloff_flat(kap, r)
-    sq = np.sqrt(2 / rho)
-    F0 = (np.pi / 2) * d["phi0"]
-    Fmin = (np.pi / 2) * d["phi_min"]
-    a_min = np.where(d["snap"], np.exp(d["lab_min"]) * sq, 0.0)
+    # h1/h2 far from 1 (1e-300, 1e12) overflows on the way to a finite answer; a result that
+    # is not finite is reported below
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        d = _pulloff_flat(kap, r)
+        sq = np.sqrt(2 / rho)
+        F0 = (np.pi / 2) * d["phi0"]
+        Fmin = (np.pi / 2) * d["phi_min"]
+        a_min = np.where(d["snap"], np.exp(d["lab_min"]) * sq, 0.0)
+    bad = ~(np.isfinite(F0) & np.isfinite(Fmin) & np.isfinite(a_min))
+    if np.any(bad):
+        i = int(np.flatnonzero(bad)[0])
+        raise ConvergenceError(
+            f"sliding_pull_off did not converge at R_over_h2={float(rho[i])!r}, h1_over_h2="
+            f"{float(r[i])!r}, sigma0_over_E={float(s[i])!r}: the point is outside the "
+            f"solver's range")
     vals = dict(F_pulloff_over_Eh2=np.where(d["snap"], Fmin, F0), a_over_R_at_pulloff=a_min,
                 mechanism=np.where(d["snap"], "snap-off", "zero-width"),
                 F_zero_width_over_Eh2=F0, c1_over_R_zero_width=d["X1"] * sq,
@@ -942,69 +967,75 @@ def sliding_contact_for_load(F_over_Eh2: ArrayLike, R_over_h2: ArrayLike,
     rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
     tau = (np.full((), np.nan) if tau0_over_E is None
            else non_negative("tau0_over_E", tau0_over_E))
-    _check_method(method, n, tol)
+    _check_method(method, n, tol, raise_on_failure)
     scalar = scalar_or_array(F, rho, r, s, tau)
-    F, rho, r, s, tau = np.broadcast_arrays(F, rho, r, s, tau)
+    F, rho, r, s, tau = broadcast(F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s,
+                                  tau0_over_E=tau)
+    _ref._check_kappa(rho, s, "R_over_h2")
     shape = F.shape
     F, rho, r, s, tau = (np.ascontiguousarray(v, dtype=float).reshape(-1)
                          for v in (F, rho, r, s, tau))
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     phi_t = F * (2 / np.pi)
-    # lower end of the stable branch and its load
-    lab_lo = np.full(F.shape, _LAB_LO)
-    phi_lo = np.zeros(F.shape)
-    adh = s > 0
-    if adh.any():
-        d = _pulloff_flat(kap[adh], r[adh])
-        phi_po = np.where(d["snap"], d["phi_min"], d["phi0"])
-        bad = phi_t[adh] < phi_po
-        if bad.any():
-            i = np.flatnonzero(bad)[0]
-            g = np.flatnonzero(adh)[i]
+    # as in sliding_pull_off: far from h1 = h2 the search overflows on the way; the
+    # convergence check of the state found reports a failure
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        # lower end of the stable branch and its load
+        lab_lo = np.full(F.shape, _LAB_LO)
+        phi_lo = np.zeros(F.shape)
+        adh = s > 0
+        if adh.any():
+            d = _pulloff_flat(kap[adh], r[adh])
+            phi_po = np.where(d["snap"], d["phi_min"], d["phi0"])
+            bad = phi_t[adh] < phi_po
+            if bad.any():
+                i = np.flatnonzero(bad)[0]
+                g = np.flatnonzero(adh)[i]
+                raise NoEquilibriumError(
+                    f"no steadily sliding contact carries F_over_Eh2={float(F[g])!r}: it is below "
+                    f"the pull-off force F_pulloff_over_Eh2={float(np.pi / 2 * phi_po[i])!r} "
+                    f"(R_over_h2={float(rho[g])!r}, h1_over_h2={float(r[g])!r}, "
+                    f"sigma0_over_E={float(s[g])!r}); the cylinder has pulled off")
+            lab_lo[adh] = np.where(d["snap"], d["lab_min"], _LAB_LO)
+            phi_lo[adh] = np.where(d["snap"], d["phi_min"], d["phi0"])
+        if np.any(~adh & (phi_t <= 0)):
+            i = np.flatnonzero(~adh & (phi_t <= 0))[0]
             raise NoEquilibriumError(
-                f"no steadily sliding contact carries F_over_Eh2={float(F[g])!r}: it is below "
-                f"the pull-off force F_pulloff_over_Eh2={float(np.pi / 2 * phi_po[i])!r} "
-                f"(R_over_h2={float(rho[g])!r}, h1_over_h2={float(r[g])!r}, "
-                f"sigma0_over_E={float(s[g])!r}); the cylinder has pulled off")
-        lab_lo[adh] = np.where(d["snap"], d["lab_min"], _LAB_LO)
-        phi_lo[adh] = np.where(d["snap"], d["phi_min"], d["phi0"])
-    if np.any(~adh & (phi_t <= 0)):
-        i = np.flatnonzero(~adh & (phi_t <= 0))[0]
-        raise NoEquilibriumError(
-            f"no contact carries F_over_Eh2={float(F[i])!r} without adhesion "
-            f"(sigma0_over_E=0): the load must be > 0")
-    # upper end: where Phi exceeds the target (Hertz: Phi >= abar^2 - kappa abar sinh ...)
-    lab_hi = np.log(np.sqrt(np.maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
-    ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
-    for _ in range(60):
-        low = ph_hi < phi_t
-        if not low.any():
-            break
-        lab_hi = np.where(low, lab_hi + np.log(2.0), lab_hi)
+                f"no contact carries F_over_Eh2={float(F[i])!r} without adhesion "
+                f"(sigma0_over_E=0): the load must be > 0")
+        # upper end: where Phi exceeds the target (Hertz: Phi >= abar^2 - kappa abar sinh ...)
+        lab_hi = np.log(np.sqrt(np.maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
         ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
-    # bracketed Newton in ln abar on [lab_lo, lab_hi], where Phi increases
-    lo, hi = lab_lo.copy(), lab_hi.copy()
-    lab = 0.5 * (lo + hi)
-    u1 = u2 = None
-    active = np.ones(F.shape, bool)
-    for _ in range(200):
-        ph, dph, u1, u2 = _phi_at(lab, kap, r)
-        fx = ph - phi_t
-        up = fx > 0
-        hi = np.where(up, lab, hi)
-        lo = np.where(up, lo, lab)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            nxt = lab - fx / (dph * np.exp(lab))
-        nxt = np.where(np.isfinite(nxt) & (nxt > lo) & (nxt < hi), nxt, 0.5 * (lo + hi))
-        done = (np.abs(fx) <= 4e-16 * np.maximum(1.0, np.abs(phi_t))) | \
-            (np.abs(nxt - lab) <= 1e-15 * np.maximum(1.0, np.abs(lab))) | \
-            (hi - lo <= 1e-15 * np.maximum(1.0, np.abs(hi)))
-        active &= ~done
-        if not active.any():
-            break
-        lab = np.where(active, nxt, lab)
-    A = np.exp(lab) * np.sqrt(2 / rho)
-    dd = _solve_flat(A, rho, r, s, method, n, tol,
-                     u_guess=(u1, u2) if method == "closed-form" else None)
-    return _pack(dd, A, rho, r, s, tau, method, shape, scalar, raise_on_failure,
-                 "sliding_contact_for_load")
+        for _ in range(60):
+            low = ph_hi < phi_t
+            if not low.any():
+                break
+            lab_hi = np.where(low, lab_hi + np.log(2.0), lab_hi)
+            ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
+        # bracketed Newton in ln abar on [lab_lo, lab_hi], where Phi increases
+        lo, hi = lab_lo.copy(), lab_hi.copy()
+        lab = 0.5 * (lo + hi)
+        u1 = u2 = None
+        active = np.ones(F.shape, bool)
+        for _ in range(200):
+            ph, dph, u1, u2 = _phi_at(lab, kap, r)
+            fx = ph - phi_t
+            up = fx > 0
+            hi = np.where(up, lab, hi)
+            lo = np.where(up, lo, lab)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                nxt = lab - fx / (dph * np.exp(lab))
+            nxt = np.where(np.isfinite(nxt) & (nxt > lo) & (nxt < hi), nxt, 0.5 * (lo + hi))
+            done = (np.abs(fx) <= 4e-16 * np.maximum(1.0, np.abs(phi_t))) | \
+                (np.abs(nxt - lab) <= 1e-15 * np.maximum(1.0, np.abs(lab))) | \
+                (hi - lo <= 1e-15 * np.maximum(1.0, np.abs(hi)))
+            active &= ~done
+            if not active.any():
+                break
+            lab = np.where(active, nxt, lab)
+        A = np.exp(lab) * np.sqrt(2 / rho)
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # see sliding_contact
+        dd = _solve_flat(A, rho, r, s, method, n, tol,
+                         u_guess=(u1, u2) if method == "closed-form" else None)
+        return _pack(dd, A, rho, r, s, tau, method, shape, scalar, raise_on_failure,
+                     "sliding_contact_for_load")

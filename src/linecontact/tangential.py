@@ -94,7 +94,15 @@ import numpy as np
 import scipy.special
 from numpy.typing import ArrayLike, NDArray
 
-from ._validation import check_array, non_negative, positive, scalar_or_array
+from ._validation import (
+    broadcast,
+    check_array,
+    check_solver_options,
+    non_negative,
+    positions,
+    positive,
+    scalar_or_array,
+)
 from .errors import ConvergenceError, NoEquilibriumError
 from .normal import _as_output, _Result
 from .sie import BoundedSolver, _log_moment_vector
@@ -132,14 +140,10 @@ _SLIDING = "sliding"
 # input checks
 
 
-def _check_options(method, n, tol, on_sliding):
+def _check_options(method, n, tol, raise_on_failure, on_sliding):
     if method not in ("closed-form", "collocation"):
         raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
-    if not (n == "auto" or (isinstance(n, (int, np.integer)) and not isinstance(n, bool)
-                            and 2 <= n <= SIZES[-1])):
-        raise ValueError(f"n must be 'auto' or an integer in [2, {SIZES[-1]}], got {n!r}")
-    if not (isinstance(tol, float | int) and not isinstance(tol, bool) and 1e-15 <= tol < 1e-2):
-        raise ValueError(f"tol must be in [1e-15, 1e-2), got {tol!r}")
+    check_solver_options(n, tol, raise_on_failure, n_max=SIZES[-1])
     if on_sliding not in ("report", "raise"):
         raise ValueError(f"on_sliding must be 'report' or 'raise', got {on_sliding!r}")
 
@@ -397,7 +401,8 @@ def _solve_points(delta, active, method, n, tol, kernel, rate, T_closed, dT_clos
             if T_target is None:
                 break
             err = r["T"] - T_target[idx]
-            slope = dT_closed(d)
+            with np.errstate(divide="ignore", invalid="ignore"):  # infinite slope at d = a
+                slope = dT_closed(d)
             ok = np.abs(err) <= _FORCE_TOL * T_full
             if ok.all():
                 break
@@ -415,7 +420,7 @@ def _solve_points(delta, active, method, n, tol, kernel, rate, T_closed, dT_clos
     return out
 
 
-def _raise_unconverged(name, converged, labels: dict, out) -> None:
+def _raise_unconverged(name, converged, labels: dict, out, n) -> None:
     conv = np.asarray(converged).reshape(-1)
     if conv.all():
         return
@@ -424,8 +429,10 @@ def _raise_unconverged(name, converged, labels: dict, out) -> None:
     raise ConvergenceError(
         f"{name} (collocation) did not converge at {where} (error estimate "
         f"{out['tail'][i]:.3g}, stick residual {out['stick'][i]:.3g}, force residual "
-        f"{out['force'][i]:.3g}, n = {out['n'][i]}): the stick zone is too close to its "
-        f"limit for n <= {SIZES[-1]}; use method='closed-form'")
+        f"{out['force'][i]:.3g}, n = {out['n'][i]}): " + (
+            f"the stick zone is too close to its limit for n <= {SIZES[-1]}; use "
+            f"method='closed-form'" if n == "auto" else
+            f"n = {out['n'][i]} nodes are too few for tol; try n='auto'"))
 
 
 def _raise_sliding(name, sliding, T_name, T, T_full) -> None:
@@ -465,7 +472,7 @@ class _Tangential(_Result):
     converged: NDArray | bool
 
     def _points(self, x_over_a):
-        x = np.asarray(x_over_a, dtype=float)
+        x = positions("x_over_a", x_over_a, np.shape(self.d_over_a))
         dlt = np.asarray(self.d_over_a, dtype=float)[..., None]
         st = np.asarray(self.state)[..., None]
         return x, dlt, st
@@ -697,9 +704,10 @@ error_estimate, converged
         x, dlt, st = self._points(x_over_a)
         p0 = np.asarray(self.a_over_R, dtype=float)[..., None] / 2
         mu = np.asarray(self.mu, dtype=float)[..., None]
-        hertz = np.sqrt(np.clip(1 - x * x, 0.0, None))
+        xq = np.clip(x, -2.0, 2.0)  # the terms vanish beyond |x| = a; no overflow of x*x
+        hertz = np.sqrt(np.clip(1 - xq * xq, 0.0, None))
         if self.method == "closed-form":
-            corr = np.sqrt(np.clip(dlt * dlt - x * x, 0.0, None))
+            corr = np.sqrt(np.clip(dlt * dlt - xq * xq, 0.0, None))
         else:
             b = self._coefficients(lambda d, n: _solver(n).solve(
                 -d[:, None] * _solver(n).collocation_unit, values=False).coefficients)
@@ -750,11 +758,12 @@ error_estimate, converged
         x, dlt, st = self._points(x_over_a)
         p0 = np.asarray(self.a_over_R, dtype=float)[..., None] / 2
         mu = np.asarray(self.mu, dtype=float)[..., None]
-        hertz = np.sqrt(np.clip(1 - x * x, 0.0, None))
+        xq = np.clip(x, -2.0, 2.0)  # the terms vanish beyond |x| = a; no overflow of x*x
+        hertz = np.sqrt(np.clip(1 - xq * xq, 0.0, None))
         m = (1 + dlt) / 2
         h = (1 - dlt) / 2
         if self.method == "closed-form":
-            corr = np.sqrt(np.clip(h * h - (x - m) ** 2, 0.0, None))
+            corr = np.sqrt(np.clip(h * h - (xq - m) ** 2, 0.0, None))
         else:
             def coef(d, n):
                 mm, hh = (1 + d) / 2, (1 - d) / 2
@@ -799,7 +808,7 @@ def _run(pb: _Problem, d_over_a, load, load_name, method, n, tol, raise_on_failu
          on_sliding, params: dict):
     """Validate the state variable, solve, return (fields, diagnostics, scalar-flag parts)."""
     _one_of(d_over_a, load, load_name)
-    _check_options(method, n, tol, on_sliding)
+    _check_options(method, n, tol, raise_on_failure, on_sliding)
     names = list(params)
     arrays = list(params.values())
     if d_over_a is not None:
@@ -810,7 +819,9 @@ def _run(pb: _Problem, d_over_a, load, load_name, method, n, tol, raise_on_failu
         dl = None
         given = (load_name, non_negative(load_name, load))
     scalar = scalar_or_array(*arrays, given[1])
-    *arrays, g = (np.asarray(v, float) for v in np.broadcast_arrays(*arrays, given[1]))
+    *arrays, g = (np.asarray(v, float) for v in broadcast(**dict(zip(names, arrays,
+                                                                   strict=True)),
+                                                          **{given[0]: given[1]}))
     shape = g.shape
     if dl is not None:
         dl = g
@@ -853,7 +864,7 @@ def _run(pb: _Problem, d_over_a, load, load_name, method, n, tol, raise_on_failu
         if raise_on_failure:
             labels = dict(zip(names, arrays, strict=True))
             labels[given[0]] = g
-            _raise_unconverged(pb.name, converged, labels, out)
+            _raise_unconverged(pb.name, converged, labels, out, n)
     diag = dict(n_collocation=out["n"].reshape(shape), residual_stick=out["stick"].reshape(shape),
                 residual_force=out["force"].reshape(shape),
                 residual_consistency=out["cons"].reshape(shape),
@@ -1149,6 +1160,11 @@ class CylinderTangential:
 
 def _cylinder_tangential(problem, cylinder, normal_load, friction_stress, friction_coefficient,
                          d_over_a, tangential_load, method, on_sliding) -> CylinderTangential:
+    from .materials import Cylinder
+
+    if not isinstance(cylinder, Cylinder):
+        raise ValueError(f"cylinder must be a linecontact.Cylinder (Cylinder.from_modulus or "
+                         f"Cylinder.from_materials), got {cylinder!r}")
     if (friction_stress is None) == (friction_coefficient is None):
         raise ValueError("give exactly one of friction_stress (constant tau0 [Pa]) or "
                          "friction_coefficient (Coulomb mu)")
@@ -1156,31 +1172,46 @@ def _cylinder_tangential(problem, cylinder, normal_load, friction_stress, fricti
         raise ValueError("give exactly one of d_over_a or tangential_load [N/m]")
     E = cylinder.modulus
     rolling = problem == "steady rolling"
-    if friction_coefficient is not None:
+    coulomb = friction_coefficient is not None
+    pb = (_CARTER if coulomb else _ROLLING) if rolling else \
+        (_CATTANEO_MINDLIN if coulomb else _INITIATION)
+    # every input checked, and the shapes against each other, before any solve
+    if coulomb:
+        F = check_array("normal_load", normal_load)
+        fr_name, fr = "friction_coefficient", positive("friction_coefficient",
+                                                       friction_coefficient)
+    else:
+        F = check_array("normal_load", normal_load, low=-np.inf)
+        fr_name, fr = "friction_stress", positive("friction_stress", friction_stress)
+    if d_over_a is not None:
+        st_name = "d_over_a"
+        st = check_array("d_over_a", d_over_a, low=pb.d_low, low_inclusive=pb.d_low_inclusive,
+                         high=1.0)
+    else:
+        st_name, st = "tangential_load", non_negative("tangential_load", tangential_load)
+    broadcast(normal_load=F, **{fr_name: fr, st_name: st})
+    d = st if d_over_a is not None else None
+    if coulomb:
         if cylinder.cohesive_stress != 0:
             raise ValueError("Coulomb friction is the macro-scale counterpart for the "
                              "non-adhesive Hertz contact: use a Cylinder without adhesion "
                              "(cohesive_stress = 0), or give friction_stress")
-        F = check_array("normal_load", normal_load)
         contact = cylinder.contact(load=F)
         A = np.asarray(contact.contact_half_width) / cylinder.radius
-        mu = positive("friction_coefficient", friction_coefficient)
-        T = None if tangential_load is None else \
-            non_negative("tangential_load", tangential_load) / (mu * F)
+        mu = fr
+        T = None if d is not None else st / (mu * F)
         fn = steady_rolling_coulomb if rolling else sliding_initiation_coulomb
-        r = fn(mu, A, d_over_a, T_over_muF=T, method=method, on_sliding=on_sliding)
+        r = fn(mu, A, d, T_over_muF=T, method=method, on_sliding=on_sliding)
         full = mu * F
         friction = "coulomb"
     else:
-        F = check_array("normal_load", normal_load, low=-np.inf)
         contact = cylinder.contact(load=F)
         a = np.asarray(contact.contact_half_width)
-        t0 = positive("friction_stress", friction_stress)
-        T = None if tangential_load is None else \
-            non_negative("tangential_load", tangential_load) / (E * a)
+        t0 = fr
+        T = None if d is not None else st / (E * a)
         fn = steady_rolling if rolling else sliding_initiation
         # broadcast with a so that every field has the shape of the points
-        r = fn(t0 / E + 0 * a, d_over_a, T_over_Ea=T, method=method, on_sliding=on_sliding)
+        r = fn(t0 / E + 0 * a, d, T_over_Ea=T, method=method, on_sliding=on_sliding)
         full = 2 * a * t0
         friction = "constant"
     a = np.asarray(contact.contact_half_width)
