@@ -17,7 +17,12 @@ def test_composite_modulus_and_constants():
     A, B = lc.compliance_constants(E1, n1, E2, n2)
     assert math.isclose(A, 8 / E, rel_tol=1e-14)  # Eq 7: A = 8/E
     assert lc.dundurs_beta(E1, n1, E1, n1) == 0.0
-    assert lc.dundurs_beta(E1, n1, E2, n2) == pytest.approx(B / A)
+    assert lc.dundurs_beta(E1, n1, E2, n2) == pytest.approx(-B / A)
+    # the standard form, cylinder = body 1
+    G1, G2 = E1 / (2 * (1 + n1)), E2 / (2 * (1 + n2))
+    beta = (G1 * (1 - 2 * n2) - G2 * (1 - 2 * n1)) / (2 * (G1 * (1 - n2) + G2 * (1 - n1)))
+    assert lc.dundurs_beta(E1, n1, E2, n2) == pytest.approx(beta, rel=1e-13)
+    assert beta < 0  # silica (softer) on silicon
     # rigid substrate
     assert math.isclose(lc.composite_modulus(E1, n1, np.inf, 0.3), E1 / (1 - n1**2))
 

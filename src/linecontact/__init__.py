@@ -5,16 +5,13 @@ length over ``E h``, stresses over ``E``; compressive load positive):
 
 - :func:`normal_contact`, :func:`contact_for_load`, :func:`equilibria`, :func:`non_contact`,
   :func:`pull_off`, :func:`load_curve` -- normal loading with Maugis--Dugdale adhesion;
-- :func:`sliding_initiation`, :func:`steady_rolling` (and their Coulomb counterparts) --
-  tangential loading with a constant friction stress (:mod:`linecontact.tangential`);
+- :func:`sliding_initiation`, :func:`steady_rolling` (and their ``_coulomb`` counterparts)
+  -- tangential loading with a constant friction stress (:mod:`linecontact.tangential`;
+  forces over ``E a``);
 - :func:`sliding_contact`, :func:`sliding_contact_for_load`, :func:`sliding_pull_off` --
   steady sliding with different trailing and leading adhesion (:mod:`linecontact.sliding`);
 - :mod:`linecontact.reference` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14);
-- :func:`sliding_contact`, :func:`sliding_contact_for_load`, :func:`sliding_pull_off` --
-  steady sliding with different trailing and leading adhesion (:mod:`linecontact.sliding`);
 - :mod:`linecontact.sie` -- the Gauss--Chebyshev singular-integral core;
-- :func:`sliding_initiation`, :func:`steady_rolling` (and their ``_coulomb`` counterparts)
-  -- tangential loading (:mod:`linecontact.tangential`; forces over ``E a``);
 - :class:`Cylinder` -- the SI layer (materials, adhesion as (sigma0, h) or (w, z0)).
 """
 

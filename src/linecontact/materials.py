@@ -12,9 +12,9 @@ Materials (Eq. 7 of the paper): body 1 is the cylinder, body 2 the substrate,
     A = \frac{4(1-\nu_1)}{G_1} + \frac{4(1-\nu_2)}{G_2} = \frac{8}{E},\quad
     B = \frac{2-4\nu_1}{G_1} - \frac{2-4\nu_2}{G_2}.
 
-The solvers assume the uncoupled case ``B = 0``; :func:`dundurs_beta` gives ``B/A`` (Dundurs'
-second parameter) and a :class:`~linecontact.errors.CouplingWarning` is issued when
-``|B/A| > BETA_WARN``.
+The solvers assume the uncoupled case ``B = 0``; :func:`dundurs_beta` gives Dundurs' second
+parameter ``beta = -B/A`` and a :class:`~linecontact.errors.CouplingWarning` is issued when
+``|beta| > BETA_WARN``.
 
 Adhesion is given either as the Dugdale stress and range ``(sigma0, h)`` or as the work of
 adhesion and equilibrium spacing ``(w, z0)`` of a Lennard-Jones surface potential (Eq. 1).
@@ -53,7 +53,7 @@ __all__ = [
     "dundurs_beta",
 ]
 
-#: |B/A| above which a CouplingWarning is issued.
+#: |beta| = |B/A| above which a CouplingWarning is issued.
 BETA_WARN = 0.05
 
 
@@ -92,9 +92,13 @@ def compliance_constants(E1: ArrayLike, nu1: ArrayLike, E2: ArrayLike, nu2: Arra
 
 
 def dundurs_beta(E1: ArrayLike, nu1: ArrayLike, E2: ArrayLike, nu2: ArrayLike):
-    """``B/A`` of Eq. (7): Dundurs' second parameter (0 for identical materials)."""
+    r"""Dundurs' second parameter :math:`\beta = -B/A` (Eq. 7; 0 for identical materials).
+
+    With the cylinder as body 1: :math:`\beta = [G_1(1-2\nu_2) - G_2(1-2\nu_1)] /
+    [2(G_1(1-\nu_2) + G_2(1-\nu_1))]`, the standard sign convention.
+    """
     A, B = compliance_constants(E1, nu1, E2, nu2)
-    return B / A
+    return -B / A
 
 
 def adhesion_from_work(work_of_adhesion: ArrayLike, equilibrium_spacing: ArrayLike):
@@ -190,7 +194,7 @@ class Cylinder:
     adhesion_range : float
         ``h`` [m].
     dundurs_beta : float
-        ``B/A`` (0 when only the composite modulus was given).
+        Dundurs' ``beta = -B/A`` (0 when only the composite modulus was given).
 
     Examples
     --------
@@ -248,7 +252,7 @@ class Cylinder:
         E = float(composite_modulus(E1, nu1, E2, nu2))
         beta = float(dundurs_beta(E1, nu1, E2, nu2))
         if abs(beta) > BETA_WARN:
-            warnings.warn(f"Dundurs beta = B/A = {beta:.3g} is not small (|beta| > {BETA_WARN}): "
+            warnings.warn(f"Dundurs beta = -B/A = {beta:.3g} is not small (|beta| > {BETA_WARN}): "
                           "normal and tangential tractions are coupled, but linecontact "
                           "solves the uncoupled case B = 0", CouplingWarning, stacklevel=2)
         s0, h = _adhesion(cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
