@@ -161,3 +161,12 @@ def test_shared_cli_contract():
                        timeout=600, env=dict(os.environ))
     assert "BROKEN" not in p.stdout, p.stdout
     assert p.returncode == 0, p.stdout + p.stderr
+
+
+def test_coupling_warning_is_one_line(capsys):
+    code, out, err = run(capsys, "pulloff", "--radius", "50e-9", "--E1", "70e9", "--nu1", "0.17",
+                         "--E2", "160e9", "--nu2", "0.22", "--sigma0", "1e9", "--h", "0.5e-9",
+                         "--json")
+    assert code == 0 and json.loads(out)["mechanism"] in ("zero-width", "snap-off")
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and lines[0].startswith("linecontact pulloff: warning: Dundurs beta")

@@ -14,6 +14,7 @@ import json
 import math
 import re
 import sys
+import warnings
 from collections.abc import Sequence
 
 import numpy as np
@@ -386,8 +387,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         print("linecontact: error: give a command: normal, pulloff, curve, slide-init, roll, "
               "slide, paper or cite (linecontact --help lists them)", file=sys.stderr)
         return 2
+    def one_line_warning(message, category, filename, lineno, file=None, line=None):
+        print(f"linecontact {args.command}: warning: {message}", file=sys.stderr)
+
     try:
-        return int(args.func(args))
+        with warnings.catch_warnings():
+            warnings.showwarning = one_line_warning
+            return int(args.func(args))
     except ConvergenceError as exc:
         print(f"linecontact {args.command}: error: {exc}", file=sys.stderr)
         return 1
