@@ -152,6 +152,16 @@ def _groups(args):
     return cyl.R_over_h, cyl.sigma0_over_E, cyl
 
 
+def _add_width_options(p, load_flag: str, load_help: str) -> None:
+    """The options read by :func:`_half_widths`: widths or loads, nondimensional or SI."""
+    p.add_argument("--a-over-R", type=float, nargs="+", metavar="A", help="contact half-widths")
+    p.add_argument("--a-over-R-range", type=float, nargs=3, metavar=("START", "STOP", "NUM"),
+                   help="linearly spaced contact half-widths")
+    p.add_argument(load_flag, type=float, nargs="+", metavar="F", help=load_help)
+    p.add_argument("--a", type=float, nargs="+", help="contact half-widths [m] (SI mode)")
+    p.add_argument("--load", type=float, nargs="+", help="normal loads [N/m] (SI mode)")
+
+
 def _half_widths(args, cyl, load_attr: str):
     """Contact half-widths a/R from --a-over-R, --a-over-R-range or --a [m]; None for loads.
 
@@ -336,13 +346,7 @@ def build_parser() -> argparse.ArgumentParser:
     n = sub.add_parser("normal", help="adhesive-zone width and load for given contact widths "
                                       "(or the contact for given loads)")
     _add_groups(n)
-    n.add_argument("--a-over-R", type=float, nargs="+", metavar="A", help="contact half-widths")
-    n.add_argument("--a-over-R-range", type=float, nargs=3, metavar=("START", "STOP", "NUM"),
-                   help="linearly spaced contact half-widths")
-    n.add_argument("--F-over-Eh", type=float, nargs="+", metavar="F",
-                   help="loads (inverse problem)")
-    n.add_argument("--a", type=float, nargs="+", help="contact half-widths [m] (SI mode)")
-    n.add_argument("--load", type=float, nargs="+", help="loads [N/m] (SI mode)")
+    _add_width_options(n, "--F-over-Eh", "loads (inverse problem)")
     n.add_argument("--branch", choices=("stable", "unstable"), default="stable",
                    help="for given loads: the stable (default) or unstable contact")
     n.add_argument("--method", choices=("closed-form", "collocation"), default="closed-form")

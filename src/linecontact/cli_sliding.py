@@ -27,7 +27,7 @@ _EPILOG = ("Axes: x along the sliding direction (the cylinder moves to +x), orig
 
 def register_slide(sub) -> argparse.ArgumentParser:
     """Add the ``slide`` subcommand to the subparsers ``sub``; returns its parser."""
-    from .cli import _add_si_materials
+    from .cli import _add_si_materials, _add_width_options
 
     p = sub.add_parser("slide", help="steady sliding: adhesive zones, eccentricity, load and "
                                      "moment with different trailing/leading adhesion",
@@ -50,13 +50,7 @@ def register_slide(sub) -> argparse.ArgumentParser:
     si.add_argument("--z0", type=float, help="equilibrium spacing [m]")
     si.add_argument("--tau0", type=float, help="interface shear strength [Pa]")
     w = p.add_argument_group("contact widths or loads (exactly one)")
-    w.add_argument("--a-over-R", type=float, nargs="+", metavar="A", help="contact half-widths")
-    w.add_argument("--a-over-R-range", type=float, nargs=3, metavar=("START", "STOP", "NUM"),
-                   help="linearly spaced contact half-widths")
-    w.add_argument("--F-over-Eh2", type=float, nargs="+", metavar="F",
-                   help="normal loads (inverse problem, stable branch)")
-    w.add_argument("--a", type=float, nargs="+", help="contact half-widths [m] (SI mode)")
-    w.add_argument("--load", type=float, nargs="+", help="normal loads [N/m] (SI mode)")
+    _add_width_options(w, "--F-over-Eh2", "normal loads (inverse problem, stable branch)")
     p.add_argument("--method", choices=("collocation", "closed-form"), default="collocation",
                    help="the paper's Gauss-Chebyshev collocation (default) or the closed form")
     p.add_argument("--json", action="store_true", help="JSON array of records on stdout")
