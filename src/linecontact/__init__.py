@@ -15,11 +15,14 @@ length over ``E h``, stresses over ``E``; compressive load positive):
 - :class:`Cylinder` -- the SI layer (materials, adhesion as (sigma0, h) or (w, z0)).
 """
 
-__version__ = "0.1.0"
-
+from ._version import __version__
+from .cylinder import (
+    Cylinder,
+    cylinder_sliding_initiation,
+    cylinder_steady_rolling,
+)
 from .errors import ConvergenceError, CouplingWarning, NoEquilibriumError
 from .materials import (
-    Cylinder,
     adhesion_from_work,
     compliance_constants,
     composite_modulus,
@@ -44,8 +47,6 @@ from .sliding import (
     sliding_pull_off,
 )
 from .tangential import (
-    cylinder_sliding_initiation,
-    cylinder_steady_rolling,
     sliding_initiation,
     sliding_initiation_coulomb,
     steady_rolling,

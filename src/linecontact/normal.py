@@ -23,7 +23,7 @@ constant, so no approach is reported: the load is controlled by ``F`` or by ``a`
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
+from dataclasses import dataclass, field
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -41,7 +41,8 @@ from ._validation import (
     scalar_or_array,
 )
 from .errors import ConvergenceError, NoEquilibriumError
-from .sie import BoundedSolver
+from .results import Result, as_output
+from .sie import SIZES, BoundedSolver, log_end_moments
 
 __all__ = [
     "Equilibrium",
@@ -66,49 +67,12 @@ ZERO_WIDTH_RTOL = 1e-9
 #: contact_for_load must meet; it reaches ~1e-15 wherever the solver's bracket holds the state.
 _LOAD_RTOL = 1e-9
 
-_SIZES = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, 768, 1024, 1536, 2048)
-
-
-def _as_output(value, scalar: bool):
-    if isinstance(value, np.generic):
-        return value.item() if scalar else np.asarray(value)
-    if isinstance(value, np.ndarray) and scalar and value.ndim == 0:
-        return value.item()
-    if isinstance(value, np.ndarray) and scalar and value.size == 1:
-        return value.reshape(()).item()
-    return value
-
-
-class _Result:
-    """Mixin: dict / record export of frozen result dataclasses."""
-
-    def to_dict(self) -> dict:
-        """All fields, arrays as lists (JSON-ready)."""
-        d = {}
-        for f in fields(self):  # type: ignore[arg-type]
-            if not f.repr:
-                continue
-            v = getattr(self, f.name)
-            d[f.name] = v.tolist() if isinstance(v, np.ndarray) else v
-        return d
-
-    def to_records(self) -> list[dict]:
-        """One dict per point (arrays are broadcast; scalars repeat)."""
-        d = {k: np.atleast_1d(np.asarray(v, dtype=object if isinstance(v, str) else None))
-             for k, v in self.to_dict().items()}
-        n = max(v.size for v in d.values())
-        recs = []
-        for i in range(n):
-            rec = {}
-            for k, v in d.items():
-                x = v.reshape(-1)[i if v.size == n else 0]
-                rec[k] = x.item() if hasattr(x, "item") else x
-            recs.append(rec)
-        return recs
+#: Collocation sizes tried by ``n="auto"``.
+_SIZES = SIZES[: SIZES.index(2048) + 1]
 
 
 @dataclass(frozen=True)
-class NormalContact(_Result):
+class NormalContact(Result):
     """Adhesive normal contact at given contact half-widths.
 
     Attributes
@@ -253,30 +217,6 @@ def _rhs(solver: BoundedSolver, A, s, u):
     return f, df
 
 
-def _log_weights(n: int, u: NDArray) -> tuple[NDArray, NDArray]:
-    """mu_j(cosh u) - mu_j(1) and d mu_j(cosh u)/du for the bounded product rule."""
-    e = np.empty(u.shape + (n + 2,))
-    e[..., 0] = 1.0
-    e[..., 1:] = np.exp(-u)[..., None]
-    np.cumprod(e, axis=-1, out=e)  # e_k = exp(-k u)
-    j = np.arange(n)
-    mu = (np.pi / 2) * e[..., 2:] / (j + 2)
-    mu[..., 1:] -= (np.pi / 2) * e[..., 1:n] / j[1:]
-    mu[..., 0] += (np.pi / 2) * u  # c0(m) - c0(1) = u
-    mu -= _mu_at_one(n)
-    dmu = -(np.pi / 2) * e[..., 2:]
-    dmu[..., 1:] += (np.pi / 2) * e[..., 1:n]
-    dmu[..., 0] += np.pi / 2
-    return mu, dmu
-
-
-def _mu_at_one(n: int) -> NDArray:
-    j = np.arange(n)
-    mu1 = (np.pi / 2) / (j + 2)
-    mu1[1:] -= (np.pi / 2) / j[1:]
-    return mu1
-
-
 def _I(u: NDArray) -> tuple[NDArray, NDArray]:
     """I(m) = int_1^m ln((m-t)/(m+t)) dt and dI/du, m = cosh u (the last term of Eq. 11)."""
     small = u < 1.0
@@ -310,7 +250,7 @@ def _colloc_eval(solver: BoundedSolver, A, s, rho, u):
     sol = solver.solve(f, values=False)
     dsol = solver.solve(df, values=False)
     b, db = sol.coefficients, dsol.coefficients
-    dmu, dmu_du = _log_weights(n, u)
+    dmu, dmu_du = log_end_moments(n, u)
     J = np.einsum("...j,...j->...", b, dmu)
     dJ = np.einsum("...j,...j->...", db, dmu) + np.einsum("...j,...j->...", b, dmu_du)
     Iv, dI = _I(u)
@@ -478,7 +418,7 @@ def normal_contact(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: Arra
     vals = dict(a_over_R=A, c_over_R=C, F_over_Eh=F, R_over_h=rho, sigma0_over_E=s,
                 n_collocation=ncol, residual_separation=res, residual_consistency=cons,
                 error_estimate=err, converged=converged, stable=stable)
-    vals = {k: _as_output(np.asarray(v), scalar) for k, v in vals.items()}
+    vals = {k: as_output(np.asarray(v), scalar) for k, v in vals.items()}
     return NormalContact(method=method, **vals)
 
 
@@ -487,7 +427,7 @@ def normal_contact(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: Arra
 
 
 @dataclass(frozen=True)
-class PullOff(_Result):
+class PullOff(Result):
     """Pull-off under load control: the global minimum of the load on the contact branch.
 
     Attributes
@@ -588,9 +528,9 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     d = _pulloff_arrays(rho.astype(float), s.astype(float))
     d.pop("us")
     lam = 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
-    vals = {k: _as_output(np.asarray(v), scalar) for k, v in d.items()}
-    return PullOff(R_over_h=_as_output(rho, scalar), sigma0_over_E=_as_output(s, scalar),
-                   maugis_parameter=_as_output(lam, scalar), **vals)
+    vals = {k: as_output(np.asarray(v), scalar) for k, v in d.items()}
+    return PullOff(R_over_h=as_output(rho, scalar), sigma0_over_E=as_output(s, scalar),
+                   maugis_parameter=as_output(lam, scalar), **vals)
 
 
 def _solve_u_for_phi(target, kap, lo_w, hi_w, increasing):
@@ -679,12 +619,12 @@ def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: A
     vals = dict(a_over_R=A, c_over_R=C, F_over_Eh=Fc, R_over_h=rho, sigma0_over_E=s,
                 n_collocation=z.astype(int), residual_separation=z, residual_consistency=z,
                 error_estimate=res, converged=converged, stable=stable)
-    vals = {k: _as_output(np.asarray(v), scalar) for k, v in vals.items()}
+    vals = {k: as_output(np.asarray(v), scalar) for k, v in vals.items()}
     return NormalContact(method="closed-form", **vals)
 
 
 @dataclass(frozen=True)
-class NonContact(_Result):
+class NonContact(Result):
     """Equilibrium without contact: the adhesive zone ``|x| < c`` only, central gap ``g0``.
 
     Attributes
@@ -728,7 +668,7 @@ def non_contact(central_gap_over_h: ArrayLike, R_over_h: ArrayLike,
     F = -2 * s * rho * C
     vals = dict(central_gap_over_h=g, c_over_R=C, F_over_Eh=F, R_over_h=rho, sigma0_over_E=s,
                 stable=np.zeros(g.shape, bool))
-    return NonContact(**{k_: _as_output(v, scalar) for k_, v in vals.items()})
+    return NonContact(**{k_: as_output(v, scalar) for k_, v in vals.items()})
 
 
 @dataclass(frozen=True)
@@ -774,7 +714,7 @@ def equilibria(F_over_Eh: float, R_over_h: float, sigma0_over_E: float) -> tuple
 
 
 @dataclass(frozen=True)
-class LoadCurve(_Result):
+class LoadCurve(Result):
     """The whole load curve: non-contact branch then the contact branch.
 
     Arrays are ordered from the largest central gap (``g0 = h``, ``F = 0``) through

@@ -58,13 +58,19 @@ import scipy.linalg
 from numpy.typing import ArrayLike, NDArray
 
 __all__ = [
+    "SIZES",
     "BoundedSolution",
     "BoundedSolver",
     "EndBoundedSolver",
     "UnboundedSolver",
     "bounded_rule",
     "chebyshev_log_expansion",
+    "log_end_moments",
 ]
+
+#: The ladder of collocation sizes that adaptive solvers climb (each step about 1.5x).
+SIZES = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, 768, 1024, 1536, 2048, 3072,
+         4096, 6144, 8192)
 
 
 _DCT_FROM = 48  # from this size on the bounded solve uses the fast cosine transform
@@ -377,6 +383,57 @@ def _log_moment_vector_dv(y: NDArray, n: int) -> NDArray:
     dmu[..., 1:] += (np.pi / 2) * e[..., 1:n]
     dmu[..., 0] += np.pi / 2
     return dmu
+
+
+def log_end_moments(n: int, u: ArrayLike) -> tuple[NDArray, NDArray]:
+    r"""Product-integration weights of a logarithm singular at the right end of ``[-1, 1]``.
+
+    For the bounded solution :math:`\phi = \sqrt{1-t^2}\sum_{j<n} b_j U_j(t)` and
+    :math:`m = \cosh u \ge 1`,
+
+    .. math::  \int_{-1}^{1}\phi(t)\ln\frac{m - t}{1 - t}\,dt = \sum_j b_j\,\mu_j(u),
+
+    exact for polynomial ``g``; the logarithm is singular at :math:`t = 1` when
+    :math:`m = 1`, which product integration does not mind. (The left end follows by
+    :math:`t \to -t`, i.e. :math:`b_j \to (-1)^j b_j`.)
+
+    Parameters
+    ----------
+    n : int
+        Number of coefficients, ``n >= 1``.
+    u : array_like
+        ``arccosh(m) >= 0``, any shape.
+
+    Returns
+    -------
+    mu, dmu_du : ndarray, shape u.shape + (n,)
+        The weights and their derivatives in ``u``.
+    """
+    n = _check_n(n)
+    u = np.asarray(u, dtype=float)
+    e = np.empty(u.shape + (n + 2,))
+    e[..., 0] = 1.0
+    e[..., 1:] = np.exp(-u)[..., None]
+    np.cumprod(e, axis=-1, out=e)  # e_k = exp(-k u)
+    j = np.arange(n)
+    mu = (np.pi / 2) * e[..., 2:] / (j + 2)
+    mu[..., 1:] -= (np.pi / 2) * e[..., 1:n] / j[1:]
+    mu[..., 0] += (np.pi / 2) * u  # c0(m) - c0(1) = u
+    mu -= _mu_at_one(n)
+    dmu = -(np.pi / 2) * e[..., 2:]
+    dmu[..., 1:] += (np.pi / 2) * e[..., 1:n]
+    dmu[..., 0] += np.pi / 2
+    return mu, dmu
+
+
+@lru_cache(maxsize=64)
+def _mu_at_one(n: int) -> NDArray:
+    """The moments of ``ln(1 - t)`` (``m = 1``), subtracted by :func:`log_end_moments`."""
+    j = np.arange(n)
+    mu1 = (np.pi / 2) / (j + 2)
+    mu1[1:] -= (np.pi / 2) / j[1:]
+    mu1.setflags(write=False)
+    return mu1
 
 
 class EndBoundedSolver:

@@ -120,8 +120,8 @@ from ._validation import (
     scalar_or_array,
 )
 from .errors import ConvergenceError, NoEquilibriumError
-from .normal import _SIZES, _as_output, _log_weights, _Result
-from .sie import BoundedSolution, BoundedSolver
+from .results import Result, as_output
+from .sie import SIZES, BoundedSolution, BoundedSolver, log_end_moments
 
 __all__ = [
     "SlidingContact",
@@ -135,13 +135,16 @@ __all__ = [
 #: (relative) to the zero-width load is reported as pull-off at zero width.
 ZERO_WIDTH_RTOL = 1e-9
 
+#: Collocation sizes tried by ``n="auto"``.
+_SIZES = SIZES[: SIZES.index(2048) + 1]
+
 
 # --------------------------------------------------------------------------------------------
 # results
 
 
 @dataclass(frozen=True)
-class SlidingContact(_Result):
+class SlidingContact(Result):
     """Steady sliding at given contact half-widths (or loads).
 
     Attributes
@@ -315,7 +318,7 @@ def _log_strip(y, m1, m2):
 
 
 @dataclass(frozen=True)
-class SlidingPullOff(_Result):
+class SlidingPullOff(Result):
     """The most tensile load a steadily sliding contact carries (load control).
 
     Attributes
@@ -566,8 +569,8 @@ def _colloc_eval(solver: BoundedSolver, A, s, rho, r, u1, u2):
     b, db1, db2 = B[:, 0], B[:, 1], B[:, 2]
     ecc, de1, de2 = lam[:, 0], lam[:, 1], lam[:, 2]
     sg = (-1.0) ** np.arange(n)
-    mu2, dmu2 = _log_weights(n, u2)  # ln((m2 - t)/(1 - t)) moments
-    mu1, dmu1 = _log_weights(n, u1)  # ln((m1 + t)/(1 + t)) moments of g(-t)
+    mu2, dmu2 = log_end_moments(n, u2)  # ln((m2 - t)/(1 - t)) moments
+    mu1, dmu1 = log_end_moments(n, u1)  # ln((m1 + t)/(1 + t)) moments of g(-t)
     mu1s, dmu1s = mu1 * sg, dmu1 * sg
     J2 = np.einsum("pj,pj->p", b, mu2)
     J1 = np.einsum("pj,pj->p", b, mu1s)
@@ -704,7 +707,7 @@ def _pack(d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure, where):
                 n_collocation=d["n"], residual_trailing=d["res1"], residual_leading=d["res2"],
                 residual_consistency=d["cons"], error_estimate=d["tail"], converged=conv,
                 stable=d["stable"])
-    vals = {k: _as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
+    vals = {k: as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
     return SlidingContact(method=method, **vals)
 
 
@@ -923,7 +926,7 @@ def sliding_pull_off(R_over_h2: ArrayLike, h1_over_h2: ArrayLike,
                 F_zero_width_over_Eh2=F0, c1_over_R_zero_width=d["X1"] * sq,
                 c2_over_R_zero_width=d["X2"] * sq, R_over_h2=rho, h1_over_h2=r,
                 sigma0_over_E=s)
-    vals = {k: _as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
+    vals = {k: as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
     return SlidingPullOff(**vals)
 
 

@@ -1,7 +1,7 @@
 r"""Reproduce the steady-sliding figures (Figs. 8--12) of Sari, Adams & Müftü.
 
 Drawn by :func:`linecontact.figures.paper_figures` (``linecontact paper``) with the helpers
-of :mod:`linecontact.figures`; matplotlib is imported only when a figure is drawn.
+of :mod:`linecontact.figures._style`; matplotlib is imported only when a figure is drawn.
 
 Figures and parameters
 ----------------------
@@ -39,7 +39,8 @@ from collections.abc import Callable
 
 import numpy as np
 
-from .sliding import SlidingContact, sliding_contact, sliding_pull_off
+from ..sliding import SlidingContact, sliding_contact, sliding_pull_off
+from ._style import _CITE, _COL_KW, _PO_KW, _branch_lines, _colors, _legends, _mpl, _new_axes
 
 __all__ = [
     "A_MAX_OVER_R",
@@ -48,7 +49,7 @@ __all__ = [
     "R_OVER_H2",
     "SCHEMATIC",
     "SIGMA0_OVER_E",
-    "figure_jobs",
+    "jobs",
 ]
 
 #: ``R/h2`` of Figs. 9--12 (given in the paper).
@@ -64,7 +65,7 @@ N_COLLOCATION_MARKERS = 12
 #: The state drawn in Fig. 8.
 SCHEMATIC = dict(a_over_R=0.08, R_over_h2=100.0, h1_over_h2=3.0, sigma0_over_E=0.02)
 
-_CITE = "Sari, Adams & Müftü"
+
 
 
 def _curves(s: float) -> list[dict]:
@@ -105,14 +106,10 @@ def _curves(s: float) -> list[dict]:
 
 
 def _r_colors(n: int) -> list:
-    from .figures import _colors
-
     return _colors(n)
 
 
 def _curve_figure(number: int, s: float, data: list[dict], key: str):
-    from .figures import _COL_KW, _PO_KW, _branch_lines, _legends, _new_axes
-
     if key == "d":
         fig, ax = _new_axes(
             f"Fig. {number} ({_CITE}): difference of the adhesive zones in steady sliding, "
@@ -149,8 +146,6 @@ def _curve_figure(number: int, s: float, data: list[dict], key: str):
 
 def _schematic():
     """Fig. 8 drawn from a computed state: the gap (top) and the pressure (bottom)."""
-    from .figures import _mpl
-
     Figure, FigureCanvasAgg, _, _ = _mpl()
     par = SCHEMATIC
     st: SlidingContact = sliding_contact(**par, method="closed-form")
@@ -228,7 +223,7 @@ def _schematic():
     return fig
 
 
-def figure_jobs(progress: Callable[[str], object]) -> list[tuple[str, Callable]]:
+def jobs(progress: Callable[[str], object]) -> list[tuple[str, Callable]]:
     """(stem, builder) pairs of Figs. 8--12 for :func:`linecontact.figures.paper_figures`."""
     progress(f"computing steady-sliding curves (R/h2 = {R_OVER_H2:g}, "
              f"{len(H1_OVER_H2)} values of h1/h2, sigma0/E = "

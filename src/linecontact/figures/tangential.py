@@ -2,7 +2,7 @@ r"""Reproduce the tangential-loading figures (Figs. 7, 13, 14) of Sari, Adams & 
 
 Drawn by ``linecontact paper`` after Figs. 2--6 (:func:`linecontact.figures.paper_figures`
 adds :func:`jobs`); the plumbing (Agg canvas, styles, metadata) is that of
-:mod:`linecontact.figures`, matplotlib is imported only when a figure is drawn.
+:mod:`linecontact.figures._style`, matplotlib is imported only when a figure is drawn.
 
 Figures and parameters
 ----------------------
@@ -44,13 +44,13 @@ from collections.abc import Callable
 
 import numpy as np
 
-from . import figures as _fig
-from .tangential import (
+from ..tangential import (
     sliding_initiation,
     sliding_initiation_coulomb,
     steady_rolling,
     steady_rolling_coulomb,
 )
+from . import _style as _fig
 
 __all__ = ["N_COLLOCATION_MARKERS", "TAU0_OVER_E", "jobs"]
 

@@ -44,15 +44,25 @@ All curves depend on ``(R/h, sigma0/E)`` only through
 
 from __future__ import annotations
 
-import os
-import pathlib
 from collections.abc import Callable, Iterable
 
 import numpy as np
 
-from . import __version__
-from . import reference as _ref
-from .normal import non_contact, normal_contact, pull_off
+from .. import reference as _ref
+from ..normal import non_contact, normal_contact, pull_off
+from ._style import (
+    _CITE,
+    _COL_KW,
+    _FILLED_KW,
+    _OPEN_KW,
+    _PO_KW,
+    _branch_lines,
+    _colors,
+    _legends,
+    _new_axes,
+    _sigma_colors,
+    _sigma_labels,
+)
 
 __all__ = [
     "A_MAX_OVER_R",
@@ -61,7 +71,7 @@ __all__ = [
     "N_COLLOCATION_MARKERS",
     "ZERO_WIDTH_R_OVER_H",
     "ZERO_WIDTH_SIGMA0_MAX",
-    "paper_figures",
+    "jobs",
 ]
 
 #: ``R/h`` of Figs. 2/4 and 3/5 (given in the paper).
@@ -76,11 +86,6 @@ N_COLLOCATION_MARKERS = 15
 ZERO_WIDTH_R_OVER_H = (10.0, 50.0, 100.0, 200.0, 500.0, 1000.0)
 #: Largest ``sigma0/E`` of Fig. 6.
 ZERO_WIDTH_SIGMA0_MAX = 0.1
-
-_MISSING_MPL = "linecontact paper needs matplotlib: pip install 'linecontact[plot]'"
-_CITE = "Sari, Adams & Müftü"
-_METADATA_FORMATS = ("png", "svg", "pdf")
-_DPI = 150
 
 
 # --------------------------------------------------------------------------------------------
@@ -120,100 +125,6 @@ def _branch_data(rho: float, sigmas: Iterable[float]) -> list[dict]:
         ))
     return out
 
-
-# --------------------------------------------------------------------------------------------
-# matplotlib plumbing (imported lazily)
-
-
-def _mpl():
-    """Import the matplotlib pieces used here, or raise the install hint."""
-    try:
-        from matplotlib import colormaps
-        from matplotlib.backends.backend_agg import FigureCanvasAgg
-        from matplotlib.figure import Figure
-        from matplotlib.lines import Line2D
-    except ImportError as err:  # pragma: no cover - exercised only without matplotlib
-        raise ImportError(_MISSING_MPL) from err
-    return Figure, FigureCanvasAgg, Line2D, colormaps
-
-
-def _new_axes(title: str, xlabel: str, ylabel: str):
-    """A figure with one axes on the Agg canvas (no pyplot, no window), shared styling."""
-    Figure, FigureCanvasAgg, _, _ = _mpl()
-    fig = Figure(figsize=(9.6, 5.4))
-    FigureCanvasAgg(fig)
-    ax = fig.add_subplot()
-    ax.set_title(title, fontsize=11)
-    ax.set_xlabel(xlabel, fontsize=12)
-    ax.set_ylabel(ylabel, fontsize=12)
-    ax.grid(True, color="0.88", linewidth=0.6)
-    ax.tick_params(labelsize=10)
-    return fig, ax
-
-
-def _colors(n: int) -> list:
-    cmap = _mpl()[3]["viridis"]
-    return [cmap(x) for x in np.linspace(0.0, 0.85, n)]
-
-
-def _sigma_colors(sigmas) -> list:
-    """Viridis for sigma0 > 0; light grey for sigma0 = 0 so dashed Hertz stays visible on it."""
-    pos = _colors(sum(s > 0 for s in sigmas))[::-1]
-    return ["0.72" if s == 0 else pos.pop() for s in sigmas]
-
-
-def _save(fig, outdir: pathlib.Path, stem: str, formats: tuple[str, ...]) -> list[pathlib.Path]:
-    """Stamp the version, lay out, save in every format, release the figure."""
-    from matplotlib import rc_context
-
-    tag = f"linecontact {__version__}"
-    fig.text(0.995, 0.005, tag, ha="right", va="bottom", fontsize=7, color="0.45")
-    fig.tight_layout(rect=(0, 0.02, 1, 1))
-    paths = []
-    # a fixed hash salt and no date make the SVG output reproducible
-    with rc_context({"svg.hashsalt": "linecontact"}):
-        for fmt in formats:
-            path = outdir / f"{stem}.{fmt}"
-            meta = None
-            if fmt in _METADATA_FORMATS:
-                meta = {"Creator": tag}
-                if fmt == "svg":
-                    meta["Date"] = None
-            fig.savefig(path, format=fmt, dpi=_DPI, metadata=meta)
-            paths.append(path)
-    fig.clear()
-    return paths
-
-
-def _legends(ax, title: str, colors, labels, entries) -> None:
-    """Colour key (top) and line-style key (bottom), both outside the axes on the right."""
-    Line2D = _mpl()[2]
-    key = ax.legend([Line2D([], [], color=c, lw=2.5) for c in colors], labels, title=title,
-                    loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=9,
-                    title_fontsize=10, borderaxespad=0.0)
-    ax.add_artist(key)
-    ax.legend([Line2D([], [], **kw) for _, kw in entries], [t for t, _ in entries],
-              loc="lower left", bbox_to_anchor=(1.02, 0.0), fontsize=8.5, borderaxespad=0.0)
-
-
-def _sigma_labels(sigmas) -> list[str]:
-    return ["0 (Hertz)" if s == 0 else f"{s:g}" for s in sigmas]
-
-
-_COL_KW = dict(ls="none", marker="s", ms=4.5, mec="k", mew=0.5)
-_PO_KW = dict(ls="none", marker="o", ms=10, mfc="none", mew=1.6)
-_OPEN_KW = dict(ls="none", marker="o", ms=6, mfc="none", mew=1.3)
-_FILLED_KW = dict(ls="none", marker="o", ms=6)
-
-
-def _branch_lines(ax, x, y, unstable, color, lw: float) -> None:
-    """Solid where stable under load control, dotted on the dF/da < 0 part."""
-    if unstable.any():
-        k = int(np.flatnonzero(unstable)[-1])  # the minimum closes the unstable part
-        ax.plot(x[:k + 1], y[:k + 1], color=color, lw=lw, ls=":")
-        ax.plot(x[k:], y[k:], color=color, lw=lw)
-    else:
-        ax.plot(x, y, color=color, lw=lw)
 
 
 # --------------------------------------------------------------------------------------------
@@ -311,72 +222,19 @@ def _zero_width_figure():
     return fig
 
 
-# --------------------------------------------------------------------------------------------
-# public
 
-
-def paper_figures(outdir: str | os.PathLike = "paper-figures", *,
-                  formats: Iterable[str] = ("png", "svg"),
-                  progress: Callable[[str], object] | None = None) -> list[pathlib.Path]:
-    """Draw the normal-loading figures of the paper (Figs. 2--6) into ``outdir``.
-
-    Parameters
-    ----------
-    outdir : str or os.PathLike
-        Output directory, created if missing; existing files of the same names are
-        overwritten.
-    formats : iterable of str
-        File formats understood by matplotlib (a single string is one format). PNG is
-        written at 150 dpi; PNG, SVG and PDF carry ``Creator: linecontact <version>``.
-    progress : callable, optional
-        Called with a short message before each step; nothing is printed otherwise.
-
-    Returns
-    -------
-    list of pathlib.Path
-        The files written, figure by figure, in the order of ``formats``.
-
-    Raises
-    ------
-    ImportError
-        If matplotlib is not installed.
-    ValueError
-        If ``formats`` is empty.
-
-    Notes
-    -----
-    The parameters of each figure and the reasons for them are in the module docstring.
-    """
-    _mpl()
-    fmts = (formats,) if isinstance(formats, str) else tuple(formats)
-    if not fmts or not all(isinstance(f, str) and f for f in fmts):
-        raise ValueError(f"formats must be a non-empty sequence of format names, got "
-                         f"{formats!r}")
-    fmts = tuple(f.lower().lstrip(".") for f in fmts)
-    say = progress if progress is not None else (lambda msg: None)
-    out = pathlib.Path(outdir)
-    out.mkdir(parents=True, exist_ok=True)
-
-    written: list[pathlib.Path] = []
+def jobs(progress: Callable[[str], object]) -> list[tuple[str, Callable]]:
+    """(file stem, figure builder) pairs of Figs. 2--6; the load curves are computed here."""
     rho_a, rho_b = LOAD_R_OVER_H
     data = {}
     for rho in LOAD_R_OVER_H:
-        say(f"computing load curves for R/h = {rho:g} "
-            f"({len(LOAD_SIGMA0_OVER_E)} values of sigma0/E)")
+        progress(f"computing load curves for R/h = {rho:g} "
+                 f"({len(LOAD_SIGMA0_OVER_E)} values of sigma0/E)")
         data[rho] = _branch_data(rho, LOAD_SIGMA0_OVER_E)
-    jobs = [
+    return [
         ("fig02_load_R100", lambda: _load_figure(2, rho_a, data[rho_a])),
         ("fig03_load_R200", lambda: _load_figure(3, rho_b, data[rho_b])),
         ("fig04_zone_R100", lambda: _zone_figure(4, rho_a, data[rho_a])),
         ("fig05_zone_R200", lambda: _zone_figure(5, rho_b, data[rho_b])),
         ("fig06_zero_width", _zero_width_figure),
     ]
-    from .figures_tangential import jobs as _tangential_jobs  # Figs. 7, 13, 14
-    jobs += _tangential_jobs()
-    from .figures_sliding import figure_jobs as _sliding_jobs  # Figs. 8-12 (steady sliding)
-    jobs += _sliding_jobs(say)
-    for stem, build in jobs:
-        say(f"drawing {stem} ({', '.join(fmts)})")
-        written += _save(build(), out, stem, fmts)
-    say(f"wrote {len(written)} files to {out}")
-    return written

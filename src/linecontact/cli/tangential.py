@@ -1,6 +1,6 @@
 """Command-line subcommands for tangential loading: ``slide-init`` and ``roll``.
 
-Registered on the ``linecontact`` parser by :func:`add_subcommands` (called from
+Registered on the ``linecontact`` parser by :func:`register` (called from
 :func:`linecontact.cli.build_parser`); a thin shell over :mod:`linecontact.tangential`.
 
 ``--json`` contract: an array of records, one per value of ``--d-over-a`` (or of the given
@@ -15,10 +15,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from . import cli as _cli
-from ._validation import non_negative
+from .. import tangential as tg
+from .._validation import non_negative
+from ..cylinder import cylinder_sliding_initiation, cylinder_steady_rolling
+from ..normal import contact_for_load
+from . import _options as _cli
 
-__all__ = ["add_subcommands"]
+__all__ = ["register"]
 
 _SI_KEYS = ("radius", "modulus", "E1", "nu1", "E2", "nu2", "sigma0", "h", "work_of_adhesion",
             "z0")
@@ -38,7 +41,7 @@ _DESCRIPTION = {
 }
 
 
-def add_subcommands(sub) -> None:
+def register(sub) -> None:
     """Add ``slide-init`` and ``roll`` to the subparsers ``sub`` of ``linecontact``."""
     for name, helptext in (("slide-init", "initiation of sliding under a tangential force "
                                           "(stick zone, T/(Ea))"),
@@ -94,8 +97,6 @@ def _flag(name: str) -> str:
 
 def _normal_contact(args, coulomb: bool):
     """(a_over_R or None, F_over_Eh or None, Cylinder or None) from the normal inputs."""
-    from .normal import contact_for_load
-
     si = bool(_given(args, *_SI_KEYS))
     groups = bool(_given(args, "R_over_h", "sigma0_over_E"))
     if si:
@@ -128,8 +129,6 @@ def _normal_contact(args, coulomb: bool):
 
 
 def _run(args, rolling: bool) -> int:
-    from . import tangential as tg
-
     coulomb = args.friction == "coulomb"
     if coulomb:
         if _given(args, "tau0_over_E", "tau0"):
@@ -168,7 +167,7 @@ def _run(args, rolling: bool) -> int:
                 raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
             fr = dict(friction_stress=args.tau0 if args.tau0 is not None
                       else args.tau0_over_E * E)
-        fn = tg.cylinder_steady_rolling if rolling else tg.cylinder_sliding_initiation
+        fn = cylinder_steady_rolling if rolling else cylinder_sliding_initiation
         if state in ("T_over_Ea", "T_over_muF"):
             # the contact half-width first, to convert to [N/m]
             a_m = cyl.contact(load=args.load).contact_half_width

@@ -13,7 +13,17 @@ import argparse
 
 import numpy as np
 
-__all__ = ["register_slide"]
+from ..sliding import sliding_contact, sliding_contact_for_load
+from ._options import (
+    _add_si_materials,
+    _add_width_options,
+    _cylinder,
+    _dump_json,
+    _half_widths,
+    _table,
+)
+
+__all__ = ["register"]
 
 _SI_KEYS = ("radius", "modulus", "E1", "nu1", "E2", "nu2", "sigma0", "h", "work_of_adhesion",
             "z0")
@@ -25,10 +35,8 @@ _EPILOG = ("Axes: x along the sliding direction (the cylinder moves to +x), orig
            "pressure's own moment on it is M counterclockwise. Compressive load positive.")
 
 
-def register_slide(sub) -> argparse.ArgumentParser:
+def register(sub) -> argparse.ArgumentParser:
     """Add the ``slide`` subcommand to the subparsers ``sub``; returns its parser."""
-    from .cli import _add_si_materials, _add_width_options
-
     p = sub.add_parser("slide", help="steady sliding: adhesive zones, eccentricity, load and "
                                      "moment with different trailing/leading adhesion",
                        epilog=_EPILOG)
@@ -60,8 +68,6 @@ def register_slide(sub) -> argparse.ArgumentParser:
 
 def _setup(args):
     """(R/h2, h1/h2, sigma0/E, tau0/E or None, Cylinder or None) from the arguments."""
-    from .cli import _cylinder
-
     si_given = any(getattr(args, k) is not None for k in _SI_KEYS) or \
         args.h1 is not None or args.tau0 is not None
     groups_given = any(v is not None for v in (args.R_over_h2, args.sigma0_over_E,
@@ -87,9 +93,6 @@ def _setup(args):
 
 
 def _cmd_slide(args) -> int:
-    from .cli import _dump_json, _half_widths, _table
-    from .sliding import sliding_contact, sliding_contact_for_load
-
     rho, r, s, tau, cyl = _setup(args)
     A = _half_widths(args, cyl, "F_over_Eh2")
     if A is not None:

@@ -1,0 +1,442 @@
+r"""The dimensional (SI) layer: a cylinder on a substrate, and its problems in SI units.
+
+:class:`Cylinder` holds the radius, the composite modulus, the adhesion ``(sigma0, h)`` and
+Dundurs' ``beta``; its methods and the ``cylinder_*`` functions convert SI inputs to the
+paper's groups, call the nondimensional solvers (:mod:`linecontact.normal`,
+:mod:`linecontact.tangential`) and convert back. Units: lengths [m], stresses and moduli
+[Pa], forces per unit length of cylinder [N/m], work of adhesion [J/m^2]. Materials and
+adhesion conventions: :mod:`linecontact.materials`.
+"""
+
+from __future__ import annotations
+
+import warnings
+from dataclasses import dataclass, field
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from . import normal as _normal
+from . import reference as _ref
+from ._validation import broadcast, check_array, non_negative, positive, scalar
+from .errors import CouplingWarning, NoEquilibriumError
+from .materials import BETA_WARN, _adhesion, _moduli, composite_modulus, dundurs_beta
+from .tangential import (
+    sliding_initiation,
+    sliding_initiation_coulomb,
+    steady_rolling,
+    steady_rolling_coulomb,
+)
+from .tangential.initiation import _CATTANEO_MINDLIN, _INITIATION
+from .tangential.rolling import _CARTER, _ROLLING
+
+__all__ = [
+    "Cylinder",
+    "CylinderContact",
+    "CylinderPullOff",
+    "CylinderTangential",
+    "cylinder_sliding_initiation",
+    "cylinder_steady_rolling",
+]
+
+@dataclass(frozen=True)
+class CylinderContact:
+    """A normal contact state in SI units, with its nondimensional result.
+
+    Attributes
+    ----------
+    contact_half_width : ndarray or float
+        ``a`` [m].
+    adhesive_zone_half_width : ndarray or float
+        ``c`` [m].
+    load : ndarray or float
+        ``F`` [N/m], compressive positive.
+    stable : ndarray or bool
+        Stable under load control.
+    nondimensional : NormalContact
+        The underlying result with diagnostics.
+    """
+
+    contact_half_width: NDArray | float
+    adhesive_zone_half_width: NDArray | float
+    load: NDArray | float
+    stable: NDArray | bool
+    nondimensional: _normal.NormalContact = field(repr=False)
+
+
+@dataclass(frozen=True)
+class CylinderPullOff:
+    """Pull-off in SI units.
+
+    Attributes
+    ----------
+    pull_off_force : float
+        [N/m], negative.
+    contact_half_width_at_pull_off : float
+        [m], 0 at zero width.
+    mechanism : str
+        ``"snap-off"`` or ``"zero-width"``.
+    zero_width_force : float
+        Eq. (14) [N/m].
+    nondimensional : PullOff
+    """
+
+    pull_off_force: NDArray | float
+    contact_half_width_at_pull_off: NDArray | float
+    mechanism: NDArray | str
+    zero_width_force: NDArray | float
+    nondimensional: _normal.PullOff = field(repr=False)
+
+
+@dataclass(frozen=True)
+class Cylinder:
+    """A cylinder of radius ``R`` on a substrate, with Maugis--Dugdale adhesion.
+
+    Build it with :meth:`from_materials` or :meth:`from_modulus`.
+
+    Attributes
+    ----------
+    radius : float
+        ``R`` [m] (the equivalent radius for two cylinders).
+    modulus : float
+        Composite plane-strain modulus ``E`` [Pa].
+    cohesive_stress : float
+        ``sigma0`` [Pa] (0: no adhesion).
+    adhesion_range : float
+        ``h`` [m].
+    dundurs_beta : float
+        Dundurs' ``beta = -B/A`` (0 when only the composite modulus was given).
+
+    Examples
+    --------
+    >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
+    >>> round(cyl.R_over_h, 9), cyl.sigma0_over_E
+    (100.0, 0.01)
+    """
+
+    radius: float
+    modulus: float
+    cohesive_stress: float
+    adhesion_range: float
+    dundurs_beta: float = 0.0
+
+    def __post_init__(self) -> None:
+        # the fields as Python floats, checked (also when the class is built directly)
+        for name, limits in (("radius", {}), ("modulus", {}),
+                             ("cohesive_stress", {"low_inclusive": True}),
+                             ("adhesion_range", {}),
+                             ("dundurs_beta", {"low": -np.inf, "low_inclusive": True})):
+            object.__setattr__(self, name, scalar(name, getattr(self, name), **limits))
+        # the units of the groups must be representable: R/h, sigma0/E and E h
+        for what, v in (("radius/adhesion_range (R/h)", self.radius / self.adhesion_range),
+                        ("cohesive_stress/modulus (sigma0/E)",
+                         self.cohesive_stress / self.modulus),
+                        ("modulus*adhesion_range (E h, the unit of force per length)",
+                         self.modulus * self.adhesion_range)):
+            if not (np.isfinite(v) and (v > 0 or (v == 0 and what.startswith("cohesive")))):
+                raise ValueError(f"{what} = {v!r} is not a finite positive number: radius="
+                                 f"{self.radius!r}, modulus={self.modulus!r}, cohesive_stress="
+                                 f"{self.cohesive_stress!r}, adhesion_range="
+                                 f"{self.adhesion_range!r} are too far apart in scale")
+
+    @classmethod
+    def from_modulus(cls, radius: float, modulus: float, *, cohesive_stress: float | None = None,
+                     adhesion_range: float | None = None, work_of_adhesion: float | None = None,
+                     equilibrium_spacing: float | None = None) -> Cylinder:
+        """From the composite modulus ``E`` [Pa]; adhesion as ``(sigma0, h)`` or ``(w, z0)``."""
+        R = scalar("radius", radius)
+        E = scalar("modulus", modulus)
+        s0, h = _adhesion(cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
+        return cls(R, E, s0, h, 0.0)
+
+    @classmethod
+    def from_materials(cls, radius: float, E1: float, nu1: float, E2: float, nu2: float, *,
+                       cohesive_stress: float | None = None, adhesion_range: float | None = None,
+                       work_of_adhesion: float | None = None,
+                       equilibrium_spacing: float | None = None) -> Cylinder:
+        """From the moduli [Pa] and Poisson ratios of cylinder (1) and substrate (2)."""
+        R = scalar("radius", radius)
+        for name, v in zip(("E1", "nu1", "E2", "nu2"), _moduli(E1, nu1, E2, nu2), strict=True):
+            if v.ndim != 0:
+                raise ValueError(f"{name} must be a single number, got an array of shape "
+                                 f"{v.shape}")
+        E = float(composite_modulus(E1, nu1, E2, nu2))
+        beta = float(dundurs_beta(E1, nu1, E2, nu2))
+        if abs(beta) > BETA_WARN:
+            warnings.warn(f"Dundurs beta = -B/A = {beta:.3g} is not small (|beta| > {BETA_WARN}): "
+                          "normal and tangential tractions are coupled, but linecontact "
+                          "solves the uncoupled case B = 0", CouplingWarning, stacklevel=2)
+        s0, h = _adhesion(cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
+        return cls(R, E, s0, h, beta)
+
+    # groups ------------------------------------------------------------------------------
+    @property
+    def R_over_h(self) -> float:
+        """``R/h``."""
+        return self.radius / self.adhesion_range
+
+    @property
+    def sigma0_over_E(self) -> float:
+        """``sigma0/E``."""
+        return self.cohesive_stress / self.modulus
+
+    @property
+    def work_of_adhesion(self) -> float:
+        """``w = sigma0 h`` [J/m^2]."""
+        return self.cohesive_stress * self.adhesion_range
+
+    @property
+    def maugis_parameter(self) -> float:
+        """Baney & Hui's line-contact Tabor-like parameter (DMT-like small, JKR-like large)."""
+        return float(_ref.maugis_parameter(self.R_over_h, self.sigma0_over_E))
+
+    @property
+    def kappa(self) -> float:
+        """The single group of the Maugis--Dugdale line contact."""
+        return float(_ref.kappa(self.R_over_h, self.sigma0_over_E))
+
+    # problems ----------------------------------------------------------------------------
+    def _wrap(self, r: _normal.NormalContact) -> CylinderContact:
+        R, Eh = self.radius, self.modulus * self.adhesion_range
+
+        def si(v, unit):
+            v = np.multiply(v, unit)
+            return v.item() if np.ndim(v) == 0 else v
+
+        return CylinderContact(si(r.a_over_R, R), si(r.c_over_R, R), si(r.F_over_Eh, Eh),
+                               r.stable, r)
+
+    def contact(self, *, contact_half_width: ArrayLike | None = None,
+                load: ArrayLike | None = None, method: str = "closed-form",
+                branch: str = "stable") -> CylinderContact:
+        """The contact at given half-widths ``a`` [m] or loads ``F`` [N/m] (exactly one).
+
+        For a load, ``branch`` selects the stable (default) or the unstable contact state;
+        a load below the pull-off force raises
+        :class:`~linecontact.errors.NoEquilibriumError`.
+        """
+        if (contact_half_width is None) == (load is None):
+            raise ValueError("give exactly one of contact_half_width or load")
+        if method not in ("closed-form", "collocation"):
+            raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
+        if branch not in ("stable", "unstable"):
+            raise ValueError(f"branch must be 'stable' or 'unstable', got {branch!r}")
+        if load is not None and method != "closed-form":
+            raise ValueError("the contact for a given load is found by the closed form: "
+                             "method='collocation' applies to contact_half_width only")
+        if contact_half_width is not None and branch != "stable":
+            raise ValueError("branch applies to a given load only: a contact half-width "
+                             "fixes the state")
+        if contact_half_width is not None:
+            a = positive("contact_half_width", contact_half_width)
+            r = _normal.normal_contact(a / self.radius, self.R_over_h, self.sigma0_over_E,
+                                       method=method)
+        else:
+            F = check_array("load", load, low=-np.inf, low_inclusive=True)
+            Eh = self.modulus * self.adhesion_range
+            if branch == "stable":
+                # said in the units given ([N/m]), not only as F_over_Eh
+                F_min = _normal.pull_off(self.R_over_h, self.sigma0_over_E).F_minimum_over_Eh * Eh
+                if np.any(F < F_min):
+                    raise NoEquilibriumError(
+                        f"no contact carries load={float(F[F < F_min].flat[0])!r} N/m: it is "
+                        f"below the pull-off force, the minimum load on the contact branch "
+                        f"{F_min!r} N/m; the cylinder has pulled off")
+            r = _normal.contact_for_load(F / Eh, self.R_over_h, self.sigma0_over_E,
+                                         branch=branch)
+        return self._wrap(r)
+
+    def pull_off(self) -> CylinderPullOff:
+        """Pull-off force under load control [N/m]."""
+        p = _normal.pull_off(self.R_over_h, self.sigma0_over_E)
+        Eh = self.modulus * self.adhesion_range
+        return CylinderPullOff(p.F_pulloff_over_Eh * Eh, p.a_over_R_at_pulloff * self.radius,
+                               p.mechanism, p.F_zero_width_over_Eh * Eh, p)
+
+
+# --------------------------------------------------------------------------------------------
+# tangential problems in SI units
+
+
+@dataclass(frozen=True)
+class CylinderTangential:
+    """A tangential state of a :class:`~linecontact.cylinder.Cylinder`, in SI units.
+
+    Attributes
+    ----------
+    problem : str
+        ``"sliding initiation"`` or ``"steady rolling"``.
+    friction : str
+        ``"constant"`` (friction stress ``tau0``) or ``"coulomb"`` (coefficient ``mu``).
+    normal_load : ndarray or float
+        ``F`` [N/m], compressive positive.
+    contact_half_width : ndarray or float
+        ``a`` [m], from the normal problem (Maugis--Dugdale; Hertz for Coulomb friction).
+    stick_zone_end : ndarray or float
+        ``d`` [m]: the half-width of the central stick zone ``|x| < d`` (initiation), or the
+        start of the leading-edge stick zone ``d < x < a`` (rolling).
+    tangential_load : ndarray or float
+        ``T`` [N/m].
+    full_slip_load : ndarray or float
+        ``2 a tau0`` or ``mu F`` [N/m].
+    creep_ratio : ndarray or float or None
+        ``(V - omega R)/V`` for rolling (negative: driving cylinder); None for initiation.
+    state : ndarray of str or str
+        ``"stick"``, ``"stick-slip"`` or ``"sliding"``.
+    nondimensional : result
+        The underlying nondimensional result with its diagnostics.
+    normal : CylinderContact
+        The normal contact.
+    """
+
+    problem: str
+    friction: str
+    normal_load: NDArray | float
+    contact_half_width: NDArray | float
+    stick_zone_end: NDArray | float
+    tangential_load: NDArray | float
+    full_slip_load: NDArray | float
+    creep_ratio: NDArray | float | None
+    state: NDArray | str
+    nondimensional: object = field(repr=False)
+    normal: object = field(repr=False)
+
+
+def _cylinder_tangential(problem, cylinder, normal_load, friction_stress, friction_coefficient,
+                         d_over_a, tangential_load, method, on_sliding) -> CylinderTangential:
+    if not isinstance(cylinder, Cylinder):
+        raise ValueError(f"cylinder must be a linecontact.Cylinder (Cylinder.from_modulus or "
+                         f"Cylinder.from_materials), got {cylinder!r}")
+    if (friction_stress is None) == (friction_coefficient is None):
+        raise ValueError("give exactly one of friction_stress (constant tau0 [Pa]) or "
+                         "friction_coefficient (Coulomb mu)")
+    if (d_over_a is None) == (tangential_load is None):
+        raise ValueError("give exactly one of d_over_a or tangential_load [N/m]")
+    E = cylinder.modulus
+    rolling = problem == "steady rolling"
+    coulomb = friction_coefficient is not None
+    pb = (_CARTER if coulomb else _ROLLING) if rolling else \
+        (_CATTANEO_MINDLIN if coulomb else _INITIATION)
+    # every input checked, and the shapes against each other, before any solve
+    if coulomb:
+        F = check_array("normal_load", normal_load)
+        fr_name, fr = "friction_coefficient", positive("friction_coefficient",
+                                                       friction_coefficient)
+    else:
+        F = check_array("normal_load", normal_load, low=-np.inf)
+        fr_name, fr = "friction_stress", positive("friction_stress", friction_stress)
+    if d_over_a is not None:
+        st_name = "d_over_a"
+        st = check_array("d_over_a", d_over_a, low=pb.d_low, low_inclusive=pb.d_low_inclusive,
+                         high=1.0)
+    else:
+        st_name, st = "tangential_load", non_negative("tangential_load", tangential_load)
+    broadcast(normal_load=F, **{fr_name: fr, st_name: st})
+    d = st if d_over_a is not None else None
+    if coulomb:
+        if cylinder.cohesive_stress != 0:
+            raise ValueError("Coulomb friction is the macro-scale counterpart for the "
+                             "non-adhesive Hertz contact: use a Cylinder without adhesion "
+                             "(cohesive_stress = 0), or give friction_stress")
+        contact = cylinder.contact(load=F)
+        A = np.asarray(contact.contact_half_width) / cylinder.radius
+        mu = fr
+        T = None if d is not None else st / (mu * F)
+        fn = steady_rolling_coulomb if rolling else sliding_initiation_coulomb
+        r = fn(mu, A, d, T_over_muF=T, method=method, on_sliding=on_sliding)
+        full = mu * F
+        friction = "coulomb"
+    else:
+        contact = cylinder.contact(load=F)
+        a = np.asarray(contact.contact_half_width)
+        t0 = fr
+        T = None if d is not None else st / (E * a)
+        fn = steady_rolling if rolling else sliding_initiation
+        # broadcast with a so that every field has the shape of the points
+        r = fn(t0 / E + 0 * a, d, T_over_Ea=T, method=method, on_sliding=on_sliding)
+        full = 2 * a * t0
+        friction = "constant"
+    a = np.asarray(contact.contact_half_width)
+    Tn = np.multiply(r.T_over_Ea, E * a)
+    creep = r.creep_over_V if rolling else None
+    return CylinderTangential(problem, friction, _scalar(F + 0 * a), _scalar(a),
+                              _scalar(np.multiply(r.d_over_a, a)), _scalar(Tn), _scalar(full),
+                              creep, r.state, r, contact)
+
+
+def _scalar(v):
+    v = np.asarray(v)
+    return v.item() if v.ndim == 0 else v
+
+
+def cylinder_sliding_initiation(cylinder, normal_load: ArrayLike, *,
+                                friction_stress: ArrayLike | None = None,
+                                friction_coefficient: ArrayLike | None = None,
+                                d_over_a: ArrayLike | None = None,
+                                tangential_load: ArrayLike | None = None,
+                                method: str = "closed-form",
+                                on_sliding: str = "report") -> CylinderTangential:
+    """Initiation of sliding of a :class:`~linecontact.cylinder.Cylinder` (SI units).
+
+    Parameters
+    ----------
+    cylinder : Cylinder
+        Geometry, materials and adhesion.
+    normal_load : array_like
+        ``F`` [N/m]; the contact half-width ``a`` is that of the stable normal contact
+        (:meth:`Cylinder.contact`). A load below the pull-off force raises
+        :class:`~linecontact.errors.NoEquilibriumError`.
+    friction_stress : array_like, optional
+        ``tau0`` [Pa], ``> 0``: the nano-scale law (:func:`sliding_initiation`).
+    friction_coefficient : array_like, optional
+        ``mu``, ``> 0``: Coulomb friction on the Hertz contact
+        (:func:`sliding_initiation_coulomb`); the cylinder must have no adhesion and
+        ``F > 0``. Give exactly one of ``friction_stress`` and ``friction_coefficient``.
+    d_over_a : array_like, optional
+        Stick-zone half-width over ``a`` in ``[0, 1)``.
+    tangential_load : array_like, optional
+        ``T`` [N/m], ``>= 0`` (exactly one of ``d_over_a`` and ``tangential_load``).
+    method, on_sliding : str
+        As in :func:`sliding_initiation`.
+
+    Returns
+    -------
+    CylinderTangential
+
+    Examples
+    --------
+    >>> from linecontact import Cylinder
+    >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
+    >>> s = cylinder_sliding_initiation(cyl, 1.0, friction_stress=1e9, tangential_load=1.0)
+    >>> s.state, s.stick_zone_end < s.contact_half_width
+    ('stick-slip', True)
+    """
+    return _cylinder_tangential("sliding initiation", cylinder, normal_load, friction_stress,
+                                friction_coefficient, d_over_a, tangential_load, method,
+                                on_sliding)
+
+
+def cylinder_steady_rolling(cylinder, normal_load: ArrayLike, *,
+                            friction_stress: ArrayLike | None = None,
+                            friction_coefficient: ArrayLike | None = None,
+                            d_over_a: ArrayLike | None = None,
+                            tangential_load: ArrayLike | None = None,
+                            method: str = "closed-form",
+                            on_sliding: str = "report") -> CylinderTangential:
+    """Steady rolling of a driving :class:`~linecontact.cylinder.Cylinder` (SI units).
+
+    Parameters as in :func:`cylinder_sliding_initiation`, with ``d_over_a`` in ``(-1, 1)``
+    the start of the leading-edge stick zone; ``tangential_load`` is the tractive force
+    [N/m]. The result's ``creep_ratio`` is ``(V - omega R)/V`` (negative).
+
+    Examples
+    --------
+    >>> from linecontact import Cylinder
+    >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
+    >>> r = cylinder_steady_rolling(cyl, 1.0, friction_stress=1e9, d_over_a=0.0)
+    >>> r.creep_ratio < 0
+    True
+    """
+    return _cylinder_tangential("steady rolling", cylinder, normal_load, friction_stress,
+                                friction_coefficient, d_over_a, tangential_load, method,
+                                on_sliding)

@@ -1,0 +1,76 @@
+"""The base of every result object: frozen fields, per-point columns, dicts and records.
+
+Every solver returns a frozen dataclass derived from :class:`Result`. Its fields are the
+inputs broadcast together, the outputs and the diagnostics; a scalar call gives Python
+scalars, an array call arrays of the points' shape. The output layer
+(:mod:`linecontact.output`) reads results through :meth:`Result.columns` only: one 1-D array
+per quantity, with no Python object built per point.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, fields
+from typing import Any, ClassVar
+
+import numpy as np
+from numpy.typing import NDArray
+
+__all__ = ["Result", "as_output"]
+
+
+def as_output(value: Any, scalar: bool) -> Any:
+    """``value`` as returned to the caller: a Python scalar for scalar calls, else an array."""
+    if isinstance(value, np.generic):
+        return value.item() if scalar else np.asarray(value)
+    if isinstance(value, np.ndarray) and scalar and value.size == 1:
+        return value.reshape(()).item()
+    return value
+
+
+@dataclass(frozen=True)
+class Result:
+    """Base of the frozen result dataclasses.
+
+    Subclasses list the fields that are inputs of the problem in ``inputs`` (the output
+    layer moves them to its ``parameters`` block when they are the same at every point)
+    and the derived per-point properties to export in ``derived``. Fields declared with
+    ``repr=False`` (nested results) are not exported.
+    """
+
+    #: Fields that are inputs of the problem (parameters of the points).
+    inputs: ClassVar[tuple[str, ...]] = ()
+    #: Per-point properties exported as columns after the fields.
+    derived: ClassVar[tuple[str, ...]] = ()
+
+    def _names(self) -> list[str]:
+        return [f.name for f in fields(self) if f.repr] + list(self.derived)
+
+    @property
+    def shape(self) -> tuple[int, ...]:
+        """Shape of the parameter points (``()`` for a scalar call)."""
+        return np.broadcast_shapes(*(np.shape(getattr(self, k)) for k in self._names()))
+
+    def columns(self) -> dict[str, NDArray[Any]]:
+        """Each exported quantity as a 1-D array over the points (C order).
+
+        Quantities that are the same for every point (a scalar field such as ``method``)
+        are broadcast; no copy is made where none is needed.
+        """
+        shape = self.shape
+        size = int(np.prod(shape))
+        return {k: np.broadcast_to(np.asarray(getattr(self, k)), shape).reshape(size)
+                for k in self._names()}
+
+    def to_dict(self) -> dict[str, Any]:
+        """All exported quantities, arrays as (nested) lists: JSON-ready."""
+        out = {}
+        for k in self._names():
+            v = getattr(self, k)
+            out[k] = v.tolist() if isinstance(v, (np.ndarray, np.generic)) else v
+        return out
+
+    def to_records(self) -> list[dict[str, Any]]:
+        """One dict per point, built from :meth:`columns`."""
+        cols = {k: v.tolist() for k, v in self.columns().items()}
+        keys = list(cols)
+        return [dict(zip(keys, row, strict=True)) for row in zip(*cols.values(), strict=True)]

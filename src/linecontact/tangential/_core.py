@@ -1,0 +1,348 @@
+r"""Shared machinery of the tangential problems: the collocation driver and the result base.
+
+Used by :mod:`linecontact.tangential.initiation` and :mod:`linecontact.tangential.rolling`
+(units, conventions and references: :mod:`linecontact.tangential`). A problem is described
+by a :class:`_Problem` (its collocation kernel, convergence rate and closed forms, all in
+the units of ``T`` over ``a tau0`` or over ``mu F``); :func:`_run` validates the state
+variable, solves on the points that have a stick zone and returns the fields of the result.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .._validation import (
+    broadcast,
+    check_array,
+    check_solver_options,
+    non_negative,
+    positions,
+    scalar_or_array,
+)
+from ..errors import ConvergenceError, NoEquilibriumError
+from ..results import Result, as_output
+from ..sie import SIZES as _SIE_SIZES
+from ..sie import BoundedSolver
+
+#: Collocation sizes tried by ``n="auto"`` (the largest bounds the work per point).
+SIZES = _SIE_SIZES
+#: Nodes used for the Coulomb problems (their right-hand sides are linear: exact for n >= 2).
+N_COULOMB = 8
+_N_CHECK = 16  # points of the stick zone where the stick condition is re-evaluated
+_CHECK_THETA = np.pi * (np.arange(_N_CHECK) + 0.25) / _N_CHECK
+_CHECK_Y = np.cos(_CHECK_THETA)
+_FORCE_TOL = 1e-12  # Newton tolerance on T (relative to the full-slip load)
+
+_STICK = "stick"
+_STICK_SLIP = "stick-slip"
+_SLIDING = "sliding"
+
+
+# --------------------------------------------------------------------------------------------
+# input checks
+
+
+def _check_options(method, n, tol, raise_on_failure, on_sliding):
+    if method not in ("closed-form", "collocation"):
+        raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
+    check_solver_options(n, tol, raise_on_failure, n_max=SIZES[-1])
+    if on_sliding not in ("report", "raise"):
+        raise ValueError(f"on_sliding must be 'report' or 'raise', got {on_sliding!r}")
+
+
+def _one_of(d_over_a, load, load_name: str) -> None:
+    if (d_over_a is None) == (load is None):
+        raise ValueError(f"give exactly one of d_over_a or {load_name}")
+
+
+# --------------------------------------------------------------------------------------------
+# collocation plumbing
+
+
+@lru_cache(maxsize=32)
+def _solver(n: int) -> BoundedSolver:
+    return BoundedSolver(n)
+
+
+@lru_cache(maxsize=32)
+def _check_matrix(n: int) -> NDArray:
+    """cos((j+1) theta_c): the Hilbert transform -sum_j b_j T_{j+1} at the check points."""
+    m = np.cos(np.arange(1, n + 1)[:, None] * _CHECK_THETA[None, :])
+    m.setflags(write=False)
+    return m
+
+
+def _tail(b: NDArray) -> NDArray:
+    """Chebyshev tail: the largest of the last three coefficients over the largest one.
+
+    The coefficients are in units of the friction stress (``tau0`` or ``mu p0``); a solution
+    much smaller than that (a short stick zone) is measured against it instead, so that
+    round-off in a tiny solution does not count as truncation error.
+    """
+    big = np.maximum(np.max(np.abs(b), axis=-1), 1.0)
+    return np.max(np.abs(b[..., -3:]), axis=-1) / big
+
+
+def _adaptive(kernel, delta: NDArray, rate: NDArray, n, tol: float) -> dict[str, NDArray]:
+    """Run ``kernel(delta, n)`` per point with ``n`` chosen for ``tol``.
+
+    The right-hand sides have logarithmic sources a distance ``cosh(rate)`` (in units of the
+    interval's half-length) from the interval's centre, so the Chebyshev coefficients fall
+    like ``exp(-rate j)``: start at the smallest size with ``exp(-rate n) <= tol`` and move
+    points whose tail still exceeds ``tol`` one size up.
+    """
+    P = delta.size
+    sizes = np.asarray(SIZES)
+    if n == "auto":
+        need = np.log(1.0 / tol) / np.maximum(rate, 1e-300)
+        k = np.minimum(np.searchsorted(sizes, need), sizes.size - 1)
+        nsel = sizes[k]
+    else:
+        nsel = np.full(P, int(n))
+    out: dict[str, NDArray] = {}
+    pending = np.ones(P, bool)
+    while pending.any():
+        for nn in np.unique(nsel[pending]):
+            idx = np.flatnonzero(pending & (nsel == nn))
+            r = kernel(delta[idx], int(nn))
+            for key, v in r.items():
+                if key not in out:
+                    out[key] = np.zeros(P, dtype=np.asarray(v).dtype)
+                out[key][idx] = v
+        if n != "auto":
+            break
+        pending = pending & (out["tail"] > tol) & (nsel < sizes[-1])
+        nsel = np.where(pending, sizes[np.minimum(np.searchsorted(sizes, nsel) + 1,
+                                                  sizes.size - 1)], nsel)
+    out["n"] = nsel
+    return out
+
+
+# --------------------------------------------------------------------------------------------
+# shared driver
+
+
+def _solve_points(delta, active, method, n, tol, kernel, rate, T_closed, dT_closed,
+                  T_target=None, T_full=2.0, lo=0.0, hi=1.0):
+    """Closed form or collocation on the active points; Newton on delta for a given T.
+
+    All in the units of the kernel (``T`` over ``a tau0`` or ``mu F``; ``T_full`` is the
+    full-slip load in those units). Returns the arrays ``delta``, ``T`` (of the solution),
+    ``creep``, ``n``, ``stick``, ``cons``, ``tail`` and ``force`` (``|T(d) - T|/T_full``).
+    """
+    P = delta.size
+    out = dict(delta=delta.copy(), T=np.full(P, np.nan), n=np.zeros(P, int),
+               stick=np.zeros(P), cons=np.zeros(P), tail=np.zeros(P), force=np.zeros(P),
+               creep=np.full(P, np.nan))
+    idx = np.flatnonzero(active)
+    if idx.size == 0:
+        return out
+    d = delta[idx]
+    if method == "closed-form":
+        out["T"][idx] = T_closed(d)
+    else:
+        for _ in range(12):
+            r = _adaptive(kernel, d, rate(d), n, tol)
+            if T_target is None:
+                break
+            err = r["T"] - T_target[idx]
+            with np.errstate(divide="ignore", invalid="ignore"):  # infinite slope at d = a
+                slope = dT_closed(d)
+            ok = np.abs(err) <= _FORCE_TOL * T_full
+            if ok.all():
+                break
+            with np.errstate(divide="ignore", invalid="ignore"):
+                step = np.where(ok | (np.abs(slope) < 1e-300), 0.0, err / slope)
+            d = np.clip(d - step, lo, hi)
+        out["delta"][idx] = d
+        out["T"][idx] = r["T"]
+        for key in ("n", "stick", "cons", "tail"):
+            out[key][idx] = r[key]
+        if "creep" in r:
+            out["creep"][idx] = r["creep"]
+    if T_target is not None:
+        out["force"][idx] = np.abs(out["T"][idx] - T_target[idx]) / T_full
+    return out
+
+
+def _raise_unconverged(name, converged, labels: dict, out, n) -> None:
+    conv = np.asarray(converged).reshape(-1)
+    if conv.all():
+        return
+    i = int(np.flatnonzero(~conv)[0])
+    where = ", ".join(f"{k}={float(np.reshape(v, -1)[i])!r}" for k, v in labels.items())
+    raise ConvergenceError(
+        f"{name} (collocation) did not converge at {where} (error estimate "
+        f"{out['tail'][i]:.3g}, stick residual {out['stick'][i]:.3g}, force residual "
+        f"{out['force'][i]:.3g}, n = {out['n'][i]}): " + (
+            f"the stick zone is too close to its limit for n <= {SIZES[-1]}; use "
+            f"method='closed-form'" if n == "auto" else
+            f"n = {out['n'][i]} nodes are too few for tol; try n='auto'"))
+
+
+def _raise_sliding(name, sliding, T_name, T, T_full) -> None:
+    if not np.any(sliding):
+        return
+    i = int(np.flatnonzero(np.reshape(sliding, -1))[0])
+    raise NoEquilibriumError(
+        f"{name}: {T_name}={float(np.reshape(T, -1)[i])!r} is at or above the full-slip load "
+        f"{float(np.reshape(T_full, -1)[i])!r}: the whole contact slips (sliding), there is no "
+        f"stick zone")
+
+
+def _states(sliding, stick, shape):
+    st = np.full(shape, _STICK_SLIP, dtype=object)
+    st[np.asarray(sliding, bool)] = _SLIDING
+    st[np.asarray(stick, bool)] = _STICK
+    return st.astype(str)
+
+
+# --------------------------------------------------------------------------------------------
+# results
+
+
+@dataclass(frozen=True)
+class _Tangential(Result):
+    """Fields shared by the four tangential results (see the subclasses)."""
+
+    d_over_a: NDArray | float
+    T_over_T_full_slip: NDArray | float
+    state: NDArray | str
+    method: str
+    n_collocation: NDArray | int
+    residual_stick: NDArray | float
+    residual_force: NDArray | float
+    residual_consistency: NDArray | float
+    error_estimate: NDArray | float
+    converged: NDArray | bool
+
+    def _points(self, x_over_a):
+        x = positions("x_over_a", x_over_a, np.shape(self.d_over_a))
+        dlt = np.asarray(self.d_over_a, dtype=float)[..., None]
+        st = np.asarray(self.state)[..., None]
+        return x, dlt, st
+
+    def _coefficients(self, kernel_solve) -> NDArray:
+        """Re-solve the collocation system at the stored sizes: (points..., n_max)."""
+        dlt = np.atleast_1d(np.asarray(self.d_over_a, dtype=float)).reshape(-1)
+        nn = np.atleast_1d(np.asarray(self.n_collocation)).reshape(-1)
+        nmax = max(int(nn.max()), 1)
+        b = np.zeros((dlt.size, nmax))
+        for n in np.unique(nn[nn > 0]):
+            sel = nn == n
+            b[sel, :n] = kernel_solve(dlt[sel], int(n))
+        return b
+
+
+def _cheb_u_series(b: NDArray, t: NDArray) -> NDArray:
+    """sqrt(1 - t^2) sum_j b_j U_j(t) (zero outside [-1, 1]); b (P, n), t (P, m)."""
+    inside = np.abs(t) <= 1.0
+    tc = np.clip(t, -1.0, 1.0)
+    bk1 = np.zeros(tc.shape)
+    bk2 = np.zeros(tc.shape)
+    for j in range(b.shape[-1] - 1, -1, -1):
+        bk1, bk2 = b[:, j, None] + 2 * tc * bk1 - bk2, bk1
+    return np.where(inside, np.sqrt(np.clip(1 - tc * tc, 0.0, None)) * bk1, 0.0)
+
+
+# --------------------------------------------------------------------------------------------
+# public functions (nondimensional)
+
+
+@dataclass(frozen=True)
+class _Problem:
+    """What distinguishes the four problems (units: T over a tau0, or over mu F)."""
+
+    name: str
+    kernel: Callable[[NDArray, int], dict[str, NDArray]]
+    rate: Callable[[NDArray], NDArray]
+    T_closed: Callable[[NDArray], NDArray]  # T(delta)
+    dT_closed: Callable[[NDArray], NDArray]  # dT/d delta
+    delta_closed: Callable[[NDArray], NDArray]  # delta(T/T_full), for 0 <= T/T_full <= 1
+    T_full: float
+    d_low: float
+    d_low_inclusive: bool
+    d_stick: float  # delta at T = 0
+    constant: bool = True  # constant tau0 (load T_over_Ea) or Coulomb (load T_over_muF)
+    creep_closed: Callable[[NDArray], NDArray] | None = None  # rolling only
+    n_auto: int | None = None  # fixed n for n="auto" (Coulomb: linear right-hand sides)
+
+
+def _run(pb: _Problem, d_over_a, load, load_name, method, n, tol, raise_on_failure,
+         on_sliding, params: dict):
+    """Validate the state variable, solve, return (fields, diagnostics, scalar-flag parts)."""
+    _one_of(d_over_a, load, load_name)
+    _check_options(method, n, tol, raise_on_failure, on_sliding)
+    names = list(params)
+    arrays = list(params.values())
+    if d_over_a is not None:
+        dl = check_array("d_over_a", d_over_a, low=pb.d_low, low_inclusive=pb.d_low_inclusive,
+                         high=1.0)
+        given = ("d_over_a", dl)
+    else:
+        dl = None
+        given = (load_name, non_negative(load_name, load))
+    scalar = scalar_or_array(*arrays, given[1])
+    *arrays, g = (np.asarray(v, float) for v in broadcast(**dict(zip(names, arrays,
+                                                                   strict=True)),
+                                                          **{given[0]: given[1]}))
+    shape = g.shape
+    if dl is not None:
+        dl = g
+        r = pb.T_closed(dl) / pb.T_full  # T over the full-slip load
+        T_target = None
+        # the state follows from d (T rounds to the full-slip load long before d reaches 0)
+        sliding = dl == 0 if pb.d_low_inclusive else np.zeros(shape, bool)
+        stick = np.zeros(shape, bool)
+    else:
+        r = g / (2 * arrays[0]) if pb.constant else g.copy()
+        dl = np.where(r <= 1, pb.delta_closed(np.minimum(r, 1.0)), np.nan)
+        T_target = pb.T_full * np.minimum(r, 1.0)
+        sliding = r >= 1
+        stick = r == 0
+    active = ~(sliding | stick)
+    nn = pb.n_auto if (pb.n_auto is not None and n == "auto") else n
+    out = _solve_points(np.where(np.isfinite(dl), dl, 0.0).reshape(-1), active.reshape(-1),
+                        method, nn, tol, pb.kernel, pb.rate, pb.T_closed, pb.dT_closed,
+                        None if T_target is None else T_target.reshape(-1), pb.T_full,
+                        lo=pb.d_low + (0.0 if pb.d_low_inclusive else 1e-16), hi=1.0 - 1e-16)
+    act = active.reshape(-1)
+    if T_target is None:
+        T_unit = np.where(act, out["T"], pb.T_full * r.reshape(-1)).reshape(shape)
+    else:
+        T_unit = pb.T_full * r
+        dl = np.where(active, out["delta"].reshape(shape), np.where(stick, pb.d_stick, dl))
+    if pb.creep_closed is not None:
+        creep = out["creep"] if method == "collocation" else pb.creep_closed(out["delta"])
+        creep = np.where(act, creep, np.nan).reshape(shape)
+        creep = np.where(stick, 0.0, creep)
+    else:
+        creep = None
+    if on_sliding == "raise":
+        _raise_sliding(pb.name, sliding, given[0], given[1] if d_over_a is None else T_unit,
+                       2 * arrays[0] if pb.constant else np.ones(shape))
+    converged = np.ones(shape, bool)
+    if method == "collocation":
+        converged = (((out["tail"] <= 10 * tol) & (out["force"] <= 1e-10)
+                      & np.isfinite(out["T"])) | ~act).reshape(shape)
+        if raise_on_failure:
+            labels = dict(zip(names, arrays, strict=True))
+            labels[given[0]] = g
+            _raise_unconverged(pb.name, converged, labels, out, n)
+    diag = dict(n_collocation=out["n"].reshape(shape), residual_stick=out["stick"].reshape(shape),
+                residual_force=out["force"].reshape(shape),
+                residual_consistency=out["cons"].reshape(shape),
+                error_estimate=out["tail"].reshape(shape), converged=converged,
+                state=_states(sliding, stick, shape), d_over_a=dl,
+                T_over_T_full_slip=T_unit / pb.T_full)
+    return arrays, T_unit, creep, diag, scalar
+
+
+def _build(cls, method, scalar, **vals):
+    return cls(method=method, **{k: as_output(np.asarray(v), scalar) for k, v in vals.items()})
+

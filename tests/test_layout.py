@@ -1,0 +1,119 @@
+"""The house: imports run one way down the floors, and no module imports itself in a circle.
+
+Floors (docs/architecture.md): the base (versions, errors, input checks, the result base),
+the numerical core and the closed forms, the problems, the SI layer, the shells (output,
+CLI, figures), and the package's front door. A module may import from its own floor or below,
+never above; and the import graph has no cycle.
+"""
+
+import ast
+import pkgutil
+from pathlib import Path
+
+import pytest
+
+import linecontact
+
+FLOORS = {
+    "base": ["linecontact._version", "linecontact.errors", "linecontact._validation",
+             "linecontact.results"],
+    "core": ["linecontact.sie", "linecontact.reference", "linecontact.materials"],
+    "problems": ["linecontact.normal", "linecontact.sliding", "linecontact.tangential"],
+    "si": ["linecontact.cylinder"],
+    "shells": ["linecontact.output", "linecontact.cli", "linecontact.figures"],
+    "front": ["linecontact", "linecontact.__main__"],
+}
+ORDER = list(FLOORS)
+
+
+def _modules() -> dict[str, Path]:
+    root = Path(linecontact.__file__).parent
+    mods = {"linecontact": root / "__init__.py"}
+    for m in pkgutil.walk_packages(linecontact.__path__, "linecontact."):
+        rel = m.name.split(".")[1:]
+        path = root.joinpath(*rel)
+        mods[m.name] = path / "__init__.py" if m.ispkg else path.with_suffix(".py")
+    return mods
+
+
+MODULES = _modules()
+
+
+def _floor(name: str) -> str:
+    best = None
+    for floor, prefixes in FLOORS.items():
+        for p in prefixes:
+            if (name == p or name.startswith(p + ".")) and (best is None or len(p) > best[1]):
+                best = (floor, len(p))
+    assert best is not None, f"{name} is on no floor: add it to FLOORS and docs/architecture.md"
+    return best[0]
+
+
+def _imports(name: str) -> set[str]:
+    """The linecontact modules that ``name`` imports (at any depth of its code)."""
+    path = MODULES[name]
+    package = name if path.name == "__init__.py" else name.rpartition(".")[0]
+    out = set()
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Import):
+            out |= {a.name for a in node.names if a.name.split(".")[0] == "linecontact"}
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                parts = package.split(".")
+                base = ".".join(parts[: len(parts) - node.level + 1])
+                base = f"{base}.{node.module}" if node.module else base
+            else:
+                base = node.module or ""
+            if base.split(".")[0] != "linecontact":
+                continue
+            for alias in node.names:
+                sub = f"{base}.{alias.name}"
+                out.add(sub if sub in MODULES else base)
+    out.discard(name)
+    return out
+
+
+GRAPH = {name: _imports(name) for name in MODULES}
+
+
+def test_every_module_is_on_a_floor():
+    for name in MODULES:
+        _floor(name)
+
+
+@pytest.mark.parametrize("name", sorted(MODULES))
+def test_imports_run_down(name):
+    here = ORDER.index(_floor(name))
+    up = sorted(t for t in GRAPH[name] if ORDER.index(_floor(t)) > here)
+    assert not up, f"{name} ({_floor(name)}) imports from a higher floor: {up}"
+
+
+def test_no_import_circle():
+    state: dict[str, int] = {}
+    stack: list[str] = []
+
+    def visit(n: str) -> None:
+        state[n] = 1
+        stack.append(n)
+        for t in sorted(GRAPH[n]):
+            # a package's __init__ importing its own submodules is not a circle; a submodule
+            # importing its package's __init__ would be
+            if state.get(t) == 1:
+                cycle = stack[stack.index(t):] + [t]
+                raise AssertionError("import circle: " + " -> ".join(cycle))
+            if t not in state:
+                visit(t)
+        stack.pop()
+        state[n] = 2
+
+    for n in sorted(GRAPH):
+        if n not in state:
+            visit(n)
+
+
+def test_the_checker_sees_imports():
+    # the walk above would pass on an empty graph: check that it reads real arrows
+    assert "linecontact.sie" in GRAPH["linecontact.normal"]
+    assert "linecontact.tangential._core" in GRAPH["linecontact.tangential.rolling"]
+    assert "linecontact.normal" in GRAPH["linecontact.cylinder"]
+    assert GRAPH["linecontact.sie"] <= set(FLOORS["base"]) | {"linecontact._validation"}
