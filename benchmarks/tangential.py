@@ -39,25 +39,34 @@ def batch(name, fn, params, d, load_name, extra_keys=()):
     t_cf, cf = best_of(lambda: fn(*params, d))
     t_co, co = best_of(lambda: fn(*params, d, method="collocation"), repeat=2)
     load = getattr(cf, load_name)
-    t_inv, inv = best_of(lambda: fn(*params, **{load_name: load}, method="collocation"),
-                         repeat=1)
+    t_inv, inv = best_of(lambda: fn(*params, **{load_name: load}, method="collocation"), repeat=1)
     print(f"{name}: {N} points")
     print(f"  closed form            : {t_cf / N * 1e6:8.2f} us/point")
     print(f"  collocation, given d   : {t_co / N * 1e6:8.2f} us/point")
     print(f"  collocation, given T   : {t_inv / N * 1e6:8.2f} us/point (Newton on d)")
     sizes, counts = np.unique(co.n_collocation, return_counts=True)
-    print("  collocation sizes n (points): "
-          + ", ".join(f"{n_}({c_})" for n_, c_ in zip(sizes, counts, strict=True)))
-    print(f"  worst relative error of T      : {rel(co.T_over_Ea, cf.T_over_Ea).max():.2e}"
-          f"   (target <= 1e-8)")
+    print(
+        "  collocation sizes n (points): "
+        + ", ".join(f"{n_}({c_})" for n_, c_ in zip(sizes, counts, strict=True))
+    )
+    print(
+        f"  worst relative error of T      : {rel(co.T_over_Ea, cf.T_over_Ea).max():.2e}"
+        f"   (target <= 1e-8)"
+    )
     for key in extra_keys:
-        print(f"  worst relative error of {key:<7}: "
-              f"{rel(getattr(co, key), getattr(cf, key)).max():.2e}")
-    print(f"  given T: worst |d - d_closed|  : {np.abs(inv.d_over_a - d).max():.2e}, "
-          f"worst force residual {inv.residual_force.max():.1e}")
-    print(f"  all converged: {bool(np.all(co.converged) and np.all(inv.converged))}; worst "
-          f"stick residual {co.residual_stick.max():.1e}, worst error estimate "
-          f"{co.error_estimate.max():.1e}")
+        print(
+            f"  worst relative error of {key:<7}: "
+            f"{rel(getattr(co, key), getattr(cf, key)).max():.2e}"
+        )
+    print(
+        f"  given T: worst |d - d_closed|  : {np.abs(inv.d_over_a - d).max():.2e}, "
+        f"worst force residual {inv.residual_force.max():.1e}"
+    )
+    print(
+        f"  all converged: {bool(np.all(co.converged) and np.all(inv.converged))}; worst "
+        f"stick residual {co.residual_stick.max():.1e}, worst error estimate "
+        f"{co.error_estimate.max():.1e}"
+    )
     return cf, co
 
 
@@ -71,8 +80,10 @@ def distributions(rng):
     cf, co = steady_rolling(0.01, d), steady_rolling(0.01, d, method="collocation")
     rq = np.max(np.abs(co.traction(x) - cf.traction(x))) / 0.01
     print("distributions, 200 points x 401 positions:")
-    print(f"  initiation: worst |q - q_closed|/tau0 {tq:.1e}, worst slip error over the "
-          f"largest slip {sl:.1e}")
+    print(
+        f"  initiation: worst |q - q_closed|/tau0 {tq:.1e}, worst slip error over the "
+        f"largest slip {sl:.1e}"
+    )
     print(f"  rolling   : worst |q - q_closed|/tau0 {rq:.1e}")
 
 
@@ -83,19 +94,25 @@ def convergence():
     for d in (0.9, 0.99, 0.999, 0.9999, 0.99999, 0.999999):
         c = sliding_initiation(0.01, d, method="collocation", raise_on_failure=False)
         f = sliding_initiation(0.01, d)
-        print(f"  {d:>9}  {c.n_collocation:>5}   {rel(c.T_over_Ea, f.T_over_Ea):.1e}"
-              f"           {c.error_estimate:.1e}{'' if c.converged else '  (not converged)'}")
+        print(
+            f"  {d:>9}  {c.n_collocation:>5}   {rel(c.T_over_Ea, f.T_over_Ea):.1e}"
+            f"           {c.error_estimate:.1e}{'' if c.converged else '  (not converged)'}"
+        )
     print("  rolling, d/a -> -1 (full stick), and d/a -> 1 (full slip):")
     print("      d/a        n   rel. error of T   rel. error of creep   error estimate")
     for d in (-0.9, -0.99, -0.999, -0.9999, -0.99999, -0.999999, 0.99, 0.99999, 1 - 1e-9):
         c = steady_rolling(0.01, d, method="collocation", raise_on_failure=False)
         f = steady_rolling(0.01, d)
-        print(f"  {d:>9.9g}  {c.n_collocation:>5}   {rel(c.T_over_Ea, f.T_over_Ea):.1e}"
-              f"           {rel(c.creep_over_V, f.creep_over_V):.1e}"
-              f"               {c.error_estimate:.1e}"
-              f"{'' if c.converged else '  (not converged)'}")
-    print("  fixed n, relative error of T (initiation, d/a = 0.999) and of the creep "
-          "(rolling, d/a = -0.999):")
+        print(
+            f"  {d:>9.9g}  {c.n_collocation:>5}   {rel(c.T_over_Ea, f.T_over_Ea):.1e}"
+            f"           {rel(c.creep_over_V, f.creep_over_V):.1e}"
+            f"               {c.error_estimate:.1e}"
+            f"{'' if c.converged else '  (not converged)'}"
+        )
+    print(
+        "  fixed n, relative error of T (initiation, d/a = 0.999) and of the creep "
+        "(rolling, d/a = -0.999):"
+    )
     print("        n   initiation    rolling   rolling, paper's linear split (Eq 25), d/a = 0")
     f_i = sliding_initiation(1.0, 0.999).T_over_Ea
     f_r = steady_rolling(1.0, -0.999).creep_over_V
@@ -104,8 +121,10 @@ def convergence():
         ci = sliding_initiation(1.0, 0.999, method="collocation", n=n, raise_on_failure=False)
         cr = steady_rolling(1.0, -0.999, method="collocation", n=n, raise_on_failure=False)
         lin = -2 * tg._roll_solve(np.array([0.0]), n, "linear").extra[0]
-        print(f"  {n:>7}   {rel(ci.T_over_Ea, f_i):.1e}      {rel(cr.creep_over_V, f_r):.1e}"
-              f"    {rel(lin, f_0):.1e}")
+        print(
+            f"  {n:>7}   {rel(ci.T_over_Ea, f_i):.1e}      {rel(cr.creep_over_V, f_r):.1e}"
+            f"    {rel(lin, f_0):.1e}"
+        )
 
 
 def main() -> None:
@@ -120,16 +139,23 @@ def main() -> None:
     A = 10 ** rng.uniform(-4, -1, N)
     d_init = rng.uniform(0.0, 0.99, N)
     d_roll = rng.uniform(-0.99, 0.99, N)
-    print("tau0/E in [1e-4, 0.1]; initiation d/a in [0, 0.99]; rolling d/a in [-0.99, 0.99]; "
-          "Coulomb mu in [0.05, 1], a/R in [1e-4, 0.1]\n")
-    batch("initiation of sliding, constant tau0", sliding_initiation, (t0,), d_init,
-          "T_over_Ea")
-    batch("steady rolling, constant tau0", steady_rolling, (t0,), d_roll, "T_over_Ea",
-          ("creep_over_V",))
-    batch("Cattaneo-Mindlin (Coulomb)", sliding_initiation_coulomb, (mu, A), d_init,
-          "T_over_muF")
-    batch("Carter (Coulomb)", steady_rolling_coulomb, (mu, A), d_roll, "T_over_muF",
-          ("creep_over_V",))
+    print(
+        "tau0/E in [1e-4, 0.1]; initiation d/a in [0, 0.99]; rolling d/a in [-0.99, 0.99]; "
+        "Coulomb mu in [0.05, 1], a/R in [1e-4, 0.1]\n"
+    )
+    batch("initiation of sliding, constant tau0", sliding_initiation, (t0,), d_init, "T_over_Ea")
+    batch(
+        "steady rolling, constant tau0",
+        steady_rolling,
+        (t0,),
+        d_roll,
+        "T_over_Ea",
+        ("creep_over_V",),
+    )
+    batch("Cattaneo-Mindlin (Coulomb)", sliding_initiation_coulomb, (mu, A), d_init, "T_over_muF")
+    batch(
+        "Carter (Coulomb)", steady_rolling_coulomb, (mu, A), d_roll, "T_over_muF", ("creep_over_V",)
+    )
     print()
     distributions(rng)
     print()

@@ -24,8 +24,18 @@ def run(capsys, *argv):
 
 
 def test_normal_json_contract(capsys):
-    code, out, err = run(capsys, "normal", "--R-over-h", "100", "--sigma0-over-E", "0.01",
-                         "--a-over-R", "0.01", "0.05", "--json")
+    code, out, err = run(
+        capsys,
+        "normal",
+        "--R-over-h",
+        "100",
+        "--sigma0-over-E",
+        "0.01",
+        "--a-over-R",
+        "0.01",
+        "0.05",
+        "--json",
+    )
     assert code == 0, err
     recs = json.loads(out)
     assert len(recs) == 2
@@ -35,9 +45,21 @@ def test_normal_json_contract(capsys):
 
 
 def test_normal_range_and_collocation(capsys):
-    code, out, _ = run(capsys, "normal", "--R-over-h", "200", "--sigma0-over-E", "0.02",
-                       "--a-over-R-range", "0.01", "0.05", "5", "--method", "collocation",
-                       "--json")
+    code, out, _ = run(
+        capsys,
+        "normal",
+        "--R-over-h",
+        "200",
+        "--sigma0-over-E",
+        "0.02",
+        "--a-over-R-range",
+        "0.01",
+        "0.05",
+        "5",
+        "--method",
+        "collocation",
+        "--json",
+    )
     assert code == 0
     recs = json.loads(out)
     np.testing.assert_allclose([r["a_over_R"] for r in recs], np.linspace(0.01, 0.05, 5))
@@ -47,8 +69,19 @@ def test_normal_range_and_collocation(capsys):
 def test_normal_inverse_branches(capsys):
     po = pull_off(100, 0.2)
     F = 0.5 * (po.F_pulloff_over_Eh + po.F_zero_width_over_Eh)
-    code, out, _ = run(capsys, "normal", "--R-over-h", "100", "--sigma0-over-E", "0.2",
-                       "--F-over-Eh", repr(F), "--branch", "unstable", "--json")
+    code, out, _ = run(
+        capsys,
+        "normal",
+        "--R-over-h",
+        "100",
+        "--sigma0-over-E",
+        "0.2",
+        "--F-over-Eh",
+        repr(F),
+        "--branch",
+        "unstable",
+        "--json",
+    )
     assert code == 0
     rec = json.loads(out)[0]
     assert rec["stable"] is False and rec["a_over_R"] < po.a_over_R_at_pulloff
@@ -56,14 +89,12 @@ def test_normal_inverse_branches(capsys):
 
 
 def test_pulloff_json(capsys):
-    code, out, _ = run(capsys, "pulloff", "--R-over-h", "100", "--sigma0-over-E", "0.01",
-                       "--json")
+    code, out, _ = run(capsys, "pulloff", "--R-over-h", "100", "--sigma0-over-E", "0.01", "--json")
     assert code == 0
     rec = json.loads(out)
     assert rec["mechanism"] == "zero-width" and rec["a_over_R_at_pulloff"] == 0
     assert rec["F_pulloff_over_Eh"] == rec["F_zero_width_over_Eh"] == zero_width_load(100, 0.01)
-    code, out, _ = run(capsys, "pulloff", "--R-over-h", "100", "--sigma0-over-E", "0.2",
-                       "--json")
+    code, out, _ = run(capsys, "pulloff", "--R-over-h", "100", "--sigma0-over-E", "0.2", "--json")
     rec = json.loads(out)
     assert rec["mechanism"] == "snap-off" and rec["a_over_R_at_pulloff"] > 0
     assert rec["F_pulloff_over_Eh"] < rec["F_zero_width_over_Eh"] < 0
@@ -71,26 +102,61 @@ def test_pulloff_json(capsys):
 
 def test_si_mode_matches_groups(capsys):
     # R = 50 nm, E = 100 GPa, sigma0 = 1 GPa, h = 0.5 nm  ->  R/h = 100, sigma0/E = 0.01
-    code, out, _ = run(capsys, "pulloff", "--radius", "50e-9", "--modulus", "100e9",
-                       "--sigma0", "1e9", "--h", "0.5e-9", "--json")
+    code, out, _ = run(
+        capsys,
+        "pulloff",
+        "--radius",
+        "50e-9",
+        "--modulus",
+        "100e9",
+        "--sigma0",
+        "1e9",
+        "--h",
+        "0.5e-9",
+        "--json",
+    )
     assert code == 0
     rec = json.loads(out)
     assert math.isclose(rec["F_pulloff_over_Eh"], zero_width_load(100, 0.01), rel_tol=1e-12)
-    assert math.isclose(rec["F_pulloff_N_per_m"], rec["F_pulloff_over_Eh"] * 100e9 * 0.5e-9,
-                        rel_tol=1e-12)
+    assert math.isclose(
+        rec["F_pulloff_N_per_m"], rec["F_pulloff_over_Eh"] * 100e9 * 0.5e-9, rel_tol=1e-12
+    )
 
 
 def test_curve_csv_and_json(capsys, tmp_path):
     target = tmp_path / "curve.csv"
-    code, _, err = run(capsys, "curve", "--R-over-h", "100", "--sigma0-over-E", "0.1",
-                       "--num", "20", "--num-noncontact", "5", "-o", str(target))
+    code, _, err = run(
+        capsys,
+        "curve",
+        "--R-over-h",
+        "100",
+        "--sigma0-over-E",
+        "0.1",
+        "--num",
+        "20",
+        "--num-noncontact",
+        "5",
+        "-o",
+        str(target),
+    )
     assert code == 0 and "wrote" in err
     text = target.read_text().splitlines()
     assert text[0].startswith("# linecontact") and any("pull-off" in t for t in text[:6])
     rows = [r for r in text if not r.startswith("#")]
     assert rows[0].split(",")[0] == "branch" and len(rows) >= 1 + 5 + 20
-    code, out, _ = run(capsys, "curve", "--R-over-h", "100", "--sigma0-over-E", "0.1",
-                       "--num", "20", "--num-noncontact", "5", "--json")
+    code, out, _ = run(
+        capsys,
+        "curve",
+        "--R-over-h",
+        "100",
+        "--sigma0-over-E",
+        "0.1",
+        "--num",
+        "20",
+        "--num-noncontact",
+        "5",
+        "--json",
+    )
     doc = json.loads(out)
     pts = doc["points"]
     assert sum(p["pulloff"] for p in pts) == 1
@@ -107,21 +173,40 @@ def test_cite_and_version(capsys):
 
 
 BAD = [
-    (["normal", "--R-over-h", "-1", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],
-     "R_over_h must be in"),
-    (["normal", "--R-over-h", "100", "--sigma0-over-E", "0.01", "--a-over-R", "0"],
-     "a_over_R must be in"),
+    (
+        ["normal", "--R-over-h", "-1", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],
+        "R_over_h must be in",
+    ),
+    (
+        ["normal", "--R-over-h", "100", "--sigma0-over-E", "0.01", "--a-over-R", "0"],
+        "a_over_R must be in",
+    ),
     (["normal", "--R-over-h", "100", "--sigma0-over-E", "0.01"], "exactly one of"),
-    (["normal", "--R-over-h", "100", "--sigma0-over-E", "0.2", "--F-over-Eh", "-100"],
-     "pull-off"),
+    (["normal", "--R-over-h", "100", "--sigma0-over-E", "0.2", "--F-over-Eh", "-100"], "pull-off"),
     (["pulloff", "--R-over-h", "100", "--sigma0-over-E", "nan"], "sigma0_over_E"),
     (["pulloff", "--R-over-h", "100"], "--sigma0-over-E"),
-    (["pulloff", "--R-over-h", "100", "--sigma0-over-E", "0.1", "--radius", "1e-8"],
-     "not both"),
-    (["pulloff", "--radius", "1e-8", "--E1", "1e11", "--nu1", "0.7", "--E2", "1e11", "--nu2",
-      "0.3", "--sigma0", "1e9", "--h", "1e-9"], "nu1 must be in"),
-    (["normal", "--R-over-h", "x", "--sigma0-over-E", "0.1", "--a-over-R", "0.1"],
-     "invalid float"),
+    (["pulloff", "--R-over-h", "100", "--sigma0-over-E", "0.1", "--radius", "1e-8"], "not both"),
+    (
+        [
+            "pulloff",
+            "--radius",
+            "1e-8",
+            "--E1",
+            "1e11",
+            "--nu1",
+            "0.7",
+            "--E2",
+            "1e11",
+            "--nu2",
+            "0.3",
+            "--sigma0",
+            "1e9",
+            "--h",
+            "1e-9",
+        ],
+        "nu1 must be in",
+    ),
+    (["normal", "--R-over-h", "x", "--sigma0-over-E", "0.1", "--a-over-R", "0.1"], "invalid float"),
     (["curve", "--R-over-h", "100", "--sigma0-over-E", "0.1", "--num", "1"], "num must be"),
 ]
 
@@ -147,26 +232,62 @@ class _nullcontext:
 
 
 def test_module_entry_point():
-    p = subprocess.run([sys.executable, "-m", "linecontact", "pulloff", "--R-over-h", "10",
-                        "--sigma0-over-E", "0.001", "--json"], capture_output=True, text=True,
-                       timeout=120)
+    p = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "linecontact",
+            "pulloff",
+            "--R-over-h",
+            "10",
+            "--sigma0-over-E",
+            "0.001",
+            "--json",
+        ],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert p.returncode == 0, p.stderr
     assert json.loads(p.stdout)["mechanism"] in ("zero-width", "snap-off")
 
 
-@pytest.mark.skipif(not CONTRACT.exists() or shutil.which("linecontact") is None,
-                    reason="the shared contract checker or the console script is absent")
+@pytest.mark.skipif(
+    not CONTRACT.exists() or shutil.which("linecontact") is None,
+    reason="the shared contract checker or the console script is absent",
+)
 def test_shared_cli_contract():
-    p = subprocess.run([sys.executable, str(CONTRACT)], capture_output=True, text=True,
-                       timeout=600, env=dict(os.environ))
+    p = subprocess.run(
+        [sys.executable, str(CONTRACT)],
+        capture_output=True,
+        text=True,
+        timeout=600,
+        env=dict(os.environ),
+    )
     assert "BROKEN" not in p.stdout, p.stdout
     assert p.returncode == 0, p.stdout + p.stderr
 
 
 def test_coupling_warning_is_one_line(capsys):
-    code, out, err = run(capsys, "pulloff", "--radius", "50e-9", "--E1", "70e9", "--nu1", "0.17",
-                         "--E2", "160e9", "--nu2", "0.22", "--sigma0", "1e9", "--h", "0.5e-9",
-                         "--json")
+    code, out, err = run(
+        capsys,
+        "pulloff",
+        "--radius",
+        "50e-9",
+        "--E1",
+        "70e9",
+        "--nu1",
+        "0.17",
+        "--E2",
+        "160e9",
+        "--nu2",
+        "0.22",
+        "--sigma0",
+        "1e9",
+        "--h",
+        "0.5e-9",
+        "--json",
+    )
     assert code == 0 and json.loads(out)["mechanism"] in ("zero-width", "snap-off")
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("linecontact pulloff: warning: Dundurs beta")

@@ -25,36 +25,118 @@ def strict_json(text):
     return json.loads(text, parse_constant=refuse)
 
 
-@pytest.mark.parametrize("argv, message", [
-    ([], r"give a command: normal, pulloff, curve, slide-init, roll, slide, paper or cite"),
-    (["curve", *G, "-o", "/nonexistent-dir/curve.csv"],
-     r"cannot write -o/--output '/nonexistent-dir/curve.csv': No such file or directory"),
-    (["normal", *G, "--a-over-R-range", "0.001", "inf", "5"],
-     r"--a-over-R-range STOP must be a finite number > 0, got inf"),
-    (["normal", *G, "--a-over-R-range", "0", "0.1", "5"],
-     r"--a-over-R-range START must be a finite number > 0, got 0.0"),
-    (["normal", *G, "--a-over-R-range", "0.001", "0.1", "1000001"],
-     r"--a-over-R-range NUM must be an integer in \[1, 1000000\], got 1000001.0"),
-    (["slide", "--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.01",
-      "--a-over-R-range", "0.001", "0.1", "nan"],
-     r"--a-over-R-range NUM must be an integer in \[1, 1000000\], got nan"),
-    (["curve", *G, "--num", "1000001"], r"--num must be an integer in \[2, 1000000\]"),
-    (["normal", *G, "--F-over-Eh", "-inf"], r"F_over_Eh must be a finite number, got -inf"),
-    (["slide-init", "--tau0-over-E", "0.01", "--d-over-a", "-1e-1"],
-     r"d_over_a must be in \[0, 1\), got -0.1"),
-    (["roll", "--friction", "coulomb", "--mu", "0.3", "--a-over-R", "0.01", "--T-over-Ea", "-1"],
-     r"T_over_Ea must be in \[0, inf\), got -1.0"),
-    (["pulloff", "--radius", "50e-9", "--modulus", "100e9", "--sigma0", "1e9"],
-     r"SI inputs need the adhesion range --h \[m\]"),
-    (["slide", "--radius", "50e-9", "--modulus", "100e9", "--sigma0", "1e9", "--h1", "1e-9",
-      "--load", "1"], r"SI inputs need the adhesion range --h2 \[m\]"),
-    (["pulloff", "--radius", "50e-9", "--modulus", "100e9", "--work-of-adhesion", "1e300",
-      "--z0", "0.3e-9"], r"work_of_adhesion=1e\+300 and equilibrium_spacing=3e-10 give sigma0"),
-    (["normal", "--radius", "50e-9", "--modulus", "1e-300", "--sigma0", "1e9", "--h", "0.5e-9",
-      "--load", "1"], r"cohesive_stress/modulus \(sigma0/E\) = inf is not a finite positive"),
-    (["pulloff", "--R-over-h", "100", "--sigma0-over-E", "1e300", "--json"],
-     r"kappa = \(4/pi\) sigma0_over_E sqrt\(2 R_over_h\) must be <= 1e\+12"),
-])
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        ([], r"give a command: normal, pulloff, curve, slide-init, roll, slide, paper or cite"),
+        (
+            ["curve", *G, "-o", "/nonexistent-dir/curve.csv"],
+            r"cannot write -o/--output '/nonexistent-dir/curve.csv': No such file or directory",
+        ),
+        (
+            ["normal", *G, "--a-over-R-range", "0.001", "inf", "5"],
+            r"--a-over-R-range STOP must be a finite number > 0, got inf",
+        ),
+        (
+            ["normal", *G, "--a-over-R-range", "0", "0.1", "5"],
+            r"--a-over-R-range START must be a finite number > 0, got 0.0",
+        ),
+        (
+            ["normal", *G, "--a-over-R-range", "0.001", "0.1", "1000001"],
+            r"--a-over-R-range NUM must be an integer in \[1, 1000000\], got 1000001.0",
+        ),
+        (
+            [
+                "slide",
+                "--R-over-h2",
+                "100",
+                "--h1-over-h2",
+                "2",
+                "--sigma0-over-E",
+                "0.01",
+                "--a-over-R-range",
+                "0.001",
+                "0.1",
+                "nan",
+            ],
+            r"--a-over-R-range NUM must be an integer in \[1, 1000000\], got nan",
+        ),
+        (["curve", *G, "--num", "1000001"], r"--num must be an integer in \[2, 1000000\]"),
+        (["normal", *G, "--F-over-Eh", "-inf"], r"F_over_Eh must be a finite number, got -inf"),
+        (
+            ["slide-init", "--tau0-over-E", "0.01", "--d-over-a", "-1e-1"],
+            r"d_over_a must be in \[0, 1\), got -0.1",
+        ),
+        (
+            [
+                "roll",
+                "--friction",
+                "coulomb",
+                "--mu",
+                "0.3",
+                "--a-over-R",
+                "0.01",
+                "--T-over-Ea",
+                "-1",
+            ],
+            r"T_over_Ea must be in \[0, inf\), got -1.0",
+        ),
+        (
+            ["pulloff", "--radius", "50e-9", "--modulus", "100e9", "--sigma0", "1e9"],
+            r"SI inputs need the adhesion range --h \[m\]",
+        ),
+        (
+            [
+                "slide",
+                "--radius",
+                "50e-9",
+                "--modulus",
+                "100e9",
+                "--sigma0",
+                "1e9",
+                "--h1",
+                "1e-9",
+                "--load",
+                "1",
+            ],
+            r"SI inputs need the adhesion range --h2 \[m\]",
+        ),
+        (
+            [
+                "pulloff",
+                "--radius",
+                "50e-9",
+                "--modulus",
+                "100e9",
+                "--work-of-adhesion",
+                "1e300",
+                "--z0",
+                "0.3e-9",
+            ],
+            r"work_of_adhesion=1e\+300 and equilibrium_spacing=3e-10 give sigma0",
+        ),
+        (
+            [
+                "normal",
+                "--radius",
+                "50e-9",
+                "--modulus",
+                "1e-300",
+                "--sigma0",
+                "1e9",
+                "--h",
+                "0.5e-9",
+                "--load",
+                "1",
+            ],
+            r"cohesive_stress/modulus \(sigma0/E\) = inf is not a finite positive",
+        ),
+        (
+            ["pulloff", "--R-over-h", "100", "--sigma0-over-E", "1e300", "--json"],
+            r"kappa = \(4/pi\) sigma0_over_E sqrt\(2 R_over_h\) must be <= 1e\+12",
+        ),
+    ],
+)
 def test_bad_input_one_error_line_exit_2(capsys, argv, message):
     """Before: help on stdout and no error line (no command); 'internal error
     (FileNotFoundError ...); please report it' (unwritable -o); a NaN-laden message
@@ -76,12 +158,15 @@ def test_paper_outdir_that_is_a_file(capsys, tmp_path):
     assert "cannot write the figures to --outdir" in err and "internal error" not in err
 
 
-@pytest.mark.parametrize("argv, key, value", [
-    (["normal", *G, "--F-over-Eh", "-1e-1", "--json"], "F_over_Eh", -0.1),
-    (["normal", *G, "--F-over-Eh", "-1.5E+0", "--json"], "F_over_Eh", -1.5),
-    (["roll", "--tau0-over-E", "0.01", "--d-over-a", "-5e-1", "--json"], "d_over_a", -0.5),
-    (["normal", *SI, "--load", "-5e-1", "--json"], "F_N_per_m", -0.5),
-])
+@pytest.mark.parametrize(
+    "argv, key, value",
+    [
+        (["normal", *G, "--F-over-Eh", "-1e-1", "--json"], "F_over_Eh", -0.1),
+        (["normal", *G, "--F-over-Eh", "-1.5E+0", "--json"], "F_over_Eh", -1.5),
+        (["roll", "--tau0-over-E", "0.01", "--d-over-a", "-5e-1", "--json"], "d_over_a", -0.5),
+        (["normal", *SI, "--load", "-5e-1", "--json"], "F_N_per_m", -0.5),
+    ],
+)
 def test_negative_numbers_in_scientific_notation(capsys, argv, key, value):
     """argparse took '-1e-1' for an option: 'argument --F-over-Eh: expected at least one
     argument'."""
@@ -92,20 +177,30 @@ def test_negative_numbers_in_scientific_notation(capsys, argv, key, value):
 
 
 def test_solver_failure_exit_1_one_line(capsys):
-    code, out, err = run(capsys, "normal", *G, "--a-over-R", "1e-300", "--method",
-                         "collocation", "--json")
+    code, out, err = run(
+        capsys, "normal", *G, "--a-over-R", "1e-300", "--method", "collocation", "--json"
+    )
     assert code == 1 and out == "" and err.count("\n") == 1
     assert "did not converge" in err and "RuntimeWarning" not in err
 
 
-@pytest.mark.parametrize("argv, message", [
-    (["normal", *G, "--a-over-R", "0.01", "--branch", "unstable"],
-     r"--branch applies to given loads \(--F-over-Eh or --load\)"),
-    (["normal", *G, "--F-over-Eh", "1", "--method", "collocation"],
-     r"--method collocation applies to given contact half-widths"),
-    (["normal", *SI, "--load", "1", "--method", "collocation"],
-     r"--method collocation applies to given contact half-widths"),
-])
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        (
+            ["normal", *G, "--a-over-R", "0.01", "--branch", "unstable"],
+            r"--branch applies to given loads \(--F-over-Eh or --load\)",
+        ),
+        (
+            ["normal", *G, "--F-over-Eh", "1", "--method", "collocation"],
+            r"--method collocation applies to given contact half-widths",
+        ),
+        (
+            ["normal", *SI, "--load", "1", "--method", "collocation"],
+            r"--method collocation applies to given contact half-widths",
+        ),
+    ],
+)
 def test_options_that_do_not_apply_are_refused(capsys, argv, message):
     """Both were silently ignored: the output carried the closed form or the stable state."""
     code, out, err = run(capsys, *argv)

@@ -36,21 +36,41 @@ def test_json_contract(capsys):
 
 
 def test_table_range_and_closed_form(capsys):
-    code, out, _ = run(capsys, "slide", *GROUPS, "--a-over-R-range", "0.01", "0.05", "3",
-                       "--method", "closed-form")
+    code, out, _ = run(
+        capsys, "slide", *GROUPS, "--a-over-R-range", "0.01", "0.05", "3", "--method", "closed-form"
+    )
     assert code == 0
     lines = out.strip().splitlines()
     assert lines[0].startswith("# steady sliding") and "closed-form" in lines[0]
     assert "clockwise" in lines[0]
-    assert lines[1].split()[:6] == ["a_over_R", "c1_over_R", "c2_over_R", "e_over_R",
-                                    "F_over_Eh2", "M_over_Eh2R"]
+    assert lines[1].split()[:6] == [
+        "a_over_R",
+        "c1_over_R",
+        "c2_over_R",
+        "e_over_R",
+        "F_over_Eh2",
+        "M_over_Eh2R",
+    ]
     assert len(lines) == 2 + 3
 
 
 def test_inverse_with_friction(capsys):
-    code, out, _ = run(capsys, "slide", "--R-over-h2", "100", "--h1-over-h2", "2",
-                       "--sigma0-over-E", "0.04", "--F-over-Eh2", "-0.5", "1",
-                       "--tau0-over-E", "0.01", "--json")
+    code, out, _ = run(
+        capsys,
+        "slide",
+        "--R-over-h2",
+        "100",
+        "--h1-over-h2",
+        "2",
+        "--sigma0-over-E",
+        "0.04",
+        "--F-over-Eh2",
+        "-0.5",
+        "1",
+        "--tau0-over-E",
+        "0.01",
+        "--json",
+    )
     assert code == 0
     recs = json.loads(out)
     ref = sliding_contact_for_load([-0.5, 1.0], 100.0, 2.0, 0.04, tau0_over_E=0.01)
@@ -61,8 +81,18 @@ def test_inverse_with_friction(capsys):
 
 def test_si_mode_matches_groups(capsys):
     # R = 50 nm, E = 100 GPa, sigma0 = 1 GPa, h2 = 0.5 nm, h1 = 0.75 nm
-    si = ["--radius", "50e-9", "--modulus", "100e9", "--sigma0", "1e9", "--h2", "0.5e-9",
-          "--h1", "0.75e-9"]
+    si = [
+        "--radius",
+        "50e-9",
+        "--modulus",
+        "100e9",
+        "--sigma0",
+        "1e9",
+        "--h2",
+        "0.5e-9",
+        "--h1",
+        "0.75e-9",
+    ]
     code, out, err = run(capsys, "slide", *si, "--a", "1e-9", "--tau0", "5e8", "--json")
     assert code == 0, err
     rec = json.loads(out)[0]
@@ -81,30 +111,114 @@ def test_si_mode_matches_groups(capsys):
 
 
 BAD = [
-    (["--R-over-h2", "100", "--h1-over-h2", "-1", "--sigma0-over-E", "0.01", "--a-over-R",
-      "0.01"], "h1_over_h2 must be in (0, inf), got -1.0"),
-    (["--R-over-h2", "0", "--h1-over-h2", "2", "--sigma0-over-E", "0.01", "--a-over-R",
-      "0.01"], "R_over_h2 must be in (0, inf), got 0.0"),
-    (["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "nan", "--a-over-R",
-      "0.01"], "sigma0_over_E must be a finite number"),
-    (["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.01", "--a-over-R",
-      "-0.01"], "a_over_R must be in (0, inf), got -0.01"),
-    (["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.01"],
-     "exactly one of --a-over-R"),
-    (["--R-over-h2", "100", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],
-     "exactly one of --h1-over-h2 or --h1"),
-    (["--h1-over-h2", "2", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],
-     "give --R-over-h2, --h1-over-h2 and --sigma0-over-E"),
-    (["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.04", "--F-over-Eh2",
-      "-5"], "below the pull-off force"),
-    (["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.04", "--radius",
-      "1e-8", "--a-over-R", "0.01"], "not both"),
-    (["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.04", "--a", "1e-9"],
-     "--a and --load are SI inputs"),
-    (["--modulus", "1e11", "--sigma0", "1e9", "--h2", "1e-9", "--h1-over-h2", "2", "--a",
-      "1e-9"], "SI inputs need --radius"),
-    (["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.01",
-      "--tau0-over-E", "-1", "--a-over-R", "0.01"], "tau0_over_E must be in [0, inf)"),
+    (
+        [
+            "--R-over-h2",
+            "100",
+            "--h1-over-h2",
+            "-1",
+            "--sigma0-over-E",
+            "0.01",
+            "--a-over-R",
+            "0.01",
+        ],
+        "h1_over_h2 must be in (0, inf), got -1.0",
+    ),
+    (
+        ["--R-over-h2", "0", "--h1-over-h2", "2", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],
+        "R_over_h2 must be in (0, inf), got 0.0",
+    ),
+    (
+        ["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "nan", "--a-over-R", "0.01"],
+        "sigma0_over_E must be a finite number",
+    ),
+    (
+        [
+            "--R-over-h2",
+            "100",
+            "--h1-over-h2",
+            "2",
+            "--sigma0-over-E",
+            "0.01",
+            "--a-over-R",
+            "-0.01",
+        ],
+        "a_over_R must be in (0, inf), got -0.01",
+    ),
+    (
+        ["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.01"],
+        "exactly one of --a-over-R",
+    ),
+    (
+        ["--R-over-h2", "100", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],
+        "exactly one of --h1-over-h2 or --h1",
+    ),
+    (
+        ["--h1-over-h2", "2", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],
+        "give --R-over-h2, --h1-over-h2 and --sigma0-over-E",
+    ),
+    (
+        [
+            "--R-over-h2",
+            "100",
+            "--h1-over-h2",
+            "2",
+            "--sigma0-over-E",
+            "0.04",
+            "--F-over-Eh2",
+            "-5",
+        ],
+        "below the pull-off force",
+    ),
+    (
+        [
+            "--R-over-h2",
+            "100",
+            "--h1-over-h2",
+            "2",
+            "--sigma0-over-E",
+            "0.04",
+            "--radius",
+            "1e-8",
+            "--a-over-R",
+            "0.01",
+        ],
+        "not both",
+    ),
+    (
+        ["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.04", "--a", "1e-9"],
+        "--a and --load are SI inputs",
+    ),
+    (
+        [
+            "--modulus",
+            "1e11",
+            "--sigma0",
+            "1e9",
+            "--h2",
+            "1e-9",
+            "--h1-over-h2",
+            "2",
+            "--a",
+            "1e-9",
+        ],
+        "SI inputs need --radius",
+    ),
+    (
+        [
+            "--R-over-h2",
+            "100",
+            "--h1-over-h2",
+            "2",
+            "--sigma0-over-E",
+            "0.01",
+            "--tau0-over-E",
+            "-1",
+            "--a-over-R",
+            "0.01",
+        ],
+        "tau0_over_E must be in [0, inf)",
+    ),
 ]
 
 

@@ -25,8 +25,9 @@ def run(capsys, *argv):
 
 
 def test_slide_init_json_contract(capsys):
-    code, out, err = run(capsys, "slide-init", "--tau0-over-E", "0.01", "--d-over-a", "0.2",
-                         "0.5", "--json")
+    code, out, err = run(
+        capsys, "slide-init", "--tau0-over-E", "0.01", "--d-over-a", "0.2", "0.5", "--json"
+    )
     assert code == 0, err
     recs = json.loads(out)
     ref = sliding_initiation(0.01, [0.2, 0.5])
@@ -36,8 +37,9 @@ def test_slide_init_json_contract(capsys):
 
 
 def test_roll_json_contract(capsys):
-    code, out, err = run(capsys, "roll", "--tau0-over-E", "0.01", "--d-over-a", "-0.5", "0.5",
-                         "--json")
+    code, out, err = run(
+        capsys, "roll", "--tau0-over-E", "0.01", "--d-over-a", "-0.5", "0.5", "--json"
+    )
     assert code == 0, err
     recs = json.loads(out)
     ref = steady_rolling(0.01, [-0.5, 0.5])
@@ -47,20 +49,34 @@ def test_roll_json_contract(capsys):
 
 
 def test_given_load_with_sliding_is_reported_not_an_error(capsys):
-    code, out, err = run(capsys, "roll", "--tau0-over-E", "0.01", "--T-over-Ea", "0.01",
-                         "0.03", "--method", "collocation", "--json")
+    code, out, err = run(
+        capsys,
+        "roll",
+        "--tau0-over-E",
+        "0.01",
+        "--T-over-Ea",
+        "0.01",
+        "0.03",
+        "--method",
+        "collocation",
+        "--json",
+    )
     assert code == 0, err
     ok, sliding = json.loads(out)
     assert ok["state"] == "stick-slip" and ok["converged"] is True
     assert ok["n_collocation"] > 0 and ok["residual_force"] < 1e-12
     assert ok["d_over_a"] == pytest.approx(-0.5, abs=1e-13)
-    assert sliding == {**sliding, "state": "sliding", "d_over_a": None, "creep_over_V": None,
-                       "T_over_Ea": 0.03}
+    assert sliding == {
+        **sliding,
+        "state": "sliding",
+        "d_over_a": None,
+        "creep_over_V": None,
+        "T_over_Ea": 0.03,
+    }
 
 
 def test_table_output(capsys):
-    code, out, _ = run(capsys, "slide-init", "--tau0-over-E", "0.01", "--T-over-Ea", "0.01",
-                       "0.02")
+    code, out, _ = run(capsys, "slide-init", "--tau0-over-E", "0.01", "--T-over-Ea", "0.01", "0.02")
     assert code == 0
     lines = out.splitlines()
     assert lines[0].startswith("# initiation of sliding, tau0/E = 0.01")
@@ -69,8 +85,19 @@ def test_table_output(capsys):
 
 
 def test_coulomb_nondimensional(capsys):
-    code, out, err = run(capsys, "roll", "--friction", "coulomb", "--mu", "0.3", "--a-over-R",
-                         "0.01", "--T-over-muF", "0.75", "--json")
+    code, out, err = run(
+        capsys,
+        "roll",
+        "--friction",
+        "coulomb",
+        "--mu",
+        "0.3",
+        "--a-over-R",
+        "0.01",
+        "--T-over-muF",
+        "0.75",
+        "--json",
+    )
     assert code == 0, err
     (rec,) = json.loads(out)
     ref = steady_rolling_coulomb(0.3, 0.01, T_over_muF=0.75)
@@ -78,18 +105,42 @@ def test_coulomb_nondimensional(capsys):
     assert rec["d_over_a"] == ref.d_over_a == pytest.approx(0.0, abs=1e-15)
     assert rec["creep_over_V"] == ref.creep_over_V and rec["T_over_Ea"] == ref.T_over_Ea
     # --T-over-Ea is converted with the Hertz load
-    code, out, _ = run(capsys, "slide-init", "--friction", "coulomb", "--mu", "0.3",
-                       "--a-over-R", "0.01", "--T-over-Ea", repr(float(ref.T_over_Ea)), "--json")
+    code, out, _ = run(
+        capsys,
+        "slide-init",
+        "--friction",
+        "coulomb",
+        "--mu",
+        "0.3",
+        "--a-over-R",
+        "0.01",
+        "--T-over-Ea",
+        repr(float(ref.T_over_Ea)),
+        "--json",
+    )
     (rec,) = json.loads(out)
     assert rec["T_over_muF"] == pytest.approx(0.75, rel=1e-14)
     assert rec["d_over_a"] == pytest.approx(
-        sliding_initiation_coulomb(0.3, 0.01, T_over_muF=0.75).d_over_a, rel=1e-14)
+        sliding_initiation_coulomb(0.3, 0.01, T_over_muF=0.75).d_over_a, rel=1e-14
+    )
 
 
 def test_normal_problem_from_the_groups(capsys):
-    code, out, err = run(capsys, "slide-init", "--R-over-h", "100", "--sigma0-over-E", "0.01",
-                         "--F-over-Eh", "0.5", "--tau0-over-E", "0.01", "--d-over-a", "0.5",
-                         "--json")
+    code, out, err = run(
+        capsys,
+        "slide-init",
+        "--R-over-h",
+        "100",
+        "--sigma0-over-E",
+        "0.01",
+        "--F-over-Eh",
+        "0.5",
+        "--tau0-over-E",
+        "0.01",
+        "--d-over-a",
+        "0.5",
+        "--json",
+    )
     assert code == 0, err
     (rec,) = json.loads(out)
     assert rec["a_over_R"] == contact_for_load(0.5, 100, 0.01).a_over_R
@@ -97,8 +148,24 @@ def test_normal_problem_from_the_groups(capsys):
 
 
 def test_si_mode_matches_the_api(capsys):
-    argv = ["--radius", "50e-9", "--modulus", "100e9", "--sigma0", "1e9", "--h", "0.5e-9",
-            "--load", "1.0", "--tau0", "1e9", "--tangential-load", "1", "5", "--json"]
+    argv = [
+        "--radius",
+        "50e-9",
+        "--modulus",
+        "100e9",
+        "--sigma0",
+        "1e9",
+        "--h",
+        "0.5e-9",
+        "--load",
+        "1.0",
+        "--tau0",
+        "1e9",
+        "--tangential-load",
+        "1",
+        "5",
+        "--json",
+    ]
     code, out, err = run(capsys, "slide-init", *argv)
     assert code == 0, err
     recs = json.loads(out)
@@ -109,15 +176,36 @@ def test_si_mode_matches_the_api(capsys):
     assert [r["T_N_per_m"] for r in recs] == pytest.approx([1, 5], rel=1e-14)
     assert recs[0]["T_full_slip_N_per_m"] == pytest.approx(2 * ref.contact_half_width * 1e9)
     # --T-over-Ea in SI mode goes through the same contact
-    code, out, _ = run(capsys, "slide-init", *argv[:-4], "--T-over-Ea",
-                       repr(recs[1]["T_over_Ea"]), "--json")
+    code, out, _ = run(
+        capsys, "slide-init", *argv[:-4], "--T-over-Ea", repr(recs[1]["T_over_Ea"]), "--json"
+    )
     assert json.loads(out)[0]["d_over_a"] == pytest.approx(recs[1]["d_over_a"], rel=1e-12)
 
 
 def test_si_mode_coulomb_needs_no_adhesion_range(capsys):
-    code, out, err = run(capsys, "roll", "--friction", "coulomb", "--mu", "0.3", "--radius",
-                         "1e-3", "--E1", "200e9", "--nu1", "0.3", "--E2", "200e9", "--nu2", "0.3",
-                         "--load", "1e4", "--d-over-a", "0", "--json")
+    code, out, err = run(
+        capsys,
+        "roll",
+        "--friction",
+        "coulomb",
+        "--mu",
+        "0.3",
+        "--radius",
+        "1e-3",
+        "--E1",
+        "200e9",
+        "--nu1",
+        "0.3",
+        "--E2",
+        "200e9",
+        "--nu2",
+        "0.3",
+        "--load",
+        "1e4",
+        "--d-over-a",
+        "0",
+        "--json",
+    )
     assert code == 0, err
     (rec,) = json.loads(out)
     E = 1 / (2 * (1 - 0.09) / 200e9)
@@ -128,62 +216,187 @@ def test_si_mode_coulomb_needs_no_adhesion_range(capsys):
 
 
 BAD = [
-    (["slide-init", "--tau0-over-E", "0", "--d-over-a", "0.5"],
-     "tau0_over_E must be in (0, inf), got 0.0"),
-    (["roll", "--tau0-over-E", "0.01", "--d-over-a", "1.5"],
-     "d_over_a must be in (-1, 1), got 1.5"),
-    (["slide-init", "--tau0-over-E", "0.01", "--d-over-a", "1"],
-     "d_over_a must be in [0, 1), got 1.0"),
-    (["roll", "--tau0-over-E", "nan", "--d-over-a", "0.5"],
-     "tau0_over_E must be a finite number in (0, inf), got nan"),
-    (["roll", "--tau0-over-E", "0.01", "--T-over-Ea", "-1"],
-     "T_over_Ea must be in [0, inf), got -1.0"),
-    (["roll", "--tau0-over-E", "0.01"],
-     "give exactly one of --d-over-a, --T-over-Ea, --T-over-muF (Coulomb) or "
-     "--tangential-load [N/m] (SI)"),
-    (["roll", "--tau0-over-E", "0.01", "--d-over-a", "0", "--T-over-Ea", "0.01"],
-     "give exactly one of --d-over-a"),
+    (
+        ["slide-init", "--tau0-over-E", "0", "--d-over-a", "0.5"],
+        "tau0_over_E must be in (0, inf), got 0.0",
+    ),
+    (
+        ["roll", "--tau0-over-E", "0.01", "--d-over-a", "1.5"],
+        "d_over_a must be in (-1, 1), got 1.5",
+    ),
+    (
+        ["slide-init", "--tau0-over-E", "0.01", "--d-over-a", "1"],
+        "d_over_a must be in [0, 1), got 1.0",
+    ),
+    (
+        ["roll", "--tau0-over-E", "nan", "--d-over-a", "0.5"],
+        "tau0_over_E must be a finite number in (0, inf), got nan",
+    ),
+    (
+        ["roll", "--tau0-over-E", "0.01", "--T-over-Ea", "-1"],
+        "T_over_Ea must be in [0, inf), got -1.0",
+    ),
+    (
+        ["roll", "--tau0-over-E", "0.01"],
+        "give exactly one of --d-over-a, --T-over-Ea, --T-over-muF (Coulomb) or "
+        "--tangential-load [N/m] (SI)",
+    ),
+    (
+        ["roll", "--tau0-over-E", "0.01", "--d-over-a", "0", "--T-over-Ea", "0.01"],
+        "give exactly one of --d-over-a",
+    ),
     (["roll", "--d-over-a", "0.5"], "give the friction stress --tau0-over-E"),
-    (["roll", "--tau0-over-E", "0.01", "--mu", "0.3", "--d-over-a", "0.5"],
-     "--mu is the Coulomb friction coefficient: add --friction coulomb"),
-    (["roll", "--friction", "coulomb", "--a-over-R", "0.01", "--d-over-a", "0.5"],
-     "--friction coulomb needs the friction coefficient --mu"),
-    (["roll", "--friction", "coulomb", "--mu", "0.3", "--d-over-a", "0.5"],
-     "Coulomb friction needs the Hertz half-width: give --a-over-R"),
-    (["slide-init", "--friction", "coulomb", "--mu", "0", "--a-over-R", "0.01",
-      "--d-over-a", "0.5"], "mu must be in (0, inf), got 0.0"),
-    (["slide-init", "--friction", "coulomb", "--mu", "0.3", "--tau0-over-E", "0.01",
-      "--a-over-R", "0.01", "--d-over-a", "0.5"],
-     "--tau0-over-E and --tau0 are for --friction constant"),
-    (["slide-init", "--tau0-over-E", "0.01", "--T-over-muF", "0.5"],
-     "--T-over-muF is for --friction coulomb; use --T-over-Ea"),
-    (["slide-init", "--tau0", "1e9", "--d-over-a", "0.5"],
-     "--tau0 [Pa] is an SI input"),
-    (["slide-init", "--tau0-over-E", "0.01", "--tangential-load", "1"],
-     "--tangential-load [N/m] is an SI input"),
-    (["slide-init", "--tau0-over-E", "0.01", "--d-over-a", "0.5", "--radius", "5e-8",
-      "--modulus", "1e11", "--h", "5e-10"], "SI inputs need the normal load --load [N/m]"),
-    (["slide-init", "--tau0-over-E", "0.01", "--d-over-a", "0.5", "--load", "1"],
-     "--load [N/m] is an SI input"),
-    (["slide-init", "--tau0-over-E", "0.01", "--d-over-a", "0.5", "--R-over-h", "100",
-      "--sigma0-over-E", "0.01"], "with --R-over-h and --sigma0-over-E give the normal load"),
-    (["slide-init", "--tau0-over-E", "0.01", "--d-over-a", "0.5", "--R-over-h", "100",
-      "--sigma0-over-E", "0.01", "--F-over-Eh", "-100"], "below the pull-off force"),
-    (["roll", "--friction", "coulomb", "--mu", "0.3", "--R-over-h", "100",
-      "--sigma0-over-E", "0.01", "--F-over-Eh", "1", "--d-over-a", "0"],
-     "Coulomb friction is the counterpart for the non-adhesive Hertz contact"),
-    (["roll", "--friction", "coulomb", "--mu", "0.3", "--radius", "5e-8", "--modulus", "1e11",
-      "--sigma0", "1e9", "--h", "5e-10", "--load", "1", "--d-over-a", "0"],
-     "Coulomb friction is the macro-scale counterpart"),
-    (["roll", "--tau0-over-E", "0.01", "--d-over-a", "0.5", "--method", "exact"],
-     "argument --method: invalid choice"),
+    (
+        ["roll", "--tau0-over-E", "0.01", "--mu", "0.3", "--d-over-a", "0.5"],
+        "--mu is the Coulomb friction coefficient: add --friction coulomb",
+    ),
+    (
+        ["roll", "--friction", "coulomb", "--a-over-R", "0.01", "--d-over-a", "0.5"],
+        "--friction coulomb needs the friction coefficient --mu",
+    ),
+    (
+        ["roll", "--friction", "coulomb", "--mu", "0.3", "--d-over-a", "0.5"],
+        "Coulomb friction needs the Hertz half-width: give --a-over-R",
+    ),
+    (
+        [
+            "slide-init",
+            "--friction",
+            "coulomb",
+            "--mu",
+            "0",
+            "--a-over-R",
+            "0.01",
+            "--d-over-a",
+            "0.5",
+        ],
+        "mu must be in (0, inf), got 0.0",
+    ),
+    (
+        [
+            "slide-init",
+            "--friction",
+            "coulomb",
+            "--mu",
+            "0.3",
+            "--tau0-over-E",
+            "0.01",
+            "--a-over-R",
+            "0.01",
+            "--d-over-a",
+            "0.5",
+        ],
+        "--tau0-over-E and --tau0 are for --friction constant",
+    ),
+    (
+        ["slide-init", "--tau0-over-E", "0.01", "--T-over-muF", "0.5"],
+        "--T-over-muF is for --friction coulomb; use --T-over-Ea",
+    ),
+    (["slide-init", "--tau0", "1e9", "--d-over-a", "0.5"], "--tau0 [Pa] is an SI input"),
+    (
+        ["slide-init", "--tau0-over-E", "0.01", "--tangential-load", "1"],
+        "--tangential-load [N/m] is an SI input",
+    ),
+    (
+        [
+            "slide-init",
+            "--tau0-over-E",
+            "0.01",
+            "--d-over-a",
+            "0.5",
+            "--radius",
+            "5e-8",
+            "--modulus",
+            "1e11",
+            "--h",
+            "5e-10",
+        ],
+        "SI inputs need the normal load --load [N/m]",
+    ),
+    (
+        ["slide-init", "--tau0-over-E", "0.01", "--d-over-a", "0.5", "--load", "1"],
+        "--load [N/m] is an SI input",
+    ),
+    (
+        [
+            "slide-init",
+            "--tau0-over-E",
+            "0.01",
+            "--d-over-a",
+            "0.5",
+            "--R-over-h",
+            "100",
+            "--sigma0-over-E",
+            "0.01",
+        ],
+        "with --R-over-h and --sigma0-over-E give the normal load",
+    ),
+    (
+        [
+            "slide-init",
+            "--tau0-over-E",
+            "0.01",
+            "--d-over-a",
+            "0.5",
+            "--R-over-h",
+            "100",
+            "--sigma0-over-E",
+            "0.01",
+            "--F-over-Eh",
+            "-100",
+        ],
+        "below the pull-off force",
+    ),
+    (
+        [
+            "roll",
+            "--friction",
+            "coulomb",
+            "--mu",
+            "0.3",
+            "--R-over-h",
+            "100",
+            "--sigma0-over-E",
+            "0.01",
+            "--F-over-Eh",
+            "1",
+            "--d-over-a",
+            "0",
+        ],
+        "Coulomb friction is the counterpart for the non-adhesive Hertz contact",
+    ),
+    (
+        [
+            "roll",
+            "--friction",
+            "coulomb",
+            "--mu",
+            "0.3",
+            "--radius",
+            "5e-8",
+            "--modulus",
+            "1e11",
+            "--sigma0",
+            "1e9",
+            "--h",
+            "5e-10",
+            "--load",
+            "1",
+            "--d-over-a",
+            "0",
+        ],
+        "Coulomb friction is the macro-scale counterpart",
+    ),
+    (
+        ["roll", "--tau0-over-E", "0.01", "--d-over-a", "0.5", "--method", "exact"],
+        "argument --method: invalid choice",
+    ),
 ]
 
 
 @pytest.mark.parametrize(("argv", "message"), BAD, ids=[" ".join(a)[:60] for a, _ in BAD])
 def test_bad_input_one_line_exit_2(capsys, argv, message):
-    code, out, err = run(capsys, *argv) if "--method" not in argv[-2:] else _argparse(capsys,
-                                                                                        argv)
+    code, out, err = run(capsys, *argv) if "--method" not in argv[-2:] else _argparse(capsys, argv)
     assert code == 2 and out == ""
     lines = err.strip().splitlines()
     assert len(lines) == 1 and "error:" in lines[0] and "Traceback" not in err
@@ -205,8 +418,17 @@ def test_help_lists_the_subcommands(capsys):
 
 
 def test_collocation_diagnostics_in_records(capsys):
-    code, out, _ = run(capsys, "slide-init", "--tau0-over-E", "0.02", "--d-over-a", "0.9",
-                       "--method", "collocation", "--json")
+    code, out, _ = run(
+        capsys,
+        "slide-init",
+        "--tau0-over-E",
+        "0.02",
+        "--d-over-a",
+        "0.9",
+        "--method",
+        "collocation",
+        "--json",
+    )
     (rec,) = json.loads(out)
     assert rec["method"] == "collocation" and rec["n_collocation"] >= 16
     assert rec["residual_stick"] < 1e-12 and rec["converged"] is True

@@ -9,16 +9,23 @@ import pytest
 
 import linecontact
 
-MODULES = sorted(m.name for m in pkgutil.walk_packages(linecontact.__path__, "linecontact.")
-                 if not m.name.endswith("__main__"))
+MODULES = sorted(
+    m.name
+    for m in pkgutil.walk_packages(linecontact.__path__, "linecontact.")
+    if not m.name.endswith("__main__")
+)
 
 
 @pytest.mark.parametrize("name", MODULES)
 def test_docstring_examples(name):
     module = importlib.import_module(name)
     with np.printoptions(legacy="1.25"):
-        result = doctest.testmod(module, optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE,
-                                 report=True, verbose=False)
+        result = doctest.testmod(
+            module,
+            optionflags=doctest.ELLIPSIS | doctest.NORMALIZE_WHITESPACE,
+            report=True,
+            verbose=False,
+        )
     assert result.failed == 0, f"{result.failed} of {result.attempted} examples failed in {name}"
 
 

@@ -12,11 +12,23 @@ matplotlib.use("Agg")
 
 from linecontact.figures import paper_figures  # noqa: E402
 
-STEMS = ("fig02_load_R100", "fig03_load_R200", "fig04_zone_R100", "fig05_zone_R200",
-         "fig06_zero_width",
-         "fig07_sliding_initiation", "fig13_rolling_force", "fig14_rolling_creep")
-STEMS += ("fig08_sliding_schematic", "fig09_zone_difference_s001",  # steady sliding
-          "fig10_zone_difference_s004", "fig11_moment_s001", "fig12_moment_s004")
+STEMS = (
+    "fig02_load_R100",
+    "fig03_load_R200",
+    "fig04_zone_R100",
+    "fig05_zone_R200",
+    "fig06_zero_width",
+    "fig07_sliding_initiation",
+    "fig13_rolling_force",
+    "fig14_rolling_creep",
+)
+STEMS += (
+    "fig08_sliding_schematic",
+    "fig09_zone_difference_s001",  # steady sliding
+    "fig10_zone_difference_s004",
+    "fig11_moment_s001",
+    "fig12_moment_s004",
+)
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"
 
 
@@ -74,6 +86,5 @@ def test_missing_matplotlib_message(tmp_path, monkeypatch):
 
 
 def test_import_does_not_load_matplotlib():
-    code = ("import sys, linecontact, linecontact.figures; "
-            "assert 'matplotlib' not in sys.modules")
+    code = "import sys, linecontact, linecontact.figures; assert 'matplotlib' not in sys.modules"
     subprocess.run([sys.executable, "-c", code], check=True)

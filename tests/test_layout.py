@@ -15,8 +15,12 @@ import pytest
 import linecontact
 
 FLOORS = {
-    "base": ["linecontact._version", "linecontact.errors", "linecontact._validation",
-             "linecontact.results"],
+    "base": [
+        "linecontact._version",
+        "linecontact.errors",
+        "linecontact._validation",
+        "linecontact.results",
+    ],
     "core": ["linecontact.sie", "linecontact.reference", "linecontact.materials"],
     "problems": ["linecontact.normal", "linecontact.sliding", "linecontact.tangential"],
     "si": ["linecontact.cylinder"],
@@ -99,7 +103,7 @@ def test_no_import_circle():
             # a package's __init__ importing its own submodules is not a circle; a submodule
             # importing its package's __init__ would be
             if state.get(t) == 1:
-                cycle = stack[stack.index(t):] + [t]
+                cycle = stack[stack.index(t) :] + [t]
                 raise AssertionError("import circle: " + " -> ".join(cycle))
             if t not in state:
                 visit(t)

@@ -58,12 +58,14 @@ def test_cylinder_groups_and_results():
 
 def test_coupling_warning():
     with pytest.warns(CouplingWarning, match="Dundurs beta"):
-        lc.Cylinder.from_materials(50e-9, 70e9, 0.17, 160e9, 0.22, cohesive_stress=1e8,
-                                   adhesion_range=1e-9)
+        lc.Cylinder.from_materials(
+            50e-9, 70e9, 0.17, 160e9, 0.22, cohesive_stress=1e8, adhesion_range=1e-9
+        )
     with warnings.catch_warnings():
         warnings.simplefilter("error")
-        cyl = lc.Cylinder.from_materials(50e-9, 70e9, 0.2, 70e9, 0.2, cohesive_stress=1e8,
-                                         adhesion_range=1e-9)
+        cyl = lc.Cylinder.from_materials(
+            50e-9, 70e9, 0.2, 70e9, 0.2, cohesive_stress=1e8, adhesion_range=1e-9
+        )
     assert cyl.dundurs_beta == 0.0
 
 
@@ -76,13 +78,20 @@ BAD = [
     (lambda: lc.adhesion_from_work(0.1, np.nan), "equilibrium_spacing"),
     (lambda: lc.Cylinder.from_modulus(0, 1e9, adhesion_range=1e-9), "radius must be in"),
     (lambda: lc.Cylinder.from_modulus(1e-6, 1e9, cohesive_stress=1e8), "adhesion_range"),
-    (lambda: lc.Cylinder.from_modulus(1e-6, 1e9, cohesive_stress=1e8, adhesion_range=1e-9,
-                                      work_of_adhesion=0.1), "not both"),
+    (
+        lambda: lc.Cylinder.from_modulus(
+            1e-6, 1e9, cohesive_stress=1e8, adhesion_range=1e-9, work_of_adhesion=0.1
+        ),
+        "not both",
+    ),
     (lambda: lc.Cylinder.from_modulus(1e-6, 1e9, work_of_adhesion=0.1), "both work_of_adhesion"),
-    (lambda: lc.Cylinder.from_modulus(1e-6, 1e9, adhesion_range=1e-9).contact(),
-     "exactly one of"),
-    (lambda: lc.Cylinder.from_modulus(1e-6, 1e9, adhesion_range=1e-9).contact(
-        contact_half_width=-1.0), "contact_half_width must be in"),
+    (lambda: lc.Cylinder.from_modulus(1e-6, 1e9, adhesion_range=1e-9).contact(), "exactly one of"),
+    (
+        lambda: lc.Cylinder.from_modulus(1e-6, 1e9, adhesion_range=1e-9).contact(
+            contact_half_width=-1.0
+        ),
+        "contact_half_width must be in",
+    ),
 ]
 
 

@@ -42,7 +42,7 @@ ZERO = (100.0, 0.01)
 
 
 def log_uniform(lo, hi):
-    return st.floats(math.log10(lo), math.log10(hi)).map(lambda e: 10.0 ** e)
+    return st.floats(math.log10(lo), math.log10(hi)).map(lambda e: 10.0**e)
 
 
 def load_scale(A, C, rho, s):
@@ -65,12 +65,15 @@ def test_collocation_matches_closed_form(s, rho, A):
     scale = load_scale(A, cf.c_over_R, rho, s)
     assert abs(co.F_over_Eh - cf.F_over_Eh) <= 1e-8 * scale, msg
     assert abs(co.c_over_R - cf.c_over_R) <= 1e-8 * cf.c_over_R, msg
-    assert co.stable == cf.stable or abs(cf.F_over_Eh - pull_off(rho, s).F_minimum_over_Eh) \
-        <= 1e-6 * scale, msg
+    assert (
+        co.stable == cf.stable
+        or abs(cf.F_over_Eh - pull_off(rho, s).F_minimum_over_Eh) <= 1e-6 * scale
+    ), msg
 
 
-@pytest.mark.parametrize("A, rho, s", [(0.2, 1e4, 0.3), (0.1, 1e4, 0.3), (0.05, 1e4, 0.3),
-                                       (0.15, 2000.0, 0.27)])
+@pytest.mark.parametrize(
+    "A, rho, s", [(0.2, 1e4, 0.3), (0.1, 1e4, 0.3), (0.05, 1e4, 0.3), (0.15, 2000.0, 0.27)]
+)
 def test_collocation_matches_closed_form_jkr_like(A, rho, s):
     """Thin adhesive zones, c/a - 1 < 1e-2: the hard end for the collocation."""
     msg = f"a_over_R={A}, R_over_h={rho}, sigma0_over_E={s}"
@@ -110,14 +113,16 @@ def test_hertz_limit_exact(method):
     # the pressure is Hertz's: (1/2) sqrt(a^2 - x^2) / R in units of E
     r1 = normal_contact(0.05, 100.0, 0.0, method=method)
     x = np.linspace(-0.049, 0.049, 11)
-    assert_allclose(r1.pressure(x), 0.5 * np.sqrt(0.05 ** 2 - x * x), rtol=1e-12, atol=1e-16)
+    assert_allclose(r1.pressure(x), 0.5 * np.sqrt(0.05**2 - x * x), rtol=1e-12, atol=1e-16)
 
 
 def test_hertz_limit_approached_as_sigma0_vanishes():
     A = np.array([1e-3, 0.01, 0.1])
     rho = 100.0
-    errs = [np.max(np.abs(normal_contact(A, rho, s).F_over_Eh / reference.hertz_load(A, rho)
-                          - 1)) for s in (1e-4, 1e-6, 1e-8, 1e-10)]
+    errs = [
+        np.max(np.abs(normal_contact(A, rho, s).F_over_Eh / reference.hertz_load(A, rho) - 1))
+        for s in (1e-4, 1e-6, 1e-8, 1e-10)
+    ]
     for e_big, e_small in zip(errs, errs[1:], strict=False):
         assert e_small < e_big / 50, f"relative Hertz errors {errs}"
     assert errs[-1] < 1e-4
@@ -161,12 +166,12 @@ def test_eq14_limit_collocation_moderate(rho, s):
     A = np.array([1e-6, 1e-7])
     co = normal_contact(A, rho, s, method="collocation")
     cf = normal_contact(A, rho, s)
-    assert_allclose(co.F_over_Eh, cf.F_over_Eh, rtol=1e-12,
-                    err_msg=f"R_over_h={rho}, sigma0_over_E={s}")
+    assert_allclose(
+        co.F_over_Eh, cf.F_over_Eh, rtol=1e-12, err_msg=f"R_over_h={rho}, sigma0_over_E={s}"
+    )
 
 
-@pytest.mark.parametrize("A, rho, s", [(1e-10, 100.0, 0.01), (1e-9, 100.0, 0.2),
-                                       (1e-12, 1e4, 0.3)])
+@pytest.mark.parametrize("A, rho, s", [(1e-10, 100.0, 0.01), (1e-9, 100.0, 0.2), (1e-12, 1e4, 0.3)])
 def test_eq14_limit_collocation_tiny_width(A, rho, s):
     co = normal_contact(A, rho, s, method="collocation")
     assert_allclose(co.F_over_Eh, normal_contact(A, rho, s).F_over_Eh, rtol=1e-12)
@@ -208,8 +213,14 @@ def load_from_pressure(r):
     return rho * (inner + zones)
 
 
-SEPARATION_POINTS = [(0.05, 100.0, 0.01), (0.02, 1000.0, 0.1), (0.1, 100.0, 0.2),
-                     (0.001, 100.0, 0.01), (0.13, 1000.0, 0.1), (0.05, 100.0, 0.0)]
+SEPARATION_POINTS = [
+    (0.05, 100.0, 0.01),
+    (0.02, 1000.0, 0.1),
+    (0.1, 100.0, 0.2),
+    (0.001, 100.0, 0.01),
+    (0.13, 1000.0, 0.1),
+    (0.05, 100.0, 0.0),
+]
 
 
 @pytest.mark.parametrize("method", ["closed-form", "collocation"])
@@ -228,8 +239,9 @@ def test_separation_condition_by_quadrature(A, rho, s, method):
 def test_equilibrium_by_quadrature(A, rho, s, method):
     r = normal_contact(A, rho, s, method=method)
     scale = load_scale(A, r.c_over_R, rho, s)
-    assert abs(load_from_pressure(r) - r.F_over_Eh) <= 1e-10 * scale, \
+    assert abs(load_from_pressure(r) - r.F_over_Eh) <= 1e-10 * scale, (
         f"{method}: a_over_R={A}, R_over_h={rho}, sigma0_over_E={s}"
+    )
 
 
 def test_pressure_shape_and_regions():
@@ -249,8 +261,9 @@ def test_pressure_shape_and_regions():
     assert_allclose(r.pressure(np.array([a * (1 - 1e-12)]))[0], -0.05, atol=1e-6)
     # the centre: p(0)/E = a/(2R) - (2 s0/(pi E)) arctan(sqrt(c^2 - a^2)/a)
     A = r.a_over_R
-    assert_allclose(p[:, 0], A / 2 - (2 * 0.05 / np.pi) * np.arctan(np.sqrt(C * C - A * A) / A),
-                    rtol=1e-13)
+    assert_allclose(
+        p[:, 0], A / 2 - (2 * 0.05 / np.pi) * np.arctan(np.sqrt(C * C - A * A) / A), rtol=1e-13
+    )
 
 
 # --------------------------------------------------------------------------------------------
@@ -266,15 +279,15 @@ def test_collocation_converges_geometrically():
     assert abs(m - 1.05) < 1e-3
     rate = m + np.sqrt(m * m - 1)  # Bernstein ellipse of the log source at x = c
     ns = [16, 32, 64, 128]
-    runs = [normal_contact(A, rho, s, method="collocation", n=n, raise_on_failure=False)
-            for n in ns]
+    runs = [
+        normal_contact(A, rho, s, method="collocation", n=n, raise_on_failure=False) for n in ns
+    ]
     errF = np.array([abs(r.F_over_Eh - cf.F_over_Eh) / abs(cf.F_over_Eh) for r in runs])
     errC = np.array([abs(r.c_over_R / cf.c_over_R - 1) for r in runs])
     for i in range(len(ns) - 1):
         dn = ns[i + 1] - ns[i]
         for name, e in (("F", errF), ("c", errC)):
-            assert e[i + 1] <= max(10 * rate ** -dn * e[i], 1e-14), \
-                f"{name} errors {e} at n={ns}"
+            assert e[i + 1] <= max(10 * rate**-dn * e[i], 1e-14), f"{name} errors {e} at n={ns}"
     assert errF[0] > 1e-6  # the coarse error is real
     assert errF[-1] < 1e-13 and errC[-1] < 1e-13
     for r, n, eF, eC in zip(runs, ns, errF, errC, strict=True):
@@ -294,9 +307,19 @@ def test_diagnostics_shapes_and_types():
     co = normal_contact(A, 1000.0, s, method="collocation")
     cf = normal_contact(A, 1000.0, s)
     for r in (co, cf):
-        for name in ("a_over_R", "c_over_R", "F_over_Eh", "R_over_h", "sigma0_over_E",
-                     "n_collocation", "residual_separation", "residual_consistency",
-                     "error_estimate", "converged", "stable"):
+        for name in (
+            "a_over_R",
+            "c_over_R",
+            "F_over_Eh",
+            "R_over_h",
+            "sigma0_over_E",
+            "n_collocation",
+            "residual_separation",
+            "residual_consistency",
+            "error_estimate",
+            "converged",
+            "stable",
+        ):
             assert np.shape(getattr(r, name)) == (2, 3), f"{r.method}: {name}"
         assert r.converged.dtype == bool and r.stable.dtype == bool
         assert np.issubdtype(r.n_collocation.dtype, np.integer)
@@ -312,8 +335,9 @@ def test_diagnostics_shapes_and_types():
 
 
 def test_convergence_error_names_the_point():
-    with pytest.raises(ConvergenceError,
-                       match=r"a_over_R=.*0\.1.*R_over_h=.*10000\.0.*sigma0_over_E=.*0\.3"):
+    with pytest.raises(
+        ConvergenceError, match=r"a_over_R=.*0\.1.*R_over_h=.*10000\.0.*sigma0_over_E=.*0\.3"
+    ):
         normal_contact(0.1, 1e4, 0.3, method="collocation", n=16)
     assert issubclass(ConvergenceError, RuntimeError)
     r = normal_contact(0.1, 1e4, 0.3, method="collocation", n=16, raise_on_failure=False)
@@ -353,8 +377,16 @@ def test_broadcasting(method):
 @pytest.mark.parametrize("method", ["closed-form", "collocation"])
 def test_scalars_give_python_scalars(method):
     r = normal_contact(0.05, 100.0, 0.02, method=method)
-    for name in ("a_over_R", "c_over_R", "F_over_Eh", "R_over_h", "sigma0_over_E",
-                 "residual_separation", "residual_consistency", "error_estimate"):
+    for name in (
+        "a_over_R",
+        "c_over_R",
+        "F_over_Eh",
+        "R_over_h",
+        "sigma0_over_E",
+        "residual_separation",
+        "residual_consistency",
+        "error_estimate",
+    ):
         assert type(getattr(r, name)) is float, name
     assert type(r.n_collocation) is int
     assert type(r.converged) is bool and type(r.stable) is bool
@@ -367,8 +399,10 @@ def test_stable_flag_is_sign_of_dF_da():
     A = np.geomspace(1e-3, 0.5, 40)
     r = normal_contact(A, rho, s)
     h = 1e-6
-    dF = (normal_contact(A * (1 + h), rho, s).F_over_Eh
-          - normal_contact(A * (1 - h), rho, s).F_over_Eh)
+    dF = (
+        normal_contact(A * (1 + h), rho, s).F_over_Eh
+        - normal_contact(A * (1 - h), rho, s).F_over_Eh
+    )
     assert_array_equal(r.stable, dF > 0)
     assert not r.stable[0] and r.stable[-1]
 
@@ -383,7 +417,7 @@ def test_kappa_stationary_strictly_decreasing():
     assert np.all(np.isfinite(k))
     assert np.all(np.diff(k) < 0)
     # the ends: infinity at u -> 0 (as 2 sqrt(2) u^(-3/2)) and 0 at u -> infinity
-    assert_allclose(k[0], 2 * np.sqrt(2) * 1e-6 ** -1.5, rtol=1e-5)
+    assert_allclose(k[0], 2 * np.sqrt(2) * 1e-6**-1.5, rtol=1e-5)
     assert k[-1] < 1e-5
 
 
@@ -391,8 +425,17 @@ def test_kappa_stationary_strictly_decreasing():
 def test_pull_off_is_the_minimum_over_a_dense_grid():
     """Brute force: no point of a dense a/R grid (1e-12 .. 1) lies below F_minimum_over_Eh."""
     A = np.geomspace(1e-12, 1.0, 100_000)
-    cases = [(100.0, 1e-3), (100.0, 0.01), (100.0, 0.05), (100.0, 0.1), (100.0, 0.2),
-             (100.0, 0.5), (10.0, 1e-4), (1e4, 0.3), (1000.0, 0.1)]
+    cases = [
+        (100.0, 1e-3),
+        (100.0, 0.01),
+        (100.0, 0.05),
+        (100.0, 0.1),
+        (100.0, 0.2),
+        (100.0, 0.5),
+        (10.0, 1e-4),
+        (1e4, 0.3),
+        (1000.0, 0.1),
+    ]
     for rho, s in cases:
         po = pull_off(rho, s)
         F = normal_contact(A, rho, s).F_over_Eh
@@ -416,8 +459,9 @@ def test_pull_off_zero_width_mechanism(rho, s):
     assert_allclose(po.c_over_R_at_pulloff, non_contact(0.0, rho, s).c_over_R, rtol=1e-13)
     # the interior minimum exists but is indistinguishable from Eq. 14
     assert po.F_minimum_over_Eh <= po.F_zero_width_over_Eh
-    assert po.F_zero_width_over_Eh - po.F_minimum_over_Eh <= \
-        ZERO_WIDTH_RTOL * abs(po.F_zero_width_over_Eh)
+    assert po.F_zero_width_over_Eh - po.F_minimum_over_Eh <= ZERO_WIDTH_RTOL * abs(
+        po.F_zero_width_over_Eh
+    )
     assert_allclose(po.kappa, reference.kappa(rho, s), rtol=1e-15)
     assert_allclose(po.maugis_parameter, reference.maugis_parameter(rho, s), rtol=1e-15)
 
@@ -442,15 +486,16 @@ def test_pull_off_hertz():
     assert po.kappa == 0.0
 
 
-@pytest.mark.parametrize("rho, s", [SNAP, (100.0, 0.05), (1000.0, 0.1), (100.0, 0.5),
-                                    (1e4, 0.3)])
+@pytest.mark.parametrize("rho, s", [SNAP, (100.0, 0.05), (1000.0, 0.1), (100.0, 0.5), (1e4, 0.3)])
 def test_load_is_stationary_at_the_minimum(rho, s):
     po = pull_off(rho, s)
     a = po.a_over_R_at_minimum
 
     def a_dF_da(aa, h=1e-4):
-        return (normal_contact(aa * (1 + h), rho, s).F_over_Eh
-                - normal_contact(aa * (1 - h), rho, s).F_over_Eh) / (2 * h)
+        return (
+            normal_contact(aa * (1 + h), rho, s).F_over_Eh
+            - normal_contact(aa * (1 - h), rho, s).F_over_Eh
+        ) / (2 * h)
 
     left, mid, right = a_dF_da(0.8 * a), a_dF_da(a), a_dF_da(1.2 * a)
     msg = f"R_over_h={rho}, sigma0_over_E={s}: {left}, {mid}, {right}"
@@ -464,8 +509,14 @@ def test_pull_off_vectorised_1000_points():
     s = 10 ** rng.uniform(-5, 0, 1000)
     po = pull_off(rho, s)
     assert po.F_pulloff_over_Eh.shape == (1000,)
-    for name in ("F_pulloff_over_Eh", "a_over_R_at_pulloff", "c_over_R_at_pulloff",
-                 "F_minimum_over_Eh", "a_over_R_at_minimum", "kappa"):
+    for name in (
+        "F_pulloff_over_Eh",
+        "a_over_R_at_pulloff",
+        "c_over_R_at_pulloff",
+        "F_minimum_over_Eh",
+        "a_over_R_at_minimum",
+        "kappa",
+    ):
         assert np.all(np.isfinite(getattr(po, name))), name
     F0 = reference.zero_width_load(rho, s)
     assert np.all(po.F_pulloff_over_Eh <= F0)
@@ -480,8 +531,7 @@ def test_pull_off_vectorised_1000_points():
     # the mechanism is ordered by kappa: all zero-width cases below all snap-off cases
     assert po.kappa[zw].max() < po.kappa[~zw].min()
     # pull_off broadcasts like the others
-    assert pull_off(np.array([[10.0], [100.0]]), np.array([0.01, 0.1, 0.3])).kappa.shape \
-        == (2, 3)
+    assert pull_off(np.array([[10.0], [100.0]]), np.array([0.01, 0.1, 0.3])).kappa.shape == (2, 3)
 
 
 def test_pull_off_scalar_output():
@@ -665,8 +715,7 @@ def test_load_curve_snap_off():
     assert_allclose(lc.F_over_Eh[nc][-1], reference.zero_width_load(rho, s), rtol=1e-14)
     assert_array_equal(lc.a_over_R[nc], 0.0)
     assert_array_equal(lc.central_gap_over_h[ct], 0.0)
-    assert_allclose(lc.F_over_Eh[ct], normal_contact(lc.a_over_R[ct], rho, s).F_over_Eh,
-                    rtol=1e-13)
+    assert_allclose(lc.F_over_Eh[ct], normal_contact(lc.a_over_R[ct], rho, s).F_over_Eh, rtol=1e-13)
     assert lc.a_over_R.size == lc.F_over_Eh.size == lc.c_over_R.size == lc.stable.size
 
 
@@ -694,10 +743,18 @@ BAD_NORMAL = [
     (normal_contact, (0.1, 100.0, -0.01), {}, r"sigma0_over_E must be in \[0, inf\)"),
     (normal_contact, (0.1, 100.0, np.nan), {}, r"sigma0_over_E must be a finite number"),
     (normal_contact, ([0.1, -0.2], 100.0, 0.01), {}, r"a_over_R must be in .* got -0\.2"),
-    (normal_contact, (0.1, 100.0, 0.01), {"method": "foo"},
-     r"method must be 'closed-form' or 'collocation', got 'foo'"),
-    (normal_contact, (0.1, 100.0, 0.01), {"method": "collocation", "n": 1},
-     r"n must be 'auto' or an integer in \[2, 8192\], got 1"),
+    (
+        normal_contact,
+        (0.1, 100.0, 0.01),
+        {"method": "foo"},
+        r"method must be 'closed-form' or 'collocation', got 'foo'",
+    ),
+    (
+        normal_contact,
+        (0.1, 100.0, 0.01),
+        {"method": "collocation", "n": 1},
+        r"n must be 'auto' or an integer in \[2, 8192\], got 1",
+    ),
     (normal_contact, (0.1, 100.0, 0.01), {"n": 1.5}, r"n must be 'auto' or an integer"),
     (normal_contact, (0.1, 100.0, 0.01), {"n": True}, r"n must be 'auto' or an integer"),
     (normal_contact, (0.1, 100.0, 0.01), {"n": 10_000}, r"n must be 'auto' or an integer"),
@@ -713,8 +770,12 @@ BAD_NORMAL = [
     (contact_for_load, (np.inf, 100.0, 0.1), {}, r"F_over_Eh must be a finite number"),
     (contact_for_load, (1.0, -1.0, 0.1), {}, r"R_over_h must be in \(0, inf\)"),
     (contact_for_load, (1.0, 100.0, -0.1), {}, r"sigma0_over_E must be in \[0, inf\)"),
-    (contact_for_load, (1.0, 100.0, 0.1), {"branch": "both"},
-     r"branch must be 'stable' or 'unstable', got 'both'"),
+    (
+        contact_for_load,
+        (1.0, 100.0, 0.1),
+        {"branch": "both"},
+        r"branch must be 'stable' or 'unstable', got 'both'",
+    ),
     (non_contact, (-0.1, 100.0, 0.1), {}, r"central_gap_over_h must be in \[0, 1\], got -0\.1"),
     (non_contact, (1.5, 100.0, 0.1), {}, r"central_gap_over_h must be in \[0, 1\], got 1\.5"),
     (non_contact, (np.nan, 100.0, 0.1), {}, r"central_gap_over_h must be a finite number"),
@@ -728,8 +789,11 @@ BAD_NORMAL = [
 ]
 
 
-@pytest.mark.parametrize("func, args, kwargs, message", BAD_NORMAL,
-                         ids=[f"{f.__name__}-{m}" for f, _, _, m in BAD_NORMAL])
+@pytest.mark.parametrize(
+    "func, args, kwargs, message",
+    BAD_NORMAL,
+    ids=[f"{f.__name__}-{m}" for f, _, _, m in BAD_NORMAL],
+)
 def test_bad_input(func, args, kwargs, message):
     with pytest.raises(ValueError, match=message):
         func(*args, **kwargs)

@@ -23,7 +23,7 @@ SETTINGS = settings(derandomize=True, max_examples=60, deadline=None)
 
 
 def log_uniform(lo, hi):
-    return st.floats(math.log10(lo), math.log10(hi)).map(lambda e: 10.0 ** e)
+    return st.floats(math.log10(lo), math.log10(hi)).map(lambda e: 10.0**e)
 
 
 def eq14_literal(R_over_h, sigma0_over_E):
@@ -49,8 +49,12 @@ def eq14_literal(R_over_h, sigma0_over_E):
 @SETTINGS
 @given(A=log_uniform(1e-8, 1.0), rho=log_uniform(1.0, 1e8))
 def test_hertz_load_formula(A, rho):
-    assert_allclose(hertz_load(A, rho), np.pi / 4 * A * A * rho, rtol=1e-15,
-                    err_msg=f"a_over_R={A}, R_over_h={rho}")
+    assert_allclose(
+        hertz_load(A, rho),
+        np.pi / 4 * A * A * rho,
+        rtol=1e-15,
+        err_msg=f"a_over_R={A}, R_over_h={rho}",
+    )
 
 
 def test_hertz_load_dimensional():
@@ -64,17 +68,24 @@ def test_hertz_load_dimensional():
 # JKR line contact (Chaudhury et al. 1996)
 
 
-@pytest.mark.parametrize("E, R, h, sigma0, a", [
-    (70e9, 50e-9, 0.3e-9, 2e9, 2e-9),
-    (1e6, 1e-3, 1e-9, 1e5, 1e-5),
-    (200e9, 1e-6, 0.5e-9, 5e9, 3e-8),
-])
+@pytest.mark.parametrize(
+    "E, R, h, sigma0, a",
+    [
+        (70e9, 50e-9, 0.3e-9, 2e9, 2e-9),
+        (1e6, 1e-3, 1e-9, 1e5, 1e-5),
+        (200e9, 1e-6, 0.5e-9, 5e9, 3e-8),
+    ],
+)
 def test_jkr_load_dimensional(E, R, h, sigma0, a):
     """F = pi E a^2/(4R) - sqrt(2 pi E w a), w = sigma0 h, in SI units."""
     w = sigma0 * h  # [J/m^2]
     F = math.pi * E * a * a / (4 * R) - math.sqrt(2 * math.pi * E * w * a)  # [N/m]
-    assert_allclose(jkr_load(a / R, R / h, sigma0 / E), F / (E * h), rtol=1e-13,
-                    err_msg=f"E={E}, R={R}, h={h}, sigma0={sigma0}, a={a}")
+    assert_allclose(
+        jkr_load(a / R, R / h, sigma0 / E),
+        F / (E * h),
+        rtol=1e-13,
+        err_msg=f"E={E}, R={R}, h={h}, sigma0={sigma0}, a={a}",
+    )
 
 
 @SETTINGS
@@ -82,8 +93,9 @@ def test_jkr_load_dimensional(E, R, h, sigma0, a):
 def test_jkr_load_formula(A, rho, s):
     expected = np.pi / 4 * A * A * rho - np.sqrt(2 * np.pi * s * rho * A)
     scale = np.pi / 4 * A * A * rho + np.sqrt(2 * np.pi * s * rho * A)
-    assert abs(jkr_load(A, rho, s) - expected) <= 1e-15 * scale, \
+    assert abs(jkr_load(A, rho, s) - expected) <= 1e-15 * scale, (
         f"a_over_R={A}, R_over_h={rho}, sigma0_over_E={s}"
+    )
 
 
 def test_jkr_minimum_and_zero_adhesion():
@@ -103,18 +115,27 @@ def test_jkr_minimum_and_zero_adhesion():
 # Eq. (14)
 
 
-@pytest.mark.parametrize("rho, s", [(100.0, 0.01), (200.0, 0.05), (10.0, 1e-4), (1e4, 0.3),
-                                    (1.0, 1.0), (1e6, 1e-6)])
+@pytest.mark.parametrize(
+    "rho, s", [(100.0, 0.01), (200.0, 0.05), (10.0, 1e-4), (1e4, 0.3), (1.0, 1.0), (1e6, 1e-6)]
+)
 def test_zero_width_load_eq14_literal(rho, s):
-    assert_allclose(zero_width_load(rho, s), eq14_literal(rho, s), rtol=1e-14,
-                    err_msg=f"R_over_h={rho}, sigma0_over_E={s}")
+    assert_allclose(
+        zero_width_load(rho, s),
+        eq14_literal(rho, s),
+        rtol=1e-14,
+        err_msg=f"R_over_h={rho}, sigma0_over_E={s}",
+    )
 
 
 @SETTINGS
 @given(rho=log_uniform(1.0, 1e8), s=log_uniform(1e-8, 10.0))
 def test_zero_width_load_eq14_literal_property(rho, s):
-    assert_allclose(zero_width_load(rho, s), eq14_literal(rho, s), rtol=1e-14,
-                    err_msg=f"R_over_h={rho}, sigma0_over_E={s}")
+    assert_allclose(
+        zero_width_load(rho, s),
+        eq14_literal(rho, s),
+        rtol=1e-14,
+        err_msg=f"R_over_h={rho}, sigma0_over_E={s}",
+    )
 
 
 def test_zero_width_load_limits():
@@ -144,18 +165,20 @@ def test_kappa_and_maugis_parameter_formulas(rho, s):
     msg = f"R_over_h={rho}, sigma0_over_E={s}"
     assert_allclose(kappa(rho, s), (4 / np.pi) * s * np.sqrt(2 * rho), rtol=1e-15, err_msg=msg)
     # Baney & Hui: lambda = 4 sigma0 (R/(pi^2 E^2 w))^(1/3), w = sigma0 h
-    assert_allclose(maugis_parameter(rho, s), 4 * s * (rho / (np.pi ** 2 * s)) ** (1 / 3),
-                    rtol=1e-14, err_msg=msg)
+    assert_allclose(
+        maugis_parameter(rho, s), 4 * s * (rho / (np.pi**2 * s)) ** (1 / 3), rtol=1e-14, err_msg=msg
+    )
     # the relation between the two groups implied by these two definitions (and documented
     # in kappa's docstring)
-    assert_allclose(kappa(rho, s), maugis_parameter(rho, s) ** 1.5 / np.sqrt(2), rtol=1e-13,
-                    err_msg=msg)
+    assert_allclose(
+        kappa(rho, s), maugis_parameter(rho, s) ** 1.5 / np.sqrt(2), rtol=1e-13, err_msg=msg
+    )
 
 
 def test_maugis_parameter_dimensional():
     E, R, sigma0, h = 70e9, 50e-9, 2e9, 0.3e-9
     w = sigma0 * h
-    lam = 4 * sigma0 * (R / (math.pi ** 2 * E ** 2 * w)) ** (1 / 3)
+    lam = 4 * sigma0 * (R / (math.pi**2 * E**2 * w)) ** (1 / 3)
     assert_allclose(maugis_parameter(R / h, sigma0 / E), lam, rtol=1e-14)
     kap = (4 / math.pi) * (sigma0 / E) * math.sqrt(2 * R / h)
     assert_allclose(kappa(R / h, sigma0 / E), kap, rtol=1e-15)
@@ -173,8 +196,13 @@ def test_broadcasting_and_scalar_output():
     assert np.shape(zero_width_load(rho, [[0.01], [0.1]])) == (2, 2)
     assert np.shape(kappa(rho, 0.1)) == (2,)
     assert np.shape(maugis_parameter([1.0], 0.1)) == (1,)
-    for val in (hertz_load(0.01, 100.0), jkr_load(0.01, 100.0, 0.01),
-                zero_width_load(100.0, 0.01), kappa(100.0, 0.01), maugis_parameter(100.0, 0.01)):
+    for val in (
+        hertz_load(0.01, 100.0),
+        jkr_load(0.01, 100.0, 0.01),
+        zero_width_load(100.0, 0.01),
+        kappa(100.0, 0.01),
+        maugis_parameter(100.0, 0.01),
+    ):
         assert isinstance(val, float) and np.ndim(val) == 0
     assert_allclose(hertz_load(A, rho)[2, 1], hertz_load(0.05, 100.0), rtol=0)
 
@@ -206,8 +234,9 @@ BAD_REFERENCE = [
 ]
 
 
-@pytest.mark.parametrize("func, args, message", BAD_REFERENCE,
-                         ids=[f"{f.__name__}-{m}" for f, _, m in BAD_REFERENCE])
+@pytest.mark.parametrize(
+    "func, args, message", BAD_REFERENCE, ids=[f"{f.__name__}-{m}" for f, _, m in BAD_REFERENCE]
+)
 def test_bad_input(func, args, message):
     with pytest.raises(ValueError, match=message):
         func(*args)

@@ -44,14 +44,30 @@ ENTRY_POINTS = [
     (lc.composite_modulus, (70e9, X, 160e9, 0.22), {}, "nu1"),
     (lc.dundurs_beta, (70e9, 0.17, X, 0.22), {}, "E2"),
     (lc.adhesion_from_work, (X, 0.3e-9), {}, "work_of_adhesion"),
-    (Cylinder.from_modulus, (X, 100e9), {"cohesive_stress": 1e9, "adhesion_range": 0.5e-9},
-     "radius"),
-    (Cylinder.from_modulus, (50e-9, 100e9), {"cohesive_stress": X, "adhesion_range": 0.5e-9},
-     "cohesive_stress"),
+    (
+        Cylinder.from_modulus,
+        (X, 100e9),
+        {"cohesive_stress": 1e9, "adhesion_range": 0.5e-9},
+        "radius",
+    ),
+    (
+        Cylinder.from_modulus,
+        (50e-9, 100e9),
+        {"cohesive_stress": X, "adhesion_range": 0.5e-9},
+        "cohesive_stress",
+    ),
 ]
 
-NOT_REAL = [True, np.bool_(False), "0.5", b"1", 1 + 1j, np.array([0.5 + 1j]), [0.5, None],
-            np.datetime64("2020-01-01")]
+NOT_REAL = [
+    True,
+    np.bool_(False),
+    "0.5",
+    b"1",
+    1 + 1j,
+    np.array([0.5 + 1j]),
+    [0.5, None],
+    np.datetime64("2020-01-01"),
+]
 
 
 def _ids(entry):
@@ -65,8 +81,11 @@ def test_not_a_real_number_is_refused(entry, value):
     fn, args, kwargs, name = entry
     with warnings.catch_warnings():
         warnings.simplefilter("error")  # ComplexWarning would mean a silent conversion
-        with pytest.raises(ValueError, match=rf"^{name} must be a real number or an array of "
-                                             r"them, got "):
+        with pytest.raises(
+            ValueError,
+            match=rf"^{name} must be a real number or an array of "
+            r"them, got ",
+        ):
             _call(fn, args, kwargs, value)
 
 
@@ -74,12 +93,16 @@ def test_not_a_real_number_is_refused(entry, value):
 _NONE_IS_A_DEFAULT = ("d_over_a", "T_over_Ea", "T_over_muF", "cohesive_stress")
 
 
-@pytest.mark.parametrize("entry", [e for e in ENTRY_POINTS if e[3] not in _NONE_IS_A_DEFAULT],
-                         ids=_ids)
+@pytest.mark.parametrize(
+    "entry", [e for e in ENTRY_POINTS if e[3] not in _NONE_IS_A_DEFAULT], ids=_ids
+)
 def test_none_is_refused_where_it_is_no_default(entry):
     fn, args, kwargs, name = entry
-    with pytest.raises(ValueError, match=rf"^{name} must be a real number or an array of "
-                                         r"them, got None"):
+    with pytest.raises(
+        ValueError,
+        match=rf"^{name} must be a real number or an array of "
+        r"them, got None",
+    ):
         _call(fn, args, kwargs, None)
 
 
@@ -94,38 +117,84 @@ CYL = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.
 A3, B2 = [0.01, 0.02, 0.03], [1.0, 2.0]
 
 
-@pytest.mark.parametrize("fn, args, kwargs, message", [
-    (lc.kappa, (A3, B2), {}, r"R_over_h has shape \(3,\), sigma0_over_E has shape \(2,\)"),
-    (lc.jkr_load, (A3, B2, 0.01), {}, r"a_over_R has shape \(3,\), R_over_h has shape \(2,\)"),
-    (lc.normal_contact, (A3, B2, 0.01), {},
-     r"a_over_R has shape \(3,\), R_over_h has shape \(2,\)"),
-    (lc.contact_for_load, (A3, 100.0, B2), {},
-     r"F_over_Eh has shape \(3,\), sigma0_over_E has shape \(2,\)"),
-    (lc.non_contact, (A3, B2, 0.01), {},
-     r"central_gap_over_h has shape \(3,\), R_over_h has shape \(2,\)"),
-    (lc.pull_off, (A3, B2), {}, r"R_over_h has shape \(3,\), sigma0_over_E has shape \(2,\)"),
-    (lc.sliding_initiation, (A3, [0.1, 0.2]), {},
-     r"tau0_over_E has shape \(3,\), d_over_a has shape \(2,\)"),
-    (lc.steady_rolling_coulomb, (0.3, A3), {"T_over_muF": B2},
-     r"a_over_R has shape \(3,\), T_over_muF has shape \(2,\)"),
-    (lc.sliding_contact, (0.03, A3, B2, 0.01), {},
-     r"R_over_h2 has shape \(3,\), h1_over_h2 has shape \(2,\)"),
-    (lc.sliding_pull_off, (100.0, A3, B2), {},
-     r"h1_over_h2 has shape \(3,\), sigma0_over_E has shape \(2,\)"),
-    (lc.composite_modulus, ([1e9, 2e9, 3e9], 0.3, [1e9, 2e9], 0.3), {},
-     r"E1 has shape \(3,\), E2 has shape \(2,\)"),
-    (lc.adhesion_from_work, (A3, [1e-9, 2e-9]), {},
-     r"work_of_adhesion has shape \(3,\), equilibrium_spacing has shape \(2,\)"),
-    (lc.cylinder_steady_rolling, (CYL, [0.5, 1.0, 2.0]),
-     {"friction_stress": 1e9, "tangential_load": [0.1, 0.2]},
-     r"normal_load has shape \(3,\), tangential_load has shape \(2,\)"),
-    (lc.cylinder_sliding_initiation, (CYL, 1.0), {"friction_stress": [1e9, 2e9, 3e9],
-                                                  "d_over_a": [0.1, 0.2]},
-     r"friction_stress has shape \(3,\), d_over_a has shape \(2,\)"),
-])
+@pytest.mark.parametrize(
+    "fn, args, kwargs, message",
+    [
+        (lc.kappa, (A3, B2), {}, r"R_over_h has shape \(3,\), sigma0_over_E has shape \(2,\)"),
+        (lc.jkr_load, (A3, B2, 0.01), {}, r"a_over_R has shape \(3,\), R_over_h has shape \(2,\)"),
+        (
+            lc.normal_contact,
+            (A3, B2, 0.01),
+            {},
+            r"a_over_R has shape \(3,\), R_over_h has shape \(2,\)",
+        ),
+        (
+            lc.contact_for_load,
+            (A3, 100.0, B2),
+            {},
+            r"F_over_Eh has shape \(3,\), sigma0_over_E has shape \(2,\)",
+        ),
+        (
+            lc.non_contact,
+            (A3, B2, 0.01),
+            {},
+            r"central_gap_over_h has shape \(3,\), R_over_h has shape \(2,\)",
+        ),
+        (lc.pull_off, (A3, B2), {}, r"R_over_h has shape \(3,\), sigma0_over_E has shape \(2,\)"),
+        (
+            lc.sliding_initiation,
+            (A3, [0.1, 0.2]),
+            {},
+            r"tau0_over_E has shape \(3,\), d_over_a has shape \(2,\)",
+        ),
+        (
+            lc.steady_rolling_coulomb,
+            (0.3, A3),
+            {"T_over_muF": B2},
+            r"a_over_R has shape \(3,\), T_over_muF has shape \(2,\)",
+        ),
+        (
+            lc.sliding_contact,
+            (0.03, A3, B2, 0.01),
+            {},
+            r"R_over_h2 has shape \(3,\), h1_over_h2 has shape \(2,\)",
+        ),
+        (
+            lc.sliding_pull_off,
+            (100.0, A3, B2),
+            {},
+            r"h1_over_h2 has shape \(3,\), sigma0_over_E has shape \(2,\)",
+        ),
+        (
+            lc.composite_modulus,
+            ([1e9, 2e9, 3e9], 0.3, [1e9, 2e9], 0.3),
+            {},
+            r"E1 has shape \(3,\), E2 has shape \(2,\)",
+        ),
+        (
+            lc.adhesion_from_work,
+            (A3, [1e-9, 2e-9]),
+            {},
+            r"work_of_adhesion has shape \(3,\), equilibrium_spacing has shape \(2,\)",
+        ),
+        (
+            lc.cylinder_steady_rolling,
+            (CYL, [0.5, 1.0, 2.0]),
+            {"friction_stress": 1e9, "tangential_load": [0.1, 0.2]},
+            r"normal_load has shape \(3,\), tangential_load has shape \(2,\)",
+        ),
+        (
+            lc.cylinder_sliding_initiation,
+            (CYL, 1.0),
+            {"friction_stress": [1e9, 2e9, 3e9], "d_over_a": [0.1, 0.2]},
+            r"friction_stress has shape \(3,\), d_over_a has shape \(2,\)",
+        ),
+    ],
+)
 def test_shapes_that_do_not_broadcast_are_named(fn, args, kwargs, message):
-    with pytest.raises(ValueError, match=r"^the array arguments must broadcast together: "
-                                         + message + "$"):
+    with pytest.raises(
+        ValueError, match=r"^the array arguments must broadcast together: " + message + "$"
+    ):
         fn(*args, **kwargs)
 
 
@@ -136,47 +205,77 @@ def test_cylinder_functions_want_a_cylinder(fn, cylinder):
         fn(cylinder, 1.0, friction_stress=1e9, d_over_a=0.5)
 
 
-@pytest.mark.parametrize("fn, d, message", [
-    (lc.cylinder_sliding_initiation, 1.0, r"^d_over_a must be in \[0, 1\), got 1.0$"),
-    (lc.cylinder_steady_rolling, -1.0, r"^d_over_a must be in \(-1, 1\), got -1.0$"),
-])
+@pytest.mark.parametrize(
+    "fn, d, message",
+    [
+        (lc.cylinder_sliding_initiation, 1.0, r"^d_over_a must be in \[0, 1\), got 1.0$"),
+        (lc.cylinder_steady_rolling, -1.0, r"^d_over_a must be in \(-1, 1\), got -1.0$"),
+    ],
+)
 def test_cylinder_functions_check_the_stick_zone_first(fn, d, message):
     with pytest.raises(ValueError, match=message):
         fn(CYL, 1.0, friction_stress=1e9, d_over_a=d)
 
 
-@pytest.mark.parametrize("fn, args, kwargs, name", [
-    (lc.equilibria, ([-1.0, 0.0], 100.0, 0.2), {}, "F_over_Eh"),
-    (lc.equilibria, (-1.0, np.full((2, 2), 100.0), 0.2), {}, "R_over_h"),
-    (lc.load_curve, (100.0, [0.01]), {}, "sigma0_over_E"),
-    (lc.load_curve, (100.0, 0.01), {"a_max_over_R": [0.1, 0.2]}, "a_max_over_R"),
-    (Cylinder.from_modulus, ([50e-9, 60e-9], 100e9), {"adhesion_range": 0.5e-9}, "radius"),
-    (Cylinder.from_modulus, (50e-9, 100e9), {"cohesive_stress": [1e9, 2e9],
-                                             "adhesion_range": 0.5e-9}, "cohesive_stress"),
-    (Cylinder.from_modulus, (50e-9, 100e9), {"work_of_adhesion": [0.1, 0.2],
-                                             "equilibrium_spacing": 0.3e-9}, "work_of_adhesion"),
-    (Cylinder.from_materials, (50e-9, [70e9, 80e9], 0.17, 160e9, 0.22),
-     {"adhesion_range": 0.5e-9}, "E1"),
-])
+@pytest.mark.parametrize(
+    "fn, args, kwargs, name",
+    [
+        (lc.equilibria, ([-1.0, 0.0], 100.0, 0.2), {}, "F_over_Eh"),
+        (lc.equilibria, (-1.0, np.full((2, 2), 100.0), 0.2), {}, "R_over_h"),
+        (lc.load_curve, (100.0, [0.01]), {}, "sigma0_over_E"),
+        (lc.load_curve, (100.0, 0.01), {"a_max_over_R": [0.1, 0.2]}, "a_max_over_R"),
+        (Cylinder.from_modulus, ([50e-9, 60e-9], 100e9), {"adhesion_range": 0.5e-9}, "radius"),
+        (
+            Cylinder.from_modulus,
+            (50e-9, 100e9),
+            {"cohesive_stress": [1e9, 2e9], "adhesion_range": 0.5e-9},
+            "cohesive_stress",
+        ),
+        (
+            Cylinder.from_modulus,
+            (50e-9, 100e9),
+            {"work_of_adhesion": [0.1, 0.2], "equilibrium_spacing": 0.3e-9},
+            "work_of_adhesion",
+        ),
+        (
+            Cylinder.from_materials,
+            (50e-9, [70e9, 80e9], 0.17, 160e9, 0.22),
+            {"adhesion_range": 0.5e-9},
+            "E1",
+        ),
+    ],
+)
 def test_scalar_parameters_refuse_arrays(fn, args, kwargs, name):
     """These take one parameter point; an array gave TypeError from float()."""
-    with pytest.raises(ValueError, match=rf"^{name} must be a single number, got an array of "
-                                         r"shape \("):
+    with pytest.raises(
+        ValueError,
+        match=rf"^{name} must be a single number, got an array of "
+        r"shape \(",
+    ):
         fn(*args, **kwargs)
 
 
-@pytest.mark.parametrize("fields, message", [
-    ((-1.0, 100e9, 1e9, 0.5e-9), r"^radius must be in \(0, inf\), got -1.0$"),
-    ((50e-9, "x", 1e9, 0.5e-9), r"^modulus must be a real number"),
-    ((50e-9, 100e9, None, 0.5e-9), r"^cohesive_stress must be a real number"),
-    ((50e-9, 100e9, 1e9, 0.0), r"^adhesion_range must be in \(0, inf\), got 0.0$"),
-    ((50e-9, 100e9, 1e9, 0.5e-9, np.nan), r"^dundurs_beta must be a finite number, got nan$"),
-    ((50e-9, 1e-300, 1e9, 0.5e-9), r"^cohesive_stress/modulus \(sigma0/E\) = inf is not a "
-                                   r"finite positive number"),
-    ((1e-300, 100e9, 1e9, 1e300), r"^radius/adhesion_range \(R/h\) = 0.0 is not"),
-    ((50e-9, 1e-300, 0.0, 1e-300), r"^modulus\*adhesion_range \(E h, the unit of force per "
-                                   r"length\) = 0.0 is not"),
-])
+@pytest.mark.parametrize(
+    "fields, message",
+    [
+        ((-1.0, 100e9, 1e9, 0.5e-9), r"^radius must be in \(0, inf\), got -1.0$"),
+        ((50e-9, "x", 1e9, 0.5e-9), r"^modulus must be a real number"),
+        ((50e-9, 100e9, None, 0.5e-9), r"^cohesive_stress must be a real number"),
+        ((50e-9, 100e9, 1e9, 0.0), r"^adhesion_range must be in \(0, inf\), got 0.0$"),
+        ((50e-9, 100e9, 1e9, 0.5e-9, np.nan), r"^dundurs_beta must be a finite number, got nan$"),
+        (
+            (50e-9, 1e-300, 1e9, 0.5e-9),
+            r"^cohesive_stress/modulus \(sigma0/E\) = inf is not a "
+            r"finite positive number",
+        ),
+        ((1e-300, 100e9, 1e9, 1e300), r"^radius/adhesion_range \(R/h\) = 0.0 is not"),
+        (
+            (50e-9, 1e-300, 0.0, 1e-300),
+            r"^modulus\*adhesion_range \(E h, the unit of force per "
+            r"length\) = 0.0 is not",
+        ),
+    ],
+)
 def test_cylinder_checks_its_fields(fields, message):
     """Built directly (a frozen dataclass) or through from_modulus: same checks."""
     with pytest.raises(ValueError, match=message):
@@ -191,8 +290,10 @@ def test_cylinder_from_modulus_with_groups_out_of_range():
 
 def test_cylinder_fields_are_python_floats():
     c = Cylinder(np.float64(50e-9), 100_000_000_000, np.array(1e9), 0.5e-9)
-    assert all(type(v) is float for v in (c.radius, c.modulus, c.cohesive_stress,
-                                          c.adhesion_range, c.dundurs_beta))
+    assert all(
+        type(v) is float
+        for v in (c.radius, c.modulus, c.cohesive_stress, c.adhesion_range, c.dundurs_beta)
+    )
 
 
 def test_cylinder_contact_scalar_in_python_scalars_out():
@@ -213,15 +314,18 @@ SOLVERS = [
 ]
 
 
-@pytest.mark.parametrize("option, value, message", [
-    ("raise_on_failure", "no", r"^raise_on_failure must be True or False, got 'no'$"),
-    ("raise_on_failure", None, r"^raise_on_failure must be True or False, got None$"),
-    ("tol", True, r"^tol must be in \[1e-15, 1e-2\), got True$"),
-    ("tol", np.nan, r"^tol must be in \[1e-15, 1e-2\), got nan$"),
-    ("tol", "1e-10", r"^tol must be in \[1e-15, 1e-2\), got '1e-10'$"),
-    ("n", np.array(16), r"^n must be 'auto' or an integer in \[2, \d+\], got array\(16\)$"),
-    ("n", "AUTO", r"^n must be 'auto' or an integer in \[2, \d+\], got 'AUTO'$"),
-])
+@pytest.mark.parametrize(
+    "option, value, message",
+    [
+        ("raise_on_failure", "no", r"^raise_on_failure must be True or False, got 'no'$"),
+        ("raise_on_failure", None, r"^raise_on_failure must be True or False, got None$"),
+        ("tol", True, r"^tol must be in \[1e-15, 1e-2\), got True$"),
+        ("tol", np.nan, r"^tol must be in \[1e-15, 1e-2\), got nan$"),
+        ("tol", "1e-10", r"^tol must be in \[1e-15, 1e-2\), got '1e-10'$"),
+        ("n", np.array(16), r"^n must be 'auto' or an integer in \[2, \d+\], got array\(16\)$"),
+        ("n", "AUTO", r"^n must be 'auto' or an integer in \[2, \d+\], got 'AUTO'$"),
+    ],
+)
 @pytest.mark.parametrize("fn, args, kwargs", SOLVERS, ids=lambda v: getattr(v, "__name__", ""))
 def test_solver_options(fn, args, kwargs, option, value, message):
     with pytest.raises(ValueError, match=message):
@@ -235,19 +339,31 @@ def test_numpy_float_tolerance_is_accepted(fn, args, kwargs):
 
 
 def test_fixed_n_too_small_says_so():
-    with pytest.raises(ConvergenceError, match=r"n = 16 nodes are too few for tol; try "
-                                               r"n='auto'$"):
+    with pytest.raises(
+        ConvergenceError,
+        match=r"n = 16 nodes are too few for tol; try "
+        r"n='auto'$",
+    ):
         lc.sliding_initiation(0.01, 0.5, method="collocation", n=16)
 
 
-@pytest.mark.parametrize("kwargs, message", [
-    ({"load": 1.0, "method": "x"}, r"^method must be 'closed-form' or 'collocation', got 'x'$"),
-    ({"load": 1.0, "method": "collocation"}, r"^the contact for a given load is found by the "
-                                             r"closed form"),
-    ({"contact_half_width": 3e-9, "branch": "x"}, r"^branch must be 'stable' or 'unstable'"),
-    ({"contact_half_width": 3e-9, "branch": "unstable"}, r"^branch applies to a given load "
-                                                         r"only"),
-])
+@pytest.mark.parametrize(
+    "kwargs, message",
+    [
+        ({"load": 1.0, "method": "x"}, r"^method must be 'closed-form' or 'collocation', got 'x'$"),
+        (
+            {"load": 1.0, "method": "collocation"},
+            r"^the contact for a given load is found by the "
+            r"closed form",
+        ),
+        ({"contact_half_width": 3e-9, "branch": "x"}, r"^branch must be 'stable' or 'unstable'"),
+        (
+            {"contact_half_width": 3e-9, "branch": "unstable"},
+            r"^branch applies to a given load "
+            r"only",
+        ),
+    ],
+)
 def test_cylinder_contact_options_are_never_ignored(kwargs, message):
     """method was ignored for a load, branch for a half-width."""
     with pytest.raises(ValueError, match=message):
@@ -256,15 +372,21 @@ def test_cylinder_contact_options_are_never_ignored(kwargs, message):
 
 # --- huge and tiny parameters: correct, or refused; never an overflow or a silent zero ---
 
+
 def test_zero_width_load_has_no_overflow():
     """s^2 overflowed for sigma0/E = 1e300 and Eq. 14 came out as -0.0."""
     limit = -np.pi / (2 * np.log(2.0))  # sigma0/E -> inf at fixed R/h
     assert lc.zero_width_load(100.0, 1e300) == pytest.approx(limit, rel=1e-14)
     assert lc.zero_width_load(1e300, 0.01) == pytest.approx(limit, rel=1e-14)
-    assert lc.zero_width_load(100.0, 1e-300) == pytest.approx(-8 * np.log(2) / np.pi * 100.0
-                                                              * 1e-300 * (1e-300 - np.sqrt(
-                                                                  (np.pi / np.log(2)) ** 2
-                                                                  / 800)), rel=1e-12)
+    assert lc.zero_width_load(100.0, 1e-300) == pytest.approx(
+        -8
+        * np.log(2)
+        / np.pi
+        * 100.0
+        * 1e-300
+        * (1e-300 - np.sqrt((np.pi / np.log(2)) ** 2 / 800)),
+        rel=1e-12,
+    )
 
 
 def test_non_contact_has_no_overflow():
@@ -272,36 +394,56 @@ def test_non_contact_has_no_overflow():
     assert lc.non_contact(0.5, 100.0, 1e300).F_over_Eh == pytest.approx(limit, rel=1e-14)
 
 
-@pytest.mark.parametrize("fn, args, message", [
-    (lc.hertz_load, (1e300, 100.0), r"^the Hertz load is beyond the floating-point range at "
-                                    r"a_over_R=1e\+300, R_over_h=100.0$"),
-    (lc.jkr_load, (1e300, 100.0, 0.01), r"^the JKR load is beyond the floating-point range"),
-    (lc.kappa, (1e300, 1e300), r"^kappa is beyond the floating-point range"),
-    (lc.adhesion_from_work, (1e300, 3e-10), r"^work_of_adhesion=1e\+300 and equilibrium_spacing"
-                                            r"=3e-10 give sigma0 = .* = inf \[Pa\]"),
-    (lc.adhesion_from_work, (1e-300, 1e300), r"give sigma0 = .* = 0.0 \[Pa\], not a finite "
-                                             r"positive number$"),
-])
+@pytest.mark.parametrize(
+    "fn, args, message",
+    [
+        (
+            lc.hertz_load,
+            (1e300, 100.0),
+            r"^the Hertz load is beyond the floating-point range at "
+            r"a_over_R=1e\+300, R_over_h=100.0$",
+        ),
+        (lc.jkr_load, (1e300, 100.0, 0.01), r"^the JKR load is beyond the floating-point range"),
+        (lc.kappa, (1e300, 1e300), r"^kappa is beyond the floating-point range"),
+        (
+            lc.adhesion_from_work,
+            (1e300, 3e-10),
+            r"^work_of_adhesion=1e\+300 and equilibrium_spacing"
+            r"=3e-10 give sigma0 = .* = inf \[Pa\]",
+        ),
+        (
+            lc.adhesion_from_work,
+            (1e-300, 1e300),
+            r"give sigma0 = .* = 0.0 \[Pa\], not a finite "
+            r"positive number$",
+        ),
+    ],
+)
 def test_results_beyond_the_floating_point_range_are_refused(fn, args, message):
     with pytest.raises(ValueError, match=message):
         fn(*args)
 
 
-_KAPPA = r"kappa = \(4/pi\) sigma0_over_E sqrt\(2 {}\) must be <= 1e\+12 \(the range of the " \
-         r"solvers\), got kappa="
+_KAPPA = (
+    r"kappa = \(4/pi\) sigma0_over_E sqrt\(2 {}\) must be <= 1e\+12 \(the range of the "
+    r"solvers\), got kappa="
+)
 
 
-@pytest.mark.parametrize("fn, args, rho_name", [
-    (lc.pull_off, (100.0, 1e300), "R_over_h"),
-    (lc.pull_off, (1e300, 0.01), "R_over_h"),
-    (lc.normal_contact, (0.01, 100.0, 1e20), "R_over_h"),
-    (lc.contact_for_load, (0.0, 1e40, 0.1), "R_over_h"),
-    (lc.equilibria, (-1.0, 100.0, 1e300), "R_over_h"),
-    (lc.load_curve, (1e300, 0.01), "R_over_h"),
-    (lc.sliding_pull_off, (100.0, 2.0, 1e300), "R_over_h2"),
-    (lc.sliding_contact, (0.03, 100.0, 2.0, 1e20), "R_over_h2"),
-    (lc.sliding_contact_for_load, (0.5, 1e300, 2.0, 0.01), "R_over_h2"),
-])
+@pytest.mark.parametrize(
+    "fn, args, rho_name",
+    [
+        (lc.pull_off, (100.0, 1e300), "R_over_h"),
+        (lc.pull_off, (1e300, 0.01), "R_over_h"),
+        (lc.normal_contact, (0.01, 100.0, 1e20), "R_over_h"),
+        (lc.contact_for_load, (0.0, 1e40, 0.1), "R_over_h"),
+        (lc.equilibria, (-1.0, 100.0, 1e300), "R_over_h"),
+        (lc.load_curve, (1e300, 0.01), "R_over_h"),
+        (lc.sliding_pull_off, (100.0, 2.0, 1e300), "R_over_h2"),
+        (lc.sliding_contact, (0.03, 100.0, 2.0, 1e20), "R_over_h2"),
+        (lc.sliding_contact_for_load, (0.5, 1e300, 2.0, 0.01), "R_over_h2"),
+    ],
+)
 def test_kappa_beyond_the_solvers_is_refused(fn, args, rho_name):
     """pull_off(100, 1e300) gave F = -0.0 with overflow warnings; contact_for_load at
     kappa ~ 1e20 a load of -3e12 flagged converged."""
@@ -319,14 +461,18 @@ def test_kappa_at_the_limit_is_solved():
 
 def test_contact_for_load_outside_its_bracket_raises():
     """F/(Eh) = 1e300 came back as a contact carrying 2.4e36, flagged converged."""
-    with pytest.raises(ConvergenceError, match=r"^contact_for_load did not converge at "
-                                               r"F_over_Eh=1e\+300, R_over_h=100.0, "
-                                               r"sigma0_over_E=0.01: the closest contact "
-                                               r"carries F_over_Eh=2.35"):
+    with pytest.raises(
+        ConvergenceError,
+        match=r"^contact_for_load did not converge at "
+        r"F_over_Eh=1e\+300, R_over_h=100.0, "
+        r"sigma0_over_E=0.01: the closest contact "
+        r"carries F_over_Eh=2.35",
+    ):
         lc.contact_for_load(1e300, 100.0, 0.01)
 
 
 # --- no RuntimeWarning escapes for any positive input (pytest turns them into errors) ---
+
 
 def test_tiny_contact_width_closed_form_is_silent():
     """a/R = 1e-300 gave the right load (Eq. 14) with a divide-by-zero RuntimeWarning."""
@@ -334,18 +480,27 @@ def test_tiny_contact_width_closed_form_is_silent():
     assert r.F_over_Eh == pytest.approx(lc.zero_width_load(100.0, 0.01), rel=1e-12)
 
 
-@pytest.mark.parametrize("fn, args, method, a_over_R", [
-    (fn, args, method, a)
-    for fn, args in [(lc.normal_contact, (100.0, 0.01)), (lc.sliding_contact, (100.0, 2.0, 0.01))]
-    for method in ("closed-form", "collocation") for a in (1e-300, 1e300)
-    if not (fn is lc.normal_contact and method == "closed-form" and a < 1)  # solved, above
-])
-def test_widths_outside_the_solvers_range_raise_convergence_error_only(fn, args, method,
-                                                                        a_over_R):
+@pytest.mark.parametrize(
+    "fn, args, method, a_over_R",
+    [
+        (fn, args, method, a)
+        for fn, args in [
+            (lc.normal_contact, (100.0, 0.01)),
+            (lc.sliding_contact, (100.0, 2.0, 0.01)),
+        ]
+        for method in ("closed-form", "collocation")
+        for a in (1e-300, 1e300)
+        if not (fn is lc.normal_contact and method == "closed-form" and a < 1)  # solved, above
+    ],
+)
+def test_widths_outside_the_solvers_range_raise_convergence_error_only(fn, args, method, a_over_R):
     """These overflowed on the way (dozens of RuntimeWarnings) before the ConvergenceError;
     normal_contact's hint called the zone 'too thin (c/a = inf)'."""
-    with pytest.raises(ConvergenceError, match=r"a_over_R=1e[+-]300.*(outside the solver's "
-                                               r"range)"):
+    with pytest.raises(
+        ConvergenceError,
+        match=r"a_over_R=1e[+-]300.*(outside the solver's "
+        r"range)",
+    ):
         fn(a_over_R, *args, method=method)
     r = fn(a_over_R, *args, method=method, raise_on_failure=False)
     assert not np.any(r.converged)
@@ -367,15 +522,24 @@ _R = {
     "rolling/vector": lambda: lc.steady_rolling(0.01, [0.2, 0.5], method="collocation"),
     "cattaneo-mindlin": lambda: lc.sliding_initiation_coulomb(0.3, 0.01, 0.5),
     "carter": lambda: lc.steady_rolling_coulomb(0.3, 0.01, [0.2, 0.5]),
-    "sliding/vector": lambda: lc.sliding_contact([0.03, 0.05], 100.0, 2.0, 0.01,
-                                                 method="closed-form"),
+    "sliding/vector": lambda: lc.sliding_contact(
+        [0.03, 0.05], 100.0, 2.0, 0.01, method="closed-form"
+    ),
 }
-_METHODS = [(k, m) for k, m in [("normal/collocation", "pressure"), ("normal/vector", "pressure"),
-                                ("initiation/collocation", "traction"),
-                                ("initiation/collocation", "slip"),
-                                ("rolling/vector", "traction"), ("cattaneo-mindlin", "traction"),
-                                ("carter", "traction"), ("sliding/vector", "pressure"),
-                                ("sliding/vector", "gap")]]
+_METHODS = [
+    (k, m)
+    for k, m in [
+        ("normal/collocation", "pressure"),
+        ("normal/vector", "pressure"),
+        ("initiation/collocation", "traction"),
+        ("initiation/collocation", "slip"),
+        ("rolling/vector", "traction"),
+        ("cattaneo-mindlin", "traction"),
+        ("carter", "traction"),
+        ("sliding/vector", "pressure"),
+        ("sliding/vector", "gap"),
+    ]
+]
 
 
 def _method(key, name):
@@ -384,15 +548,21 @@ def _method(key, name):
 
 
 @pytest.mark.parametrize("key, name", _METHODS)
-@pytest.mark.parametrize("x, message", [
-    (np.nan, "must be a finite number, got nan$"),
-    (np.inf, "must be a finite number, got inf$"),
-    (None, "must be a real number or an array of them, got None$"),
-    (True, "must be a real number or an array of them, got True$"),
-    ([], "must not be empty$"),
-    (np.zeros((1, 1, 3)), r"must have shape \(m,\) or broadcast to the points' shape plus one "
-                          r"axis, \(.*\), got shape \(1, 1, 3\)$"),
-])
+@pytest.mark.parametrize(
+    "x, message",
+    [
+        (np.nan, "must be a finite number, got nan$"),
+        (np.inf, "must be a finite number, got inf$"),
+        (None, "must be a real number or an array of them, got None$"),
+        (True, "must be a real number or an array of them, got True$"),
+        ([], "must not be empty$"),
+        (
+            np.zeros((1, 1, 3)),
+            r"must have shape \(m,\) or broadcast to the points' shape plus one "
+            r"axis, \(.*\), got shape \(1, 1, 3\)$",
+        ),
+    ],
+)
 def test_distribution_positions_are_checked(key, name, x, message):
     """NaN positions gave 0 or nan silently; a 0-d position gave TypeError (collocation
     pressure) or 'cannot reshape array of size 4 into shape (2,)' (gap)."""
@@ -405,8 +575,7 @@ def test_distribution_positions_are_checked(key, name, x, message):
 def test_distribution_of_one_position(key, name):
     """A single position is m = 1: shape points.shape + (1,), as for the closed forms."""
     r, method, _ = _method(key, name)
-    points = np.shape(getattr(r, "a_over_R", None) if name in ("pressure", "gap")
-                      else r.d_over_a)
+    points = np.shape(getattr(r, "a_over_R", None) if name in ("pressure", "gap") else r.d_over_a)
     one = method(0.001)
     assert one.shape == points + (1,)
     np.testing.assert_array_equal(one, method(np.array([0.001])))
@@ -421,15 +590,21 @@ def test_distribution_far_outside_the_contact_is_silent(key, name):
 
 
 def test_gap_beyond_the_floating_point_range_is_refused():
-    with pytest.raises(ValueError, match=r"^the gap is beyond the floating-point range at "
-                                         r"x_over_R=1e\+300$"):
+    with pytest.raises(
+        ValueError,
+        match=r"^the gap is beyond the floating-point range at "
+        r"x_over_R=1e\+300$",
+    ):
         _R["sliding/vector"]().gap(np.array([0.5, 1e300]))
 
 
-@pytest.mark.parametrize("ratio, expected", [
-    (1e-300, lc.pull_off(100.0, 0.01).F_pulloff_over_Eh / 2),  # the leading edge alone
-    (1e12, -141421.40319686857),  # the trailing zone dominates: ~ sqrt(h1/h2)
-])
+@pytest.mark.parametrize(
+    "ratio, expected",
+    [
+        (1e-300, lc.pull_off(100.0, 0.01).F_pulloff_over_Eh / 2),  # the leading edge alone
+        (1e12, -141421.40319686857),  # the trailing zone dominates: ~ sqrt(h1/h2)
+    ],
+)
 def test_sliding_pull_off_far_from_equal_ranges_is_silent(ratio, expected):
     """h1/h2 = 1e-300 or 1e12 overflowed through RuntimeWarnings to a finite answer."""
     po = lc.sliding_pull_off(100.0, ratio, 0.01)
@@ -438,47 +613,69 @@ def test_sliding_pull_off_far_from_equal_ranges_is_silent(ratio, expected):
 
 def test_sliding_contact_for_load_outside_the_range_raises_only():
     """Overflow warnings in the search came before the ConvergenceError."""
-    with pytest.raises(ConvergenceError, match=r"^sliding_contact_for_load \(closed-form\) "
-                                               r"did not converge at a_over_R="):
+    with pytest.raises(
+        ConvergenceError,
+        match=r"^sliding_contact_for_load \(closed-form\) "
+        r"did not converge at a_over_R=",
+    ):
         lc.sliding_contact_for_load(0.5, 100.0, 1e-300, 0.01, method="closed-form")
 
 
 # --- the Gauss-Chebyshev core ---
 
+
 @pytest.mark.parametrize("interval", [("a", 1.0), None, (1.0, 2.0, 3.0), 5.0])
 def test_sie_interval_must_be_a_pair(interval):
     """("a", 1) gave "could not convert string to float", None a TypeError."""
     from linecontact.sie import BoundedSolver
+
     with pytest.raises(ValueError, match=r"^interval must be a pair \(lo, hi\) of real numbers"):
         BoundedSolver(4, interval)
 
 
-@pytest.mark.parametrize("solve, message", [
-    (lambda s: s.BoundedSolver(4).solve(1.0), r"^f must have n \+ 1 = 5 values on its last "
-                                              r"axis, got a scalar$"),
-    (lambda s: s.BoundedSolver(4).solve(None), r"^f must have n \+ 1 = 5 .* got a scalar$"),
-    (lambda s: s.EndBoundedSolver(4).solve(1.0), r"^f must have n = 4 values .* got a scalar$"),
-    (lambda s: s.UnboundedSolver(4).solve(1.0, 0.0), r"^f must have n - 1 = 3 values .* got a "
-                                                     r"scalar$"),
-    (lambda s: s.UnboundedSolver(4).solve(np.zeros((2, 3)), np.zeros(3)),
-     r"^resultant must broadcast to the batch shape of f, \(2,\), got shape \(3,\)$"),
-    (lambda s: s.BoundedSolver(4).solve(np.ones(5), extra=np.zeros(5)),
-     r"^extra must have a non-zero mean over the collocation points"),
-    (lambda s: s.chebyshev_log_expansion(0.5, "3"), r"^kmax must be an integer >= 0, got '3'$"),
-])
+@pytest.mark.parametrize(
+    "solve, message",
+    [
+        (
+            lambda s: s.BoundedSolver(4).solve(1.0),
+            r"^f must have n \+ 1 = 5 values on its last "
+            r"axis, got a scalar$",
+        ),
+        (lambda s: s.BoundedSolver(4).solve(None), r"^f must have n \+ 1 = 5 .* got a scalar$"),
+        (lambda s: s.EndBoundedSolver(4).solve(1.0), r"^f must have n = 4 values .* got a scalar$"),
+        (
+            lambda s: s.UnboundedSolver(4).solve(1.0, 0.0),
+            r"^f must have n - 1 = 3 values .* got a "
+            r"scalar$",
+        ),
+        (
+            lambda s: s.UnboundedSolver(4).solve(np.zeros((2, 3)), np.zeros(3)),
+            r"^resultant must broadcast to the batch shape of f, \(2,\), got shape \(3,\)$",
+        ),
+        (
+            lambda s: s.BoundedSolver(4).solve(np.ones(5), extra=np.zeros(5)),
+            r"^extra must have a non-zero mean over the collocation points",
+        ),
+        (lambda s: s.chebyshev_log_expansion(0.5, "3"), r"^kmax must be an integer >= 0, got '3'$"),
+    ],
+)
 def test_sie_right_hand_sides(solve, message):
     """A scalar f raised IndexError: tuple index out of range; an extra right-hand side of
     zero mean gave nan with an 'invalid value' warning."""
     from linecontact import sie
+
     with pytest.raises(ValueError, match=message):
         solve(sie)
 
 
 def test_cylinder_load_below_pull_off_is_said_in_newton_per_metre():
     """The SI layer said 'no contact carries F_over_Eh=-2.0' for a load of -100 N/m."""
-    with pytest.raises(NoEquilibriumError, match=r"^no contact carries load=-100.0 N/m: it is "
-                                                 r"below the pull-off force, the minimum load "
-                                                 r"on the contact branch -13.287\d* N/m"):
+    with pytest.raises(
+        NoEquilibriumError,
+        match=r"^no contact carries load=-100.0 N/m: it is "
+        r"below the pull-off force, the minimum load "
+        r"on the contact branch -13.287\d* N/m",
+    ):
         CYL.contact(load=[1.0, -100.0])
     with pytest.raises(NoEquilibriumError, match=r"^no contact carries load=-50.0 N/m"):
         lc.cylinder_steady_rolling(CYL, -50.0, friction_stress=1e8, d_over_a=0.1)

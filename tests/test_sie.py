@@ -54,8 +54,15 @@ def weighted_moment(k):
 def quad_log_inside(func, y, lo, hi):
     """int_lo^hi func(t) ln|y - t| dt by scipy quad, the log point given as a break point."""
     pts = [y] if lo < y < hi else None
-    val, _ = quad(lambda t: func(t) * np.log(abs(y - t)), lo, hi, points=pts, limit=200,
-                  epsabs=1e-14, epsrel=1e-12)
+    val, _ = quad(
+        lambda t: func(t) * np.log(abs(y - t)),
+        lo,
+        hi,
+        points=pts,
+        limit=200,
+        epsabs=1e-14,
+        epsrel=1e-12,
+    )
     return val
 
 
@@ -71,11 +78,11 @@ def test_bounded_rule_matches_scipy_roots_chebyu(n):
     assert colloc.shape == (n + 1,)
     assert np.all(np.diff(nodes) < 0), "nodes must be decreasing"
     assert_allclose(nodes[::-1], ref_nodes, rtol=0, atol=1e-15, err_msg=f"nodes, n={n}")
-    assert_allclose(weights[::-1], ref_weights, rtol=1e-14, atol=1e-16,
-                    err_msg=f"weights, n={n}")
+    assert_allclose(weights[::-1], ref_weights, rtol=1e-14, atol=1e-16, err_msg=f"weights, n={n}")
     # collocation points: zeros of T_{n+1}
-    assert_allclose(np.sort(colloc), roots_chebyt(n + 1)[0], rtol=0, atol=1e-15,
-                    err_msg=f"x_k, n={n}")
+    assert_allclose(
+        np.sort(colloc), roots_chebyt(n + 1)[0], rtol=0, atol=1e-15, err_msg=f"x_k, n={n}"
+    )
     assert len(np.unique(np.round(colloc, 14))) == n + 1
 
 
@@ -90,11 +97,11 @@ def test_bounded_rule_weights_sum_to_half_pi(n):
 def test_bounded_rule_polynomial_exactness_and_sharpness(n):
     nodes, weights, _ = bounded_rule(n)
     for k in range(2 * n):  # exact up to degree 2n - 1
-        approx = np.sum(weights * nodes ** k)
+        approx = np.sum(weights * nodes**k)
         assert abs(approx - weighted_moment(k)) <= 1e-14, f"n={n}, degree k={k}"
     # ... and not beyond: degree 2n is not integrated exactly
     k = 2 * n
-    assert abs(np.sum(weights * nodes ** k) - weighted_moment(k)) > 1e-8, f"n={n}, k={k}"
+    assert abs(np.sum(weights * nodes**k) - weighted_moment(k)) > 1e-8, f"n={n}, k={k}"
 
 
 # --------------------------------------------------------------------------------------------
@@ -107,8 +114,9 @@ def test_bounded_chebyshev_pairs_exact(n):
     s = BoundedSolver(n)
     for j in range(n):
         sol = s.solve(-eval_chebyt(j + 1, s.collocation))
-        assert_allclose(sol.values, eval_chebyu(j, s.nodes), rtol=0, atol=1e-13,
-                        err_msg=f"g = U_{j}, n={n}")
+        assert_allclose(
+            sol.values, eval_chebyu(j, s.nodes), rtol=0, atol=1e-13, err_msg=f"g = U_{j}, n={n}"
+        )
         expected_coef = np.zeros(n)
         expected_coef[j] = 1.0
         assert_allclose(sol.coefficients, expected_coef, atol=1e-14, err_msg=f"j={j}, n={n}")
@@ -150,22 +158,24 @@ def test_bounded_dugdale_pair_converges_geometrically(m):
     def error(n):
         s = BoundedSolver(n)
         sol = s.solve(dugdale_f(s.collocation, m))
-        phi = np.sqrt(1 - s.nodes ** 2) * sol.values
-        return max(np.max(np.abs(phi - dugdale_phi(s.nodes, m))),
-                   abs(s.resultant(sol) - dugdale_resultant(m)))
+        phi = np.sqrt(1 - s.nodes**2) * sol.values
+        return max(
+            np.max(np.abs(phi - dugdale_phi(s.nodes, m))),
+            abs(s.resultant(sol) - dugdale_resultant(m)),
+        )
 
     for k in (4, 8):
         ek, e2k = error(k), error(2 * k)
         assert ek > 1e-14, f"m={m}, n={k}: the coarse error must be visible"
         assert e2k < 0.1 * ek, f"m={m}: error at n={2 * k} ({e2k:.3g}) vs n={k} ({ek:.3g})"
-        assert e2k <= max(ek * rate ** -k, 1e-14), f"m={m}: slower than {rate:.3f}^-n"
+        assert e2k <= max(ek * rate**-k, 1e-14), f"m={m}: slower than {rate:.3f}^-n"
 
 
 def test_bounded_dugdale_pair_large_n_matches_to_1e12():
     m = 1.2
     s = BoundedSolver(128)
     sol = s.solve(dugdale_f(s.collocation, m))
-    phi = np.sqrt(1 - s.nodes ** 2) * sol.values
+    phi = np.sqrt(1 - s.nodes**2) * sol.values
     assert_allclose(phi, dugdale_phi(s.nodes, m), rtol=0, atol=1e-12, err_msg="m=1.2, n=128")
     assert abs(s.resultant(sol) - dugdale_resultant(m)) <= 1e-12
     assert abs(sol.consistency) <= 1e-15
@@ -177,8 +187,9 @@ def test_bounded_dugdale_pair_large_n_matches_to_1e12():
 def test_bounded_dugdale_pair_property(m):
     s = BoundedSolver(128)
     sol = s.solve(dugdale_f(s.collocation, m))
-    assert_allclose(np.sqrt(1 - s.nodes ** 2) * sol.values, dugdale_phi(s.nodes, m),
-                    atol=1e-12, err_msg=f"m={m}")
+    assert_allclose(
+        np.sqrt(1 - s.nodes**2) * sol.values, dugdale_phi(s.nodes, m), atol=1e-12, err_msg=f"m={m}"
+    )
     assert_allclose(s.resultant(sol), dugdale_resultant(m), rtol=1e-12, err_msg=f"m={m}")
 
 
@@ -222,17 +233,21 @@ def test_bounded_equals_egc_dropped_middle_equation(n):
     mid = n // 2
     assert abs(x[mid]) < 1e-15
     keep = np.arange(n + 1) != mid
-    for f in (-0.5 * x + 0.3 * dugdale_f(x, 1.3), x ** 3 - 2 * x, dugdale_f(x, 1.05)):
+    for f in (-0.5 * x + 0.3 * dugdale_f(x, 1.3), x**3 - 2 * x, dugdale_f(x, 1.05)):
         g_egc = np.linalg.solve(M[keep], f[keep])
         sol = s.solve(f)
-        assert_allclose(sol.values, g_egc, rtol=1e-11, atol=1e-11 * np.max(np.abs(g_egc)),
-                        err_msg=f"n={n}")
+        assert_allclose(
+            sol.values, g_egc, rtol=1e-11, atol=1e-11 * np.max(np.abs(g_egc)), err_msg=f"n={n}"
+        )
         assert abs(sol.consistency) <= 1e-15
 
 
 @SETTINGS
-@given(n=st.integers(1, 80), coef=st.lists(st.floats(-2, 2), min_size=4, max_size=4),
-       m=st.floats(1.01, 4.0))
+@given(
+    n=st.integers(1, 80),
+    coef=st.lists(st.floats(-2, 2), min_size=4, max_size=4),
+    m=st.floats(1.01, 4.0),
+)
 def test_bounded_equals_egc_least_squares(n, coef, m):
     """Any f: the least-squares solution of the n+1 by n EGC system; residual = mean f."""
     M, _, x = egc_matrix(n)
@@ -243,8 +258,9 @@ def test_bounded_equals_egc_least_squares(n, coef, m):
     scale = 1 + np.max(np.abs(g_ls))
     assert_allclose(sol.values, g_ls, atol=1e-10 * scale, err_msg=f"n={n}, coef={coef}, m={m}")
     # the unmatched component of f is its (discrete) mean: the consistency residual
-    assert_allclose(f - M @ sol.values, f.mean(), atol=1e-10 * (1 + np.abs(f).max()),
-                    err_msg=f"n={n}")
+    assert_allclose(
+        f - M @ sol.values, f.mean(), atol=1e-10 * (1 + np.abs(f).max()), err_msg=f"n={n}"
+    )
     assert_allclose(sol.consistency, f.mean(), atol=1e-15 * (1 + np.abs(f).max()) * n)
 
 
@@ -275,9 +291,9 @@ def test_bounded_extra_unknown_even_f(n):
     """f0 = x^2, extra = 1: lambda = -mean(x_k^2) = -1/2, then x^2 - 1/2 = T_2/2, g = -U_1/2."""
     s = BoundedSolver(n)
     x = s.collocation
-    sol = s.solve(x ** 2, extra=np.ones(n + 1))
+    sol = s.solve(x**2, extra=np.ones(n + 1))
     assert_allclose(sol.extra, -0.5, rtol=1e-14, err_msg=f"n={n}")
-    assert_allclose(sol.extra, -np.mean(x ** 2), rtol=1e-14)
+    assert_allclose(sol.extra, -np.mean(x**2), rtol=1e-14)
     assert_allclose(sol.values, -s.nodes, atol=1e-14, err_msg=f"n={n}")
     assert abs(sol.consistency) <= 1e-15
 
@@ -316,8 +332,12 @@ def test_bounded_mapped_interval(interval):
     sol = mapped.solve(dugdale_f(tau, m))
     ref = unit.solve(dugdale_f(unit.collocation, m))
     assert_allclose(sol.values, ref.values, atol=1e-13, err_msg=f"interval={interval}")
-    assert_allclose(mapped.resultant(sol), half * dugdale_resultant(m), rtol=1e-12,
-                    err_msg=f"interval={interval}")
+    assert_allclose(
+        mapped.resultant(sol),
+        half * dugdale_resultant(m),
+        rtol=1e-12,
+        err_msg=f"interval={interval}",
+    )
     t = np.linspace(lo, hi, 9)
     assert_allclose(mapped.evaluate(sol, t), dugdale_phi((t - mid) / half, m), atol=1e-12)
 
@@ -335,8 +355,9 @@ def _random_bounded_problem(seed, n, interval, degree=6):
 
     def phi(t):
         tt = tau(t)
-        return np.sqrt(max(0.0, 1 - tt * tt)) * sum(bj * eval_chebyu(j, tt)
-                                                     for j, bj in enumerate(b))
+        return np.sqrt(max(0.0, 1 - tt * tt)) * sum(
+            bj * eval_chebyu(j, tt) for j, bj in enumerate(b)
+        )
 
     return s, s.solve(f), phi, b
 
@@ -346,7 +367,7 @@ def test_bounded_resultant_and_first_moment_vs_quad(interval):
     lo, hi = interval
     s, sol, phi, b = _random_bounded_problem(1, 10, interval)
     assert_allclose(sol.coefficients[: b.size], b, atol=1e-13)
-    assert_allclose(sol.coefficients[b.size:], 0.0, atol=1e-13)
+    assert_allclose(sol.coefficients[b.size :], 0.0, atol=1e-13)
     res, _ = quad(phi, lo, hi, epsabs=1e-14, epsrel=1e-13)
     mom, _ = quad(lambda t: t * phi(t), lo, hi, epsabs=1e-14, epsrel=1e-13)
     assert_allclose(s.resultant(sol), res, rtol=1e-12, atol=1e-13, err_msg=f"{interval}")
@@ -367,8 +388,16 @@ def test_bounded_log_moment_vs_quad(interval):
     lo, hi = interval
     half = (hi - lo) / 2
     s, sol, phi, _ = _random_bounded_problem(2, 12, interval)
-    ys = [lo, hi, lo + 0.37 * (hi - lo), lo + 1e-3 * half, hi - 1e-6 * half,  # inside, ends
-          lo - 2.0 * half, hi + 1e-6 * half, hi + 40.0 * half]  # outside
+    ys = [
+        lo,
+        hi,
+        lo + 0.37 * (hi - lo),
+        lo + 1e-3 * half,
+        hi - 1e-6 * half,  # inside, ends
+        lo - 2.0 * half,
+        hi + 1e-6 * half,
+        hi + 40.0 * half,
+    ]  # outside
     got = s.log_moment(sol, np.array(ys))
     assert got.shape == (len(ys),)
     for y, g in zip(ys, got, strict=True):
@@ -478,12 +507,20 @@ def test_unbounded_log_moment_vs_quad(interval):
 
             pts = [th0] if 0 < th0 < np.pi else None
         else:
+
             def logdist(th, yu=yu):
                 return np.log(abs(yu - np.cos(th)))
 
             pts = None
-        ref, _ = quad(lambda th, ld=logdist: g_of_theta(th) * (ld(th) + np.log(half)), 0, np.pi,
-                      points=pts, limit=200, epsabs=1e-15, epsrel=1e-13)
+        ref, _ = quad(
+            lambda th, ld=logdist: g_of_theta(th) * (ld(th) + np.log(half)),
+            0,
+            np.pi,
+            points=pts,
+            limit=200,
+            epsabs=1e-15,
+            epsrel=1e-13,
+        )
         ref *= half
         assert abs(s.log_moment(g, y) - ref) <= 1e-12 * max(1, abs(ref)), f"{interval}, y={y}"
 
@@ -510,8 +547,7 @@ def test_end_bounded_rule_is_gauss_jacobi(n, bounded_at):
     s = EndBoundedSolver(n, bounded_at=bounded_at)
     order = np.argsort(s.nodes_unit)
     assert_allclose(s.nodes_unit[order], ref_nodes, atol=1e-15, err_msg=f"{bounded_at}, n={n}")
-    assert_allclose(s.weights_unit[order], ref_weights, rtol=2e-12,
-                    err_msg=f"{bounded_at}, n={n}")
+    assert_allclose(s.weights_unit[order], ref_weights, rtol=2e-12, err_msg=f"{bounded_at}, n={n}")
     assert abs(s.weights_unit.sum() - np.pi) <= 1e-14 * n  # int sqrt((1-t)/(1+t)) dt = pi
     assert s.collocation.shape == (n,)
 
@@ -524,8 +560,10 @@ def _end_bounded_exact_rhs(coef, x, bounded_at):
     """
     wvar = (-0.5, 0.5) if bounded_at == "right" else (0.5, -0.5)
     deg = len(coef) - 1
-    mu = [quad(lambda t, j=j: t ** j, -1, 1, weight="alg", wvar=wvar, epsabs=1e-15,
-               epsrel=1e-14)[0] for j in range(deg)]
+    mu = [
+        quad(lambda t, j=j: t**j, -1, 1, weight="alg", wvar=wvar, epsabs=1e-15, epsrel=1e-14)[0]
+        for j in range(deg)
+    ]
     f = np.zeros_like(x)
     for k in range(1, deg + 1):
         for j in range(k):
@@ -546,12 +584,16 @@ def test_end_bounded_polynomial_g(bounded_at, interval):
     t_unit = (s.nodes - mid) / half
     f = _end_bounded_exact_rhs(coef, x_unit, bounded_at)
     # the quadrature sum of the rule reproduces the exact Cauchy integral at the x_k
-    qsum = (s.weights_unit[None, :] * np.polyval(coef[::-1], t_unit)[None, :]
-            / (np.pi * (t_unit[None, :] - x_unit[:, None]))).sum(axis=1)
+    qsum = (
+        s.weights_unit[None, :]
+        * np.polyval(coef[::-1], t_unit)[None, :]
+        / (np.pi * (t_unit[None, :] - x_unit[:, None]))
+    ).sum(axis=1)
     assert_allclose(qsum, f, atol=1e-12, err_msg=f"{bounded_at}, {interval}")
     g = s.solve(f)
-    assert_allclose(g, np.polyval(coef[::-1], t_unit), atol=1e-12,
-                    err_msg=f"{bounded_at}, {interval}")
+    assert_allclose(
+        g, np.polyval(coef[::-1], t_unit), atol=1e-12, err_msg=f"{bounded_at}, {interval}"
+    )
     wvar = (-0.5, 0.5) if bounded_at == "right" else (0.5, -0.5)
     res, _ = quad(lambda t: np.polyval(coef[::-1], t), -1, 1, weight="alg", wvar=wvar)
     assert_allclose(s.resultant(g), half * res, rtol=1e-12)
@@ -576,25 +618,39 @@ BAD_SIE = [
     (lambda: UnboundedSolver(1.5), r"n must be an integer >= 2, got 1\.5"),
     (lambda: EndBoundedSolver(0), r"n must be an integer >= 1, got 0"),
     (lambda: EndBoundedSolver(True), r"n must be an integer >= 1, got True"),
-    (lambda: BoundedSolver(4, (1.0, 1.0)),
-     r"interval must be finite with lo < hi, got \(1\.0, 1\.0\)"),
+    (
+        lambda: BoundedSolver(4, (1.0, 1.0)),
+        r"interval must be finite with lo < hi, got \(1\.0, 1\.0\)",
+    ),
     (lambda: BoundedSolver(4, (2.0, -1.0)), r"interval must be finite with lo < hi"),
     (lambda: BoundedSolver(4, (0.0, np.inf)), r"interval must be finite with lo < hi"),
     (lambda: BoundedSolver(4, (np.nan, 1.0)), r"interval must be finite with lo < hi"),
     (lambda: UnboundedSolver(4, (-np.inf, 0.0)), r"interval must be finite with lo < hi"),
     (lambda: EndBoundedSolver(4, (3.0, 0.0)), r"interval must be finite with lo < hi"),
-    (lambda: EndBoundedSolver(4, bounded_at="middle"),
-     r"bounded_at must be 'right' or 'left', got 'middle'"),
-    (lambda: BoundedSolver(4).solve(np.zeros(4)),
-     r"f must have n \+ 1 = 5 values on its last axis, got 4"),
-    (lambda: BoundedSolver(4).solve(np.zeros((2, 6))),
-     r"f must have n \+ 1 = 5 values on its last axis, got 6"),
-    (lambda: BoundedSolver(4).solve(np.zeros(5), extra=np.ones(3)),
-     r"extra must have n \+ 1 = 5 values on its last axis, got 3"),
-    (lambda: UnboundedSolver(4).solve(np.zeros(4), 0.0),
-     r"f must have n - 1 = 3 values on its last axis, got 4"),
-    (lambda: EndBoundedSolver(4).solve(np.zeros(5)),
-     r"f must have n = 4 values on its last axis, got 5"),
+    (
+        lambda: EndBoundedSolver(4, bounded_at="middle"),
+        r"bounded_at must be 'right' or 'left', got 'middle'",
+    ),
+    (
+        lambda: BoundedSolver(4).solve(np.zeros(4)),
+        r"f must have n \+ 1 = 5 values on its last axis, got 4",
+    ),
+    (
+        lambda: BoundedSolver(4).solve(np.zeros((2, 6))),
+        r"f must have n \+ 1 = 5 values on its last axis, got 6",
+    ),
+    (
+        lambda: BoundedSolver(4).solve(np.zeros(5), extra=np.ones(3)),
+        r"extra must have n \+ 1 = 5 values on its last axis, got 3",
+    ),
+    (
+        lambda: UnboundedSolver(4).solve(np.zeros(4), 0.0),
+        r"f must have n - 1 = 3 values on its last axis, got 4",
+    ),
+    (
+        lambda: EndBoundedSolver(4).solve(np.zeros(5)),
+        r"f must have n = 4 values on its last axis, got 5",
+    ),
 ]
 
 

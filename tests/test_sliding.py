@@ -26,7 +26,7 @@ A_GRID = np.array([1e-4, 1e-3, 0.005, 0.02, 0.05, 0.1, 0.2])
 def _scale_F(r):
     """|Hertz| + |adhesive| terms of the load, the natural size of its error."""
     A, rho, s = np.asarray(r.a_over_R), np.asarray(r.R_over_h2), np.asarray(r.sigma0_over_E)
-    z = (np.sqrt(r.c1_over_R ** 2 - A ** 2) + np.sqrt(r.c2_over_R ** 2 - A ** 2)) / A
+    z = (np.sqrt(r.c1_over_R**2 - A**2) + np.sqrt(r.c2_over_R**2 - A**2)) / A
     return np.pi / 4 * A * A * rho + s * rho * A * z
 
 
@@ -35,16 +35,16 @@ def _scale_F(r):
 
 
 @pytest.mark.parametrize("method", METHODS)
-@pytest.mark.parametrize(("rho", "s"), [(100.0, 0.01), (100.0, 0.2), (1000.0, 0.05),
-                                        (20.0, 0.001)])
+@pytest.mark.parametrize(("rho", "s"), [(100.0, 0.01), (100.0, 0.2), (1000.0, 0.05), (20.0, 0.001)])
 def test_equal_ranges_reproduce_normal_contact(method, rho, s):
     r = sl.sliding_contact(A_GRID, rho, 1.0, s, method=method)
     n = lc.normal_contact(A_GRID, rho, s)
     msg = f"method={method}, R/h={rho}, sigma0/E={s}"
     np.testing.assert_allclose(r.c1_over_R, n.c_over_R, rtol=1e-12, err_msg=msg)
     np.testing.assert_allclose(r.c2_over_R, n.c_over_R, rtol=1e-12, err_msg=msg)
-    np.testing.assert_allclose(r.F_over_Eh2, n.F_over_Eh, rtol=0,
-                               atol=1e-12 * np.max(_scale_F(r)), err_msg=msg)
+    np.testing.assert_allclose(
+        r.F_over_Eh2, n.F_over_Eh, rtol=0, atol=1e-12 * np.max(_scale_F(r)), err_msg=msg
+    )
     assert np.all(np.abs(r.e_over_R) <= 1e-15)
     assert np.all(np.abs(r.M_over_Eh2R) <= 1e-12 * np.max(_scale_F(r)))
     np.testing.assert_array_equal(r.stable, n.stable)
@@ -58,8 +58,9 @@ def test_equal_ranges_pull_off_and_inverse_match_normal():
     np.testing.assert_array_equal(po.mechanism, ref.mechanism)
     np.testing.assert_allclose(po.F_pulloff_over_Eh2, ref.F_pulloff_over_Eh, rtol=1e-11)
     np.testing.assert_allclose(po.a_over_R_at_pulloff, ref.a_over_R_at_pulloff, rtol=1e-6)
-    np.testing.assert_allclose(po.F_zero_width_over_Eh2, lc.zero_width_load(100.0, [0.01, 0.2]),
-                               rtol=1e-13)
+    np.testing.assert_allclose(
+        po.F_zero_width_over_Eh2, lc.zero_width_load(100.0, [0.01, 0.2]), rtol=1e-13
+    )
     F = [-0.2, 0.0, 1.5]
     r = sl.sliding_contact_for_load(F, 100.0, 1.0, 0.01, method="closed-form")
     n = lc.contact_for_load(F, 100.0, 0.01)
@@ -82,10 +83,10 @@ def test_swapping_the_ranges_mirrors_the_contact(method):
         np.testing.assert_allclose(b.c1_over_R, a.c2_over_R, rtol=1e-12, err_msg=msg)
         np.testing.assert_allclose(b.c2_over_R, a.c1_over_R, rtol=1e-12, err_msg=msg)
         np.testing.assert_allclose(b.e_over_R, -a.e_over_R, rtol=1e-9, err_msg=msg)
-        np.testing.assert_allclose(b.M_over_Eh2R, -a.M_over_Eh2R / ratio, rtol=1e-9,
-                                   err_msg=msg)
-        np.testing.assert_allclose(b.F_over_Eh2, a.F_over_Eh2 / ratio, rtol=1e-10,
-                                   atol=1e-12, err_msg=msg)
+        np.testing.assert_allclose(b.M_over_Eh2R, -a.M_over_Eh2R / ratio, rtol=1e-9, err_msg=msg)
+        np.testing.assert_allclose(
+            b.F_over_Eh2, a.F_over_Eh2 / ratio, rtol=1e-10, atol=1e-12, err_msg=msg
+        )
 
 
 @pytest.mark.parametrize("method", METHODS)
@@ -96,9 +97,12 @@ def test_moment_about_the_axis_is_the_adhesion_hysteresis(method):
     res = sl.sliding_contact(A_GRID[None, :], 100.0, r, 0.04, method=method)
     expected = np.broadcast_to(0.04 * (r - 1), res.a_over_R.shape)
     np.testing.assert_allclose(res.M_axis_over_Eh2R, expected, rtol=1e-10, atol=1e-14)
-    np.testing.assert_allclose(res.M_axis_over_Eh2R,
-                               res.M_over_Eh2R - res.e_over_R * res.F_over_Eh2, rtol=1e-14,
-                               atol=1e-17)
+    np.testing.assert_allclose(
+        res.M_axis_over_Eh2R,
+        res.M_over_Eh2R - res.e_over_R * res.F_over_Eh2,
+        rtol=1e-14,
+        atol=1e-17,
+    )
 
 
 def test_trailing_adhesion_shifts_the_contact_back_and_loads_it_clockwise():
@@ -137,9 +141,10 @@ def _quad(f, lo, hi, points):
     return val
 
 
-@pytest.mark.parametrize(("A", "rho", "ratio", "s"), [(0.03, 100.0, 2.5, 0.04),
-                                                      (0.08, 100.0, 3.0, 0.02),
-                                                      (0.01, 500.0, 0.5, 0.1)])
+@pytest.mark.parametrize(
+    ("A", "rho", "ratio", "s"),
+    [(0.03, 100.0, 2.5, 0.04), (0.08, 100.0, 3.0, 0.02), (0.01, 500.0, 0.5, 0.1)],
+)
 def test_load_and_moment_are_the_integrals_of_the_pressure(A, rho, ratio, s):
     for method in METHODS:
         r = sl.sliding_contact(A, rho, ratio, s, method=method)
@@ -151,14 +156,15 @@ def test_load_and_moment_are_the_integrals_of_the_pressure(A, rho, ratio, s):
         # the pressure is -sigma0 on the zones: integrate the contact numerically, the
         # zones exactly, so that the check is not limited by the jumps at +-a
         F = _quad(p, -A, A, None) - s * (c1 - A) - s * (c2 - A)
-        M = _quad(lambda x: x * p(x), -A, A, None) - s * (c2 ** 2 - c1 ** 2) / 2
+        M = _quad(lambda x: x * p(x), -A, A, None) - s * (c2**2 - c1**2) / 2
         msg = f"{method}: a/R={A}, R/h2={rho}, h1/h2={ratio}, sigma0/E={s}"
         assert math.isclose(F * rho, r.F_over_Eh2, rel_tol=1e-10, abs_tol=1e-12), msg
         assert math.isclose(M * rho, r.M_over_Eh2R, rel_tol=1e-9, abs_tol=1e-13), msg
 
 
-@pytest.mark.parametrize(("A", "rho", "ratio", "s"), [(0.03, 100.0, 2.5, 0.04),
-                                                      (0.01, 500.0, 0.5, 0.1)])
+@pytest.mark.parametrize(
+    ("A", "rho", "ratio", "s"), [(0.03, 100.0, 2.5, 0.04), (0.01, 500.0, 0.5, 0.1)]
+)
 def test_separation_conditions_by_quadrature_of_the_gap_slope(A, rho, ratio, s):
     """Eqs. 21-22 without their log kernels.
 
@@ -176,12 +182,21 @@ def test_separation_conditions_by_quadrature_of_the_gap_slope(A, rho, ratio, s):
         sn = math.sqrt(max(1 - ct * ct, 0.0))
         if sn == 0.0:
             return 0.5 + (2 * s / math.pi) * (q2 / (1 - q2 * ct) + q1 / (1 + q1 * ct)) / A
-        return 0.5 + (2 * s / math.pi) * (math.atan2(q2 * sn, 1 - q2 * ct) +
-                                          math.atan2(q1 * sn, 1 + q1 * ct)) / (A * sn)
+        return 0.5 + (2 * s / math.pi) * (
+            math.atan2(q2 * sn, 1 - q2 * ct) + math.atan2(q1 * sn, 1 + q1 * ct)
+        ) / (A * sn)
 
     def slope(x):
-        inner, _ = integrate.quad(lambda xi: smooth(xi) / (xi - x), -A, A, weight="alg",
-                                  wvar=(0.5, 0.5), epsabs=1e-15, epsrel=1e-13, limit=200)
+        inner, _ = integrate.quad(
+            lambda xi: smooth(xi) / (xi - x),
+            -A,
+            A,
+            weight="alg",
+            wvar=(0.5, 0.5),
+            epsabs=1e-15,
+            epsrel=1e-13,
+            limit=200,
+        )
         return (x - e) + (2 / math.pi) * (inner - s * math.log(abs((c2 - x) / (c1 + x))))
 
     g_lead = _quad(slope, A, c2, None) * rho
@@ -190,10 +205,14 @@ def test_separation_conditions_by_quadrature_of_the_gap_slope(A, rho, ratio, s):
     assert math.isclose(g_trail, ratio, rel_tol=1e-12)
     # the pressure used is the collocation solution's
     t = np.linspace(-0.95, 0.95, 9)
-    np.testing.assert_allclose([smooth(v) * A * math.sqrt(1 - (v / A) ** 2) - s for v in A * t],
-                               r.pressure(A * t), atol=1e-14)
-    np.testing.assert_allclose(r.gap(np.array([-c1, -A, 0.0, A, c2])),
-                               [ratio, 0.0, 0.0, 0.0, 1.0], atol=1e-11)
+    np.testing.assert_allclose(
+        [smooth(v) * A * math.sqrt(1 - (v / A) ** 2) - s for v in A * t],
+        r.pressure(A * t),
+        atol=1e-14,
+    )
+    np.testing.assert_allclose(
+        r.gap(np.array([-c1, -A, 0.0, A, c2])), [ratio, 0.0, 0.0, 0.0, 1.0], atol=1e-11
+    )
 
 
 def test_collocation_pressure_is_the_closed_form():
@@ -246,8 +265,9 @@ def test_closed_form_jacobian_and_stability_by_finite_differences():
     for k, (d1, d2) in enumerate(((h, 0), (0, h))):
         p = sl._cf_eval(ab, kap, ratio, u1 + d1, u2 + d2)
         m = sl._cf_eval(ab, kap, ratio, u1 - d1, u2 - d2)
-        np.testing.assert_allclose([J[k], J[2 + k]], [(p[0] - m[0]) / (2 * h),
-                                                      (p[1] - m[1]) / (2 * h)], rtol=1e-7)
+        np.testing.assert_allclose(
+            [J[k], J[2 + k]], [(p[0] - m[0]) / (2 * h), (p[1] - m[1]) / (2 * h)], rtol=1e-7
+        )
     # dF/da sign is the stability flag: compare with finite differences of F(a)
     A = np.geomspace(0.004, 0.1, 25)
     r = sl.sliding_contact(A, 100.0, 2.0, 0.04, method="closed-form")
@@ -262,7 +282,7 @@ def test_closed_form_jacobian_and_stability_by_finite_differences():
 
 
 @settings(max_examples=12, deadline=None, derandomize=True)
-@given(seed=st.integers(0, 2 ** 32 - 1))
+@given(seed=st.integers(0, 2**32 - 1))
 def test_sweep_methods_agree_and_signs_follow_the_ranges(seed):
     rng = np.random.default_rng(seed)
     n = 40
@@ -290,8 +310,12 @@ def test_sweep_methods_agree_and_signs_follow_the_ranges(seed):
 
 
 @settings(max_examples=8, deadline=None, derandomize=True)
-@given(rho=st.floats(10, 1e4), ratio=st.floats(0.2, 5), s=st.floats(1e-3, 0.3),
-       load=st.floats(0.0, 3.0))
+@given(
+    rho=st.floats(10, 1e4),
+    ratio=st.floats(0.2, 5),
+    s=st.floats(1e-3, 0.3),
+    load=st.floats(0.0, 3.0),
+)
 def test_sweep_inverse_round_trip(rho, ratio, s, load):
     po = sl.sliding_pull_off(rho, ratio, s)
     assert po.F_pulloff_over_Eh2 <= po.F_zero_width_over_Eh2 < 0
@@ -321,8 +345,11 @@ def test_inverse_with_friction_and_collocation():
 
 def test_below_pull_off_says_so():
     po = sl.sliding_pull_off(100.0, 2.0, 0.04)
-    with pytest.raises(NoEquilibriumError, match=r"below the pull-off force "
-                                                 r"F_pulloff_over_Eh2=-1\.11"):
+    with pytest.raises(
+        NoEquilibriumError,
+        match=r"below the pull-off force "
+        r"F_pulloff_over_Eh2=-1\.11",
+    ):
         sl.sliding_contact_for_load(po.F_pulloff_over_Eh2 - 0.01, 100.0, 2.0, 0.04)
     with pytest.raises(NoEquilibriumError, match="without adhesion"):
         sl.sliding_contact_for_load(-0.1, 100.0, 2.0, 0.0)
@@ -335,9 +362,11 @@ def test_zero_width_limit_of_the_branch():
     np.testing.assert_allclose(r.c1_over_R, po.c1_over_R_zero_width, rtol=1e-7)
     np.testing.assert_allclose(r.c2_over_R, po.c2_over_R_zero_width, rtol=1e-7)
     # F = -sigma0 (c1 + c2) at zero width
-    np.testing.assert_allclose(po.F_zero_width_over_Eh2,
-                               -0.01 * 100 * (po.c1_over_R_zero_width +
-                                              po.c2_over_R_zero_width), rtol=1e-14)
+    np.testing.assert_allclose(
+        po.F_zero_width_over_Eh2,
+        -0.01 * 100 * (po.c1_over_R_zero_width + po.c2_over_R_zero_width),
+        rtol=1e-14,
+    )
 
 
 def test_snap_off_is_the_load_minimum():
@@ -361,8 +390,9 @@ def test_scalars_in_scalars_out_and_broadcasting():
     assert b.c1_over_R.shape == (2, 3) and b.pressure(np.zeros(5)).shape == (2, 3, 5)
     recs = b.to_records()
     assert len(recs) == 6 and recs[0]["method"] == "collocation"
-    assert {"a_over_R", "c1_over_R", "c2_over_R", "e_over_R", "F_over_Eh2",
-            "M_over_Eh2R"} <= set(recs[0])
+    assert {"a_over_R", "c1_over_R", "c2_over_R", "e_over_R", "F_over_Eh2", "M_over_Eh2R"} <= set(
+        recs[0]
+    )
 
 
 BAD = [

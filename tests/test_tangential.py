@@ -6,7 +6,6 @@ collocation solutions against the closed forms, the limits of every problem, the
 the convergence in n, and the error messages word for word.
 """
 
-
 import numpy as np
 import pytest
 from hypothesis import given, seed, settings
@@ -59,13 +58,18 @@ def test_initiation_closed_form_satisfies_the_stick_condition(d):
     for x in (d + 0.3 * (1 - d), 0.99):  # slip zones: the gradient has the sign of the slip
         grad = slip_gradient(q, breaks, x)
         k = np.sqrt(1 - d * d)
-        assert grad == pytest.approx(4 / np.pi * np.log((k + np.sqrt(x * x - d * d)) /
-                                                        np.sqrt(1 - x * x)), rel=1e-9)
+        assert grad == pytest.approx(
+            4 / np.pi * np.log((k + np.sqrt(x * x - d * d)) / np.sqrt(1 - x * x)), rel=1e-9
+        )
         assert grad > 0 and slip_gradient(q, breaks, -x) == pytest.approx(-grad, rel=1e-9)
     # the slip is the integral of the (checked) gradient from the end of the stick zone
     for x in (0.5 * (1 + d), 1.0):
-        s = quad(lambda y: 4 / np.pi * np.log((k + np.sqrt(y * y - d * d)) /
-                                              np.sqrt(1 - y * y)), d, x, limit=200)[0]
+        s = quad(
+            lambda y: 4 / np.pi * np.log((k + np.sqrt(y * y - d * d)) / np.sqrt(1 - y * y)),
+            d,
+            x,
+            limit=200,
+        )[0]
         assert float(r.slip(np.array([x]))[0]) == pytest.approx(s, rel=1e-10)
 
 
@@ -124,8 +128,15 @@ def test_initiation_closed_form_values():
     # traction: tau0 in the slip zones, (2 tau0/pi) arctan sqrt((a^2-d^2)/(d^2-x^2)) inside
     x = np.array([-0.7, 0.0, 0.5, 0.7])
     q = sliding_initiation(0.01, 0.6).traction(x)
-    assert_allclose(q, [0.01, 0.01 * 2 / np.pi * np.arctan(0.8 / 0.6),
-                        0.01 * 2 / np.pi * np.arctan(0.8 / np.sqrt(0.36 - 0.25)), 0.01])
+    assert_allclose(
+        q,
+        [
+            0.01,
+            0.01 * 2 / np.pi * np.arctan(0.8 / 0.6),
+            0.01 * 2 / np.pi * np.arctan(0.8 / np.sqrt(0.36 - 0.25)),
+            0.01,
+        ],
+    )
 
 
 def test_initiation_limits():
@@ -147,8 +158,9 @@ def test_initiation_limits():
     assert s[0, 0] == pytest.approx(4 * np.log(2) / np.pi * 0.01, rel=1e-8)
     d = 0.5  # s(a) = (4/pi)(tau0/E)(k arccosh(a/d) + ln(d/a))
     k = np.sqrt(1 - d * d)
-    assert s[1, 0] == pytest.approx(4 / np.pi * 0.01 * (k * np.arccosh(1 / d) + np.log(d)),
-                                    rel=1e-13)
+    assert s[1, 0] == pytest.approx(
+        4 / np.pi * 0.01 * (k * np.arccosh(1 / d) + np.log(d)), rel=1e-13
+    )
 
 
 def test_initiation_slip_profile_is_monotone_and_symmetric():
@@ -167,14 +179,15 @@ def test_rolling_closed_form_values():
     r = steady_rolling(0.01, d)
     assert_allclose(r.T_over_Ea, 0.01 * np.sqrt(2 * (1 + d)), rtol=1e-15)
     # creep = -(4/pi)(tau0/E) artanh(T/(2 a tau0)) = -(2/pi)(tau0/E) arccosh((3a+d)/(a-d))
-    assert_allclose(r.creep_over_V, -4 / np.pi * 0.01 * np.arctanh(np.sqrt((1 + d) / 2)),
-                    rtol=1e-14)
-    assert_allclose(r.creep_over_V, -2 / np.pi * 0.01 * np.arccosh((3 + d) / (1 - d)),
-                    rtol=1e-14)
+    assert_allclose(
+        r.creep_over_V, -4 / np.pi * 0.01 * np.arctanh(np.sqrt((1 + d) / 2)), rtol=1e-14
+    )
+    assert_allclose(r.creep_over_V, -2 / np.pi * 0.01 * np.arccosh((3 + d) / (1 - d)), rtol=1e-14)
     q = steady_rolling(0.01, 0.5).traction(np.array([-1.0, 0.0, 0.5, 0.75, 1.0, 1.2]))
     beta = 0.75
-    assert_allclose(q, 0.01 * np.array([1, 1, 1, 2 / np.pi * np.arctan(np.sqrt(beta)), 0, 0]),
-                    atol=1e-17)
+    assert_allclose(
+        q, 0.01 * np.array([1, 1, 1, 2 / np.pi * np.arctan(np.sqrt(beta)), 0, 0]), atol=1e-17
+    )
 
 
 def test_rolling_limits():
@@ -216,7 +229,8 @@ def test_cattaneo_mindlin_closed_form():
     assert_allclose(q, expect, atol=1e-18)
     # limits: T -> 0 at full stick, T = mu F at d = 0 (sliding)
     assert sliding_initiation_coulomb(0.3, 0.02, 1 - 1e-12).T_over_muF == pytest.approx(
-        2e-12, rel=1e-4)
+        2e-12, rel=1e-4
+    )
     assert sliding_initiation_coulomb(0.3, 0.02, 0.0).state == "sliding"
     inv = sliding_initiation_coulomb(0.3, 0.02, T_over_muF=[0.0, 0.75, 1.0, 2.0])
     assert_allclose(inv.d_over_a, [1.0, 0.5, 0.0, np.nan])
@@ -227,15 +241,14 @@ def test_carter_closed_form():
     d = np.array([-0.6, 0.0, 0.6])
     r = steady_rolling_coulomb(0.2, 0.01, d)
     a1 = (1 - d) / 2  # a'/a
-    assert_allclose(r.T_over_muF, 1 - a1 ** 2, rtol=1e-15)
+    assert_allclose(r.T_over_muF, 1 - a1**2, rtol=1e-15)
     # Carter: creep = -(mu a/R)(1 - a'/a) = -(mu a/R)(1 - sqrt(1 - T/(mu F)))
     assert_allclose(r.creep_over_V, -0.2 * 0.01 * (1 - a1), rtol=1e-15)
     assert_allclose(r.creep_over_V, -0.2 * 0.01 * (1 - np.sqrt(1 - r.T_over_muF)), rtol=1e-14)
     x = np.linspace(-1, 1, 81)
     q = steady_rolling_coulomb(0.2, 0.01, 0.2).traction(x)
     p0, a1, x0 = 0.005, 0.4, 0.6
-    expect = 0.2 * p0 * (np.sqrt(1 - x * x) -
-                         a1 * np.sqrt(np.clip(1 - ((x - x0) / a1) ** 2, 0, 1)))
+    expect = 0.2 * p0 * (np.sqrt(1 - x * x) - a1 * np.sqrt(np.clip(1 - ((x - x0) / a1) ** 2, 0, 1)))
     assert_allclose(q, expect, atol=1e-18)
     # limits: full stick (d -> -a) T, creep -> 0; full slip (d -> a) T -> mu F, creep -> -mu a/R
     s = steady_rolling_coulomb(0.2, 0.01, [-1 + 1e-12, 1 - 1e-12])
@@ -277,8 +290,11 @@ def test_rolling_collocation_matches_closed_form(d):
 
 @pytest.mark.parametrize("fn", [sliding_initiation_coulomb, steady_rolling_coulomb])
 def test_coulomb_collocation_matches_closed_form(fn):
-    d = np.array([0.1, 0.5, 0.9]) if fn is sliding_initiation_coulomb else \
-        np.array([-0.9, 0.0, 0.9])
+    d = (
+        np.array([0.1, 0.5, 0.9])
+        if fn is sliding_initiation_coulomb
+        else np.array([-0.9, 0.0, 0.9])
+    )
     c = fn(0.25, 0.01, d, method="collocation")
     f = fn(0.25, 0.01, d)
     assert np.all(c.converged) and np.all(c.n_collocation == tg.N_COULOMB)
@@ -309,29 +325,40 @@ def test_given_load_force_balance_and_round_trip():
 def test_initiation_convergence_with_n():
     d = 0.95
     exact = sliding_initiation(1.0, d).T_over_Ea
-    errs = [abs(sliding_initiation(1.0, d, method="collocation", n=n,
-                                   raise_on_failure=False).T_over_Ea - exact)
-            for n in (4, 8, 16, 32)]
+    errs = [
+        abs(
+            sliding_initiation(1.0, d, method="collocation", n=n, raise_on_failure=False).T_over_Ea
+            - exact
+        )
+        for n in (4, 8, 16, 32)
+    ]
     # geometric: error ~ exp(-2 n arccosh(a/d)), arccosh(1/0.95) = 0.32
     assert errs[0] > errs[1] > errs[2] > 1e3 * errs[3], errs
     # at least the rate of the log source's Chebyshev coefficients, exp(-2 n arccosh(a/d))
     v = np.arccosh(1 / d)
     assert errs[0] / errs[1] > 0.5 * np.exp(2 * 4 * v) and errs[1] / errs[2] > 0.5 * np.exp(
-        2 * 8 * v), errs
+        2 * 8 * v
+    ), errs
 
 
 def test_rolling_convergence_with_n_and_the_papers_linear_split():
     d = -0.9
     exact = steady_rolling(1.0, d).creep_over_V
-    errs = [abs(steady_rolling(1.0, d, method="collocation", n=n,
-                               raise_on_failure=False).creep_over_V - exact)
-            for n in (4, 8, 16, 32)]
+    errs = [
+        abs(
+            steady_rolling(1.0, d, method="collocation", n=n, raise_on_failure=False).creep_over_V
+            - exact
+        )
+        for n in (4, 8, 16, 32)
+    ]
     assert errs[0] > errs[1] > errs[2] > errs[3] and errs[3] < 1e-12, errs
     # the paper's Eq 25 split (linear, signs as derived in docs/tangential.md) converges to
     # the same creep, but only algebraically (~n^-3): the end-point terms (x-d) ln(x-d) of
     # Eq 27 are not smooth
-    lin = [abs(-2 * tg.rolling._roll_solve(np.array([d]), n, "linear").extra[0] - exact)
-           for n in (64, 256, 1024)]
+    lin = [
+        abs(-2 * tg.rolling._roll_solve(np.array([d]), n, "linear").extra[0] - exact)
+        for n in (64, 256, 1024)
+    ]
     assert lin[0] > lin[1] > lin[2] and lin[2] < 1e-8, lin
     assert 20 < lin[0] / lin[1] < 200 and 20 < lin[1] / lin[2] < 200, lin
 
@@ -344,9 +371,12 @@ def test_adaptive_size_follows_the_distance_to_the_limit():
 
 
 def test_convergence_failure_is_named():
-    with pytest.raises(ConvergenceError, match=r"sliding_initiation \(collocation\) did not "
-                                               r"converge at tau0_over_E=0\.01, "
-                                               r"d_over_a=0\.9999999"):
+    with pytest.raises(
+        ConvergenceError,
+        match=r"sliding_initiation \(collocation\) did not "
+        r"converge at tau0_over_E=0\.01, "
+        r"d_over_a=0\.9999999",
+    ):
         sliding_initiation(0.01, 0.9999999, method="collocation")
     r = steady_rolling(0.01, [-0.9999999, 0.0], method="collocation", raise_on_failure=False)
     assert list(r.converged) == [False, True]
@@ -354,8 +384,11 @@ def test_convergence_failure_is_named():
 
 
 def test_on_sliding_raise():
-    with pytest.raises(NoEquilibriumError, match=r"steady_rolling: T_over_Ea=0\.03 is at or "
-                                                 r"above the full-slip load 0\.02"):
+    with pytest.raises(
+        NoEquilibriumError,
+        match=r"steady_rolling: T_over_Ea=0\.03 is at or "
+        r"above the full-slip load 0\.02",
+    ):
         steady_rolling(0.01, T_over_Ea=[0.01, 0.03], on_sliding="raise")
     with pytest.raises(NoEquilibriumError, match=r"T_over_muF=1\.0 is at or above"):
         sliding_initiation_coulomb(0.3, 0.01, T_over_muF=1.0, on_sliding="raise")
@@ -368,8 +401,15 @@ def test_on_sliding_raise():
 
 def test_scalars_in_scalars_out_and_broadcasting():
     r = steady_rolling(0.01, 0.2, method="collocation")
-    for name in ("d_over_a", "T_over_Ea", "creep_over_V", "residual_stick", "converged",
-                 "state", "n_collocation"):
+    for name in (
+        "d_over_a",
+        "T_over_Ea",
+        "creep_over_V",
+        "residual_stick",
+        "converged",
+        "state",
+        "n_collocation",
+    ):
         assert np.ndim(getattr(r, name)) == 0 and not isinstance(getattr(r, name), np.ndarray)
     a = steady_rolling([[0.01], [0.02]], [-0.5, 0.0, 0.5])
     assert a.T_over_Ea.shape == a.creep_over_V.shape == a.state.shape == (2, 3)
@@ -462,32 +502,67 @@ def test_si_layer_coulomb_uses_hertz():
 BAD = [
     (sliding_initiation, (0.0, 0.5), {}, r"tau0_over_E must be in \(0, inf\), got 0\.0"),
     (steady_rolling, (-0.01, 0.5), {}, r"tau0_over_E must be in \(0, inf\), got -0\.01"),
-    (sliding_initiation, (np.nan, 0.5), {}, r"tau0_over_E must be a finite number in \(0, inf\), "
-                                            r"got nan"),
+    (
+        sliding_initiation,
+        (np.nan, 0.5),
+        {},
+        r"tau0_over_E must be a finite number in \(0, inf\), "
+        r"got nan",
+    ),
     (sliding_initiation, (0.01, 1.0), {}, r"d_over_a must be in \[0, 1\), got 1\.0"),
     (sliding_initiation, (0.01, -0.2), {}, r"d_over_a must be in \[0, 1\), got -0\.2"),
     (steady_rolling, (0.01, 1.5), {}, r"d_over_a must be in \(-1, 1\), got 1\.5"),
     (steady_rolling, (0.01, -1.0), {}, r"d_over_a must be in \(-1, 1\), got -1\.0"),
-    (steady_rolling, (0.01, np.inf), {}, r"d_over_a must be a finite number in \(-1, 1\), "
-                                         r"got inf"),
+    (
+        steady_rolling,
+        (0.01, np.inf),
+        {},
+        r"d_over_a must be a finite number in \(-1, 1\), "
+        r"got inf",
+    ),
     (sliding_initiation, (0.01,), {}, r"give exactly one of d_over_a or T_over_Ea"),
-    (steady_rolling, (0.01, 0.5), {"T_over_Ea": 0.01},
-     r"give exactly one of d_over_a or T_over_Ea"),
-    (steady_rolling, (0.01,), {"T_over_Ea": -0.01}, r"T_over_Ea must be in \[0, inf\), "
-                                                    r"got -0\.01"),
+    (
+        steady_rolling,
+        (0.01, 0.5),
+        {"T_over_Ea": 0.01},
+        r"give exactly one of d_over_a or T_over_Ea",
+    ),
+    (
+        steady_rolling,
+        (0.01,),
+        {"T_over_Ea": -0.01},
+        r"T_over_Ea must be in \[0, inf\), "
+        r"got -0\.01",
+    ),
     (sliding_initiation, (0.01,), {"T_over_Ea": np.inf}, r"T_over_Ea must be a finite number"),
     (sliding_initiation_coulomb, (0.0, 0.01, 0.5), {}, r"mu must be in \(0, inf\), got 0\.0"),
     (steady_rolling_coulomb, (0.3, 0.0, 0.5), {}, r"a_over_R must be in \(0, inf\), got 0\.0"),
     (steady_rolling_coulomb, (0.3, 0.01), {}, r"give exactly one of d_over_a or T_over_muF"),
-    (sliding_initiation_coulomb, (0.3, 0.01), {"T_over_muF": -1.0},
-     r"T_over_muF must be in \[0, inf\), got -1\.0"),
-    (steady_rolling, (0.01, 0.5), {"method": "exact"},
-     r"method must be 'closed-form' or 'collocation', got 'exact'"),
-    (steady_rolling, (0.01, 0.5), {"method": "collocation", "n": 1},
-     r"n must be 'auto' or an integer in \[2, 8192\], got 1"),
+    (
+        sliding_initiation_coulomb,
+        (0.3, 0.01),
+        {"T_over_muF": -1.0},
+        r"T_over_muF must be in \[0, inf\), got -1\.0",
+    ),
+    (
+        steady_rolling,
+        (0.01, 0.5),
+        {"method": "exact"},
+        r"method must be 'closed-form' or 'collocation', got 'exact'",
+    ),
+    (
+        steady_rolling,
+        (0.01, 0.5),
+        {"method": "collocation", "n": 1},
+        r"n must be 'auto' or an integer in \[2, 8192\], got 1",
+    ),
     (sliding_initiation, (0.01, 0.5), {"tol": 0.0}, r"tol must be in \[1e-15, 1e-2\), got 0\.0"),
-    (sliding_initiation, (0.01, 0.5), {"on_sliding": "ignore"},
-     r"on_sliding must be 'report' or 'raise', got 'ignore'"),
+    (
+        sliding_initiation,
+        (0.01, 0.5),
+        {"on_sliding": "ignore"},
+        r"on_sliding must be 'report' or 'raise', got 'ignore'",
+    ),
 ]
 
 
@@ -502,13 +577,18 @@ def _cyl(**adh):
 
 
 BAD_SI = [
-    (dict(), r"give exactly one of friction_stress \(constant tau0 \[Pa\]\) or "
-             r"friction_coefficient \(Coulomb mu\)"),
+    (
+        dict(),
+        r"give exactly one of friction_stress \(constant tau0 \[Pa\]\) or "
+        r"friction_coefficient \(Coulomb mu\)",
+    ),
     (dict(friction_stress=1e8, friction_coefficient=0.3), r"give exactly one of friction_stress"),
     (dict(friction_stress=0.0), r"friction_stress must be in \(0, inf\), got 0\.0"),
     (dict(friction_coefficient=-0.3), r"friction_coefficient must be in \(0, inf\)"),
-    (dict(friction_stress=1e8, tangential_load=1.0, d_over_a=0.5),
-     r"give exactly one of d_over_a or tangential_load \[N/m\]"),
+    (
+        dict(friction_stress=1e8, tangential_load=1.0, d_over_a=0.5),
+        r"give exactly one of d_over_a or tangential_load \[N/m\]",
+    ),
 ]
 
 
@@ -520,12 +600,17 @@ def test_bad_si_input(kwargs, message):
 
 
 def test_si_errors_from_the_normal_problem_and_coulomb_adhesion():
-    with pytest.raises(ValueError, match=r"Coulomb friction is the macro-scale counterpart for "
-                                         r"the non-adhesive Hertz contact"):
-        cylinder_sliding_initiation(_cyl(cohesive_stress=1e9), 1.0, friction_coefficient=0.3,
-                                    d_over_a=0.5)
+    with pytest.raises(
+        ValueError,
+        match=r"Coulomb friction is the macro-scale counterpart for "
+        r"the non-adhesive Hertz contact",
+    ):
+        cylinder_sliding_initiation(
+            _cyl(cohesive_stress=1e9), 1.0, friction_coefficient=0.3, d_over_a=0.5
+        )
     with pytest.raises(ValueError, match=r"normal_load must be in \(0, inf\), got 0\.0"):
         cylinder_sliding_initiation(_cyl(), 0.0, friction_coefficient=0.3, d_over_a=0.5)
     with pytest.raises(NoEquilibriumError, match=r"below the pull-off force"):
-        cylinder_sliding_initiation(_cyl(cohesive_stress=1e9), -100.0, friction_stress=1e8,
-                                    d_over_a=0.5)
+        cylinder_sliding_initiation(
+            _cyl(cohesive_stress=1e9), -100.0, friction_stress=1e8, d_over_a=0.5
+        )

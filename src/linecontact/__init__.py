@@ -85,5 +85,10 @@ __all__ += [
     "steady_rolling",
     "steady_rolling_coulomb",
 ]
-__all__ += ["SlidingContact", "SlidingPullOff", "sliding_contact", "sliding_contact_for_load",
-            "sliding_pull_off"]
+__all__ += [
+    "SlidingContact",
+    "SlidingPullOff",
+    "sliding_contact",
+    "sliding_contact_for_load",
+    "sliding_pull_off",
+]

@@ -27,15 +27,24 @@ def _real_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
     if raw.dtype.kind not in "iuf":
         # object arrays of plain numbers (e.g. [1, 2.5] of mixed Python types) are fine
         if raw.dtype.kind != "O" or not all(
-                isinstance(v, (int, float, np.integer, np.floating))
-                and not isinstance(v, (bool, np.bool_)) for v in raw.flat):
+            isinstance(v, (int, float, np.integer, np.floating))
+            and not isinstance(v, (bool, np.bool_))
+            for v in raw.flat
+        ):
             raise ValueError(bad)
     return np.asarray(raw, dtype=float)
 
 
-def check_array(name: str, value: ArrayLike, *, low: float = 0.0, low_inclusive: bool = False,
-                high: float = np.inf, high_inclusive: bool = False,
-                allow_inf: bool = False) -> NDArray[np.float64]:
+def check_array(
+    name: str,
+    value: ArrayLike,
+    *,
+    low: float = 0.0,
+    low_inclusive: bool = False,
+    high: float = np.inf,
+    high_inclusive: bool = False,
+    allow_inf: bool = False,
+) -> NDArray[np.float64]:
     """Return ``value`` as a float array after checking that it lies in the stated range.
 
     Raises
@@ -56,8 +65,9 @@ def check_array(name: str, value: ArrayLike, *, low: float = 0.0, low_inclusive:
     if nan.any():
         raise ValueError(f"{name} must be a finite number{in_rng}, got nan")
     if not allow_inf and np.isinf(arr).any():
-        raise ValueError(f"{name} must be a finite number{in_rng}, got "
-                         f"{_first_bad(arr, np.isinf(arr))}")
+        raise ValueError(
+            f"{name} must be a finite number{in_rng}, got {_first_bad(arr, np.isinf(arr))}"
+        )
     too_low = arr < low if low_inclusive else arr <= low
     too_high = arr > high if high_inclusive else arr >= high
     if np.isinf(high) and allow_inf:
@@ -81,8 +91,10 @@ def positions(name: str, value: ArrayLike, points_shape: tuple) -> NDArray[np.fl
     except ValueError:
         ok = False
     if not ok:
-        raise ValueError(f"{name} must have shape (m,) or broadcast to the points' shape plus "
-                         f"one axis, {want}, got shape {x.shape}")
+        raise ValueError(
+            f"{name} must have shape (m,) or broadcast to the points' shape plus "
+            f"one axis, {want}, got shape {x.shape}"
+        )
     return x
 
 
@@ -123,24 +135,29 @@ def broadcast(**named: NDArray) -> list[NDArray]:
     try:
         return list(np.broadcast_arrays(*arrays))
     except ValueError:
-        shapes = ", ".join(f"{k} has shape {np.shape(v)}" for k, v in named.items()
-                           if np.ndim(v) > 0)
+        shapes = ", ".join(
+            f"{k} has shape {np.shape(v)}" for k, v in named.items() if np.ndim(v) > 0
+        )
         raise ValueError(f"the array arguments must broadcast together: {shapes}") from None
 
 
-def check_solver_options(n: object, tol: object, raise_on_failure: object, *,
-                         n_max: int) -> None:
+def check_solver_options(n: object, tol: object, raise_on_failure: object, *, n_max: int) -> None:
     """The collocation options shared by the solvers: ``n``, ``tol`` and ``raise_on_failure``.
 
     ``tol`` may be any real number type (a ``numpy.float32`` was refused as out of range);
     ``raise_on_failure`` must be a bool (a string such as ``"no"`` was taken as true).
     """
-    if not (isinstance(n, str) and n == "auto" or (isinstance(n, (int, np.integer))
-                                                   and not isinstance(n, bool)
-                                                   and 2 <= n <= n_max)):
+    if not (
+        isinstance(n, str)
+        and n == "auto"
+        or (isinstance(n, (int, np.integer)) and not isinstance(n, bool) and 2 <= n <= n_max)
+    ):
         raise ValueError(f"n must be 'auto' or an integer in [2, {n_max}], got {n!r}")
-    if not (isinstance(tol, (int, float, np.integer, np.floating))
-            and not isinstance(tol, (bool, np.bool_)) and 1e-15 <= tol < 1e-2):
+    if not (
+        isinstance(tol, (int, float, np.integer, np.floating))
+        and not isinstance(tol, (bool, np.bool_))
+        and 1e-15 <= tol < 1e-2
+    ):
         raise ValueError(f"tol must be in [1e-15, 1e-2), got {tol!r}")
     if not isinstance(raise_on_failure, (bool, np.bool_)):
         raise ValueError(f"raise_on_failure must be True or False, got {raise_on_failure!r}")

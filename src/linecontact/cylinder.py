@@ -39,6 +39,7 @@ __all__ = [
     "cylinder_steady_rolling",
 ]
 
+
 @dataclass(frozen=True)
 class CylinderContact:
     """A normal contact state in SI units, with its nondimensional result.
@@ -122,27 +123,42 @@ class Cylinder:
 
     def __post_init__(self) -> None:
         # the fields as Python floats, checked (also when the class is built directly)
-        for name, limits in (("radius", {}), ("modulus", {}),
-                             ("cohesive_stress", {"low_inclusive": True}),
-                             ("adhesion_range", {}),
-                             ("dundurs_beta", {"low": -np.inf, "low_inclusive": True})):
+        for name, limits in (
+            ("radius", {}),
+            ("modulus", {}),
+            ("cohesive_stress", {"low_inclusive": True}),
+            ("adhesion_range", {}),
+            ("dundurs_beta", {"low": -np.inf, "low_inclusive": True}),
+        ):
             object.__setattr__(self, name, scalar(name, getattr(self, name), **limits))
         # the units of the groups must be representable: R/h, sigma0/E and E h
-        for what, v in (("radius/adhesion_range (R/h)", self.radius / self.adhesion_range),
-                        ("cohesive_stress/modulus (sigma0/E)",
-                         self.cohesive_stress / self.modulus),
-                        ("modulus*adhesion_range (E h, the unit of force per length)",
-                         self.modulus * self.adhesion_range)):
+        for what, v in (
+            ("radius/adhesion_range (R/h)", self.radius / self.adhesion_range),
+            ("cohesive_stress/modulus (sigma0/E)", self.cohesive_stress / self.modulus),
+            (
+                "modulus*adhesion_range (E h, the unit of force per length)",
+                self.modulus * self.adhesion_range,
+            ),
+        ):
             if not (np.isfinite(v) and (v > 0 or (v == 0 and what.startswith("cohesive")))):
-                raise ValueError(f"{what} = {v!r} is not a finite positive number: radius="
-                                 f"{self.radius!r}, modulus={self.modulus!r}, cohesive_stress="
-                                 f"{self.cohesive_stress!r}, adhesion_range="
-                                 f"{self.adhesion_range!r} are too far apart in scale")
+                raise ValueError(
+                    f"{what} = {v!r} is not a finite positive number: radius="
+                    f"{self.radius!r}, modulus={self.modulus!r}, cohesive_stress="
+                    f"{self.cohesive_stress!r}, adhesion_range="
+                    f"{self.adhesion_range!r} are too far apart in scale"
+                )
 
     @classmethod
-    def from_modulus(cls, radius: float, modulus: float, *, cohesive_stress: float | None = None,
-                     adhesion_range: float | None = None, work_of_adhesion: float | None = None,
-                     equilibrium_spacing: float | None = None) -> Cylinder:
+    def from_modulus(
+        cls,
+        radius: float,
+        modulus: float,
+        *,
+        cohesive_stress: float | None = None,
+        adhesion_range: float | None = None,
+        work_of_adhesion: float | None = None,
+        equilibrium_spacing: float | None = None,
+    ) -> Cylinder:
         """From the composite modulus ``E`` [Pa]; adhesion as ``(sigma0, h)`` or ``(w, z0)``."""
         R = scalar("radius", radius)
         E = scalar("modulus", modulus)
@@ -150,22 +166,34 @@ class Cylinder:
         return cls(R, E, s0, h, 0.0)
 
     @classmethod
-    def from_materials(cls, radius: float, E1: float, nu1: float, E2: float, nu2: float, *,
-                       cohesive_stress: float | None = None, adhesion_range: float | None = None,
-                       work_of_adhesion: float | None = None,
-                       equilibrium_spacing: float | None = None) -> Cylinder:
+    def from_materials(
+        cls,
+        radius: float,
+        E1: float,
+        nu1: float,
+        E2: float,
+        nu2: float,
+        *,
+        cohesive_stress: float | None = None,
+        adhesion_range: float | None = None,
+        work_of_adhesion: float | None = None,
+        equilibrium_spacing: float | None = None,
+    ) -> Cylinder:
         """From the moduli [Pa] and Poisson ratios of cylinder (1) and substrate (2)."""
         R = scalar("radius", radius)
         for name, v in zip(("E1", "nu1", "E2", "nu2"), _moduli(E1, nu1, E2, nu2), strict=True):
             if v.ndim != 0:
-                raise ValueError(f"{name} must be a single number, got an array of shape "
-                                 f"{v.shape}")
+                raise ValueError(f"{name} must be a single number, got an array of shape {v.shape}")
         E = float(composite_modulus(E1, nu1, E2, nu2))
         beta = float(dundurs_beta(E1, nu1, E2, nu2))
         if abs(beta) > BETA_WARN:
-            warnings.warn(f"Dundurs beta = -B/A = {beta:.3g} is not small (|beta| > {BETA_WARN}): "
-                          "normal and tangential tractions are coupled, but linecontact "
-                          "solves the uncoupled case B = 0", CouplingWarning, stacklevel=2)
+            warnings.warn(
+                f"Dundurs beta = -B/A = {beta:.3g} is not small (|beta| > {BETA_WARN}): "
+                "normal and tangential tractions are coupled, but linecontact "
+                "solves the uncoupled case B = 0",
+                CouplingWarning,
+                stacklevel=2,
+            )
         s0, h = _adhesion(cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
         return cls(R, E, s0, h, beta)
 
@@ -203,12 +231,18 @@ class Cylinder:
             v = np.multiply(v, unit)
             return v.item() if np.ndim(v) == 0 else v
 
-        return CylinderContact(si(r.a_over_R, R), si(r.c_over_R, R), si(r.F_over_Eh, Eh),
-                               r.stable, r)
+        return CylinderContact(
+            si(r.a_over_R, R), si(r.c_over_R, R), si(r.F_over_Eh, Eh), r.stable, r
+        )
 
-    def contact(self, *, contact_half_width: ArrayLike | None = None,
-                load: ArrayLike | None = None, method: str = "closed-form",
-                branch: str = "stable") -> CylinderContact:
+    def contact(
+        self,
+        *,
+        contact_half_width: ArrayLike | None = None,
+        load: ArrayLike | None = None,
+        method: str = "closed-form",
+        branch: str = "stable",
+    ) -> CylinderContact:
         """The contact at given half-widths ``a`` [m] or loads ``F`` [N/m] (exactly one).
 
         For a load, ``branch`` selects the stable (default) or the unstable contact state;
@@ -222,15 +256,19 @@ class Cylinder:
         if branch not in ("stable", "unstable"):
             raise ValueError(f"branch must be 'stable' or 'unstable', got {branch!r}")
         if load is not None and method != "closed-form":
-            raise ValueError("the contact for a given load is found by the closed form: "
-                             "method='collocation' applies to contact_half_width only")
+            raise ValueError(
+                "the contact for a given load is found by the closed form: "
+                "method='collocation' applies to contact_half_width only"
+            )
         if contact_half_width is not None and branch != "stable":
-            raise ValueError("branch applies to a given load only: a contact half-width "
-                             "fixes the state")
+            raise ValueError(
+                "branch applies to a given load only: a contact half-width fixes the state"
+            )
         if contact_half_width is not None:
             a = positive("contact_half_width", contact_half_width)
-            r = _normal.normal_contact(a / self.radius, self.R_over_h, self.sigma0_over_E,
-                                       method=method)
+            r = _normal.normal_contact(
+                a / self.radius, self.R_over_h, self.sigma0_over_E, method=method
+            )
         else:
             F = check_array("load", load, low=-np.inf, low_inclusive=True)
             Eh = self.modulus * self.adhesion_range
@@ -241,17 +279,22 @@ class Cylinder:
                     raise NoEquilibriumError(
                         f"no contact carries load={float(F[F < F_min].flat[0])!r} N/m: it is "
                         f"below the pull-off force, the minimum load on the contact branch "
-                        f"{F_min!r} N/m; the cylinder has pulled off")
-            r = _normal.contact_for_load(F / Eh, self.R_over_h, self.sigma0_over_E,
-                                         branch=branch)
+                        f"{F_min!r} N/m; the cylinder has pulled off"
+                    )
+            r = _normal.contact_for_load(F / Eh, self.R_over_h, self.sigma0_over_E, branch=branch)
         return self._wrap(r)
 
     def pull_off(self) -> CylinderPullOff:
         """Pull-off force under load control [N/m]."""
         p = _normal.pull_off(self.R_over_h, self.sigma0_over_E)
         Eh = self.modulus * self.adhesion_range
-        return CylinderPullOff(p.F_pulloff_over_Eh * Eh, p.a_over_R_at_pulloff * self.radius,
-                               p.mechanism, p.F_zero_width_over_Eh * Eh, p)
+        return CylinderPullOff(
+            p.F_pulloff_over_Eh * Eh,
+            p.a_over_R_at_pulloff * self.radius,
+            p.mechanism,
+            p.F_zero_width_over_Eh * Eh,
+            p,
+        )
 
 
 # --------------------------------------------------------------------------------------------
@@ -302,42 +345,60 @@ class CylinderTangential:
     normal: object = field(repr=False)
 
 
-def _cylinder_tangential(problem, cylinder, normal_load, friction_stress, friction_coefficient,
-                         d_over_a, tangential_load, method, on_sliding) -> CylinderTangential:
+def _cylinder_tangential(
+    problem,
+    cylinder,
+    normal_load,
+    friction_stress,
+    friction_coefficient,
+    d_over_a,
+    tangential_load,
+    method,
+    on_sliding,
+) -> CylinderTangential:
     if not isinstance(cylinder, Cylinder):
-        raise ValueError(f"cylinder must be a linecontact.Cylinder (Cylinder.from_modulus or "
-                         f"Cylinder.from_materials), got {cylinder!r}")
+        raise ValueError(
+            f"cylinder must be a linecontact.Cylinder (Cylinder.from_modulus or "
+            f"Cylinder.from_materials), got {cylinder!r}"
+        )
     if (friction_stress is None) == (friction_coefficient is None):
-        raise ValueError("give exactly one of friction_stress (constant tau0 [Pa]) or "
-                         "friction_coefficient (Coulomb mu)")
+        raise ValueError(
+            "give exactly one of friction_stress (constant tau0 [Pa]) or "
+            "friction_coefficient (Coulomb mu)"
+        )
     if (d_over_a is None) == (tangential_load is None):
         raise ValueError("give exactly one of d_over_a or tangential_load [N/m]")
     E = cylinder.modulus
     rolling = problem == "steady rolling"
     coulomb = friction_coefficient is not None
-    pb = (_CARTER if coulomb else _ROLLING) if rolling else \
-        (_CATTANEO_MINDLIN if coulomb else _INITIATION)
+    pb = (
+        (_CARTER if coulomb else _ROLLING)
+        if rolling
+        else (_CATTANEO_MINDLIN if coulomb else _INITIATION)
+    )
     # every input checked, and the shapes against each other, before any solve
     if coulomb:
         F = check_array("normal_load", normal_load)
-        fr_name, fr = "friction_coefficient", positive("friction_coefficient",
-                                                       friction_coefficient)
+        fr_name, fr = "friction_coefficient", positive("friction_coefficient", friction_coefficient)
     else:
         F = check_array("normal_load", normal_load, low=-np.inf)
         fr_name, fr = "friction_stress", positive("friction_stress", friction_stress)
     if d_over_a is not None:
         st_name = "d_over_a"
-        st = check_array("d_over_a", d_over_a, low=pb.d_low, low_inclusive=pb.d_low_inclusive,
-                         high=1.0)
+        st = check_array(
+            "d_over_a", d_over_a, low=pb.d_low, low_inclusive=pb.d_low_inclusive, high=1.0
+        )
     else:
         st_name, st = "tangential_load", non_negative("tangential_load", tangential_load)
     broadcast(normal_load=F, **{fr_name: fr, st_name: st})
     d = st if d_over_a is not None else None
     if coulomb:
         if cylinder.cohesive_stress != 0:
-            raise ValueError("Coulomb friction is the macro-scale counterpart for the "
-                             "non-adhesive Hertz contact: use a Cylinder without adhesion "
-                             "(cohesive_stress = 0), or give friction_stress")
+            raise ValueError(
+                "Coulomb friction is the macro-scale counterpart for the "
+                "non-adhesive Hertz contact: use a Cylinder without adhesion "
+                "(cohesive_stress = 0), or give friction_stress"
+            )
         contact = cylinder.contact(load=F)
         A = np.asarray(contact.contact_half_width) / cylinder.radius
         mu = fr
@@ -359,9 +420,19 @@ def _cylinder_tangential(problem, cylinder, normal_load, friction_stress, fricti
     a = np.asarray(contact.contact_half_width)
     Tn = np.multiply(r.T_over_Ea, E * a)
     creep = r.creep_over_V if rolling else None
-    return CylinderTangential(problem, friction, _scalar(F + 0 * a), _scalar(a),
-                              _scalar(np.multiply(r.d_over_a, a)), _scalar(Tn), _scalar(full),
-                              creep, r.state, r, contact)
+    return CylinderTangential(
+        problem,
+        friction,
+        _scalar(F + 0 * a),
+        _scalar(a),
+        _scalar(np.multiply(r.d_over_a, a)),
+        _scalar(Tn),
+        _scalar(full),
+        creep,
+        r.state,
+        r,
+        contact,
+    )
 
 
 def _scalar(v):
@@ -369,13 +440,17 @@ def _scalar(v):
     return v.item() if v.ndim == 0 else v
 
 
-def cylinder_sliding_initiation(cylinder, normal_load: ArrayLike, *,
-                                friction_stress: ArrayLike | None = None,
-                                friction_coefficient: ArrayLike | None = None,
-                                d_over_a: ArrayLike | None = None,
-                                tangential_load: ArrayLike | None = None,
-                                method: str = "closed-form",
-                                on_sliding: str = "report") -> CylinderTangential:
+def cylinder_sliding_initiation(
+    cylinder,
+    normal_load: ArrayLike,
+    *,
+    friction_stress: ArrayLike | None = None,
+    friction_coefficient: ArrayLike | None = None,
+    d_over_a: ArrayLike | None = None,
+    tangential_load: ArrayLike | None = None,
+    method: str = "closed-form",
+    on_sliding: str = "report",
+) -> CylinderTangential:
     """Initiation of sliding of a :class:`~linecontact.cylinder.Cylinder` (SI units).
 
     Parameters
@@ -411,18 +486,30 @@ def cylinder_sliding_initiation(cylinder, normal_load: ArrayLike, *,
     >>> s.state, s.stick_zone_end < s.contact_half_width
     ('stick-slip', True)
     """
-    return _cylinder_tangential("sliding initiation", cylinder, normal_load, friction_stress,
-                                friction_coefficient, d_over_a, tangential_load, method,
-                                on_sliding)
+    return _cylinder_tangential(
+        "sliding initiation",
+        cylinder,
+        normal_load,
+        friction_stress,
+        friction_coefficient,
+        d_over_a,
+        tangential_load,
+        method,
+        on_sliding,
+    )
 
 
-def cylinder_steady_rolling(cylinder, normal_load: ArrayLike, *,
-                            friction_stress: ArrayLike | None = None,
-                            friction_coefficient: ArrayLike | None = None,
-                            d_over_a: ArrayLike | None = None,
-                            tangential_load: ArrayLike | None = None,
-                            method: str = "closed-form",
-                            on_sliding: str = "report") -> CylinderTangential:
+def cylinder_steady_rolling(
+    cylinder,
+    normal_load: ArrayLike,
+    *,
+    friction_stress: ArrayLike | None = None,
+    friction_coefficient: ArrayLike | None = None,
+    d_over_a: ArrayLike | None = None,
+    tangential_load: ArrayLike | None = None,
+    method: str = "closed-form",
+    on_sliding: str = "report",
+) -> CylinderTangential:
     """Steady rolling of a driving :class:`~linecontact.cylinder.Cylinder` (SI units).
 
     Parameters as in :func:`cylinder_sliding_initiation`, with ``d_over_a`` in ``(-1, 1)``
@@ -437,6 +524,14 @@ def cylinder_steady_rolling(cylinder, normal_load: ArrayLike, *,
     >>> r.creep_ratio < 0
     True
     """
-    return _cylinder_tangential("steady rolling", cylinder, normal_load, friction_stress,
-                                friction_coefficient, d_over_a, tangential_load, method,
-                                on_sliding)
+    return _cylinder_tangential(
+        "steady rolling",
+        cylinder,
+        normal_load,
+        friction_stress,
+        friction_coefficient,
+        d_over_a,
+        tangential_load,
+        method,
+        on_sliding,
+    )

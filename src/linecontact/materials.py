@@ -68,7 +68,7 @@ def composite_modulus(E1: ArrayLike, nu1: ArrayLike, E2: ArrayLike, nu2: ArrayLi
     36.041602
     """
     E1, nu1, E2, nu2 = _moduli(E1, nu1, E2, nu2)
-    val = 1.0 / ((1 - nu1 ** 2) / E1 + (1 - nu2 ** 2) / E2)
+    val = 1.0 / ((1 - nu1**2) / E1 + (1 - nu2**2) / E2)
     return val.item() if val.ndim == 0 else val
 
 
@@ -112,9 +112,11 @@ def adhesion_from_work(work_of_adhesion: ArrayLike, equilibrium_spacing: ArrayLi
     bad = ~(np.isfinite(s0) & (s0 > 0))
     if np.any(bad):
         i = int(np.flatnonzero(bad.reshape(-1))[0])
-        raise ValueError(f"work_of_adhesion={float(w.reshape(-1)[i])!r} and equilibrium_spacing="
-                         f"{float(z0.reshape(-1)[i])!r} give sigma0 = 16 w/(9 sqrt(3) z0) = "
-                         f"{float(s0.reshape(-1)[i])!r} [Pa], not a finite positive number")
+        raise ValueError(
+            f"work_of_adhesion={float(w.reshape(-1)[i])!r} and equilibrium_spacing="
+            f"{float(z0.reshape(-1)[i])!r} give sigma0 = 16 w/(9 sqrt(3) z0) = "
+            f"{float(s0.reshape(-1)[i])!r} [Pa], not a finite positive number"
+        )
     h = w / s0
     return (s0.item(), h.item()) if s0.ndim == 0 else (s0, h)
 
@@ -123,17 +125,19 @@ def _adhesion(s0, h, w, z0) -> tuple[float, float]:
     by_stress = s0 is not None or h is not None
     by_work = w is not None or z0 is not None
     if by_stress and by_work:
-        raise ValueError("give adhesion either as (cohesive_stress, adhesion_range) or as "
-                         "(work_of_adhesion, equilibrium_spacing), not both")
+        raise ValueError(
+            "give adhesion either as (cohesive_stress, adhesion_range) or as "
+            "(work_of_adhesion, equilibrium_spacing), not both"
+        )
     if by_work:
         if w is None or z0 is None:
             raise ValueError("give both work_of_adhesion and equilibrium_spacing")
-        s, hh = adhesion_from_work(scalar("work_of_adhesion", w),
-                                   scalar("equilibrium_spacing", z0))
+        s, hh = adhesion_from_work(scalar("work_of_adhesion", w), scalar("equilibrium_spacing", z0))
         return float(s), float(hh)
     if h is None:
-        raise ValueError("give adhesion_range h (> 0): it sets the length scale R/h even "
-                         "without adhesion")
+        raise ValueError(
+            "give adhesion_range h (> 0): it sets the length scale R/h even without adhesion"
+        )
     hh = scalar("adhesion_range", h)
     s = 0.0 if s0 is None else scalar("cohesive_stress", s0, low_inclusive=True)
     return s, hh

@@ -132,8 +132,9 @@ class NormalContact(Result):
         ax = np.abs(x)
         if self.method == "closed-form":
             with np.errstate(divide="ignore", invalid="ignore", over="ignore"):  # x*x, |x| >> a
-                inner = 0.5 * np.sqrt(np.clip(A * A - x * x, 0, None)) - (2 * s / np.pi) * \
-                    np.arctan(np.sqrt((C * C - A * A) / np.clip(A * A - x * x, 1e-300, None)))
+                inner = 0.5 * np.sqrt(np.clip(A * A - x * x, 0, None)) - (
+                    2 * s / np.pi
+                ) * np.arctan(np.sqrt((C * C - A * A) / np.clip(A * A - x * x, 1e-300, None)))
         else:
             inner = self._collocation_pressure(x)
         p = np.where(ax < A, inner, np.where(ax <= C, -s, 0.0))
@@ -225,8 +226,9 @@ def _I(u: NDArray) -> tuple[NDArray, NDArray]:
     mp1 = 2 * np.cosh(us / 2) ** 2
     ms = np.cosh(us)
     with np.errstate(divide="ignore", invalid="ignore"):
-        i_small = np.where(mm1 > 0, mm1 * np.log(mm1), 0.0) + mp1 * np.log(mp1) - 2 * ms * \
-            np.log(2 * ms)
+        i_small = (
+            np.where(mm1 > 0, mm1 * np.log(mm1), 0.0) + mp1 * np.log(mp1) - 2 * ms * np.log(2 * ms)
+        )
     # large u: I = 2m ln(tanh(u)/2) + 2 ln coth(u/2)
     ul = np.where(small, 1.0, u)
     q = np.exp(-2 * ul)
@@ -237,8 +239,11 @@ def _I(u: NDArray) -> tuple[NDArray, NDArray]:
     # dI/du = I'(m) sinh u = 2 sinh u ln(tanh(u)/2)
     qq = np.exp(-2 * u)
     with np.errstate(divide="ignore", invalid="ignore"):
-        dval = 2 * np.sinh(np.minimum(u, 700)) * (np.log(-np.expm1(-2 * u)) - np.log1p(qq) -
-                                                  np.log(2.0))
+        dval = (
+            2
+            * np.sinh(np.minimum(u, 700))
+            * (np.log(-np.expm1(-2 * u)) - np.log1p(qq) - np.log(2.0))
+        )
     dval = np.where(u > 0, dval, 0.0)
     return val, dval
 
@@ -318,24 +323,33 @@ def _collocation(A, rho, s, n, tol):
         while pending.any():
             for nn in np.unique(nsel[pending]):
                 idx = np.nonzero(pending & (nsel == nn))[0]
-                ui, ci, (Ri, ri, co, ti) = _newton_u(BoundedSolver(int(nn)), A[idx], s[idx],
-                                                     rho[idx], u[idx])
-                u[idx], conv[idx], Rv[idx], res_[idx], cons[idx], tail[idx] = \
-                    ui, ci, Ri, ri, co, ti
+                ui, ci, (Ri, ri, co, ti) = _newton_u(
+                    BoundedSolver(int(nn)), A[idx], s[idx], rho[idx], u[idx]
+                )
+                u[idx], conv[idx], Rv[idx], res_[idx], cons[idx], tail[idx] = ui, ci, Ri, ri, co, ti
             pending = pending & (tail > tol) & (nsel < sizes[-1])
-            nsel = np.where(pending, sizes[np.minimum(np.searchsorted(sizes, nsel) + 1,
-                                                      sizes.size - 1)], nsel)
+            nsel = np.where(
+                pending, sizes[np.minimum(np.searchsorted(sizes, nsel) + 1, sizes.size - 1)], nsel
+            )
     F = rho * A * (res_ - 2 * np.cosh(u) * s)
     C = A * np.cosh(u)
     converged = conv & (tail <= 10 * tol) & np.isfinite(F)
-    out = dict(u=u, C=C, F=F, res=np.abs(Rv), cons=np.abs(cons), tail=tail, n=nsel,
-               converged=converged)
+    out = dict(
+        u=u, C=C, F=F, res=np.abs(Rv), cons=np.abs(cons), tail=tail, n=nsel, converged=converged
+    )
     return {k: v.reshape(shape) for k, v in out.items()}
 
 
-def normal_contact(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *,
-                   method: str = "closed-form", n: int | str = "auto", tol: float = 1e-12,
-                   raise_on_failure: bool = True) -> NormalContact:
+def normal_contact(
+    a_over_R: ArrayLike,
+    R_over_h: ArrayLike,
+    sigma0_over_E: ArrayLike,
+    *,
+    method: str = "closed-form",
+    n: int | str = "auto",
+    tol: float = 1e-12,
+    raise_on_failure: bool = True,
+) -> NormalContact:
     r"""Adhesive-zone width and load for given contact half-widths (Eqs. 9, 11, 12).
 
     Parameters
@@ -414,10 +428,21 @@ def normal_contact(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: Arra
             f"{float(A.reshape(-1)[i])!r}, R_over_h={float(rho.reshape(-1)[i])!r}, "
             f"sigma0_over_E={float(s.reshape(-1)[i])!r} (separation residual "
             f"{float(np.reshape(res, -1)[i]):.3g}, error estimate "
-            f"{float(np.reshape(err, -1)[i]):.3g}): {hint}")
-    vals = dict(a_over_R=A, c_over_R=C, F_over_Eh=F, R_over_h=rho, sigma0_over_E=s,
-                n_collocation=ncol, residual_separation=res, residual_consistency=cons,
-                error_estimate=err, converged=converged, stable=stable)
+            f"{float(np.reshape(err, -1)[i]):.3g}): {hint}"
+        )
+    vals = dict(
+        a_over_R=A,
+        c_over_R=C,
+        F_over_Eh=F,
+        R_over_h=rho,
+        sigma0_over_E=s,
+        n_collocation=ncol,
+        residual_separation=res,
+        residual_consistency=cons,
+        error_estimate=err,
+        converged=converged,
+        stable=stable,
+    )
     vals = {k: as_output(np.asarray(v), scalar) for k, v in vals.items()}
     return NormalContact(method=method, **vals)
 
@@ -479,15 +504,23 @@ def _pulloff_flat(rho: NDArray, s: NDArray):
     if fin.any():
         A_, C_, F_, _ = _closed_form_from_u(us[fin], kap[fin], rho[fin], us[fin])
         A_min[fin], C_min[fin], F_min[fin] = A_, C_, np.minimum(F_, F0[fin])
-    zero_c = np.sqrt(2 / rho) * 2 / (kap * _ref.LN2 + np.sqrt(kap * kap * _ref.LN2 ** 2 + 4))
+    zero_c = np.sqrt(2 / rho) * 2 / (kap * _ref.LN2 + np.sqrt(kap * kap * _ref.LN2**2 + 4))
     snap = (F0 - F_min) > ZERO_WIDTH_RTOL * np.abs(F0)
     F_po = np.where(snap, F_min, F0)
     A_po = np.where(snap, A_min, 0.0)
     C_po = np.where(snap, C_min, zero_c)
     mech = np.where(snap, "snap-off", "zero-width")
-    return dict(F_pulloff_over_Eh=F_po, a_over_R_at_pulloff=A_po, c_over_R_at_pulloff=C_po,
-                mechanism=mech, F_zero_width_over_Eh=F0, F_minimum_over_Eh=F_min,
-                a_over_R_at_minimum=A_min, kappa=kap, us=us)
+    return dict(
+        F_pulloff_over_Eh=F_po,
+        a_over_R_at_pulloff=A_po,
+        c_over_R_at_pulloff=C_po,
+        mechanism=mech,
+        F_zero_width_over_Eh=F0,
+        F_minimum_over_Eh=F_min,
+        a_over_R_at_minimum=A_min,
+        kappa=kap,
+        us=us,
+    )
 
 
 def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
@@ -529,8 +562,12 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     d.pop("us")
     lam = 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
     vals = {k: as_output(np.asarray(v), scalar) for k, v in d.items()}
-    return PullOff(R_over_h=as_output(rho, scalar), sigma0_over_E=as_output(s, scalar),
-                   maugis_parameter=as_output(lam, scalar), **vals)
+    return PullOff(
+        R_over_h=as_output(rho, scalar),
+        sigma0_over_E=as_output(s, scalar),
+        maugis_parameter=as_output(lam, scalar),
+        **vals,
+    )
 
 
 def _solve_u_for_phi(target, kap, lo_w, hi_w, increasing):
@@ -550,8 +587,9 @@ def _solve_u_for_phi(target, kap, lo_w, hi_w, increasing):
     return np.exp(0.5 * (lo + hi))
 
 
-def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *,
-                     branch: str = "stable") -> NormalContact:
+def contact_for_load(
+    F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, branch: str = "stable"
+) -> NormalContact:
     r"""The contact state(s) carrying a given load (closed form).
 
     Parameters
@@ -576,8 +614,9 @@ def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: A
     if branch not in ("stable", "unstable"):
         raise ValueError(f"branch must be 'stable' or 'unstable', got {branch!r}")
     scalar = scalar_or_array(F, rho, s)
-    F, rho, s = (np.asarray(v, float) for v in broadcast(F_over_Eh=F, R_over_h=rho,
-                                                          sigma0_over_E=s))
+    F, rho, s = (
+        np.asarray(v, float) for v in broadcast(F_over_Eh=F, R_over_h=rho, sigma0_over_E=s)
+    )
     _ref._check_kappa(rho, s)
     d = _pulloff_arrays(rho, s)
     Fmin, F0, us, kap = d["F_minimum_over_Eh"], d["F_zero_width_over_Eh"], d["us"], d["kappa"]
@@ -589,7 +628,8 @@ def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: A
                 f"no contact carries F_over_Eh={float(F.reshape(-1)[i])!r}: it is below the "
                 f"pull-off force, the minimum load on the contact branch F_minimum_over_Eh="
                 f"{float(Fmin.reshape(-1)[i])!r} (R_over_h={float(rho.reshape(-1)[i])!r}, "
-                f"sigma0_over_E={float(s.reshape(-1)[i])!r}); the cylinder has pulled off")
+                f"sigma0_over_E={float(s.reshape(-1)[i])!r}); the cylinder has pulled off"
+            )
         hi = np.log(np.where(np.isfinite(us), us, 745.0))
         lo = np.full(F.shape, np.log(1e-12))
         u = _solve_u_for_phi(F * (2 / np.pi), kap, lo, hi, increasing=False)
@@ -600,7 +640,8 @@ def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: A
             raise NoEquilibriumError(
                 f"no unstable contact carries F_over_Eh={float(F.reshape(-1)[i])!r}: that "
                 f"branch exists only for F_minimum_over_Eh={float(Fmin.reshape(-1)[i])!r} < "
-                f"F_over_Eh < F_zero_width_over_Eh={float(F0.reshape(-1)[i])!r}")
+                f"F_over_Eh < F_zero_width_over_Eh={float(F0.reshape(-1)[i])!r}"
+            )
         lo = np.log(us)
         hi = np.full(F.shape, np.log(745.0))
         u = _solve_u_for_phi(F * (2 / np.pi), kap, lo, hi, increasing=True)
@@ -614,11 +655,22 @@ def contact_for_load(F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: A
             f"contact_for_load did not converge at F_over_Eh={float(F.reshape(-1)[i])!r}, "
             f"R_over_h={float(rho.reshape(-1)[i])!r}, sigma0_over_E="
             f"{float(s.reshape(-1)[i])!r}: the closest contact carries F_over_Eh="
-            f"{float(Fc.reshape(-1)[i])!r} (the load is outside the range of the solver)")
+            f"{float(Fc.reshape(-1)[i])!r} (the load is outside the range of the solver)"
+        )
     z = np.zeros(F.shape)
-    vals = dict(a_over_R=A, c_over_R=C, F_over_Eh=Fc, R_over_h=rho, sigma0_over_E=s,
-                n_collocation=z.astype(int), residual_separation=z, residual_consistency=z,
-                error_estimate=res, converged=converged, stable=stable)
+    vals = dict(
+        a_over_R=A,
+        c_over_R=C,
+        F_over_Eh=Fc,
+        R_over_h=rho,
+        sigma0_over_E=s,
+        n_collocation=z.astype(int),
+        residual_separation=z,
+        residual_consistency=z,
+        error_estimate=res,
+        converged=converged,
+        stable=stable,
+    )
     vals = {k: as_output(np.asarray(v), scalar) for k, v in vals.items()}
     return NormalContact(method="closed-form", **vals)
 
@@ -647,27 +699,41 @@ class NonContact(Result):
     stable: NDArray | bool
 
 
-def non_contact(central_gap_over_h: ArrayLike, R_over_h: ArrayLike,
-                sigma0_over_E: ArrayLike) -> NonContact:
+def non_contact(
+    central_gap_over_h: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike
+) -> NonContact:
     r"""The non-contact branch: attractive force versus the central gap ``g0`` in ``[0, h]``.
 
     With a uniform tensile stress on :math:`|x| < c` the gap rises from ``g0`` at the centre
     to ``h`` at ``c``: :math:`h - g_0 = c^2/(2R) + 4\ln 2\,\sigma_0 c/(\pi E)`, and
     :math:`F = -2\sigma_0 c`. At ``g0 = 0`` this is Eq. (14).
     """
-    g = check_array("central_gap_over_h", central_gap_over_h, low=0.0, low_inclusive=True,
-                    high=1.0, high_inclusive=True)
+    g = check_array(
+        "central_gap_over_h",
+        central_gap_over_h,
+        low=0.0,
+        low_inclusive=True,
+        high=1.0,
+        high_inclusive=True,
+    )
     rho = positive("R_over_h", R_over_h)
     s = non_negative("sigma0_over_E", sigma0_over_E)
     scalar = scalar_or_array(g, rho, s)
-    g, rho, s = (np.asarray(v, float) for v in broadcast(central_gap_over_h=g, R_over_h=rho,
-                                                          sigma0_over_E=s))
+    g, rho, s = (
+        np.asarray(v, float) for v in broadcast(central_gap_over_h=g, R_over_h=rho, sigma0_over_E=s)
+    )
     k = 4 * _ref.LN2 * s / np.pi
     rhs = 2 * (1 - g) / rho
     C = rhs / (k + np.hypot(k, np.sqrt(rhs)))  # no overflow of k^2
     F = -2 * s * rho * C
-    vals = dict(central_gap_over_h=g, c_over_R=C, F_over_Eh=F, R_over_h=rho, sigma0_over_E=s,
-                stable=np.zeros(g.shape, bool))
+    vals = dict(
+        central_gap_over_h=g,
+        c_over_R=C,
+        F_over_Eh=F,
+        R_over_h=rho,
+        sigma0_over_E=s,
+        stable=np.zeros(g.shape, bool),
+    )
     return NonContact(**{k_: as_output(v, scalar) for k_, v in vals.items()})
 
 
@@ -746,8 +812,14 @@ class LoadCurve(Result):
     pulloff: PullOff = field(repr=False)
 
 
-def load_curve(R_over_h: float, sigma0_over_E: float, *, a_max_over_R: float | None = None,
-               num: int = 200, num_noncontact: int = 40) -> LoadCurve:
+def load_curve(
+    R_over_h: float,
+    sigma0_over_E: float,
+    *,
+    a_max_over_R: float | None = None,
+    num: int = 200,
+    num_noncontact: int = 40,
+) -> LoadCurve:
     """Sample the load curve (scalar parameters), pull-off and turning point included.
 
     Parameters
@@ -770,8 +842,14 @@ def load_curve(R_over_h: float, sigma0_over_E: float, *, a_max_over_R: float | N
         a_h = np.sqrt(4 * 10 * abs(po.F_pulloff_over_Eh) / (np.pi * rho))
         a_max_over_R = max(3 * po.a_over_R_at_minimum, a_h, 0.02)
     amax = scalar("a_max_over_R", a_max_over_R)
-    A = np.unique(np.concatenate([np.geomspace(amax * 1e-4, amax, num // 2),
-                                  np.linspace(amax / num, amax, num - num // 2)]))
+    A = np.unique(
+        np.concatenate(
+            [
+                np.geomspace(amax * 1e-4, amax, num // 2),
+                np.linspace(amax / num, amax, num - num // 2),
+            ]
+        )
+    )
     if 0 < po.a_over_R_at_minimum < amax:
         A = np.unique(np.append(A, po.a_over_R_at_minimum))
     nc = normal_contact(A, rho, s)

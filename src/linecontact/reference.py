@@ -86,17 +86,21 @@ def _check_kappa(rho: NDArray, s: NDArray, rho_name: str = "R_over_h") -> None:
         raise ValueError(
             f"kappa = (4/pi) sigma0_over_E sqrt(2 {rho_name}) must be <= {KAPPA_MAX:g} (the "
             f"range of the solvers), got kappa={pick[0]:.3g} at {rho_name}={pick[1]!r}, "
-            f"sigma0_over_E={pick[2]!r}")
+            f"sigma0_over_E={pick[2]!r}"
+        )
 
 
 def _representable(what: str, value: NDArray, **params: NDArray) -> NDArray:
     """``value`` if it is finite everywhere; otherwise say which inputs overflow it."""
     if not np.all(np.isfinite(value)):
         i = int(np.flatnonzero(~np.isfinite(np.reshape(value, -1)))[0])
-        at = ", ".join(f"{k}={float(np.reshape(v, -1)[i if np.size(v) > 1 else 0])!r}"
-                       for k, v in params.items())
+        at = ", ".join(
+            f"{k}={float(np.reshape(v, -1)[i if np.size(v) > 1 else 0])!r}"
+            for k, v in params.items()
+        )
         raise ValueError(f"{what} is beyond the floating-point range at {at}")
     return value
+
 
 # --------------------------------------------------------------------------------------------
 # groups
@@ -211,7 +215,7 @@ def _scaled(u: NDArray) -> dict[str, NDArray]:
     # L = ln cosh u
     L = np.where(small, np.log1p(2 * np.sinh(us / 2) ** 2), u + np.log1p(q) - LN2)
     # f1 = sinh u cosh u - u = sum_{k>=1} 4^k u^(2k+1)/(2k+1)!  (series below u = 1)
-    term = us ** 3 * (4.0 / 6.0)
+    term = us**3 * (4.0 / 6.0)
     f1s = term.copy()
     for k in range(2, 30):
         term = term * 4 * us * us / ((2 * k) * (2 * k + 1))
@@ -239,7 +243,8 @@ def _branch_point(u: NDArray, kap: NDArray) -> dict[str, NDArray]:
     phi = 4 * X * X * e * e - kap * X * p["St"]
     # d ln abar / du = -(X St^2 + kappa (u Ct - St L)/2) / (X F1 + kappa F2/2)
     dln = -(X * p["St"] ** 2 + kap * (u * p["Ct"] - p["St"] * p["L"]) / 2) / (
-        X * p["F1"] + kap * p["F2"] / 2)
+        X * p["F1"] + kap * p["F2"] / 2
+    )
     # dPhi/du = 2 abar^2 dln - kappa X (dln St + Ct); the load falls as u grows (a shrinks)
     # on the stable part of the branch, where dPhi/du < 0
     dphi = 2 * abar * abar * dln - kap * X * (dln * p["St"] + p["Ct"])
@@ -253,8 +258,9 @@ def _kappa_stationary(u: NDArray) -> NDArray:
     return 2 * p["St"] / np.sqrt(L * L * p["F1"] + 2 * L * p["St"] * p["F2"])
 
 
-def _u_of_abar(abar: NDArray, kap: NDArray, *, maxiter: int = 60) -> tuple[NDArray, NDArray,
-                                                                             NDArray]:
+def _u_of_abar(
+    abar: NDArray, kap: NDArray, *, maxiter: int = 60
+) -> tuple[NDArray, NDArray, NDArray]:
     """Solve abar(u; kappa) = abar for u by bracketed Newton in w = ln u.
 
     Returns (u, separation residual (gap at c minus h, over h), iterations used).
@@ -268,8 +274,9 @@ def _u_of_abar(abar: NDArray, kap: NDArray, *, maxiter: int = 60) -> tuple[NDArr
     u_large = np.log(np.maximum(2 * X_inf / abar, 1.0 + 1e-12))
     # small u: (2/3) abar^2 u^3 + kappa abar u^2 / 2 = 1  -> take the larger of the two roots
     with np.errstate(over="ignore", divide="ignore"):  # abar**2 under/overflows at the ends
-        u_small = np.minimum((1.5 / abar ** 2) ** (1 / 3),
-                             np.sqrt(2.0 / np.maximum(kap * abar, 1e-300)))
+        u_small = np.minimum(
+            (1.5 / abar**2) ** (1 / 3), np.sqrt(2.0 / np.maximum(kap * abar, 1e-300))
+        )
     u0 = np.clip(np.where(u_large > 1.0, u_large, u_small), 1e-9, 700.0)
     w = np.log(u0)
     it = np.zeros(abar.shape, dtype=int)

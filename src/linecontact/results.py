@@ -58,8 +58,10 @@ class Result:
         """
         shape = self.shape
         size = int(np.prod(shape))
-        return {k: np.broadcast_to(np.asarray(getattr(self, k)), shape).reshape(size)
-                for k in self._names()}
+        return {
+            k: np.broadcast_to(np.asarray(getattr(self, k)), shape).reshape(size)
+            for k in self._names()
+        }
 
     def to_dict(self) -> dict[str, Any]:
         """All exported quantities, arrays as (nested) lists: JSON-ready."""

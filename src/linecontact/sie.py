@@ -69,8 +69,27 @@ __all__ = [
 ]
 
 #: The ladder of collocation sizes that adaptive solvers climb (each step about 1.5x).
-SIZES = (16, 24, 32, 48, 64, 96, 128, 192, 256, 384, 512, 768, 1024, 1536, 2048, 3072,
-         4096, 6144, 8192)
+SIZES = (
+    16,
+    24,
+    32,
+    48,
+    64,
+    96,
+    128,
+    192,
+    256,
+    384,
+    512,
+    768,
+    1024,
+    1536,
+    2048,
+    3072,
+    4096,
+    6144,
+    8192,
+)
 
 
 _DCT_FROM = 48  # from this size on the bounded solve uses the fast cosine transform
@@ -86,8 +105,9 @@ def _check_interval(interval: tuple[float, float]) -> tuple[float, float]:
     try:
         lo, hi = (float(v) for v in interval)
     except (TypeError, ValueError):  # not a pair of real numbers
-        raise ValueError(f"interval must be a pair (lo, hi) of real numbers, got "
-                         f"{interval!r}") from None
+        raise ValueError(
+            f"interval must be a pair (lo, hi) of real numbers, got {interval!r}"
+        ) from None
     if not (np.isfinite(lo) and np.isfinite(hi) and hi > lo):
         raise ValueError(f"interval must be finite with lo < hi, got {interval!r}")
     return lo, hi
@@ -252,8 +272,9 @@ class BoundedSolver:
         r"""Weights for :math:`\int_\alpha^\beta \phi\,h\,dt \approx \sum_i W_i g_i h(t_i)`."""
         return self._half * self.weights_unit
 
-    def solve(self, f: ArrayLike, extra: ArrayLike | None = None, *,
-              values: bool = True) -> BoundedSolution:
+    def solve(
+        self, f: ArrayLike, extra: ArrayLike | None = None, *, values: bool = True
+    ) -> BoundedSolution:
         r"""Solve for the bounded solution.
 
         Parameters
@@ -278,8 +299,10 @@ class BoundedSolver:
             f1 = _check_rhs("extra", extra, self.n + 1, "n + 1")
             s1 = f1.mean(axis=-1)
             if np.any(s1 == 0):
-                raise ValueError("extra must have a non-zero mean over the collocation points: "
-                                 "the consistency condition fixes its multiplier through it")
+                raise ValueError(
+                    "extra must have a non-zero mean over the collocation points: "
+                    "the consistency condition fixes its multiplier through it"
+                )
             with np.errstate(divide="ignore", invalid="ignore"):
                 lam = -f.mean(axis=-1) / s1
             f = f + lam[..., None] * f1
@@ -456,8 +479,9 @@ class EndBoundedSolver:
     condition (the index of the problem is zero). ``"left"`` is its mirror image.
     """
 
-    def __init__(self, n: int, interval: tuple[float, float] = (-1.0, 1.0),
-                 bounded_at: str = "right") -> None:
+    def __init__(
+        self, n: int, interval: tuple[float, float] = (-1.0, 1.0), bounded_at: str = "right"
+    ) -> None:
         self.n = _check_n(n)
         self.interval = _check_interval(interval)
         if bounded_at not in ("right", "left"):
@@ -473,7 +497,7 @@ class EndBoundedSolver:
         self.nodes_unit = self._sign * t
         self.collocation_unit = self._sign * x
         self.weights_unit = w
-        mat = (w[None, :] / (np.pi * (self.nodes_unit[None, :] - self.collocation_unit[:, None])))
+        mat = w[None, :] / (np.pi * (self.nodes_unit[None, :] - self.collocation_unit[:, None]))
         self._lu = scipy.linalg.lu_factor(mat)
 
     @property
@@ -534,7 +558,8 @@ class UnboundedSolver:
         self.collocation_unit = np.cos(np.arange(1, self.n) * np.pi / self.n)
         mat = np.empty((self.n, self.n))
         mat[:-1] = self.weights_unit[None, :] / (
-            np.pi * (self.nodes_unit[None, :] - self.collocation_unit[:, None]))
+            np.pi * (self.nodes_unit[None, :] - self.collocation_unit[:, None])
+        )
         mat[-1] = self.weights_unit * self._half
         self._lu = scipy.linalg.lu_factor(mat)
 
@@ -567,8 +592,10 @@ class UnboundedSolver:
         try:
             c = np.broadcast_to(np.asarray(resultant, dtype=float), f.shape[:-1])
         except ValueError:
-            raise ValueError(f"resultant must broadcast to the batch shape of f, "
-                             f"{f.shape[:-1]}, got shape {np.shape(resultant)}") from None
+            raise ValueError(
+                f"resultant must broadcast to the batch shape of f, "
+                f"{f.shape[:-1]}, got shape {np.shape(resultant)}"
+            ) from None
         rhs = np.concatenate([f, c[..., None]], axis=-1)
         flat = rhs.reshape(-1, self.n).T
         g = scipy.linalg.lu_solve(self._lu, flat).T

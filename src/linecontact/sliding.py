@@ -258,8 +258,11 @@ class SlidingContact(Result):
         q2 = np.exp(-np.arccosh(np.maximum(C2 / A, 1.0)))
         t = np.clip(x / A, -1.0, 1.0)
         sn = np.sqrt(np.clip(1 - t * t, 0.0, None))
-        inner = 0.5 * A * sn + (2 * s / np.pi) * (np.arctan2(q2 * sn, 1 - q2 * t) +
-                                                  np.arctan2(q1 * sn, 1 + q1 * t)) - s
+        inner = (
+            0.5 * A * sn
+            + (2 * s / np.pi) * (np.arctan2(q2 * sn, 1 - q2 * t) + np.arctan2(q1 * sn, 1 + q1 * t))
+            - s
+        )
         return np.where(np.abs(x) < A, inner, np.where((x >= -C1) & (x <= C2), -s, 0.0))
 
     def gap(self, x_over_R: ArrayLike) -> NDArray:
@@ -288,8 +291,9 @@ class SlidingContact(Result):
         solver = BoundedSolver(n)
         sol = BoundedSolution(b[:, None, :], None, np.zeros((A.size, 1)))
         with np.errstate(divide="ignore", invalid="ignore"):
-            lm = solver.log_moment(sol, np.where(np.abs(t) <= 1, x0, t)) - \
-                solver.log_moment(sol, x0)
+            lm = solver.log_moment(sol, np.where(np.abs(t) <= 1, x0, t)) - solver.log_moment(
+                sol, x0
+            )
         # int_{-c1}^{c2} ln|(x - xi)/(x0 - xi)| dxi for the constant -sigma0 (unit: a)
         m1 = (C1 / A)[:, None]
         m2 = (C2 / A)[:, None]
@@ -301,8 +305,9 @@ class SlidingContact(Result):
         g = np.where(np.abs(t) < 1, 0.0, g)
         if not np.all(np.isfinite(g)):
             i = np.unravel_index(int(np.flatnonzero(~np.isfinite(g))[0]), g.shape)
-            raise ValueError(f"the gap is beyond the floating-point range at x_over_R="
-                             f"{float(xs[i])!r}")
+            raise ValueError(
+                f"the gap is beyond the floating-point range at x_over_R={float(xs[i])!r}"
+            )
         return g.reshape(shape + x.shape[-1:])
 
 
@@ -313,8 +318,11 @@ def _xlogx(x):
 
 def _log_strip(y, m1, m2):
     """int_{-m1}^{m2} ln|y - t| dt."""
-    return _xlogx(np.abs(m2 - y)) * np.sign(m2 - y) + _xlogx(np.abs(y + m1)) * \
-        np.sign(y + m1) - (m1 + m2)
+    return (
+        _xlogx(np.abs(m2 - y)) * np.sign(m2 - y)
+        + _xlogx(np.abs(y + m1)) * np.sign(y + m1)
+        - (m1 + m2)
+    )
 
 
 @dataclass(frozen=True)
@@ -446,8 +454,9 @@ def _newton2(evaluate, u1, u2, *, maxiter=60, tol=1e-15, floor=2e-14, umax=300.0
             lam = np.where(neg, np.minimum(lam, 0.75 * u / np.where(neg, -d, 1.0)), lam)
             big = u + d > umax
             lam = np.where(big, np.minimum(lam, (umax - u) / np.where(big, d, 1.0)), lam)
-        tiny_step = (np.abs(d1) <= 4e-16 * np.maximum(u1[ia], 1e-3)) & \
-            (np.abs(d2) <= 4e-16 * np.maximum(u2[ia], 1e-3))
+        tiny_step = (np.abs(d1) <= 4e-16 * np.maximum(u1[ia], 1e-3)) & (
+            np.abs(d2) <= 4e-16 * np.maximum(u2[ia], 1e-3)
+        )
         todo = ~tiny_step
         active[ia[tiny_step]] = False
         for ls in range(13):
@@ -470,8 +479,9 @@ def _newton2(evaluate, u1, u2, *, maxiter=60, tol=1e-15, floor=2e-14, umax=300.0
                 extra[k][ga] = v[ok]
             todo[acc] = False
             # a step at rounding level: quadratic convergence leaves nothing to gain
-            small = (np.abs(lam[acc] * d1[acc]) <= 1e-12 * np.maximum(u1[ga], 1e-3)) & \
-                (np.abs(lam[acc] * d2[acc]) <= 1e-12 * np.maximum(u2[ga], 1e-3))
+            small = (np.abs(lam[acc] * d1[acc]) <= 1e-12 * np.maximum(u1[ga], 1e-3)) & (
+                np.abs(lam[acc] * d2[acc]) <= 1e-12 * np.maximum(u2[ga], 1e-3)
+            )
             active[ga[small]] = False
             lam[it[~ok]] *= 0.5
             if ls == 12:  # no step reduces the residual: it is at its rounding floor
@@ -521,7 +531,7 @@ def _cf_coefficients(A, s, u1, u2, n):
     q1 = np.exp(-u1)[:, None]
     q2 = np.exp(-u2)[:, None]
     with np.errstate(under="ignore"):
-        b = (2 * s[:, None] / np.pi) * (q2 ** k - (-q1) ** k) / k
+        b = (2 * s[:, None] / np.pi) * (q2**k - (-q1) ** k) / k
     b[:, 0] += 0.5 * A
     return b
 
@@ -574,10 +584,14 @@ def _colloc_eval(solver: BoundedSolver, A, s, rho, r, u1, u2):
     mu1s, dmu1s = mu1 * sg, dmu1 * sg
     J2 = np.einsum("pj,pj->p", b, mu2)
     J1 = np.einsum("pj,pj->p", b, mu1s)
-    dJ2 = (np.einsum("pj,pj->p", db1, mu2),
-           np.einsum("pj,pj->p", db2, mu2) + np.einsum("pj,pj->p", b, dmu2))
-    dJ1 = (np.einsum("pj,pj->p", db1, mu1s) + np.einsum("pj,pj->p", b, dmu1s),
-           np.einsum("pj,pj->p", db2, mu1s))
+    dJ2 = (
+        np.einsum("pj,pj->p", db1, mu2),
+        np.einsum("pj,pj->p", db2, mu2) + np.einsum("pj,pj->p", b, dmu2),
+    )
+    dJ1 = (
+        np.einsum("pj,pj->p", db1, mu1s) + np.einsum("pj,pj->p", b, dmu1s),
+        np.einsum("pj,pj->p", db2, mu1s),
+    )
     sh1, sh2 = np.sinh(u1), np.sinh(u2)
     m1, m2 = np.cosh(u1), np.cosh(u2)
     mm1_1 = 2 * np.sinh(u1 / 2) ** 2
@@ -593,16 +607,15 @@ def _colloc_eval(solver: BoundedSolver, A, s, rho, r, u1, u2):
     R2 = 1 + rho * (c * J2 + c * s * K2 - 0.5 * A * A * sh2 * sh2 + A * ecc * mm1_2)
     R1 = 1 + rho1 * (c * J1 + c * s * K1 - 0.5 * A * A * sh1 * sh1 - A * ecc * mm1_1)
     J21 = rho * (c * dJ2[0] + c * s * dK2[0] + A * de1 * mm1_2)
-    J22 = rho * (c * dJ2[1] + c * s * dK2[1] - A * A * sh2 * m2 + A * de2 * mm1_2 +
-                 A * ecc * sh2)
-    J11 = rho1 * (c * dJ1[0] + c * s * dK1[0] - A * A * sh1 * m1 - A * de1 * mm1_1 -
-                  A * ecc * sh1)
+    J22 = rho * (c * dJ2[1] + c * s * dK2[1] - A * A * sh2 * m2 + A * de2 * mm1_2 + A * ecc * sh2)
+    J11 = rho1 * (c * dJ1[0] + c * s * dK1[0] - A * A * sh1 * m1 - A * de1 * mm1_1 - A * ecc * sh1)
     J12 = rho1 * (c * dJ1[1] + c * s * dK1[1] - A * de2 * mm1_1)
     res = (np.pi / 2) * b[:, 0]
     mom = (np.pi / 4) * b[:, 1] if n > 1 else np.zeros_like(res)
     tail = np.max(np.abs(b[:, -3:]), axis=-1) / np.maximum(np.max(np.abs(b), axis=-1), 1e-300)
-    extra = dict(ecc=ecc, resultant=res, moment=mom, consistency=np.abs(sol.consistency[:, 0]),
-                 tail=tail)
+    extra = dict(
+        ecc=ecc, resultant=res, moment=mom, consistency=np.abs(sol.consistency[:, 0]), tail=tail
+    )
     # residuals as (gap - h)/h, the sign of the closed-form ones
     return -R1, -R2, -J11, -J12, -J21, -J22, extra
 
@@ -641,16 +654,28 @@ def _collocation(A, rho, r, s, n, tol):
                 for k in ex:
                     ex[k][sel] = x2[k]
             pending = pending & (ex["tail"] > tol) & (nsel < sizes[-1])
-            nsel = np.where(pending, sizes[np.minimum(np.searchsorted(sizes, nsel) + 1,
-                                                      sizes.size - 1)], nsel)
+            nsel = np.where(
+                pending, sizes[np.minimum(np.searchsorted(sizes, nsel) + 1, sizes.size - 1)], nsel
+            )
     m1, m2 = np.cosh(u1), np.cosh(u2)
     F = rho * A * (ex["resultant"] - s * (m1 + m2))
     # strips: -sigma0 (int_a^c2 x + int_-c1^-a x) = sigma0 (c1^2 - c2^2)/2,
     # (m1^2 - m2^2) = sinh(u1 + u2) sinh(u1 - u2)
     M = rho * A * A * (ex["moment"] + 0.5 * s * np.sinh(u1 + u2) * np.sinh(u1 - u2))
     converged = (np.maximum(e1, e2) <= 1e-10) & (ex["tail"] <= 10 * tol) & np.isfinite(F)
-    return dict(u1=u1, u2=u2, ecc=ex["ecc"], F=F, M=M, res1=e1, res2=e2,
-                cons=ex["consistency"], tail=ex["tail"], n=nsel, converged=converged)
+    return dict(
+        u1=u1,
+        u2=u2,
+        ecc=ex["ecc"],
+        F=F,
+        M=M,
+        res1=e1,
+        res2=e2,
+        cons=ex["consistency"],
+        tail=ex["tail"],
+        n=nsel,
+        converged=converged,
+    )
 
 
 # --------------------------------------------------------------------------------------------
@@ -677,9 +702,19 @@ def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
         u1, u2, e1, e2 = _closed_form(A, rho, r, s, g1, g2)
         ecc, F, M, dphi = _cf_outputs(A, rho, r, s, u1, u2)
         z = np.zeros(A.shape)
-        d = dict(u1=u1, u2=u2, ecc=ecc, F=F, M=M, res1=e1, res2=e2, cons=z,
-                 tail=z, n=np.zeros(A.shape, int),
-                 converged=(np.maximum(e1, e2) <= 1e-12) & np.isfinite(F))
+        d = dict(
+            u1=u1,
+            u2=u2,
+            ecc=ecc,
+            F=F,
+            M=M,
+            res1=e1,
+            res2=e2,
+            cons=z,
+            tail=z,
+            n=np.zeros(A.shape, int),
+            converged=(np.maximum(e1, e2) <= 1e-12) & np.isfinite(F),
+        )
     else:
         d = _collocation(A, rho, r, s, n, tol)
         _, _, _, dphi = _cf_outputs(A, rho, r, s, d["u1"], d["u2"])
@@ -697,24 +732,48 @@ def _pack(d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure, where):
             f"sigma0_over_E={float(s[i])!r} (separation residuals "
             f"{d['res1'][i]:.3g}, {d['res2'][i]:.3g}, error estimate {d['tail'][i]:.3g}); an "
             f"adhesive zone is too thin for n <= {_SIZES[-1]} or the point is outside the "
-            f"solver's range")
+            f"solver's range"
+        )
     C1 = A * np.cosh(d["u1"])
     C2 = A * np.cosh(d["u2"])
     T = 2 * A * rho * tau
-    vals = dict(a_over_R=A, c1_over_R=C1, c2_over_R=C2, e_over_R=d["ecc"], F_over_Eh2=d["F"],
-                M_over_Eh2R=d["M"], M_axis_over_Eh2R=d["M"] - d["ecc"] * d["F"],
-                R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau, T_over_Eh2=T,
-                n_collocation=d["n"], residual_trailing=d["res1"], residual_leading=d["res2"],
-                residual_consistency=d["cons"], error_estimate=d["tail"], converged=conv,
-                stable=d["stable"])
+    vals = dict(
+        a_over_R=A,
+        c1_over_R=C1,
+        c2_over_R=C2,
+        e_over_R=d["ecc"],
+        F_over_Eh2=d["F"],
+        M_over_Eh2R=d["M"],
+        M_axis_over_Eh2R=d["M"] - d["ecc"] * d["F"],
+        R_over_h2=rho,
+        h1_over_h2=r,
+        sigma0_over_E=s,
+        tau0_over_E=tau,
+        T_over_Eh2=T,
+        n_collocation=d["n"],
+        residual_trailing=d["res1"],
+        residual_leading=d["res2"],
+        residual_consistency=d["cons"],
+        error_estimate=d["tail"],
+        converged=conv,
+        stable=d["stable"],
+    )
     vals = {k: as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
     return SlidingContact(method=method, **vals)
 
 
-def sliding_contact(a_over_R: ArrayLike, R_over_h2: ArrayLike, h1_over_h2: ArrayLike,
-                    sigma0_over_E: ArrayLike, *, tau0_over_E: ArrayLike | None = None,
-                    method: str = "collocation", n: int | str = "auto", tol: float = 1e-12,
-                    raise_on_failure: bool = True) -> SlidingContact:
+def sliding_contact(
+    a_over_R: ArrayLike,
+    R_over_h2: ArrayLike,
+    h1_over_h2: ArrayLike,
+    sigma0_over_E: ArrayLike,
+    *,
+    tau0_over_E: ArrayLike | None = None,
+    method: str = "collocation",
+    n: int | str = "auto",
+    tol: float = 1e-12,
+    raise_on_failure: bool = True,
+) -> SlidingContact:
     r"""Zones, eccentricity, load and moment of steady sliding at given ``a`` (Eqs. 20--22).
 
     Parameters
@@ -758,22 +817,24 @@ def sliding_contact(a_over_R: ArrayLike, R_over_h2: ArrayLike, h1_over_h2: Array
     """
     A = positive("a_over_R", a_over_R)
     rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
-    tau = (np.full((), np.nan) if tau0_over_E is None
-           else non_negative("tau0_over_E", tau0_over_E))
+    tau = np.full((), np.nan) if tau0_over_E is None else non_negative("tau0_over_E", tau0_over_E)
     _check_method(method, n, tol, raise_on_failure)
     scalar = scalar_or_array(A, rho, r, s, tau)
-    A, rho, r, s, tau = broadcast(a_over_R=A, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s,
-                                  tau0_over_E=tau)
+    A, rho, r, s, tau = broadcast(
+        a_over_R=A, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau
+    )
     _ref._check_kappa(rho, s, "R_over_h2")
     shape = A.shape
-    A, rho, r, s, tau = (np.ascontiguousarray(v, dtype=float).reshape(-1)
-                         for v in (A, rho, r, s, tau))
+    A, rho, r, s, tau = (
+        np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (A, rho, r, s, tau)
+    )
     # a contact half-width far outside the solvers' range overflows on the way; _pack's
     # convergence check reports it
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         d = _solve_flat(A, rho, r, s, method, n, tol)
-        return _pack(d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure,
-                     "sliding_contact")
+        return _pack(
+            d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure, "sliding_contact"
+        )
 
 
 # --------------------------------------------------------------------------------------------
@@ -874,12 +935,12 @@ def _pulloff_flat(kap, r):
     phi_min = np.where(interior, ph, phi0)
     lab_min = np.where(interior, lab_min, -np.inf)
     snap = (phi0 - phi_min) > ZERO_WIDTH_RTOL * np.abs(phi0)
-    return dict(X1=X1, X2=X2, phi0=phi0, phi_min=phi_min, lab_min=lab_min, snap=snap,
-                lab_hi=lab_hi)
+    return dict(X1=X1, X2=X2, phi0=phi0, phi_min=phi_min, lab_min=lab_min, snap=snap, lab_hi=lab_hi)
 
 
-def sliding_pull_off(R_over_h2: ArrayLike, h1_over_h2: ArrayLike,
-                     sigma0_over_E: ArrayLike) -> SlidingPullOff:
+def sliding_pull_off(
+    R_over_h2: ArrayLike, h1_over_h2: ArrayLike, sigma0_over_E: ArrayLike
+) -> SlidingPullOff:
     r"""The most tensile load a steadily sliding contact carries (closed form).
 
     The load along the branch of sliding contacts has a minimum either inside the branch
@@ -920,22 +981,35 @@ def sliding_pull_off(R_over_h2: ArrayLike, h1_over_h2: ArrayLike,
         raise ConvergenceError(
             f"sliding_pull_off did not converge at R_over_h2={float(rho[i])!r}, h1_over_h2="
             f"{float(r[i])!r}, sigma0_over_E={float(s[i])!r}: the point is outside the "
-            f"solver's range")
-    vals = dict(F_pulloff_over_Eh2=np.where(d["snap"], Fmin, F0), a_over_R_at_pulloff=a_min,
-                mechanism=np.where(d["snap"], "snap-off", "zero-width"),
-                F_zero_width_over_Eh2=F0, c1_over_R_zero_width=d["X1"] * sq,
-                c2_over_R_zero_width=d["X2"] * sq, R_over_h2=rho, h1_over_h2=r,
-                sigma0_over_E=s)
+            f"solver's range"
+        )
+    vals = dict(
+        F_pulloff_over_Eh2=np.where(d["snap"], Fmin, F0),
+        a_over_R_at_pulloff=a_min,
+        mechanism=np.where(d["snap"], "snap-off", "zero-width"),
+        F_zero_width_over_Eh2=F0,
+        c1_over_R_zero_width=d["X1"] * sq,
+        c2_over_R_zero_width=d["X2"] * sq,
+        R_over_h2=rho,
+        h1_over_h2=r,
+        sigma0_over_E=s,
+    )
     vals = {k: as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
     return SlidingPullOff(**vals)
 
 
-def sliding_contact_for_load(F_over_Eh2: ArrayLike, R_over_h2: ArrayLike,
-                             h1_over_h2: ArrayLike, sigma0_over_E: ArrayLike, *,
-                             tau0_over_E: ArrayLike | None = None,
-                             method: str = "collocation", n: int | str = "auto",
-                             tol: float = 1e-12,
-                             raise_on_failure: bool = True) -> SlidingContact:
+def sliding_contact_for_load(
+    F_over_Eh2: ArrayLike,
+    R_over_h2: ArrayLike,
+    h1_over_h2: ArrayLike,
+    sigma0_over_E: ArrayLike,
+    *,
+    tau0_over_E: ArrayLike | None = None,
+    method: str = "collocation",
+    n: int | str = "auto",
+    tol: float = 1e-12,
+    raise_on_failure: bool = True,
+) -> SlidingContact:
     r"""The steadily sliding contact carrying a given normal load (stable branch).
 
     Solves ``F(a) = F`` for the contact half-width on the branch with ``dF/da > 0`` (stable
@@ -968,16 +1042,17 @@ def sliding_contact_for_load(F_over_Eh2: ArrayLike, R_over_h2: ArrayLike,
     """
     F = finite("F_over_Eh2", F_over_Eh2)
     rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
-    tau = (np.full((), np.nan) if tau0_over_E is None
-           else non_negative("tau0_over_E", tau0_over_E))
+    tau = np.full((), np.nan) if tau0_over_E is None else non_negative("tau0_over_E", tau0_over_E)
     _check_method(method, n, tol, raise_on_failure)
     scalar = scalar_or_array(F, rho, r, s, tau)
-    F, rho, r, s, tau = broadcast(F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s,
-                                  tau0_over_E=tau)
+    F, rho, r, s, tau = broadcast(
+        F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau
+    )
     _ref._check_kappa(rho, s, "R_over_h2")
     shape = F.shape
-    F, rho, r, s, tau = (np.ascontiguousarray(v, dtype=float).reshape(-1)
-                         for v in (F, rho, r, s, tau))
+    F, rho, r, s, tau = (
+        np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (F, rho, r, s, tau)
+    )
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     phi_t = F * (2 / np.pi)
     # as in sliding_pull_off: far from h1 = h2 the search overflows on the way; the
@@ -998,14 +1073,16 @@ def sliding_contact_for_load(F_over_Eh2: ArrayLike, R_over_h2: ArrayLike,
                     f"no steadily sliding contact carries F_over_Eh2={float(F[g])!r}: it is below "
                     f"the pull-off force F_pulloff_over_Eh2={float(np.pi / 2 * phi_po[i])!r} "
                     f"(R_over_h2={float(rho[g])!r}, h1_over_h2={float(r[g])!r}, "
-                    f"sigma0_over_E={float(s[g])!r}); the cylinder has pulled off")
+                    f"sigma0_over_E={float(s[g])!r}); the cylinder has pulled off"
+                )
             lab_lo[adh] = np.where(d["snap"], d["lab_min"], _LAB_LO)
             phi_lo[adh] = np.where(d["snap"], d["phi_min"], d["phi0"])
         if np.any(~adh & (phi_t <= 0)):
             i = np.flatnonzero(~adh & (phi_t <= 0))[0]
             raise NoEquilibriumError(
                 f"no contact carries F_over_Eh2={float(F[i])!r} without adhesion "
-                f"(sigma0_over_E=0): the load must be > 0")
+                f"(sigma0_over_E=0): the load must be > 0"
+            )
         # upper end: where Phi exceeds the target (Hertz: Phi >= abar^2 - kappa abar sinh ...)
         lab_hi = np.log(np.sqrt(np.maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
         ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
@@ -1029,16 +1106,30 @@ def sliding_contact_for_load(F_over_Eh2: ArrayLike, R_over_h2: ArrayLike,
             with np.errstate(divide="ignore", invalid="ignore"):
                 nxt = lab - fx / (dph * np.exp(lab))
             nxt = np.where(np.isfinite(nxt) & (nxt > lo) & (nxt < hi), nxt, 0.5 * (lo + hi))
-            done = (np.abs(fx) <= 4e-16 * np.maximum(1.0, np.abs(phi_t))) | \
-                (np.abs(nxt - lab) <= 1e-15 * np.maximum(1.0, np.abs(lab))) | \
-                (hi - lo <= 1e-15 * np.maximum(1.0, np.abs(hi)))
+            done = (
+                (np.abs(fx) <= 4e-16 * np.maximum(1.0, np.abs(phi_t)))
+                | (np.abs(nxt - lab) <= 1e-15 * np.maximum(1.0, np.abs(lab)))
+                | (hi - lo <= 1e-15 * np.maximum(1.0, np.abs(hi)))
+            )
             active &= ~done
             if not active.any():
                 break
             lab = np.where(active, nxt, lab)
         A = np.exp(lab) * np.sqrt(2 / rho)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # see sliding_contact
-        dd = _solve_flat(A, rho, r, s, method, n, tol,
-                         u_guess=(u1, u2) if method == "closed-form" else None)
-        return _pack(dd, A, rho, r, s, tau, method, shape, scalar, raise_on_failure,
-                     "sliding_contact_for_load")
+        dd = _solve_flat(
+            A, rho, r, s, method, n, tol, u_guess=(u1, u2) if method == "closed-form" else None
+        )
+        return _pack(
+            dd,
+            A,
+            rho,
+            r,
+            s,
+            tau,
+            method,
+            shape,
+            scalar,
+            raise_on_failure,
+            "sliding_contact_for_load",
+        )

@@ -29,10 +29,12 @@ __all__ = ["build_parser", "main"]
 
 def build_parser() -> argparse.ArgumentParser:
     """The argparse parser of the ``linecontact`` command."""
-    p = _Parser(prog="linecontact",
-                description="Adhesive (Maugis-Dugdale) contact of a cylinder on a substrate.",
-                epilog="Conventions: compressive load positive (pull-off forces are negative); "
-                       "forces per unit length.")
+    p = _Parser(
+        prog="linecontact",
+        description="Adhesive (Maugis-Dugdale) contact of a cylinder on a substrate.",
+        epilog="Conventions: compressive load positive (pull-off forces are negative); "
+        "forces per unit length.",
+    )
     p.add_argument("--version", action="version", version=CITATION.rstrip("\n"))
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     _normal.register(sub)
@@ -48,9 +50,13 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = parser.parse_args(argv)
     args.argv = list(argv) if argv is not None else None
     if args.command is None:
-        print("linecontact: error: give a command: normal, pulloff, curve, slide-init, roll, "
-              "slide, paper or cite (linecontact --help lists them)", file=sys.stderr)
+        print(
+            "linecontact: error: give a command: normal, pulloff, curve, slide-init, roll, "
+            "slide, paper or cite (linecontact --help lists them)",
+            file=sys.stderr,
+        )
         return 2
+
     def one_line_warning(message, category, filename, lineno, file=None, line=None):
         print(f"linecontact {args.command}: warning: {message}", file=sys.stderr)
 
@@ -68,7 +74,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"linecontact {args.command}: error: {exc}", file=sys.stderr)
         return 1
     except Exception as exc:  # noqa: BLE001 - the CLI never shows a traceback
-        print(f"linecontact {args.command}: error: internal error "
-              f"({type(exc).__name__}: {exc}); please report it", file=sys.stderr)
+        print(
+            f"linecontact {args.command}: error: internal error "
+            f"({type(exc).__name__}: {exc}); please report it",
+            file=sys.stderr,
+        )
         return 1
-

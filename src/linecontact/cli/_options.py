@@ -14,8 +14,9 @@ from ..cylinder import Cylinder
 
 #: Values that are numbers even though they start with "-": argparse (before Python 3.13)
 #: knows only -5 and -0.5, so "--load -1e-3" failed with "expected one argument".
-_NEGATIVE_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$",
-                              re.IGNORECASE)
+_NEGATIVE_NUMBER = re.compile(
+    r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.IGNORECASE
+)
 
 
 class _Parser(argparse.ArgumentParser):
@@ -84,8 +85,11 @@ def _add_si_materials(p: argparse.ArgumentParser):
 def _add_groups(p: argparse.ArgumentParser) -> None:
     g = p.add_argument_group("nondimensional groups (the paper's)")
     g.add_argument("--R-over-h", type=float, help="cylinder radius over adhesion range, > 0")
-    g.add_argument("--sigma0-over-E", type=float,
-                   help="adhesive stress over composite modulus, >= 0 (0: Hertz)")
+    g.add_argument(
+        "--sigma0-over-E",
+        type=float,
+        help="adhesive stress over composite modulus, >= 0 (0: Hertz)",
+    )
     si = _add_si_materials(p)
     si.add_argument("--h", type=float, help="range of the adhesive stress [m]")
     si.add_argument("--work-of-adhesion", type=float, help="w [J/m^2] (with --z0)")
@@ -94,13 +98,27 @@ def _add_groups(p: argparse.ArgumentParser) -> None:
 
 def _cylinder(args, h_flag: str = "--h"):
     """A Cylinder for SI mode, or None in nondimensional mode."""
-    si_given = any(getattr(args, k) is not None for k in
-                   ("radius", "modulus", "E1", "nu1", "E2", "nu2", "sigma0", "h",
-                    "work_of_adhesion", "z0"))
+    si_given = any(
+        getattr(args, k) is not None
+        for k in (
+            "radius",
+            "modulus",
+            "E1",
+            "nu1",
+            "E2",
+            "nu2",
+            "sigma0",
+            "h",
+            "work_of_adhesion",
+            "z0",
+        )
+    )
     groups_given = args.R_over_h is not None or args.sigma0_over_E is not None
     if si_given and groups_given:
-        raise ValueError("give either the nondimensional groups (--R-over-h, --sigma0-over-E) "
-                         "or SI inputs (--radius, ...), not both")
+        raise ValueError(
+            "give either the nondimensional groups (--R-over-h, --sigma0-over-E) "
+            "or SI inputs (--radius, ...), not both"
+        )
     if not si_given:
         if args.R_over_h is None or args.sigma0_over_E is None:
             raise ValueError("give --R-over-h and --sigma0-over-E (or SI inputs with --radius)")
@@ -108,10 +126,16 @@ def _cylinder(args, h_flag: str = "--h"):
     if args.radius is None:
         raise ValueError("SI inputs need --radius [m]")
     if args.h is None and args.work_of_adhesion is None and args.z0 is None:
-        raise ValueError(f"SI inputs need the adhesion range {h_flag} [m] (it sets R/h even "
-                         f"without adhesion), or --work-of-adhesion with --z0")
-    adh = dict(cohesive_stress=args.sigma0, adhesion_range=args.h,
-               work_of_adhesion=args.work_of_adhesion, equilibrium_spacing=args.z0)
+        raise ValueError(
+            f"SI inputs need the adhesion range {h_flag} [m] (it sets R/h even "
+            f"without adhesion), or --work-of-adhesion with --z0"
+        )
+    adh = dict(
+        cohesive_stress=args.sigma0,
+        adhesion_range=args.h,
+        work_of_adhesion=args.work_of_adhesion,
+        equilibrium_spacing=args.z0,
+    )
     mats = (args.E1, args.nu1, args.E2, args.nu2)
     if args.modulus is not None:
         if any(v is not None for v in mats):
@@ -132,8 +156,13 @@ def _groups(args):
 def _add_width_options(p, load_flag: str, load_help: str) -> None:
     """The options read by :func:`_half_widths`: widths or loads, nondimensional or SI."""
     p.add_argument("--a-over-R", type=float, nargs="+", metavar="A", help="contact half-widths")
-    p.add_argument("--a-over-R-range", type=float, nargs=3, metavar=("START", "STOP", "NUM"),
-                   help="linearly spaced contact half-widths")
+    p.add_argument(
+        "--a-over-R-range",
+        type=float,
+        nargs=3,
+        metavar=("START", "STOP", "NUM"),
+        help="linearly spaced contact half-widths",
+    )
     p.add_argument(load_flag, type=float, nargs="+", metavar="F", help=load_help)
     p.add_argument("--a", type=float, nargs="+", help="contact half-widths [m] (SI mode)")
     p.add_argument("--load", type=float, nargs="+", help="normal loads [N/m] (SI mode)")
@@ -145,27 +174,31 @@ def _half_widths(args, cyl, load_attr: str):
     Exactly one of those, ``--<load_attr>`` or ``--load`` [N/m] must be given.
     """
     flag = "--" + load_attr.replace("_", "-")
-    given = [args.a_over_R is not None, args.a_over_R_range is not None,
-             getattr(args, load_attr) is not None, args.a is not None, args.load is not None]
+    given = [
+        args.a_over_R is not None,
+        args.a_over_R_range is not None,
+        getattr(args, load_attr) is not None,
+        args.a is not None,
+        args.load is not None,
+    ]
     if sum(given) != 1:
-        raise ValueError(f"give exactly one of --a-over-R, --a-over-R-range, {flag}, "
-                         "--a [m] or --load [N/m]")
+        raise ValueError(
+            f"give exactly one of --a-over-R, --a-over-R-range, {flag}, --a [m] or --load [N/m]"
+        )
     if (args.a is not None or args.load is not None) and cyl is None:
         raise ValueError("--a and --load are SI inputs: give --radius and the materials too")
     if args.a_over_R_range is not None:
         start, stop, num = args.a_over_R_range
         for name, v in (("START", start), ("STOP", stop)):
             if not (math.isfinite(v) and v > 0):
-                raise ValueError(f"--a-over-R-range {name} must be a finite number > 0, got "
-                                 f"{v!r}")
+                raise ValueError(f"--a-over-R-range {name} must be a finite number > 0, got {v!r}")
         if not (math.isfinite(num) and float(num).is_integer() and 1 <= num <= _MAX_POINTS):
-            raise ValueError(f"--a-over-R-range NUM must be an integer in [1, {_MAX_POINTS}], "
-                             f"got {num!r}")
+            raise ValueError(
+                f"--a-over-R-range NUM must be an integer in [1, {_MAX_POINTS}], got {num!r}"
+            )
         return np.linspace(start, stop, int(num))
     if args.a_over_R is not None:
         return np.asarray(args.a_over_R, float)
     if args.a is not None:
         return np.asarray(args.a, float) / cyl.radius
     return None
-
-

@@ -25,8 +25,9 @@ def _cmd_paper(args) -> int:
     try:
         paths = paper_figures(args.outdir, progress=progress)
     except OSError as exc:
-        raise ValueError(f"cannot write the figures to --outdir {args.outdir!r}: "
-                         f"{exc.strerror or exc}") from None
+        raise ValueError(
+            f"cannot write the figures to --outdir {args.outdir!r}: {exc.strerror or exc}"
+        ) from None
     print(f"wrote {len(paths)} files to {args.outdir}/:")
     for p in paths:
         print(f"  {p}")

@@ -23,8 +23,7 @@ from . import _options as _cli
 
 __all__ = ["register"]
 
-_SI_KEYS = ("radius", "modulus", "E1", "nu1", "E2", "nu2", "sigma0", "h", "work_of_adhesion",
-            "z0")
+_SI_KEYS = ("radius", "modulus", "E1", "nu1", "E2", "nu2", "sigma0", "h", "work_of_adhesion", "z0")
 _ADHESION_KEYS = ("sigma0", "h", "work_of_adhesion", "z0")
 
 _DESCRIPTION = {
@@ -32,49 +31,81 @@ _DESCRIPTION = {
         "Initiation of sliding (paper Eqs 15-17): a tangential force T on a contact of "
         "half-width a; central stick zone |x| < d, slip zones d < |x| < a with shear stress "
         "tau0 (or mu p for --friction coulomb, Cattaneo-Mindlin). T >= 2 a tau0 (mu F) "
-        "slides."),
+        "slides."
+    ),
     "roll": (
         "Steady rolling of a driving cylinder (paper Eqs 23-29, Carter-type): rolling along "
         "+x, stick zone d < x < a at the leading edge, slip zone -a < x < d; T is the "
         "tractive force, creep_over_V = (V - omega R)/V (negative: the driving cylinder "
-        "turns faster than it rolls)."),
+        "turns faster than it rolls)."
+    ),
 }
 
 
 def register(sub) -> None:
     """Add ``slide-init`` and ``roll`` to the subparsers ``sub`` of ``linecontact``."""
-    for name, helptext in (("slide-init", "initiation of sliding under a tangential force "
-                                          "(stick zone, T/(Ea))"),
-                           ("roll", "steady rolling of a driving cylinder (T/(Ea), creep)")):
-        p = sub.add_parser(name, help=helptext, description=_DESCRIPTION[name],
-                           epilog="Give exactly one of --d-over-a, --T-over-Ea, --T-over-muF "
-                                  "(Coulomb) or --tangential-load (SI).")
+    for name, helptext in (
+        ("slide-init", "initiation of sliding under a tangential force (stick zone, T/(Ea))"),
+        ("roll", "steady rolling of a driving cylinder (T/(Ea), creep)"),
+    ):
+        p = sub.add_parser(
+            name,
+            help=helptext,
+            description=_DESCRIPTION[name],
+            epilog="Give exactly one of --d-over-a, --T-over-Ea, --T-over-muF "
+            "(Coulomb) or --tangential-load (SI).",
+        )
         fr = p.add_argument_group("friction")
-        fr.add_argument("--friction", choices=("constant", "coulomb"), default="constant",
-                        help="constant friction stress tau0 (nano-scale, default) or Coulomb "
-                             "friction mu on the non-adhesive Hertz contact")
+        fr.add_argument(
+            "--friction",
+            choices=("constant", "coulomb"),
+            default="constant",
+            help="constant friction stress tau0 (nano-scale, default) or Coulomb "
+            "friction mu on the non-adhesive Hertz contact",
+        )
         fr.add_argument("--tau0-over-E", type=float, help="friction stress over E, > 0")
         fr.add_argument("--tau0", type=float, help="friction stress [Pa] (SI mode)")
         fr.add_argument("--mu", type=float, help="friction coefficient (--friction coulomb)")
         st = p.add_argument_group("tangential state (exactly one)")
         lo = "[0, 1)" if name == "slide-init" else "(-1, 1)"
-        st.add_argument("--d-over-a", type=float, nargs="+", metavar="D",
-                        help=f"stick-zone end over a, in {lo}")
-        st.add_argument("--T-over-Ea", type=float, nargs="+", metavar="T",
-                        help="tangential force per unit length over E a, >= 0")
-        st.add_argument("--T-over-muF", type=float, nargs="+", metavar="T",
-                        help="tangential force over mu F (Coulomb), >= 0")
-        st.add_argument("--tangential-load", type=float, nargs="+", metavar="T",
-                        help="tangential force per unit length [N/m] (SI mode)")
+        st.add_argument(
+            "--d-over-a", type=float, nargs="+", metavar="D", help=f"stick-zone end over a, in {lo}"
+        )
+        st.add_argument(
+            "--T-over-Ea",
+            type=float,
+            nargs="+",
+            metavar="T",
+            help="tangential force per unit length over E a, >= 0",
+        )
+        st.add_argument(
+            "--T-over-muF",
+            type=float,
+            nargs="+",
+            metavar="T",
+            help="tangential force over mu F (Coulomb), >= 0",
+        )
+        st.add_argument(
+            "--tangential-load",
+            type=float,
+            nargs="+",
+            metavar="T",
+            help="tangential force per unit length [N/m] (SI mode)",
+        )
         _cli._add_groups(p)
         nc = p.add_argument_group("normal contact (a from the normal problem)")
         nc.add_argument("--load", type=float, help="normal load F [N/m] (SI mode)")
-        nc.add_argument("--F-over-Eh", type=float,
-                        help="normal load over E h (with --R-over-h and --sigma0-over-E)")
-        nc.add_argument("--a-over-R", type=float,
-                        help="contact half-width over R (Coulomb: the Hertz half-width)")
-        p.add_argument("--method", choices=("closed-form", "collocation"),
-                       default="closed-form")
+        nc.add_argument(
+            "--F-over-Eh",
+            type=float,
+            help="normal load over E h (with --R-over-h and --sigma0-over-E)",
+        )
+        nc.add_argument(
+            "--a-over-R",
+            type=float,
+            help="contact half-width over R (Coulomb: the Hertz half-width)",
+        )
+        p.add_argument("--method", choices=("closed-form", "collocation"), default="closed-form")
         p.add_argument("--json", action="store_true", help="JSON array of records on stdout")
         p.set_defaults(func=_cmd_slide_init if name == "slide-init" else _cmd_roll)
 
@@ -101,8 +132,10 @@ def _normal_contact(args, coulomb: bool):
     groups = bool(_given(args, "R_over_h", "sigma0_over_E"))
     if si:
         if args.a_over_R is not None or args.F_over_Eh is not None:
-            raise ValueError("--a-over-R and --F-over-Eh are nondimensional: in SI mode give "
-                             "the normal load with --load [N/m]")
+            raise ValueError(
+                "--a-over-R and --F-over-Eh are nondimensional: in SI mode give "
+                "the normal load with --load [N/m]"
+            )
         if args.load is None:
             raise ValueError("SI inputs need the normal load --load [N/m]")
         if coulomb and not _given(args, *_ADHESION_KEYS):
@@ -112,15 +145,18 @@ def _normal_contact(args, coulomb: bool):
         raise ValueError("--load [N/m] is an SI input: give --radius and the materials too")
     if groups:
         if args.a_over_R is not None:
-            raise ValueError("give either --a-over-R or the normal problem (--R-over-h, "
-                             "--sigma0-over-E, --F-over-Eh), not both")
+            raise ValueError(
+                "give either --a-over-R or the normal problem (--R-over-h, "
+                "--sigma0-over-E, --F-over-Eh), not both"
+            )
         _cli._cylinder(args)  # checks that both groups are given
         if args.F_over_Eh is None:
-            raise ValueError("with --R-over-h and --sigma0-over-E give the normal load "
-                             "--F-over-Eh")
+            raise ValueError("with --R-over-h and --sigma0-over-E give the normal load --F-over-Eh")
         if coulomb and args.sigma0_over_E != 0:
-            raise ValueError("Coulomb friction is the counterpart for the non-adhesive Hertz "
-                             "contact: use --sigma0-over-E 0 (or --friction constant)")
+            raise ValueError(
+                "Coulomb friction is the counterpart for the non-adhesive Hertz "
+                "contact: use --sigma0-over-E 0 (or --friction constant)"
+            )
         c = contact_for_load(args.F_over_Eh, args.R_over_h, args.sigma0_over_E)
         return c.a_over_R, args.F_over_Eh, None
     if args.F_over_Eh is not None:
@@ -132,8 +168,9 @@ def _run(args, rolling: bool) -> int:
     coulomb = args.friction == "coulomb"
     if coulomb:
         if _given(args, "tau0_over_E", "tau0"):
-            raise ValueError("--tau0-over-E and --tau0 are for --friction constant; Coulomb "
-                             "friction takes --mu")
+            raise ValueError(
+                "--tau0-over-E and --tau0 are for --friction constant; Coulomb friction takes --mu"
+            )
         if args.mu is None:
             raise ValueError("--friction coulomb needs the friction coefficient --mu")
     else:
@@ -143,13 +180,17 @@ def _run(args, rolling: bool) -> int:
             raise ValueError("--T-over-muF is for --friction coulomb; use --T-over-Ea")
     states = _given(args, "d_over_a", "T_over_Ea", "T_over_muF", "tangential_load")
     if len(states) != 1:
-        raise ValueError("give exactly one of --d-over-a, --T-over-Ea, --T-over-muF "
-                         "(Coulomb) or --tangential-load [N/m] (SI)")
+        raise ValueError(
+            "give exactly one of --d-over-a, --T-over-Ea, --T-over-muF "
+            "(Coulomb) or --tangential-load [N/m] (SI)"
+        )
     (state,) = states
     A, F_over_Eh, cyl = _normal_contact(args, coulomb)
     if cyl is None and state == "tangential_load":
-        raise ValueError("--tangential-load [N/m] is an SI input: give --radius, the "
-                         "materials and --load too, or use --T-over-Ea")
+        raise ValueError(
+            "--tangential-load [N/m] is an SI input: give --radius, the "
+            "materials and --load too, or use --T-over-Ea"
+        )
     values = np.asarray(getattr(args, state), float)
     if state != "d_over_a":
         # checked before any conversion (T/(Ea) to T/(mu F), ...), so that the message names
@@ -165,8 +206,7 @@ def _run(args, rolling: bool) -> int:
         else:
             if len(_given(args, "tau0", "tau0_over_E")) != 1:
                 raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
-            fr = dict(friction_stress=args.tau0 if args.tau0 is not None
-                      else args.tau0_over_E * E)
+            fr = dict(friction_stress=args.tau0 if args.tau0 is not None else args.tau0_over_E * E)
         fn = cylinder_steady_rolling if rolling else cylinder_sliding_initiation
         if state in ("T_over_Ea", "T_over_muF"):
             # the contact half-width first, to convert to [N/m]
@@ -178,30 +218,41 @@ def _run(args, rolling: bool) -> int:
         else:
             res = fn(cyl, args.load, d_over_a=d, **fr, **kw)
         r = res.nondimensional
-        si = dict(a_m=res.contact_half_width, d_m=res.stick_zone_end,
-                  T_N_per_m=res.tangential_load, F_N_per_m=res.normal_load,
-                  T_full_slip_N_per_m=res.full_slip_load)
+        si = dict(
+            a_m=res.contact_half_width,
+            d_m=res.stick_zone_end,
+            T_N_per_m=res.tangential_load,
+            F_N_per_m=res.normal_load,
+            T_full_slip_N_per_m=res.full_slip_load,
+        )
         A = res.contact_half_width / cyl.radius
-        header_si = (f", R = {cyl.radius:g} m, E = {E:g} Pa, F = {args.load:g} N/m, "
-                     f"a = {res.contact_half_width:.6g} m")
+        header_si = (
+            f", R = {cyl.radius:g} m, E = {E:g} Pa, F = {args.load:g} N/m, "
+            f"a = {res.contact_half_width:.6g} m"
+        )
     else:
         si = None
         header_si = "" if A is None else f", a/R = {float(A):g}"
         if coulomb:
             if A is None:
-                raise ValueError("Coulomb friction needs the Hertz half-width: give --a-over-R "
-                                 "(or --R-over-h --sigma0-over-E 0 --F-over-Eh, or SI inputs)")
+                raise ValueError(
+                    "Coulomb friction needs the Hertz half-width: give --a-over-R "
+                    "(or --R-over-h --sigma0-over-E 0 --F-over-Eh, or SI inputs)"
+                )
             fn = tg.steady_rolling_coulomb if rolling else tg.sliding_initiation_coulomb
             if state == "T_over_Ea":
                 values = values / ((np.pi / 4) * args.mu * A)
             r = fn(args.mu, A, d, T_over_muF=None if d is not None else values, **kw)
         else:
             if args.tau0 is not None:
-                raise ValueError("--tau0 [Pa] is an SI input: give --radius, the materials and "
-                                 "--load too, or use --tau0-over-E")
+                raise ValueError(
+                    "--tau0 [Pa] is an SI input: give --radius, the materials and "
+                    "--load too, or use --tau0-over-E"
+                )
             if args.tau0_over_E is None:
-                raise ValueError("give the friction stress --tau0-over-E (or --friction "
-                                 "coulomb --mu)")
+                raise ValueError(
+                    "give the friction stress --tau0-over-E (or --friction coulomb --mu)"
+                )
             fn = tg.steady_rolling if rolling else tg.sliding_initiation
             r = fn(args.tau0_over_E, d, T_over_Ea=None if d is not None else values, **kw)
 
@@ -210,8 +261,9 @@ def _run(args, rolling: bool) -> int:
         print(_cli._dump_json(recs))
         return 0
     what = "steady rolling (driving cylinder)" if rolling else "initiation of sliding"
-    law = f"Coulomb mu = {args.mu:g}" if coulomb else \
-        f"tau0/E = {np.atleast_1d(r.tau0_over_E)[0]:g}"
+    law = (
+        f"Coulomb mu = {args.mu:g}" if coulomb else f"tau0/E = {np.atleast_1d(r.tau0_over_E)[0]:g}"
+    )
     print(f"# {what}, {law}{header_si} ({args.method})")
     keys = ["d_over_a", "T_over_Ea", "T_over_T_full_slip"]
     keys += ["creep_over_V"] if rolling else []
@@ -240,10 +292,16 @@ def _records(r, rolling: bool, coulomb: bool, A, F_over_Eh, si) -> list[dict]:
         if F_over_Eh is not None:
             o["F_over_Eh"] = F_over_Eh
         if si is not None:
-            o.update({k: float(np.atleast_1d(v)[i if np.size(v) > 1 else 0])
-                      for k, v in si.items()})
-        o.update(method=r.method, n_collocation=rec["n_collocation"],
-                 residual_stick=rec["residual_stick"], residual_force=rec["residual_force"],
-                 error_estimate=rec["error_estimate"], converged=rec["converged"])
+            o.update(
+                {k: float(np.atleast_1d(v)[i if np.size(v) > 1 else 0]) for k, v in si.items()}
+            )
+        o.update(
+            method=r.method,
+            n_collocation=rec["n_collocation"],
+            residual_stick=rec["residual_stick"],
+            residual_force=rec["residual_force"],
+            error_estimate=rec["error_estimate"],
+            converged=rec["converged"],
+        )
         out.append(o)
     return out

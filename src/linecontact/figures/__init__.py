@@ -20,9 +20,12 @@ from ._style import _mpl, _save
 __all__ = ["paper_figures"]
 
 
-def paper_figures(outdir: str | os.PathLike = "paper-figures", *,
-                  formats: Iterable[str] = ("png", "svg"),
-                  progress: Callable[[str], object] | None = None) -> list[pathlib.Path]:
+def paper_figures(
+    outdir: str | os.PathLike = "paper-figures",
+    *,
+    formats: Iterable[str] = ("png", "svg"),
+    progress: Callable[[str], object] | None = None,
+) -> list[pathlib.Path]:
     """Draw the figures of the paper (Figs. 2--14) into ``outdir``.
 
     Parameters
@@ -57,8 +60,7 @@ def paper_figures(outdir: str | os.PathLike = "paper-figures", *,
     _mpl()
     fmts = (formats,) if isinstance(formats, str) else tuple(formats)
     if not fmts or not all(isinstance(f, str) and f for f in fmts):
-        raise ValueError(f"formats must be a non-empty sequence of format names, got "
-                         f"{formats!r}")
+        raise ValueError(f"formats must be a non-empty sequence of format names, got {formats!r}")
     fmts = tuple(f.lower().lstrip(".") for f in fmts)
     say = progress if progress is not None else (lambda msg: None)
     out = pathlib.Path(outdir)

@@ -85,12 +85,25 @@ def _save(fig, outdir: pathlib.Path, stem: str, formats: tuple[str, ...]) -> lis
 def _legends(ax, title: str, colors, labels, entries) -> None:
     """Colour key (top) and line-style key (bottom), both outside the axes on the right."""
     Line2D = _mpl()[2]
-    key = ax.legend([Line2D([], [], color=c, lw=2.5) for c in colors], labels, title=title,
-                    loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=9,
-                    title_fontsize=10, borderaxespad=0.0)
+    key = ax.legend(
+        [Line2D([], [], color=c, lw=2.5) for c in colors],
+        labels,
+        title=title,
+        loc="upper left",
+        bbox_to_anchor=(1.02, 1.0),
+        fontsize=9,
+        title_fontsize=10,
+        borderaxespad=0.0,
+    )
     ax.add_artist(key)
-    ax.legend([Line2D([], [], **kw) for _, kw in entries], [t for t, _ in entries],
-              loc="lower left", bbox_to_anchor=(1.02, 0.0), fontsize=8.5, borderaxespad=0.0)
+    ax.legend(
+        [Line2D([], [], **kw) for _, kw in entries],
+        [t for t, _ in entries],
+        loc="lower left",
+        bbox_to_anchor=(1.02, 0.0),
+        fontsize=8.5,
+        borderaxespad=0.0,
+    )
 
 
 def _sigma_labels(sigmas) -> list[str]:
@@ -107,8 +120,7 @@ def _branch_lines(ax, x, y, unstable, color, lw: float) -> None:
     """Solid where stable under load control, dotted on the dF/da < 0 part."""
     if unstable.any():
         k = int(np.flatnonzero(unstable)[-1])  # the minimum closes the unstable part
-        ax.plot(x[:k + 1], y[:k + 1], color=color, lw=lw, ls=":")
+        ax.plot(x[: k + 1], y[: k + 1], color=color, lw=lw, ls=":")
         ax.plot(x[k:], y[k:], color=color, lw=lw)
     else:
         ax.plot(x, y, color=color, lw=lw)
-

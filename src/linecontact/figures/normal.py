@@ -99,10 +99,11 @@ def _branch_data(rho: float, sigmas: Iterable[float]) -> list[dict]:
     po = pull_off(rhos, sig)  # arrays: one vectorised call for all curves
     # the a -> 0 limit of the contact branch is the touching non-contact state (g0 = 0)
     c_touch = non_contact(np.zeros(sig.shape), rhos, sig).c_over_R
-    a_col = np.linspace(A_MAX_OVER_R / N_COLLOCATION_MARKERS, A_MAX_OVER_R,
-                        N_COLLOCATION_MARKERS)
-    base = np.union1d(np.geomspace(A_MAX_OVER_R * 1e-6, A_MAX_OVER_R, 120),
-                      np.linspace(A_MAX_OVER_R / 500, A_MAX_OVER_R, 500))
+    a_col = np.linspace(A_MAX_OVER_R / N_COLLOCATION_MARKERS, A_MAX_OVER_R, N_COLLOCATION_MARKERS)
+    base = np.union1d(
+        np.geomspace(A_MAX_OVER_R * 1e-6, A_MAX_OVER_R, 120),
+        np.linspace(A_MAX_OVER_R / 500, A_MAX_OVER_R, 500),
+    )
     out = []
     for i, s in enumerate(sig):
         a_min = float(po.a_over_R_at_minimum[i])
@@ -112,19 +113,24 @@ def _branch_data(rho: float, sigmas: Iterable[float]) -> list[dict]:
         col = normal_contact(a_col, rho, s, method="collocation")
         F0 = float(po.F_zero_width_over_Eh[i])
         c0 = float(c_touch[i])
-        out.append(dict(
-            sigma=float(s),
-            # the a -> 0 limit (Eq. 14 and the zero-width adhesive zone) closes each line
-            a=np.concatenate([[0.0], a]),
-            F=np.concatenate([[F0], cf.F_over_Eh]),
-            c=np.concatenate([[c0], cf.c_over_R]),
-            unstable=np.concatenate([[snap], snap & (a <= a_min)]),
-            a_col=a_col, F_col=col.F_over_Eh, c_col=col.c_over_R,
-            a_po=float(po.a_over_R_at_pulloff[i]), F_po=float(po.F_pulloff_over_Eh[i]),
-            c_po=float(po.c_over_R_at_pulloff[i]), mechanism=str(po.mechanism[i]),
-        ))
+        out.append(
+            dict(
+                sigma=float(s),
+                # the a -> 0 limit (Eq. 14 and the zero-width adhesive zone) closes each line
+                a=np.concatenate([[0.0], a]),
+                F=np.concatenate([[F0], cf.F_over_Eh]),
+                c=np.concatenate([[c0], cf.c_over_R]),
+                unstable=np.concatenate([[snap], snap & (a <= a_min)]),
+                a_col=a_col,
+                F_col=col.F_over_Eh,
+                c_col=col.c_over_R,
+                a_po=float(po.a_over_R_at_pulloff[i]),
+                F_po=float(po.F_pulloff_over_Eh[i]),
+                c_po=float(po.c_over_R_at_pulloff[i]),
+                mechanism=str(po.mechanism[i]),
+            )
+        )
     return out
-
 
 
 # --------------------------------------------------------------------------------------------
@@ -158,24 +164,40 @@ def _load_figure(number: int, rho: float, data: list[dict]):
     """Figs. 2, 3: F/(Eh) versus a/R."""
     fig, ax = _new_axes(
         f"Fig. {number} ({_CITE}): normal load, $R/h = {rho:g}$",
-        r"contact half-width $a/R$", r"load $F/(Eh)$")
+        r"contact half-width $a/R$",
+        r"load $F/(Eh)$",
+    )
     a = data[0]["a"][1:]
     ax.axhline(0.0, color="0.3", lw=0.8)
-    ax.plot(np.concatenate([[0.0], a]), np.concatenate([[0.0], _ref.hertz_load(a, rho)]),
-            color="k", ls="--", lw=1.2, zorder=4)
+    ax.plot(
+        np.concatenate([[0.0], a]),
+        np.concatenate([[0.0], _ref.hertz_load(a, rho)]),
+        color="k",
+        ls="--",
+        lw=1.2,
+        zorder=4,
+    )
     big = data[-1]
     ax.plot(a, _ref.jkr_load(a, rho, big["sigma"]), color="0.45", ls=(0, (6, 3)), lw=1.0)
     colors = _branch_figure(ax, data, "F")
     lo = min(d["F_po"] for d in data)
     hi = float(_ref.hertz_load(A_MAX_OVER_R, rho))
     ax.set_ylim(lo - 0.06 * (hi - lo), hi + 0.05 * (hi - lo))
-    _legends(ax, r"$\sigma_0/E$", colors, _sigma_labels([d["sigma"] for d in data]), [
-        *_STYLE_BRANCH,
-        ("Hertz (Eq. 13)", dict(color="k", ls="--", lw=1.2)),
-        (f"JKR line contact, $w=\\sigma_0 h$,\n$\\sigma_0/E={big['sigma']:g}$",
-         dict(color="0.45", ls=(0, (6, 3)), lw=1.0)),
-        ("pull-off (at $a=0$: Eq. 14)", dict(color="0.2", **_PO_KW)),
-    ])
+    _legends(
+        ax,
+        r"$\sigma_0/E$",
+        colors,
+        _sigma_labels([d["sigma"] for d in data]),
+        [
+            *_STYLE_BRANCH,
+            ("Hertz (Eq. 13)", dict(color="k", ls="--", lw=1.2)),
+            (
+                f"JKR line contact, $w=\\sigma_0 h$,\n$\\sigma_0/E={big['sigma']:g}$",
+                dict(color="0.45", ls=(0, (6, 3)), lw=1.0),
+            ),
+            ("pull-off (at $a=0$: Eq. 14)", dict(color="0.2", **_PO_KW)),
+        ],
+    )
     return fig
 
 
@@ -183,12 +205,20 @@ def _zone_figure(number: int, rho: float, data: list[dict]):
     """Figs. 4, 5: c/R versus a/R."""
     fig, ax = _new_axes(
         f"Fig. {number} ({_CITE}): adhesive-zone width, $R/h = {rho:g}$",
-        r"contact half-width $a/R$", r"adhesive-zone half-width $c/R$")
+        r"contact half-width $a/R$",
+        r"adhesive-zone half-width $c/R$",
+    )
     colors = _branch_figure(ax, data, "c")
-    _legends(ax, r"$\sigma_0/E$", colors, _sigma_labels([d["sigma"] for d in data]), [
-        *_STYLE_BRANCH,
-        ("pull-off", dict(color="0.2", **_PO_KW)),
-    ])
+    _legends(
+        ax,
+        r"$\sigma_0/E$",
+        colors,
+        _sigma_labels([d["sigma"] for d in data]),
+        [
+            *_STYLE_BRANCH,
+            ("pull-off", dict(color="0.2", **_PO_KW)),
+        ],
+    )
     return fig
 
 
@@ -196,7 +226,9 @@ def _zero_width_figure():
     """Fig. 6: Eq. (14) versus sigma0/E, with the true pull-off force as markers."""
     fig, ax = _new_axes(
         f"Fig. 6 ({_CITE}): zero-contact-width force, Eq. (14)",
-        r"adhesive stress $\sigma_0/E$", r"load $F/(Eh)$")
+        r"adhesive stress $\sigma_0/E$",
+        r"load $F/(Eh)$",
+    )
     rhos = np.asarray(ZERO_WIDTH_R_OVER_H)
     colors = _colors(rhos.size)
     s_line = np.linspace(0.0, ZERO_WIDTH_SIGMA0_MAX, 300)
@@ -212,15 +244,22 @@ def _zero_width_figure():
         ax.plot(s_mark[~snap], F[~snap], color=col, mec=col, **_OPEN_KW)
         ax.plot(s_mark[snap], F[snap], color=col, mec=col, **_FILLED_KW)
     ax.set_xlim(0.0, ZERO_WIDTH_SIGMA0_MAX * 1.02)
-    _legends(ax, "$R/h$", colors, [f"{r:g}" for r in rhos], [
-        ("Eq. 14 (zero contact width)", dict(color="0.2", lw=1.8)),
-        ("pull-off = Eq. 14\n(peels to zero width)", dict(color="0.2", **_OPEN_KW)),
-        ("pull-off below Eq. 14\n(snap-off at finite width)", dict(color="0.2", **_FILLED_KW)),
-        ("Eq. 14 as $\\sigma_0/E\\to\\infty$:\n$-\\pi/(2\\ln 2)$, any $R/h$",
-         dict(color="0.5", ls=":", lw=1.0)),
-    ])
+    _legends(
+        ax,
+        "$R/h$",
+        colors,
+        [f"{r:g}" for r in rhos],
+        [
+            ("Eq. 14 (zero contact width)", dict(color="0.2", lw=1.8)),
+            ("pull-off = Eq. 14\n(peels to zero width)", dict(color="0.2", **_OPEN_KW)),
+            ("pull-off below Eq. 14\n(snap-off at finite width)", dict(color="0.2", **_FILLED_KW)),
+            (
+                "Eq. 14 as $\\sigma_0/E\\to\\infty$:\n$-\\pi/(2\\ln 2)$, any $R/h$",
+                dict(color="0.5", ls=":", lw=1.0),
+            ),
+        ],
+    )
     return fig
-
 
 
 def jobs(progress: Callable[[str], object]) -> list[tuple[str, Callable]]:
@@ -228,8 +267,10 @@ def jobs(progress: Callable[[str], object]) -> list[tuple[str, Callable]]:
     rho_a, rho_b = LOAD_R_OVER_H
     data = {}
     for rho in LOAD_R_OVER_H:
-        progress(f"computing load curves for R/h = {rho:g} "
-                 f"({len(LOAD_SIGMA0_OVER_E)} values of sigma0/E)")
+        progress(
+            f"computing load curves for R/h = {rho:g} "
+            f"({len(LOAD_SIGMA0_OVER_E)} values of sigma0/E)"
+        )
         data[rho] = _branch_data(rho, LOAD_SIGMA0_OVER_E)
     return [
         ("fig02_load_R100", lambda: _load_figure(2, rho_a, data[rho_a])),

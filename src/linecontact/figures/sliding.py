@@ -66,17 +66,16 @@ N_COLLOCATION_MARKERS = 12
 SCHEMATIC = dict(a_over_R=0.08, R_over_h2=100.0, h1_over_h2=3.0, sigma0_over_E=0.02)
 
 
-
-
 def _curves(s: float) -> list[dict]:
     """Closed-form lines, collocation markers, limits and pull-off, one dict per h1/h2."""
     r = np.asarray(H1_OVER_H2)
-    base = np.union1d(np.geomspace(A_MAX_OVER_R * 1e-5, A_MAX_OVER_R, 100),
-                      np.linspace(A_MAX_OVER_R / 300, A_MAX_OVER_R, 300))
+    base = np.union1d(
+        np.geomspace(A_MAX_OVER_R * 1e-5, A_MAX_OVER_R, 100),
+        np.linspace(A_MAX_OVER_R / 300, A_MAX_OVER_R, 300),
+    )
     po = sliding_pull_off(R_OVER_H2, r, s)
     cf = sliding_contact(base[None, :], R_OVER_H2, r[:, None], s, method="closed-form")
-    a_col = np.linspace(A_MAX_OVER_R / N_COLLOCATION_MARKERS, A_MAX_OVER_R,
-                        N_COLLOCATION_MARKERS)
+    a_col = np.linspace(A_MAX_OVER_R / N_COLLOCATION_MARKERS, A_MAX_OVER_R, N_COLLOCATION_MARKERS)
     col = sliding_contact(a_col[None, :], R_OVER_H2, r[:, None], s)
     snap = np.asarray(po.mechanism) == "snap-off"
     # at the pull-off state itself (snap-off: an interior width; zero width: the limit)
@@ -93,15 +92,20 @@ def _curves(s: float) -> list[dict]:
             po_xy = (a_po[i], at_po.c1_over_R[i] - at_po.c2_over_R[i], at_po.M_over_Eh2R[i])
         else:
             po_xy = (0.0, d_lim, M0)
-        out.append(dict(
-            r=float(ri),
-            a=np.concatenate([[0.0], base]),
-            d=np.concatenate([[d_lim], cf.c1_over_R[i] - cf.c2_over_R[i]]),
-            M=np.concatenate([[M0], cf.M_over_Eh2R[i]]),
-            unstable=np.concatenate([[snap[i]], ~cf.stable[i]]),
-            a_col=a_col, d_col=col.c1_over_R[i] - col.c2_over_R[i], M_col=col.M_over_Eh2R[i],
-            po=po_xy, M_axis=s * (ri - 1),
-        ))
+        out.append(
+            dict(
+                r=float(ri),
+                a=np.concatenate([[0.0], base]),
+                d=np.concatenate([[d_lim], cf.c1_over_R[i] - cf.c2_over_R[i]]),
+                M=np.concatenate([[M0], cf.M_over_Eh2R[i]]),
+                unstable=np.concatenate([[snap[i]], ~cf.stable[i]]),
+                a_col=a_col,
+                d_col=col.c1_over_R[i] - col.c2_over_R[i],
+                M_col=col.M_over_Eh2R[i],
+                po=po_xy,
+                M_axis=s * (ri - 1),
+            )
+        )
     return out
 
 
@@ -114,13 +118,16 @@ def _curve_figure(number: int, s: float, data: list[dict], key: str):
         fig, ax = _new_axes(
             f"Fig. {number} ({_CITE}): difference of the adhesive zones in steady sliding, "
             f"$R/h_2 = {R_OVER_H2:g}$, $\\sigma_0/E = {s:g}$",
-            r"contact half-width $a/R$", r"$(c_1 - c_2)/R$  (trailing minus leading)")
+            r"contact half-width $a/R$",
+            r"$(c_1 - c_2)/R$  (trailing minus leading)",
+        )
     else:
         fig, ax = _new_axes(
             f"Fig. {number} ({_CITE}): moment in steady sliding, "
             f"$R/h_2 = {R_OVER_H2:g}$, $\\sigma_0/E = {s:g}$",
             r"contact half-width $a/R$",
-            r"moment $M/(E h_2 R)$ about the contact centre, clockwise $+$")
+            r"moment $M/(E h_2 R)$ about the contact centre, clockwise $+$",
+        )
     colors = _r_colors(len(data))
     ax.axhline(0.0, color="0.3", lw=0.8)
     for d, col in zip(data, colors, strict=True):
@@ -138,8 +145,12 @@ def _curve_figure(number: int, s: float, data: list[dict], key: str):
         ("pull-off (load control)", dict(color="0.2", **_PO_KW)),
     ]
     if key == "M":
-        entries.append(("about the axis: $M - eF$\n$= (\\sigma_0/E)(h_1/h_2 - 1)$",
-                        dict(color="0.2", ls="--", lw=1.0)))
+        entries.append(
+            (
+                "about the axis: $M - eF$\n$= (\\sigma_0/E)(h_1/h_2 - 1)$",
+                dict(color="0.2", ls="--", lw=1.0),
+            )
+        )
     _legends(ax, "$h_1/h_2$", colors, [f"{d['r']:g}" for d in data], entries)
     return fig
 
@@ -161,8 +172,11 @@ def _schematic():
     fig = Figure(figsize=(9.6, 7.2))
     FigureCanvasAgg(fig)
     ax1, ax2 = fig.subplots(2, 1, sharex=True, gridspec_kw=dict(height_ratios=(1.0, 1.25)))
-    fig.suptitle(f"Fig. 8 ({_CITE}): steady sliding, computed  —  $R/h_2 = {par['R_over_h2']:g}$, "
-                 f"$h_1/h_2 = {r:g}$, $\\sigma_0/E = {s:g}$, $a/R = {a:g}$", fontsize=11)
+    fig.suptitle(
+        f"Fig. 8 ({_CITE}): steady sliding, computed  —  $R/h_2 = {par['R_over_h2']:g}$, "
+        f"$h_1/h_2 = {r:g}$, $\\sigma_0/E = {s:g}$, $a/R = {a:g}$",
+        fontsize=11,
+    )
     zone_kw = dict(color="tab:orange", alpha=0.15, lw=0)
     for ax in (ax1, ax2):
         ax.axvspan(-c1, -a, **zone_kw)
@@ -178,19 +192,37 @@ def _schematic():
     ax1.plot([a, c2], [1, 1], color="tab:green", ls="--", lw=1.2)
     ax1.plot([-c1], [r], "o", color="tab:red", ms=6)
     ax1.plot([c2], [1], "o", color="tab:green", ms=6)
-    ax1.text(-0.5 * (c1 + a), r * 1.04, "$h_1$: trailing range", ha="center", va="bottom",
-             color="tab:red", fontsize=10)
-    ax1.text(0.5 * (c2 + a), 1.06, "$h_2$: leading range", ha="center", va="bottom",
-             color="tab:green", fontsize=10)
+    ax1.text(
+        -0.5 * (c1 + a),
+        r * 1.04,
+        "$h_1$: trailing range",
+        ha="center",
+        va="bottom",
+        color="tab:red",
+        fontsize=10,
+    )
+    ax1.text(
+        0.5 * (c2 + a),
+        1.06,
+        "$h_2$: leading range",
+        ha="center",
+        va="bottom",
+        color="tab:green",
+        fontsize=10,
+    )
     ax1.set_ylabel("gap $g/h_2$", fontsize=12)
     ax1.set_ylim(-0.15 * r, 1.45 * r)
-    ax1.annotate("", xy=(hi * 0.95, 0.92 * 1.45 * r), xytext=(hi * 0.55, 0.92 * 1.45 * r),
-                 arrowprops=dict(arrowstyle="-|>", color="k", lw=1.5))
+    ax1.annotate(
+        "",
+        xy=(hi * 0.95, 0.92 * 1.45 * r),
+        xytext=(hi * 0.55, 0.92 * 1.45 * r),
+        arrowprops=dict(arrowstyle="-|>", color="k", lw=1.5),
+    )
     ax1.text(hi * 0.75, 0.95 * 1.45 * r, "sliding", ha="center", va="bottom", fontsize=10)
-    ax1.text(-0.5 * (c1 + a), -0.1 * r, "trailing zone", ha="center", fontsize=9,
-             color="tab:orange")
-    ax1.text(0.5 * (c2 + a), -0.1 * r, "leading zone", ha="center", fontsize=9,
-             color="tab:orange")
+    ax1.text(
+        -0.5 * (c1 + a), -0.1 * r, "trailing zone", ha="center", fontsize=9, color="tab:orange"
+    )
+    ax1.text(0.5 * (c2 + a), -0.1 * r, "leading zone", ha="center", fontsize=9, color="tab:orange")
     ax1.text(0.0, -0.1 * r, "contact", ha="center", fontsize=9, color="tab:blue")
     # bottom: the pressure
     ax2.axhline(0.0, color="0.3", lw=0.8)
@@ -198,23 +230,46 @@ def _schematic():
     ax2.fill_between(x, 0.0, p, where=p < 0, color="tab:orange", alpha=0.45, lw=0)
     ax2.plot(x, p, color="k", lw=1.6)
     xc = np.linspace(-a, a, 15)[1:-1]
-    ax2.plot(xc, col.pressure(xc), "s", ms=4.5, mec="k", mew=0.5, color="0.6",
-             label="collocation (Eq. 20)")
+    ax2.plot(
+        xc,
+        col.pressure(xc),
+        "s",
+        ms=4.5,
+        mec="k",
+        mew=0.5,
+        color="0.6",
+        label="collocation (Eq. 20)",
+    )
     ax2.axvline(0.0, color="0.3", lw=0.8)
     ax2.axvline(e, color="tab:purple", lw=1.4, ls="-.")
     top = max(float(np.max(p)), 0.3 * s)
-    ax2.annotate(f"apex (axis)\n$x = e = {e:.4f}R$", xy=(e, 0.5 * top),
-                 xytext=(a + 0.25 * (c2 - a), 0.75 * top), fontsize=10, color="tab:purple",
-                 va="center", arrowprops=dict(arrowstyle="->", color="tab:purple"))
-    txt = (f"$c_1/R = {c1:.4f}$, $c_2/R = {c2:.4f}$\n"
-           f"$F/(Eh_2) = {st.F_over_Eh2:.4f}$\n"
-           f"$M/(Eh_2R) = {st.M_over_Eh2R:.4f}$ (about the contact centre, clockwise $+$)\n"
-           f"$(M - eF)/(Eh_2R) = {st.M_axis_over_Eh2R:.4f} = (\\sigma_0/E)(h_1/h_2-1)$")
-    ax2.text(0.01, 0.97, txt, transform=ax2.transAxes, va="top", ha="left", fontsize=9,
-             bbox=dict(boxstyle="round", fc="white", ec="0.7"))
+    ax2.annotate(
+        f"apex (axis)\n$x = e = {e:.4f}R$",
+        xy=(e, 0.5 * top),
+        xytext=(a + 0.25 * (c2 - a), 0.75 * top),
+        fontsize=10,
+        color="tab:purple",
+        va="center",
+        arrowprops=dict(arrowstyle="->", color="tab:purple"),
+    )
+    txt = (
+        f"$c_1/R = {c1:.4f}$, $c_2/R = {c2:.4f}$\n"
+        f"$F/(Eh_2) = {st.F_over_Eh2:.4f}$\n"
+        f"$M/(Eh_2R) = {st.M_over_Eh2R:.4f}$ (about the contact centre, clockwise $+$)\n"
+        f"$(M - eF)/(Eh_2R) = {st.M_axis_over_Eh2R:.4f} = (\\sigma_0/E)(h_1/h_2-1)$"
+    )
+    ax2.text(
+        0.01,
+        0.97,
+        txt,
+        transform=ax2.transAxes,
+        va="top",
+        ha="left",
+        fontsize=9,
+        bbox=dict(boxstyle="round", fc="white", ec="0.7"),
+    )
     ax2.set_ylabel("pressure $p/E$ (compressive $+$)", fontsize=12)
-    ax2.set_xlabel("$x/R$ (origin at the contact centre; the cylinder moves to $+x$)",
-                   fontsize=12)
+    ax2.set_xlabel("$x/R$ (origin at the contact centre; the cylinder moves to $+x$)", fontsize=12)
     ax2.set_ylim(-1.6 * s, 1.35 * top)
     ax2.set_xlim(lo, hi)
     ax2.legend(loc="upper right", fontsize=9)
@@ -225,9 +280,11 @@ def _schematic():
 
 def jobs(progress: Callable[[str], object]) -> list[tuple[str, Callable]]:
     """(stem, builder) pairs of Figs. 8--12 for :func:`linecontact.figures.paper_figures`."""
-    progress(f"computing steady-sliding curves (R/h2 = {R_OVER_H2:g}, "
-             f"{len(H1_OVER_H2)} values of h1/h2, sigma0/E = "
-             f"{', '.join(f'{s:g}' for s in SIGMA0_OVER_E)})")
+    progress(
+        f"computing steady-sliding curves (R/h2 = {R_OVER_H2:g}, "
+        f"{len(H1_OVER_H2)} values of h1/h2, sigma0/E = "
+        f"{', '.join(f'{s:g}' for s in SIGMA0_OVER_E)})"
+    )
     data = {s: _curves(s) for s in SIGMA0_OVER_E}
     s_a, s_b = SIGMA0_OVER_E
     return [

@@ -71,72 +71,113 @@ def _coulomb_mu(t0: float) -> float:
 
 def _ends(ax, xy, ha: str, *lines: str, va: str = "top") -> None:
     """A small note on what the ends of the d/a axis mean, in axes coordinates."""
-    ax.text(*xy, "\n".join(lines), transform=ax.transAxes, ha=ha, va=va, fontsize=9,
-            bbox=dict(boxstyle="round,pad=0.4", fc="white", ec="0.7"))
+    ax.text(
+        *xy,
+        "\n".join(lines),
+        transform=ax.transAxes,
+        ha=ha,
+        va=va,
+        fontsize=9,
+        bbox=dict(boxstyle="round,pad=0.4", fc="white", ec="0.7"),
+    )
 
 
 def _styles(eq: str, coulomb: str) -> list:
     return [
         ("closed form", dict(color="0.2", lw=1.8)),
         (f"collocation of {eq}", dict(color="0.6", **_fig._COL_KW)),
-        (f"Coulomb friction ({coulomb}),\nsame full-slip load $\\mu F = 2a\\tau_0$",
-         dict(color="0.2", lw=1.3, ls="--")),
+        (
+            f"Coulomb friction ({coulomb}),\nsame full-slip load $\\mu F = 2a\\tau_0$",
+            dict(color="0.2", lw=1.3, ls="--"),
+        ),
     ]
 
 
 def _fig07():
     fig, ax = _fig._new_axes(
         f"Fig. 7 ({_fig._CITE}): initiation of sliding",
-        r"stick-zone half-width $d/a$", r"tangential force $T/(Ea)$")
+        r"stick-zone half-width $d/a$",
+        r"tangential force $T/(Ea)$",
+    )
     colors = _fig._colors(len(TAU0_OVER_E))
     d = np.linspace(0.0, 1.0, 401)[:-1]
     d_col = np.linspace(0.04, 0.96, N_COLLOCATION_MARKERS)
     for t0, col in zip(TAU0_OVER_E, colors, strict=True):
-        ax.plot(np.append(d, 1.0), np.append(sliding_initiation(t0, d).T_over_Ea, 0.0),
-                color=col, lw=1.8)
+        ax.plot(
+            np.append(d, 1.0),
+            np.append(sliding_initiation(t0, d).T_over_Ea, 0.0),
+            color=col,
+            lw=1.8,
+        )
         c = sliding_initiation(t0, d_col, method="collocation")
         ax.plot(d_col, c.T_over_Ea, color=col, **_fig._COL_KW, zorder=5)
         cm = sliding_initiation_coulomb(_coulomb_mu(t0), _A_OVER_R, d)
         ax.plot(np.append(d, 1.0), np.append(cm.T_over_Ea, 0.0), color=col, lw=1.3, ls="--")
     ax.set_xlim(0, 1.0)
     ax.set_ylim(0, 2 * TAU0_OVER_E[-1] * 1.05)
-    _ends(ax, (0.97, 0.96), "right", r"$d = 0$: full slip, $T = 2a\tau_0$",
-          r"$d = a$: full stick, $T = 0$")
-    _fig._legends(ax, r"$\tau_0/E$", colors, [f"{t:g}" for t in TAU0_OVER_E],
-                  _styles("Eq. 16", "Cattaneo–Mindlin"))
+    _ends(
+        ax,
+        (0.97, 0.96),
+        "right",
+        r"$d = 0$: full slip, $T = 2a\tau_0$",
+        r"$d = a$: full stick, $T = 0$",
+    )
+    _fig._legends(
+        ax,
+        r"$\tau_0/E$",
+        colors,
+        [f"{t:g}" for t in TAU0_OVER_E],
+        _styles("Eq. 16", "Cattaneo–Mindlin"),
+    )
     return fig
 
 
 def _rolling_d():
     """d/a from full stick to D_MAX_ROLLING, dense near both ends."""
     near = 1 - np.geomspace(1e-1, 1 - D_MAX_ROLLING, 60)
-    return np.unique(np.concatenate([np.linspace(-1 + 1e-6, 0.9, 400), near,
-                                     -1 + np.geomspace(1e-8, 1e-2, 40)]))
+    return np.unique(
+        np.concatenate([np.linspace(-1 + 1e-6, 0.9, 400), near, -1 + np.geomspace(1e-8, 1e-2, 40)])
+    )
 
 
 def _fig13():
     fig, ax = _fig._new_axes(
         f"Fig. 13 ({_fig._CITE}): steady rolling of a driving cylinder, tractive force",
         r"start of the leading-edge stick zone $d/a$ (stick: $d < x < a$)",
-        r"tractive force $T/(Ea)$")
+        r"tractive force $T/(Ea)$",
+    )
     colors = _fig._colors(len(TAU0_OVER_E))
     d = _rolling_d()
     d_col = np.linspace(-0.92, 0.92, N_COLLOCATION_MARKERS)
     for t0, col in zip(TAU0_OVER_E, colors, strict=True):
-        ax.plot(np.concatenate([[-1], d, [1]]),
-                np.concatenate([[0], steady_rolling(t0, d).T_over_Ea, [2 * t0]]),
-                color=col, lw=1.8)
+        ax.plot(
+            np.concatenate([[-1], d, [1]]),
+            np.concatenate([[0], steady_rolling(t0, d).T_over_Ea, [2 * t0]]),
+            color=col,
+            lw=1.8,
+        )
         c = steady_rolling(t0, d_col, method="collocation")
         ax.plot(d_col, c.T_over_Ea, color=col, **_fig._COL_KW, zorder=5)
         cm = steady_rolling_coulomb(_coulomb_mu(t0), _A_OVER_R, d)
-        ax.plot(np.concatenate([[-1], d, [1]]),
-                np.concatenate([[0], cm.T_over_Ea, [2 * t0]]), color=col, lw=1.3, ls="--")
+        ax.plot(
+            np.concatenate([[-1], d, [1]]),
+            np.concatenate([[0], cm.T_over_Ea, [2 * t0]]),
+            color=col,
+            lw=1.3,
+            ls="--",
+        )
     ax.set_xlim(-1, 1)
     ax.set_ylim(0, 2 * TAU0_OVER_E[-1] * 1.05)
-    _ends(ax, (0.03, 0.96), "left", r"$d = -a$: full stick, $T = 0$",
-          r"$d = a$: full slip, $T = 2a\tau_0$")
-    _fig._legends(ax, r"$\tau_0/E$", colors, [f"{t:g}" for t in TAU0_OVER_E],
-                  _styles("Eq. 27", "Carter"))
+    _ends(
+        ax,
+        (0.03, 0.96),
+        "left",
+        r"$d = -a$: full stick, $T = 0$",
+        r"$d = a$: full slip, $T = 2a\tau_0$",
+    )
+    _fig._legends(
+        ax, r"$\tau_0/E$", colors, [f"{t:g}" for t in TAU0_OVER_E], _styles("Eq. 27", "Carter")
+    )
     return fig
 
 
@@ -144,31 +185,51 @@ def _fig14():
     fig, ax = _fig._new_axes(
         f"Fig. 14 ({_fig._CITE}): steady rolling of a driving cylinder, creep",
         r"start of the leading-edge stick zone $d/a$ (stick: $d < x < a$)",
-        r"creep velocity $\dot C/V = (V - \omega R)/V$")
+        r"creep velocity $\dot C/V = (V - \omega R)/V$",
+    )
     colors = _fig._colors(len(TAU0_OVER_E))
     d = _rolling_d()
     d_col = np.linspace(-0.92, 0.92, N_COLLOCATION_MARKERS)
     for t0, col in zip(TAU0_OVER_E, colors, strict=True):
-        ax.plot(np.concatenate([[-1], d]),
-                np.concatenate([[0], steady_rolling(t0, d).creep_over_V]), color=col, lw=1.8)
+        ax.plot(
+            np.concatenate([[-1], d]),
+            np.concatenate([[0], steady_rolling(t0, d).creep_over_V]),
+            color=col,
+            lw=1.8,
+        )
         c = steady_rolling(t0, d_col, method="collocation")
         ax.plot(d_col, c.creep_over_V, color=col, **_fig._COL_KW, zorder=5)
         cm = steady_rolling_coulomb(_coulomb_mu(t0), _A_OVER_R, d)
-        ax.plot(np.concatenate([[-1], d, [1]]),
-                np.concatenate([[0], cm.creep_over_V, [-_coulomb_mu(t0) * _A_OVER_R]]),
-                color=col, lw=1.3, ls="--")
+        ax.plot(
+            np.concatenate([[-1], d, [1]]),
+            np.concatenate([[0], cm.creep_over_V, [-_coulomb_mu(t0) * _A_OVER_R]]),
+            color=col,
+            lw=1.3,
+            ls="--",
+        )
     ax.axhline(0.0, color="0.3", lw=0.8)
     ax.set_xlim(-1, 1)
     # the creep diverges at d -> a: show the range down to its value at d/a = 0.99
     ymin = 1.15 * float(steady_rolling(TAU0_OVER_E[-1], 0.99).creep_over_V)
     ax.set_ylim(ymin, -0.03 * ymin)
-    ax.annotate("$\\to -\\infty$ like $\\ln\\frac{1}{1 - d/a}$\nas the stick zone vanishes",
-                xy=(0.993, 0.97 * ymin), xytext=(0.3, 0.85 * ymin), fontsize=9,
-                arrowprops=dict(arrowstyle="->", color="0.3"))
-    _ends(ax, (0.03, 0.04), "left", r"$d = -a$: full stick, no creep",
-          r"$d \to a$: full slip, $\omega R > V$", va="bottom")
-    _fig._legends(ax, r"$\tau_0/E$", colors, [f"{t:g}" for t in TAU0_OVER_E],
-                  _styles("Eq. 27", "Carter"))
+    ax.annotate(
+        "$\\to -\\infty$ like $\\ln\\frac{1}{1 - d/a}$\nas the stick zone vanishes",
+        xy=(0.993, 0.97 * ymin),
+        xytext=(0.3, 0.85 * ymin),
+        fontsize=9,
+        arrowprops=dict(arrowstyle="->", color="0.3"),
+    )
+    _ends(
+        ax,
+        (0.03, 0.04),
+        "left",
+        r"$d = -a$: full stick, no creep",
+        r"$d \to a$: full slip, $\omega R > V$",
+        va="bottom",
+    )
+    _fig._legends(
+        ax, r"$\tau_0/E$", colors, [f"{t:g}" for t in TAU0_OVER_E], _styles("Eq. 27", "Carter")
+    )
     return fig
 
 

@@ -117,8 +117,9 @@ def _adaptive(kernel, delta: NDArray, rate: NDArray, n, tol: float) -> dict[str,
         if n != "auto":
             break
         pending = pending & (out["tail"] > tol) & (nsel < sizes[-1])
-        nsel = np.where(pending, sizes[np.minimum(np.searchsorted(sizes, nsel) + 1,
-                                                  sizes.size - 1)], nsel)
+        nsel = np.where(
+            pending, sizes[np.minimum(np.searchsorted(sizes, nsel) + 1, sizes.size - 1)], nsel
+        )
     out["n"] = nsel
     return out
 
@@ -127,8 +128,21 @@ def _adaptive(kernel, delta: NDArray, rate: NDArray, n, tol: float) -> dict[str,
 # shared driver
 
 
-def _solve_points(delta, active, method, n, tol, kernel, rate, T_closed, dT_closed,
-                  T_target=None, T_full=2.0, lo=0.0, hi=1.0):
+def _solve_points(
+    delta,
+    active,
+    method,
+    n,
+    tol,
+    kernel,
+    rate,
+    T_closed,
+    dT_closed,
+    T_target=None,
+    T_full=2.0,
+    lo=0.0,
+    hi=1.0,
+):
     """Closed form or collocation on the active points; Newton on delta for a given T.
 
     All in the units of the kernel (``T`` over ``a tau0`` or ``mu F``; ``T_full`` is the
@@ -136,9 +150,16 @@ def _solve_points(delta, active, method, n, tol, kernel, rate, T_closed, dT_clos
     ``creep``, ``n``, ``stick``, ``cons``, ``tail`` and ``force`` (``|T(d) - T|/T_full``).
     """
     P = delta.size
-    out = dict(delta=delta.copy(), T=np.full(P, np.nan), n=np.zeros(P, int),
-               stick=np.zeros(P), cons=np.zeros(P), tail=np.zeros(P), force=np.zeros(P),
-               creep=np.full(P, np.nan))
+    out = dict(
+        delta=delta.copy(),
+        T=np.full(P, np.nan),
+        n=np.zeros(P, int),
+        stick=np.zeros(P),
+        cons=np.zeros(P),
+        tail=np.zeros(P),
+        force=np.zeros(P),
+        creep=np.full(P, np.nan),
+    )
     idx = np.flatnonzero(active)
     if idx.size == 0:
         return out
@@ -179,10 +200,14 @@ def _raise_unconverged(name, converged, labels: dict, out, n) -> None:
     raise ConvergenceError(
         f"{name} (collocation) did not converge at {where} (error estimate "
         f"{out['tail'][i]:.3g}, stick residual {out['stick'][i]:.3g}, force residual "
-        f"{out['force'][i]:.3g}, n = {out['n'][i]}): " + (
+        f"{out['force'][i]:.3g}, n = {out['n'][i]}): "
+        + (
             f"the stick zone is too close to its limit for n <= {SIZES[-1]}; use "
-            f"method='closed-form'" if n == "auto" else
-            f"n = {out['n'][i]} nodes are too few for tol; try n='auto'"))
+            f"method='closed-form'"
+            if n == "auto"
+            else f"n = {out['n'][i]} nodes are too few for tol; try n='auto'"
+        )
+    )
 
 
 def _raise_sliding(name, sliding, T_name, T, T_full) -> None:
@@ -192,7 +217,8 @@ def _raise_sliding(name, sliding, T_name, T, T_full) -> None:
     raise NoEquilibriumError(
         f"{name}: {T_name}={float(np.reshape(T, -1)[i])!r} is at or above the full-slip load "
         f"{float(np.reshape(T_full, -1)[i])!r}: the whole contact slips (sliding), there is no "
-        f"stick zone")
+        f"stick zone"
+    )
 
 
 def _states(sliding, stick, shape):
@@ -273,24 +299,36 @@ class _Problem:
     n_auto: int | None = None  # fixed n for n="auto" (Coulomb: linear right-hand sides)
 
 
-def _run(pb: _Problem, d_over_a, load, load_name, method, n, tol, raise_on_failure,
-         on_sliding, params: dict):
+def _run(
+    pb: _Problem,
+    d_over_a,
+    load,
+    load_name,
+    method,
+    n,
+    tol,
+    raise_on_failure,
+    on_sliding,
+    params: dict,
+):
     """Validate the state variable, solve, return (fields, diagnostics, scalar-flag parts)."""
     _one_of(d_over_a, load, load_name)
     _check_options(method, n, tol, raise_on_failure, on_sliding)
     names = list(params)
     arrays = list(params.values())
     if d_over_a is not None:
-        dl = check_array("d_over_a", d_over_a, low=pb.d_low, low_inclusive=pb.d_low_inclusive,
-                         high=1.0)
+        dl = check_array(
+            "d_over_a", d_over_a, low=pb.d_low, low_inclusive=pb.d_low_inclusive, high=1.0
+        )
         given = ("d_over_a", dl)
     else:
         dl = None
         given = (load_name, non_negative(load_name, load))
     scalar = scalar_or_array(*arrays, given[1])
-    *arrays, g = (np.asarray(v, float) for v in broadcast(**dict(zip(names, arrays,
-                                                                   strict=True)),
-                                                          **{given[0]: given[1]}))
+    *arrays, g = (
+        np.asarray(v, float)
+        for v in broadcast(**dict(zip(names, arrays, strict=True)), **{given[0]: given[1]})
+    )
     shape = g.shape
     if dl is not None:
         dl = g
@@ -307,10 +345,21 @@ def _run(pb: _Problem, d_over_a, load, load_name, method, n, tol, raise_on_failu
         stick = r == 0
     active = ~(sliding | stick)
     nn = pb.n_auto if (pb.n_auto is not None and n == "auto") else n
-    out = _solve_points(np.where(np.isfinite(dl), dl, 0.0).reshape(-1), active.reshape(-1),
-                        method, nn, tol, pb.kernel, pb.rate, pb.T_closed, pb.dT_closed,
-                        None if T_target is None else T_target.reshape(-1), pb.T_full,
-                        lo=pb.d_low + (0.0 if pb.d_low_inclusive else 1e-16), hi=1.0 - 1e-16)
+    out = _solve_points(
+        np.where(np.isfinite(dl), dl, 0.0).reshape(-1),
+        active.reshape(-1),
+        method,
+        nn,
+        tol,
+        pb.kernel,
+        pb.rate,
+        pb.T_closed,
+        pb.dT_closed,
+        None if T_target is None else T_target.reshape(-1),
+        pb.T_full,
+        lo=pb.d_low + (0.0 if pb.d_low_inclusive else 1e-16),
+        hi=1.0 - 1e-16,
+    )
     act = active.reshape(-1)
     if T_target is None:
         T_unit = np.where(act, out["T"], pb.T_full * r.reshape(-1)).reshape(shape)
@@ -324,25 +373,35 @@ def _run(pb: _Problem, d_over_a, load, load_name, method, n, tol, raise_on_failu
     else:
         creep = None
     if on_sliding == "raise":
-        _raise_sliding(pb.name, sliding, given[0], given[1] if d_over_a is None else T_unit,
-                       2 * arrays[0] if pb.constant else np.ones(shape))
+        _raise_sliding(
+            pb.name,
+            sliding,
+            given[0],
+            given[1] if d_over_a is None else T_unit,
+            2 * arrays[0] if pb.constant else np.ones(shape),
+        )
     converged = np.ones(shape, bool)
     if method == "collocation":
-        converged = (((out["tail"] <= 10 * tol) & (out["force"] <= 1e-10)
-                      & np.isfinite(out["T"])) | ~act).reshape(shape)
+        converged = (
+            ((out["tail"] <= 10 * tol) & (out["force"] <= 1e-10) & np.isfinite(out["T"])) | ~act
+        ).reshape(shape)
         if raise_on_failure:
             labels = dict(zip(names, arrays, strict=True))
             labels[given[0]] = g
             _raise_unconverged(pb.name, converged, labels, out, n)
-    diag = dict(n_collocation=out["n"].reshape(shape), residual_stick=out["stick"].reshape(shape),
-                residual_force=out["force"].reshape(shape),
-                residual_consistency=out["cons"].reshape(shape),
-                error_estimate=out["tail"].reshape(shape), converged=converged,
-                state=_states(sliding, stick, shape), d_over_a=dl,
-                T_over_T_full_slip=T_unit / pb.T_full)
+    diag = dict(
+        n_collocation=out["n"].reshape(shape),
+        residual_stick=out["stick"].reshape(shape),
+        residual_force=out["force"].reshape(shape),
+        residual_consistency=out["cons"].reshape(shape),
+        error_estimate=out["tail"].reshape(shape),
+        converged=converged,
+        state=_states(sliding, stick, shape),
+        d_over_a=dl,
+        T_over_T_full_slip=T_unit / pb.T_full,
+    )
     return arrays, T_unit, creep, diag, scalar
 
 
 def _build(cls, method, scalar, **vals):
     return cls(method=method, **{k: as_output(np.asarray(v), scalar) for k, v in vals.items()})
-

@@ -96,11 +96,13 @@ def _init_slip_closed(x, delta):
     k = np.sqrt((1 - delta) * (1 + delta))
     r = np.sqrt(np.clip((x - delta) * (x + delta), 0.0, None))
     with np.errstate(divide="ignore", invalid="ignore"):
-        head = k * np.log(x + r) - np.log(x * k + r) + scipy.special.xlogy(
-            delta * delta / (1 + k), delta)
+        head = (
+            k * np.log(x + r)
+            - np.log(x * k + r)
+            + scipy.special.xlogy(delta * delta / (1 + k), delta)
+        )
     head = np.where(delta > 0, head, 0.0)
     return head + scipy.special.xlogy((1 - x) / 2, (1 - x) * (1 + x)) + x * np.log(k + r)
-
 
 
 # --------------------------------------------------------------------------------------------
@@ -223,15 +225,15 @@ class SlidingInitiation(_Tangential):
             def logmom(y, d=d, b=b, n=n):
                 # int_{-d}^{d} tau(s) ln|y - s| ds over tau0, y of shape (p, m)
                 mu = _log_moment_vector(y / d[:, None], int(n))
-                return d[:, None] * (np.einsum("pj,pmj->pm", b, mu) +
-                                     np.log(d)[:, None] * (np.pi / 2) * b[:, :1])
+                return d[:, None] * (
+                    np.einsum("pj,pmj->pm", b, mu) + np.log(d)[:, None] * (np.pi / 2) * b[:, :1]
+                )
 
             Xs = X[sel]
             dm = np.broadcast_to(d[:, None], Xs.shape)
             lm = logmom(Xs) - logmom(dm)
             val[sel] = (2 / np.pi) * (_G(Xs) - _G(dm) - lm)
         return val.reshape(dshape + xs.shape[-1:])
-
 
 
 @dataclass(frozen=True)
@@ -272,8 +274,13 @@ error_estimate, converged
         if self.method == "closed-form":
             corr = np.sqrt(np.clip(dlt * dlt - xq * xq, 0.0, None))
         else:
-            b = self._coefficients(lambda d, n: _solver(n).solve(
-                -d[:, None] * _solver(n).collocation_unit, values=False).coefficients)
+            b = self._coefficients(
+                lambda d, n: (
+                    _solver(n)
+                    .solve(-d[:, None] * _solver(n).collocation_unit, values=False)
+                    .coefficients
+                )
+            )
             dd = np.atleast_1d(dlt[..., 0]).reshape(-1)
             xx = np.broadcast_to(x, dd.shape + x.shape[-1:])
             with np.errstate(divide="ignore", invalid="ignore"):
@@ -285,22 +292,45 @@ error_estimate, converged
         return mu * p0 * q
 
 
-
 _INITIATION = _Problem(
-    "sliding_initiation", _init_kernel, _init_rate, _init_T,
-    lambda d: -2 * d / np.sqrt((1 - d) * (1 + d)), _init_delta, 2.0, 0.0,
-    True, 1.0)
+    "sliding_initiation",
+    _init_kernel,
+    _init_rate,
+    _init_T,
+    lambda d: -2 * d / np.sqrt((1 - d) * (1 + d)),
+    _init_delta,
+    2.0,
+    0.0,
+    True,
+    1.0,
+)
 _CATTANEO_MINDLIN = _Problem(
-    "sliding_initiation_coulomb", _cm_kernel, lambda d: np.full(d.shape, np.inf),
-    lambda d: 1 - d * d, lambda d: -2 * d, lambda r: np.sqrt(1 - r), 1.0, 0.0, True, 1.0,
-    constant=False, n_auto=N_COULOMB)
+    "sliding_initiation_coulomb",
+    _cm_kernel,
+    lambda d: np.full(d.shape, np.inf),
+    lambda d: 1 - d * d,
+    lambda d: -2 * d,
+    lambda r: np.sqrt(1 - r),
+    1.0,
+    0.0,
+    True,
+    1.0,
+    constant=False,
+    n_auto=N_COULOMB,
+)
 
 
-def sliding_initiation(tau0_over_E: ArrayLike, d_over_a: ArrayLike | None = None, *,
-                       T_over_Ea: ArrayLike | None = None, method: str = "closed-form",
-                       n: int | str = "auto", tol: float = 1e-12,
-                       raise_on_failure: bool = True,
-                       on_sliding: str = "report") -> SlidingInitiation:
+def sliding_initiation(
+    tau0_over_E: ArrayLike,
+    d_over_a: ArrayLike | None = None,
+    *,
+    T_over_Ea: ArrayLike | None = None,
+    method: str = "closed-form",
+    n: int | str = "auto",
+    tol: float = 1e-12,
+    raise_on_failure: bool = True,
+    on_sliding: str = "report",
+) -> SlidingInitiation:
     r"""Initiation of sliding with constant friction stress ``tau0`` (paper Eqs 15--17).
 
     A tangential force ``T`` grows on a contact of half-width ``a`` (from the normal
@@ -355,20 +385,33 @@ def sliding_initiation(tau0_over_E: ArrayLike, d_over_a: ArrayLike | None = None
     'sliding'
     """
     arrays, T_unit, _, diag, scalar = _run(
-        _INITIATION, d_over_a, T_over_Ea, "T_over_Ea", method, n, tol, raise_on_failure,
-        on_sliding, {"tau0_over_E": positive("tau0_over_E", tau0_over_E)})
+        _INITIATION,
+        d_over_a,
+        T_over_Ea,
+        "T_over_Ea",
+        method,
+        n,
+        tol,
+        raise_on_failure,
+        on_sliding,
+        {"tau0_over_E": positive("tau0_over_E", tau0_over_E)},
+    )
     (t0,) = arrays
-    return _build(SlidingInitiation, method, scalar, T_over_Ea=t0 * T_unit, tau0_over_E=t0,
-                  **diag)
+    return _build(SlidingInitiation, method, scalar, T_over_Ea=t0 * T_unit, tau0_over_E=t0, **diag)
 
 
-
-def sliding_initiation_coulomb(mu: ArrayLike, a_over_R: ArrayLike,
-                               d_over_a: ArrayLike | None = None, *,
-                               T_over_muF: ArrayLike | None = None, method: str = "closed-form",
-                               n: int | str = "auto", tol: float = 1e-12,
-                               raise_on_failure: bool = True,
-                               on_sliding: str = "report") -> CoulombSlidingInitiation:
+def sliding_initiation_coulomb(
+    mu: ArrayLike,
+    a_over_R: ArrayLike,
+    d_over_a: ArrayLike | None = None,
+    *,
+    T_over_muF: ArrayLike | None = None,
+    method: str = "closed-form",
+    n: int | str = "auto",
+    tol: float = 1e-12,
+    raise_on_failure: bool = True,
+    on_sliding: str = "report",
+) -> CoulombSlidingInitiation:
     r"""Cattaneo--Mindlin initiation of sliding of a Hertz line contact (Coulomb friction).
 
     The macro-scale counterpart of :func:`sliding_initiation`: Hertz pressure
@@ -402,11 +445,25 @@ def sliding_initiation_coulomb(mu: ArrayLike, a_over_R: ArrayLike,
     0.75
     """
     arrays, T_unit, _, diag, scalar = _run(
-        _CATTANEO_MINDLIN, d_over_a, T_over_muF, "T_over_muF", method, n, tol,
-        raise_on_failure, on_sliding,
-        {"mu": positive("mu", mu), "a_over_R": positive("a_over_R", a_over_R)})
+        _CATTANEO_MINDLIN,
+        d_over_a,
+        T_over_muF,
+        "T_over_muF",
+        method,
+        n,
+        tol,
+        raise_on_failure,
+        on_sliding,
+        {"mu": positive("mu", mu), "a_over_R": positive("a_over_R", a_over_R)},
+    )
     m, A = arrays
-    return _build(CoulombSlidingInitiation, method, scalar, T_over_muF=T_unit,
-                  T_over_Ea=(np.pi / 4) * m * A * T_unit, mu=m, a_over_R=A, **diag)
-
-
+    return _build(
+        CoulombSlidingInitiation,
+        method,
+        scalar,
+        T_over_muF=T_unit,
+        T_over_Ea=(np.pi / 4) * m * A * T_unit,
+        mu=m,
+        a_over_R=A,
+        **diag,
+    )

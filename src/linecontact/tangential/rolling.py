@@ -75,8 +75,12 @@ def _roll_rhs(delta, t, split: str = "endpoint"):
     Y = _roll_Y(delta)[..., None]
     if split == "endpoint":
         return -(1.0 / np.pi) * np.log(2.0 * (t + Y))
-    return (1.0 / np.pi) * (scipy.special.xlogy((1 - t) / 2, 1 - t)
-                            + scipy.special.xlogy((1 + t) / 2, 1 + t) - 1.0 - np.log(t + Y))
+    return (1.0 / np.pi) * (
+        scipy.special.xlogy((1 - t) / 2, 1 - t)
+        + scipy.special.xlogy((1 + t) / 2, 1 + t)
+        - 1.0
+        - np.log(t + Y)
+    )
 
 
 def _roll_solve(delta: NDArray, n: int, split: str = "endpoint"):
@@ -92,15 +96,15 @@ def _roll_kernel(delta: NDArray, n: int, split: str = "endpoint") -> dict[str, N
     # Eq 29 (sign of the integral corrected): T = (3a + d) tau0/2 - int tau-bar
     T = (3.0 + delta) / 2.0 - h * (np.pi / 2) * b[:, 0]
     lam = sol.extra  # = -E creep/(2 tau0 V)
-    res = np.max(np.abs(-b @ _check_matrix(n) - _roll_rhs(delta, _CHECK_Y, split)
-                        - lam[:, None]), axis=-1)
+    res = np.max(
+        np.abs(-b @ _check_matrix(n) - _roll_rhs(delta, _CHECK_Y, split) - lam[:, None]), axis=-1
+    )
     return dict(T=T, creep=-2.0 * lam, tail=_tail(b), stick=res, cons=np.abs(sol.consistency))
 
 
 def _roll_rate(delta):
     """The log source x = -a sits at t = -(3a + d)/(a - d): rate u0."""
     return _roll_u0(delta)
-
 
 
 def _carter_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
@@ -116,7 +120,6 @@ def _carter_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
     xc = m[:, None] + h[:, None] * _CHECK_Y[None, :]
     res = np.max(np.abs(-b @ _check_matrix(n) + xc - lam[:, None]), axis=-1)
     return dict(T=T, creep=-lam, tail=_tail(b), stick=res, cons=np.abs(sol.consistency))
-
 
 
 @dataclass(frozen=True)
@@ -159,8 +162,9 @@ error_estimate, converged
         t0 = np.asarray(self.tau0_over_E, dtype=float)[..., None]
         if self.method == "closed-form":
             beta = (1 + dlt) / 2
-            inner = (2 / np.pi) * np.arctan2(np.sqrt(np.clip(beta * (1 - x), 0.0, None)),
-                                             np.sqrt(np.clip(x - dlt, 0.0, None)))
+            inner = (2 / np.pi) * np.arctan2(
+                np.sqrt(np.clip(beta * (1 - x), 0.0, None)), np.sqrt(np.clip(x - dlt, 0.0, None))
+            )
         else:
             b = self._coefficients(lambda d, n: _roll_solve(d, n).coefficients)
             dd = np.atleast_1d(dlt[..., 0]).reshape(-1)
@@ -173,7 +177,6 @@ error_estimate, converged
         q = np.where(np.abs(x) <= 1.0, np.where(stick, inner, 1.0), 0.0)
         q = np.where(st == _STICK, 0.0, q)
         return t0 * q
-
 
 
 @dataclass(frozen=True)
@@ -219,6 +222,7 @@ error_estimate, converged
         if self.method == "closed-form":
             corr = np.sqrt(np.clip(h * h - (xq - m) ** 2, 0.0, None))
         else:
+
             def coef(d, n):
                 mm, hh = (1 + d) / 2, (1 - d) / 2
                 xs = mm[:, None] + hh[:, None] * _solver(n).collocation_unit
@@ -235,23 +239,47 @@ error_estimate, converged
         return mu * p0 * q
 
 
-
 _ROLLING = _Problem(
-    "steady_rolling", _roll_kernel, _roll_rate, lambda d: 2 * _roll_sqrt_beta(d),
-    lambda d: 1 / (2 * _roll_sqrt_beta(d)), lambda r: 2 * r * r - 1, 2.0, -1.0, False, -1.0,
-    creep_closed=_roll_creep_unit)
+    "steady_rolling",
+    _roll_kernel,
+    _roll_rate,
+    lambda d: 2 * _roll_sqrt_beta(d),
+    lambda d: 1 / (2 * _roll_sqrt_beta(d)),
+    lambda r: 2 * r * r - 1,
+    2.0,
+    -1.0,
+    False,
+    -1.0,
+    creep_closed=_roll_creep_unit,
+)
 _CARTER = _Problem(
-    "steady_rolling_coulomb", _carter_kernel, lambda d: np.full(d.shape, np.inf),
-    lambda d: 1 - ((1 - d) / 2) ** 2, lambda d: (1 - d) / 2, lambda r: 1 - 2 * np.sqrt(1 - r),
-    1.0, -1.0, False, -1.0, constant=False, creep_closed=lambda d: -(1 + d) / 2,
-    n_auto=N_COULOMB)
+    "steady_rolling_coulomb",
+    _carter_kernel,
+    lambda d: np.full(d.shape, np.inf),
+    lambda d: 1 - ((1 - d) / 2) ** 2,
+    lambda d: (1 - d) / 2,
+    lambda r: 1 - 2 * np.sqrt(1 - r),
+    1.0,
+    -1.0,
+    False,
+    -1.0,
+    constant=False,
+    creep_closed=lambda d: -(1 + d) / 2,
+    n_auto=N_COULOMB,
+)
 
 
-
-def steady_rolling(tau0_over_E: ArrayLike, d_over_a: ArrayLike | None = None, *,
-                   T_over_Ea: ArrayLike | None = None, method: str = "closed-form",
-                   n: int | str = "auto", tol: float = 1e-12, raise_on_failure: bool = True,
-                   on_sliding: str = "report") -> SteadyRolling:
+def steady_rolling(
+    tau0_over_E: ArrayLike,
+    d_over_a: ArrayLike | None = None,
+    *,
+    T_over_Ea: ArrayLike | None = None,
+    method: str = "closed-form",
+    n: int | str = "auto",
+    tol: float = 1e-12,
+    raise_on_failure: bool = True,
+    on_sliding: str = "report",
+) -> SteadyRolling:
     r"""Steady rolling of a driving cylinder with constant friction stress (Eqs 23--29).
 
     Conventions (module docstring): rolling along ``+x`` (leading edge ``x = a``), the
@@ -298,19 +326,41 @@ def steady_rolling(tau0_over_E: ArrayLike, d_over_a: ArrayLike | None = None, *,
     True
     """
     arrays, T_unit, creep, diag, scalar = _run(
-        _ROLLING, d_over_a, T_over_Ea, "T_over_Ea", method, n, tol, raise_on_failure,
-        on_sliding, {"tau0_over_E": positive("tau0_over_E", tau0_over_E)})
+        _ROLLING,
+        d_over_a,
+        T_over_Ea,
+        "T_over_Ea",
+        method,
+        n,
+        tol,
+        raise_on_failure,
+        on_sliding,
+        {"tau0_over_E": positive("tau0_over_E", tau0_over_E)},
+    )
     (t0,) = arrays
-    return _build(SteadyRolling, method, scalar, T_over_Ea=t0 * T_unit,
-                  creep_over_V=t0 * creep, tau0_over_E=t0, **diag)
+    return _build(
+        SteadyRolling,
+        method,
+        scalar,
+        T_over_Ea=t0 * T_unit,
+        creep_over_V=t0 * creep,
+        tau0_over_E=t0,
+        **diag,
+    )
 
 
-
-def steady_rolling_coulomb(mu: ArrayLike, a_over_R: ArrayLike, d_over_a: ArrayLike | None = None,
-                           *, T_over_muF: ArrayLike | None = None, method: str = "closed-form",
-                           n: int | str = "auto", tol: float = 1e-12,
-                           raise_on_failure: bool = True,
-                           on_sliding: str = "report") -> CoulombRolling:
+def steady_rolling_coulomb(
+    mu: ArrayLike,
+    a_over_R: ArrayLike,
+    d_over_a: ArrayLike | None = None,
+    *,
+    T_over_muF: ArrayLike | None = None,
+    method: str = "closed-form",
+    n: int | str = "auto",
+    tol: float = 1e-12,
+    raise_on_failure: bool = True,
+    on_sliding: str = "report",
+) -> CoulombRolling:
     r"""Carter's steady rolling of a driving cylinder (Hertz pressure, Coulomb friction).
 
     Conventions as in :func:`steady_rolling`. Stick zone ``d < x < a`` of half-width
@@ -341,11 +391,26 @@ def steady_rolling_coulomb(mu: ArrayLike, a_over_R: ArrayLike, d_over_a: ArrayLi
     (0.75, -0.5)
     """
     arrays, T_unit, creep, diag, scalar = _run(
-        _CARTER, d_over_a, T_over_muF, "T_over_muF", method, n, tol, raise_on_failure,
-        on_sliding, {"mu": positive("mu", mu), "a_over_R": positive("a_over_R", a_over_R)})
+        _CARTER,
+        d_over_a,
+        T_over_muF,
+        "T_over_muF",
+        method,
+        n,
+        tol,
+        raise_on_failure,
+        on_sliding,
+        {"mu": positive("mu", mu), "a_over_R": positive("a_over_R", a_over_R)},
+    )
     m, A = arrays
-    return _build(CoulombRolling, method, scalar, T_over_muF=T_unit,
-                  T_over_Ea=(np.pi / 4) * m * A * T_unit, creep_over_V=m * A * creep, mu=m,
-                  a_over_R=A, **diag)
-
-
+    return _build(
+        CoulombRolling,
+        method,
+        scalar,
+        T_over_muF=T_unit,
+        T_over_Ea=(np.pi / 4) * m * A * T_unit,
+        creep_over_V=m * A * creep,
+        mu=m,
+        a_over_R=A,
+        **diag,
+    )
