@@ -24,6 +24,7 @@ constant, so no approach is reported: the load is controlled by ``F`` or by ``a`
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -99,6 +100,9 @@ class NormalContact(Result):
     stable : ndarray or bool
         ``dF/da > 0``: the state is stable under load control.
     """
+
+    inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E", "method")
+    derived: ClassVar[tuple[str, ...]] = ("c_over_a",)
 
     a_over_R: NDArray | float
     c_over_R: NDArray | float
@@ -472,6 +476,8 @@ class PullOff(Result):
         The group that fixes the shape of the load curve, and Baney & Hui's lambda.
     """
 
+    inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E")
+
     F_pulloff_over_Eh: NDArray | float
     a_over_R_at_pulloff: NDArray | float
     c_over_R_at_pulloff: NDArray | float
@@ -691,6 +697,8 @@ class NonContact(Result):
         Always False: unstable under load control (stable under displacement control).
     """
 
+    inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E")
+
     central_gap_over_h: NDArray | float
     c_over_R: NDArray | float
     F_over_Eh: NDArray | float
@@ -799,6 +807,8 @@ class LoadCurve(Result):
     pulloff : PullOff
         The pull-off result.
     """
+
+    inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E")
 
     branch: NDArray
     central_gap_over_h: NDArray

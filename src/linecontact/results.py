@@ -50,6 +50,11 @@ class Result:
         """Shape of the parameter points (``()`` for a scalar call)."""
         return np.broadcast_shapes(*(np.shape(getattr(self, k)) for k in self._names()))
 
+    @property
+    def size(self) -> int:
+        """The number of parameter points (1 for a scalar call)."""
+        return int(np.prod(self.shape))
+
     def columns(self) -> dict[str, NDArray[Any]]:
         """Each exported quantity as a 1-D array over the points (C order).
 
@@ -64,15 +69,19 @@ class Result:
         }
 
     def to_dict(self) -> dict[str, Any]:
-        """All exported quantities, arrays as (nested) lists: JSON-ready."""
+        """The exported fields (not the derived properties), arrays as lists: JSON-ready.
+
+        ``type(result)(**result.to_dict())`` rebuilds a result without nested results.
+        """
         out = {}
-        for k in self._names():
-            v = getattr(self, k)
-            out[k] = v.tolist() if isinstance(v, (np.ndarray, np.generic)) else v
+        for f in fields(self):
+            if f.repr:
+                v = getattr(self, f.name)
+                out[f.name] = v.tolist() if isinstance(v, (np.ndarray, np.generic)) else v
         return out
 
     def to_records(self) -> list[dict[str, Any]]:
-        """One dict per point, built from :meth:`columns`."""
+        """One dict per point (the fields and the derived properties), from :meth:`columns`."""
         cols = {k: v.tolist() for k, v in self.columns().items()}
         keys = list(cols)
         return [dict(zip(keys, row, strict=True)) for row in zip(*cols.values(), strict=True)]

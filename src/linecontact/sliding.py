@@ -105,6 +105,7 @@ F. Erdogan, G. D. Gupta, T. S. Cook, "Numerical solution of singular integral eq
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -188,6 +189,14 @@ class SlidingContact(Result):
     stable : ndarray or bool
         ``dF/da > 0``: stable under load control.
     """
+
+    inputs: ClassVar[tuple[str, ...]] = (
+        "R_over_h2",
+        "h1_over_h2",
+        "sigma0_over_E",
+        "tau0_over_E",
+        "method",
+    )
 
     a_over_R: NDArray | float
     c1_over_R: NDArray | float
@@ -342,6 +351,8 @@ class SlidingPullOff(Result):
     c1_over_R_zero_width, c2_over_R_zero_width : ndarray or float
         The adhesive zones of that limit state.
     """
+
+    inputs: ClassVar[tuple[str, ...]] = ("R_over_h2", "h1_over_h2", "sigma0_over_E")
 
     F_pulloff_over_Eh2: NDArray | float
     a_over_R_at_pulloff: NDArray | float

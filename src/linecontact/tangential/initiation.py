@@ -9,6 +9,7 @@ Units, sign conventions and references: :mod:`linecontact.tangential`.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 import scipy.special
@@ -156,6 +157,8 @@ class SlidingInitiation(_Tangential):
         Every tolerance met.
     """
 
+    inputs: ClassVar[tuple[str, ...]] = ("tau0_over_E", "method")
+
     T_over_Ea: NDArray | float
     tau0_over_E: NDArray | float
 
@@ -254,6 +257,8 @@ class CoulombSlidingInitiation(_Tangential):
 error_estimate, converged
         As in :class:`SlidingInitiation` (stresses over ``mu p0``).
     """
+
+    inputs: ClassVar[tuple[str, ...]] = ("mu", "a_over_R", "method")
 
     T_over_muF: NDArray | float
     T_over_Ea: NDArray | float

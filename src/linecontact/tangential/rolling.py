@@ -10,6 +10,7 @@ friction on the Hertz contact (Carter). Units, sign conventions and references:
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 import scipy.special
@@ -147,6 +148,8 @@ error_estimate, converged
         the extra collocation equation that fixes the creep.
     """
 
+    inputs: ClassVar[tuple[str, ...]] = ("tau0_over_E", "method")
+
     T_over_Ea: NDArray | float
     creep_over_V: NDArray | float
     tau0_over_E: NDArray | float
@@ -199,6 +202,8 @@ class CoulombRolling(_Tangential):
 error_estimate, converged
         As in :class:`SteadyRolling` (stresses over ``mu p0``).
     """
+
+    inputs: ClassVar[tuple[str, ...]] = ("mu", "a_over_R", "method")
 
     T_over_muF: NDArray | float
     T_over_Ea: NDArray | float

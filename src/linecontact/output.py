@@ -1,0 +1,388 @@
+"""The columnar output layer: results to JSON, JSON Lines, CSV or a table, with provenance.
+
+Every subcommand of the command line writes through this module, and so can a script. A
+:class:`Table` holds the per-point quantities as 1-D arrays (:meth:`Result.columns
+<linecontact.results.Result.columns>`), the inputs that are the same for every point once, in
+``parameters``, and the unit of every quantity in ``units``. The writers format whole columns
+at a time; no Python dict is built per point.
+
+The provenance block (the output contract of the command line)::
+
+    {"linecontact": {"version": "X.Y.Z"},
+     "command": ["linecontact", "normal", ...],
+     "parameters": {...},
+     "units": {...},
+     "results": [{...}, ...]}
+
+- ``json``: that object (compact unless an indent is given);
+- ``jsonl``: the block without ``results`` on the first line, then one record per line;
+- ``csv``: the block as commented lines (``# linecontact: {...}``, ``# command: [...]``,
+  ``# parameters: {...}``, ``# units: {...}``, each a JSON value), then a header row and one
+  row per point; booleans as ``true``/``false``, missing values empty;
+- ``table``: a human-readable table, numbers to six significant digits; a value below
+  ``1e-12`` of its scale (the largest magnitude in its column, or a scale the caller gives,
+  such as the size of the terms whose difference a load is) is round-off and prints as ``0``.
+
+Missing values (NaN, a point without a state) are ``null`` in JSON; the files keep full
+precision (the shortest ``repr`` that round-trips). Files are written atomically: to a
+temporary file in the target directory, then renamed, so a failure leaves no partial file.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import sys
+import tempfile
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from typing import IO, Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+from ._version import __version__
+from .results import Result
+
+__all__ = ["FORMATS", "Table", "render", "table_from_result", "write"]
+
+#: The output formats.
+FORMATS = ("table", "json", "jsonl", "csv")
+
+#: Below this fraction of its scale a value prints as 0 in a table (round-off).
+ROUND_OFF = 1e-12
+
+
+@dataclass(frozen=True)
+class Table:
+    """Per-point columns with their provenance.
+
+    Attributes
+    ----------
+    columns : dict of str to ndarray
+        1-D arrays of one length (floats, integers, booleans or strings), in output order.
+    parameters : dict
+        Inputs that are the same for every point (JSON-ready scalars or lists).
+    units : dict of str to str
+        The unit of each column and parameter that has one (``"1"`` for a nondimensional
+        group, ``"m"``, ``"N/m"``, ...).
+    command : list of str
+        The command line that produced the table (``["linecontact", "normal", ...]``).
+    title : str
+        One line describing the table (the first line of the ``table`` format).
+    scales : dict of str to ndarray
+        Optional per-point scales for the round-off rule of the ``table`` format.
+    """
+
+    columns: dict[str, NDArray[Any]]
+    parameters: dict[str, Any] = field(default_factory=dict)
+    units: dict[str, str] = field(default_factory=dict)
+    command: list[str] = field(default_factory=list)
+    title: str = ""
+    scales: dict[str, NDArray[Any]] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        sizes = {k: np.shape(v) for k, v in self.columns.items()}
+        lengths = {s[0] for s in sizes.values() if len(s) == 1}
+        if any(len(s) != 1 for s in sizes.values()) or len(lengths) > 1:
+            raise ValueError(f"columns must be 1-D arrays of one length, got shapes {sizes}")
+
+    @property
+    def size(self) -> int:
+        """The number of points (rows)."""
+        return len(next(iter(self.columns.values()))) if self.columns else 0
+
+    def provenance(self) -> dict[str, Any]:
+        """The block that precedes the results in every format."""
+        return {
+            "linecontact": {"version": __version__},
+            "command": list(self.command),
+            "parameters": _jsonable(self.parameters),
+            "units": dict(self.units),
+        }
+
+
+def table_from_result(
+    result: Result,
+    *,
+    columns: Mapping[str, Any] | None = None,
+    drop: Iterable[str] = (),
+    parameters: Mapping[str, Any] | None = None,
+    units: Mapping[str, str] | None = None,
+    command: Sequence[str] = (),
+    title: str = "",
+    scales: Mapping[str, Any] | None = None,
+) -> Table:
+    """A :class:`Table` of ``result``: its inputs that are the same everywhere move to parameters.
+
+    Parameters
+    ----------
+    result : Result
+        Any result of the library.
+    columns : mapping, optional
+        Extra per-point columns (arrays broadcasting to the points), appended in order.
+    drop : iterable of str
+        Columns of ``result`` to leave out.
+    parameters : mapping, optional
+        Further parameters (given before the ones taken from ``result``).
+    units : mapping, optional
+        The unit of each column and parameter.
+    command, title, scales
+        As in :class:`Table`.
+    """
+    cols = result.columns()
+    n = result.size
+    params: dict[str, Any] = dict(parameters or {})
+    dropped = set(drop)
+    out: dict[str, NDArray[Any]] = {}
+    for k, v in cols.items():
+        if k in dropped:
+            continue
+        if k in result.inputs and n > 0 and _constant(v):
+            params.setdefault(k, v[0].item() if isinstance(v[0], np.generic) else v[0])
+            continue
+        out[k] = v
+    for k, v in (columns or {}).items():
+        out[k] = np.broadcast_to(np.asarray(v), result.shape).reshape(n)
+    sc = {
+        k: np.broadcast_to(np.asarray(v, float), result.shape).reshape(n)
+        for k, v in (scales or {}).items()
+    }
+    return Table(out, params, dict(units or {}), list(command), title, sc)
+
+
+def _constant(v: NDArray[Any]) -> bool:
+    if v.dtype.kind == "f":
+        return bool(np.all((v == v[0]) | (np.isnan(v) & np.isnan(v[0]))))
+    return bool(np.all(v == v[0]))
+
+
+def _jsonable(value: Any) -> Any:
+    """Numpy scalars and arrays as Python objects; non-finite floats as None."""
+    if isinstance(value, Mapping):
+        return {str(k): _jsonable(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_jsonable(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return _jsonable(value.tolist())
+    if isinstance(value, np.generic):
+        value = value.item()
+    if isinstance(value, float) and not np.isfinite(value):
+        return None
+    return value
+
+
+# --------------------------------------------------------------------------------------------
+# column encoders: one list of strings per column, built with whole-array operations
+
+
+def _json_column(v: NDArray[Any]) -> list[str]:
+    kind = v.dtype.kind
+    if kind == "b":
+        return np.where(v, "true", "false").tolist()
+    if kind in "iu":
+        return list(map(repr, v.tolist()))
+    if kind == "f":
+        vals = v.astype(float, copy=False)
+        text = list(map(float.__repr__, vals.tolist()))
+        bad = ~np.isfinite(vals)
+        if bad.any():
+            for i in np.flatnonzero(bad):
+                text[i] = "null"
+        return text
+    # strings (few distinct values: encode each once) and anything else
+    uniq, inv = np.unique(v.astype(str), return_inverse=True)
+    enc = np.array([json.dumps(str(u)) for u in uniq], dtype=object)
+    return enc[inv].tolist()
+
+
+def _csv_column(v: NDArray[Any]) -> list[str]:
+    kind = v.dtype.kind
+    if kind == "b":
+        return np.where(v, "true", "false").tolist()
+    if kind in "iu":
+        return list(map(repr, v.tolist()))
+    if kind == "f":
+        vals = v.astype(float, copy=False)
+        text = list(map(float.__repr__, vals.tolist()))
+        for i in np.flatnonzero(~np.isfinite(vals)):
+            text[i] = ""
+        return text
+    uniq, inv = np.unique(v.astype(str), return_inverse=True)
+    enc = np.array([_csv_quote(str(u)) for u in uniq], dtype=object)
+    return enc[inv].tolist()
+
+
+def _csv_quote(s: str) -> str:
+    if any(c in s for c in ',"\n\r'):
+        return '"' + s.replace('"', '""') + '"'
+    return s
+
+
+def _records_json(table: Table, indent: int | None, level: int) -> list[str]:
+    """One JSON object per row, as strings, indented for ``level`` when ``indent`` is set."""
+    keys = list(table.columns)
+    if not keys:
+        return ["{}"] * table.size
+    enc = [_json_column(v) for v in table.columns.values()]
+    names = [json.dumps(k) for k in keys]
+    if indent is None:
+        parts = [("{" if i == 0 else ",") + f"{n}:" for i, n in enumerate(names)]
+        template = "".join(p + "%s" for p in parts) + "}"
+    else:
+        pad = " " * (indent * (level + 1))
+        close = " " * (indent * level)
+        template = "{\n" + ",\n".join(f"{pad}{n}: %s" for n in names) + f"\n{close}}}"
+    return [template % row for row in zip(*enc, strict=True)]
+
+
+def _dumps(obj: Any, indent: int | None) -> str:
+    if indent is None:
+        return json.dumps(obj, separators=(",", ":"), allow_nan=False)
+    return json.dumps(obj, indent=indent, allow_nan=False)
+
+
+def render(table: Table, fmt: str, *, indent: int | None = None) -> str:
+    """The text of ``table`` in format ``fmt`` (one of :data:`FORMATS`), ending in a newline.
+
+    Parameters
+    ----------
+    table : Table
+    fmt : {"table", "json", "jsonl", "csv"}
+    indent : int, optional
+        Indentation of the ``json`` format (compact when None).
+    """
+    return "".join(_chunks(table, fmt, indent))
+
+
+def _chunks(table: Table, fmt: str, indent: int | None) -> Iterable[str]:
+    if fmt not in FORMATS:
+        raise ValueError(f"format must be one of {', '.join(FORMATS)}, got {fmt!r}")
+    if indent is not None and (
+        isinstance(indent, bool) or not isinstance(indent, int) or not 0 <= indent <= 16
+    ):
+        raise ValueError(f"indent must be an integer in [0, 16], got {indent!r}")
+    head = table.provenance()
+    if fmt == "json":
+        body = _dumps(head, indent)
+        if indent is None:
+            recs = _records_json(table, None, 0)
+            yield body[:-1] + ',"results":[' + ",".join(recs) + "]}\n"
+        else:
+            # the provenance object reopened (its closing "\n}" cut) to append the results
+            pad = " " * indent
+            recs = _records_json(table, indent, 2)
+            res = "[\n" + ",\n".join(pad * 2 + r for r in recs) + "\n" + pad + "]" if recs else "[]"
+            yield body[:-2] + ",\n" + pad + '"results": ' + res + "\n}\n"
+    elif fmt == "jsonl":
+        yield _dumps(head, None) + "\n"
+        recs = _records_json(table, None, 0)
+        if recs:
+            yield "\n".join(recs) + "\n"
+    elif fmt == "csv":
+        for k, v in head.items():
+            yield f"# {k}: {_dumps(v, None)}\n"
+        yield ",".join(_csv_quote(k) for k in table.columns) + "\n"
+        enc = [_csv_column(v) for v in table.columns.values()]
+        if enc and table.size:
+            yield "\n".join(",".join(row) for row in zip(*enc, strict=True)) + "\n"
+    else:
+        yield _format_table(table)
+
+
+# --------------------------------------------------------------------------------------------
+# the human-readable table
+
+
+def _table_column(name: str, v: NDArray[Any], scale: NDArray[Any] | None) -> list[str]:
+    kind = v.dtype.kind
+    if kind == "b":
+        return np.where(v, "yes", "no").tolist()
+    if kind in "iu":
+        return list(map(str, v.tolist()))
+    if kind == "f":
+        vals = v.astype(float, copy=False)
+        fin = np.isfinite(vals)
+        big = float(np.max(np.abs(vals[fin]))) if fin.any() else 0.0
+        ref = np.full(vals.shape, big) if scale is None else np.maximum(np.abs(scale), 0.0)
+        with np.errstate(invalid="ignore"):
+            zero = fin & (np.abs(vals) <= ROUND_OFF * ref)
+        text = [f"{x:.6g}" for x in vals.tolist()]
+        for i in np.flatnonzero(zero):
+            text[i] = "0"
+        for i in np.flatnonzero(~fin):
+            text[i] = "-" if np.isnan(vals[i]) else text[i]
+        return text
+    return [str(x) for x in v.tolist()]
+
+
+def _format_table(table: Table) -> str:
+    lines = []
+    if table.title:
+        lines.append(f"# {table.title}")
+    if table.parameters:
+        items = []
+        for k, v in table.parameters.items():
+            unit = table.units.get(k)
+            txt = f"{v:.6g}" if isinstance(v, float) else str(v)
+            items.append(f"{k} = {txt}" + (f" {unit}" if unit and unit != "1" else ""))
+        lines.append("# " + ", ".join(items))
+    keys = list(table.columns)
+    if not keys:
+        return "\n".join(lines) + "\n"
+    cols = [_table_column(k, v, table.scales.get(k)) for k, v in table.columns.items()]
+    heads = [k if table.units.get(k) in (None, "1") else f"{k} [{table.units[k]}]" for k in keys]
+    widths = [
+        max(len(h), *(len(s) for s in c)) if c else len(h) for h, c in zip(heads, cols, strict=True)
+    ]
+    lines.append("  ".join(h.rjust(w) for h, w in zip(heads, widths, strict=True)))
+    for row in zip(*cols, strict=True):
+        lines.append("  ".join(s.rjust(w) for s, w in zip(row, widths, strict=True)))
+    return "\n".join(lines) + "\n"
+
+
+# --------------------------------------------------------------------------------------------
+# writing
+
+
+def write(
+    table: Table,
+    fmt: str,
+    path: str | os.PathLike[str] | None = None,
+    *,
+    indent: int | None = None,
+    stream: IO[str] | None = None,
+) -> None:
+    """Write ``table`` in format ``fmt`` to the file ``path``, or to ``stream`` (stdout).
+
+    A file is written atomically: to a temporary file in its directory, then renamed over
+    ``path``; on any failure the temporary file is removed and nothing is left behind.
+
+    Raises
+    ------
+    ValueError
+        If ``fmt`` or ``indent`` is invalid.
+    OSError
+        If the file cannot be written (missing directory, no permission, ...).
+    """
+    if path is None:
+        out = sys.stdout if stream is None else stream
+        for chunk in _chunks(table, fmt, indent):
+            out.write(chunk)
+        out.flush()
+        return
+    target = os.fspath(path)
+    directory = os.path.dirname(os.path.abspath(target))
+    chunks = list(_chunks(table, fmt, indent))  # format errors before touching the disk
+    fd, tmp = tempfile.mkstemp(prefix=".linecontact-", suffix=".tmp", dir=directory)
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
+            for chunk in chunks:
+                fh.write(chunk)
+        os.replace(tmp, target)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
