@@ -23,6 +23,13 @@ def run(capsys, *argv):
     return code, out, err
 
 
+def records(text):
+    """The records of a --json output, each with the run's parameters merged in."""
+    doc = json.loads(text)
+    assert set(doc) == {"linecontact", "command", "parameters", "units", "results"}
+    return [{**doc["parameters"], **r} for r in doc["results"]]
+
+
 def test_normal_json_contract(capsys):
     code, out, err = run(
         capsys,
@@ -37,7 +44,7 @@ def test_normal_json_contract(capsys):
         "--json",
     )
     assert code == 0, err
-    recs = json.loads(out)
+    recs = records(out)
     assert len(recs) == 2
     ref = normal_contact([0.01, 0.05], 100, 0.01)
     for rec, a, c, F in zip(recs, ref.a_over_R, ref.c_over_R, ref.F_over_Eh, strict=True):
@@ -61,7 +68,7 @@ def test_normal_range_and_collocation(capsys):
         "--json",
     )
     assert code == 0
-    recs = json.loads(out)
+    recs = records(out)
     np.testing.assert_allclose([r["a_over_R"] for r in recs], np.linspace(0.01, 0.05, 5))
     assert all(r["method"] == "collocation" and r["n_collocation"] >= 16 for r in recs)
 
@@ -83,7 +90,7 @@ def test_normal_inverse_branches(capsys):
         "--json",
     )
     assert code == 0
-    rec = json.loads(out)[0]
+    rec = records(out)[0]
     assert rec["stable"] is False and rec["a_over_R"] < po.a_over_R_at_pulloff
     assert math.isclose(rec["F_over_Eh"], F, rel_tol=1e-9)
 
@@ -91,11 +98,11 @@ def test_normal_inverse_branches(capsys):
 def test_pulloff_json(capsys):
     code, out, _ = run(capsys, "pulloff", "--R-over-h", "100", "--sigma0-over-E", "0.01", "--json")
     assert code == 0
-    rec = json.loads(out)
+    (rec,) = records(out)
     assert rec["mechanism"] == "zero-width" and rec["a_over_R_at_pulloff"] == 0
     assert rec["F_pulloff_over_Eh"] == rec["F_zero_width_over_Eh"] == zero_width_load(100, 0.01)
     code, out, _ = run(capsys, "pulloff", "--R-over-h", "100", "--sigma0-over-E", "0.2", "--json")
-    rec = json.loads(out)
+    (rec,) = records(out)
     assert rec["mechanism"] == "snap-off" and rec["a_over_R_at_pulloff"] > 0
     assert rec["F_pulloff_over_Eh"] < rec["F_zero_width_over_Eh"] < 0
 
@@ -116,7 +123,7 @@ def test_si_mode_matches_groups(capsys):
         "--json",
     )
     assert code == 0
-    rec = json.loads(out)
+    (rec,) = records(out)
     assert math.isclose(rec["F_pulloff_over_Eh"], zero_width_load(100, 0.01), rel_tol=1e-12)
     assert math.isclose(
         rec["F_pulloff_N_per_m"], rec["F_pulloff_over_Eh"] * 100e9 * 0.5e-9, rel_tol=1e-12
@@ -141,7 +148,14 @@ def test_curve_csv_and_json(capsys, tmp_path):
     )
     assert code == 0 and "wrote" in err
     text = target.read_text().splitlines()
-    assert text[0].startswith("# linecontact") and any("pull-off" in t for t in text[:6])
+    head = [t for t in text if t.startswith("#")]
+    assert [t.split(":")[0] for t in head] == [
+        "# linecontact",
+        "# command",
+        "# parameters",
+        "# units",
+    ]
+    assert json.loads(head[2].split(": ", 1)[1])["R_over_h"] == 100
     rows = [r for r in text if not r.startswith("#")]
     assert rows[0].split(",")[0] == "branch" and len(rows) >= 1 + 5 + 20
     code, out, _ = run(
@@ -157,11 +171,12 @@ def test_curve_csv_and_json(capsys, tmp_path):
         "5",
         "--json",
     )
-    doc = json.loads(out)
-    pts = doc["points"]
+    pts = records(out)
     assert sum(p["pulloff"] for p in pts) == 1
     assert {p["branch"] for p in pts} == {"contact", "non-contact"}
-    assert min(p["F_over_Eh"] for p in pts) == pytest.approx(doc["pulloff"]["F_pulloff_over_Eh"])
+    (po,) = [p for p in pts if p["pulloff"]]
+    assert po["F_over_Eh"] == pytest.approx(pull_off(100, 0.1).F_pulloff_over_Eh, rel=1e-12)
+    assert min(p["F_over_Eh"] for p in pts) == pytest.approx(po["F_over_Eh"])
 
 
 def test_cite_and_version(capsys):
@@ -175,15 +190,14 @@ def test_cite_and_version(capsys):
 BAD = [
     (
         ["normal", "--R-over-h", "-1", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],
-        "R_over_h must be in",
+        "--R-over-h must be in",
     ),
     (
         ["normal", "--R-over-h", "100", "--sigma0-over-E", "0.01", "--a-over-R", "0"],
-        "a_over_R must be in",
+        "--a-over-R must be in",
     ),
     (["normal", "--R-over-h", "100", "--sigma0-over-E", "0.01"], "exactly one of"),
-    (["normal", "--R-over-h", "100", "--sigma0-over-E", "0.2", "--F-over-Eh", "-100"], "pull-off"),
-    (["pulloff", "--R-over-h", "100", "--sigma0-over-E", "nan"], "sigma0_over_E"),
+    (["pulloff", "--R-over-h", "100", "--sigma0-over-E", "nan"], "--sigma0-over-E"),
     (["pulloff", "--R-over-h", "100"], "--sigma0-over-E"),
     (["pulloff", "--R-over-h", "100", "--sigma0-over-E", "0.1", "--radius", "1e-8"], "not both"),
     (
@@ -204,7 +218,7 @@ BAD = [
             "--h",
             "1e-9",
         ],
-        "nu1 must be in",
+        "--nu1 must be in",
     ),
     (["normal", "--R-over-h", "x", "--sigma0-over-E", "0.1", "--a-over-R", "0.1"], "invalid float"),
     (["curve", "--R-over-h", "100", "--sigma0-over-E", "0.1", "--num", "1"], "num must be"),
@@ -249,7 +263,7 @@ def test_module_entry_point():
         timeout=120,
     )
     assert p.returncode == 0, p.stderr
-    assert json.loads(p.stdout)["mechanism"] in ("zero-width", "snap-off")
+    assert records(p.stdout)[0]["mechanism"] in ("zero-width", "snap-off")
 
 
 @pytest.mark.skipif(
@@ -288,6 +302,6 @@ def test_coupling_warning_is_one_line(capsys):
         "0.5e-9",
         "--json",
     )
-    assert code == 0 and json.loads(out)["mechanism"] in ("zero-width", "snap-off")
+    assert code == 0 and records(out)[0]["mechanism"] in ("zero-width", "snap-off")
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("linecontact pulloff: warning: Dundurs beta")

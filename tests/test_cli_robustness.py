@@ -18,6 +18,13 @@ def run(capsys, *argv):
     return code, out, err
 
 
+def records(text):
+    """The records of a --json output, each with the run's parameters merged in."""
+    doc = json.loads(text)
+    assert set(doc) == {"linecontact", "command", "parameters", "units", "results"}
+    return [{**doc["parameters"], **r} for r in doc["results"]]
+
+
 def strict_json(text):
     def refuse(c):
         raise ValueError(f"not strict JSON: {c}")
@@ -62,10 +69,10 @@ def strict_json(text):
             r"--a-over-R-range NUM must be an integer in \[1, 1000000\], got nan",
         ),
         (["curve", *G, "--num", "1000001"], r"--num must be an integer in \[2, 1000000\]"),
-        (["normal", *G, "--F-over-Eh", "-inf"], r"F_over_Eh must be a finite number, got -inf"),
+        (["normal", *G, "--F-over-Eh", "-inf"], r"--F-over-Eh must be a finite number, got -inf"),
         (
             ["slide-init", "--tau0-over-E", "0.01", "--d-over-a", "-1e-1"],
-            r"d_over_a must be in \[0, 1\), got -0.1",
+            r"--d-over-a must be in \[0, 1\), got -0.1",
         ),
         (
             [
@@ -79,7 +86,7 @@ def strict_json(text):
                 "--T-over-Ea",
                 "-1",
             ],
-            r"T_over_Ea must be in \[0, inf\), got -1.0",
+            r"--T-over-Ea must be in \[0, inf\), got -1.0",
         ),
         (
             ["pulloff", "--radius", "50e-9", "--modulus", "100e9", "--sigma0", "1e9"],
@@ -113,7 +120,7 @@ def strict_json(text):
                 "--z0",
                 "0.3e-9",
             ],
-            r"work_of_adhesion=1e\+300 and equilibrium_spacing=3e-10 give sigma0",
+            r"--work-of-adhesion=1e\+300 and --z0=3e-10 give sigma0",
         ),
         (
             [
@@ -129,11 +136,11 @@ def strict_json(text):
                 "--load",
                 "1",
             ],
-            r"cohesive_stress/modulus \(sigma0/E\) = inf is not a finite positive",
+            r"--sigma0/--modulus \(sigma0/E\) = inf is not a finite positive",
         ),
         (
             ["pulloff", "--R-over-h", "100", "--sigma0-over-E", "1e300", "--json"],
-            r"kappa = \(4/pi\) sigma0_over_E sqrt\(2 R_over_h\) must be <= 1e\+12",
+            r"kappa = \(4/pi\) --sigma0-over-E sqrt\(2 --R-over-h\) must be <= 1e\+12",
         ),
     ],
 )
@@ -172,16 +179,31 @@ def test_negative_numbers_in_scientific_notation(capsys, argv, key, value):
     argument'."""
     code, out, err = run(capsys, *argv)
     assert code == 0, err
-    rec = strict_json(out)[0]
+    rec = records(out)[0]
     assert rec[key] == pytest.approx(value, rel=1e-9)
 
 
 def test_solver_failure_exit_1_one_line(capsys):
+    # the only point does not converge: its record says so, and the run exits 1
     code, out, err = run(
         capsys, "normal", *G, "--a-over-R", "1e-300", "--method", "collocation", "--json"
     )
-    assert code == 1 and out == "" and err.count("\n") == 1
-    assert "did not converge" in err and "RuntimeWarning" not in err
+    assert code == 1 and err.count("\n") == 1
+    assert "no point could be computed" in err and "did not converge" in err
+    assert "RuntimeWarning" not in err
+    (rec,) = records(out)
+    assert rec["state"] == "not-converged" and rec["c_over_R"] is None
+    assert rec["converged"] is False and "did not converge" in rec["reason"]
+
+
+def test_one_unconverged_point_does_not_fail_the_run(capsys):
+    code, out, err = run(
+        capsys, "normal", *G, "--a-over-R", "1e-300", "0.05", "--method", "collocation", "--json"
+    )
+    assert code == 0 and err == ""
+    bad, good = records(out)
+    assert bad["state"] == "not-converged" and bad["F_over_Eh"] is None
+    assert good["state"] == "contact" and good["converged"] is True and good["reason"] is None
 
 
 @pytest.mark.parametrize(
@@ -210,6 +232,9 @@ def test_options_that_do_not_apply_are_refused(capsys, argv, message):
 
 @pytest.mark.parametrize("cmd", [["normal"], ["slide-init", "--tau0", "1e8", "--d-over-a", "0.5"]])
 def test_si_load_below_pull_off_in_newton_per_metre(capsys, cmd):
-    code, _, err = run(capsys, *cmd, *SI, "--load", "-1000")
-    assert code == 2 and err.count("\n") == 1
-    assert "no contact carries load=-1000.0 N/m: it is below the pull-off force" in err, err
+    code, out, err = run(capsys, *cmd, *SI, "--load", "-1000", "--json")
+    assert code == 1 and err.count("\n") == 1, err
+    assert "no point could be computed" in err and "below the pull-off force" in err, err
+    assert "N/m" in err
+    for rec in records(out):
+        assert rec["state"] == "no-equilibrium" and "N/m" in rec["reason"]

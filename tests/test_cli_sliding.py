@@ -19,10 +19,17 @@ def run(capsys, *argv):
     return code, out, err
 
 
+def records(text):
+    """The records of a --json output, each with the run's parameters merged in."""
+    doc = json.loads(text)
+    assert set(doc) == {"linecontact", "command", "parameters", "units", "results"}
+    return [{**doc["parameters"], **r} for r in doc["results"]]
+
+
 def test_json_contract(capsys):
     code, out, err = run(capsys, "slide", *GROUPS, "--a-over-R", "0.01", "0.02", "--json")
     assert code == 0, err
-    recs = json.loads(out)
+    recs = records(out)
     assert len(recs) == 2
     ref = sliding_contact([0.01, 0.02], 100.0, 1.5, 0.01)
     for i, rec in enumerate(recs):
@@ -43,7 +50,8 @@ def test_table_range_and_closed_form(capsys):
     lines = out.strip().splitlines()
     assert lines[0].startswith("# steady sliding") and "closed-form" in lines[0]
     assert "clockwise" in lines[0]
-    assert lines[1].split()[:6] == [
+    assert lines[1].startswith("# R_over_h2 = 100, h1_over_h2 = 1.5")
+    assert lines[2].split()[:6] == [
         "a_over_R",
         "c1_over_R",
         "c2_over_R",
@@ -51,7 +59,7 @@ def test_table_range_and_closed_form(capsys):
         "F_over_Eh2",
         "M_over_Eh2R",
     ]
-    assert len(lines) == 2 + 3
+    assert len(lines) == 3 + 3
 
 
 def test_inverse_with_friction(capsys):
@@ -72,7 +80,7 @@ def test_inverse_with_friction(capsys):
         "--json",
     )
     assert code == 0
-    recs = json.loads(out)
+    recs = records(out)
     ref = sliding_contact_for_load([-0.5, 1.0], 100.0, 2.0, 0.04, tau0_over_E=0.01)
     np.testing.assert_array_equal([r["a_over_R"] for r in recs], ref.a_over_R)
     np.testing.assert_array_equal([r["T_over_Eh2"] for r in recs], ref.T_over_Eh2)
@@ -95,7 +103,7 @@ def test_si_mode_matches_groups(capsys):
     ]
     code, out, err = run(capsys, "slide", *si, "--a", "1e-9", "--tau0", "5e8", "--json")
     assert code == 0, err
-    rec = json.loads(out)[0]
+    rec = records(out)[0]
     ref = sliding_contact(0.02, 100.0, 1.5, 0.01, tau0_over_E=0.005)
     for k in ("c1_over_R", "c2_over_R", "e_over_R", "F_over_Eh2", "M_over_Eh2R"):
         assert math.isclose(rec[k], getattr(ref, k), rel_tol=1e-12), k
@@ -107,7 +115,7 @@ def test_si_mode_matches_groups(capsys):
     # a load in N/m is the same state
     code, out, _ = run(capsys, "slide", *si, "--load", repr(rec["F_N_per_m"]), "--json")
     assert code == 0
-    assert math.isclose(json.loads(out)[0]["a_m"], 1e-9, rel_tol=1e-9)
+    assert math.isclose(records(out)[0]["a_m"], 1e-9, rel_tol=1e-9)
 
 
 BAD = [
@@ -122,15 +130,15 @@ BAD = [
             "--a-over-R",
             "0.01",
         ],
-        "h1_over_h2 must be in (0, inf), got -1.0",
+        "--h1-over-h2 must be in (0, inf), got -1.0",
     ),
     (
         ["--R-over-h2", "0", "--h1-over-h2", "2", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],
-        "R_over_h2 must be in (0, inf), got 0.0",
+        "--R-over-h2 must be in (0, inf), got 0.0",
     ),
     (
         ["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "nan", "--a-over-R", "0.01"],
-        "sigma0_over_E must be a finite number",
+        "--sigma0-over-E must be a finite number",
     ),
     (
         [
@@ -143,7 +151,7 @@ BAD = [
             "--a-over-R",
             "-0.01",
         ],
-        "a_over_R must be in (0, inf), got -0.01",
+        "--a-over-R must be in (0, inf), got -0.01",
     ),
     (
         ["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.01"],
@@ -156,19 +164,6 @@ BAD = [
     (
         ["--h1-over-h2", "2", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],
         "give --R-over-h2, --h1-over-h2 and --sigma0-over-E",
-    ),
-    (
-        [
-            "--R-over-h2",
-            "100",
-            "--h1-over-h2",
-            "2",
-            "--sigma0-over-E",
-            "0.04",
-            "--F-over-Eh2",
-            "-5",
-        ],
-        "below the pull-off force",
     ),
     (
         [
@@ -217,7 +212,7 @@ BAD = [
             "--a-over-R",
             "0.01",
         ],
-        "tau0_over_E must be in [0, inf)",
+        "--tau0-over-E must be in [0, inf)",
     ),
 ]
 
@@ -236,3 +231,16 @@ def test_help_states_the_conventions(capsys):
     assert exc.value.code == 0
     out = " ".join(capsys.readouterr().out.split())
     assert "clockwise positive" in out and "--h1-over-h2" in out and "--h2" in out
+
+
+def test_load_below_pull_off_is_a_record(capsys):
+    argv = ["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.04"]
+    code, out, err = run(capsys, "slide", *argv, "--F-over-Eh2", "-5", "1", "--json")
+    assert code == 0 and err == ""
+    below, ok = records(out)
+    assert below["state"] == "no-equilibrium" and "below the pull-off force" in below["reason"]
+    assert below["F_over_Eh2"] == -5 and below["a_over_R"] is None and below["stable"] is False
+    assert ok["state"] == "contact" and ok["F_over_Eh2"] == pytest.approx(1, rel=1e-9)
+    code, out, err = run(capsys, "slide", *argv, "--F-over-Eh2", "-5")
+    assert code == 1 and err.count("\n") == 1 and "no point could be computed" in err
+    assert "no-equilibrium" in out

@@ -24,12 +24,19 @@ def run(capsys, *argv):
     return code, out, err
 
 
+def records(text):
+    """The records of a --json output, each with the run's parameters merged in."""
+    doc = json.loads(text)
+    assert set(doc) == {"linecontact", "command", "parameters", "units", "results"}
+    return [{**doc["parameters"], **r} for r in doc["results"]]
+
+
 def test_slide_init_json_contract(capsys):
     code, out, err = run(
         capsys, "slide-init", "--tau0-over-E", "0.01", "--d-over-a", "0.2", "0.5", "--json"
     )
     assert code == 0, err
-    recs = json.loads(out)
+    recs = records(out)
     ref = sliding_initiation(0.01, [0.2, 0.5])
     assert [r["d_over_a"] for r in recs] == [0.2, 0.5]
     assert [r["T_over_Ea"] for r in recs] == list(ref.T_over_Ea)
@@ -41,7 +48,7 @@ def test_roll_json_contract(capsys):
         capsys, "roll", "--tau0-over-E", "0.01", "--d-over-a", "-0.5", "0.5", "--json"
     )
     assert code == 0, err
-    recs = json.loads(out)
+    recs = records(out)
     ref = steady_rolling(0.01, [-0.5, 0.5])
     for rec, T, c in zip(recs, ref.T_over_Ea, ref.creep_over_V, strict=True):
         assert set(rec) >= {"d_over_a", "T_over_Ea", "creep_over_V", "state"}
@@ -62,7 +69,7 @@ def test_given_load_with_sliding_is_reported_not_an_error(capsys):
         "--json",
     )
     assert code == 0, err
-    ok, sliding = json.loads(out)
+    ok, sliding = records(out)
     assert ok["state"] == "stick-slip" and ok["converged"] is True
     assert ok["n_collocation"] > 0 and ok["residual_force"] < 1e-12
     assert ok["d_over_a"] == pytest.approx(-0.5, abs=1e-13)
@@ -79,9 +86,10 @@ def test_table_output(capsys):
     code, out, _ = run(capsys, "slide-init", "--tau0-over-E", "0.01", "--T-over-Ea", "0.01", "0.02")
     assert code == 0
     lines = out.splitlines()
-    assert lines[0].startswith("# initiation of sliding, tau0/E = 0.01")
-    assert lines[1].split() == ["d_over_a", "T_over_Ea", "T_over_T_full_slip", "state"]
-    assert lines[2].split()[-1] == "stick-slip" and lines[3].split()[-1] == "sliding"
+    assert lines[0].startswith("# initiation of sliding, constant friction stress")
+    assert "tau0_over_E = 0.01" in lines[1]
+    assert lines[2].split() == ["d_over_a", "T_over_Ea", "T_over_T_full_slip", "state"]
+    assert lines[3].split()[-1] == "stick-slip" and lines[4].split()[-1] == "sliding"
 
 
 def test_coulomb_nondimensional(capsys):
@@ -99,7 +107,7 @@ def test_coulomb_nondimensional(capsys):
         "--json",
     )
     assert code == 0, err
-    (rec,) = json.loads(out)
+    (rec,) = records(out)
     ref = steady_rolling_coulomb(0.3, 0.01, T_over_muF=0.75)
     assert rec["friction"] == "coulomb" and rec["T_over_muF"] == 0.75
     assert rec["d_over_a"] == ref.d_over_a == pytest.approx(0.0, abs=1e-15)
@@ -118,7 +126,7 @@ def test_coulomb_nondimensional(capsys):
         repr(float(ref.T_over_Ea)),
         "--json",
     )
-    (rec,) = json.loads(out)
+    (rec,) = records(out)
     assert rec["T_over_muF"] == pytest.approx(0.75, rel=1e-14)
     assert rec["d_over_a"] == pytest.approx(
         sliding_initiation_coulomb(0.3, 0.01, T_over_muF=0.75).d_over_a, rel=1e-14
@@ -142,7 +150,7 @@ def test_normal_problem_from_the_groups(capsys):
         "--json",
     )
     assert code == 0, err
-    (rec,) = json.loads(out)
+    (rec,) = records(out)
     assert rec["a_over_R"] == contact_for_load(0.5, 100, 0.01).a_over_R
     assert rec["F_over_Eh"] == 0.5
 
@@ -168,7 +176,7 @@ def test_si_mode_matches_the_api(capsys):
     ]
     code, out, err = run(capsys, "slide-init", *argv)
     assert code == 0, err
-    recs = json.loads(out)
+    recs = records(out)
     cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
     ref = cylinder_sliding_initiation(cyl, 1.0, friction_stress=1e9, tangential_load=[1, 5])
     assert [r["d_m"] for r in recs] == list(ref.stick_zone_end)
@@ -179,7 +187,7 @@ def test_si_mode_matches_the_api(capsys):
     code, out, _ = run(
         capsys, "slide-init", *argv[:-4], "--T-over-Ea", repr(recs[1]["T_over_Ea"]), "--json"
     )
-    assert json.loads(out)[0]["d_over_a"] == pytest.approx(recs[1]["d_over_a"], rel=1e-12)
+    assert records(out)[0]["d_over_a"] == pytest.approx(recs[1]["d_over_a"], rel=1e-12)
 
 
 def test_si_mode_coulomb_needs_no_adhesion_range(capsys):
@@ -207,7 +215,7 @@ def test_si_mode_coulomb_needs_no_adhesion_range(capsys):
         "--json",
     )
     assert code == 0, err
-    (rec,) = json.loads(out)
+    (rec,) = records(out)
     E = 1 / (2 * (1 - 0.09) / 200e9)
     a = math.sqrt(4 * 1e4 * 1e-3 / (math.pi * E))
     assert rec["a_m"] == pytest.approx(a, rel=1e-12)
@@ -218,23 +226,23 @@ def test_si_mode_coulomb_needs_no_adhesion_range(capsys):
 BAD = [
     (
         ["slide-init", "--tau0-over-E", "0", "--d-over-a", "0.5"],
-        "tau0_over_E must be in (0, inf), got 0.0",
+        "--tau0-over-E must be in (0, inf), got 0.0",
     ),
     (
         ["roll", "--tau0-over-E", "0.01", "--d-over-a", "1.5"],
-        "d_over_a must be in (-1, 1), got 1.5",
+        "--d-over-a must be in (-1, 1), got 1.5",
     ),
     (
         ["slide-init", "--tau0-over-E", "0.01", "--d-over-a", "1"],
-        "d_over_a must be in [0, 1), got 1.0",
+        "--d-over-a must be in [0, 1), got 1.0",
     ),
     (
         ["roll", "--tau0-over-E", "nan", "--d-over-a", "0.5"],
-        "tau0_over_E must be a finite number in (0, inf), got nan",
+        "--tau0-over-E must be a finite number in (0, inf), got nan",
     ),
     (
         ["roll", "--tau0-over-E", "0.01", "--T-over-Ea", "-1"],
-        "T_over_Ea must be in [0, inf), got -1.0",
+        "--T-over-Ea must be in [0, inf), got -1.0",
     ),
     (
         ["roll", "--tau0-over-E", "0.01"],
@@ -270,7 +278,7 @@ BAD = [
             "--d-over-a",
             "0.5",
         ],
-        "mu must be in (0, inf), got 0.0",
+        "--mu must be in (0, inf), got 0.0",
     ),
     (
         [
@@ -429,7 +437,7 @@ def test_collocation_diagnostics_in_records(capsys):
         "collocation",
         "--json",
     )
-    (rec,) = json.loads(out)
+    (rec,) = records(out)
     assert rec["method"] == "collocation" and rec["n_collocation"] >= 16
     assert rec["residual_stick"] < 1e-12 and rec["converged"] is True
     assert rec["T_over_Ea"] == pytest.approx(2 * 0.02 * np.sqrt(1 - 0.81), rel=1e-13)

@@ -12,7 +12,8 @@ length over ``E h``, stresses over ``E``; compressive load positive):
   steady sliding with different trailing and leading adhesion (:mod:`linecontact.sliding`);
 - :mod:`linecontact.reference` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14);
 - :mod:`linecontact.sie` -- the Gauss--Chebyshev singular-integral core;
-- :class:`Cylinder` -- the SI layer (materials, adhesion as (sigma0, h) or (w, z0)).
+- :class:`Cylinder` -- the SI layer (materials, adhesion as (sigma0, h) or (w, z0));
+- :mod:`linecontact.output` -- results to JSON, JSON Lines, CSV or tables, with provenance.
 """
 
 from ._version import __version__
@@ -21,7 +22,7 @@ from .cylinder import (
     cylinder_sliding_initiation,
     cylinder_steady_rolling,
 )
-from .errors import ConvergenceError, CouplingWarning, NoEquilibriumError
+from .errors import ConvergenceError, CouplingWarning, ModelValidityWarning, NoEquilibriumError
 from .materials import (
     adhesion_from_work,
     compliance_constants,
@@ -57,14 +58,19 @@ __all__ = [
     "ConvergenceError",
     "CouplingWarning",
     "Cylinder",
+    "ModelValidityWarning",
     "NoEquilibriumError",
     "NormalContact",
     "PullOff",
+    "SlidingContact",
+    "SlidingPullOff",
     "__version__",
     "adhesion_from_work",
     "compliance_constants",
     "composite_modulus",
     "contact_for_load",
+    "cylinder_sliding_initiation",
+    "cylinder_steady_rolling",
     "dundurs_beta",
     "equilibria",
     "hertz_load",
@@ -75,20 +81,12 @@ __all__ = [
     "non_contact",
     "normal_contact",
     "pull_off",
-    "zero_width_load",
-]
-__all__ += [
-    "cylinder_sliding_initiation",
-    "cylinder_steady_rolling",
-    "sliding_initiation",
-    "sliding_initiation_coulomb",
-    "steady_rolling",
-    "steady_rolling_coulomb",
-]
-__all__ += [
-    "SlidingContact",
-    "SlidingPullOff",
     "sliding_contact",
     "sliding_contact_for_load",
+    "sliding_initiation",
+    "sliding_initiation_coulomb",
     "sliding_pull_off",
+    "steady_rolling",
+    "steady_rolling_coulomb",
+    "zero_width_load",
 ]

@@ -19,7 +19,7 @@ from numpy.typing import ArrayLike, NDArray
 from . import normal as _normal
 from . import reference as _ref
 from ._validation import broadcast, check_array, non_negative, positive, scalar
-from .errors import CouplingWarning, NoEquilibriumError
+from .errors import CouplingWarning, ModelValidityWarning, NoEquilibriumError
 from .materials import BETA_WARN, _adhesion, _moduli, composite_modulus, dundurs_beta
 from .tangential import (
     sliding_initiation,
@@ -31,6 +31,7 @@ from .tangential.initiation import _CATTANEO_MINDLIN, _INITIATION
 from .tangential.rolling import _CARTER, _ROLLING
 
 __all__ = [
+    "PLAUSIBLE",
     "Cylinder",
     "CylinderContact",
     "CylinderPullOff",
@@ -38,6 +39,31 @@ __all__ = [
     "cylinder_sliding_initiation",
     "cylinder_steady_rolling",
 ]
+
+
+#: Plausible SI values: (low, high, unit, what a value outside suggests). A value outside
+#: gives a :class:`~linecontact.errors.ModelValidityWarning` (it is still used): a radius
+#: above 1 mm or below 0.1 nm, a modulus outside 1 kPa to 2 TPa, a work of adhesion above
+#: 10 J/m^2, an adhesion range above 10 nm are most often a value in the wrong units.
+PLAUSIBLE = {
+    "radius": (1e-10, 1e-3, "m", "radius"),
+    "modulus": (1e3, 2e12, "Pa", "modulus"),
+    "work_of_adhesion": (0.0, 10.0, "J/m^2", "work of adhesion"),
+    "adhesion_range": (0.0, 10e-9, "m", "adhesion range"),
+}
+
+
+def _plausible(name: str, value: float, stacklevel: int = 3) -> None:
+    lo, hi, unit, what = PLAUSIBLE[name]
+    if not lo <= value <= hi:
+        side = "above" if value > hi else "below"
+        bound = hi if value > hi else lo
+        warnings.warn(
+            f"{name} = {value:g} {unit} is {side} {bound:g} {unit}: is the {what} in {unit}? "
+            "(linecontact takes SI units)",
+            ModelValidityWarning,
+            stacklevel=stacklevel,
+        )
 
 
 @dataclass(frozen=True)
@@ -54,6 +80,9 @@ class CylinderContact:
         ``F`` [N/m], compressive positive.
     stable : ndarray or bool
         Stable under load control.
+    state : ndarray of str or str
+        ``"contact"``, or ``"no-equilibrium"`` for a load no contact carries (reported with
+        ``on_no_equilibrium="report"``; its values are NaN).
     nondimensional : NormalContact
         The underlying result with diagnostics.
     """
@@ -62,6 +91,7 @@ class CylinderContact:
     adhesive_zone_half_width: NDArray | float
     load: NDArray | float
     stable: NDArray | bool
+    state: NDArray | str
     nondimensional: _normal.NormalContact = field(repr=False)
 
 
@@ -147,6 +177,11 @@ class Cylinder:
                     f"{self.cohesive_stress!r}, adhesion_range="
                     f"{self.adhesion_range!r} are too far apart in scale"
                 )
+        _plausible("radius", self.radius, 4)
+        _plausible("modulus", self.modulus, 4)
+        if self.cohesive_stress > 0:  # without adhesion the range only sets a length scale
+            _plausible("work_of_adhesion", self.work_of_adhesion, 4)
+            _plausible("adhesion_range", self.adhesion_range, 4)
 
     @classmethod
     def from_modulus(
@@ -186,6 +221,14 @@ class Cylinder:
                 raise ValueError(f"{name} must be a single number, got an array of shape {v.shape}")
         E = float(composite_modulus(E1, nu1, E2, nu2))
         beta = float(dundurs_beta(E1, nu1, E2, nu2))
+        for name, v in (("E1", E1), ("E2", E2)):
+            if np.isfinite(v) and not PLAUSIBLE["modulus"][0] <= v <= PLAUSIBLE["modulus"][1]:
+                warnings.warn(
+                    f"{name} = {float(v):g} Pa is outside 1 kPa to 2 TPa: is the modulus in Pa? "
+                    "(linecontact takes SI units)",
+                    ModelValidityWarning,
+                    stacklevel=2,
+                )
         if abs(beta) > BETA_WARN:
             warnings.warn(
                 f"Dundurs beta = -B/A = {beta:.3g} is not small (|beta| > {BETA_WARN}): "
@@ -232,7 +275,7 @@ class Cylinder:
             return v.item() if np.ndim(v) == 0 else v
 
         return CylinderContact(
-            si(r.a_over_R, R), si(r.c_over_R, R), si(r.F_over_Eh, Eh), r.stable, r
+            si(r.a_over_R, R), si(r.c_over_R, R), si(r.F_over_Eh, Eh), r.stable, r.state, r
         )
 
     def contact(
@@ -242,12 +285,14 @@ class Cylinder:
         load: ArrayLike | None = None,
         method: str = "closed-form",
         branch: str = "stable",
+        on_no_equilibrium: str = "raise",
     ) -> CylinderContact:
         """The contact at given half-widths ``a`` [m] or loads ``F`` [N/m] (exactly one).
 
         For a load, ``branch`` selects the stable (default) or the unstable contact state;
-        a load below the pull-off force raises
-        :class:`~linecontact.errors.NoEquilibriumError`.
+        a load that no contact of the branch carries (below the pull-off force) raises
+        :class:`~linecontact.errors.NoEquilibriumError`, or with
+        ``on_no_equilibrium="report"`` gives ``state == "no-equilibrium"`` and NaN values.
         """
         if (contact_half_width is None) == (load is None):
             raise ValueError("give exactly one of contact_half_width or load")
@@ -259,6 +304,10 @@ class Cylinder:
             raise ValueError(
                 "the contact for a given load is found by the closed form: "
                 "method='collocation' applies to contact_half_width only"
+            )
+        if on_no_equilibrium not in ("raise", "report"):
+            raise ValueError(
+                f"on_no_equilibrium must be 'raise' or 'report', got {on_no_equilibrium!r}"
             )
         if contact_half_width is not None and branch != "stable":
             raise ValueError(
@@ -272,7 +321,7 @@ class Cylinder:
         else:
             F = check_array("load", load, low=-np.inf, low_inclusive=True)
             Eh = self.modulus * self.adhesion_range
-            if branch == "stable":
+            if branch == "stable" and on_no_equilibrium == "raise":
                 # said in the units given ([N/m]), not only as F_over_Eh
                 F_min = _normal.pull_off(self.R_over_h, self.sigma0_over_E).F_minimum_over_Eh * Eh
                 if np.any(F < F_min):
@@ -281,7 +330,13 @@ class Cylinder:
                         f"below the pull-off force, the minimum load on the contact branch "
                         f"{F_min!r} N/m; the cylinder has pulled off"
                     )
-            r = _normal.contact_for_load(F / Eh, self.R_over_h, self.sigma0_over_E, branch=branch)
+            r = _normal.contact_for_load(
+                F / Eh,
+                self.R_over_h,
+                self.sigma0_over_E,
+                branch=branch,
+                on_no_equilibrium=on_no_equilibrium,
+            )
         return self._wrap(r)
 
     def pull_off(self) -> CylinderPullOff:

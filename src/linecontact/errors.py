@@ -16,3 +16,13 @@ class CouplingWarning(UserWarning):
 
     The solvers assume the uncoupled case (B = 0 in Eq. 6 of the paper).
     """
+
+
+class ModelValidityWarning(UserWarning):
+    """An input lies where the model is doubtful, or looks like a value in the wrong units.
+
+    Issued for a contact half-width beyond the small-strain (half-plane) range of the
+    solvers (``a/R`` above :data:`linecontact.normal.A_OVER_R_SMALL_STRAIN`), and by the SI
+    layer for a radius, modulus, work of adhesion or adhesion range outside the ranges of
+    :data:`linecontact.cylinder.PLAUSIBLE`. The numbers are still computed.
+    """

@@ -99,6 +99,9 @@ class NormalContact(Result):
         All tolerances met.
     stable : ndarray or bool
         ``dF/da > 0``: the state is stable under load control.
+    state : ndarray of str or str
+        ``"contact"``; ``"no-equilibrium"`` for a load no contact carries, reported by
+        :func:`contact_for_load` with ``on_no_equilibrium="report"`` (its values are NaN).
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E", "method")
@@ -116,6 +119,7 @@ class NormalContact(Result):
     error_estimate: NDArray | float
     converged: NDArray | bool
     stable: NDArray | bool
+    state: NDArray | str
 
     @property
     def c_over_a(self):
@@ -446,6 +450,7 @@ def normal_contact(
         error_estimate=err,
         converged=converged,
         stable=stable,
+        state=np.full(A.shape, "contact"),
     )
     vals = {k: as_output(np.asarray(v), scalar) for k, v in vals.items()}
     return NormalContact(method=method, **vals)
@@ -594,7 +599,12 @@ def _solve_u_for_phi(target, kap, lo_w, hi_w, increasing):
 
 
 def contact_for_load(
-    F_over_Eh: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, branch: str = "stable"
+    F_over_Eh: ArrayLike,
+    R_over_h: ArrayLike,
+    sigma0_over_E: ArrayLike,
+    *,
+    branch: str = "stable",
+    on_no_equilibrium: str = "raise",
 ) -> NormalContact:
     r"""The contact state(s) carrying a given load (closed form).
 
@@ -608,6 +618,15 @@ def contact_for_load(
         ``"stable"``: the state with ``dF/da > 0`` (exists for ``F >= F_pulloff``);
         ``"unstable"``: the narrower state with ``dF/da < 0`` (exists only between the load
         minimum and Eq. 14).
+    on_no_equilibrium : {"raise", "report"}
+        For a load that no contact of the branch carries: raise (default), or report the
+        point with ``state == "no-equilibrium"``, NaN widths (the load kept), ``converged`` and
+        ``stable`` False (the other points are solved as usual).
+
+    Returns
+    -------
+    NormalContact
+        ``state`` is ``"contact"``, or ``"no-equilibrium"`` for the points reported.
 
     Raises
     ------
@@ -619,6 +638,11 @@ def contact_for_load(
     s = non_negative("sigma0_over_E", sigma0_over_E)
     if branch not in ("stable", "unstable"):
         raise ValueError(f"branch must be 'stable' or 'unstable', got {branch!r}")
+    if on_no_equilibrium not in ("raise", "report"):
+        raise ValueError(
+            f"on_no_equilibrium must be 'raise' or 'report', got {on_no_equilibrium!r}"
+        )
+    report = on_no_equilibrium == "report"
     scalar = scalar_or_array(F, rho, s)
     F, rho, s = (
         np.asarray(v, float) for v in broadcast(F_over_Eh=F, R_over_h=rho, sigma0_over_E=s)
@@ -626,9 +650,10 @@ def contact_for_load(
     _ref._check_kappa(rho, s)
     d = _pulloff_arrays(rho, s)
     Fmin, F0, us, kap = d["F_minimum_over_Eh"], d["F_zero_width_over_Eh"], d["us"], d["kappa"]
+    F_asked = F
     if branch == "stable":
         bad = F < Fmin
-        if bad.any():
+        if bad.any() and not report:
             i = np.flatnonzero(bad.reshape(-1))[0]
             raise NoEquilibriumError(
                 f"no contact carries F_over_Eh={float(F.reshape(-1)[i])!r}: it is below the "
@@ -636,25 +661,27 @@ def contact_for_load(
                 f"{float(Fmin.reshape(-1)[i])!r} (R_over_h={float(rho.reshape(-1)[i])!r}, "
                 f"sigma0_over_E={float(s.reshape(-1)[i])!r}); the cylinder has pulled off"
             )
+        F = np.where(bad, Fmin, F)  # a load that exists stands in for the ones reported
         hi = np.log(np.where(np.isfinite(us), us, 745.0))
         lo = np.full(F.shape, np.log(1e-12))
         u = _solve_u_for_phi(F * (2 / np.pi), kap, lo, hi, increasing=False)
     else:
         bad = ~((F > Fmin) & (F < F0))
-        if bad.any():
+        if bad.any() and not report:
             i = np.flatnonzero(bad.reshape(-1))[0]
             raise NoEquilibriumError(
                 f"no unstable contact carries F_over_Eh={float(F.reshape(-1)[i])!r}: that "
                 f"branch exists only for F_minimum_over_Eh={float(Fmin.reshape(-1)[i])!r} < "
                 f"F_over_Eh < F_zero_width_over_Eh={float(F0.reshape(-1)[i])!r}"
             )
-        lo = np.log(us)
+        F = np.where(bad, 0.5 * (Fmin + F0), F)
+        lo = np.log(np.where(bad & ~np.isfinite(us), 1.0, us))
         hi = np.full(F.shape, np.log(745.0))
         u = _solve_u_for_phi(F * (2 / np.pi), kap, lo, hi, increasing=True)
     A, C, Fc, stable = _closed_form_from_u(u, kap, rho, us)
     scale = np.maximum.reduce([np.abs(F), np.abs(F0), np.pi / 4 * A * A * rho])
     res = np.abs(Fc - F) / np.maximum(scale, 1e-300)
-    converged = np.isfinite(Fc) & (res <= _LOAD_RTOL)
+    converged = (np.isfinite(Fc) & (res <= _LOAD_RTOL)) | bad
     if not np.all(converged):
         i = np.flatnonzero(~converged.reshape(-1))[0]
         raise ConvergenceError(
@@ -664,18 +691,20 @@ def contact_for_load(
             f"{float(Fc.reshape(-1)[i])!r} (the load is outside the range of the solver)"
         )
     z = np.zeros(F.shape)
+    nan = np.where(bad, np.nan, 1.0)
     vals = dict(
-        a_over_R=A,
-        c_over_R=C,
-        F_over_Eh=Fc,
+        a_over_R=A * nan,
+        c_over_R=C * nan,
+        F_over_Eh=np.where(bad, F_asked, Fc),
         R_over_h=rho,
         sigma0_over_E=s,
         n_collocation=z.astype(int),
         residual_separation=z,
         residual_consistency=z,
-        error_estimate=res,
-        converged=converged,
-        stable=stable,
+        error_estimate=res * nan,
+        converged=converged & ~bad,
+        stable=stable & ~bad,
+        state=np.where(bad, "no-equilibrium", "contact"),
     )
     vals = {k: as_output(np.asarray(v), scalar) for k, v in vals.items()}
     return NormalContact(method="closed-form", **vals)

@@ -72,6 +72,9 @@ class Table:
         One line describing the table (the first line of the ``table`` format).
     scales : dict of str to ndarray
         Optional per-point scales for the round-off rule of the ``table`` format.
+    show : tuple of str
+        The columns of the ``table`` format (all when empty). A ``reason`` column is shown
+        as notes under the table, one per point that has one.
     """
 
     columns: dict[str, NDArray[Any]]
@@ -80,6 +83,7 @@ class Table:
     command: list[str] = field(default_factory=list)
     title: str = ""
     scales: dict[str, NDArray[Any]] = field(default_factory=dict)
+    show: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         sizes = {k: np.shape(v) for k, v in self.columns.items()}
@@ -112,6 +116,7 @@ def table_from_result(
     command: Sequence[str] = (),
     title: str = "",
     scales: Mapping[str, Any] | None = None,
+    show: Sequence[str] = (),
 ) -> Table:
     """A :class:`Table` of ``result``: its inputs that are the same everywhere move to parameters.
 
@@ -127,7 +132,7 @@ def table_from_result(
         Further parameters (given before the ones taken from ``result``).
     units : mapping, optional
         The unit of each column and parameter.
-    command, title, scales
+    command, title, scales, show
         As in :class:`Table`.
     """
     cols = result.columns()
@@ -148,7 +153,7 @@ def table_from_result(
         k: np.broadcast_to(np.asarray(v, float), result.shape).reshape(n)
         for k, v in (scales or {}).items()
     }
-    return Table(out, params, dict(units or {}), list(command), title, sc)
+    return Table(out, params, dict(units or {}), list(command), title, sc, tuple(show))
 
 
 def _constant(v: NDArray[Any]) -> bool:
@@ -190,10 +195,7 @@ def _json_column(v: NDArray[Any]) -> list[str]:
             for i in np.flatnonzero(bad):
                 text[i] = "null"
         return text
-    # strings (few distinct values: encode each once) and anything else
-    uniq, inv = np.unique(v.astype(str), return_inverse=True)
-    enc = np.array([json.dumps(str(u)) for u in uniq], dtype=object)
-    return enc[inv].tolist()
+    return _by_value(v, lambda x: "null" if x is None else json.dumps(str(x)))
 
 
 def _csv_column(v: NDArray[Any]) -> list[str]:
@@ -208,9 +210,14 @@ def _csv_column(v: NDArray[Any]) -> list[str]:
         for i in np.flatnonzero(~np.isfinite(vals)):
             text[i] = ""
         return text
-    uniq, inv = np.unique(v.astype(str), return_inverse=True)
-    enc = np.array([_csv_quote(str(u)) for u in uniq], dtype=object)
-    return enc[inv].tolist()
+    return _by_value(v, lambda x: "" if x is None else _csv_quote(str(x)))
+
+
+def _by_value(v: NDArray[Any], encode: Any) -> list[str]:
+    """Strings (and None) encoded once per distinct value: such columns have few of them."""
+    vals = v.tolist()
+    cache = {x: encode(x) for x in set(vals)}
+    return [cache[x] for x in vals]
 
 
 def _csv_quote(s: str) -> str:
@@ -272,7 +279,9 @@ def _chunks(table: Table, fmt: str, indent: int | None) -> Iterable[str]:
             # the provenance object reopened (its closing "\n}" cut) to append the results
             pad = " " * indent
             recs = _records_json(table, indent, 2)
-            res = "[\n" + ",\n".join(pad * 2 + r for r in recs) + "\n" + pad + "]" if recs else "[]"
+            res = "[]"
+            if recs:
+                res = "[\n" + ",\n".join(pad * 2 + r for r in recs) + "\n" + pad + "]"
             yield body[:-2] + ",\n" + pad + '"results": ' + res + "\n}\n"
     elif fmt == "jsonl":
         yield _dumps(head, None) + "\n"
@@ -294,7 +303,7 @@ def _chunks(table: Table, fmt: str, indent: int | None) -> Iterable[str]:
 # the human-readable table
 
 
-def _table_column(name: str, v: NDArray[Any], scale: NDArray[Any] | None) -> list[str]:
+def _table_column(v: NDArray[Any], scale: NDArray[Any] | None) -> list[str]:
     kind = v.dtype.kind
     if kind == "b":
         return np.where(v, "yes", "no").tolist()
@@ -304,16 +313,16 @@ def _table_column(name: str, v: NDArray[Any], scale: NDArray[Any] | None) -> lis
         vals = v.astype(float, copy=False)
         fin = np.isfinite(vals)
         big = float(np.max(np.abs(vals[fin]))) if fin.any() else 0.0
-        ref = np.full(vals.shape, big) if scale is None else np.maximum(np.abs(scale), 0.0)
+        ref = np.full(vals.shape, big) if scale is None else np.abs(scale)
         with np.errstate(invalid="ignore"):
             zero = fin & (np.abs(vals) <= ROUND_OFF * ref)
         text = [f"{x:.6g}" for x in vals.tolist()]
         for i in np.flatnonzero(zero):
             text[i] = "0"
-        for i in np.flatnonzero(~fin):
-            text[i] = "-" if np.isnan(vals[i]) else text[i]
+        for i in np.flatnonzero(np.isnan(vals)):
+            text[i] = "-"
         return text
-    return [str(x) for x in v.tolist()]
+    return ["-" if x is None else str(x) for x in v.tolist()]
 
 
 def _format_table(table: Table) -> str:
@@ -327,17 +336,23 @@ def _format_table(table: Table) -> str:
             txt = f"{v:.6g}" if isinstance(v, float) else str(v)
             items.append(f"{k} = {txt}" + (f" {unit}" if unit and unit != "1" else ""))
         lines.append("# " + ", ".join(items))
-    keys = list(table.columns)
-    if not keys:
-        return "\n".join(lines) + "\n"
-    cols = [_table_column(k, v, table.scales.get(k)) for k, v in table.columns.items()]
-    heads = [k if table.units.get(k) in (None, "1") else f"{k} [{table.units[k]}]" for k in keys]
-    widths = [
-        max(len(h), *(len(s) for s in c)) if c else len(h) for h, c in zip(heads, cols, strict=True)
-    ]
-    lines.append("  ".join(h.rjust(w) for h, w in zip(heads, widths, strict=True)))
-    for row in zip(*cols, strict=True):
-        lines.append("  ".join(s.rjust(w) for s, w in zip(row, widths, strict=True)))
+    keys = [k for k in (table.show or tuple(table.columns)) if k != "reason"]
+    if keys:
+        cols = [_table_column(table.columns[k], table.scales.get(k)) for k in keys]
+        heads = [
+            k if table.units.get(k) in (None, "1") else f"{k} [{table.units[k]}]" for k in keys
+        ]
+        widths = [
+            max(len(h), *(len(s) for s in c)) if c else len(h)
+            for h, c in zip(heads, cols, strict=True)
+        ]
+        lines.append("  ".join(h.rjust(w) for h, w in zip(heads, widths, strict=True)))
+        for row in zip(*cols, strict=True):
+            lines.append("  ".join(s.rjust(w) for s, w in zip(row, widths, strict=True)))
+    if "reason" in table.columns:
+        for i, why in enumerate(table.columns["reason"].tolist()):
+            if why:
+                lines.append(f"# point {i + 1}: {why}")
     return "\n".join(lines) + "\n"
 
 

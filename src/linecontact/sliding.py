@@ -188,6 +188,9 @@ class SlidingContact(Result):
         All tolerances met.
     stable : ndarray or bool
         ``dF/da > 0``: stable under load control.
+    state : ndarray of str or str
+        ``"contact"``; ``"no-equilibrium"`` for a load below the pull-off force reported by
+        :func:`sliding_contact_for_load` with ``on_no_equilibrium="report"`` (values NaN).
     """
 
     inputs: ClassVar[tuple[str, ...]] = (
@@ -218,6 +221,7 @@ class SlidingContact(Result):
     error_estimate: NDArray | float
     converged: NDArray | bool
     stable: NDArray | bool
+    state: NDArray | str
 
     @property
     def c1_over_a(self):
@@ -733,8 +737,15 @@ def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
     return d
 
 
-def _pack(d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure, where):
-    conv = d["converged"]
+def _pack(
+    d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure, where, missing=None, F_asked=None
+):
+    """Assemble the result; ``missing`` marks the points reported without a state.
+
+    Their values are NaN but for the load ``F_asked`` that no contact carries.
+    """
+    missing = np.zeros(A.shape, bool) if missing is None else missing
+    conv = d["converged"] | missing
     if raise_on_failure and not np.all(conv):
         i = np.flatnonzero(~conv)[0]
         raise ConvergenceError(
@@ -745,6 +756,8 @@ def _pack(d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure, where):
             f"adhesive zone is too thin for n <= {_SIZES[-1]} or the point is outside the "
             f"solver's range"
         )
+    nan = np.where(missing, np.nan, 1.0)
+    A = A * nan
     C1 = A * np.cosh(d["u1"])
     C2 = A * np.cosh(d["u2"])
     T = 2 * A * rho * tau
@@ -752,10 +765,10 @@ def _pack(d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure, where):
         a_over_R=A,
         c1_over_R=C1,
         c2_over_R=C2,
-        e_over_R=d["ecc"],
-        F_over_Eh2=d["F"],
-        M_over_Eh2R=d["M"],
-        M_axis_over_Eh2R=d["M"] - d["ecc"] * d["F"],
+        e_over_R=d["ecc"] * nan,
+        F_over_Eh2=d["F"] if F_asked is None else np.where(missing, F_asked, d["F"]),
+        M_over_Eh2R=d["M"] * nan,
+        M_axis_over_Eh2R=(d["M"] - d["ecc"] * d["F"]) * nan,
         R_over_h2=rho,
         h1_over_h2=r,
         sigma0_over_E=s,
@@ -765,9 +778,10 @@ def _pack(d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure, where):
         residual_trailing=d["res1"],
         residual_leading=d["res2"],
         residual_consistency=d["cons"],
-        error_estimate=d["tail"],
-        converged=conv,
-        stable=d["stable"],
+        error_estimate=d["tail"] * nan,
+        converged=conv & ~missing,
+        stable=d["stable"] & ~missing,
+        state=np.where(missing, "no-equilibrium", "contact"),
     )
     vals = {k: as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
     return SlidingContact(method=method, **vals)
@@ -1020,6 +1034,7 @@ def sliding_contact_for_load(
     n: int | str = "auto",
     tol: float = 1e-12,
     raise_on_failure: bool = True,
+    on_no_equilibrium: str = "raise",
 ) -> SlidingContact:
     r"""The steadily sliding contact carrying a given normal load (stable branch).
 
@@ -1034,6 +1049,10 @@ def sliding_contact_for_load(
         Normal load per unit length over ``E h2``, compressive positive.
     R_over_h2, h1_over_h2, sigma0_over_E, tau0_over_E, method, n, tol, raise_on_failure
         As in :func:`sliding_contact`.
+    on_no_equilibrium : {"raise", "report"}
+        For a load below the pull-off force: raise (default), or report the point with
+        ``state == "no-equilibrium"``, NaN values (the load kept), ``converged`` and
+        ``stable`` False.
 
     Returns
     -------
@@ -1055,6 +1074,11 @@ def sliding_contact_for_load(
     rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
     tau = np.full((), np.nan) if tau0_over_E is None else non_negative("tau0_over_E", tau0_over_E)
     _check_method(method, n, tol, raise_on_failure)
+    if on_no_equilibrium not in ("raise", "report"):
+        raise ValueError(
+            f"on_no_equilibrium must be 'raise' or 'report', got {on_no_equilibrium!r}"
+        )
+    report = on_no_equilibrium == "report"
     scalar = scalar_or_array(F, rho, r, s, tau)
     F, rho, r, s, tau = broadcast(
         F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau
@@ -1066,6 +1090,7 @@ def sliding_contact_for_load(
     )
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     phi_t = F * (2 / np.pi)
+    missing = np.zeros(F.shape, bool)
     # as in sliding_pull_off: far from h1 = h2 the search overflows on the way; the
     # convergence check of the state found reports a failure
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
@@ -1077,7 +1102,11 @@ def sliding_contact_for_load(
             d = _pulloff_flat(kap[adh], r[adh])
             phi_po = np.where(d["snap"], d["phi_min"], d["phi0"])
             bad = phi_t[adh] < phi_po
-            if bad.any():
+            if bad.any() and report:
+                # a load that exists (the pull-off force) stands in for the ones reported
+                missing[np.flatnonzero(adh)[bad]] = True
+                phi_t[np.flatnonzero(adh)[bad]] = phi_po[bad]
+            elif bad.any():
                 i = np.flatnonzero(bad)[0]
                 g = np.flatnonzero(adh)[i]
                 raise NoEquilibriumError(
@@ -1088,6 +1117,10 @@ def sliding_contact_for_load(
                 )
             lab_lo[adh] = np.where(d["snap"], d["lab_min"], _LAB_LO)
             phi_lo[adh] = np.where(d["snap"], d["phi_min"], d["phi0"])
+        if np.any(~adh & (phi_t <= 0)) and report:
+            hertz_bad = ~adh & (phi_t <= 0)
+            missing |= hertz_bad
+            phi_t = np.where(hertz_bad, 1.0, phi_t)
         if np.any(~adh & (phi_t <= 0)):
             i = np.flatnonzero(~adh & (phi_t <= 0))[0]
             raise NoEquilibriumError(
@@ -1143,4 +1176,6 @@ def sliding_contact_for_load(
             scalar,
             raise_on_failure,
             "sliding_contact_for_load",
+            missing,
+            F,
         )

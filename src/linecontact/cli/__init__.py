@@ -16,67 +16,99 @@ import sys
 import warnings
 from collections.abc import Sequence
 
+from .._version import __version__
 from ..errors import ConvergenceError
 from . import normal as _normal
 from . import paper as _paper
 from . import sliding as _sliding
 from . import tangential as _tangential
-from ._options import _Parser
-from .paper import CITATION
+from ._options import NoPointError, Parser, flag_message, record_flags
 
 __all__ = ["build_parser", "main"]
+
+_COMMANDS = "normal, pulloff, curve, slide-init, roll, slide, paper or cite"
 
 
 def build_parser() -> argparse.ArgumentParser:
     """The argparse parser of the ``linecontact`` command."""
-    p = _Parser(
+    p = Parser(
         prog="linecontact",
-        description="Adhesive (Maugis-Dugdale) contact of a cylinder on a substrate.",
-        epilog="Conventions: compressive load positive (pull-off forces are negative); "
-        "forces per unit length.",
+        description="Adhesive (Maugis-Dugdale) contact mechanics of a cylinder - a nanofibre, "
+        "nanowire, nanotube - on an elastic substrate, in plane strain. Every subcommand takes "
+        "the paper's nondimensional groups or SI inputs; `linecontact COMMAND --help` says "
+        "which.",
+        epilog="Conventions: compressive load positive (pull-off forces are negative); forces "
+        "per unit length of cylinder unless --length is given. Output: a table, or with "
+        "--format json|jsonl|csv the provenance block (version, command, parameters, units) "
+        "and the results.",
+        allow_abbrev=False,
     )
-    p.add_argument("--version", action="version", version=CITATION.rstrip("\n"))
-    sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    p.add_argument(
+        "--version",
+        action="version",
+        version=f"linecontact {__version__}",
+        help="print the version and exit",
+    )
+    sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
     _normal.register(sub)
     _tangential.register(sub)
     _sliding.register(sub)
     _paper.register(sub)
+    for sp in sub.choices.values():
+        sp.allow_abbrev = False
+    p.set_defaults(_subparsers=sub)
     return p
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Run the CLI; returns the exit status (also usable in-process by tests)."""
+    """Run the CLI; returns the exit status (also usable in-process by tests).
+
+    Exit status: 0 when the run produced its output (points without a state are records
+    with ``state`` and ``reason``), 1 when no point could be computed or a solver failed,
+    2 for bad input (one ``error:`` line on stderr naming the flag, no traceback).
+    """
     parser = build_parser()
     args = parser.parse_args(argv)
     args.argv = list(argv) if argv is not None else None
     if args.command is None:
         print(
-            "linecontact: error: give a command: normal, pulloff, curve, slide-init, roll, "
-            "slide, paper or cite (linecontact --help lists them)",
+            f"linecontact: error: give a command: {_COMMANDS} (linecontact --help lists them)",
             file=sys.stderr,
         )
         return 2
+    record_flags(args._subparsers.choices[args.command], args)
+    prefix = f"linecontact {args.command}"
+    seen: set[str] = set()
 
-    def one_line_warning(message, category, filename, lineno, file=None, line=None):
-        print(f"linecontact {args.command}: warning: {message}", file=sys.stderr)
+    def once(message, category, filename, lineno, file=None, line=None):
+        text = str(message)
+        if text not in seen:  # a warning is printed once per run
+            seen.add(text)
+            print(f"{prefix}: warning: {flag_message(text, args)}", file=sys.stderr)
 
     try:
         with warnings.catch_warnings():
-            warnings.showwarning = one_line_warning
+            if getattr(args, "quiet", False):
+                warnings.simplefilter("ignore")
+            else:
+                warnings.simplefilter("always")
+                warnings.showwarning = once
             return int(args.func(args))
+    except NoPointError as exc:
+        print(f"{prefix}: error: no point could be computed: {exc}", file=sys.stderr)
+        return 1
     except ConvergenceError as exc:
-        print(f"linecontact {args.command}: error: {exc}", file=sys.stderr)
+        print(f"{prefix}: error: {flag_message(str(exc), args)}", file=sys.stderr)
         return 1
     except (ValueError, OverflowError) as exc:
-        print(f"linecontact {args.command}: error: {exc}", file=sys.stderr)
+        print(f"{prefix}: error: {flag_message(str(exc), args)}", file=sys.stderr)
         return 2
     except ImportError as exc:
-        print(f"linecontact {args.command}: error: {exc}", file=sys.stderr)
+        print(f"{prefix}: error: {exc}", file=sys.stderr)
         return 1
     except Exception as exc:  # noqa: BLE001 - the CLI never shows a traceback
         print(
-            f"linecontact {args.command}: error: internal error "
-            f"({type(exc).__name__}: {exc}); please report it",
+            f"{prefix}: error: internal error ({type(exc).__name__}: {exc}); please report it",
             file=sys.stderr,
         )
         return 1

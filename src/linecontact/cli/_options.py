@@ -1,16 +1,24 @@
-"""Shared pieces of the subcommands: the parser class, the common options, the output."""
+"""Shared pieces of the subcommands: the parser, the common options, the SI inputs, the output.
+
+Every subcommand module builds its parser with :class:`Parser` and the option groups here,
+computes its results through the public API, and hands a :class:`~linecontact.output.Table`
+to :func:`emit`. Errors are :class:`ValueError` (exit status 2) whose message names the
+flags; :func:`flag_message` turns the API's parameter names into the flags the user typed.
+"""
 
 from __future__ import annotations
 
 import argparse
-import json
 import math
 import re
+import sys
 from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 
 from ..cylinder import Cylinder
+from ..output import FORMATS, Table, write
 
 #: Values that are numbers even though they start with "-": argparse (before Python 3.13)
 #: knows only -5 and -0.5, so "--load -1e-3" failed with "expected one argument".
@@ -18,118 +26,252 @@ _NEGATIVE_NUMBER = re.compile(
     r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.IGNORECASE
 )
 
+#: Most points a range option may ask for (1e9 exhausted the memory instead of failing).
+MAX_POINTS = 1_000_000
 
-class _Parser(argparse.ArgumentParser):
-    def __init__(self, *args, **kwargs) -> None:
+#: API parameter names whose flag is not the parameter name with dashes.
+API_FLAGS = {
+    "radius": "--radius",
+    "modulus": "--modulus",
+    "cohesive_stress": "--sigma0",
+    "adhesion_range": "--h",
+    "work_of_adhesion": "--work-of-adhesion",
+    "equilibrium_spacing": "--z0",
+    "contact_half_width": "--a",
+    "load": "--load",
+    "normal_load": "--load",
+    "friction_stress": "--tau0",
+    "friction_coefficient": "--mu",
+    "tangential_load": "--tangential-load",
+}
+
+#: The SI inputs of the materials and adhesion (their presence switches to SI mode).
+SI_KEYS = ("radius", "modulus", "E1", "nu1", "E2", "nu2", "sigma0", "h", "work_of_adhesion", "z0")
+
+
+class HelpFormatter(argparse.RawDescriptionHelpFormatter):
+    """Keeps the line breaks of descriptions and examples; appends every real default."""
+
+    def _get_help_string(self, action: argparse.Action) -> str:
+        text = action.help or ""
+        default = action.default
+        if (
+            "%(default)" not in text
+            and action.option_strings
+            and default not in (None, False, argparse.SUPPRESS)
+            and not isinstance(action, argparse._HelpAction | argparse._VersionAction)
+        ):
+            text += " (default: %(default)s)"
+        return text
+
+
+class Parser(argparse.ArgumentParser):
+    """argparse with negative numbers as values and one-line errors (exit status 2)."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        kwargs.setdefault("formatter_class", HelpFormatter)
         super().__init__(*args, **kwargs)
         self._negative_number_matcher = _NEGATIVE_NUMBER
 
-    def error(self, message: str):  # argparse's own errors: one line, exit 2
+    def error(self, message: str):  # type: ignore[override]  # argparse's own errors
         self.exit(2, f"{self.prog}: error: {message}\n")
 
 
-def _finite(v):
-    if isinstance(v, float) and not math.isfinite(v):
-        return None
-    return v
+def add_command(sub: Any, name: str, summary: str, description: str, examples: Sequence[str]):
+    """A subcommand parser with a one-line summary, a description and examples in its help."""
+    epilog = "examples:\n" + "\n".join(f"  {e}" for e in examples)
+    return sub.add_parser(name, help=summary, description=description, epilog=epilog)
 
 
-def _dump_json(obj) -> str:
-    def clean(o):
-        if isinstance(o, dict):
-            return {k: clean(v) for k, v in o.items()}
-        if isinstance(o, (list, tuple)):
-            return [clean(v) for v in o]
-        if isinstance(o, np.generic):
-            o = o.item()
-        return _finite(o)
-
-    return json.dumps(clean(obj), indent=2, allow_nan=False)
+# --------------------------------------------------------------------------------------------
+# output and warnings
 
 
-def _table(records: list[dict], keys: Sequence[str]) -> str:
-    def fmt(v):
-        if isinstance(v, bool):
-            return "yes" if v else "no"
-        if isinstance(v, float):
-            return f"{v:.10g}"
-        return str(v)
+def add_output_options(p: argparse.ArgumentParser) -> None:
+    """``--format``, ``--json``, ``-o``, ``--indent`` and ``--quiet``."""
+    g = p.add_argument_group("output")
+    g.add_argument(
+        "--format",
+        choices=FORMATS,
+        help="table (readable), json (one object: provenance and results), jsonl (provenance "
+        "line, then one record per line) or csv (commented provenance header) (default: from "
+        "the extension of -o FILE, else table)",
+    )
+    g.add_argument(
+        "--json",
+        action="store_const",
+        dest="format",
+        const="json",
+        help="same as --format json",
+    )
+    g.add_argument("-o", "--output", metavar="FILE", help="write to FILE (atomically), not stdout")
+    g.add_argument(
+        "--indent", type=int, metavar="N", help="indent JSON by N spaces (compact without)"
+    )
+    g.add_argument("--quiet", action="store_true", help="do not print warnings")
 
-    rows = [[fmt(r[k]) for k in keys] for r in records]
-    widths = [max(len(k), *(len(row[i]) for row in rows)) for i, k in enumerate(keys)]
-    lines = ["  ".join(k.rjust(w) for k, w in zip(keys, widths, strict=True))]
-    lines += ["  ".join(c.rjust(w) for c, w in zip(row, widths, strict=True)) for row in rows]
-    return "\n".join(lines)
+
+def emit(args: argparse.Namespace, table: Table) -> None:
+    """Write ``table`` as the arguments ask (stdout, or ``-o FILE``)."""
+    if args.indent is not None and not 0 <= args.indent <= 16:
+        raise ValueError(f"--indent must be an integer in [0, 16], got {args.indent}")
+    fmt = args.format
+    if fmt is None:
+        ext = "" if args.output is None else args.output.rsplit(".", 1)[-1].lower()
+        fmt = ext if ext in FORMATS and ext != "table" else "table"
+    if args.output is None:
+        write(table, fmt, indent=args.indent)
+        return
+    try:
+        write(table, fmt, args.output, indent=args.indent)
+    except OSError as exc:
+        raise ValueError(
+            f"cannot write -o/--output {args.output!r}: {exc.strerror or exc}"
+        ) from None
+    if not args.quiet:
+        print(f"wrote {args.output}", file=sys.stderr)
 
 
-#: Most points a range option may ask for (1e9 exhausted the memory instead of failing).
-_MAX_POINTS = 1_000_000
+class NoPointError(Exception):
+    """No point of a run could be computed: the output is written, the exit status is 1."""
 
 
-# --- shared arguments ---------------------------------------------------------------------
+def finish(table: Table, good: str | tuple[str, ...]) -> int:
+    """Exit status 0 when a point has a state in ``good``; else raise :class:`NoPointError`.
+
+    A multi-point run never fails as a whole because some points have no state: they carry
+    ``state`` and ``reason`` and null values (:func:`null_missing`).
+    """
+    state = table.columns.get("state")
+    good = (good,) if isinstance(good, str) else good
+    if state is None or table.size == 0 or np.isin(state, good).any():
+        return 0
+    reasons = (
+        [r for r in table.columns["reason"].tolist() if r] if "reason" in table.columns else []
+    )
+    raise NoPointError(reasons[0] if reasons else "no point could be computed")
 
 
-def _add_si_materials(p: argparse.ArgumentParser):
-    """The SI group with radius, moduli and adhesive stress; the caller adds the ranges."""
-    si = p.add_argument_group("SI inputs (instead of the groups)")
-    si.add_argument("--radius", type=float, help="R [m]")
-    si.add_argument("--modulus", type=float, help="composite plane-strain modulus E [Pa]")
-    si.add_argument("--E1", type=float, help="cylinder Young's modulus [Pa]")
-    si.add_argument("--nu1", type=float, help="cylinder Poisson ratio, in (-1, 0.5]")
-    si.add_argument("--E2", type=float, help="substrate Young's modulus [Pa]")
-    si.add_argument("--nu2", type=float, help="substrate Poisson ratio, in (-1, 0.5]")
-    si.add_argument("--sigma0", type=float, help="adhesive (Dugdale) stress [Pa]")
+def null_missing(table: Table, missing: np.ndarray, keep: Sequence[str]) -> Table:
+    """The points without a state with missing values: floats NaN (JSON null), flags False.
+
+    The columns in ``keep`` (the point's own input, its state and reason) are kept.
+    """
+    if not np.any(missing):
+        return table
+    cols = {}
+    for k, v in table.columns.items():
+        if k in keep:
+            cols[k] = v
+        elif v.dtype.kind == "f":
+            cols[k] = np.where(missing, np.nan, v)
+        elif v.dtype.kind == "b":
+            cols[k] = np.where(missing, False, v)
+        else:
+            cols[k] = v
+    return Table(
+        cols, table.parameters, table.units, table.command, table.title, table.scales, table.show
+    )
+
+
+def command_line(args: argparse.Namespace) -> list[str]:
+    """The command line as given (for the provenance block)."""
+    argv = args.argv if args.argv is not None else sys.argv[1:]
+    return ["linecontact", *argv]
+
+
+def flag_message(message: str, args: argparse.Namespace) -> str:
+    """``message`` with the API's parameter names replaced by the flags the user typed."""
+    given = set(args.argv if args.argv is not None else sys.argv[1:])
+    names: dict[str, str] = {}
+    for dest, flag in getattr(args, "_flags", {}).items():
+        names[dest] = flag
+    for name, flag in {**API_FLAGS, **getattr(args, "_api_flags", {})}.items():
+        names[name] = flag
+    for name, flag in sorted(names.items(), key=lambda kv: -len(kv[0])):
+        if flag not in given:
+            continue
+        # a name with an underscore is a parameter wherever it stands; a plain word (radius,
+        # load) only where it is the subject of a check ("load must ...", "load=...") or the
+        # second term of a ratio ("cohesive_stress/modulus")
+        n = re.escape(name)
+        if "_" in name:
+            message = re.sub(rf"(?<![\w-]){n}(?![\w])", flag, message)
+        else:
+            message = re.sub(rf"(?<![\w-]){n}(?= must| =|=)|(?<=/){n}(?![\w])", flag, message)
+    return message
+
+
+# --------------------------------------------------------------------------------------------
+# material, adhesion and geometry in SI units
+
+
+def _positive(flag: str, value: float | None) -> None:
+    if value is not None and not (math.isfinite(value) and value > 0):
+        raise ValueError(f"{flag} must be a finite number > 0, got {value!r}")
+
+
+def add_si_materials(p: argparse.ArgumentParser, range_flag: str = "--h") -> Any:
+    """The SI group: radius, moduli, adhesion (the caller may add more to it) and ``--length``."""
+    si = p.add_argument_group("SI inputs (instead of the nondimensional groups)")
+    si.add_argument("--radius", type=float, metavar="R", help="cylinder radius R [m]")
+    si.add_argument(
+        "--modulus", type=float, metavar="E", help="composite plane-strain modulus E [Pa]"
+    )
+    si.add_argument("--E1", type=float, help="cylinder's Young's modulus [Pa] (with --nu1 ...)")
+    si.add_argument("--nu1", type=float, help="cylinder's Poisson ratio, in (-1, 0.5]")
+    si.add_argument("--E2", type=float, help="substrate's Young's modulus [Pa]")
+    si.add_argument("--nu2", type=float, help="substrate's Poisson ratio, in (-1, 0.5]")
+    si.add_argument("--sigma0", type=float, help="adhesive (Dugdale) stress sigma0 [Pa]")
+    name = "leading-edge adhesion range h2" if range_flag == "--h2" else "adhesion range h"
+    si.add_argument(
+        range_flag,
+        dest="h",
+        type=float,
+        metavar="H",
+        help=f"{name} [m] (sets R/h even without adhesion)",
+    )
+    si.add_argument(
+        "--work-of-adhesion",
+        type=float,
+        metavar="W",
+        help="work of adhesion w [J/m^2] (with --z0, instead of --sigma0 and "
+        f"{range_flag}: sigma0 = 16 w/(9 sqrt(3) z0), {range_flag} = 0.974 z0)",
+    )
+    si.add_argument("--z0", type=float, help="equilibrium spacing of the surfaces z0 [m]")
+    si.add_argument(
+        "--length",
+        type=float,
+        metavar="L",
+        help="length of the fibre [m]: adds total forces [N] and moments [N m]",
+    )
     return si
 
 
-def _add_groups(p: argparse.ArgumentParser) -> None:
-    g = p.add_argument_group("nondimensional groups (the paper's)")
-    g.add_argument("--R-over-h", type=float, help="cylinder radius over adhesion range, > 0")
-    g.add_argument(
-        "--sigma0-over-E",
-        type=float,
-        help="adhesive stress over composite modulus, >= 0 (0: Hertz)",
-    )
-    si = _add_si_materials(p)
-    si.add_argument("--h", type=float, help="range of the adhesive stress [m]")
-    si.add_argument("--work-of-adhesion", type=float, help="w [J/m^2] (with --z0)")
-    si.add_argument("--z0", type=float, help="equilibrium spacing [m] (Maugis: h = 0.974 z0)")
+def si_given(args: argparse.Namespace, extra: Sequence[str] = ()) -> bool:
+    """Whether any SI input (or one of ``extra``) was given."""
+    return any(getattr(args, k, None) is not None for k in (*SI_KEYS, "length", *extra))
 
 
-def _cylinder(args, h_flag: str = "--h"):
-    """A Cylinder for SI mode, or None in nondimensional mode."""
-    si_given = any(
-        getattr(args, k) is not None
-        for k in (
-            "radius",
-            "modulus",
-            "E1",
-            "nu1",
-            "E2",
-            "nu2",
-            "sigma0",
-            "h",
-            "work_of_adhesion",
-            "z0",
-        )
-    )
-    groups_given = args.R_over_h is not None or args.sigma0_over_E is not None
-    if si_given and groups_given:
-        raise ValueError(
-            "give either the nondimensional groups (--R-over-h, --sigma0-over-E) "
-            "or SI inputs (--radius, ...), not both"
-        )
-    if not si_given:
-        if args.R_over_h is None or args.sigma0_over_E is None:
-            raise ValueError("give --R-over-h and --sigma0-over-E (or SI inputs with --radius)")
-        return None
+def cylinder(args: argparse.Namespace, range_flag: str = "--h") -> Cylinder:
+    """The :class:`Cylinder` of the SI inputs, with errors that name the flags."""
     if args.radius is None:
         raise ValueError("SI inputs need --radius [m]")
     if args.h is None and args.work_of_adhesion is None and args.z0 is None:
         raise ValueError(
-            f"SI inputs need the adhesion range {h_flag} [m] (it sets R/h even "
-            f"without adhesion), or --work-of-adhesion with --z0"
+            f"SI inputs need the adhesion range {range_flag} [m] (it sets R/h even without "
+            f"adhesion), or --work-of-adhesion with --z0"
         )
+    if (args.sigma0 is not None or args.h is not None) and (
+        args.work_of_adhesion is not None or args.z0 is not None
+    ):
+        raise ValueError(
+            f"give adhesion either as --sigma0 and {range_flag}, or as --work-of-adhesion "
+            "and --z0, not both"
+        )
+    if (args.work_of_adhesion is None) != (args.z0 is None):
+        raise ValueError("give both --work-of-adhesion and --z0")
+    _positive("--length", args.length)
     adh = dict(
         cohesive_stress=args.sigma0,
         adhesion_range=args.h,
@@ -146,30 +288,89 @@ def _cylinder(args, h_flag: str = "--h"):
     return Cylinder.from_materials(args.radius, *mats, **adh)
 
 
-def _groups(args):
-    cyl = _cylinder(args)
-    if cyl is None:
+def si_parameters(args: argparse.Namespace, cyl: Cylinder) -> tuple[dict, dict]:
+    """The SI inputs as given and as used, for the provenance block, with their units."""
+    params: dict[str, Any] = {"radius_m": cyl.radius, "modulus_Pa": cyl.modulus}
+    units = {"radius_m": "m", "modulus_Pa": "Pa"}
+    for key, name, unit in (
+        ("E1", "E1_Pa", "Pa"),
+        ("nu1", "nu1", "1"),
+        ("E2", "E2_Pa", "Pa"),
+        ("nu2", "nu2", "1"),
+        ("work_of_adhesion", "work_of_adhesion_J_per_m2", "J/m^2"),
+        ("z0", "z0_m", "m"),
+    ):
+        v = getattr(args, key, None)
+        if v is not None:
+            params[name] = v
+            units[name] = unit
+    params.update(
+        sigma0_Pa=cyl.cohesive_stress,
+        h_m=cyl.adhesion_range,
+        dundurs_beta=cyl.dundurs_beta,
+    )
+    units.update(sigma0_Pa="Pa", h_m="m", dundurs_beta="1")
+    if args.length is not None:
+        params["length_m"] = args.length
+        units["length_m"] = "m"
+    return params, units
+
+
+def add_groups(p: argparse.ArgumentParser) -> None:
+    """The groups ``--R-over-h``, ``--sigma0-over-E`` and the SI inputs that replace them."""
+    g = p.add_argument_group("nondimensional groups (the paper's)")
+    g.add_argument("--R-over-h", type=float, metavar="R/h", help="radius over adhesion range, > 0")
+    g.add_argument(
+        "--sigma0-over-E",
+        type=float,
+        metavar="S",
+        help="adhesive stress over composite modulus, >= 0 (0: Hertz)",
+    )
+    add_si_materials(p)
+
+
+def groups(args: argparse.Namespace) -> tuple[float, float, Cylinder | None]:
+    """``(R/h, sigma0/E, Cylinder or None)`` from the groups or the SI inputs."""
+    si = si_given(args)
+    nd = args.R_over_h is not None or args.sigma0_over_E is not None
+    if si and nd:
+        raise ValueError(
+            "give either the nondimensional groups (--R-over-h, --sigma0-over-E) or SI inputs "
+            "(--radius, ...), not both"
+        )
+    if not si:
+        if args.R_over_h is None or args.sigma0_over_E is None:
+            raise ValueError("give --R-over-h and --sigma0-over-E (or SI inputs with --radius)")
         return args.R_over_h, args.sigma0_over_E, None
+    cyl = cylinder(args)
     return cyl.R_over_h, cyl.sigma0_over_E, cyl
 
 
-def _add_width_options(p, load_flag: str, load_help: str) -> None:
-    """The options read by :func:`_half_widths`: widths or loads, nondimensional or SI."""
-    p.add_argument("--a-over-R", type=float, nargs="+", metavar="A", help="contact half-widths")
+# --------------------------------------------------------------------------------------------
+# contact widths or loads
+
+
+def add_width_options(p: Any, load_flag: str, load_help: str) -> None:
+    """The options read by :func:`half_widths`: widths or loads, nondimensional or SI."""
+    p.add_argument(
+        "--a-over-R", type=float, nargs="+", metavar="A", help="contact half-widths a/R, > 0"
+    )
     p.add_argument(
         "--a-over-R-range",
         type=float,
         nargs=3,
         metavar=("START", "STOP", "NUM"),
-        help="linearly spaced contact half-widths",
+        help="NUM linearly spaced contact half-widths a/R from START to STOP",
     )
     p.add_argument(load_flag, type=float, nargs="+", metavar="F", help=load_help)
-    p.add_argument("--a", type=float, nargs="+", help="contact half-widths [m] (SI mode)")
-    p.add_argument("--load", type=float, nargs="+", help="normal loads [N/m] (SI mode)")
+    p.add_argument("--a", type=float, nargs="+", help="contact half-widths a [m] (SI inputs)")
+    p.add_argument(
+        "--load", type=float, nargs="+", help="normal loads per unit length F [N/m] (SI inputs)"
+    )
 
 
-def _half_widths(args, cyl, load_attr: str):
-    """Contact half-widths a/R from --a-over-R, --a-over-R-range or --a [m]; None for loads.
+def half_widths(args: argparse.Namespace, cyl: Cylinder | None, load_attr: str):
+    """Contact half-widths a/R from ``--a-over-R``, ``--a-over-R-range`` or ``--a``; None for loads.
 
     Exactly one of those, ``--<load_attr>`` or ``--load`` [N/m] must be given.
     """
@@ -187,18 +388,37 @@ def _half_widths(args, cyl, load_attr: str):
         )
     if (args.a is not None or args.load is not None) and cyl is None:
         raise ValueError("--a and --load are SI inputs: give --radius and the materials too")
+    if cyl is not None and (given[0] or given[1] or given[2]):
+        raise ValueError(
+            f"--a-over-R, --a-over-R-range and {flag} are nondimensional: with SI inputs give "
+            "--a [m] or --load [N/m]"
+        )
     if args.a_over_R_range is not None:
         start, stop, num = args.a_over_R_range
         for name, v in (("START", start), ("STOP", stop)):
             if not (math.isfinite(v) and v > 0):
                 raise ValueError(f"--a-over-R-range {name} must be a finite number > 0, got {v!r}")
-        if not (math.isfinite(num) and float(num).is_integer() and 1 <= num <= _MAX_POINTS):
+        if not (math.isfinite(num) and float(num).is_integer() and 1 <= num <= MAX_POINTS):
             raise ValueError(
-                f"--a-over-R-range NUM must be an integer in [1, {_MAX_POINTS}], got {num!r}"
+                f"--a-over-R-range NUM must be an integer in [1, {MAX_POINTS}], got {num!r}"
             )
         return np.linspace(start, stop, int(num))
     if args.a_over_R is not None:
         return np.asarray(args.a_over_R, float)
     if args.a is not None:
-        return np.asarray(args.a, float) / cyl.radius
+        a = np.asarray(args.a, float)
+        if not np.all(np.isfinite(a) & (a > 0)):
+            bad = a[~(np.isfinite(a) & (a > 0))][0]
+            raise ValueError(f"--a must be a finite number > 0, got {bad!r}")
+        return a / cyl.radius  # type: ignore[union-attr]
     return None
+
+
+def record_flags(parser: argparse.ArgumentParser, args: argparse.Namespace) -> None:
+    """Remember the flag of every option (by its dest), for :func:`flag_message`."""
+    flags: dict[str, str] = {}
+    for action in parser._actions:
+        longs = [s for s in action.option_strings if s.startswith("--")]
+        if longs and action.dest not in flags:
+            flags[action.dest] = longs[0]
+    args._flags = flags

@@ -2,206 +2,353 @@
 
 from __future__ import annotations
 
-import csv
-import io
-import sys
+import argparse
+from typing import Any
 
 import numpy as np
 
-from .._version import __version__
-from ..normal import contact_for_load, load_curve, normal_contact, pull_off
+from ..cylinder import Cylinder
+from ..normal import NormalContact, contact_for_load, load_curve, normal_contact, pull_off
+from ..output import Table, table_from_result
+from ..reference import kappa, maugis_parameter
 from ._options import (
-    _MAX_POINTS,
-    _add_groups,
-    _add_width_options,
-    _dump_json,
-    _groups,
-    _half_widths,
-    _table,
+    MAX_POINTS,
+    add_command,
+    add_groups,
+    add_output_options,
+    add_width_options,
+    command_line,
+    emit,
+    finish,
+    groups,
+    half_widths,
+    null_missing,
+    si_parameters,
 )
 
+__all__ = ["register"]
 
-def _cmd_normal(args) -> int:
-    rho, s, cyl = _groups(args)
-    A = _half_widths(args, cyl, "F_over_Eh")
+_GROUP_UNITS = {"R_over_h": "1", "sigma0_over_E": "1", "kappa": "1", "maugis_parameter": "1"}
+
+
+def _parameters(args, rho: float, s: float, cyl: Cylinder | None) -> tuple[dict, dict]:
+    params: dict[str, Any] = {"R_over_h": rho, "sigma0_over_E": s}
+    units = dict(_GROUP_UNITS)
+    params["kappa"] = kappa(rho, s)
+    params["maugis_parameter"] = maugis_parameter(rho, s)
+    if cyl is not None:
+        p, u = si_parameters(args, cyl)
+        params.update(p)
+        units.update(u)
+    return params, units
+
+
+# --------------------------------------------------------------------------------------------
+# normal
+
+
+def _cmd_normal(args: argparse.Namespace) -> int:
+    rho, s, cyl = groups(args)
+    A = half_widths(args, cyl, "F_over_Eh")
     if A is not None:
         if args.branch != "stable":
             raise ValueError(
-                "--branch applies to given loads (--F-over-Eh or --load): a "
-                "contact half-width fixes the state"
+                "--branch applies to given loads (--F-over-Eh or --load): a contact half-width "
+                "fixes the state"
             )
-        r = normal_contact(A, rho, s, method=args.method)
+        r = normal_contact(A, rho, s, method=args.method, raise_on_failure=False)
+        ok = np.asarray(r.converged, bool).reshape(-1)
+        state = np.where(ok, "contact", "not-converged")
+        reason = np.full(ok.shape, None, dtype=object)
+        for i in np.flatnonzero(~ok):
+            reason[i] = (
+                f"the {args.method} solver did not converge at a_over_R={float(A[i])!r} "
+                f"(error estimate {float(np.reshape(r.error_estimate, -1)[i]):.3g})"
+            )
+        given = "a_over_R"
     else:
         if args.method != "closed-form":
             raise ValueError(
-                "--method collocation applies to given contact half-widths "
-                "(--a-over-R, --a-over-R-range or --a); the contact for a given "
-                "load is found by the closed form"
+                "--method collocation applies to given contact half-widths (--a-over-R, "
+                "--a-over-R-range or --a); the contact for a given load is found by the closed "
+                "form"
             )
         if args.F_over_Eh is not None:
-            r = contact_for_load(np.asarray(args.F_over_Eh, float), rho, s, branch=args.branch)
-        else:  # through the Cylinder, which speaks of a load below pull-off in N/m
-            r = cyl.contact(load=np.asarray(args.load, float), branch=args.branch).nondimensional
-    recs = []
-    for i in range(np.size(r.a_over_R)):
+            F = np.asarray(args.F_over_Eh, float)
+        else:
+            F = np.asarray(args.load, float) / (cyl.modulus * cyl.adhesion_range)  # type: ignore[union-attr]
+        r = contact_for_load(F, rho, s, branch=args.branch, on_no_equilibrium="report")
+        state = np.asarray(r.state).reshape(-1)
+        reason = _load_reasons(F.reshape(-1), state, rho, s, args.branch, cyl)
+        given = "F_over_Eh"
+    table = _normal_table(args, r, rho, s, cyl, state, reason, given)
+    emit(args, table)
+    return finish(table, "contact")
 
-        def g(name, i=i):
-            return np.atleast_1d(getattr(r, name))[i]
 
-        rec = {
-            "a_over_R": float(g("a_over_R")),
-            "c_over_R": float(g("c_over_R")),
-            "F_over_Eh": float(g("F_over_Eh")),
-            "c_over_a": float(g("c_over_R") / g("a_over_R")),
-            "stable": bool(g("stable")),
-            "R_over_h": float(rho),
-            "sigma0_over_E": float(s),
-            "method": r.method,
-            "n_collocation": int(g("n_collocation")),
-            "residual_separation": float(g("residual_separation")),
-            "error_estimate": float(g("error_estimate")),
-            "converged": bool(g("converged")),
-        }
-        if cyl is not None:
-            rec.update(
-                a_m=rec["a_over_R"] * cyl.radius,
-                c_m=rec["c_over_R"] * cyl.radius,
-                F_N_per_m=rec["F_over_Eh"] * cyl.modulus * cyl.adhesion_range,
+def _load_reasons(F, state, rho, s, branch, cyl) -> np.ndarray:
+    reason = np.full(state.shape, None, dtype=object)
+    bad = np.flatnonzero(state != "contact")
+    if bad.size == 0:
+        return reason
+    po = pull_off(rho, s)
+    unit, scale = ("N/m", cyl.modulus * cyl.adhesion_range) if cyl else ("E h", 1.0)
+    for i in bad:
+        if F[i] < po.F_minimum_over_Eh or branch == "stable":
+            reason[i] = (
+                f"no contact carries this load: it is below the pull-off force "
+                f"{po.F_minimum_over_Eh * scale:.6g} {unit} (the cylinder has pulled off)"
             )
-        recs.append(rec)
-    if args.json:
-        print(_dump_json(recs))
-    else:
-        keys = ["a_over_R", "c_over_R", "F_over_Eh", "c_over_a", "stable"]
-        if cyl is not None:
-            keys += ["a_m", "c_m", "F_N_per_m"]
-        print(f"# normal contact, R/h = {rho:g}, sigma0/E = {s:g} ({r.method})")
-        print(_table(recs, keys))
-    return 0
+        else:
+            reason[i] = (
+                f"no unstable contact carries this load: that branch exists only between the "
+                f"load minimum {po.F_minimum_over_Eh * scale:.6g} {unit} and the zero-width "
+                f"load {po.F_zero_width_over_Eh * scale:.6g} {unit}"
+            )
+    return reason
 
 
-def _cmd_pulloff(args) -> int:
-    rho, s, cyl = _groups(args)
+def _normal_table(args, r: NormalContact, rho, s, cyl, state, reason, given) -> Table:
+    params, units = _parameters(args, rho, s, cyl)
+    units.update(
+        a_over_R="1",
+        c_over_R="1",
+        F_over_Eh="1",
+        c_over_a="1",
+        residual_separation="1",
+        residual_consistency="1",
+        error_estimate="1",
+    )
+    if args.branch != "stable":
+        params["branch"] = args.branch
+    extra: dict[str, Any] = {}
+    show = ["a_over_R", "c_over_R", "F_over_Eh", "c_over_a", "stable"]
+    if cyl is not None:
+        R, Eh = cyl.radius, cyl.modulus * cyl.adhesion_range
+        extra.update(
+            a_m=np.multiply(r.a_over_R, R),
+            c_m=np.multiply(r.c_over_R, R),
+            F_N_per_m=np.multiply(r.F_over_Eh, Eh),
+        )
+        units.update(a_m="m", c_m="m", F_N_per_m="N/m")
+        show += ["a_m", "c_m", "F_N_per_m"]
+        if args.length is not None:
+            extra["F_total_N"] = np.multiply(r.F_over_Eh, Eh * args.length)
+            units["F_total_N"] = "N"
+            show.append("F_total_N")
+    extra.update(state=state, reason=reason)
+    if np.any(state != "contact"):
+        show.append("state")
+    # the load is the difference of the Hertz and the adhesive terms: round-off is relative
+    # to them, not to the load
+    a = np.asarray(r.a_over_R, float)
+    c = np.asarray(r.c_over_R, float)
+    with np.errstate(invalid="ignore"):
+        terms = np.pi / 4 * a * a * rho + 2 * s * rho * np.sqrt(np.maximum(c * c - a * a, 0.0))
+    scales = {"F_over_Eh": terms}
+    if cyl is not None:
+        scales["F_N_per_m"] = terms * cyl.modulus * cyl.adhesion_range
+        if args.length is not None:
+            scales["F_total_N"] = scales["F_N_per_m"] * args.length
+    table = table_from_result(
+        r,
+        columns=extra,
+        drop=("state",),
+        parameters=params,
+        units=units,
+        command=command_line(args),
+        title=f"normal contact ({r.method}), compressive load positive",
+        scales=scales,
+        show=show,
+    )
+    return null_missing(table, state != "contact", keep=(given, "state", "reason"))
+
+
+# --------------------------------------------------------------------------------------------
+# pulloff
+
+
+def _cmd_pulloff(args: argparse.Namespace) -> int:
+    rho, s, cyl = groups(args)
     p = pull_off(rho, s)
-    rec = p.to_dict()
+    params, units = _parameters(args, rho, s, cyl)
+    params.pop("kappa")
+    params.pop("maugis_parameter")
+    units.update(
+        F_pulloff_over_Eh="1",
+        a_over_R_at_pulloff="1",
+        c_over_R_at_pulloff="1",
+        F_zero_width_over_Eh="1",
+        F_minimum_over_Eh="1",
+        a_over_R_at_minimum="1",
+    )
+    extra: dict[str, Any] = {}
+    show = ["F_pulloff_over_Eh", "a_over_R_at_pulloff", "mechanism", "F_zero_width_over_Eh"]
     if cyl is not None:
         Eh = cyl.modulus * cyl.adhesion_range
-        rec.update(
-            F_pulloff_N_per_m=rec["F_pulloff_over_Eh"] * Eh,
-            a_at_pulloff_m=rec["a_over_R_at_pulloff"] * cyl.radius,
-            F_zero_width_N_per_m=rec["F_zero_width_over_Eh"] * Eh,
+        extra.update(
+            F_pulloff_N_per_m=p.F_pulloff_over_Eh * Eh,
+            a_at_pulloff_m=p.a_over_R_at_pulloff * cyl.radius,
+            F_zero_width_N_per_m=p.F_zero_width_over_Eh * Eh,
         )
-    if args.json:
-        print(_dump_json(rec))
-    else:
-        print(f"# pull-off under load control, R/h = {rho:g}, sigma0/E = {s:g}")
-        w = max(len(k) for k in rec)
-        for k, v in rec.items():
-            print(f"{k.ljust(w)}  {v:.10g}" if isinstance(v, float) else f"{k.ljust(w)}  {v}")
+        units.update(F_pulloff_N_per_m="N/m", a_at_pulloff_m="m", F_zero_width_N_per_m="N/m")
+        show += ["F_pulloff_N_per_m", "a_at_pulloff_m"]
+        if args.length is not None:
+            extra["F_pulloff_total_N"] = p.F_pulloff_over_Eh * Eh * args.length
+            units["F_pulloff_total_N"] = "N"
+            show.append("F_pulloff_total_N")
+    table = table_from_result(
+        p,
+        columns=extra,
+        parameters=params,
+        units=units,
+        command=command_line(args),
+        title="pull-off under load control (the most tensile load a contact carries)",
+        show=show,
+    )
+    emit(args, table)
     return 0
 
 
-def _cmd_curve(args) -> int:
-    rho, s, _ = _groups(args)
+# --------------------------------------------------------------------------------------------
+# curve
+
+
+def _cmd_curve(args: argparse.Namespace) -> int:
+    rho, s, cyl = groups(args)
     for flag, v in (("--num", args.num), ("--num-noncontact", args.num_noncontact)):
-        if not 2 <= v <= _MAX_POINTS:
-            raise ValueError(f"{flag} must be an integer in [2, {_MAX_POINTS}], got {v!r}")
-    c = load_curve(
-        rho, s, a_max_over_R=args.a_max_over_R, num=args.num, num_noncontact=args.num_noncontact
-    )
-    keys = [
-        "branch",
-        "central_gap_over_h",
-        "a_over_R",
-        "c_over_R",
-        "F_over_Eh",
-        "stable",
-        "turning_point",
-        "pulloff",
-    ]
+        if not 2 <= v <= MAX_POINTS:
+            raise ValueError(f"{flag} must be an integer in [2, {MAX_POINTS}], got {v!r}")
+    a_max = args.a_max_over_R
+    if cyl is not None and args.a_max is not None:
+        a_max = args.a_max / cyl.radius
+    elif args.a_max is not None:
+        raise ValueError("--a-max [m] is an SI input: give --radius and the materials too")
+    c = load_curve(rho, s, a_max_over_R=a_max, num=args.num, num_noncontact=args.num_noncontact)
     po = c.pulloff
-    recs = []
-    for i in range(c.a_over_R.size):
-        is_po = c.branch[i] == "contact" and (
-            (po.mechanism == "zero-width" and i == int(np.argmax(c.branch == "contact")))
-            or (po.mechanism == "snap-off" and bool(c.turning_point[i]))
+    # the pull-off state: the load minimum (snap-off) or the touching state (zero width)
+    is_po = np.zeros(c.a_over_R.shape, bool)
+    if po.mechanism == "snap-off":
+        is_po |= c.turning_point
+    elif s > 0:
+        touch = np.flatnonzero((c.branch == "non-contact") & (c.central_gap_over_h == 0))
+        is_po[touch[-1:]] = True
+    params, units = _parameters(args, rho, s, cyl)
+    units.update(central_gap_over_h="1", a_over_R="1", c_over_R="1", F_over_Eh="1")
+    extra: dict[str, Any] = {"pulloff": is_po}
+    show = ["branch", "central_gap_over_h", "a_over_R", "c_over_R", "F_over_Eh", "stable"]
+    if cyl is not None:
+        R, Eh = cyl.radius, cyl.modulus * cyl.adhesion_range
+        extra.update(
+            central_gap_m=c.central_gap_over_h * cyl.adhesion_range,
+            a_m=c.a_over_R * R,
+            c_m=c.c_over_R * R,
+            F_N_per_m=c.F_over_Eh * Eh,
         )
-        recs.append(
-            {
-                "branch": str(c.branch[i]),
-                "central_gap_over_h": float(c.central_gap_over_h[i]),
-                "a_over_R": float(c.a_over_R[i]),
-                "c_over_R": float(c.c_over_R[i]),
-                "F_over_Eh": float(c.F_over_Eh[i]),
-                "stable": bool(c.stable[i]),
-                "turning_point": bool(c.turning_point[i]),
-                "pulloff": bool(is_po),
-            }
-        )
-    if args.format == "json":
-        text = _dump_json(
-            {"R_over_h": rho, "sigma0_over_E": s, "pulloff": po.to_dict(), "points": recs}
-        )
-    else:
-        buf = io.StringIO()
-        buf.write(
-            f"# linecontact {__version__} load curve\n# command: linecontact "
-            f"{' '.join(sys.argv[1:]) if args.argv is None else ' '.join(args.argv)}\n"
-            f"# R_over_h = {rho!r}, sigma0_over_E = {s!r}\n"
-            f"# units: lengths over R, gap over h, force per unit length over E h\n"
-            f"# pull-off: F_over_Eh = {po.F_pulloff_over_Eh!r} ({po.mechanism}) at "
-            f"a_over_R = {po.a_over_R_at_pulloff!r}\n"
-        )
-        w = csv.DictWriter(buf, fieldnames=keys, lineterminator="\n")
-        w.writeheader()
-        w.writerows(recs)
-        text = buf.getvalue()
-    if args.output:
-        try:
-            with open(args.output, "w", encoding="utf-8") as fh:
-                fh.write(text if text.endswith("\n") else text + "\n")
-        except OSError as exc:
-            raise ValueError(
-                f"cannot write -o/--output {args.output!r}: {exc.strerror or exc}"
-            ) from None
-        print(f"wrote {args.output}", file=sys.stderr)
-    else:
-        print(text.rstrip("\n"))
+        units.update(central_gap_m="m", a_m="m", c_m="m", F_N_per_m="N/m")
+        show += ["a_m", "F_N_per_m"]
+        if args.length is not None:
+            extra["F_total_N"] = c.F_over_Eh * Eh * args.length
+            units["F_total_N"] = "N"
+            show.append("F_total_N")
+    show.append("pulloff")
+    table = table_from_result(
+        c,
+        columns=extra,
+        parameters=params,
+        units=units,
+        command=command_line(args),
+        title=(
+            f"load curve: non-contact branch (gap g0 from h to 0), then the contact branch; "
+            f"pull-off {po.F_pulloff_over_Eh:.6g} ({po.mechanism})"
+        ),
+        show=show,
+    )
+    emit(args, table)
     return 0
 
 
-def register(sub) -> None:
+# --------------------------------------------------------------------------------------------
+# registration
+
+
+def register(sub: Any) -> None:
     """Add ``normal``, ``pulloff`` and ``curve`` to the subparsers ``sub``."""
-    n = sub.add_parser(
+    n = add_command(
+        sub,
         "normal",
-        help="adhesive-zone width and load for given contact widths "
-        "(or the contact for given loads)",
+        "adhesive-zone width and load for given contact half-widths, or the contact for loads",
+        "Normal contact with Maugis-Dugdale adhesion (paper Eqs 5-14): for each contact "
+        "half-width a, the end c of the adhesive zone and the load F per unit length; or, for "
+        "each load, the contact that carries it (stable or unstable branch). Compressive load "
+        "positive; a load below the pull-off force has no contact (state no-equilibrium).",
+        [
+            "linecontact normal --R-over-h 100 --sigma0-over-E 0.01 --a-over-R 0.01 0.05",
+            "linecontact normal --R-over-h 100 --sigma0-over-E 0.2 --F-over-Eh -1 0 1 --json",
+            "linecontact normal --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 "
+            "--load 0 1 --length 5e-6",
+        ],
     )
-    _add_groups(n)
-    _add_width_options(n, "--F-over-Eh", "loads (inverse problem)")
+    add_groups(n)
+    w = n.add_argument_group("contact half-widths or loads (exactly one)")
+    add_width_options(w, "--F-over-Eh", "loads per unit length over E h (the contact for them)")
     n.add_argument(
         "--branch",
         choices=("stable", "unstable"),
         default="stable",
-        help="for given loads: the stable (default) or unstable contact",
+        help="for given loads: the stable contact or the narrower, unstable one",
     )
-    n.add_argument("--method", choices=("closed-form", "collocation"), default="closed-form")
-    n.add_argument("--json", action="store_true", help="JSON array of records on stdout")
+    n.add_argument(
+        "--method",
+        choices=("closed-form", "collocation"),
+        default="closed-form",
+        help="solver for given half-widths: the closed form or the paper's collocation",
+    )
+    add_output_options(n)
     n.set_defaults(func=_cmd_normal)
 
-    po = sub.add_parser("pulloff", help="pull-off force under load control")
-    _add_groups(po)
-    po.add_argument("--json", action="store_true", help="one JSON object on stdout")
+    po = add_command(
+        sub,
+        "pulloff",
+        "pull-off force under load control and its mechanism",
+        "The most tensile load a contact carries (paper Eq 14 and the snap-off): the "
+        "mechanism is zero-width (the contact peels to zero width at the load of Eq 14) or "
+        "snap-off (at a finite width, below Eq 14). One record.",
+        [
+            "linecontact pulloff --R-over-h 100 --sigma0-over-E 0.01",
+            "linecontact pulloff --radius 50e-9 --E1 70e9 --nu1 0.17 --E2 160e9 --nu2 0.22 "
+            "--work-of-adhesion 0.1 --z0 0.3e-9 --length 5e-6 --json",
+        ],
+    )
+    add_groups(po)
+    add_output_options(po)
     po.set_defaults(func=_cmd_pulloff)
 
-    cu = sub.add_parser("curve", help="the whole load curve (non-contact branch included)")
-    _add_groups(cu)
-    cu.add_argument("--a-max-over-R", type=float, default=None)
-    cu.add_argument("--num", type=int, default=200, help="points on the contact branch")
-    cu.add_argument("--num-noncontact", type=int, default=40)
-    cu.add_argument("--format", choices=("csv", "json"), default="csv")
-    cu.add_argument(
-        "--json", action="store_const", dest="format", const="json", help="same as --format json"
+    cu = add_command(
+        sub,
+        "curve",
+        "the whole load curve: non-contact branch, contact branch, turning point, pull-off",
+        "The load F against the state: first the non-contact branch (central gap g0 from h "
+        "to 0, only the adhesive zone), then the contact branch (a from 0 up), with the load "
+        "minimum (turning point) and the pull-off state marked.",
+        [
+            "linecontact curve --R-over-h 100 --sigma0-over-E 0.05 --format csv -o curve.csv",
+            "linecontact curve --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 --json",
+        ],
     )
-    cu.add_argument("-o", "--output", help="write to this file instead of stdout")
+    add_groups(cu)
+    c = cu.add_argument_group("sampling")
+    c.add_argument(
+        "--a-max-over-R",
+        type=float,
+        metavar="A",
+        help="largest contact half-width a/R (default: three times the width at pull-off, at "
+        "least the Hertz width at ten times the pull-off force and 0.02)",
+    )
+    c.add_argument("--a-max", type=float, metavar="A", help="largest half-width a [m] (SI)")
+    c.add_argument("--num", type=int, default=200, help="points on the contact branch")
+    c.add_argument(
+        "--num-noncontact", type=int, default=40, help="points on the non-contact branch"
+    )
+    add_output_options(cu)
     cu.set_defaults(func=_cmd_curve)

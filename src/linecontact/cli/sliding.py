@@ -1,8 +1,7 @@
 """The ``slide`` subcommand: steady sliding with different trailing and leading adhesion.
 
-Registered on the main parser by :func:`linecontact.cli.build_parser`; a thin shell over
-:func:`linecontact.sliding.sliding_contact` and
-:func:`linecontact.sliding.sliding_contact_for_load`. The ``--json`` records carry at least
+A thin shell over :func:`linecontact.sliding.sliding_contact` and
+:func:`linecontact.sliding.sliding_contact_for_load`. The records carry at least
 ``a_over_R``, ``c1_over_R``, ``c2_over_R``, ``e_over_R``, ``F_over_Eh2``, ``M_over_Eh2R``
 (a contract).
 """
@@ -10,165 +9,246 @@ Registered on the main parser by :func:`linecontact.cli.build_parser`; a thin sh
 from __future__ import annotations
 
 import argparse
+from typing import Any
 
 import numpy as np
 
-from ..sliding import sliding_contact, sliding_contact_for_load
+from ..output import table_from_result
+from ..sliding import sliding_contact, sliding_contact_for_load, sliding_pull_off
 from ._options import (
-    _add_si_materials,
-    _add_width_options,
-    _cylinder,
-    _dump_json,
-    _half_widths,
-    _table,
+    SI_KEYS,
+    add_command,
+    add_output_options,
+    add_si_materials,
+    add_width_options,
+    command_line,
+    cylinder,
+    emit,
+    finish,
+    half_widths,
+    null_missing,
+    si_parameters,
 )
 
 __all__ = ["register"]
 
-_SI_KEYS = ("radius", "modulus", "E1", "nu1", "E2", "nu2", "sigma0", "h", "work_of_adhesion", "z0")
-
-_EPILOG = (
-    "Axes: x along the sliding direction (the cylinder moves to +x), origin at the "
-    "contact centre; trailing zone -c1 < x < -a, leading zone a < x < c2; e is the "
-    "apex (axis) position. M = int x p dx about the contact centre, clockwise positive "
-    "(x right, y up): the moment that must act on the cylinder with the load; the "
-    "pressure's own moment on it is M counterclockwise. Compressive load positive."
+_DESCRIPTION = (
+    "Steady sliding (paper Eqs 18-22): the trailing edge adheres over a longer range h1 than "
+    "the leading edge h2 (same sigma0), so the adhesive zones, the apex position e, the "
+    "load F and the moment M lose their symmetry. Axes: x along the sliding direction (the "
+    "cylinder moves to +x), origin at the contact centre; trailing zone -c1 < x < -a, "
+    "leading zone a < x < c2; e is the apex (axis) position. M = int x p dx about the contact "
+    "centre, clockwise positive (x right, y up): the moment that must act on the cylinder "
+    "with the load; the pressure's own moment on it is M counterclockwise. Compressive load "
+    "positive."
 )
 
 
-def register(sub) -> argparse.ArgumentParser:
-    """Add the ``slide`` subcommand to the subparsers ``sub``; returns its parser."""
-    p = sub.add_parser(
+def register(sub: Any) -> None:
+    """Add the ``slide`` subcommand to the subparsers ``sub``."""
+    p = add_command(
+        sub,
         "slide",
-        help="steady sliding: adhesive zones, eccentricity, load and "
-        "moment with different trailing/leading adhesion",
-        epilog=_EPILOG,
+        "steady sliding: adhesive zones, eccentricity, load and moment (trailing h1, leading h2)",
+        _DESCRIPTION,
+        [
+            "linecontact slide --R-over-h2 100 --h1-over-h2 2 --sigma0-over-E 0.04 "
+            "--a-over-R 0.01 0.05",
+            "linecontact slide --R-over-h2 100 --h1-over-h2 2 --sigma0-over-E 0.04 "
+            "--F-over-Eh2 -0.5 1 --tau0-over-E 0.01 --json",
+            "linecontact slide --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h2 0.5e-9 --h1 1e-9 "
+            "--load 0.05 --tau0 5e8 --length 5e-6",
+        ],
     )
     g = p.add_argument_group("nondimensional groups (the paper's)")
     g.add_argument(
-        "--R-over-h2", type=float, help="radius over the leading-edge adhesion range h2, > 0"
+        "--R-over-h2",
+        type=float,
+        metavar="R/h2",
+        help="radius over the leading-edge adhesion range h2, > 0",
     )
     g.add_argument(
         "--h1-over-h2",
         type=float,
-        help="trailing over leading adhesion range, > 0 (1: normal contact)",
+        metavar="H",
+        help="trailing over leading adhesion range, > 0 (1: the normal contact)",
     )
     g.add_argument(
         "--sigma0-over-E",
         type=float,
+        metavar="S",
         help="adhesive stress over composite modulus, >= 0 (0: Hertz)",
     )
     g.add_argument(
         "--tau0-over-E",
         type=float,
+        metavar="T",
         help="interface shear strength over E, >= 0: adds the friction force 2 a tau0",
     )
-    si = _add_si_materials(p)
-    si.add_argument("--h2", dest="h", type=float, help="leading-edge adhesion range h2 [m]")
+    si = add_si_materials(p, range_flag="--h2")
     si.add_argument(
         "--h1", type=float, help="trailing-edge adhesion range h1 [m] (or give --h1-over-h2)"
     )
-    si.add_argument(
-        "--work-of-adhesion", type=float, help="leading-edge w [J/m^2] (with --z0; h2 = 0.974 z0)"
-    )
-    si.add_argument("--z0", type=float, help="equilibrium spacing [m]")
-    si.add_argument("--tau0", type=float, help="interface shear strength [Pa]")
-    w = p.add_argument_group("contact widths or loads (exactly one)")
-    _add_width_options(w, "--F-over-Eh2", "normal loads (inverse problem, stable branch)")
+    si.add_argument("--tau0", type=float, help="interface shear strength tau0 [Pa]")
+    w = p.add_argument_group("contact half-widths or loads (exactly one)")
+    add_width_options(w, "--F-over-Eh2", "normal loads over E h2 (the stable sliding contact)")
     p.add_argument(
         "--method",
         choices=("collocation", "closed-form"),
         default="collocation",
-        help="the paper's Gauss-Chebyshev collocation (default) or the closed form",
+        help="the paper's Gauss-Chebyshev collocation or the closed form",
     )
-    p.add_argument("--json", action="store_true", help="JSON array of records on stdout")
-    p.set_defaults(func=_cmd_slide)
-    return p
+    add_output_options(p)
+    p.set_defaults(func=_cmd_slide, _api_flags={"adhesion_range": "--h2"})
 
 
-def _setup(args):
+def _setup(args: argparse.Namespace):
     """(R/h2, h1/h2, sigma0/E, tau0/E or None, Cylinder or None) from the arguments."""
-    si_given = (
-        any(getattr(args, k) is not None for k in _SI_KEYS)
+    si = (
+        any(getattr(args, k) is not None for k in (*SI_KEYS, "length"))
         or args.h1 is not None
         or args.tau0 is not None
     )
-    groups_given = any(
-        v is not None for v in (args.R_over_h2, args.sigma0_over_E, args.tau0_over_E)
-    )
-    if si_given and groups_given:
+    nd = any(v is not None for v in (args.R_over_h2, args.sigma0_over_E, args.tau0_over_E))
+    if si and nd:
         raise ValueError(
             "give either the nondimensional groups (--R-over-h2, --sigma0-over-E, "
             "--tau0-over-E) or SI inputs (--radius, ...), not both"
         )
     if (args.h1_over_h2 is None) == (args.h1 is None):
         raise ValueError("give exactly one of --h1-over-h2 or --h1 [m]")
-    if not si_given:
+    if not si:
         if args.R_over_h2 is None or args.sigma0_over_E is None:
             raise ValueError(
                 "give --R-over-h2, --h1-over-h2 and --sigma0-over-E (or SI inputs with --radius)"
             )
         return args.R_over_h2, args.h1_over_h2, args.sigma0_over_E, args.tau0_over_E, None
-    if args.radius is None:
-        raise ValueError("SI inputs need --radius [m]")
-    args.R_over_h = None  # what the shared SI builder reads
-    args.sigma0_over_E = None
-    cyl = _cylinder(args, h_flag="--h2")
+    cyl = cylinder(args, range_flag="--h2")
+    if args.h1 is not None and not (np.isfinite(args.h1) and args.h1 > 0):
+        raise ValueError(f"--h1 must be a finite number > 0, got {args.h1!r}")
+    if args.tau0 is not None and not (np.isfinite(args.tau0) and args.tau0 >= 0):
+        raise ValueError(f"--tau0 must be a finite number >= 0, got {args.tau0!r}")
     r = args.h1_over_h2 if args.h1 is None else args.h1 / cyl.adhesion_range
     tau = None if args.tau0 is None else args.tau0 / cyl.modulus
     return cyl.R_over_h, r, cyl.sigma0_over_E, tau, cyl
 
 
-def _cmd_slide(args) -> int:
+def _cmd_slide(args: argparse.Namespace) -> int:
     rho, r, s, tau, cyl = _setup(args)
-    A = _half_widths(args, cyl, "F_over_Eh2")
+    A = half_widths(args, cyl, "F_over_Eh2")
     if A is not None:
-        res = sliding_contact(A, rho, r, s, tau0_over_E=tau, method=args.method)
-    else:
-        F = (
-            np.asarray(args.F_over_Eh2, float)
-            if args.F_over_Eh2 is not None
-            else np.asarray(args.load, float) / (cyl.modulus * cyl.adhesion_range)
+        res = sliding_contact(
+            A, rho, r, s, tau0_over_E=tau, method=args.method, raise_on_failure=False
         )
-        res = sliding_contact_for_load(F, rho, r, s, tau0_over_E=tau, method=args.method)
-    recs = []
-    for rec in res.to_records():
-        rec["c1_minus_c2_over_R"] = rec["c1_over_R"] - rec["c2_over_R"]
-        if tau is None:
-            rec.pop("tau0_over_E")
-            rec.pop("T_over_Eh2")
-        if cyl is not None:
-            R, Eh = cyl.radius, cyl.modulus * cyl.adhesion_range
-            rec.update(
-                a_m=rec["a_over_R"] * R,
-                c1_m=rec["c1_over_R"] * R,
-                c2_m=rec["c2_over_R"] * R,
-                e_m=rec["e_over_R"] * R,
-                F_N_per_m=rec["F_over_Eh2"] * Eh,
-                M_N=rec["M_over_Eh2R"] * Eh * R,
-            )
-            if tau is not None:
-                rec["T_N_per_m"] = rec["T_over_Eh2"] * Eh
-        recs.append(rec)
-    if args.json:
-        print(_dump_json(recs))
+        ok = np.asarray(res.converged, bool).reshape(-1)
+        state = np.where(ok, "contact", "not-converged")
+        reason = np.full(ok.shape, None, dtype=object)
+        for i in np.flatnonzero(~ok):
+            reason[i] = f"the {args.method} solver did not converge at a_over_R={float(A[i])!r}"
+        given = "a_over_R"
     else:
-        keys = [
+        if args.F_over_Eh2 is not None:
+            F = np.asarray(args.F_over_Eh2, float)
+        else:
+            F = np.asarray(args.load, float) / (cyl.modulus * cyl.adhesion_range)  # type: ignore[union-attr]
+        res = sliding_contact_for_load(
+            F, rho, r, s, tau0_over_E=tau, method=args.method, on_no_equilibrium="report"
+        )
+        state = np.asarray(res.state).reshape(-1)
+        reason = np.full(state.shape, None, dtype=object)
+        if np.any(state != "contact"):
+            po = sliding_pull_off(rho, r, s) if s > 0 else None
+            unit, scale = ("N/m", cyl.modulus * cyl.adhesion_range) if cyl else ("E h2", 1.0)
+            for i in np.flatnonzero(state != "contact"):
+                reason[i] = (
+                    "no steadily sliding contact carries this load: it is below the pull-off "
+                    f"force {po.F_pulloff_over_Eh2 * scale:.6g} {unit}"
+                    if po is not None
+                    else "without adhesion (sigma0 = 0) the load must be > 0"
+                )
+        given = "F_over_Eh2"
+    params: dict[str, Any] = {}
+    units = {
+        k: "1"
+        for k in (
+            "R_over_h2",
+            "h1_over_h2",
+            "sigma0_over_E",
+            "tau0_over_E",
             "a_over_R",
             "c1_over_R",
             "c2_over_R",
             "e_over_R",
             "F_over_Eh2",
             "M_over_Eh2R",
-            "stable",
-        ]
-        if tau is not None:
-            keys.insert(-1, "T_over_Eh2")
-        if cyl is not None:
-            keys += ["a_m", "F_N_per_m", "M_N"]
-        print(
-            f"# steady sliding, R/h2 = {rho:g}, h1/h2 = {r:g}, sigma0/E = {s:g} "
-            f"({res.method}); M clockwise positive about the contact centre"
+            "M_axis_over_Eh2R",
+            "T_over_Eh2",
+            "c1_minus_c2_over_R",
+            "residual_trailing",
+            "residual_leading",
+            "residual_consistency",
+            "error_estimate",
         )
-        print(_table(recs, keys))
-    return 0
+    }
+    extra: dict[str, Any] = {"c1_minus_c2_over_R": np.subtract(res.c1_over_R, res.c2_over_R)}
+    show = ["a_over_R", "c1_over_R", "c2_over_R", "e_over_R", "F_over_Eh2", "M_over_Eh2R"]
+    drop = ["state"]
+    if tau is None:
+        drop += ["tau0_over_E", "T_over_Eh2"]
+    else:
+        show.append("T_over_Eh2")
+    show.append("stable")
+    if cyl is not None:
+        sip, siu = si_parameters(args, cyl)
+        params.update(sip)
+        units.update(siu)
+        params["h1_m"] = r * cyl.adhesion_range
+        units["h1_m"] = "m"
+        R, Eh = cyl.radius, cyl.modulus * cyl.adhesion_range
+        extra.update(
+            a_m=np.multiply(res.a_over_R, R),
+            c1_m=np.multiply(res.c1_over_R, R),
+            c2_m=np.multiply(res.c2_over_R, R),
+            e_m=np.multiply(res.e_over_R, R),
+            F_N_per_m=np.multiply(res.F_over_Eh2, Eh),
+            M_N=np.multiply(res.M_over_Eh2R, Eh * R),
+        )
+        units.update(a_m="m", c1_m="m", c2_m="m", e_m="m", F_N_per_m="N/m", M_N="N m/m")
+        show += ["a_m", "F_N_per_m", "M_N"]
+        if tau is not None:
+            params["tau0_Pa"] = args.tau0
+            units["tau0_Pa"] = "Pa"
+            extra["T_N_per_m"] = np.multiply(res.T_over_Eh2, Eh)
+            units["T_N_per_m"] = "N/m"
+            show.append("T_N_per_m")
+        if args.length is not None:
+            L = args.length
+            extra.update(
+                F_total_N=np.multiply(res.F_over_Eh2, Eh * L),
+                M_total_N_m=np.multiply(res.M_over_Eh2R, Eh * R * L),
+            )
+            units.update(F_total_N="N", M_total_N_m="N m")
+            show += ["F_total_N", "M_total_N_m"]
+            if tau is not None:
+                extra["T_total_N"] = np.multiply(res.T_over_Eh2, Eh * L)
+                units["T_total_N"] = "N"
+                show.append("T_total_N")
+    extra.update(state=state, reason=reason)
+    if np.any(state != "contact"):
+        show.append("state")
+    table = table_from_result(
+        res,
+        columns=extra,
+        drop=drop,
+        parameters=params,
+        units=units,
+        command=command_line(args),
+        title=(
+            f"steady sliding ({res.method}); M clockwise positive about the contact centre, "
+            "compressive load positive"
+        ),
+        show=show,
+    )
+    table = null_missing(table, state != "contact", keep=(given, "state", "reason"))
+    emit(args, table)
+    return finish(table, "contact")

@@ -1,75 +1,99 @@
-"""Command-line subcommands for tangential loading: ``slide-init`` and ``roll``.
+"""The subcommands of tangential loading: ``slide-init`` and ``roll``.
 
-Registered on the ``linecontact`` parser by :func:`register` (called from
-:func:`linecontact.cli.build_parser`); a thin shell over :mod:`linecontact.tangential`.
-
-``--json`` contract: an array of records, one per value of ``--d-over-a`` (or of the given
-tangential load), each with ``d_over_a`` and ``T_over_Ea`` (and ``creep_over_V`` for
-``roll``), plus ``state`` (``"stick"``, ``"stick-slip"`` or ``"sliding"``: a load at or
-above full slip is reported, not an error; ``d_over_a`` and ``creep_over_V`` are then
-``null``), the friction law and the diagnostics. Bad input: one ``error:`` line on stderr,
-exit status 2.
+A thin shell over :mod:`linecontact.tangential` and the SI functions of
+:mod:`linecontact.cylinder`. Records (one per value of the tangential state given) carry
+``d_over_a`` and ``T_over_Ea`` (and ``creep_over_V`` for ``roll``), ``state`` (``"stick"``,
+``"stick-slip"`` or ``"sliding"``: a load at or above full slip is reported, not an error;
+``d_over_a`` and ``creep_over_V`` are then null) and the diagnostics; the friction law and
+the normal contact are in ``parameters``.
 """
 
 from __future__ import annotations
+
+import argparse
+from typing import Any
 
 import numpy as np
 
 from .. import tangential as tg
 from .._validation import non_negative
-from ..cylinder import cylinder_sliding_initiation, cylinder_steady_rolling
+from ..cylinder import Cylinder, cylinder_sliding_initiation, cylinder_steady_rolling
 from ..normal import contact_for_load
-from . import _options as _cli
+from ..output import Table, table_from_result
+from ._options import (
+    SI_KEYS,
+    add_command,
+    add_groups,
+    add_output_options,
+    command_line,
+    cylinder,
+    emit,
+    finish,
+    si_parameters,
+)
 
 __all__ = ["register"]
 
-_SI_KEYS = ("radius", "modulus", "E1", "nu1", "E2", "nu2", "sigma0", "h", "work_of_adhesion", "z0")
 _ADHESION_KEYS = ("sigma0", "h", "work_of_adhesion", "z0")
 
 _DESCRIPTION = {
     "slide-init": (
         "Initiation of sliding (paper Eqs 15-17): a tangential force T on a contact of "
-        "half-width a; central stick zone |x| < d, slip zones d < |x| < a with shear stress "
-        "tau0 (or mu p for --friction coulomb, Cattaneo-Mindlin). T >= 2 a tau0 (mu F) "
-        "slides."
+        "half-width a (from the normal problem); central stick zone |x| < d, slip zones "
+        "d < |x| < a with shear stress tau0 (or mu p for --friction coulomb, "
+        "Cattaneo-Mindlin). T >= 2 a tau0 (mu F) slides: state sliding."
     ),
     "roll": (
         "Steady rolling of a driving cylinder (paper Eqs 23-29, Carter-type): rolling along "
         "+x, stick zone d < x < a at the leading edge, slip zone -a < x < d; T is the "
-        "tractive force, creep_over_V = (V - omega R)/V (negative: the driving cylinder "
-        "turns faster than it rolls)."
+        "tractive force, creep_over_V = (V - omega R)/V (negative: the driving cylinder turns "
+        "faster than it rolls)."
     ),
+}
+_EXAMPLES = {
+    "slide-init": [
+        "linecontact slide-init --tau0-over-E 0.01 --d-over-a 0.2 0.5",
+        "linecontact slide-init --tau0-over-E 0.01 --T-over-Ea 0.01 0.03 --json",
+        "linecontact slide-init --friction coulomb --mu 0.3 --a-over-R 0.01 --T-over-muF 0.5",
+    ],
+    "roll": [
+        "linecontact roll --tau0-over-E 0.01 --d-over-a -0.5 0.5 --method collocation",
+        "linecontact roll --R-over-h 100 --sigma0-over-E 0.01 --F-over-Eh 1 --tau0-over-E 0.01 "
+        "--d-over-a 0",
+        "linecontact roll --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 --load 1 "
+        "--tau0 1e8 --tangential-load 0.3 --length 5e-6",
+    ],
 }
 
 
-def register(sub) -> None:
+def register(sub: Any) -> None:
     """Add ``slide-init`` and ``roll`` to the subparsers ``sub`` of ``linecontact``."""
-    for name, helptext in (
+    for name, summary in (
         ("slide-init", "initiation of sliding under a tangential force (stick zone, T/(Ea))"),
-        ("roll", "steady rolling of a driving cylinder (T/(Ea), creep)"),
+        ("roll", "steady rolling of a driving cylinder (stick zone, T/(Ea), creep)"),
     ):
-        p = sub.add_parser(
-            name,
-            help=helptext,
-            description=_DESCRIPTION[name],
-            epilog="Give exactly one of --d-over-a, --T-over-Ea, --T-over-muF "
-            "(Coulomb) or --tangential-load (SI).",
-        )
+        p = add_command(sub, name, summary, _DESCRIPTION[name], _EXAMPLES[name])
         fr = p.add_argument_group("friction")
         fr.add_argument(
             "--friction",
             choices=("constant", "coulomb"),
             default="constant",
-            help="constant friction stress tau0 (nano-scale, default) or Coulomb "
-            "friction mu on the non-adhesive Hertz contact",
+            help="constant friction stress tau0 (the nano-scale law) or Coulomb friction mu on "
+            "the non-adhesive Hertz contact",
         )
-        fr.add_argument("--tau0-over-E", type=float, help="friction stress over E, > 0")
-        fr.add_argument("--tau0", type=float, help="friction stress [Pa] (SI mode)")
-        fr.add_argument("--mu", type=float, help="friction coefficient (--friction coulomb)")
+        fr.add_argument(
+            "--tau0-over-E", type=float, metavar="T", help="friction stress over E, > 0"
+        )
+        fr.add_argument("--tau0", type=float, help="friction stress tau0 [Pa] (SI inputs)")
+        fr.add_argument("--mu", type=float, help="friction coefficient, > 0 (--friction coulomb)")
         st = p.add_argument_group("tangential state (exactly one)")
         lo = "[0, 1)" if name == "slide-init" else "(-1, 1)"
         st.add_argument(
-            "--d-over-a", type=float, nargs="+", metavar="D", help=f"stick-zone end over a, in {lo}"
+            "--d-over-a",
+            type=float,
+            nargs="+",
+            metavar="D",
+            help=f"stick-zone end d over a, in {lo}",
         )
         st.add_argument(
             "--T-over-Ea",
@@ -83,79 +107,83 @@ def register(sub) -> None:
             type=float,
             nargs="+",
             metavar="T",
-            help="tangential force over mu F (Coulomb), >= 0",
+            help="tangential force over mu F, >= 0 (Coulomb)",
         )
         st.add_argument(
             "--tangential-load",
             type=float,
             nargs="+",
             metavar="T",
-            help="tangential force per unit length [N/m] (SI mode)",
+            help="tangential force per unit length T [N/m] (SI inputs)",
         )
-        _cli._add_groups(p)
-        nc = p.add_argument_group("normal contact (a from the normal problem)")
-        nc.add_argument("--load", type=float, help="normal load F [N/m] (SI mode)")
+        add_groups(p)
+        nc = p.add_argument_group("normal contact (the contact half-width a)")
+        nc.add_argument("--load", type=float, help="normal load per unit length F [N/m] (SI)")
         nc.add_argument(
             "--F-over-Eh",
             type=float,
+            metavar="F",
             help="normal load over E h (with --R-over-h and --sigma0-over-E)",
         )
         nc.add_argument(
             "--a-over-R",
             type=float,
+            metavar="A",
             help="contact half-width over R (Coulomb: the Hertz half-width)",
         )
-        p.add_argument("--method", choices=("closed-form", "collocation"), default="closed-form")
-        p.add_argument("--json", action="store_true", help="JSON array of records on stdout")
+        p.add_argument(
+            "--method",
+            choices=("closed-form", "collocation"),
+            default="closed-form",
+            help="the closed forms or the paper's collocation",
+        )
+        add_output_options(p)
         p.set_defaults(func=_cmd_slide_init if name == "slide-init" else _cmd_roll)
 
 
-def _cmd_slide_init(args) -> int:
+def _cmd_slide_init(args: argparse.Namespace) -> int:
     return _run(args, rolling=False)
 
 
-def _cmd_roll(args) -> int:
+def _cmd_roll(args: argparse.Namespace) -> int:
     return _run(args, rolling=True)
 
 
-def _given(args, *names) -> list[str]:
+def _given(args: argparse.Namespace, *names: str) -> list[str]:
     return [n for n in names if getattr(args, n) is not None]
 
 
-def _flag(name: str) -> str:
-    return "--" + name.replace("_", "-")
-
-
-def _normal_contact(args, coulomb: bool):
+def _normal_contact(args: argparse.Namespace, coulomb: bool):
     """(a_over_R or None, F_over_Eh or None, Cylinder or None) from the normal inputs."""
-    si = bool(_given(args, *_SI_KEYS))
+    si = bool(_given(args, *SI_KEYS, "length"))
     groups = bool(_given(args, "R_over_h", "sigma0_over_E"))
     if si:
-        if args.a_over_R is not None or args.F_over_Eh is not None:
+        if groups or args.a_over_R is not None or args.F_over_Eh is not None:
             raise ValueError(
-                "--a-over-R and --F-over-Eh are nondimensional: in SI mode give "
-                "the normal load with --load [N/m]"
+                "--R-over-h, --sigma0-over-E, --a-over-R and --F-over-Eh are nondimensional: "
+                "with SI inputs give the normal load --load [N/m]"
             )
         if args.load is None:
             raise ValueError("SI inputs need the normal load --load [N/m]")
         if coulomb and not _given(args, *_ADHESION_KEYS):
             args.h = args.radius  # no adhesion: the range h only sets an unused length scale
-        return None, None, _cli._cylinder(args)
+        return None, None, cylinder(args)
     if args.load is not None:
         raise ValueError("--load [N/m] is an SI input: give --radius and the materials too")
     if groups:
         if args.a_over_R is not None:
             raise ValueError(
-                "give either --a-over-R or the normal problem (--R-over-h, "
-                "--sigma0-over-E, --F-over-Eh), not both"
+                "give either --a-over-R or the normal problem (--R-over-h, --sigma0-over-E, "
+                "--F-over-Eh), not both"
             )
-        _cli._cylinder(args)  # checks that both groups are given
+        if args.R_over_h is None or args.sigma0_over_E is None:
+            raise ValueError("give both --R-over-h and --sigma0-over-E")
         if args.F_over_Eh is None:
             raise ValueError("with --R-over-h and --sigma0-over-E give the normal load --F-over-Eh")
         if coulomb and args.sigma0_over_E != 0:
             raise ValueError(
-                "Coulomb friction is the counterpart for the non-adhesive Hertz "
-                "contact: use --sigma0-over-E 0 (or --friction constant)"
+                "Coulomb friction is the counterpart for the non-adhesive Hertz contact: use "
+                "--sigma0-over-E 0 (or --friction constant)"
             )
         c = contact_for_load(args.F_over_Eh, args.R_over_h, args.sigma0_over_E)
         return c.a_over_R, args.F_over_Eh, None
@@ -164,8 +192,7 @@ def _normal_contact(args, coulomb: bool):
     return args.a_over_R, None, None
 
 
-def _run(args, rolling: bool) -> int:
-    coulomb = args.friction == "coulomb"
+def _check_friction(args: argparse.Namespace, coulomb: bool) -> None:
     if coulomb:
         if _given(args, "tau0_over_E", "tau0"):
             raise ValueError(
@@ -178,18 +205,23 @@ def _run(args, rolling: bool) -> int:
             raise ValueError("--mu is the Coulomb friction coefficient: add --friction coulomb")
         if args.T_over_muF is not None:
             raise ValueError("--T-over-muF is for --friction coulomb; use --T-over-Ea")
+
+
+def _run(args: argparse.Namespace, rolling: bool) -> int:
+    coulomb = args.friction == "coulomb"
+    _check_friction(args, coulomb)
     states = _given(args, "d_over_a", "T_over_Ea", "T_over_muF", "tangential_load")
     if len(states) != 1:
         raise ValueError(
-            "give exactly one of --d-over-a, --T-over-Ea, --T-over-muF "
-            "(Coulomb) or --tangential-load [N/m] (SI)"
+            "give exactly one of --d-over-a, --T-over-Ea, --T-over-muF (Coulomb) or "
+            "--tangential-load [N/m] (SI)"
         )
     (state,) = states
     A, F_over_Eh, cyl = _normal_contact(args, coulomb)
     if cyl is None and state == "tangential_load":
         raise ValueError(
-            "--tangential-load [N/m] is an SI input: give --radius, the "
-            "materials and --load too, or use --T-over-Ea"
+            "--tangential-load [N/m] is an SI input: give --radius, the materials and --load "
+            "too, or use --T-over-Ea"
         )
     values = np.asarray(getattr(args, state), float)
     if state != "d_over_a":
@@ -197,111 +229,144 @@ def _run(args, rolling: bool) -> int:
         # the option given and its value
         non_negative(state, values)
     d = values if state == "d_over_a" else None
-    kw = dict(method=args.method)
-
+    law = {"friction": "coulomb" if coulomb else "constant"}
     if cyl is not None:
-        E = cyl.modulus
-        if coulomb:
-            fr = dict(friction_coefficient=args.mu)
-        else:
-            if len(_given(args, "tau0", "tau0_over_E")) != 1:
-                raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
-            fr = dict(friction_stress=args.tau0 if args.tau0 is not None else args.tau0_over_E * E)
-        fn = cylinder_steady_rolling if rolling else cylinder_sliding_initiation
-        if state in ("T_over_Ea", "T_over_muF"):
-            # the contact half-width first, to convert to [N/m]
-            a_m = cyl.contact(load=args.load).contact_half_width
-            T = values * E * a_m if state == "T_over_Ea" else values * args.mu * args.load
-            res = fn(cyl, args.load, tangential_load=T, **fr, **kw)
-        elif state == "tangential_load":
-            res = fn(cyl, args.load, tangential_load=values, **fr, **kw)
-        else:
-            res = fn(cyl, args.load, d_over_a=d, **fr, **kw)
-        r = res.nondimensional
-        si = dict(
-            a_m=res.contact_half_width,
-            d_m=res.stick_zone_end,
-            T_N_per_m=res.tangential_load,
-            F_N_per_m=res.normal_load,
-            T_full_slip_N_per_m=res.full_slip_load,
-        )
-        A = res.contact_half_width / cyl.radius
-        header_si = (
-            f", R = {cyl.radius:g} m, E = {E:g} Pa, F = {args.load:g} N/m, "
-            f"a = {res.contact_half_width:.6g} m"
-        )
+        return _run_si(args, rolling, coulomb, cyl, state, values, d, law)
+    if coulomb:
+        if A is None:
+            raise ValueError(
+                "Coulomb friction needs the Hertz half-width: give --a-over-R (or --R-over-h "
+                "--sigma0-over-E 0 --F-over-Eh, or SI inputs)"
+            )
+        fn = tg.steady_rolling_coulomb if rolling else tg.sliding_initiation_coulomb
+        if state == "T_over_Ea":
+            values = values / ((np.pi / 4) * args.mu * A)
+        r = fn(args.mu, A, d, T_over_muF=None if d is not None else values, method=args.method)
     else:
-        si = None
-        header_si = "" if A is None else f", a/R = {float(A):g}"
-        if coulomb:
-            if A is None:
-                raise ValueError(
-                    "Coulomb friction needs the Hertz half-width: give --a-over-R "
-                    "(or --R-over-h --sigma0-over-E 0 --F-over-Eh, or SI inputs)"
-                )
-            fn = tg.steady_rolling_coulomb if rolling else tg.sliding_initiation_coulomb
-            if state == "T_over_Ea":
-                values = values / ((np.pi / 4) * args.mu * A)
-            r = fn(args.mu, A, d, T_over_muF=None if d is not None else values, **kw)
-        else:
-            if args.tau0 is not None:
-                raise ValueError(
-                    "--tau0 [Pa] is an SI input: give --radius, the materials and "
-                    "--load too, or use --tau0-over-E"
-                )
-            if args.tau0_over_E is None:
-                raise ValueError(
-                    "give the friction stress --tau0-over-E (or --friction coulomb --mu)"
-                )
-            fn = tg.steady_rolling if rolling else tg.sliding_initiation
-            r = fn(args.tau0_over_E, d, T_over_Ea=None if d is not None else values, **kw)
-
-    recs = _records(r, rolling, coulomb, A, F_over_Eh, si)
-    if args.json:
-        print(_cli._dump_json(recs))
-        return 0
-    what = "steady rolling (driving cylinder)" if rolling else "initiation of sliding"
-    law = (
-        f"Coulomb mu = {args.mu:g}" if coulomb else f"tau0/E = {np.atleast_1d(r.tau0_over_E)[0]:g}"
-    )
-    print(f"# {what}, {law}{header_si} ({args.method})")
-    keys = ["d_over_a", "T_over_Ea", "T_over_T_full_slip"]
-    keys += ["creep_over_V"] if rolling else []
-    keys += ["state"]
-    keys += ["T_N_per_m"] if si is not None else []
-    print(_cli._table(recs, keys))
+        if args.tau0 is not None:
+            raise ValueError(
+                "--tau0 [Pa] is an SI input: give --radius, the materials and --load too, or "
+                "use --tau0-over-E"
+            )
+        if args.tau0_over_E is None:
+            raise ValueError("give the friction stress --tau0-over-E (or --friction coulomb --mu)")
+        fn = tg.steady_rolling if rolling else tg.sliding_initiation
+        r = fn(args.tau0_over_E, d, T_over_Ea=None if d is not None else values, method=args.method)
+    params: dict[str, Any] = dict(law)
+    if A is not None:
+        params["a_over_R"] = float(A)
+    if F_over_Eh is not None:
+        params.update(R_over_h=args.R_over_h, sigma0_over_E=args.sigma0_over_E, F_over_Eh=F_over_Eh)
+    table = _table(args, r, rolling, coulomb, params, {}, {})
+    emit(args, table)
     return 0
 
 
-def _records(r, rolling: bool, coulomb: bool, A, F_over_Eh, si) -> list[dict]:
-    base = r.to_records()
-    out = []
-    for i, rec in enumerate(base):
-        o = {"d_over_a": rec["d_over_a"], "T_over_Ea": rec["T_over_Ea"]}
-        if rolling:
-            o["creep_over_V"] = rec["creep_over_V"]
-        o["T_over_T_full_slip"] = rec["T_over_T_full_slip"]
-        o["state"] = rec["state"]
-        o["friction"] = "coulomb" if coulomb else "constant"
-        if coulomb:
-            o.update(mu=rec["mu"], T_over_muF=rec["T_over_muF"], a_over_R=rec["a_over_R"])
-        else:
-            o["tau0_over_E"] = rec["tau0_over_E"]
-            if A is not None:
-                o["a_over_R"] = float(np.atleast_1d(A)[0])
-        if F_over_Eh is not None:
-            o["F_over_Eh"] = F_over_Eh
-        if si is not None:
-            o.update(
-                {k: float(np.atleast_1d(v)[i if np.size(v) > 1 else 0]) for k, v in si.items()}
-            )
-        o.update(
-            method=r.method,
-            n_collocation=rec["n_collocation"],
-            residual_stick=rec["residual_stick"],
-            residual_force=rec["residual_force"],
-            error_estimate=rec["error_estimate"],
-            converged=rec["converged"],
-        )
-        out.append(o)
-    return out
+def _run_si(args, rolling, coulomb, cyl: Cylinder, state, values, d, law) -> int:
+    E = cyl.modulus
+    if coulomb:
+        fr: dict[str, Any] = dict(friction_coefficient=args.mu)
+    else:
+        if len(_given(args, "tau0", "tau0_over_E")) != 1:
+            raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
+        fr = dict(friction_stress=args.tau0 if args.tau0 is not None else args.tau0_over_E * E)
+    fn = cylinder_steady_rolling if rolling else cylinder_sliding_initiation
+    contact = cyl.contact(load=args.load, on_no_equilibrium="report")
+    params: dict[str, Any] = dict(law)
+    sip, units = si_parameters(args, cyl)
+    params.update(sip)
+    params["F_N_per_m"] = args.load
+    units["F_N_per_m"] = "N/m"
+    if contact.state != "contact":
+        # the normal load is below the pull-off force: no tangential state exists
+        return _pulled_off(args, rolling, values, state, params, units, cyl)
+    a_m = contact.contact_half_width
+    if state in ("T_over_Ea", "T_over_muF"):
+        T = values * E * a_m if state == "T_over_Ea" else values * args.mu * args.load
+        res = fn(cyl, args.load, tangential_load=T, **fr, method=args.method)
+    elif state == "tangential_load":
+        res = fn(cyl, args.load, tangential_load=values, **fr, method=args.method)
+    else:
+        res = fn(cyl, args.load, d_over_a=d, **fr, method=args.method)
+    params.update(
+        a_over_R=a_m / cyl.radius,
+        a_m=a_m,
+        T_full_slip_N_per_m=float(np.reshape(res.full_slip_load, -1)[0]),
+    )
+    units.update(a_m="m", T_full_slip_N_per_m="N/m")
+    if coulomb:
+        params["mu"] = args.mu
+    else:
+        params["tau0_Pa"] = fr["friction_stress"]
+        units["tau0_Pa"] = "Pa"
+    extra: dict[str, Any] = {
+        "d_m": res.stick_zone_end,
+        "T_N_per_m": res.tangential_load,
+    }
+    units.update(d_m="m", T_N_per_m="N/m")
+    if args.length is not None:
+        extra["T_total_N"] = np.multiply(res.tangential_load, args.length)
+        units["T_total_N"] = "N"
+        params["F_total_N"] = args.load * args.length
+        params["T_full_slip_total_N"] = params["T_full_slip_N_per_m"] * args.length
+        units.update(F_total_N="N", T_full_slip_total_N="N")
+    table = _table(args, res.nondimensional, rolling, coulomb, params, units, extra)
+    emit(args, table)
+    return 0
+
+
+def _pulled_off(args, rolling, values, state, params, units, cyl) -> int:
+    """Every record without a state: the normal load is below the pull-off force."""
+    po = cyl.pull_off()
+    n = values.size
+    why = (
+        f"no contact carries the normal load {args.load!r} N/m: it is below the pull-off force "
+        f"{po.pull_off_force:.6g} N/m (the cylinder has pulled off)"
+    )
+    cols: dict[str, Any] = {"d_over_a": np.full(n, np.nan), "T_over_Ea": np.full(n, np.nan)}
+    if rolling:
+        cols["creep_over_V"] = np.full(n, np.nan)
+    cols[state] = values.reshape(-1)
+    cols["state"] = np.full(n, "no-equilibrium")
+    cols["reason"] = np.full(n, why, dtype=object)
+    table = Table(
+        cols,
+        params,
+        units,
+        command_line(args),
+        "the normal load is below the pull-off force: no contact, no tangential state",
+        show=(*cols,),
+    )
+    emit(args, table)
+    return finish(table, ("stick", "stick-slip", "sliding"))
+
+
+def _table(args, r, rolling: bool, coulomb: bool, params, units, extra):
+    units = {
+        **units,
+        "d_over_a": "1",
+        "T_over_Ea": "1",
+        "T_over_T_full_slip": "1",
+        "residual_stick": "1",
+        "residual_force": "1",
+        "residual_consistency": "1",
+        "error_estimate": "1",
+    }
+    if rolling:
+        units["creep_over_V"] = "1"
+    show = ["d_over_a", "T_over_Ea", "T_over_T_full_slip"]
+    show += ["creep_over_V"] if rolling else []
+    show += ["state"]
+    show += ["T_N_per_m"] if "T_N_per_m" in extra else []
+    show += ["T_total_N"] if "T_total_N" in extra else []
+    what = "steady rolling (driving cylinder)" if rolling else "initiation of sliding"
+    law = "Coulomb friction" if coulomb else "constant friction stress"
+    return table_from_result(
+        r,
+        columns=extra,
+        parameters=params,
+        units=units,
+        command=command_line(args),
+        title=f"{what}, {law} ({r.method})",
+        show=show,
+    )
