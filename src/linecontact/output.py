@@ -44,7 +44,7 @@ from numpy.typing import NDArray
 from ._version import __version__
 from .results import Result
 
-__all__ = ["FORMATS", "Table", "render", "table_from_result", "write"]
+__all__ = ["FORMATS", "Table", "render", "table_from_result", "unit_of", "write"]
 
 #: The output formats.
 FORMATS = ("table", "json", "jsonl", "csv")
@@ -64,8 +64,8 @@ class Table:
     parameters : dict
         Inputs that are the same for every point (JSON-ready scalars or lists).
     units : dict of str to str
-        The unit of each column and parameter that has one (``"1"`` for a nondimensional
-        group, ``"m"``, ``"N/m"``, ...).
+        Units that the names do not state (:func:`unit_of` gives the others: ``"m"`` for
+        ``a_m``, ``"N/m"`` for ``F_N_per_m``, ``"1"`` for a nondimensional group).
     command : list of str
         The command line that produced the table (``["linecontact", "normal", ...]``).
     title : str
@@ -97,13 +97,47 @@ class Table:
         return len(next(iter(self.columns.values()))) if self.columns else 0
 
     def provenance(self) -> dict[str, Any]:
-        """The block that precedes the results in every format."""
+        """The block that precedes the results in every format.
+
+        ``units`` has an entry for every number among the parameters and the columns: the
+        unit given, or the one its name states (:func:`unit_of`).
+        """
+        units = {}
+        for k, v in self.parameters.items():
+            if isinstance(v, (int, float, np.number)) and not isinstance(v, (bool, np.bool_)):
+                units[k] = self.units.get(k) or unit_of(k)
+        for k, v in self.columns.items():
+            if v.dtype.kind in "fiu":
+                units[k] = self.units.get(k) or unit_of(k)
         return {
             "linecontact": {"version": __version__},
             "command": list(self.command),
             "parameters": _jsonable(self.parameters),
-            "units": dict(self.units),
+            "units": units,
         }
+
+
+#: Unit suffixes of the SI names, longest first (``F_N_per_m``, ``M_total_N_m``, ``a_m``).
+UNIT_SUFFIXES = (
+    ("_J_per_m2", "J/m^2"),
+    ("_N_per_m", "N/m"),
+    ("_N_m", "N m"),
+    ("_Pa", "Pa"),
+    ("_N", "N"),
+    ("_m", "m"),
+)
+
+
+def unit_of(name: str) -> str:
+    """The unit a quantity's name states: an SI suffix, else ``"1"`` (a nondimensional group).
+
+    >>> unit_of("F_N_per_m"), unit_of("M_total_N_m"), unit_of("a_m"), unit_of("a_over_R")
+    ('N/m', 'N m', 'm', '1')
+    """
+    for suffix, unit in UNIT_SUFFIXES:
+        if name.endswith(suffix):
+            return unit
+    return "1"
 
 
 def table_from_result(
@@ -327,21 +361,20 @@ def _table_column(v: NDArray[Any], scale: NDArray[Any] | None) -> list[str]:
 
 def _format_table(table: Table) -> str:
     lines = []
+    units = table.provenance()["units"]
     if table.title:
         lines.append(f"# {table.title}")
     if table.parameters:
         items = []
         for k, v in table.parameters.items():
-            unit = table.units.get(k)
+            unit = units.get(k)
             txt = f"{v:.6g}" if isinstance(v, float) else str(v)
             items.append(f"{k} = {txt}" + (f" {unit}" if unit and unit != "1" else ""))
         lines.append("# " + ", ".join(items))
     keys = [k for k in (table.show or tuple(table.columns)) if k != "reason"]
     if keys:
         cols = [_table_column(table.columns[k], table.scales.get(k)) for k in keys]
-        heads = [
-            k if table.units.get(k) in (None, "1") else f"{k} [{table.units[k]}]" for k in keys
-        ]
+        heads = [k if units.get(k) in (None, "1") else f"{k} [{units[k]}]" for k in keys]
         widths = [
             max(len(h), *(len(s) for s in c)) if c else len(h)
             for h, c in zip(heads, cols, strict=True)

@@ -288,32 +288,26 @@ def cylinder(args: argparse.Namespace, range_flag: str = "--h") -> Cylinder:
     return Cylinder.from_materials(args.radius, *mats, **adh)
 
 
-def si_parameters(args: argparse.Namespace, cyl: Cylinder) -> tuple[dict, dict]:
-    """The SI inputs as given and as used, for the provenance block, with their units."""
+def si_parameters(args: argparse.Namespace, cyl: Cylinder) -> dict[str, Any]:
+    """The SI inputs as given and as used, for the provenance block (units in the names)."""
     params: dict[str, Any] = {"radius_m": cyl.radius, "modulus_Pa": cyl.modulus}
-    units = {"radius_m": "m", "modulus_Pa": "Pa"}
-    for key, name, unit in (
-        ("E1", "E1_Pa", "Pa"),
-        ("nu1", "nu1", "1"),
-        ("E2", "E2_Pa", "Pa"),
-        ("nu2", "nu2", "1"),
-        ("work_of_adhesion", "work_of_adhesion_J_per_m2", "J/m^2"),
-        ("z0", "z0_m", "m"),
+    for key, name in (
+        ("E1", "E1_Pa"),
+        ("nu1", "nu1"),
+        ("E2", "E2_Pa"),
+        ("nu2", "nu2"),
+        ("work_of_adhesion", "work_of_adhesion_J_per_m2"),
+        ("z0", "z0_m"),
     ):
         v = getattr(args, key, None)
         if v is not None:
             params[name] = v
-            units[name] = unit
     params.update(
-        sigma0_Pa=cyl.cohesive_stress,
-        h_m=cyl.adhesion_range,
-        dundurs_beta=cyl.dundurs_beta,
+        sigma0_Pa=cyl.cohesive_stress, h_m=cyl.adhesion_range, dundurs_beta=cyl.dundurs_beta
     )
-    units.update(sigma0_Pa="Pa", h_m="m", dundurs_beta="1")
     if args.length is not None:
         params["length_m"] = args.length
-        units["length_m"] = "m"
-    return params, units
+    return params
 
 
 def add_groups(p: argparse.ArgumentParser) -> None:

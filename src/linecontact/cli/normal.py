@@ -28,19 +28,14 @@ from ._options import (
 
 __all__ = ["register"]
 
-_GROUP_UNITS = {"R_over_h": "1", "sigma0_over_E": "1", "kappa": "1", "maugis_parameter": "1"}
 
-
-def _parameters(args, rho: float, s: float, cyl: Cylinder | None) -> tuple[dict, dict]:
+def _parameters(args, rho: float, s: float, cyl: Cylinder | None) -> dict[str, Any]:
     params: dict[str, Any] = {"R_over_h": rho, "sigma0_over_E": s}
-    units = dict(_GROUP_UNITS)
     params["kappa"] = kappa(rho, s)
     params["maugis_parameter"] = maugis_parameter(rho, s)
     if cyl is not None:
-        p, u = si_parameters(args, cyl)
-        params.update(p)
-        units.update(u)
-    return params, units
+        params.update(si_parameters(args, cyl))
+    return params
 
 
 # --------------------------------------------------------------------------------------------
@@ -109,16 +104,7 @@ def _load_reasons(F, state, rho, s, branch, cyl) -> np.ndarray:
 
 
 def _normal_table(args, r: NormalContact, rho, s, cyl, state, reason, given) -> Table:
-    params, units = _parameters(args, rho, s, cyl)
-    units.update(
-        a_over_R="1",
-        c_over_R="1",
-        F_over_Eh="1",
-        c_over_a="1",
-        residual_separation="1",
-        residual_consistency="1",
-        error_estimate="1",
-    )
+    params = _parameters(args, rho, s, cyl)
     if args.branch != "stable":
         params["branch"] = args.branch
     extra: dict[str, Any] = {}
@@ -130,11 +116,9 @@ def _normal_table(args, r: NormalContact, rho, s, cyl, state, reason, given) -> 
             c_m=np.multiply(r.c_over_R, R),
             F_N_per_m=np.multiply(r.F_over_Eh, Eh),
         )
-        units.update(a_m="m", c_m="m", F_N_per_m="N/m")
         show += ["a_m", "c_m", "F_N_per_m"]
         if args.length is not None:
             extra["F_total_N"] = np.multiply(r.F_over_Eh, Eh * args.length)
-            units["F_total_N"] = "N"
             show.append("F_total_N")
     extra.update(state=state, reason=reason)
     if np.any(state != "contact"):
@@ -155,7 +139,6 @@ def _normal_table(args, r: NormalContact, rho, s, cyl, state, reason, given) -> 
         columns=extra,
         drop=("state",),
         parameters=params,
-        units=units,
         command=command_line(args),
         title=f"normal contact ({r.method}), compressive load positive",
         scales=scales,
@@ -171,17 +154,9 @@ def _normal_table(args, r: NormalContact, rho, s, cyl, state, reason, given) -> 
 def _cmd_pulloff(args: argparse.Namespace) -> int:
     rho, s, cyl = groups(args)
     p = pull_off(rho, s)
-    params, units = _parameters(args, rho, s, cyl)
+    params = _parameters(args, rho, s, cyl)
     params.pop("kappa")
     params.pop("maugis_parameter")
-    units.update(
-        F_pulloff_over_Eh="1",
-        a_over_R_at_pulloff="1",
-        c_over_R_at_pulloff="1",
-        F_zero_width_over_Eh="1",
-        F_minimum_over_Eh="1",
-        a_over_R_at_minimum="1",
-    )
     extra: dict[str, Any] = {}
     show = ["F_pulloff_over_Eh", "a_over_R_at_pulloff", "mechanism", "F_zero_width_over_Eh"]
     if cyl is not None:
@@ -191,17 +166,14 @@ def _cmd_pulloff(args: argparse.Namespace) -> int:
             a_at_pulloff_m=p.a_over_R_at_pulloff * cyl.radius,
             F_zero_width_N_per_m=p.F_zero_width_over_Eh * Eh,
         )
-        units.update(F_pulloff_N_per_m="N/m", a_at_pulloff_m="m", F_zero_width_N_per_m="N/m")
         show += ["F_pulloff_N_per_m", "a_at_pulloff_m"]
         if args.length is not None:
             extra["F_pulloff_total_N"] = p.F_pulloff_over_Eh * Eh * args.length
-            units["F_pulloff_total_N"] = "N"
             show.append("F_pulloff_total_N")
     table = table_from_result(
         p,
         columns=extra,
         parameters=params,
-        units=units,
         command=command_line(args),
         title="pull-off under load control (the most tensile load a contact carries)",
         show=show,
@@ -233,8 +205,7 @@ def _cmd_curve(args: argparse.Namespace) -> int:
     elif s > 0:
         touch = np.flatnonzero((c.branch == "non-contact") & (c.central_gap_over_h == 0))
         is_po[touch[-1:]] = True
-    params, units = _parameters(args, rho, s, cyl)
-    units.update(central_gap_over_h="1", a_over_R="1", c_over_R="1", F_over_Eh="1")
+    params = _parameters(args, rho, s, cyl)
     extra: dict[str, Any] = {"pulloff": is_po}
     show = ["branch", "central_gap_over_h", "a_over_R", "c_over_R", "F_over_Eh", "stable"]
     if cyl is not None:
@@ -245,18 +216,15 @@ def _cmd_curve(args: argparse.Namespace) -> int:
             c_m=c.c_over_R * R,
             F_N_per_m=c.F_over_Eh * Eh,
         )
-        units.update(central_gap_m="m", a_m="m", c_m="m", F_N_per_m="N/m")
         show += ["a_m", "F_N_per_m"]
         if args.length is not None:
             extra["F_total_N"] = c.F_over_Eh * Eh * args.length
-            units["F_total_N"] = "N"
             show.append("F_total_N")
     show.append("pulloff")
     table = table_from_result(
         c,
         columns=extra,
         parameters=params,
-        units=units,
         command=command_line(args),
         title=(
             f"load curve: non-contact branch (gap g0 from h to 0), then the contact branch; "

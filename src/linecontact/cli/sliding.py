@@ -168,28 +168,6 @@ def _cmd_slide(args: argparse.Namespace) -> int:
                 )
         given = "F_over_Eh2"
     params: dict[str, Any] = {}
-    units = {
-        k: "1"
-        for k in (
-            "R_over_h2",
-            "h1_over_h2",
-            "sigma0_over_E",
-            "tau0_over_E",
-            "a_over_R",
-            "c1_over_R",
-            "c2_over_R",
-            "e_over_R",
-            "F_over_Eh2",
-            "M_over_Eh2R",
-            "M_axis_over_Eh2R",
-            "T_over_Eh2",
-            "c1_minus_c2_over_R",
-            "residual_trailing",
-            "residual_leading",
-            "residual_consistency",
-            "error_estimate",
-        )
-    }
     extra: dict[str, Any] = {"c1_minus_c2_over_R": np.subtract(res.c1_over_R, res.c2_over_R)}
     show = ["a_over_R", "c1_over_R", "c2_over_R", "e_over_R", "F_over_Eh2", "M_over_Eh2R"]
     drop = ["state"]
@@ -199,11 +177,8 @@ def _cmd_slide(args: argparse.Namespace) -> int:
         show.append("T_over_Eh2")
     show.append("stable")
     if cyl is not None:
-        sip, siu = si_parameters(args, cyl)
-        params.update(sip)
-        units.update(siu)
+        params.update(si_parameters(args, cyl))
         params["h1_m"] = r * cyl.adhesion_range
-        units["h1_m"] = "m"
         R, Eh = cyl.radius, cyl.modulus * cyl.adhesion_range
         extra.update(
             a_m=np.multiply(res.a_over_R, R),
@@ -213,13 +188,10 @@ def _cmd_slide(args: argparse.Namespace) -> int:
             F_N_per_m=np.multiply(res.F_over_Eh2, Eh),
             M_N=np.multiply(res.M_over_Eh2R, Eh * R),
         )
-        units.update(a_m="m", c1_m="m", c2_m="m", e_m="m", F_N_per_m="N/m", M_N="N m/m")
         show += ["a_m", "F_N_per_m", "M_N"]
         if tau is not None:
             params["tau0_Pa"] = args.tau0
-            units["tau0_Pa"] = "Pa"
             extra["T_N_per_m"] = np.multiply(res.T_over_Eh2, Eh)
-            units["T_N_per_m"] = "N/m"
             show.append("T_N_per_m")
         if args.length is not None:
             L = args.length
@@ -227,11 +199,9 @@ def _cmd_slide(args: argparse.Namespace) -> int:
                 F_total_N=np.multiply(res.F_over_Eh2, Eh * L),
                 M_total_N_m=np.multiply(res.M_over_Eh2R, Eh * R * L),
             )
-            units.update(F_total_N="N", M_total_N_m="N m")
             show += ["F_total_N", "M_total_N_m"]
             if tau is not None:
                 extra["T_total_N"] = np.multiply(res.T_over_Eh2, Eh * L)
-                units["T_total_N"] = "N"
                 show.append("T_total_N")
     extra.update(state=state, reason=reason)
     if np.any(state != "contact"):
@@ -241,7 +211,6 @@ def _cmd_slide(args: argparse.Namespace) -> int:
         columns=extra,
         drop=drop,
         parameters=params,
-        units=units,
         command=command_line(args),
         title=(
             f"steady sliding ({res.method}); M clockwise positive about the contact centre, "

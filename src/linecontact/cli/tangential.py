@@ -257,7 +257,7 @@ def _run(args: argparse.Namespace, rolling: bool) -> int:
         params["a_over_R"] = float(A)
     if F_over_Eh is not None:
         params.update(R_over_h=args.R_over_h, sigma0_over_E=args.sigma0_over_E, F_over_Eh=F_over_Eh)
-    table = _table(args, r, rolling, coulomb, params, {}, {})
+    table = _table(args, r, rolling, coulomb, params, {})
     emit(args, table)
     return 0
 
@@ -273,13 +273,11 @@ def _run_si(args, rolling, coulomb, cyl: Cylinder, state, values, d, law) -> int
     fn = cylinder_steady_rolling if rolling else cylinder_sliding_initiation
     contact = cyl.contact(load=args.load, on_no_equilibrium="report")
     params: dict[str, Any] = dict(law)
-    sip, units = si_parameters(args, cyl)
-    params.update(sip)
+    params.update(si_parameters(args, cyl))
     params["F_N_per_m"] = args.load
-    units["F_N_per_m"] = "N/m"
     if contact.state != "contact":
         # the normal load is below the pull-off force: no tangential state exists
-        return _pulled_off(args, rolling, values, state, params, units, cyl)
+        return _pulled_off(args, rolling, values, state, params, cyl)
     a_m = contact.contact_half_width
     if state in ("T_over_Ea", "T_over_muF"):
         T = values * E * a_m if state == "T_over_Ea" else values * args.mu * args.load
@@ -293,29 +291,24 @@ def _run_si(args, rolling, coulomb, cyl: Cylinder, state, values, d, law) -> int
         a_m=a_m,
         T_full_slip_N_per_m=float(np.reshape(res.full_slip_load, -1)[0]),
     )
-    units.update(a_m="m", T_full_slip_N_per_m="N/m")
     if coulomb:
         params["mu"] = args.mu
     else:
         params["tau0_Pa"] = fr["friction_stress"]
-        units["tau0_Pa"] = "Pa"
     extra: dict[str, Any] = {
         "d_m": res.stick_zone_end,
         "T_N_per_m": res.tangential_load,
     }
-    units.update(d_m="m", T_N_per_m="N/m")
     if args.length is not None:
         extra["T_total_N"] = np.multiply(res.tangential_load, args.length)
-        units["T_total_N"] = "N"
         params["F_total_N"] = args.load * args.length
         params["T_full_slip_total_N"] = params["T_full_slip_N_per_m"] * args.length
-        units.update(F_total_N="N", T_full_slip_total_N="N")
-    table = _table(args, res.nondimensional, rolling, coulomb, params, units, extra)
+    table = _table(args, res.nondimensional, rolling, coulomb, params, extra)
     emit(args, table)
     return 0
 
 
-def _pulled_off(args, rolling, values, state, params, units, cyl) -> int:
+def _pulled_off(args, rolling, values, state, params, cyl) -> int:
     """Every record without a state: the normal load is below the pull-off force."""
     po = cyl.pull_off()
     n = values.size
@@ -332,7 +325,7 @@ def _pulled_off(args, rolling, values, state, params, units, cyl) -> int:
     table = Table(
         cols,
         params,
-        units,
+        {},
         command_line(args),
         "the normal load is below the pull-off force: no contact, no tangential state",
         show=(*cols,),
@@ -341,19 +334,7 @@ def _pulled_off(args, rolling, values, state, params, units, cyl) -> int:
     return finish(table, ("stick", "stick-slip", "sliding"))
 
 
-def _table(args, r, rolling: bool, coulomb: bool, params, units, extra):
-    units = {
-        **units,
-        "d_over_a": "1",
-        "T_over_Ea": "1",
-        "T_over_T_full_slip": "1",
-        "residual_stick": "1",
-        "residual_force": "1",
-        "residual_consistency": "1",
-        "error_estimate": "1",
-    }
-    if rolling:
-        units["creep_over_V"] = "1"
+def _table(args, r, rolling: bool, coulomb: bool, params, extra):
     show = ["d_over_a", "T_over_Ea", "T_over_T_full_slip"]
     show += ["creep_over_V"] if rolling else []
     show += ["state"]
@@ -365,7 +346,6 @@ def _table(args, r, rolling: bool, coulomb: bool, params, units, extra):
         r,
         columns=extra,
         parameters=params,
-        units=units,
         command=command_line(args),
         title=f"{what}, {law} ({r.method})",
         show=show,
