@@ -21,7 +21,7 @@ from scipy.special import roots_legendre
 from linecontact import reference
 from linecontact.errors import ConvergenceError, NoEquilibriumError
 from linecontact.normal import (
-    ZERO_WIDTH_RTOL,
+    SNAP_OFF_MIN_WIDTH_OVER_H,
     LoadCurve,
     NonContact,
     NormalContact,
@@ -453,17 +453,32 @@ def test_pull_off_zero_width_mechanism(rho, s):
     po = pull_off(rho, s)
     msg = f"R_over_h={rho}, sigma0_over_E={s}"
     assert po.mechanism == "zero-width", msg
-    assert po.F_pulloff_over_Eh == reference.zero_width_load(rho, s), msg
-    assert po.F_pulloff_over_Eh == po.F_zero_width_over_Eh
-    assert po.a_over_R_at_pulloff == 0.0
-    assert_allclose(po.c_over_R_at_pulloff, non_contact(0.0, rho, s).c_over_R, rtol=1e-13)
-    # the interior minimum exists but is indistinguishable from Eq. 14
-    assert po.F_minimum_over_Eh <= po.F_zero_width_over_Eh
-    assert po.F_zero_width_over_Eh - po.F_minimum_over_Eh <= ZERO_WIDTH_RTOL * abs(
-        po.F_zero_width_over_Eh
-    )
+    # the minimum is at a width below the adhesion range h, and at the load of Eq. 14
+    assert po.a_over_R_at_pulloff < SNAP_OFF_MIN_WIDTH_OVER_H / rho
+    assert po.a_over_R_at_pulloff == po.a_over_R_at_minimum
+    assert po.F_pulloff_over_Eh == po.F_minimum_over_Eh <= po.F_zero_width_over_Eh
+    assert_allclose(po.F_pulloff_over_Eh, reference.zero_width_load(rho, s), rtol=1e-8)
+    assert_allclose(po.c_over_R_at_pulloff, non_contact(0.0, rho, s).c_over_R, rtol=1e-8)
     assert_allclose(po.kappa, reference.kappa(rho, s), rtol=1e-15)
     assert_allclose(po.maugis_parameter, reference.maugis_parameter(rho, s), rtol=1e-15)
+
+
+@pytest.mark.parametrize("rho", [10.0, 100.0, 1e3, 1e4])
+def test_the_mechanism_changes_where_the_width_at_pull_off_reaches_h(rho):
+    s = np.geomspace(1e-4, 1.0, 400)
+    po = pull_off(rho, s)
+    snap = po.mechanism == "snap-off"
+    assert snap.any() and not snap.all()
+    # one switch, from peeling (weak adhesion) to snap-off (strong adhesion), at a = h
+    k = int(np.argmax(snap))
+    assert not snap[:k].any() and snap[k:].all()
+    assert po.a_over_R_at_pulloff[k - 1] < 1 / rho <= po.a_over_R_at_pulloff[k]
+    # the pull-off force is the minimum of the load whatever the label
+    assert_array_equal(po.F_pulloff_over_Eh, po.F_minimum_over_Eh)
+    # where the label says zero width the load is close to Eq. 14 (docs/derivations.md)
+    rel = po.F_pulloff_over_Eh / po.F_zero_width_over_Eh - 1
+    bound = {10.0: 3.1e-2, 100.0: 2.2e-3, 1e3: 1.9e-4, 1e4: 1.8e-5}[rho]
+    assert np.all(rel[~snap] <= bound) and np.all(rel[~snap] >= 0)
 
 
 @pytest.mark.parametrize("rho, s", [SNAP, (100.0, 0.5), (1000.0, 0.1), (1e4, 0.3)])
@@ -523,13 +538,10 @@ def test_pull_off_vectorised_1000_points():
     assert np.all(po.F_pulloff_over_Eh < 0)
     assert set(np.unique(po.mechanism)) == {"snap-off", "zero-width"}
     zw = po.mechanism == "zero-width"
-    assert_array_equal(po.F_pulloff_over_Eh[zw], F0[zw])
-    # reporting Eq. 14 instead of the interior minimum costs at most 1e-9 (relative)
-    assert np.all(po.F_pulloff_over_Eh - po.F_minimum_over_Eh <= 1.000001e-9 * np.abs(F0))
-    assert np.all(F0[~zw] - po.F_minimum_over_Eh[~zw] > 1e-9 * np.abs(F0[~zw]))
-    assert np.all(po.a_over_R_at_pulloff[~zw] > 0)
-    # the mechanism is ordered by kappa: all zero-width cases below all snap-off cases
-    assert po.kappa[zw].max() < po.kappa[~zw].min()
+    assert_array_equal(po.F_pulloff_over_Eh, po.F_minimum_over_Eh)
+    # the label: a snap-off lets go from a width of at least h, a zero width below it
+    assert np.all(po.a_over_R_at_pulloff[~zw] >= 1 / rho[~zw])
+    assert np.all(po.a_over_R_at_pulloff[zw] < 1 / rho[zw])
     # pull_off broadcasts like the others
     assert pull_off(np.array([[10.0], [100.0]]), np.array([0.01, 0.1, 0.3])).kappa.shape == (2, 3)
 

@@ -369,12 +369,16 @@ def test_zero_width_limit_of_the_branch():
     )
 
 
-def test_snap_off_is_the_load_minimum():
-    po = sl.sliding_pull_off(100.0, 2.0, 0.04)
-    assert po.mechanism == "snap-off"
+@pytest.mark.parametrize("s, mechanism", [(0.04, "zero-width"), (0.1, "snap-off")])
+def test_pull_off_is_the_load_minimum(s, mechanism):
+    po = sl.sliding_pull_off(100.0, 2.0, s)
+    # the label: the width at the minimum against the shorter range h2 (h2/R = 0.01)
+    assert po.mechanism == mechanism
+    assert (po.a_over_R_at_pulloff >= 0.01) == (mechanism == "snap-off")
     a = po.a_over_R_at_pulloff * np.array([0.9, 0.97, 1.0, 1.03, 1.1])
-    F = sl.sliding_contact(a, 100.0, 2.0, 0.04, method="closed-form").F_over_Eh2
+    F = sl.sliding_contact(a, 100.0, 2.0, s, method="closed-form").F_over_Eh2
     assert np.argmin(F) == 2 and math.isclose(F[2], po.F_pulloff_over_Eh2, rel_tol=1e-12)
+    assert po.F_pulloff_over_Eh2 < po.F_zero_width_over_Eh2
 
 
 # --------------------------------------------------------------------------------------------

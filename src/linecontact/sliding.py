@@ -132,9 +132,10 @@ __all__ = [
     "sliding_pull_off",
 ]
 
-#: As :data:`linecontact.normal.ZERO_WIDTH_RTOL`: an interior load minimum closer than this
-#: (relative) to the zero-width load is reported as pull-off at zero width.
-ZERO_WIDTH_RTOL = 1e-9
+#: As :data:`linecontact.normal.SNAP_OFF_MIN_WIDTH_OVER_H`: the pull-off is a snap-off when
+#: the contact half-width at the load minimum is at least this many times the shorter of the
+#: two adhesion ranges.
+SNAP_OFF_MIN_WIDTH_OVER_H = 1.0
 
 #: Collocation sizes tried by ``n="auto"``.
 _SIZES = SIZES[: SIZES.index(2048) + 1]
@@ -349,7 +350,8 @@ class SlidingPullOff(Result):
     a_over_R_at_pulloff : ndarray or float
         Contact half-width at pull-off (0 for the zero-width mechanism).
     mechanism : ndarray of str or str
-        ``"snap-off"`` (interior load minimum) or ``"zero-width"``.
+        ``"snap-off"`` (the contact lets go from a half-width of at least the shorter
+        adhesion range) or ``"zero-width"`` (it peels below it first).
     F_zero_width_over_Eh2 : ndarray or float
         The load as the contact width vanishes (the two-zone analogue of Eq. 14).
     c1_over_R_zero_width, c2_over_R_zero_width : ndarray or float
@@ -959,8 +961,15 @@ def _pulloff_flat(kap, r):
     interior &= ph < phi0
     phi_min = np.where(interior, ph, phi0)
     lab_min = np.where(interior, lab_min, -np.inf)
-    snap = (phi0 - phi_min) > ZERO_WIDTH_RTOL * np.abs(phi0)
-    return dict(X1=X1, X2=X2, phi0=phi0, phi_min=phi_min, lab_min=lab_min, snap=snap, lab_hi=lab_hi)
+    return dict(
+        X1=X1,
+        X2=X2,
+        phi0=phi0,
+        phi_min=phi_min,
+        lab_min=lab_min,
+        interior=interior,
+        lab_hi=lab_hi,
+    )
 
 
 def sliding_pull_off(
@@ -971,9 +980,10 @@ def sliding_pull_off(
     The load along the branch of sliding contacts has a minimum either inside the branch
     (``"snap-off"``) or as the contact width vanishes (``"zero-width"``), where the two
     adhesive zones ``-c1 < x < c2`` of the touching state carry
-    ``F = -sigma0 (c1 + c2)``; the rule is that of :func:`linecontact.pull_off` (an interior
-    minimum within :data:`ZERO_WIDTH_RTOL` of the zero-width load counts as zero width). At
-    ``h1 = h2`` this is the pull-off of :func:`linecontact.pull_off`.
+    ``F = -sigma0 (c1 + c2)``; the pull-off force is that minimum, and the rule for the
+    label is that of :func:`linecontact.pull_off` (a snap-off lets go from a contact
+    half-width of at least the shorter adhesion range, :data:`SNAP_OFF_MIN_WIDTH_OVER_H`).
+    At ``h1 = h2`` this is the pull-off of :func:`linecontact.pull_off`.
 
     Parameters
     ----------
@@ -999,7 +1009,9 @@ def sliding_pull_off(
         sq = np.sqrt(2 / rho)
         F0 = (np.pi / 2) * d["phi0"]
         Fmin = (np.pi / 2) * d["phi_min"]
-        a_min = np.where(d["snap"], np.exp(d["lab_min"]) * sq, 0.0)
+        a_min = np.where(d["interior"], np.exp(d["lab_min"]) * sq, 0.0)
+        # a snap-off lets go from a width of at least the shorter adhesion range
+        snap = d["interior"] & (a_min >= SNAP_OFF_MIN_WIDTH_OVER_H * np.minimum(1.0, r) / rho)
     bad = ~(np.isfinite(F0) & np.isfinite(Fmin) & np.isfinite(a_min))
     if np.any(bad):
         i = int(np.flatnonzero(bad)[0])
@@ -1009,9 +1021,9 @@ def sliding_pull_off(
             f"solver's range"
         )
     vals = dict(
-        F_pulloff_over_Eh2=np.where(d["snap"], Fmin, F0),
+        F_pulloff_over_Eh2=Fmin,
         a_over_R_at_pulloff=a_min,
-        mechanism=np.where(d["snap"], "snap-off", "zero-width"),
+        mechanism=np.where(snap, "snap-off", "zero-width"),
         F_zero_width_over_Eh2=F0,
         c1_over_R_zero_width=d["X1"] * sq,
         c2_over_R_zero_width=d["X2"] * sq,
@@ -1100,7 +1112,7 @@ def sliding_contact_for_load(
         adh = s > 0
         if adh.any():
             d = _pulloff_flat(kap[adh], r[adh])
-            phi_po = np.where(d["snap"], d["phi_min"], d["phi0"])
+            phi_po = d["phi_min"]
             bad = phi_t[adh] < phi_po
             if bad.any() and report:
                 # a load that exists (the pull-off force) stands in for the ones reported
@@ -1115,8 +1127,8 @@ def sliding_contact_for_load(
                     f"(R_over_h2={float(rho[g])!r}, h1_over_h2={float(r[g])!r}, "
                     f"sigma0_over_E={float(s[g])!r}); the cylinder has pulled off"
                 )
-            lab_lo[adh] = np.where(d["snap"], d["lab_min"], _LAB_LO)
-            phi_lo[adh] = np.where(d["snap"], d["phi_min"], d["phi0"])
+            lab_lo[adh] = np.where(d["interior"], d["lab_min"], _LAB_LO)
+            phi_lo[adh] = d["phi_min"]
         if np.any(~adh & (phi_t <= 0)) and report:
             hertz_bad = ~adh & (phi_t <= 0)
             missing |= hertz_bad
