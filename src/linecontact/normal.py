@@ -406,6 +406,7 @@ def normal_contact(
     scalar = scalar_or_array(A, rho, s)
     A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
     _ref._check_kappa(rho, s)
+    _ref._warn_wide(A)
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     # a contact half-width far outside the solvers' range (a/R ~ 1e-200 or 1e20) overflows
     # on the way; the residual and finiteness checks below turn that into non-convergence
@@ -704,6 +705,7 @@ def contact_for_load(
             f"{float(s.reshape(-1)[i])!r}: the closest contact carries F_over_Eh="
             f"{float(Fc.reshape(-1)[i])!r} (the load is outside the range of the solver)"
         )
+    _ref._warn_wide(np.where(bad, np.nan, A))
     z = np.zeros(F.shape)
     nan = np.where(bad, np.nan, 1.0)
     vals = dict(
@@ -881,7 +883,9 @@ def load_curve(
         Parameters (scalars).
     a_max_over_R : float, optional
         Largest contact half-width; default: three times the width at pull-off, at least
-        the Hertz width at ``F = 10 |F_pulloff|`` and at least ``0.02``.
+        the Hertz width at ``F = 10 |F_pulloff|`` and at least ``0.02``, but at most the
+        small-strain limit :data:`~linecontact.reference.A_OVER_R_SMALL_STRAIN` (or 1.5
+        times the width at pull-off, if that is larger).
     num, num_noncontact : int
         Points on the contact and the non-contact branches (>= 2 each).
     """
@@ -894,6 +898,9 @@ def load_curve(
     if a_max_over_R is None:
         a_h = np.sqrt(4 * 10 * abs(po.F_pulloff_over_Eh) / (np.pi * rho))
         a_max_over_R = max(3 * po.a_over_R_at_minimum, a_h, 0.02)
+        # within the small-strain range unless the pull-off itself is close to its end
+        cap = max(_ref.A_OVER_R_SMALL_STRAIN, 1.5 * po.a_over_R_at_minimum)
+        a_max_over_R = min(a_max_over_R, cap)
     amax = scalar("a_max_over_R", a_max_over_R)
     A = np.unique(
         np.concatenate(

@@ -52,12 +52,16 @@ contact). doi:10.1017/CBO9781139171731
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ._validation import broadcast, non_negative, out, positive, scalar_or_array
+from .errors import ModelValidityWarning
 
 __all__ = [
+    "A_OVER_R_SMALL_STRAIN",
     "KAPPA_MAX",
     "hertz_load",
     "jkr_load",
@@ -73,6 +77,27 @@ LN2 = float(np.log(2.0))
 #: at ``u ~ 2.8 kappa**(-2/3)``: beyond ``kappa ~ 1e13`` the minimum and the contacts near it
 #: fall outside, so pull-off forces and contacts for a given load would be wrong.
 KAPPA_MAX = 1e12
+
+
+#: Largest contact half-width over the radius of the small-strain, half-plane theory that
+#: every solver uses (Hertz, Eq. 6): the surface strain is about ``p0/E = a/(2R)``, 10 % here.
+#: Wider contacts are computed but give a :class:`~linecontact.errors.ModelValidityWarning`.
+A_OVER_R_SMALL_STRAIN = 0.2
+
+
+def _warn_wide(a_over_R: ArrayLike, stacklevel: int = 3) -> None:
+    """Warn once per call when a contact is wider than :data:`A_OVER_R_SMALL_STRAIN`."""
+    a = np.asarray(a_over_R, dtype=float)
+    with np.errstate(invalid="ignore"):
+        wide = a > A_OVER_R_SMALL_STRAIN
+    if np.any(wide):
+        warnings.warn(
+            f"a_over_R = {float(np.max(a[wide])):.3g} is beyond the small-strain range of the "
+            f"half-plane theory (a/R <= {A_OVER_R_SMALL_STRAIN:g}, strain a/(2R) <= "
+            f"{A_OVER_R_SMALL_STRAIN / 2:g}): the results are those of linear elasticity",
+            ModelValidityWarning,
+            stacklevel=stacklevel,
+        )
 
 
 def _check_kappa(rho: NDArray, s: NDArray, rho_name: str = "R_over_h") -> None:

@@ -851,6 +851,7 @@ def sliding_contact(
         a_over_R=A, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau
     )
     _ref._check_kappa(rho, s, "R_over_h2")
+    _ref._warn_wide(A)
     shape = A.shape
     A, rho, r, s, tau = (
         np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (A, rho, r, s, tau)
@@ -1172,6 +1173,7 @@ def sliding_contact_for_load(
                 break
             lab = np.where(active, nxt, lab)
         A = np.exp(lab) * np.sqrt(2 / rho)
+    _ref._warn_wide(np.where(missing, np.nan, A))
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # see sliding_contact
         dd = _solve_flat(
             A, rho, r, s, method, n, tol, u_guess=(u1, u2) if method == "closed-form" else None

@@ -311,7 +311,7 @@ def register(sub: Any) -> None:
         type=float,
         metavar="A",
         help="largest contact half-width a/R (default: three times the width at pull-off, at "
-        "least the Hertz width at ten times the pull-off force and 0.02)",
+        "least the Hertz width at ten times the pull-off force and 0.02, at most 0.2)",
     )
     c.add_argument("--a-max", type=float, metavar="A", help="largest half-width a [m] (SI)")
     c.add_argument("--num", type=int, default=200, help="points on the contact branch")

@@ -16,6 +16,7 @@ from functools import lru_cache
 import numpy as np
 from numpy.typing import NDArray
 
+from .. import reference as _ref
 from .._validation import (
     broadcast,
     check_array,
@@ -405,3 +406,9 @@ def _run(
 
 def _build(cls, method, scalar, **vals):
     return cls(method=method, **{k: as_output(np.asarray(v), scalar) for k, v in vals.items()})
+
+
+def _wide(a_over_R: NDArray) -> NDArray:
+    """``a_over_R`` after the small-strain warning of the Coulomb problems' Hertz contact."""
+    _ref._warn_wide(a_over_R, stacklevel=4)
+    return a_over_R

@@ -30,6 +30,7 @@ from ._core import (
     _solver,
     _tail,
     _Tangential,
+    _wide,
 )
 
 __all__ = [
@@ -405,7 +406,7 @@ def steady_rolling_coulomb(
         tol,
         raise_on_failure,
         on_sliding,
-        {"mu": positive("mu", mu), "a_over_R": positive("a_over_R", a_over_R)},
+        {"mu": positive("mu", mu), "a_over_R": _wide(positive("a_over_R", a_over_R))},
     )
     m, A = arrays
     return _build(
