@@ -11,7 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from linecontact import normal_contact, pull_off, zero_width_load
+from linecontact import contact_for_load, normal_contact, pull_off, zero_width_load
 from linecontact.cli import main
 
 CONTRACT = Path(__file__).resolve().parents[2] / "shared" / "tools" / "check-cli-contract"
@@ -308,3 +308,15 @@ def test_coupling_warning_is_one_line(capsys):
     assert code == 0 and records(out)[0]["mechanism"] in ("zero-width", "snap-off")
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("linecontact pulloff: warning: Dundurs beta")
+
+
+def test_table_rounds_a_load_of_round_off_size_to_zero(capsys):
+    # at the width where the load crosses zero the closed form leaves ~1e-15 of round-off
+    a = contact_for_load(0.0, 100.0, 0.01).a_over_R
+    F = normal_contact(a, 100.0, 0.01).F_over_Eh
+    assert F != 0 and abs(F) < 1e-13
+    argv = ["normal", "--R-over-h", "100", "--sigma0-over-E", "0.01", "--a-over-R", repr(a)]
+    code, out, _ = run(capsys, *argv)
+    assert code == 0 and out.splitlines()[-1].split()[2] == "0"
+    code, out, _ = run(capsys, *argv, "--json")
+    assert records(out)[0]["F_over_Eh"] == F  # full precision in JSON
