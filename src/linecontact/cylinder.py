@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -221,10 +222,11 @@ class Cylinder:
                 raise ValueError(f"{name} must be a single number, got an array of shape {v.shape}")
         E = float(composite_modulus(E1, nu1, E2, nu2))
         beta = float(dundurs_beta(E1, nu1, E2, nu2))
-        for name, v in (("E1", E1), ("E2", E2)):
-            if np.isfinite(v) and not PLAUSIBLE["modulus"][0] <= v <= PLAUSIBLE["modulus"][1]:
+        for name, mod in (("E1", E1), ("E2", E2)):
+            e = float(np.asarray(mod))  # a single number (checked above)
+            if np.isfinite(e) and not PLAUSIBLE["modulus"][0] <= e <= PLAUSIBLE["modulus"][1]:
                 warnings.warn(
-                    f"{name} = {float(v):g} Pa is outside 1 kPa to 2 TPa: is the modulus in Pa? "
+                    f"{name} = {e:g} Pa is outside 1 kPa to 2 TPa: is the modulus in Pa? "
                     "(linecontact takes SI units)",
                     ModelValidityWarning,
                     stacklevel=2,
@@ -319,7 +321,7 @@ class Cylinder:
                 a / self.radius, self.R_over_h, self.sigma0_over_E, method=method
             )
         else:
-            F = check_array("load", load, low=-np.inf, low_inclusive=True)
+            F = check_array("load", load, low=-np.inf, low_inclusive=True)  # type: ignore[arg-type]
             Eh = self.modulus * self.adhesion_range
             if branch == "stable" and on_no_equilibrium == "raise":
                 # said in the units given ([N/m]), not only as F_over_Eh
@@ -458,8 +460,8 @@ def _cylinder_tangential(
         A = np.asarray(contact.contact_half_width) / cylinder.radius
         mu = fr
         T = None if d is not None else st / (mu * F)
-        fn = steady_rolling_coulomb if rolling else sliding_initiation_coulomb
-        r = fn(mu, A, d, T_over_muF=T, method=method, on_sliding=on_sliding)
+        coulomb_fn = steady_rolling_coulomb if rolling else sliding_initiation_coulomb
+        r: Any = coulomb_fn(mu, A, d, T_over_muF=T, method=method, on_sliding=on_sliding)
         full = mu * F
         friction = "coulomb"
     else:

@@ -32,7 +32,7 @@ J. Dundurs, discussion, J. Appl. Mech. 36 (1969) 650--652. doi:10.1115/1.3564739
 from __future__ import annotations
 
 import numpy as np
-from numpy.typing import ArrayLike
+from numpy.typing import ArrayLike, NDArray
 
 from ._validation import broadcast, check_array, positive, scalar
 
@@ -48,7 +48,9 @@ __all__ = [
 BETA_WARN = 0.05
 
 
-def _moduli(E1, nu1, E2, nu2):
+def _moduli(
+    E1: ArrayLike, nu1: ArrayLike, E2: ArrayLike, nu2: ArrayLike
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
     E1 = check_array("E1", E1, allow_inf=True)
     E2 = check_array("E2", E2, allow_inf=True)
     nu1 = check_array("nu1", nu1, low=-1.0, high=0.5, high_inclusive=True)
@@ -67,18 +69,18 @@ def composite_modulus(E1: ArrayLike, nu1: ArrayLike, E2: ArrayLike, nu2: ArrayLi
     >>> round(composite_modulus(70e9, 0.17, 70e9, 0.17) / 1e9, 6)  # E1/(2(1 - nu^2))
     36.041602
     """
-    E1, nu1, E2, nu2 = _moduli(E1, nu1, E2, nu2)
-    val = 1.0 / ((1 - nu1**2) / E1 + (1 - nu2**2) / E2)
+    e1, n1, e2, n2 = _moduli(E1, nu1, E2, nu2)
+    val = 1.0 / ((1 - n1**2) / e1 + (1 - n2**2) / e2)
     return val.item() if val.ndim == 0 else val
 
 
 def compliance_constants(E1: ArrayLike, nu1: ArrayLike, E2: ArrayLike, nu2: ArrayLike):
     """The constants ``A`` and ``B`` of Eq. (7) [1/Pa]."""
-    E1, nu1, E2, nu2 = _moduli(E1, nu1, E2, nu2)
-    G1 = E1 / (2 * (1 + nu1))
-    G2 = E2 / (2 * (1 + nu2))
-    A = 4 * (1 - nu1) / G1 + 4 * (1 - nu2) / G2
-    B = (2 - 4 * nu1) / G1 - (2 - 4 * nu2) / G2
+    e1, n1, e2, n2 = _moduli(E1, nu1, E2, nu2)
+    G1 = e1 / (2 * (1 + n1))
+    G2 = e2 / (2 * (1 + n2))
+    A = 4 * (1 - n1) / G1 + 4 * (1 - n2) / G2
+    B = (2 - 4 * n1) / G1 - (2 - 4 * n2) / G2
     return (A.item(), B.item()) if A.ndim == 0 else (A, B)
 
 

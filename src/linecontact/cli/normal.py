@@ -68,10 +68,10 @@ def _cmd_normal(args: argparse.Namespace) -> int:
                 "--a-over-R-range or --a); the contact for a given load is found by the closed "
                 "form"
             )
-        if args.F_over_Eh is not None:
+        if cyl is None:
             F = np.asarray(args.F_over_Eh, float)
         else:
-            F = np.asarray(args.load, float) / (cyl.modulus * cyl.adhesion_range)  # type: ignore[union-attr]
+            F = np.asarray(args.load, float) / (cyl.modulus * cyl.adhesion_range)
         r = contact_for_load(F, rho, s, branch=args.branch, on_no_equilibrium="report")
         state = np.asarray(r.state).reshape(-1)
         reason = _load_reasons(F.reshape(-1), state, rho, s, args.branch, cyl)

@@ -147,10 +147,10 @@ def _cmd_slide(args: argparse.Namespace) -> int:
             reason[i] = f"the {args.method} solver did not converge at a_over_R={float(A[i])!r}"
         given = "a_over_R"
     else:
-        if args.F_over_Eh2 is not None:
+        if cyl is None:
             F = np.asarray(args.F_over_Eh2, float)
         else:
-            F = np.asarray(args.load, float) / (cyl.modulus * cyl.adhesion_range)  # type: ignore[union-attr]
+            F = np.asarray(args.load, float) / (cyl.modulus * cyl.adhesion_range)
         res = sliding_contact_for_load(
             F, rho, r, s, tau0_over_E=tau, method=args.method, on_no_equilibrium="report"
         )

@@ -238,10 +238,11 @@ def _run(args: argparse.Namespace, rolling: bool) -> int:
                 "Coulomb friction needs the Hertz half-width: give --a-over-R (or --R-over-h "
                 "--sigma0-over-E 0 --F-over-Eh, or SI inputs)"
             )
-        fn = tg.steady_rolling_coulomb if rolling else tg.sliding_initiation_coulomb
+        coulomb_fn = tg.steady_rolling_coulomb if rolling else tg.sliding_initiation_coulomb
         if state == "T_over_Ea":
             values = values / ((np.pi / 4) * args.mu * A)
-        r = fn(args.mu, A, d, T_over_muF=None if d is not None else values, method=args.method)
+        T = None if d is not None else values
+        r: Any = coulomb_fn(args.mu, A, d, T_over_muF=T, method=args.method)
     else:
         if args.tau0 is not None:
             raise ValueError(
