@@ -11,6 +11,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from linecontact import __version__ as lc_version
 from linecontact import contact_for_load, normal_contact, pull_off, zero_width_load
 from linecontact.cli import main
 
@@ -320,3 +321,37 @@ def test_table_rounds_a_load_of_round_off_size_to_zero(capsys):
     assert code == 0 and out.splitlines()[-1].split()[2] == "0"
     code, out, _ = run(capsys, *argv, "--json")
     assert records(out)[0]["F_over_Eh"] == F  # full precision in JSON
+
+
+def test_every_option_is_documented_and_every_command_has_examples(capsys):
+    from linecontact.cli import build_parser
+
+    parser = build_parser()
+    sub = parser._subparsers._group_actions[0]
+    assert set(sub.choices) == {
+        "normal",
+        "pulloff",
+        "curve",
+        "slide-init",
+        "roll",
+        "slide",
+        "paper",
+        "cite",
+    }
+    for name, p in sub.choices.items():
+        for action in p._actions:
+            assert action.help, f"{name} {action.option_strings} has no help"
+        assert p.description, name
+        if name != "cite":
+            assert "examples:" in (p.epilog or ""), name
+    with pytest.raises(SystemExit):
+        main(["normal", "--help"])
+    out = capsys.readouterr().out
+    assert "(default: closed-form)" in out and "[m]" in out and "[N/m]" in out
+
+
+def test_version_is_one_line(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["--version"])
+    assert exc.value.code == 0
+    assert capsys.readouterr().out == f"linecontact {lc_version}\n"

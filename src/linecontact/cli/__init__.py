@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+import textwrap
 import warnings
 from collections.abc import Sequence
 
@@ -33,14 +34,20 @@ def build_parser() -> argparse.ArgumentParser:
     """The argparse parser of the ``linecontact`` command."""
     p = Parser(
         prog="linecontact",
-        description="Adhesive (Maugis-Dugdale) contact mechanics of a cylinder - a nanofibre, "
-        "nanowire, nanotube - on an elastic substrate, in plane strain. Every subcommand takes "
-        "the paper's nondimensional groups or SI inputs; `linecontact COMMAND --help` says "
-        "which.",
-        epilog="Conventions: compressive load positive (pull-off forces are negative); forces "
-        "per unit length of cylinder unless --length is given. Output: a table, or with "
-        "--format json|jsonl|csv the provenance block (version, command, parameters, units) "
-        "and the results.",
+        description=textwrap.fill(
+            "Adhesive (Maugis-Dugdale) contact mechanics of a cylinder - a nanofibre, "
+            "nanowire, nanotube - on an elastic substrate, in plane strain. Every subcommand "
+            "takes the paper's nondimensional groups or SI inputs; `linecontact COMMAND "
+            "--help` says which.",
+            88,
+        ),
+        epilog=textwrap.fill(
+            "Conventions: compressive load positive (pull-off forces are negative); forces "
+            "per unit length of cylinder unless --length is given. Output: a table, or with "
+            "--format json|jsonl|csv the provenance block (version, command, parameters, "
+            "units) and the results.",
+            88,
+        ),
         allow_abbrev=False,
     )
     p.add_argument(

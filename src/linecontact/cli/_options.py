@@ -12,6 +12,7 @@ import argparse
 import math
 import re
 import sys
+import textwrap
 from collections.abc import Sequence
 from typing import Any
 
@@ -80,7 +81,9 @@ class Parser(argparse.ArgumentParser):
 def add_command(sub: Any, name: str, summary: str, description: str, examples: Sequence[str]):
     """A subcommand parser with a one-line summary, a description and examples in its help."""
     epilog = "examples:\n" + "\n".join(f"  {e}" for e in examples)
-    return sub.add_parser(name, help=summary, description=description, epilog=epilog)
+    return sub.add_parser(
+        name, help=summary, description=textwrap.fill(description, 88), epilog=epilog
+    )
 
 
 # --------------------------------------------------------------------------------------------

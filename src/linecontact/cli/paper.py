@@ -41,9 +41,21 @@ def _cmd_cite(args) -> int:
 
 def register(sub) -> None:
     """Add ``paper`` and ``cite`` to the subparsers ``sub``."""
-    pa = sub.add_parser("paper", help="reproduce the paper's figures (PNG and SVG)")
-    pa.add_argument("--outdir", default="paper-figures")
+    pa = sub.add_parser(
+        "paper",
+        help="reproduce the paper's figures (PNG and SVG)",
+        description="Redraw Figs. 2-14 of the founding paper from the library's solvers, "
+        "each overlaid with the closed forms where they exist.",
+        epilog="examples:\n  linecontact paper\n  linecontact paper --outdir figs",
+    )
+    pa.add_argument(
+        "--outdir", default="paper-figures", help="directory for the figure files (created)"
+    )
     pa.set_defaults(func=_cmd_paper)
 
-    ci = sub.add_parser("cite", help="how to cite linecontact and the paper")
+    ci = sub.add_parser(
+        "cite",
+        help="how to cite linecontact and the paper",
+        description="The references to cite: the founding paper, the library, the closed forms.",
+    )
     ci.set_defaults(func=_cmd_cite)
