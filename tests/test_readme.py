@@ -1,0 +1,29 @@
+"""The Python examples of the README run as printed (in a fresh process, a temporary folder)."""
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+README = Path(__file__).resolve().parents[1] / "README.md"
+BLOCKS = (
+    re.findall(r"```python\n(.*?)```", README.read_text(encoding="utf-8"), re.S)
+    if README.exists()
+    else []
+)
+
+
+@pytest.mark.skipif(not README.exists(), reason="README.md is not beside the tests")
+def test_the_readme_has_python_examples():
+    assert len(BLOCKS) >= 3
+
+
+@pytest.mark.parametrize("block", BLOCKS, ids=[f"block{i}" for i in range(len(BLOCKS))])
+def test_readme_python_block_runs(block, tmp_path):
+    p = subprocess.run(
+        [sys.executable, "-c", block], capture_output=True, text=True, cwd=tmp_path, timeout=120
+    )
+    assert p.returncode == 0, p.stderr
+    assert "Traceback" not in p.stderr
