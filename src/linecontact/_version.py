@@ -1,3 +1,3 @@
 """The version of linecontact (one place; read by the build backend and the package)."""
 
-__version__ = "0.1.0"
+__version__ = "0.2.0"
