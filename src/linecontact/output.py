@@ -215,7 +215,12 @@ def _jsonable(value: Any) -> Any:
 # column encoders: one list of strings per column, built with whole-array operations
 
 
-def _json_column(v: NDArray[Any]) -> list[str]:
+def _encode(v: NDArray[Any], missing: str, text: Any) -> list[str]:
+    """One column as strings, for the JSON and the CSV writers.
+
+    Booleans ``true``/``false``, numbers in full precision (the shortest ``repr`` that
+    round-trips), non-finite numbers as ``missing``, strings and None by ``text``.
+    """
     kind = v.dtype.kind
     if kind == "b":
         return np.where(v, "true", "false").tolist()
@@ -223,28 +228,19 @@ def _json_column(v: NDArray[Any]) -> list[str]:
         return list(map(repr, v.tolist()))
     if kind == "f":
         vals = v.astype(float, copy=False)
-        text = list(map(float.__repr__, vals.tolist()))
-        bad = ~np.isfinite(vals)
-        if bad.any():
-            for i in np.flatnonzero(bad):
-                text[i] = "null"
-        return text
-    return _by_value(v, lambda x: "null" if x is None else json.dumps(str(x)))
+        out = list(map(float.__repr__, vals.tolist()))
+        for i in np.flatnonzero(~np.isfinite(vals)):
+            out[i] = missing
+        return out
+    return _by_value(v, text)
+
+
+def _json_column(v: NDArray[Any]) -> list[str]:
+    return _encode(v, "null", lambda x: "null" if x is None else json.dumps(str(x)))
 
 
 def _csv_column(v: NDArray[Any]) -> list[str]:
-    kind = v.dtype.kind
-    if kind == "b":
-        return np.where(v, "true", "false").tolist()
-    if kind in "iu":
-        return list(map(repr, v.tolist()))
-    if kind == "f":
-        vals = v.astype(float, copy=False)
-        text = list(map(float.__repr__, vals.tolist()))
-        for i in np.flatnonzero(~np.isfinite(vals)):
-            text[i] = ""
-        return text
-    return _by_value(v, lambda x: "" if x is None else _csv_quote(str(x)))
+    return _encode(v, "", lambda x: "" if x is None else _csv_quote(str(x)))
 
 
 def _by_value(v: NDArray[Any], encode: Any) -> list[str]:
