@@ -1,0 +1,46 @@
+"""The scripts in examples/ run, print what they say, and write what they promise."""
+
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "examples"
+pytestmark = pytest.mark.skipif(not EXAMPLES.is_dir(), reason="examples/ is not beside tests/")
+
+
+def run(tmp_path, name, *args):
+    p = subprocess.run(
+        [sys.executable, str(EXAMPLES / name), *args],
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+        timeout=120,
+    )
+    assert p.returncode == 0, p.stderr
+    assert "Traceback" not in p.stderr
+    return p.stdout
+
+
+def test_nanowire_pull_off(tmp_path):
+    out = run(tmp_path, "nanowire_pull_off.py")
+    assert "pull-off force" in out and "N/m" in out and "uN on a 5 um wire" in out
+    assert "mechanism" in out and ("zero-width" in out or "snap-off" in out)
+    rows = [r for r in out.splitlines() if r.strip() and r.strip()[0] in "-0123456789"]
+    assert len(rows) == 5
+
+
+def test_load_curve_plot(tmp_path):
+    out = run(tmp_path, "load_curve_plot.py", "curve.png")
+    assert "snap-off" in out and "zero-width" in out
+    assert (tmp_path / "curve.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_rolling_creep(tmp_path):
+    out = run(tmp_path, "rolling_creep.py")
+    assert "creep" in out and "Carter" in out
+    creep = [float(r.split()[-1]) for r in out.splitlines()[2:10]]
+    assert len(creep) == 8 and all(c < 0 for c in creep)
+    # the stick zone grows with the load at a fixed tractive force: the creep falls
+    assert all(abs(b) < abs(a) for a, b in zip(creep, creep[1:], strict=False))
