@@ -172,7 +172,12 @@ def _closed_form_from_u(u, kap, rho, ustar):
 
 
 def _ustar(kap: NDArray) -> NDArray:
-    """U of the load minimum (inf where the minimum sits at vanishing width, kappa = 0)."""
+    """U of the load minimum (inf where the minimum sits at vanishing width, kappa = 0).
+
+    Arrays or NumPy scalars (the scalar fast path, see :func:`linecontact.reference._where`).
+    """
+    if np.ndim(kap) == 0:
+        return _ref._u_stationary(kap) if kap > 0 else np.float64(np.inf)
     kap = np.asarray(kap, dtype=float)
     us = np.full(kap.shape, np.inf)
     pos = kap > 0
@@ -182,10 +187,10 @@ def _ustar(kap: NDArray) -> NDArray:
 
 
 def _closed_form(A, rho, s):
+    """u, c/R, F/(Eh), separation residual, stability: flat arrays or NumPy scalars."""
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     abar = A * np.sqrt(rho / 2)
-    u, res, it = _ref._u_of_abar(abar, kap)
-    bp = _ref._branch_point(u, kap)
+    u, res, _, bp = _ref._solve_abar(abar, kap)
     C = bp["X"] * bp["Ct"] * np.sqrt(2 / rho)
     F = (np.pi / 2) * bp["phi"]
     return u, C, F, res, bp["dphi"] < 0
@@ -396,17 +401,23 @@ def normal_contact(
     scalar = scalar_or_array(A, rho, s)
     A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
     _ref._check_kappa(rho, s)
-    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     # a contact half-width far outside the solvers' range (a/R ~ 1e-200 or 1e20) overflows
     # on the way; the residual and finiteness checks below turn that into non-convergence
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         if method == "closed-form":
-            u, C, F, res, stable = _closed_form(A, rho, s)
-            ncol = np.zeros(A.shape, dtype=int)
-            cons = np.zeros(A.shape)
-            err = np.zeros(A.shape)
+            if scalar:  # the same kernels on NumPy scalars (see reference._where)
+                u, C, F, res, stable = _closed_form(*_ref._scalars(A, rho, s))
+                ncol, cons, err = 0, 0.0, 0.0
+            else:
+                shape = A.shape
+                flat = (np.reshape(v, -1) for v in (A, rho, s))
+                u, C, F, res, stable = (v.reshape(shape) for v in _closed_form(*flat))
+                ncol = np.zeros(shape, dtype=int)
+                cons = np.zeros(shape)
+                err = np.zeros(shape)
             converged = (res < 1e-12) & np.isfinite(C) & np.isfinite(F)
         else:
+            kap = (4 / np.pi) * s * np.sqrt(2 * rho)
             r = _collocation(A, rho, s, n, tol)
             u, C, F = r["u"], r["C"], r["F"]
             res, cons, err, ncol = r["res"], r["cons"], r["tail"], r["n"]
@@ -414,7 +425,7 @@ def normal_contact(
             # residual R is scaled so that 1 <-> h; it is the separation residual over h
             stable = _ref._branch_point(u, kap)["dphi"] < 0
         ca = np.reshape(C / A, -1)
-    if raise_on_failure and not np.all(converged):
+    if raise_on_failure and not (bool(converged) if scalar else converged.all()):
         i = np.flatnonzero(~np.asarray(converged).reshape(-1))[0]
         nn = int(np.reshape(ncol, -1)[i])
         if not (np.isfinite(ca[i]) and ca[i] >= 1):
@@ -443,7 +454,7 @@ def normal_contact(
         converged=converged,
         stable=stable,
     )
-    vals = {k: as_output(np.asarray(v), scalar) for k, v in vals.items()}
+    vals = {k: as_output(v if scalar else np.asarray(v), scalar) for k, v in vals.items()}
     return NormalContact(method=method, **vals)
 
 
