@@ -496,41 +496,46 @@ class PullOff(Result):
     maugis_parameter: NDArray | float
 
 
-def _pulloff_arrays(rho: NDArray, s: NDArray):
+def _pulloff_arrays(rho: NDArray, s: NDArray, scalar: bool = False):
+    """:func:`_pulloff_flat` at arrays of any shape, or at NumPy scalars (``scalar``)."""
+    if scalar:
+        return _pulloff_flat(*_ref._scalars(rho, s))
     shape = np.shape(rho)
-    rho = np.atleast_1d(rho).astype(float)
-    s = np.atleast_1d(s).astype(float)
+    rho = np.atleast_1d(rho).astype(float).reshape(-1)
+    s = np.atleast_1d(s).astype(float).reshape(-1)
     d = _pulloff_flat(rho, s)
-    return {k: v.reshape(shape) for k, v in d.items()}
+    return {k: np.reshape(v, shape) for k, v in d.items()}
 
 
 def _pulloff_flat(rho: NDArray, s: NDArray):
+    """Pull-off at flat arrays or NumPy scalars (elementwise; see reference._where)."""
+    where = _ref._where
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     F0 = _ref._zero_width(rho, s)
     us = _ustar(kap)
-    fin = np.isfinite(us)
-    A_min = np.zeros(kap.shape)
-    C_min = np.zeros(kap.shape)
-    F_min = F0.copy()
-    if fin.any():
-        A_, C_, F_, _ = _closed_form_from_u(us[fin], kap[fin], rho[fin], us[fin])
-        A_min[fin], C_min[fin], F_min[fin] = A_, C_, np.minimum(F_, F0[fin])
-    zero_c = np.sqrt(2 / rho) * 2 / (kap * _ref.LN2 + np.sqrt(kap * kap * _ref.LN2**2 + 4))
-    snap = (F0 - F_min) > ZERO_WIDTH_RTOL * np.abs(F0)
-    F_po = np.where(snap, F_min, F0)
-    A_po = np.where(snap, A_min, 0.0)
-    C_po = np.where(snap, C_min, zero_c)
-    mech = np.where(snap, "snap-off", "zero-width")
+    fin = abs(us) < np.inf
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
+        uf = where(fin, us, 1.0)  # kappa = 0: no interior minimum (any finite u will do)
+        bp = _ref._branch_point(uf, kap)
+        sq = np.sqrt(2 / rho)
+        A_min = where(fin, bp["abar"] * sq, 0.0)
+        C_min = where(fin, bp["X"] * bp["Ct"] * sq, 0.0)
+        F_min = where(fin, _ref._minimum((np.pi / 2) * bp["phi"], F0), F0)
+        # the load minimum along the branch in units of Phi = (2/pi) F/(Eh) (contact_for_load)
+        phi_min = where(fin, _ref._minimum(bp["phi"], F0 * (2 / np.pi)), F0 * (2 / np.pi))
+    zero_c = sq * 2 / (kap * _ref.LN2 + np.sqrt(kap * kap * _ref.LN2**2 + 4))
+    snap = (F0 - F_min) > ZERO_WIDTH_RTOL * abs(F0)
     return dict(
-        F_pulloff_over_Eh=F_po,
-        a_over_R_at_pulloff=A_po,
-        c_over_R_at_pulloff=C_po,
-        mechanism=mech,
+        F_pulloff_over_Eh=where(snap, F_min, F0),
+        a_over_R_at_pulloff=where(snap, A_min, 0.0),
+        c_over_R_at_pulloff=where(snap, C_min, zero_c),
+        mechanism=where(snap, "snap-off", "zero-width"),
         F_zero_width_over_Eh=F0,
         F_minimum_over_Eh=F_min,
         a_over_R_at_minimum=A_min,
         kappa=kap,
         us=us,
+        phi_min=phi_min,
     )
 
 
@@ -569,10 +574,10 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     scalar = scalar_or_array(rho, s)
     rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     _ref._check_kappa(rho, s)
-    d = _pulloff_arrays(rho.astype(float), s.astype(float))
-    d.pop("us")
+    d = _pulloff_arrays(rho, s, scalar)
+    del d["us"], d["phi_min"]
     lam = 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
-    vals = {k: as_output(np.asarray(v), scalar) for k, v in d.items()}
+    vals = {k: as_output(v if scalar else np.asarray(v), scalar) for k, v in d.items()}
     return PullOff(
         R_over_h=as_output(rho, scalar),
         sigma0_over_E=as_output(s, scalar),
@@ -581,21 +586,80 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     )
 
 
-def _solve_u_for_phi(target, kap, lo_w, hi_w, increasing):
-    """Bisection in w = ln u for Phi(u) = target on a monotone piece [e^lo_w, e^hi_w]."""
-    lo = lo_w.copy()
-    hi = hi_w.copy()
-    for _ in range(120):
-        mid = 0.5 * (lo + hi)
-        ph = _ref._branch_point(np.exp(mid), kap)["phi"]
-        above = ph > target
-        if increasing:
-            hi = np.where(above, mid, hi)
-            lo = np.where(above, lo, mid)
+def _z_of_u(u):
+    """The variable of the load iteration: ``u`` from ``u = 1`` on, ``1 + ln u`` below.
+
+    The load is nearly linear in ``ln u`` near full contact (``Phi ~ u^-3``) and its distance
+    from its limit nearly exponential in ``u`` towards zero width (``~ e^{-2u}``): in ``z``
+    and on the logarithms of :func:`_load_step` Newton's method sees nearly straight lines.
+    """
+    return _ref._where(u >= 1.0, u, 1.0 + np.log(u))
+
+
+def _u_of_z(z):
+    return _ref._where(z >= 1.0, z, np.exp(z - 1.0))
+
+
+def _load_step(z, lo, hi, dz_prev, target, kap, lt, pmin, p0, stable):
+    """One safeguarded Newton step of the load equation on one branch, in ``z``.
+
+    Stable branch (the load falls from infinity to its minimum ``pmin`` as ``u`` grows):
+    ``g = ln(Phi - pmin) - lt``; unstable branch (the load rises from ``pmin`` to the
+    zero-width load ``p0``): ``g = ln(p0 - Phi) - lt``; ``g`` decreases in ``z`` either way
+    (nan, from rounding at a bracket end, counts as negative: the root lies before ``z``).
+    The step is Newton's unless it leaves the bracket or does not halve the previous one
+    (then bisection). Converged when ``Phi - target`` is at the rounding level of the load's
+    two terms, or the Newton step at the rounding level of ``z``.
+    """
+    u = _u_of_z(z)
+    bp = _ref._branch_point(u, kap)
+    phi = bp["phi"]
+    dphi = bp["dphi"] * _ref._where(z >= 1.0, 1.0, u)  # dPhi/dz
+    d = phi - pmin if stable else p0 - phi
+    g = np.log(d) - lt
+    dg = (dphi if stable else -dphi) / d
+    up = g > 0
+    lo = _ref._where(up, z, lo)
+    hi = _ref._where(up, hi, z)
+    dn = g / dg
+    zn = z - dn
+    zmax = _ref._maximum(abs(z), 1.0)
+    at_noise = abs(phi - target) <= 1e-15 * (bp["abar"] ** 2 + abs(kap * bp["X"] * bp["St"]))
+    conv = at_noise | (g == 0) | (abs(dn) <= 1e-15 * zmax)
+    zn = _ref._where(at_noise, z, zn)
+    ok = conv | ((abs(zn) < np.inf) & (zn > lo) & (zn < hi) & (abs(dn) <= 0.5 * abs(dz_prev)))
+    zn = _ref._where(ok, zn, 0.5 * (lo + hi))
+    stop = conv | (hi - lo <= 1e-15 * zmax)
+    return (zn, lo, hi, zn - z), stop
+
+
+def _solve_u_for_phi(target, kap, pmin, p0, us, stable: bool):
+    """The u on one monotone piece of the branch where Phi(u) = target (flat or scalars).
+
+    Stable: ``u`` in ``[1e-12, us]`` (``745`` for ``kappa = 0``), unstable: ``[us, 745]``.
+    """
+    where = _ref._where
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
+        fin = abs(us) < np.inf
+        if stable:
+            lo = _ref._full(target, _z_of_u(1e-12))
+            hi = _z_of_u(where(fin, us, 745.0))
+            lt = np.log(_ref._maximum(target - pmin, 0.0))
+            # start from the Hertz-like width of the load (at the pull-off load: its end)
+            z0 = _z_of_u(_ref._u_guess(np.sqrt(_ref._maximum(target, 0.0) + 1.0), kap))
+            z0 = where(target <= pmin, hi, _ref._minimum(_ref._maximum(z0, lo), hi))
         else:
-            lo = np.where(above, mid, lo)
-            hi = np.where(above, hi, mid)
-    return np.exp(0.5 * (lo + hi))
+            lo = _z_of_u(us)
+            hi = _ref._full(target, 745.0)
+            lt = np.log(_ref._maximum(p0 - target, 0.0))
+            z0 = _ref._minimum(lo + 1.0, 0.5 * (lo + hi))
+        (z, _, _, _), _ = _ref._iterate(
+            lambda *a: _load_step(*a, stable),
+            (z0, lo, hi, hi - lo),
+            (target, kap, lt, pmin, p0),
+            200,
+        )
+        return _u_of_z(z)
 
 
 def contact_for_load(
@@ -629,60 +693,68 @@ def contact_for_load(
         np.asarray(v, float) for v in broadcast(F_over_Eh=F, R_over_h=rho, sigma0_over_E=s)
     )
     _ref._check_kappa(rho, s)
-    d = _pulloff_arrays(rho, s)
+    d = _pulloff_arrays(rho, s, scalar)
     Fmin, F0, us, kap = d["F_minimum_over_Eh"], d["F_zero_width_over_Eh"], d["us"], d["kappa"]
     if branch == "stable":
         bad = F < Fmin
-        if bad.any():
-            i = np.flatnonzero(bad.reshape(-1))[0]
+        if np.any(bad):
+            i = np.flatnonzero(np.reshape(bad, -1))[0]
             raise NoEquilibriumError(
                 f"no contact carries F_over_Eh={float(F.reshape(-1)[i])!r}: it is below the "
                 f"pull-off force, the minimum load on the contact branch F_minimum_over_Eh="
-                f"{float(Fmin.reshape(-1)[i])!r} (R_over_h={float(rho.reshape(-1)[i])!r}, "
+                f"{float(np.reshape(Fmin, -1)[i])!r} (R_over_h={float(rho.reshape(-1)[i])!r}, "
                 f"sigma0_over_E={float(s.reshape(-1)[i])!r}); the cylinder has pulled off"
             )
-        hi = np.log(np.where(np.isfinite(us), us, 745.0))
-        lo = np.full(F.shape, np.log(1e-12))
-        u = _solve_u_for_phi(F * (2 / np.pi), kap, lo, hi, increasing=False)
     else:
         bad = ~((F > Fmin) & (F < F0))
-        if bad.any():
-            i = np.flatnonzero(bad.reshape(-1))[0]
+        if np.any(bad):
+            i = np.flatnonzero(np.reshape(bad, -1))[0]
             raise NoEquilibriumError(
                 f"no unstable contact carries F_over_Eh={float(F.reshape(-1)[i])!r}: that "
-                f"branch exists only for F_minimum_over_Eh={float(Fmin.reshape(-1)[i])!r} < "
-                f"F_over_Eh < F_zero_width_over_Eh={float(F0.reshape(-1)[i])!r}"
+                f"branch exists only for F_minimum_over_Eh={float(np.reshape(Fmin, -1)[i])!r} < "
+                f"F_over_Eh < F_zero_width_over_Eh={float(np.reshape(F0, -1)[i])!r}"
             )
-        lo = np.log(us)
-        hi = np.full(F.shape, np.log(745.0))
-        u = _solve_u_for_phi(F * (2 / np.pi), kap, lo, hi, increasing=True)
-    A, C, Fc, stable = _closed_form_from_u(u, kap, rho, us)
-    scale = np.maximum.reduce([np.abs(F), np.abs(F0), np.pi / 4 * A * A * rho])
-    res = np.abs(Fc - F) / np.maximum(scale, 1e-300)
-    converged = np.isfinite(Fc) & (res <= _LOAD_RTOL)
-    if not np.all(converged):
-        i = np.flatnonzero(~converged.reshape(-1))[0]
+    Fs, rs = _ref._scalars(F, rho) if scalar else (F.reshape(-1), rho.reshape(-1))
+    flat = (lambda v: v) if scalar else (lambda v: np.reshape(v, -1))
+    u = _solve_u_for_phi(
+        Fs * (2 / np.pi),
+        flat(kap),
+        flat(d["phi_min"]),
+        flat(F0) * (2 / np.pi),
+        flat(us),
+        stable=branch == "stable",
+    )
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
+        A, C, Fc, stable = _closed_form_from_u(u, flat(kap), rs, flat(us))
+    if not scalar:
+        A, C, Fc, stable = (v.reshape(F.shape) for v in (A, C, Fc, stable))
+    Fv, rv = (Fs, rs) if scalar else (F, rho)
+    scale = _ref._maximum(_ref._maximum(abs(Fv), abs(F0)), np.pi / 4 * A * A * rv)
+    res = abs(Fc - Fv) / _ref._maximum(scale, 1e-300)
+    converged = (abs(Fc) < np.inf) & (res <= _LOAD_RTOL)
+    if not (bool(converged) if scalar else converged.all()):
+        i = np.flatnonzero(~np.reshape(converged, -1))[0]
         raise ConvergenceError(
             f"contact_for_load did not converge at F_over_Eh={float(F.reshape(-1)[i])!r}, "
             f"R_over_h={float(rho.reshape(-1)[i])!r}, sigma0_over_E="
             f"{float(s.reshape(-1)[i])!r}: the closest contact carries F_over_Eh="
-            f"{float(Fc.reshape(-1)[i])!r} (the load is outside the range of the solver)"
+            f"{float(np.reshape(Fc, -1)[i])!r} (the load is outside the range of the solver)"
         )
-    z = np.zeros(F.shape)
+    z = 0.0 if scalar else np.zeros(F.shape)
     vals = dict(
         a_over_R=A,
         c_over_R=C,
         F_over_Eh=Fc,
         R_over_h=rho,
         sigma0_over_E=s,
-        n_collocation=z.astype(int),
+        n_collocation=0 if scalar else z.astype(int),
         residual_separation=z,
         residual_consistency=z,
         error_estimate=res,
         converged=converged,
         stable=stable,
     )
-    vals = {k: as_output(np.asarray(v), scalar) for k, v in vals.items()}
+    vals = {k: as_output(v if scalar else np.asarray(v), scalar) for k, v in vals.items()}
     return NormalContact(method="closed-form", **vals)
 
 
