@@ -44,6 +44,20 @@ _SLIDING = "sliding"
 
 
 # --------------------------------------------------------------------------------------------
+# elementary functions
+
+
+def _xlogy(x, y):
+    """``x ln y``, zero where ``x = 0`` (unless ``y`` is nan): ``scipy.special.xlogy``.
+
+    In NumPy, so that importing the package does not import ``scipy.special`` (~0.1 s).
+    """
+    with np.errstate(divide="ignore", invalid="ignore"):
+        v = x * np.log(y)
+    return np.where((x == 0) & ~np.isnan(y), 0.0, v)
+
+
+# --------------------------------------------------------------------------------------------
 # input checks
 
 

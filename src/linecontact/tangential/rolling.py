@@ -12,7 +12,6 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.special
 from numpy.typing import ArrayLike, NDArray
 
 from .._validation import positive
@@ -29,6 +28,7 @@ from ._core import (
     _solver,
     _tail,
     _Tangential,
+    _xlogy,
 )
 
 __all__ = [
@@ -76,10 +76,7 @@ def _roll_rhs(delta, t, split: str = "endpoint"):
     if split == "endpoint":
         return -(1.0 / np.pi) * np.log(2.0 * (t + Y))
     return (1.0 / np.pi) * (
-        scipy.special.xlogy((1 - t) / 2, 1 - t)
-        + scipy.special.xlogy((1 + t) / 2, 1 + t)
-        - 1.0
-        - np.log(t + Y)
+        _xlogy((1 - t) / 2, 1 - t) + _xlogy((1 + t) / 2, 1 + t) - 1.0 - np.log(t + Y)
     )
 
 
