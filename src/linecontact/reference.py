@@ -254,7 +254,7 @@ def _full(like, value: float):
     return np.full(like.shape, value) if isinstance(like, np.ndarray) else np.float64(value)
 
 
-def _iterate(step, state: tuple, params: tuple, maxiter: int):
+def _iterate(step, state: tuple, params: tuple, maxiter: int, done=None):
     """Iterate ``state, stop = step(*state, *params)`` per point until it stops.
 
     ``state`` and ``params`` are tuples of NumPy scalars, or of 1-D arrays of one length. A point
@@ -262,6 +262,8 @@ def _iterate(step, state: tuple, params: tuple, maxiter: int):
     points still active (so one point that converges slowly, or never, costs the work of one
     point, not that of the whole batch), and a point that reaches ``maxiter`` keeps its last
     state; the caller checks its residual.
+
+    ``done`` (optional) marks the points that need no iteration at all.
 
     Returns
     -------
@@ -271,6 +273,8 @@ def _iterate(step, state: tuple, params: tuple, maxiter: int):
         Iterations used per point.
     """
     if not isinstance(state[0], np.ndarray):
+        if done:
+            return state, 0
         for k in range(1, maxiter + 1):  # noqa: B007 (k is the count returned)
             state, stop = step(*state, *params)
             if stop:
@@ -280,6 +284,13 @@ def _iterate(step, state: tuple, params: tuple, maxiter: int):
     its = np.full(out[0].shape, maxiter)
     idx = np.arange(out[0].size)
     cur, par = state, params
+    if done is not None:
+        its[done] = 0
+        idx = idx[~done]
+        if idx.size == 0:
+            return tuple(out), its
+        cur = tuple(v[idx] for v in cur)
+        par = tuple(p[idx] for p in par)
     for k in range(1, maxiter + 1):
         cur, stop = step(*cur, *par)
         if k == maxiter or stop.all():

@@ -92,6 +92,17 @@ SIZES = (
 
 _DCT_FROM = 48  # from this size on the bounded solve uses the fast cosine transform
 
+#: The collocation solvers of the problems work on batches of at most about this many
+#: (point, node) pairs at a time, so that their memory does not grow with the number of
+#: points (~30 arrays of this size are alive at once: ~60 MB).
+_CHUNK_ELEMENTS = 1 << 18
+
+
+def _chunks(size: int, n: int) -> list[slice]:
+    """Slices of ``range(size)`` of at most ``_CHUNK_ELEMENTS // (n + 1)`` points (>= 1)."""
+    step = max(1, _CHUNK_ELEMENTS // (n + 1))
+    return [slice(i, min(i + step, size)) for i in range(0, size, step)]
+
 
 def _linalg():
     """``scipy.linalg``, imported on first use (not with the package, to keep it light)."""

@@ -121,7 +121,7 @@ from ._validation import (
 )
 from .errors import ConvergenceError, NoEquilibriumError
 from .results import Result, as_output
-from .sie import SIZES, BoundedSolution, BoundedSolver, log_end_moments
+from .sie import SIZES, BoundedSolution, BoundedSolver, _chunks, log_end_moments
 
 __all__ = [
     "SlidingContact",
@@ -359,18 +359,20 @@ class SlidingPullOff(Result):
 
 
 def _f1(u):
-    """f1 = sinh u cosh u - u (Baney & Hui), by its series below u = 0.5."""
-    u = np.asarray(u, dtype=float)
+    """f1 = sinh u cosh u - u (Baney & Hui), by its series below u = 0.5.
+
+    Arrays or NumPy scalars (a scalar evaluates only the branch it takes).
+    """
     small = u < 0.5
-    us = np.where(small, u, 0.0)
-    x = 4 * us * us
-    # sum_{k>=1} 4^k u^(2k+1)/(2k+1)! = u sum_k x^k/(2k+1)!, Horner over k = 1..12
-    acc = np.zeros_like(us)
-    for k in range(12, 0, -1):
-        acc = (acc + 1.0) * x / ((2 * k) * (2 * k + 1))
+    if isinstance(small, np.ndarray):
+        us = np.where(small, u, 0.0)
+        ub = np.where(small, 1.0, u)
+        with np.errstate(over="ignore"):
+            return np.where(small, _ref._f1_series(us), 0.5 * np.sinh(2 * ub) - ub)
+    if small:
+        return _ref._f1_series(u)
     with np.errstate(over="ignore"):
-        big = 0.5 * np.sinh(2 * np.where(small, 1.0, u)) - np.where(small, 1.0, u)
-    return np.where(small, us * acc, big)
+        return 0.5 * np.sinh(2 * u) - u
 
 
 def _cf_parts(u1, u2):
@@ -413,80 +415,96 @@ def _initial_u(ab, kap, r):
     return u1, u2
 
 
-def _newton2(evaluate, u1, u2, *, maxiter=60, tol=1e-15, floor=2e-14, umax=300.0):
-    """Damped Newton for two residuals in (u1, u2) > 0, vectorised over points.
+_BIG = float(np.finfo(float).max)
 
-    ``evaluate(idx, u1, u2)`` returns ``(E1, E2, J11, J12, J21, J22, extra)`` for the points
-    ``idx``. Steps are limited to keep ``u`` positive and halved (at most 12 times) while
-    they do not reduce the larger residual; below ``floor`` (rounding level) any step is
-    accepted. A point stops when its residual is below ``tol``, its step is at rounding
-    level or no step reduces its residual. Returns ``u1, u2, |E1|, |E2|, extra`` of the last
-    evaluation at the returned ``u``.
+
+def _nan_to_num(x):
+    """``np.nan_to_num`` (nan to 0, infinities to the largest floats), also for NumPy scalars."""
+    if isinstance(x, np.ndarray):
+        return np.nan_to_num(x)
+    if x != x:
+        return np.float64(0.0)
+    return _ref._minimum(_ref._maximum(x, -_BIG), _BIG)
+
+
+def _direction(u1, u2, E1, E2, J11, J12, J21, J22, tol, umax):
+    """The damped Newton step of :func:`_newton2` from an accepted point (elementwise).
+
+    Returns the direction, the largest step length that keeps ``u`` positive (at most 3/4 of
+    the way to 0) and below ``umax``, and whether the point is done: its residual is below
+    ``tol`` or the step is at rounding level.
     """
-    P = u1.size
-    u1 = u1.astype(float).copy()
-    u2 = u2.astype(float).copy()
-    idx = np.arange(P)
-    E1, E2, J11, J12, J21, J22, extra = evaluate(idx, u1, u2)
-    E1, E2 = np.asarray(E1, float).copy(), np.asarray(E2, float).copy()
-    extra = {k: np.asarray(v).copy() for k, v in extra.items()}
-    J = [np.asarray(j, float).copy() for j in (J11, J12, J21, J22)]
-    active = np.ones(P, bool)
-    for _ in range(maxiter):
-        nrm = np.maximum(np.abs(E1), np.abs(E2))
-        active &= nrm > tol
-        ia = np.nonzero(active)[0]
-        if ia.size == 0:
-            break
-        j11, j12, j21, j22 = (j[ia] for j in J)
-        det = j11 * j22 - j12 * j21
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-            d1 = (-E1[ia] * j22 + E2[ia] * j12) / det
-            d2 = (-E2[ia] * j11 + E1[ia] * j21) / det
-            # fall back to the diagonal (each residual is monotone in its own u) if singular
-            bad = ~(np.isfinite(d1) & np.isfinite(d2))
-            d1 = np.nan_to_num(np.where(bad, -E1[ia] / j11, d1))
-            d2 = np.nan_to_num(np.where(bad, -E2[ia] / j22, d2))
-        lam = np.ones(ia.size)
-        # positivity: never more than 3/4 of the way to u = 0, never beyond umax
-        for d, u in ((d1, u1[ia]), (d2, u2[ia])):
-            neg = d < -0.75 * u
-            lam = np.where(neg, np.minimum(lam, 0.75 * u / np.where(neg, -d, 1.0)), lam)
-            big = u + d > umax
-            lam = np.where(big, np.minimum(lam, (umax - u) / np.where(big, d, 1.0)), lam)
-        tiny_step = (np.abs(d1) <= 4e-16 * np.maximum(u1[ia], 1e-3)) & (
-            np.abs(d2) <= 4e-16 * np.maximum(u2[ia], 1e-3)
+    where = _ref._where
+    det = J11 * J22 - J12 * J21
+    d1 = (-E1 * J22 + E2 * J12) / det
+    d2 = (-E2 * J11 + E1 * J21) / det
+    # fall back to the diagonal (each residual is monotone in its own u) if singular
+    bad = ~((abs(d1) < np.inf) & (abs(d2) < np.inf))
+    d1 = _nan_to_num(where(bad, -E1 / J11, d1))
+    d2 = _nan_to_num(where(bad, -E2 / J22, d2))
+    lam = 1.0
+    for d, u in ((d1, u1), (d2, u2)):
+        neg = d < -0.75 * u
+        lam = where(neg, _ref._minimum(lam, 0.75 * u / where(neg, -d, 1.0)), lam)
+        big = u + d > umax
+        lam = where(big, _ref._minimum(lam, (umax - u) / where(big, d, 1.0)), lam)
+    tiny = (abs(d1) <= 4e-16 * _ref._maximum(u1, 1e-3)) & (
+        abs(d2) <= 4e-16 * _ref._maximum(u2, 1e-3)
+    )
+    done = ~(_ref._maximum(abs(E1), abs(E2)) > tol) | tiny
+    return d1, d2, lam + 0.0 * u1, done
+
+
+def _newton2(evaluate, u1, u2, params, *, nextra=0, maxiter=60, tol=1e-15, floor=2e-14, umax=300.0):
+    """Damped Newton for two residuals in (u1, u2) > 0, per point (flat arrays or scalars).
+
+    ``evaluate(u1, u2, *params)`` returns ``(E1, E2, J11, J12, J21, J22, *extra)`` with
+    ``nextra`` extra quantities. Steps are limited to keep ``u`` positive and halved (at most
+    12 times) while they do not reduce the larger residual; below ``floor`` (rounding level)
+    any step is accepted. A point stops when its residual is below ``tol``, its step is at
+    rounding level or no step reduces its residual, or after ``maxiter`` Newton steps.
+
+    Each iteration evaluates one trial point (a full step or a halved one) of every point
+    still active; a point that stops leaves the loop (:func:`linecontact.reference._iterate`),
+    so one slow point does not keep the batch iterating. Returns ``u1, u2, |E1|, |E2|`` and
+    the extras of the last evaluation at the returned ``u``.
+    """
+    where = _ref._where
+    ev = tuple(evaluate(u1, u2, *params))
+    d1, d2, lam, done = _direction(u1, u2, *ev[:6], tol, umax)
+    zero = 0.0 * lam
+    ncur = 6 + nextra
+    nstate = 2 + ncur + 5
+
+    def step(*args):
+        u1, u2 = args[0], args[1]
+        cur = args[2 : 2 + ncur]
+        d1, d2, lam, tries, steps = args[2 + ncur : nstate]
+        n1 = u1 + lam * d1
+        n2 = u2 + lam * d2
+        r = evaluate(n1, n2, *args[nstate:])
+        nrm = _ref._maximum(abs(cur[0]), abs(cur[1]))
+        nn = _ref._maximum(abs(r[0]), abs(r[1]))
+        ok = (abs(nn) < np.inf) & ((nn < nrm) | (nn <= floor))
+        cur = tuple(where(ok, a, b) for a, b in zip(r, cur, strict=True))
+        u1, u2 = where(ok, n1, u1), where(ok, n2, u2)
+        # a step at rounding level: quadratic convergence leaves nothing to gain
+        small = (abs(lam * d1) <= 1e-12 * _ref._maximum(u1, 1e-3)) & (
+            abs(lam * d2) <= 1e-12 * _ref._maximum(u2, 1e-3)
         )
-        todo = ~tiny_step
-        active[ia[tiny_step]] = False
-        for ls in range(13):
-            it = np.nonzero(todo)[0]
-            if it.size == 0:
-                break
-            gi = ia[it]
-            n1 = u1[gi] + lam[it] * d1[it]
-            n2 = u2[gi] + lam[it] * d2[it]
-            r = evaluate(gi, n1, n2)
-            nn = np.maximum(np.abs(r[0]), np.abs(r[1]))
-            ok = np.isfinite(nn) & ((nn < nrm[gi]) | (nn <= floor))
-            acc = it[ok]
-            ga = ia[acc]
-            u1[ga], u2[ga] = n1[ok], n2[ok]
-            E1[ga], E2[ga] = r[0][ok], r[1][ok]
-            for j, v in zip(J, r[2:6], strict=True):
-                j[ga] = v[ok]
-            for k, v in r[6].items():
-                extra[k][ga] = v[ok]
-            todo[acc] = False
-            # a step at rounding level: quadratic convergence leaves nothing to gain
-            small = (np.abs(lam[acc] * d1[acc]) <= 1e-12 * np.maximum(u1[ga], 1e-3)) & (
-                np.abs(lam[acc] * d2[acc]) <= 1e-12 * np.maximum(u2[ga], 1e-3)
-            )
-            active[ga[small]] = False
-            lam[it[~ok]] *= 0.5
-            if ls == 12:  # no step reduces the residual: it is at its rounding floor
-                active[ia[it[~ok]]] = False
-    return u1, u2, np.abs(E1), np.abs(E2), extra
+        nd1, nd2, nlam, converged = _direction(u1, u2, *cur[:6], tol, umax)
+        # thirteen trials that do not reduce the residual: it is at its rounding floor
+        give_up = ~ok & (tries >= 12)
+        steps = steps + where(ok, 1.0, 0.0)
+        stop = (ok & (small | converged | (steps >= maxiter))) | give_up
+        d1, d2 = where(ok, nd1, d1), where(ok, nd2, d2)
+        lam = where(ok, nlam, 0.5 * lam)
+        tries = where(ok, 0.0, tries + 1)
+        return (u1, u2, *cur, d1, d2, lam, tries, steps), stop
+
+    state = (u1, u2, *ev, d1, d2, lam, zero, zero)
+    (u1, u2, E1, E2, *rest), _ = _ref._iterate(step, state, tuple(params), 13 * maxiter, done)
+    return u1, u2, abs(E1), abs(E2), tuple(rest[4 : 4 + nextra])
 
 
 def _closed_form(A, rho, r, s, u1=None, u2=None):
@@ -495,12 +513,13 @@ def _closed_form(A, rho, r, s, u1=None, u2=None):
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     if u1 is None or u2 is None:
         u1, u2 = _initial_u(ab, kap, r)
-
-    def evaluate(idx, v1, v2):
-        return (*_cf_eval(ab[idx], kap[idx], r[idx], v1, v2), {})
-
-    u1, u2, e1, e2, _ = _newton2(evaluate, u1, u2)
+    u1, u2, e1, e2, _ = _newton2(_cf_evaluate, u1, u2, (ab, kap, r))
     return u1, u2, e1, e2
+
+
+def _cf_evaluate(u1, u2, ab, kap, r):
+    """:func:`_cf_eval` in the argument order of :func:`_newton2`."""
+    return _cf_eval(ab, kap, r, u1, u2)
 
 
 def _cf_outputs(A, rho, r, s, u1, u2):
@@ -613,11 +632,15 @@ def _colloc_eval(solver: BoundedSolver, A, s, rho, r, u1, u2):
     res = (np.pi / 2) * b[:, 0]
     mom = (np.pi / 4) * b[:, 1] if n > 1 else np.zeros_like(res)
     tail = np.max(np.abs(b[:, -3:]), axis=-1) / np.maximum(np.max(np.abs(b), axis=-1), 1e-300)
-    extra = dict(
-        ecc=ecc, resultant=res, moment=mom, consistency=np.abs(sol.consistency[:, 0]), tail=tail
+    # residuals as (gap - h)/h, the sign of the closed-form ones; the extras as in _EXTRA
+    return (
+        *(-R1, -R2, -J11, -J12, -J21, -J22),
+        *(ecc, res, mom, np.abs(sol.consistency[:, 0]), tail),
     )
-    # residuals as (gap - h)/h, the sign of the closed-form ones
-    return -R1, -R2, -J11, -J12, -J21, -J22, extra
+
+
+#: The extra quantities of :func:`_colloc_eval`, in its order.
+_EXTRA = ("ecc", "resultant", "moment", "consistency", "tail")
 
 
 def _collocation(A, rho, r, s, n, tol):
@@ -628,13 +651,21 @@ def _collocation(A, rho, r, s, n, tol):
     u1, u2 = _initial_u(ab, kap, r)  # each edge from the symmetric solution with its range
 
     def run(nn, idx, v1, v2):
+        """Newton at nn nodes on the points idx, in chunks of bounded memory."""
         solver = BoundedSolver(int(nn))
 
-        def evaluate(i, w1, w2):
-            g = idx[i]
-            return _colloc_eval(solver, A[g], s[g], rho[g], r[g], w1, w2)
+        def evaluate(w1, w2, A_, s_, rho_, r_):
+            return _colloc_eval(solver, A_, s_, rho_, r_, w1, w2)
 
-        return _newton2(evaluate, v1, v2)
+        out = [np.empty(idx.size) for _ in range(4 + len(_EXTRA))]
+        for c in _chunks(idx.size, int(nn)):
+            g = idx[c]
+            w1, w2, f1, f2, ex_ = _newton2(
+                evaluate, v1[c], v2[c], (A[g], s[g], rho[g], r[g]), nextra=len(_EXTRA)
+            )
+            for o, v in zip(out, (w1, w2, f1, f2, *ex_), strict=True):
+                o[c] = v
+        return (*out[:4], dict(zip(_EXTRA, out[4:], strict=True)))
 
     n0 = 16 if n == "auto" else int(n)
     P = A.size
@@ -851,20 +882,19 @@ def _zero_width(kap, r):
     X2 = 2.0 / (kap * ln2 + np.sqrt(kap * kap * ln2 * ln2 + 4))
     X1 = 2.0 * r / (kap * ln2 + np.sqrt(kap * kap * ln2 * ln2 + 4 * r))
 
-    def evaluate(idx, x1, x2):
-        k = kap[idx]
+    def evaluate(x1, x2, k, r):
         S = x1 + x2
         L2 = np.log(S / x1)
         L1 = np.log(S / x2)
-        E1 = (x1 * x1 + 0.5 * k * S * L1) / r[idx] - 1
+        E1 = (x1 * x1 + 0.5 * k * S * L1) / r - 1
         E2 = x2 * x2 + 0.5 * k * S * L2 - 1
-        J11 = (2 * x1 + 0.5 * k * (L1 + 1)) / r[idx]
-        J12 = 0.5 * k * (L1 - x1 / x2) / r[idx]
+        J11 = (2 * x1 + 0.5 * k * (L1 + 1)) / r
+        J12 = 0.5 * k * (L1 - x1 / x2) / r
         J21 = 0.5 * k * (L2 - x2 / x1)
         J22 = 2 * x2 + 0.5 * k * (L2 + 1)
-        return E1, E2, J11, J12, J21, J22, {}
+        return E1, E2, J11, J12, J21, J22
 
-    X1, X2, e1, e2, _ = _newton2(evaluate, X1, X2)
+    X1, X2, e1, e2, _ = _newton2(evaluate, X1, X2, (kap, r))
     return X1, X2, np.maximum(e1, e2)
 
 
