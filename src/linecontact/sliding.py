@@ -371,6 +371,8 @@ def _f1(u):
             return np.where(small, _ref._f1_series(us), 0.5 * np.sinh(2 * ub) - ub)
     if small:
         return _ref._f1_series(u)
+    if u < 350.0:  # sinh(2u) is finite (and no errstate is needed, ~1.5 us each)
+        return 0.5 * np.sinh(2 * u) - u
     with np.errstate(over="ignore"):
         return 0.5 * np.sinh(2 * u) - u
 
@@ -727,12 +729,16 @@ def _check_method(method, n, tol, raise_on_failure):
 
 
 def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
-    """Solve at flat arrays; returns a dict of flat arrays (both methods)."""
+    """Solve at flat arrays; returns a dict of flat arrays (both methods).
+
+    The closed form also takes NumPy scalars (the scalar fast path of the public functions).
+    """
     if method == "closed-form":
         g1, g2 = (None, None) if u_guess is None else u_guess
         u1, u2, e1, e2 = _closed_form(A, rho, r, s, g1, g2)
         ecc, F, M, dphi = _cf_outputs(A, rho, r, s, u1, u2)
-        z = np.zeros(A.shape)
+        flat = isinstance(A, np.ndarray)
+        z = np.zeros(A.shape) if flat else 0.0
         d = dict(
             u1=u1,
             u2=u2,
@@ -743,8 +749,8 @@ def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
             res2=e2,
             cons=z,
             tail=z,
-            n=np.zeros(A.shape, int),
-            converged=(np.maximum(e1, e2) <= 1e-12) & np.isfinite(F),
+            n=np.zeros(A.shape, int) if flat else 0,
+            converged=(_ref._maximum(e1, e2) <= 1e-12) & (abs(F) < np.inf),
         )
     else:
         d = _collocation(A, rho, r, s, n, tol)
@@ -756,7 +762,9 @@ def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
 def _pack(d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure, where):
     conv = d["converged"]
     if raise_on_failure and not np.all(conv):
-        i = np.flatnonzero(~conv)[0]
+        i = np.flatnonzero(~np.reshape(conv, -1))[0]
+        A, rho, r, s = (np.reshape(v, -1) for v in (A, rho, r, s))
+        d = {k: np.reshape(v, -1) for k, v in d.items()}
         raise ConvergenceError(
             f"{where} ({method}) did not converge at a_over_R={float(A[i])!r}, "
             f"R_over_h2={float(rho[i])!r}, h1_over_h2={float(r[i])!r}, "
@@ -789,7 +797,10 @@ def _pack(d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure, where):
         converged=conv,
         stable=d["stable"],
     )
-    vals = {k: as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
+    if isinstance(A, np.ndarray):
+        vals = {k: as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
+    else:  # NumPy scalars from the scalar fast path
+        vals = {k: as_output(v, True) for k, v in vals.items()}
     return SlidingContact(method=method, **vals)
 
 
@@ -856,9 +867,12 @@ def sliding_contact(
     )
     _ref._check_kappa(rho, s, "R_over_h2")
     shape = A.shape
-    A, rho, r, s, tau = (
-        np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (A, rho, r, s, tau)
-    )
+    if scalar and method == "closed-form":  # the same kernels on NumPy scalars
+        A, rho, r, s, tau = _ref._scalars(A, rho, r, s, tau)
+    else:
+        A, rho, r, s, tau = (
+            np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (A, rho, r, s, tau)
+        )
     # a contact half-width far outside the solvers' range overflows on the way; _pack's
     # convergence check reports it
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
@@ -901,11 +915,11 @@ def _zero_width(kap, r):
 def _phi_at(lab, kap, r):
     """Phi = (2/pi) F/(E h2), dPhi/dabar, u1, u2 at abar = exp(lab) (closed form).
 
-    Each call starts from the symmetric guesses (robust; warm starts from a distant abar
-    can lead Newton astray).
+    Flat arrays or NumPy scalars. Each call starts from the symmetric guesses (robust; warm
+    starts from a distant abar can lead Newton astray).
     """
     ab = np.exp(lab)
-    one = np.ones_like(ab)  # the closed form depends on abar and kappa only: take R/h2 = 1
+    one = _ref._full(ab, 1.0)  # the closed form depends on abar and kappa only: R/h2 = 1
     A = ab * np.sqrt(2.0)
     s = kap * (np.pi / 4) / np.sqrt(2.0)
     u1, u2, _, _ = _closed_form(A, one, r, s)
@@ -914,57 +928,86 @@ def _phi_at(lab, kap, r):
 
 
 _LAB_LO = np.log(1e-9)  # abar below which the load is indistinguishable from its a -> 0 limit
+_GRID = np.linspace(0.0, 1.0, 41)  # the grid in ln abar that brackets the load minimum
+
+
+def _phi_grid(labs, kap, r):
+    """Phi and dPhi/dabar on the grid ``labs`` (grid, points), as one batch per chunk.
+
+    The grid values of a few points at a time are solved together (a scalar call evaluates
+    its 41 grid values in one vectorised solve instead of 41 scalar ones).
+    """
+    G, P = labs.shape
+    phis = np.empty((G, P))
+    dphis = np.empty((G, P))
+    step = max(1, (1 << 16) // G)
+    for c in range(0, P, step):
+        sl = slice(c, min(c + step, P))
+        m = sl.stop - sl.start
+        ph, dph, _, _ = _phi_at(
+            labs[:, sl].reshape(-1),
+            np.broadcast_to(kap[sl], (G, m)).reshape(-1),
+            np.broadcast_to(r[sl], (G, m)).reshape(-1),
+        )
+        phis[:, sl] = ph.reshape(G, m)
+        dphis[:, sl] = dph.reshape(G, m)
+    return phis, dphis
+
+
+def _secant_step(xp, fp, x, fx, lo, hi, ph, kap, r):
+    """One step of the secant on dPhi inside its bracket (bisection otherwise), per point."""
+    where = _ref._where
+    nx = x - fx * (x - xp) / (fx - fp)
+    ok = (abs(nx) < np.inf) & (nx > lo) & (nx < hi)
+    nx = where(ok, nx, 0.5 * (lo + hi))
+    ph, fn, _, _ = _phi_at(nx, kap, r)
+    xp, fp, x, fx = x, fx, nx, fn
+    up = fx > 0
+    hi = where(up, x, hi)
+    lo = where(up, lo, x)
+    stop = ~(abs(x - xp) > 1e-10 * _ref._maximum(1.0, abs(x))) | (fx == 0)
+    return (xp, fp, x, fx, lo, hi, ph), stop
 
 
 def _pulloff_flat(kap, r):
-    """Minimum of Phi(abar) along the branch: grid in ln abar, then a secant on dPhi."""
-    P = kap.size
+    """Minimum of Phi(abar) along the branch: grid in ln abar, then a secant on dPhi.
+
+    Flat arrays or NumPy scalars (the grid is solved as a batch either way).
+    """
+    scalar = not isinstance(kap, np.ndarray)
     X1, X2, _ = _zero_width(kap, r)
     phi0 = -0.5 * kap * (X1 + X2)
     # upper end: Hertz dominates beyond abar ~ 1 + kappa
     lab_hi = np.log(3.0 + 3.0 * kap)
-    grid = np.linspace(0.0, 1.0, 41)
-    labs = _LAB_LO + grid[:, None] * (lab_hi - _LAB_LO)[None, :]
-    phis = np.empty((grid.size, P))
-    dphis = np.empty((grid.size, P))
-    for i in range(grid.size):
-        phis[i], dphis[i], _, _ = _phi_at(labs[i], kap, r)
+    kv, rv = np.atleast_1d(kap), np.atleast_1d(r)
+    labs = _LAB_LO + _GRID[:, None] * (np.atleast_1d(lab_hi) - _LAB_LO)[None, :]
+    phis, dphis = _phi_grid(labs, kv, rv)
     # interior minimum: bracket the smallest grid value
     k = np.argmin(phis, axis=0)
-    cols = np.arange(P)
-    interior = (k > 0) & (k < grid.size - 1)
-    kk = np.clip(k, 1, grid.size - 2)
-    lo, hi = labs[kk - 1, cols], labs[kk + 1, cols]
-    _, flo, _, _ = _phi_at(lo, kap, r)
-    _, fhi, _, _ = _phi_at(hi, kap, r)
-    # secant on dPhi, kept inside the bracket (bisection otherwise); the load is flat at its
-    # minimum, so locating it to 1e-10 in ln(abar) gives the load to rounding
-    xp, fp, x, fx = lo, flo, hi, fhi
-    todo = interior.copy()
-    for _ in range(100):
-        if not todo.any():
-            break
-        with np.errstate(divide="ignore", invalid="ignore"):
-            nx = x - fx * (x - xp) / (fx - fp)
-        ok = np.isfinite(nx) & (nx > lo) & (nx < hi)
-        nx = np.where(ok, nx, 0.5 * (lo + hi))
-        i = np.nonzero(todo)[0]
-        _, fn, _, _ = _phi_at(nx[i], kap[i], r[i])
-        f_new = fx.copy()
-        f_new[i] = fn
-        xp, fp = np.where(todo, x, xp), np.where(todo, fx, fp)
-        x, fx = np.where(todo, nx, x), np.where(todo, f_new, fx)
-        up = todo & (fx > 0)
-        dn = todo & (fx <= 0)
-        hi, fhi = np.where(up, x, hi), np.where(up, fx, fhi)
-        lo, flo = np.where(dn, x, lo), np.where(dn, fx, flo)
-        todo &= (np.abs(x - xp) > 1e-10 * np.maximum(1.0, np.abs(x))) & (fx != 0)
-    lab_min = x
-    ph, _, _, _ = _phi_at(lab_min, kap, r)
-    interior &= ph < phi0
-    phi_min = np.where(interior, ph, phi0)
-    lab_min = np.where(interior, lab_min, -np.inf)
-    snap = (phi0 - phi_min) > ZERO_WIDTH_RTOL * np.abs(phi0)
+    cols = np.arange(kv.size)
+    interior = (k > 0) & (k < _GRID.size - 1)
+    kk = np.clip(k, 1, _GRID.size - 2)
+    # the secant on dPhi starts from the grid values at the bracket's ends (kept inside the
+    # bracket, bisection otherwise); the load is flat at its minimum, so locating it to
+    # 1e-10 in ln(abar) gives the load to rounding
+    start = (
+        labs[kk - 1, cols],
+        dphis[kk - 1, cols],
+        labs[kk + 1, cols],
+        dphis[kk + 1, cols],
+        labs[kk - 1, cols],
+        labs[kk + 1, cols],
+        phis[kk + 1, cols],
+    )
+    if scalar:
+        start, interior = _ref._scalars(*(v[0] for v in start)), bool(interior[0])
+    (_, _, lab_min, _, _, _, ph), _ = _ref._iterate(
+        _secant_step, start, (kap, r), 100, done=not interior if scalar else ~interior
+    )
+    interior = interior & (ph < phi0)
+    phi_min = _ref._where(interior, ph, phi0)
+    lab_min = _ref._where(interior, lab_min, -np.inf)
+    snap = (phi0 - phi_min) > ZERO_WIDTH_RTOL * abs(phi0)
     return dict(X1=X1, X2=X2, phi0=phi0, phi_min=phi_min, lab_min=lab_min, snap=snap, lab_hi=lab_hi)
 
 
@@ -995,8 +1038,12 @@ def sliding_pull_off(
     rho, r, s = broadcast(R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s)
     _ref._check_kappa(rho, s, "R_over_h2")
     shape = rho.shape
-    rho, r, s = (np.ascontiguousarray(v, float).reshape(-1) for v in (rho, r, s))
+    if scalar:  # the same kernels on NumPy scalars (the grid is a batch of 41 either way)
+        rho, r, s = _ref._scalars(rho, r, s)
+    else:
+        rho, r, s = (np.ascontiguousarray(v, float).reshape(-1) for v in (rho, r, s))
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    where = _ref._where
     # h1/h2 far from 1 (1e-300, 1e12) overflows on the way to a finite answer; a result that
     # is not finite is reported below
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
@@ -1004,19 +1051,20 @@ def sliding_pull_off(
         sq = np.sqrt(2 / rho)
         F0 = (np.pi / 2) * d["phi0"]
         Fmin = (np.pi / 2) * d["phi_min"]
-        a_min = np.where(d["snap"], np.exp(d["lab_min"]) * sq, 0.0)
-    bad = ~(np.isfinite(F0) & np.isfinite(Fmin) & np.isfinite(a_min))
+        a_min = where(d["snap"], np.exp(d["lab_min"]) * sq, 0.0)
+    bad = ~((abs(F0) < np.inf) & (abs(Fmin) < np.inf) & (abs(a_min) < np.inf))
     if np.any(bad):
-        i = int(np.flatnonzero(bad)[0])
+        i = int(np.flatnonzero(np.reshape(bad, -1))[0])
+        rho, r, s = (np.reshape(v, -1) for v in (rho, r, s))
         raise ConvergenceError(
             f"sliding_pull_off did not converge at R_over_h2={float(rho[i])!r}, h1_over_h2="
             f"{float(r[i])!r}, sigma0_over_E={float(s[i])!r}: the point is outside the "
             f"solver's range"
         )
     vals = dict(
-        F_pulloff_over_Eh2=np.where(d["snap"], Fmin, F0),
+        F_pulloff_over_Eh2=where(d["snap"], Fmin, F0),
         a_over_R_at_pulloff=a_min,
-        mechanism=np.where(d["snap"], "snap-off", "zero-width"),
+        mechanism=where(d["snap"], "snap-off", "zero-width"),
         F_zero_width_over_Eh2=F0,
         c1_over_R_zero_width=d["X1"] * sq,
         c2_over_R_zero_width=d["X2"] * sq,
@@ -1024,7 +1072,9 @@ def sliding_pull_off(
         h1_over_h2=r,
         sigma0_over_E=s,
     )
-    vals = {k: as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
+    vals = {
+        k: as_output(v if scalar else np.asarray(v).reshape(shape), scalar) for k, v in vals.items()
+    }
     return SlidingPullOff(**vals)
 
 
