@@ -1078,6 +1078,75 @@ def sliding_pull_off(
     return SlidingPullOff(**vals)
 
 
+def _lower_end(F, rho, r, s, kap, phi_t):
+    """Lower end (ln abar) of the stable branch, or NoEquilibriumError below the pull-off.
+
+    Flat arrays or NumPy scalars; the pull-off search runs on the adhesive points only.
+    """
+    adh = s > 0
+    if not isinstance(F, np.ndarray):
+        phi_po, lab_lo = np.float64(0.0), np.float64(_LAB_LO)
+        if adh:
+            d = _pulloff_flat(kap, r)
+            phi_po = _ref._where(d["snap"], d["phi_min"], d["phi0"])
+            lab_lo = _ref._where(d["snap"], d["lab_min"], lab_lo)
+    else:
+        lab_lo = np.full(F.shape, _LAB_LO)
+        phi_po = np.zeros(F.shape)
+        if adh.any():
+            d = _pulloff_flat(kap[adh], r[adh])
+            phi_po[adh] = np.where(d["snap"], d["phi_min"], d["phi0"])
+            lab_lo[adh] = np.where(d["snap"], d["lab_min"], _LAB_LO)
+    bad = np.reshape(adh & (phi_t < phi_po), -1)
+    F, rho, r, s, phi_po = (np.reshape(v, -1) for v in (F, rho, r, s, phi_po))
+    if bad.any():
+        g = np.flatnonzero(bad)[0]
+        raise NoEquilibriumError(
+            f"no steadily sliding contact carries F_over_Eh2={float(F[g])!r}: it is below "
+            f"the pull-off force F_pulloff_over_Eh2={float(np.pi / 2 * phi_po[g])!r} "
+            f"(R_over_h2={float(rho[g])!r}, h1_over_h2={float(r[g])!r}, "
+            f"sigma0_over_E={float(s[g])!r}); the cylinder has pulled off"
+        )
+    nonpos = np.reshape(~adh & (phi_t <= 0), -1)
+    if nonpos.any():
+        i = np.flatnonzero(nonpos)[0]
+        raise NoEquilibriumError(
+            f"no contact carries F_over_Eh2={float(F[i])!r} without adhesion "
+            f"(sigma0_over_E=0): the load must be > 0"
+        )
+    return lab_lo
+
+
+def _double_step(lab, ph, phi_t, kap, r):
+    """Double abar until the load at it exceeds the target (the upper end of the bracket)."""
+    lab = lab + np.log(2.0)
+    ph, _, _, _ = _phi_at(lab, kap, r)
+    return (lab, ph), ~(ph < phi_t)
+
+
+def _load_step(lab, lo, hi, u1, u2, phi_t, kap, r):
+    """One bracketed Newton step in ln abar of Phi(abar) = phi_t along the stable branch.
+
+    Also returns the u1, u2 of the closed form at the point evaluated (a done point keeps
+    that point, so they belong to the returned ln abar).
+    """
+    where = _ref._where
+    mx = _ref._maximum
+    ph, dph, u1, u2 = _phi_at(lab, kap, r)
+    fx = ph - phi_t
+    up = fx > 0
+    hi = where(up, lab, hi)
+    lo = where(up, lo, lab)
+    nxt = lab - fx / (dph * np.exp(lab))
+    nxt = where((abs(nxt) < np.inf) & (nxt > lo) & (nxt < hi), nxt, 0.5 * (lo + hi))
+    done = (
+        (abs(fx) <= 4e-16 * mx(1.0, abs(phi_t)))
+        | (abs(nxt - lab) <= 1e-15 * mx(1.0, abs(lab)))
+        | (hi - lo <= 1e-15 * mx(1.0, abs(hi)))
+    )
+    return (where(done, lab, nxt), lo, hi, u1, u2), done
+
+
 def sliding_contact_for_load(
     F_over_Eh2: ArrayLike,
     R_over_h2: ArrayLike,
@@ -1130,72 +1199,34 @@ def sliding_contact_for_load(
     )
     _ref._check_kappa(rho, s, "R_over_h2")
     shape = F.shape
-    F, rho, r, s, tau = (
-        np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (F, rho, r, s, tau)
-    )
+    if scalar:  # the search runs on NumPy scalars (see reference._where)
+        F, rho, r, s, tau = _ref._scalars(F, rho, r, s, tau)
+    else:
+        F, rho, r, s, tau = (
+            np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (F, rho, r, s, tau)
+        )
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     phi_t = F * (2 / np.pi)
     # as in sliding_pull_off: far from h1 = h2 the search overflows on the way; the
     # convergence check of the state found reports a failure
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         # lower end of the stable branch and its load
-        lab_lo = np.full(F.shape, _LAB_LO)
-        phi_lo = np.zeros(F.shape)
-        adh = s > 0
-        if adh.any():
-            d = _pulloff_flat(kap[adh], r[adh])
-            phi_po = np.where(d["snap"], d["phi_min"], d["phi0"])
-            bad = phi_t[adh] < phi_po
-            if bad.any():
-                i = np.flatnonzero(bad)[0]
-                g = np.flatnonzero(adh)[i]
-                raise NoEquilibriumError(
-                    f"no steadily sliding contact carries F_over_Eh2={float(F[g])!r}: it is below "
-                    f"the pull-off force F_pulloff_over_Eh2={float(np.pi / 2 * phi_po[i])!r} "
-                    f"(R_over_h2={float(rho[g])!r}, h1_over_h2={float(r[g])!r}, "
-                    f"sigma0_over_E={float(s[g])!r}); the cylinder has pulled off"
-                )
-            lab_lo[adh] = np.where(d["snap"], d["lab_min"], _LAB_LO)
-            phi_lo[adh] = np.where(d["snap"], d["phi_min"], d["phi0"])
-        if np.any(~adh & (phi_t <= 0)):
-            i = np.flatnonzero(~adh & (phi_t <= 0))[0]
-            raise NoEquilibriumError(
-                f"no contact carries F_over_Eh2={float(F[i])!r} without adhesion "
-                f"(sigma0_over_E=0): the load must be > 0"
-            )
+        lab_lo = _lower_end(F, rho, r, s, kap, phi_t)
         # upper end: where Phi exceeds the target (Hertz: Phi >= abar^2 - kappa abar sinh ...)
-        lab_hi = np.log(np.sqrt(np.maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
+        lab_hi = np.log(np.sqrt(_ref._maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
         ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
-        for _ in range(60):
-            low = ph_hi < phi_t
-            if not low.any():
-                break
-            lab_hi = np.where(low, lab_hi + np.log(2.0), lab_hi)
-            ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
+        (lab_hi, _), _ = _ref._iterate(
+            _double_step, (lab_hi, ph_hi), (phi_t, kap, r), 60, done=~(ph_hi < phi_t)
+        )
         # bracketed Newton in ln abar on [lab_lo, lab_hi], where Phi increases
-        lo, hi = lab_lo.copy(), lab_hi.copy()
-        lab = 0.5 * (lo + hi)
-        u1 = u2 = None
-        active = np.ones(F.shape, bool)
-        for _ in range(200):
-            ph, dph, u1, u2 = _phi_at(lab, kap, r)
-            fx = ph - phi_t
-            up = fx > 0
-            hi = np.where(up, lab, hi)
-            lo = np.where(up, lo, lab)
-            with np.errstate(divide="ignore", invalid="ignore"):
-                nxt = lab - fx / (dph * np.exp(lab))
-            nxt = np.where(np.isfinite(nxt) & (nxt > lo) & (nxt < hi), nxt, 0.5 * (lo + hi))
-            done = (
-                (np.abs(fx) <= 4e-16 * np.maximum(1.0, np.abs(phi_t)))
-                | (np.abs(nxt - lab) <= 1e-15 * np.maximum(1.0, np.abs(lab)))
-                | (hi - lo <= 1e-15 * np.maximum(1.0, np.abs(hi)))
-            )
-            active &= ~done
-            if not active.any():
-                break
-            lab = np.where(active, nxt, lab)
+        lab = 0.5 * (lab_lo + lab_hi)
+        zero = 0.0 * lab
+        (lab, _, _, u1, u2), _ = _ref._iterate(
+            _load_step, (lab, lab_lo, lab_hi, zero, zero), (phi_t, kap, r), 200
+        )
         A = np.exp(lab) * np.sqrt(2 / rho)
+        if not scalar or method != "closed-form":  # the collocation works on arrays
+            A, rho, r, s, tau, u1, u2 = (np.reshape(v, -1) for v in (A, rho, r, s, tau, u1, u2))
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # see sliding_contact
         dd = _solve_flat(
             A, rho, r, s, method, n, tol, u_guess=(u1, u2) if method == "closed-form" else None
