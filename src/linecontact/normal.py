@@ -42,7 +42,7 @@ from ._validation import (
 )
 from .errors import ConvergenceError, NoEquilibriumError
 from .results import Result, as_output
-from .sie import SIZES, BoundedSolver, log_end_moments
+from .sie import SIZES, BoundedSolver, _chunks, log_end_moments
 
 __all__ = [
     "Equilibrium",
@@ -308,6 +308,31 @@ def _newton_u(solver, A, s, rho, u0, maxiter=80, tol=1e-14):
     return u, converged, last
 
 
+def _stable_at(u, kap):
+    """``dF/da > 0`` at ``u`` on the branch, over chunks of points (bounded memory)."""
+    shape = np.shape(u)
+    u = np.reshape(u, -1)
+    kap = np.broadcast_to(kap, shape).reshape(-1)
+    out = np.empty(u.size, bool)
+    for c in _chunks(u.size, 0):
+        out[c] = _ref._branch_point(u[c], kap[c])["dphi"] < 0
+    return out.reshape(shape)
+
+
+def _newton_u_chunked(n, A, s, rho, u0):
+    """:func:`_newton_u` at ``n`` nodes over the points, in chunks of bounded memory."""
+    P = u0.size
+    u, conv = np.empty(P), np.empty(P, bool)
+    last = [np.empty(P) for _ in range(4)]
+    solver = BoundedSolver(int(n))
+    for c in _chunks(P, int(n)):
+        uc, cc, lc = _newton_u(solver, A[c], s[c], rho[c], u0[c])
+        u[c], conv[c] = uc, cc
+        for o, v in zip(last, lc, strict=True):
+            o[c] = v
+    return u, conv, last
+
+
 def _collocation(A, rho, s, n, tol):
     A, rho, s = np.broadcast_arrays(A, rho, s)
     shape = A.shape
@@ -316,7 +341,7 @@ def _collocation(A, rho, s, n, tol):
     # first pass: n0 nodes (or the n asked for) locate c/a
     n0 = 16 if n == "auto" else int(n)
     u0 = np.arccosh(np.sqrt(1 + 2 / (rho * A * A)))  # rigid-cylinder estimate
-    u, conv, (Rv, res_, cons, tail) = _newton_u(BoundedSolver(n0), A, s, rho, u0)
+    u, conv, (Rv, res_, cons, tail) = _newton_u_chunked(n0, A, s, rho, u0)
     nsel = np.full(A.size, n0)
     if n == "auto":
         # the log source at x = c limits convergence to about exp(-1.5 u n): pick n for tol,
@@ -328,9 +353,7 @@ def _collocation(A, rho, s, n, tol):
         while pending.any():
             for nn in np.unique(nsel[pending]):
                 idx = np.nonzero(pending & (nsel == nn))[0]
-                ui, ci, (Ri, ri, co, ti) = _newton_u(
-                    BoundedSolver(int(nn)), A[idx], s[idx], rho[idx], u[idx]
-                )
+                ui, ci, (Ri, ri, co, ti) = _newton_u_chunked(nn, A[idx], s[idx], rho[idx], u[idx])
                 u[idx], conv[idx], Rv[idx], res_[idx], cons[idx], tail[idx] = ui, ci, Ri, ri, co, ti
             pending = pending & (tail > tol) & (nsel < sizes[-1])
             nsel = np.where(
@@ -423,7 +446,7 @@ def normal_contact(
             res, cons, err, ncol = r["res"], r["cons"], r["tail"], r["n"]
             converged = r["converged"] & np.isfinite(C)
             # residual R is scaled so that 1 <-> h; it is the separation residual over h
-            stable = _ref._branch_point(u, kap)["dphi"] < 0
+            stable = _stable_at(u, kap)
         ca = np.reshape(C / A, -1)
     if raise_on_failure and not (bool(converged) if scalar else converged.all()):
         i = np.flatnonzero(~np.asarray(converged).reshape(-1))[0]
