@@ -647,7 +647,9 @@ def _load_step(z, lo, hi, dz_prev, target, kap, lt, pmin, p0, stable):
     dn = g / dg
     zn = z - dn
     zmax = _ref._maximum(abs(z), 1.0)
-    at_noise = abs(phi - target) <= 1e-15 * (bp["abar"] ** 2 + abs(kap * bp["X"] * bp["St"]))
+    at_noise = abs(phi - target) <= 1e-15 * (
+        bp["abar"] * bp["abar"] + abs(kap * bp["X"] * bp["St"])
+    )
     conv = at_noise | (g == 0) | (abs(dn) <= 1e-15 * zmax)
     zn = _ref._where(at_noise, z, zn)
     ok = conv | ((abs(zn) < np.inf) & (zn > lo) & (zn < hi) & (abs(dn) <= 0.5 * abs(dz_prev)))

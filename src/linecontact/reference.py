@@ -441,7 +441,9 @@ def _u_guess(abar, kap):
     X_inf = 2.0 / (kap * LN2 + np.sqrt(kap * kap * LN2 * LN2 + 4))
     u_large = np.log(_maximum(2 * X_inf / abar, 1.0 + 1e-12))
     # small u: (2/3) abar^2 u^3 + kappa abar u^2 / 2 = 1  -> take the larger of the two roots
-    u_small = _minimum((1.5 / abar**2) ** (1 / 3), np.sqrt(2.0 / _maximum(kap * abar, 1e-300)))
+    u_small = _minimum(
+        (1.5 / (abar * abar)) ** (1 / 3), np.sqrt(2.0 / _maximum(kap * abar, 1e-300))
+    )
     return _minimum(_maximum(_where(u_large > 1.0, u_large, u_small), 1e-9), 700.0)
 
 

@@ -402,10 +402,12 @@ def _cf_eval(ab, kap, r, u1, u2):
     a2 = ab * ab
     E1 = (a2 * _f1(u1) + kap * ab * G1) / r - 1
     E2 = a2 * _f1(u2) + kap * ab * G2 - 1
-    J11 = (a2 * 2 * np.sinh(u1) ** 2 + kap * ab * dG1[0]) / r
+    # (sh * sh, not sh ** 2: a NumPy scalar's power is pow(), not always the product)
+    sh1, sh2 = np.sinh(u1), np.sinh(u2)
+    J11 = (a2 * 2 * (sh1 * sh1) + kap * ab * dG1[0]) / r
     J12 = kap * ab * dG1[1] / r
     J21 = kap * ab * dG2[0]
-    J22 = a2 * 2 * np.sinh(u2) ** 2 + kap * ab * dG2[1]
+    J22 = a2 * 2 * (sh2 * sh2) + kap * ab * dG2[1]
     return E1, E2, J11, J12, J21, J22
 
 
