@@ -413,10 +413,14 @@ def _cf_eval(ab, kap, r, u1, u2):
 
 def _initial_u(ab, kap, r):
     """Each edge as if the contact were symmetric with its own range (normal closed form)."""
-    u2, _, _ = _ref._u_of_abar(ab, kap)
     sr = np.sqrt(r)
-    u1, _, _ = _ref._u_of_abar(ab / sr, kap / sr)
-    return u1, u2
+    if not isinstance(ab, np.ndarray):
+        u2, _, _ = _ref._u_of_abar(ab, kap)
+        u1, _, _ = _ref._u_of_abar(ab / sr, kap / sr)
+        return u1, u2
+    # both edges as one batch (the points are independent; fewer calls on small batches)
+    u, _, _ = _ref._u_of_abar(np.concatenate([ab / sr, ab]), np.concatenate([kap / sr, kap]))
+    return u[: ab.size], u[ab.size :]
 
 
 _BIG = float(np.finfo(float).max)
@@ -442,16 +446,20 @@ def _direction(u1, u2, E1, E2, J11, J12, J21, J22, tol, umax):
     det = J11 * J22 - J12 * J21
     d1 = (-E1 * J22 + E2 * J12) / det
     d2 = (-E2 * J11 + E1 * J21) / det
-    # fall back to the diagonal (each residual is monotone in its own u) if singular
+    # fall back to the diagonal (each residual is monotone in its own u) if singular (the
+    # `if`s skip work that would change nothing: the rare cases are rare in a batch too)
     bad = ~((abs(d1) < np.inf) & (abs(d2) < np.inf))
-    d1 = _nan_to_num(where(bad, -E1 / J11, d1))
-    d2 = _nan_to_num(where(bad, -E2 / J22, d2))
+    if bad.any():
+        d1 = _nan_to_num(where(bad, -E1 / J11, d1))
+        d2 = _nan_to_num(where(bad, -E2 / J22, d2))
     lam = 1.0
     for d, u in ((d1, u1), (d2, u2)):
         neg = d < -0.75 * u
-        lam = where(neg, _ref._minimum(lam, 0.75 * u / where(neg, -d, 1.0)), lam)
+        if neg.any():
+            lam = where(neg, _ref._minimum(lam, 0.75 * u / where(neg, -d, 1.0)), lam)
         big = u + d > umax
-        lam = where(big, _ref._minimum(lam, (umax - u) / where(big, d, 1.0)), lam)
+        if big.any():
+            lam = where(big, _ref._minimum(lam, (umax - u) / where(big, d, 1.0)), lam)
     tiny = (abs(d1) <= 4e-16 * _ref._maximum(u1, 1e-3)) & (
         abs(d2) <= 4e-16 * _ref._maximum(u2, 1e-3)
     )
