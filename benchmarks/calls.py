@@ -25,30 +25,50 @@ import os
 import statistics
 import subprocess
 import sys
+import tempfile
 import timeit
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 
-def _run_python(code: str) -> str:
+def _run_python(code: str, env: dict | None = None) -> str:
     return subprocess.run(
-        [sys.executable, "-c", code], check=True, capture_output=True, text=True
+        [sys.executable, "-c", code], check=True, capture_output=True, text=True, env=env
     ).stdout
 
 
 def import_times(repeat: int) -> None:
-    """Wall clock of ``python -c 'import X'`` and in-process time of the import statement."""
+    """Wall clock of ``python -c 'import X'`` and in-process time of the import statement.
+
+    Twice: in this environment as it is, and with Python's bytecode cache in use (with
+    ``PYTHONDONTWRITEBYTECODE`` set, an editable install compiles its sources at every
+    import, which NumPy's installed, precompiled files do not).
+    """
+    cached = dict(os.environ)
+    cached.pop("PYTHONDONTWRITEBYTECODE", None)
+    cached["PYTHONPYCACHEPREFIX"] = tempfile.mkdtemp(prefix="linecontact-pycache-")
+    _run_python("import linecontact", cached)  # writes the cache
+    label = (
+        "as set up (PYTHONDONTWRITEBYTECODE is set: sources compiled at every import)"
+        if os.environ.get("PYTHONDONTWRITEBYTECODE")
+        else "as set up"
+    )
+    for title, env in ((label, None), ("with the bytecode cache", cached)):
+        _import_rows(title, env, repeat)
+
+
+def _import_rows(title: str, env: dict | None, repeat: int) -> None:
     inner = "import time; t0 = time.perf_counter(); import {mod}; print(time.perf_counter() - t0)"
     rows = {}
     for mod in ("numpy", "linecontact"):
         wall, stmt = [], []
         for _ in range(repeat):
             t0 = timeit.default_timer()
-            out = _run_python(inner.format(mod=mod))
+            out = _run_python(inner.format(mod=mod), env)
             wall.append(timeit.default_timer() - t0)
             stmt.append(float(out))
         rows[mod] = (wall, stmt)
-    print(f"import time, fresh processes, {repeat} runs (min / median):")
+    print(f"import time, fresh processes, {repeat} runs (min / median), {title}:")
     for mod, (wall, stmt) in rows.items():
         print(
             f"  {mod:<12}: process {min(wall) * 1e3:6.1f} / {statistics.median(wall) * 1e3:6.1f}"
