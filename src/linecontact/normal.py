@@ -23,6 +23,7 @@ constant, so no approach is reported: the load is controlled by ``F`` or by ``a`
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 
 import numpy as np
@@ -171,7 +172,7 @@ def _closed_form_from_u(u, kap, rho, ustar):
     return A, C, F, stable
 
 
-def _ustar(kap: NDArray) -> NDArray:
+def _ustar(kap: NDArray | np.float64) -> NDArray | np.float64:
     """U of the load minimum (inf where the minimum sits at vanishing width, kappa = 0).
 
     Arrays or NumPy scalars (the scalar fast path, see :func:`linecontact.reference._where`).
@@ -428,6 +429,9 @@ def normal_contact(
     # on the way; the residual and finiteness checks below turn that into non-convergence
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         if method == "closed-form":
+            ncol: NDArray | int
+            cons: NDArray | float
+            err: NDArray | float
             if scalar:  # the same kernels on NumPy scalars (see reference._where)
                 u, C, F, res, stable = _closed_form(*_ref._scalars(A, rho, s))
                 ncol, cons, err = 0, 0.0, 0.0
@@ -536,7 +540,7 @@ def _pulloff_flat(rho: NDArray, s: NDArray):
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     F0 = _ref._zero_width(rho, s)
     us = _ustar(kap)
-    fin = abs(us) < np.inf
+    fin = np.isfinite(us)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
         uf = where(fin, us, 1.0)  # kappa = 0: no interior minimum (any finite u will do)
         bp = _ref._branch_point(uf, kap)
@@ -679,7 +683,7 @@ def _solve_u_for_phi(target, kap, pmin, p0, us, stable: bool):
             lt = np.log(_ref._maximum(p0 - target, 0.0))
             z0 = _ref._minimum(lo + 1.0, 0.5 * (lo + hi))
         (z, _, _, _), _ = _ref._iterate(
-            lambda *a: _load_step(*a, stable),
+            functools.partial(_load_step, stable=stable),
             (z0, lo, hi, hi - lo),
             (target, kap, lt, pmin, p0),
             200,
@@ -765,14 +769,14 @@ def contact_for_load(
             f"{float(s.reshape(-1)[i])!r}: the closest contact carries F_over_Eh="
             f"{float(np.reshape(Fc, -1)[i])!r} (the load is outside the range of the solver)"
         )
-    z = 0.0 if scalar else np.zeros(F.shape)
+    z: NDArray | float = 0.0 if scalar else np.zeros(F.shape)
     vals = dict(
         a_over_R=A,
         c_over_R=C,
         F_over_Eh=Fc,
         R_over_h=rho,
         sigma0_over_E=s,
-        n_collocation=0 if scalar else z.astype(int),
+        n_collocation=0 if scalar else np.zeros(F.shape, dtype=int),
         residual_separation=z,
         residual_consistency=z,
         error_estimate=res,

@@ -524,7 +524,7 @@ def _stationary_step(w, lo, hi, lk):
     return (w_new, lo, hi), stop
 
 
-def _u_stationary(kap: NDArray) -> NDArray:
+def _u_stationary(kap: NDArray | np.float64) -> NDArray | np.float64:
     """The u of the single load minimum for group kappa > 0.
 
     ``kappa_s(u)`` (:func:`_kappa_stationary`) decreases from infinity (as
@@ -533,10 +533,8 @@ def _u_stationary(kap: NDArray) -> NDArray:
     falls back on bisection whenever a step would leave the bracket. Arrays or scalars.
     """
     scalar = _is_scalar(kap)
-    kap = np.float64(kap) if scalar else np.asarray(kap, dtype=float)
     shape = np.shape(kap)
-    if not scalar:
-        kap = kap.reshape(-1)
+    kap = np.float64(kap) if scalar else np.asarray(kap, dtype=float).reshape(-1)
     with np.errstate(over="ignore", divide="ignore", invalid="ignore", under="ignore"):
         u_small = (2 * np.sqrt(2.0) / kap) ** (2 / 3)
         u_large = np.sqrt(4 / (kap * kap) + LN2 * LN2)

@@ -186,7 +186,7 @@ def _solve_points(
         # Newton on d with the closed-form slope; a point whose force is met leaves the
         # iteration (only the others are solved again)
         act = np.arange(idx.size)
-        r: dict[str, NDArray] = {}
+        r = {}
         for _ in range(12):
             ra = _adaptive(kernel, d[act], rate(d[act]), n, tol)
             for key, v in ra.items():
