@@ -356,3 +356,25 @@ def test_import_does_not_import_scipy():
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
     assert out.stdout.strip() == "[]"
+
+
+def test_inputs_are_not_modified():
+    """Valid float arrays are used as given (no copy): no solver may write into them."""
+    A, rho, s = _sample(20, np.random.default_rng(12))
+    ratio = np.linspace(0.5, 3.0, 20)
+    keep = [v.copy() for v in (A, rho, s, ratio)]
+    lc.normal_contact(A, rho, s)
+    lc.normal_contact(A, rho, s, method="collocation")
+    po = lc.pull_off(rho, s)
+    F = po.F_pulloff_over_Eh + 1.0
+    keepF = F.copy()
+    lc.contact_for_load(F, rho, s)
+    lc.sliding_contact(A, rho, ratio, s)
+    lc.sliding_contact(A, rho, ratio, s, method="closed-form")
+    lc.sliding_pull_off(rho[:3], ratio[:3], s[:3])
+    d = np.linspace(0.1, 0.9, 20)
+    keepd = d.copy()
+    lc.sliding_initiation(s, d, method="collocation")
+    lc.steady_rolling(s, d, method="collocation")
+    for v, k in zip((A, rho, s, ratio, F, d), (*keep, keepF, keepd), strict=True):
+        assert_array_equal(v, k)
