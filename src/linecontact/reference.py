@@ -211,7 +211,8 @@ def _zero_width(rho: NDArray, s: NDArray) -> NDArray:
 # arithmetic operation costs ~60 ns and an elementary function ~0.2 us instead of ~0.5 us on
 # a 0-d array, and ``np.where`` (~2.5 us on 0-d arrays) is replaced by a plain conditional
 # (:func:`_where`). NumPy's scalar functions use the same inner loops as its array functions,
-# so a point gives the same bits alone and in a batch.
+# so a point gives the same bits alone and in a batch -- except ``x ** 2``, which is pow() for
+# a scalar but a product for an array: the kernels square by multiplying.
 
 
 def _where(cond, a, b):
@@ -315,7 +316,8 @@ def _iterate(step, state: tuple, params: tuple, maxiter: int, done=None):
 
 #: f1(u) = sinh u cosh u - u = u^3 sum_{k>=1} c_k (u^2)^(k-1), c_k = 4^k/(2k+1)!, used below
 #: u = 1 (where the closed form cancels); twelve terms leave a truncation of ~1e-20 relative.
-_F1_SERIES = tuple(4.0**k / math.factorial(2 * k + 1) for k in range(12, 0, -1))
+#: (int / int is correctly rounded in Python: each c_k is the double nearest to it.)
+_F1_SERIES = tuple(4**k / math.factorial(2 * k + 1) for k in range(12, 0, -1))
 
 
 def _f1_series(u):
