@@ -188,7 +188,10 @@ def _ustar(kap: NDArray | np.float64) -> NDArray | np.float64:
 
 
 def _closed_form(A, rho, s):
-    """u, c/R, F/(Eh), separation residual, stability: flat arrays or NumPy scalars."""
+    """u, c/R, F/(Eh), separation residual, stability: flat arrays or NumPy scalars.
+
+    Called inside the ``np.errstate`` of :func:`normal_contact` (see ``_ref._solve_abar``).
+    """
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     abar = A * np.sqrt(rho / 2)
     u, res, _, bp = _ref._solve_abar(abar, kap)
@@ -427,7 +430,7 @@ def normal_contact(
     _ref._check_kappa(rho, s)
     # a contact half-width far outside the solvers' range (a/R ~ 1e-200 or 1e20) overflows
     # on the way; the residual and finiteness checks below turn that into non-convergence
-    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
         if method == "closed-form":
             ncol: NDArray | int
             cons: NDArray | float
@@ -442,7 +445,7 @@ def normal_contact(
                 ncol = np.zeros(shape, dtype=int)
                 cons = np.zeros(shape)
                 err = np.zeros(shape)
-            converged = (res < 1e-12) & np.isfinite(C) & np.isfinite(F)
+            converged = (res < 1e-12) & (abs(C) < np.inf) & (abs(F) < np.inf)  # isfinite
         else:
             kap = (4 / np.pi) * s * np.sqrt(2 * rho)
             r = _collocation(A, rho, s, n, tol)

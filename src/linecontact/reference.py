@@ -450,20 +450,22 @@ def _u_guess(abar, kap):
 
 
 def _solve_abar(abar, kap, *, maxiter: int = 60):
-    """u, separation residual, iterations and the branch point at u (flat arrays or scalars)."""
-    with np.errstate(over="ignore", divide="ignore", invalid="ignore", under="ignore"):
-        target = np.log(abar)
-        w0 = np.log(_u_guess(abar, kap))
-        lo, hi = _full(w0, _W_LO), _full(w0, _W_HI)
-        (w, _, _, _), it = _iterate(
-            _abar_step, (w0, lo, hi, _full(w0, 0.0)), (target, kap), maxiter
-        )
-        u = np.exp(w)
-        bp = _branch_point(u, kap)
-        # separation residual (gap(c) - gap(a))/h - 1 = abar^2 f1 + kappa abar f2 - 1 at the
-        # given abar, in the scaled form (Y = abar e^u / 2)
-        Y = abar * np.exp(_minimum(u, 700.0)) / 2
-        res = np.abs(Y * Y * bp["F1"] + kap * Y * bp["F2"] - 1)
+    """u, separation residual, iterations and the branch point at u (flat arrays or scalars).
+
+    The caller silences the floating-point warnings of the extreme widths (``np.errstate``
+    over, divide and invalid; :func:`_u_of_abar` does), as ``normal_contact`` does once for
+    all its work (an ``errstate`` costs ~1.5 us, a fair part of a scalar call).
+    """
+    target = np.log(abar)
+    w0 = np.log(_u_guess(abar, kap))
+    lo, hi = _full(w0, _W_LO), _full(w0, _W_HI)
+    (w, _, _, _), it = _iterate(_abar_step, (w0, lo, hi, _full(w0, 0.0)), (target, kap), maxiter)
+    u = np.exp(w)
+    bp = _branch_point(u, kap)
+    # separation residual (gap(c) - gap(a))/h - 1 = abar^2 f1 + kappa abar f2 - 1 at the
+    # given abar, in the scaled form (Y = abar e^u / 2)
+    Y = abar * np.exp(_minimum(u, 700.0)) / 2
+    res = abs(Y * Y * bp["F1"] + kap * Y * bp["F2"] - 1)
     return u, res, it, bp
 
 
@@ -475,12 +477,13 @@ def _u_of_abar(
     Returns (u, separation residual (gap at c minus h, over h), iterations used). Arrays of
     any shape (broadcast together) or scalars; each point stops as soon as it has converged.
     """
-    if _is_scalar(abar, kap):
-        u, res, it, _ = _solve_abar(*_scalars(abar, kap), maxiter=maxiter)
-        return u, res, it
-    abar, kap = np.broadcast_arrays(np.asarray(abar, float), np.asarray(kap, float))
-    shape = abar.shape
-    u, res, it, _ = _solve_abar(abar.reshape(-1), kap.reshape(-1), maxiter=maxiter)
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+        if _is_scalar(abar, kap):
+            u, res, it, _ = _solve_abar(*_scalars(abar, kap), maxiter=maxiter)
+            return u, res, it
+        abar, kap = np.broadcast_arrays(np.asarray(abar, float), np.asarray(kap, float))
+        shape = abar.shape
+        u, res, it, _ = _solve_abar(abar.reshape(-1), kap.reshape(-1), maxiter=maxiter)
     return u.reshape(shape), res.reshape(shape), it.reshape(shape)
 
 
