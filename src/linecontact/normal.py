@@ -454,10 +454,11 @@ def normal_contact(
             converged = r["converged"] & np.isfinite(C)
             # residual R is scaled so that 1 <-> h; it is the separation residual over h
             stable = _stable_at(u, kap)
-        ca = np.reshape(C / A, -1)
     if raise_on_failure and not (bool(converged) if scalar else converged.all()):
         i = np.flatnonzero(~np.asarray(converged).reshape(-1))[0]
         nn = int(np.reshape(ncol, -1)[i])
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            ca = np.reshape(C / A, -1)
         if not (np.isfinite(ca[i]) and ca[i] >= 1):
             hint = "the contact half-width is outside the solver's range"
         elif n == "auto":
@@ -484,7 +485,12 @@ def normal_contact(
         converged=converged,
         stable=stable,
     )
-    vals = {k: as_output(v if scalar else np.asarray(v), scalar) for k, v in vals.items()}
+    if scalar:  # as_output(v, True), inline: this is a fair part of a scalar call
+        vals = {
+            k: v.item() if isinstance(v, np.generic | np.ndarray) else v for k, v in vals.items()
+        }
+    else:
+        vals = {k: as_output(np.asarray(v), scalar) for k, v in vals.items()}
     return NormalContact(method=method, **vals)
 
 
