@@ -84,12 +84,16 @@ def _import_rows(title: str, env: dict | None, repeat: int) -> None:
 
 
 def time_call(fn, repeat: int) -> float:
-    """Minimum time of one call of ``fn`` in seconds (loops sized to ~0.05 s per repeat)."""
+    """Minimum time of one call of ``fn`` in seconds.
+
+    Loops of ~10 ms, ``3 * repeat`` of them: on a shared machine short loops, many of them,
+    catch the quiet moments that the minimum reports.
+    """
     fn()  # warm caches (collocation operators, lazy imports)
     timer = timeit.Timer(fn)
-    number, _ = timer.autorange()
-    number = max(1, number // 4)
-    return min(timer.repeat(repeat=repeat, number=number)) / number
+    number, _ = timer.autorange()  # number of calls that take >= 0.2 s
+    number = max(1, number // 20)
+    return min(timer.repeat(repeat=3 * repeat, number=number)) / number
 
 
 def scalar_calls(repeat: int) -> None:
@@ -119,7 +123,7 @@ def scalar_calls(repeat: int) -> None:
         ("sliding_initiation(0.01, 0.5)", lambda: lc.sliding_initiation(0.01, 0.5), None),
         ("steady_rolling(0.01, 0.0)", lambda: lc.steady_rolling(0.01, 0.0), None),
     ]
-    print(f"scalar calls, minimum over {repeat} repeats:")
+    print(f"scalar calls, minimum over {3 * repeat} loops of ~10 ms:")
     for label, fn, target in calls:
         t = time_call(fn, repeat)
         tgt = f"  (target < {target} us)" if target else ""
