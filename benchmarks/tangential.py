@@ -26,7 +26,7 @@ from linecontact import (
     steady_rolling,
     steady_rolling_coulomb,
 )
-from linecontact import tangential as tg
+from linecontact.tangential import rolling as _rolling
 
 
 def rel(a, b):
@@ -120,7 +120,7 @@ def convergence():
     for n in (16, 64, 256, 1024, 4096):
         ci = sliding_initiation(1.0, 0.999, method="collocation", n=n, raise_on_failure=False)
         cr = steady_rolling(1.0, -0.999, method="collocation", n=n, raise_on_failure=False)
-        lin = -2 * tg._roll_solve(np.array([0.0]), n, "linear").extra[0]
+        lin = -2 * _rolling._roll_solve(np.array([0.0]), n, "linear").extra[0]
         print(
             f"  {n:>7}   {rel(ci.T_over_Ea, f_i):.1e}      {rel(cr.creep_over_V, f_r):.1e}"
             f"    {rel(lin, f_0):.1e}"

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
@@ -17,13 +19,17 @@ def _real_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
     ``np.asarray(value, dtype=float)`` alone would read ``True`` as 1, ``"0.5"`` as 0.5,
     ``None`` as nan and drop the imaginary part of a complex number.
     """
-    bad = f"{name} must be a real number or an array of them, got {value!r}"
+    # the common cases first, at no cost: a Python float, an array of floats
+    if value.__class__ is float:
+        return np.asarray(value)
+    if value.__class__ is np.ndarray and value.dtype == np.float64:
+        return value
     if value is None or isinstance(value, (bool, np.bool_, str, bytes)):
-        raise ValueError(bad)
+        raise ValueError(_not_real(name, value))
     try:
         raw = np.asarray(value)
     except (TypeError, ValueError):  # ragged nested sequences
-        raise ValueError(bad) from None
+        raise ValueError(_not_real(name, value)) from None
     if raw.dtype.kind not in "iuf":
         # object arrays of plain numbers (e.g. [1, 2.5] of mixed Python types) are fine
         if raw.dtype.kind != "O" or not all(
@@ -31,8 +37,40 @@ def _real_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
             and not isinstance(v, (bool, np.bool_))
             for v in raw.flat
         ):
-            raise ValueError(bad)
+            raise ValueError(_not_real(name, value))
     return np.asarray(raw, dtype=float)
+
+
+def _not_real(name: str, value: object) -> str:
+    """The message for a value that is not real (built only when it is raised)."""
+    return f"{name} must be a real number or an array of them, got {value!r}"
+
+
+def _in_range(
+    arr: NDArray,
+    low: float,
+    low_inclusive: bool,
+    high: float,
+    high_inclusive: bool,
+    allow_inf: bool,
+) -> bool:
+    """True when ``arr`` is non-empty and certainly passes every check of :func:`check_array`.
+
+    The smallest and the largest value decide (nan propagates through both and fails every
+    comparison); a scalar is read as a Python float. False sends the caller to the detailed
+    checks, which name the first offending value.
+    """
+    if arr.ndim == 0:
+        lo = hi = float(arr)
+    elif arr.size:
+        lo, hi = float(arr.min()), float(arr.max())
+    else:
+        return False
+    return (
+        (lo >= low if low_inclusive else lo > low)
+        and (hi <= high if high_inclusive else hi < high)
+        and (allow_inf or (math.isfinite(lo) and math.isfinite(hi)))
+    )
 
 
 def check_array(
@@ -53,6 +91,9 @@ def check_array(
         Naming ``name``, the valid range and the first offending value.
     """
     arr = _real_array(name, value)
+    if _in_range(arr, low, low_inclusive, high, high_inclusive, allow_inf):
+        return arr
+    # something is wrong (or the array is empty): find what, and say it
     lo_br = "[" if low_inclusive else "("
     hi_br = "]" if high_inclusive else ")"
     hi_txt = "inf" if np.isinf(high) else f"{high:g}"
@@ -132,6 +173,9 @@ def broadcast(**named: NDArray) -> list[NDArray]:
     not say which parameters disagree.
     """
     arrays = [np.asarray(v) for v in named.values()]
+    shape = arrays[0].shape
+    if all(a.shape == shape for a in arrays):  # nothing to broadcast (scalar calls)
+        return arrays
     try:
         return list(np.broadcast_arrays(*arrays))
     except ValueError:

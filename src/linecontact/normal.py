@@ -23,6 +23,7 @@ constant, so no approach is reported: the load is controlled by ``F`` or by ``a`
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass, field
 from typing import ClassVar
 
@@ -43,7 +44,7 @@ from ._validation import (
 )
 from .errors import ConvergenceError, NoEquilibriumError
 from .results import Result, as_output
-from .sie import SIZES, BoundedSolver, log_end_moments
+from .sie import SIZES, BoundedSolver, _chunks, log_end_moments
 
 __all__ = [
     "Equilibrium",
@@ -181,8 +182,13 @@ def _closed_form_from_u(u, kap, rho, ustar):
     return A, C, F, stable
 
 
-def _ustar(kap: NDArray) -> NDArray:
-    """U of the load minimum (inf where the minimum sits at vanishing width, kappa = 0)."""
+def _ustar(kap: NDArray | np.float64) -> NDArray | np.float64:
+    """U of the load minimum (inf where the minimum sits at vanishing width, kappa = 0).
+
+    Arrays or NumPy scalars (the scalar fast path, see :func:`linecontact.reference._where`).
+    """
+    if np.ndim(kap) == 0:
+        return _ref._u_stationary(kap) if kap > 0 else np.float64(np.inf)
     kap = np.asarray(kap, dtype=float)
     us = np.full(kap.shape, np.inf)
     pos = kap > 0
@@ -192,10 +198,13 @@ def _ustar(kap: NDArray) -> NDArray:
 
 
 def _closed_form(A, rho, s):
+    """u, c/R, F/(Eh), separation residual, stability: flat arrays or NumPy scalars.
+
+    Called inside the ``np.errstate`` of :func:`normal_contact` (see ``_ref._solve_abar``).
+    """
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     abar = A * np.sqrt(rho / 2)
-    u, res, it = _ref._u_of_abar(abar, kap)
-    bp = _ref._branch_point(u, kap)
+    u, res, _, bp = _ref._solve_abar(abar, kap)
     C = bp["X"] * bp["Ct"] * np.sqrt(2 / rho)
     F = (np.pi / 2) * bp["phi"]
     return u, C, F, res, bp["dphi"] < 0
@@ -313,6 +322,31 @@ def _newton_u(solver, A, s, rho, u0, maxiter=80, tol=1e-14):
     return u, converged, last
 
 
+def _stable_at(u, kap):
+    """``dF/da > 0`` at ``u`` on the branch, over chunks of points (bounded memory)."""
+    shape = np.shape(u)
+    u = np.reshape(u, -1)
+    kap = np.broadcast_to(kap, shape).reshape(-1)
+    out = np.empty(u.size, bool)
+    for c in _chunks(u.size, 0):
+        out[c] = _ref._branch_point(u[c], kap[c])["dphi"] < 0
+    return out.reshape(shape)
+
+
+def _newton_u_chunked(n, A, s, rho, u0):
+    """:func:`_newton_u` at ``n`` nodes over the points, in chunks of bounded memory."""
+    P = u0.size
+    u, conv = np.empty(P), np.empty(P, bool)
+    last = [np.empty(P) for _ in range(4)]
+    solver = BoundedSolver(int(n))
+    for c in _chunks(P, int(n)):
+        uc, cc, lc = _newton_u(solver, A[c], s[c], rho[c], u0[c])
+        u[c], conv[c] = uc, cc
+        for o, v in zip(last, lc, strict=True):
+            o[c] = v
+    return u, conv, last
+
+
 def _collocation(A, rho, s, n, tol):
     A, rho, s = np.broadcast_arrays(A, rho, s)
     shape = A.shape
@@ -321,7 +355,7 @@ def _collocation(A, rho, s, n, tol):
     # first pass: n0 nodes (or the n asked for) locate c/a
     n0 = 16 if n == "auto" else int(n)
     u0 = np.arccosh(np.sqrt(1 + 2 / (rho * A * A)))  # rigid-cylinder estimate
-    u, conv, (Rv, res_, cons, tail) = _newton_u(BoundedSolver(n0), A, s, rho, u0)
+    u, conv, (Rv, res_, cons, tail) = _newton_u_chunked(n0, A, s, rho, u0)
     nsel = np.full(A.size, n0)
     if n == "auto":
         # the log source at x = c limits convergence to about exp(-1.5 u n): pick n for tol,
@@ -333,9 +367,7 @@ def _collocation(A, rho, s, n, tol):
         while pending.any():
             for nn in np.unique(nsel[pending]):
                 idx = np.nonzero(pending & (nsel == nn))[0]
-                ui, ci, (Ri, ri, co, ti) = _newton_u(
-                    BoundedSolver(int(nn)), A[idx], s[idx], rho[idx], u[idx]
-                )
+                ui, ci, (Ri, ri, co, ti) = _newton_u_chunked(nn, A[idx], s[idx], rho[idx], u[idx])
                 u[idx], conv[idx], Rv[idx], res_[idx], cons[idx], tail[idx] = ui, ci, Ri, ri, co, ti
             pending = pending & (tail > tol) & (nsel < sizes[-1])
             nsel = np.where(
@@ -407,27 +439,37 @@ def normal_contact(
     A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
     _ref._check_kappa(rho, s)
     _ref._warn_wide(A)
-    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     # a contact half-width far outside the solvers' range (a/R ~ 1e-200 or 1e20) overflows
     # on the way; the residual and finiteness checks below turn that into non-convergence
-    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
         if method == "closed-form":
-            u, C, F, res, stable = _closed_form(A, rho, s)
-            ncol = np.zeros(A.shape, dtype=int)
-            cons = np.zeros(A.shape)
-            err = np.zeros(A.shape)
-            converged = (res < 1e-12) & np.isfinite(C) & np.isfinite(F)
+            ncol: NDArray | int
+            cons: NDArray | float
+            err: NDArray | float
+            if scalar:  # the same kernels on NumPy scalars (see reference._where)
+                u, C, F, res, stable = _closed_form(*_ref._scalars(A, rho, s))
+                ncol, cons, err = 0, 0.0, 0.0
+            else:
+                shape = A.shape
+                flat = (np.reshape(v, -1) for v in (A, rho, s))
+                u, C, F, res, stable = (v.reshape(shape) for v in _closed_form(*flat))
+                ncol = np.zeros(shape, dtype=int)
+                cons = np.zeros(shape)
+                err = np.zeros(shape)
+            converged = (res < 1e-12) & (abs(C) < np.inf) & (abs(F) < np.inf)  # isfinite
         else:
+            kap = (4 / np.pi) * s * np.sqrt(2 * rho)
             r = _collocation(A, rho, s, n, tol)
             u, C, F = r["u"], r["C"], r["F"]
             res, cons, err, ncol = r["res"], r["cons"], r["tail"], r["n"]
             converged = r["converged"] & np.isfinite(C)
             # residual R is scaled so that 1 <-> h; it is the separation residual over h
-            stable = _ref._branch_point(u, kap)["dphi"] < 0
-        ca = np.reshape(C / A, -1)
-    if raise_on_failure and not np.all(converged):
+            stable = _stable_at(u, kap)
+    if raise_on_failure and not (bool(converged) if scalar else converged.all()):
         i = np.flatnonzero(~np.asarray(converged).reshape(-1))[0]
         nn = int(np.reshape(ncol, -1)[i])
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            ca = np.reshape(C / A, -1)
         if not (np.isfinite(ca[i]) and ca[i] >= 1):
             hint = "the contact half-width is outside the solver's range"
         elif n == "auto":
@@ -455,7 +497,12 @@ def normal_contact(
         stable=stable,
         state=np.full(A.shape, "contact"),
     )
-    vals = {k: as_output(np.asarray(v), scalar) for k, v in vals.items()}
+    if scalar:  # as_output(v, True), inline: this is a fair part of a scalar call
+        vals = {
+            k: v.item() if isinstance(v, np.generic | np.ndarray) else v for k, v in vals.items()
+        }
+    else:
+        vals = {k: as_output(np.asarray(v), scalar) for k, v in vals.items()}
     return NormalContact(method=method, **vals)
 
 
@@ -503,44 +550,50 @@ class PullOff(Result):
     maugis_parameter: NDArray | float
 
 
-def _pulloff_arrays(rho: NDArray, s: NDArray):
+def _pulloff_arrays(rho: NDArray, s: NDArray, scalar: bool = False):
+    """:func:`_pulloff_flat` at arrays of any shape, or at NumPy scalars (``scalar``)."""
+    if scalar:
+        return _pulloff_flat(*_ref._scalars(rho, s))
     shape = np.shape(rho)
-    rho = np.atleast_1d(rho).astype(float)
-    s = np.atleast_1d(s).astype(float)
+    rho = np.atleast_1d(rho).astype(float).reshape(-1)
+    s = np.atleast_1d(s).astype(float).reshape(-1)
     d = _pulloff_flat(rho, s)
-    return {k: v.reshape(shape) for k, v in d.items()}
+    return {k: np.reshape(v, shape) for k, v in d.items()}
 
 
 def _pulloff_flat(rho: NDArray, s: NDArray):
+    """Pull-off at flat arrays or NumPy scalars (elementwise; see reference._where)."""
+    where = _ref._where
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     F0 = _ref._zero_width(rho, s)
     us = _ustar(kap)
     fin = np.isfinite(us)
-    A_min = np.zeros(kap.shape)
-    C_min = np.zeros(kap.shape)
-    F_min = F0.copy()
-    if fin.any():
-        A_, C_, F_, _ = _closed_form_from_u(us[fin], kap[fin], rho[fin], us[fin])
-        A_min[fin], C_min[fin], F_min[fin] = A_, C_, np.minimum(F_, F0[fin])
-    zero_c = np.sqrt(2 / rho) * 2 / (kap * _ref.LN2 + np.sqrt(kap * kap * _ref.LN2**2 + 4))
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
+        uf = where(fin, us, 1.0)  # kappa = 0: no interior minimum (any finite u will do)
+        bp = _ref._branch_point(uf, kap)
+        sq = np.sqrt(2 / rho)
+        A_min = where(fin, bp["abar"] * sq, 0.0)
+        C_min = where(fin, bp["X"] * bp["Ct"] * sq, 0.0)
+        F_min = where(fin, _ref._minimum((np.pi / 2) * bp["phi"], F0), F0)
+        # the load minimum along the branch in units of Phi = (2/pi) F/(Eh) (contact_for_load)
+        phi_min = where(fin, _ref._minimum(bp["phi"], F0 * (2 / np.pi)), F0 * (2 / np.pi))
+    zero_c = sq * 2 / (kap * _ref.LN2 + np.sqrt(kap * kap * _ref.LN2**2 + 4))
     # the pull-off force is the minimum of the load; the label says whether the contact lets
     # go from a width the continuum model resolves (at least the range h) or peels below it
-    A_min = np.where(F_min < F0, A_min, 0.0)
-    snap = (A_min >= SNAP_OFF_MIN_WIDTH_OVER_H / rho) & (F_min < F0)
-    F_po = F_min
-    A_po = A_min
-    C_po = np.where(A_min > 0, C_min, zero_c)
-    mech = np.where(snap, "snap-off", "zero-width")
+    interior = F_min < F0
+    A_min = where(interior, A_min, 0.0)
+    snap = interior & (A_min >= SNAP_OFF_MIN_WIDTH_OVER_H / rho)
     return dict(
-        F_pulloff_over_Eh=F_po,
-        a_over_R_at_pulloff=A_po,
-        c_over_R_at_pulloff=C_po,
-        mechanism=mech,
+        F_pulloff_over_Eh=F_min,
+        a_over_R_at_pulloff=A_min,
+        c_over_R_at_pulloff=where(A_min > 0, C_min, zero_c),
+        mechanism=where(snap, "snap-off", "zero-width"),
         F_zero_width_over_Eh=F0,
         F_minimum_over_Eh=F_min,
         a_over_R_at_minimum=A_min,
         kappa=kap,
         us=us,
+        phi_min=phi_min,
     )
 
 
@@ -584,10 +637,10 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     scalar = scalar_or_array(rho, s)
     rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     _ref._check_kappa(rho, s)
-    d = _pulloff_arrays(rho.astype(float), s.astype(float))
-    d.pop("us")
+    d = _pulloff_arrays(rho, s, scalar)
+    del d["us"], d["phi_min"]
     lam = 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
-    vals = {k: as_output(np.asarray(v), scalar) for k, v in d.items()}
+    vals = {k: as_output(v if scalar else np.asarray(v), scalar) for k, v in d.items()}
     return PullOff(
         R_over_h=as_output(rho, scalar),
         sigma0_over_E=as_output(s, scalar),
@@ -596,21 +649,82 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     )
 
 
-def _solve_u_for_phi(target, kap, lo_w, hi_w, increasing):
-    """Bisection in w = ln u for Phi(u) = target on a monotone piece [e^lo_w, e^hi_w]."""
-    lo = lo_w.copy()
-    hi = hi_w.copy()
-    for _ in range(120):
-        mid = 0.5 * (lo + hi)
-        ph = _ref._branch_point(np.exp(mid), kap)["phi"]
-        above = ph > target
-        if increasing:
-            hi = np.where(above, mid, hi)
-            lo = np.where(above, lo, mid)
+def _z_of_u(u):
+    """The variable of the load iteration: ``u`` from ``u = 1`` on, ``1 + ln u`` below.
+
+    The load is nearly linear in ``ln u`` near full contact (``Phi ~ u^-3``) and its distance
+    from its limit nearly exponential in ``u`` towards zero width (``~ e^{-2u}``): in ``z``
+    and on the logarithms of :func:`_load_step` Newton's method sees nearly straight lines.
+    """
+    return _ref._where(u >= 1.0, u, 1.0 + np.log(u))
+
+
+def _u_of_z(z):
+    return _ref._where(z >= 1.0, z, np.exp(z - 1.0))
+
+
+def _load_step(z, lo, hi, dz_prev, target, kap, lt, pmin, p0, stable):
+    """One safeguarded Newton step of the load equation on one branch, in ``z``.
+
+    Stable branch (the load falls from infinity to its minimum ``pmin`` as ``u`` grows):
+    ``g = ln(Phi - pmin) - lt``; unstable branch (the load rises from ``pmin`` to the
+    zero-width load ``p0``): ``g = ln(p0 - Phi) - lt``; ``g`` decreases in ``z`` either way
+    (nan, from rounding at a bracket end, counts as negative: the root lies before ``z``).
+    The step is Newton's unless it leaves the bracket or does not halve the previous one
+    (then bisection). Converged when ``Phi - target`` is at the rounding level of the load's
+    two terms, or the Newton step at the rounding level of ``z``.
+    """
+    u = _u_of_z(z)
+    bp = _ref._branch_point(u, kap)
+    phi = bp["phi"]
+    dphi = bp["dphi"] * _ref._where(z >= 1.0, 1.0, u)  # dPhi/dz
+    d = phi - pmin if stable else p0 - phi
+    g = np.log(d) - lt
+    dg = (dphi if stable else -dphi) / d
+    up = g > 0
+    lo = _ref._where(up, z, lo)
+    hi = _ref._where(up, hi, z)
+    dn = g / dg
+    zn = z - dn
+    zmax = _ref._maximum(abs(z), 1.0)
+    at_noise = abs(phi - target) <= 1e-15 * (
+        bp["abar"] * bp["abar"] + abs(kap * bp["X"] * bp["St"])
+    )
+    conv = at_noise | (g == 0) | (abs(dn) <= 1e-15 * zmax)
+    zn = _ref._where(at_noise, z, zn)
+    ok = conv | ((abs(zn) < np.inf) & (zn > lo) & (zn < hi) & (abs(dn) <= 0.5 * abs(dz_prev)))
+    zn = _ref._where(ok, zn, 0.5 * (lo + hi))
+    stop = conv | (hi - lo <= 1e-15 * zmax)
+    return (zn, lo, hi, zn - z), stop
+
+
+def _solve_u_for_phi(target, kap, pmin, p0, us, stable: bool):
+    """The u on one monotone piece of the branch where Phi(u) = target (flat or scalars).
+
+    Stable: ``u`` in ``[1e-12, us]`` (``745`` for ``kappa = 0``), unstable: ``[us, 745]``.
+    """
+    where = _ref._where
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
+        fin = abs(us) < np.inf
+        if stable:
+            lo = _ref._full(target, _z_of_u(1e-12))
+            hi = _z_of_u(where(fin, us, 745.0))
+            lt = np.log(_ref._maximum(target - pmin, 0.0))
+            # start from the Hertz-like width of the load (at the pull-off load: its end)
+            z0 = _z_of_u(_ref._u_guess(np.sqrt(_ref._maximum(target, 0.0) + 1.0), kap))
+            z0 = where(target <= pmin, hi, _ref._minimum(_ref._maximum(z0, lo), hi))
         else:
-            lo = np.where(above, mid, lo)
-            hi = np.where(above, hi, mid)
-    return np.exp(0.5 * (lo + hi))
+            lo = _z_of_u(us)
+            hi = _ref._full(target, 745.0)
+            lt = np.log(_ref._maximum(p0 - target, 0.0))
+            z0 = _ref._minimum(lo + 1.0, 0.5 * (lo + hi))
+        (z, _, _, _), _ = _ref._iterate(
+            functools.partial(_load_step, stable=stable),
+            (z0, lo, hi, hi - lo),
+            (target, kap, lt, pmin, p0),
+            200,
+        )
+        return _u_of_z(z)
 
 
 def contact_for_load(
@@ -663,50 +777,61 @@ def contact_for_load(
         np.asarray(v, float) for v in broadcast(F_over_Eh=F, R_over_h=rho, sigma0_over_E=s)
     )
     _ref._check_kappa(rho, s)
-    d = _pulloff_arrays(rho, s)
+    d = _pulloff_arrays(rho, s, scalar)
     Fmin, F0, us, kap = d["F_minimum_over_Eh"], d["F_zero_width_over_Eh"], d["us"], d["kappa"]
     F_asked = F
     if branch == "stable":
         bad = F < Fmin
-        if bad.any() and not report:
-            i = np.flatnonzero(bad.reshape(-1))[0]
+        if np.any(bad) and not report:
+            i = np.flatnonzero(np.reshape(bad, -1))[0]
             raise NoEquilibriumError(
                 f"no contact carries F_over_Eh={float(F.reshape(-1)[i])!r}: it is below the "
                 f"pull-off force, the minimum load on the contact branch F_minimum_over_Eh="
-                f"{float(Fmin.reshape(-1)[i])!r} (R_over_h={float(rho.reshape(-1)[i])!r}, "
+                f"{float(np.reshape(Fmin, -1)[i])!r} (R_over_h={float(rho.reshape(-1)[i])!r}, "
                 f"sigma0_over_E={float(s.reshape(-1)[i])!r}); the cylinder has pulled off"
             )
-        F = np.where(bad, Fmin, F)  # a load that exists stands in for the ones reported
-        hi = np.log(np.where(np.isfinite(us), us, 745.0))
-        lo = np.full(F.shape, np.log(1e-12))
-        u = _solve_u_for_phi(F * (2 / np.pi), kap, lo, hi, increasing=False)
+        # a load that exists stands in for the ones reported (their values are NaN below)
+        F = np.where(bad, Fmin, F)
     else:
         bad = ~((F > Fmin) & (F < F0))
-        if bad.any() and not report:
-            i = np.flatnonzero(bad.reshape(-1))[0]
+        if np.any(bad) and not report:
+            i = np.flatnonzero(np.reshape(bad, -1))[0]
             raise NoEquilibriumError(
                 f"no unstable contact carries F_over_Eh={float(F.reshape(-1)[i])!r}: that "
-                f"branch exists only for F_minimum_over_Eh={float(Fmin.reshape(-1)[i])!r} < "
-                f"F_over_Eh < F_zero_width_over_Eh={float(F0.reshape(-1)[i])!r}"
+                f"branch exists only for F_minimum_over_Eh={float(np.reshape(Fmin, -1)[i])!r} < "
+                f"F_over_Eh < F_zero_width_over_Eh={float(np.reshape(F0, -1)[i])!r}"
             )
         F = np.where(bad, 0.5 * (Fmin + F0), F)
-        lo = np.log(np.where(bad & ~np.isfinite(us), 1.0, us))
-        hi = np.full(F.shape, np.log(745.0))
-        u = _solve_u_for_phi(F * (2 / np.pi), kap, lo, hi, increasing=True)
-    A, C, Fc, stable = _closed_form_from_u(u, kap, rho, us)
-    scale = np.maximum.reduce([np.abs(F), np.abs(F0), np.pi / 4 * A * A * rho])
-    res = np.abs(Fc - F) / np.maximum(scale, 1e-300)
-    converged = (np.isfinite(Fc) & (res <= _LOAD_RTOL)) | bad
-    if not np.all(converged):
-        i = np.flatnonzero(~converged.reshape(-1))[0]
+    # no unstable branch (kappa = 0): any finite end stands in for the points reported
+    us_solve = np.where(bad & ~np.isfinite(us), 1.0, us) if branch == "unstable" else us
+    Fs, rs = _ref._scalars(F, rho) if scalar else (F.reshape(-1), rho.reshape(-1))
+    flat = (lambda v: np.float64(v)) if scalar else (lambda v: np.reshape(v, -1))
+    u = _solve_u_for_phi(
+        Fs * (2 / np.pi),
+        flat(kap),
+        flat(d["phi_min"]),
+        flat(F0) * (2 / np.pi),
+        flat(us_solve),
+        stable=branch == "stable",
+    )
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
+        A, C, Fc, stable = _closed_form_from_u(u, flat(kap), rs, flat(us))
+    if not scalar:
+        A, C, Fc, stable = (v.reshape(F.shape) for v in (A, C, Fc, stable))
+    Fv, rv = (Fs, rs) if scalar else (F, rho)
+    scale = _ref._maximum(_ref._maximum(abs(Fv), abs(F0)), np.pi / 4 * A * A * rv)
+    res = abs(Fc - Fv) / _ref._maximum(scale, 1e-300)
+    converged = ((abs(Fc) < np.inf) & (res <= _LOAD_RTOL)) | bad
+    if not (bool(converged) if scalar else converged.all()):
+        i = np.flatnonzero(~np.reshape(converged, -1))[0]
         raise ConvergenceError(
             f"contact_for_load did not converge at F_over_Eh={float(F.reshape(-1)[i])!r}, "
             f"R_over_h={float(rho.reshape(-1)[i])!r}, sigma0_over_E="
             f"{float(s.reshape(-1)[i])!r}: the closest contact carries F_over_Eh="
-            f"{float(Fc.reshape(-1)[i])!r} (the load is outside the range of the solver)"
+            f"{float(np.reshape(Fc, -1)[i])!r} (the load is outside the range of the solver)"
         )
     _ref._warn_wide(np.where(bad, np.nan, A))
-    z = np.zeros(F.shape)
+    z: NDArray | float = 0.0 if scalar else np.zeros(F.shape)
     nan = np.where(bad, np.nan, 1.0)
     vals = dict(
         a_over_R=A * nan,
@@ -714,7 +839,7 @@ def contact_for_load(
         F_over_Eh=np.where(bad, F_asked, Fc),
         R_over_h=rho,
         sigma0_over_E=s,
-        n_collocation=z.astype(int),
+        n_collocation=0 if scalar else np.zeros(F.shape, dtype=int),
         residual_separation=z,
         residual_consistency=z,
         error_estimate=res * nan,
@@ -722,7 +847,7 @@ def contact_for_load(
         stable=stable & ~bad,
         state=np.where(bad, "no-equilibrium", "contact"),
     )
-    vals = {k: as_output(np.asarray(v), scalar) for k, v in vals.items()}
+    vals = {k: as_output(v if scalar else np.asarray(v), scalar) for k, v in vals.items()}
     return NormalContact(method="closed-form", **vals)
 
 

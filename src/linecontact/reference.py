@@ -52,6 +52,7 @@ contact). doi:10.1017/CBO9781139171731
 
 from __future__ import annotations
 
+import math
 import warnings
 
 import numpy as np
@@ -102,6 +103,10 @@ def _warn_wide(a_over_R: ArrayLike, stacklevel: int = 3) -> None:
 
 def _check_kappa(rho: NDArray, s: NDArray, rho_name: str = "R_over_h") -> None:
     """Refuse parameter points beyond :data:`KAPPA_MAX`, naming both parameters."""
+    if np.ndim(rho) == 0 and np.ndim(s) == 0:
+        # the same operations on Python floats (sqrt is correctly rounded in both)
+        if (4 / np.pi) * float(s) * math.sqrt(2 * float(rho)) <= KAPPA_MAX:
+            return
     with np.errstate(over="ignore"):
         kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     bad = ~(kap <= KAPPA_MAX)
@@ -223,29 +228,160 @@ def _zero_width(rho: NDArray, s: NDArray) -> NDArray:
 
 
 # --------------------------------------------------------------------------------------------
+# elementwise kernels and their per-point iteration
+#
+# The kernels below take either NumPy arrays (any shape) or NumPy scalars (``np.float64``):
+# a scalar call of the public functions runs the very same code on scalars, where an
+# arithmetic operation costs ~60 ns and an elementary function ~0.2 us instead of ~0.5 us on
+# a 0-d array, and ``np.where`` (~2.5 us on 0-d arrays) is replaced by a plain conditional
+# (:func:`_where`). NumPy's scalar functions use the same inner loops as its array functions,
+# so a point gives the same bits alone and in a batch -- except ``x ** 2``, which is pow() for
+# a scalar but a product for an array: the kernels square by multiplying.
+
+
+def _where(cond, a, b):
+    """``np.where(cond, a, b)``; a plain conditional when ``cond`` is a scalar.
+
+    Both ``a`` and ``b`` have been evaluated by the caller either way, so the two forms give
+    the same values (and the same floating-point warnings).
+    """
+    if isinstance(cond, (bool, np.bool_)):
+        return a if cond else b
+    return np.where(cond, a, b)
+
+
+def _minimum(a, b):
+    """``np.minimum(a, b)`` (nan wins), as a NumPy scalar without a ufunc call for scalars."""
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return np.minimum(a, b)
+    return np.float64(a if (a <= b or a != a) else b)
+
+
+def _maximum(a, b):
+    """``np.maximum(a, b)`` (nan wins), as a NumPy scalar without a ufunc call for scalars."""
+    if isinstance(a, np.ndarray) or isinstance(b, np.ndarray):
+        return np.maximum(a, b)
+    return np.float64(a if (a >= b or a != a) else b)
+
+
+def _is_scalar(*values) -> bool:
+    """True when every value is a scalar (Python or NumPy, or a 0-d array)."""
+    return all(np.ndim(v) == 0 for v in values)
+
+
+def _scalars(*values):
+    """0-d arrays (and Python numbers) as ``np.float64`` scalars, for the scalar fast path."""
+    return tuple(np.float64(v) for v in values)
+
+
+def _full(like, value: float):
+    """``value`` with the shape of ``like``: a NumPy scalar for a scalar ``like``."""
+    return np.full(like.shape, value) if isinstance(like, np.ndarray) else np.float64(value)
+
+
+def _iterate(step, state: tuple, params: tuple, maxiter: int, done=None):
+    """Iterate ``state, stop = step(*state, *params)`` per point until it stops.
+
+    ``state`` and ``params`` are tuples of NumPy scalars, or of 1-D arrays of one length. A point
+    whose ``stop`` is true leaves the loop at once: later iterations work only on the
+    points still active (so one point that converges slowly, or never, costs the work of one
+    point, not that of the whole batch), and a point that reaches ``maxiter`` keeps its last
+    state; the caller checks its residual.
+
+    ``done`` (optional) marks the points that need no iteration at all.
+
+    Returns
+    -------
+    state : tuple
+        The final state of every point (scalars, or new arrays).
+    iterations : int or ndarray of int
+        Iterations used per point.
+    """
+    if not isinstance(state[0], np.ndarray):
+        if done:
+            return state, 0
+        for k in range(1, maxiter + 1):  # noqa: B007 (k is the count returned)
+            state, stop = step(*state, *params)
+            if stop:
+                return state, k
+        return state, maxiter
+    out = [np.array(v, dtype=float) for v in state]
+    its = np.full(out[0].shape, maxiter)
+    idx = np.arange(out[0].size)
+    cur, par = state, params
+    if done is not None:
+        its[done] = 0
+        idx = idx[~done]
+        if idx.size == 0:
+            return tuple(out), its
+        cur = tuple(v[idx] for v in cur)
+        par = tuple(p[idx] for p in par)
+    for k in range(1, maxiter + 1):
+        cur, stop = step(*cur, *par)
+        if k == maxiter or stop.all():
+            for o, v in zip(out, cur, strict=True):
+                o[idx] = v
+            its[idx[stop]] = k
+            break
+        if stop.any():
+            fin = idx[stop]
+            for o, v in zip(out, cur, strict=True):
+                o[fin] = v[stop]
+            its[fin] = k
+            keep = ~stop
+            idx = idx[keep]
+            cur = tuple(v[keep] for v in cur)
+            par = tuple(p[keep] for p in par)
+    return tuple(out), its
+
+
+# --------------------------------------------------------------------------------------------
 # scaled elementary functions of u = arccosh(c/a)
+
+#: f1(u) = sinh u cosh u - u = u^3 sum_{k>=1} c_k (u^2)^(k-1), c_k = 4^k/(2k+1)!, used below
+#: u = 1 (where the closed form cancels); twelve terms leave a truncation of ~1e-20 relative.
+#: (int / int is correctly rounded in Python: each c_k is the double nearest to it.)
+_F1_SERIES = tuple(4**k / math.factorial(2 * k + 1) for k in range(12, 0, -1))
+
+
+def _f1_series(u):
+    """The series of f1 = sinh u cosh u - u (Horner, highest power first); for |u| <= 1."""
+    x = u * u
+    acc = _F1_SERIES[0]
+    for c in _F1_SERIES[1:]:
+        acc = acc * x + c
+    return acc * (x * u)
+
+
+def _small_u(u, q):
+    """``L = ln cosh u`` and ``F1`` below u = 1: by series, where 1 - q^2 - 4uq cancels."""
+    sh = np.sinh(u / 2)
+    return np.log1p(2 * sh * sh), 4 * q * _f1_series(u)
+
+
+def _large_u(u, q):
+    """``L`` and ``F1`` from u = 1 on (no overflow as u -> inf)."""
+    return u + np.log1p(q) - LN2, 1 - q * q - 4 * u * q
 
 
 def _scaled(u: NDArray) -> dict[str, NDArray]:
     """Overflow-free pieces: ``F1 = 4 e^{-2u} f1``, ``F2 = 2 e^{-u} f2``, ``St = 2e^{-u} sinh u``.
 
     Also ``Ct = 2 e^{-u} cosh u``, ``L = ln cosh u`` and the exponential ``q = e^{-2u}``.
+    ``u`` is an array or a NumPy scalar (see :func:`_where`); a scalar evaluates only the
+    branch (series or not) that it takes.
     """
-    u = np.asarray(u, dtype=float)
     q = np.exp(-2 * u)
     St = -np.expm1(-2 * u)
     Ct = 1 + q
     small = u < 1.0
-    us = np.where(small, u, 0.0)
-    # L = ln cosh u
-    L = np.where(small, np.log1p(2 * np.sinh(us / 2) ** 2), u + np.log1p(q) - LN2)
-    # f1 = sinh u cosh u - u = sum_{k>=1} 4^k u^(2k+1)/(2k+1)!  (series below u = 1)
-    term = us**3 * (4.0 / 6.0)
-    f1s = term.copy()
-    for k in range(2, 30):
-        term = term * 4 * us * us / ((2 * k) * (2 * k + 1))
-        f1s = f1s + term
-    F1 = np.where(small, 4 * q * f1s, 1 - q * q - 4 * u * q)
+    if isinstance(small, np.ndarray):
+        Ls, F1s = _small_u(np.where(small, u, 0.0), q)  # no overflow of the series at large u
+        Ll, F1l = _large_u(u, q)
+        L = np.where(small, Ls, Ll)
+        F1 = np.where(small, F1s, F1l)
+    else:
+        L, F1 = _small_u(u, q) if small else _large_u(u, q)
     F2 = u * St - Ct * L
     return {"q": q, "St": St, "Ct": Ct, "L": L, "F1": F1, "F2": F2}
 
@@ -253,7 +389,19 @@ def _scaled(u: NDArray) -> dict[str, NDArray]:
 def _x_of_u(kap: NDArray, p: dict[str, NDArray]) -> NDArray:
     """X = abar e^u / 2 solving X^2 F1 + kappa X F2 = 1."""
     F1, F2 = p["F1"], p["F2"]
-    return 2.0 / (kap * F2 + np.sqrt(kap * kap * F2 * F2 + 4 * F1))
+    kF2 = kap * F2
+    return 2.0 / (kF2 + np.sqrt(kF2 * kF2 + 4 * F1))
+
+
+def _abar_dln(u, kap, p):
+    """X, e^{-u}, abar and d ln(abar)/du at u, from the pieces ``p`` of :func:`_scaled`."""
+    X = _x_of_u(kap, p)
+    e = np.exp(-u)
+    St = p["St"]
+    abar = 2 * X * e
+    # d ln abar / du = -(X St^2 + kappa (u Ct - St L)/2) / (X F1 + kappa F2/2)
+    dln = -(X * St * St + kap * (u * p["Ct"] - St * p["L"]) / 2) / (X * p["F1"] + kap * p["F2"] / 2)
+    return X, e, abar, dln
 
 
 def _branch_point(u: NDArray, kap: NDArray) -> dict[str, NDArray]:
@@ -262,25 +410,87 @@ def _branch_point(u: NDArray, kap: NDArray) -> dict[str, NDArray]:
     Returns abar, Phi = (2/pi) F/(Eh), d ln(abar)/du and dPhi/du.
     """
     p = _scaled(u)
-    X = _x_of_u(kap, p)
-    e = np.exp(-np.asarray(u, dtype=float))
-    abar = 2 * X * e
-    phi = 4 * X * X * e * e - kap * X * p["St"]
-    # d ln abar / du = -(X St^2 + kappa (u Ct - St L)/2) / (X F1 + kappa F2/2)
-    dln = -(X * p["St"] ** 2 + kap * (u * p["Ct"] - p["St"] * p["L"]) / 2) / (
-        X * p["F1"] + kap * p["F2"] / 2
-    )
+    X, e, abar, dln = _abar_dln(u, kap, p)
+    St = p["St"]
+    kX = kap * X
+    phi = 4 * X * X * e * e - kX * St
     # dPhi/du = 2 abar^2 dln - kappa X (dln St + Ct); the load falls as u grows (a shrinks)
     # on the stable part of the branch, where dPhi/du < 0
-    dphi = 2 * abar * abar * dln - kap * X * (dln * p["St"] + p["Ct"])
+    dphi = 2 * abar * abar * dln - kX * (dln * St + p["Ct"])
     return {"abar": abar, "phi": phi, "X": X, "dln": dln, "dphi": dphi, **p}
 
 
 def _kappa_stationary(u: NDArray) -> NDArray:
     """Kappa at which the load is stationary at u: 2 St / sqrt(L^2 F1 + 2 L St F2)."""
-    p = _scaled(u)
+    p = _scaled(np.asarray(u, dtype=float))
     L = p["L"]
     return 2 * p["St"] / np.sqrt(L * L * p["F1"] + 2 * L * p["St"] * p["F2"])
+
+
+# --------------------------------------------------------------------------------------------
+# the contact branch at a given width
+
+
+_W_LO = float(np.log(1e-9))  # bracket of _u_of_abar in w = ln u
+_W_HI = float(np.log(750.0))
+
+
+def _abar_step(w, lo, hi, prev, target, kap):
+    """One bracketed Newton step of ln abar(u) = target in w = ln u (errors ignored by caller).
+
+    ``prev`` is the size of the previous Newton step (0 after any other step).
+    """
+    u = np.exp(w)
+    _, _, abar, dln = _abar_dln(u, kap, _scaled(u))
+    r = np.log(abar) - target  # decreasing in w
+    lo = _where(r > 0, w, lo)
+    hi = _where(r <= 0, w, hi)
+    w_new = w - r / (dln * u)
+    # (abs(x) < inf is isfinite(x), also for NumPy scalars, where np.isfinite costs ~0.7 us)
+    bad = ~(abs(w_new) < np.inf) | (w_new < lo) | (w_new > hi)
+    w_new = _where(bad, 0.5 * (lo + hi), w_new)
+    done = abs(r) <= 2e-16
+    w_new = _where(done, w, w_new)
+    step = abs(w_new - w)
+    wmax = _maximum(abs(w_new), 1.0)
+    # Newton converges quadratically: with C = step/prev^2 observed over the last two Newton
+    # steps, about C step^2 is left after this one; once that is below rounding another
+    # evaluation has nothing to add (it saves one of the usual four)
+    newton = ~(bad | done)
+    quad = newton & (step < prev) & (step * step * step <= 1e-17 * prev * prev * wmax)
+    stop = done | (step <= 1e-15 * wmax) | quad
+    return (w_new, lo, hi, _where(newton, step, 0.0)), stop
+
+
+def _u_guess(abar, kap):
+    """Initial u for abar(u; kappa) = abar from the asymptotes of the two ends."""
+    X_inf = 2.0 / (kap * LN2 + np.sqrt(kap * kap * LN2 * LN2 + 4))
+    u_large = np.log(_maximum(2 * X_inf / abar, 1.0 + 1e-12))
+    # small u: (2/3) abar^2 u^3 + kappa abar u^2 / 2 = 1  -> take the larger of the two roots
+    u_small = _minimum(
+        (1.5 / (abar * abar)) ** (1 / 3), np.sqrt(2.0 / _maximum(kap * abar, 1e-300))
+    )
+    return _minimum(_maximum(_where(u_large > 1.0, u_large, u_small), 1e-9), 700.0)
+
+
+def _solve_abar(abar, kap, *, maxiter: int = 60):
+    """u, separation residual, iterations and the branch point at u (flat arrays or scalars).
+
+    The caller silences the floating-point warnings of the extreme widths (``np.errstate``
+    over, divide and invalid; :func:`_u_of_abar` does), as ``normal_contact`` does once for
+    all its work (an ``errstate`` costs ~1.5 us, a fair part of a scalar call).
+    """
+    target = np.log(abar)
+    w0 = np.log(_u_guess(abar, kap))
+    lo, hi = _full(w0, _W_LO), _full(w0, _W_HI)
+    (w, _, _, _), it = _iterate(_abar_step, (w0, lo, hi, _full(w0, 0.0)), (target, kap), maxiter)
+    u = np.exp(w)
+    bp = _branch_point(u, kap)
+    # separation residual (gap(c) - gap(a))/h - 1 = abar^2 f1 + kappa abar f2 - 1 at the
+    # given abar, in the scaled form (Y = abar e^u / 2)
+    Y = abar * np.exp(_minimum(u, 700.0)) / 2
+    res = abs(Y * Y * bp["F1"] + kap * Y * bp["F2"] - 1)
+    return u, res, it, bp
 
 
 def _u_of_abar(
@@ -288,60 +498,78 @@ def _u_of_abar(
 ) -> tuple[NDArray, NDArray, NDArray]:
     """Solve abar(u; kappa) = abar for u by bracketed Newton in w = ln u.
 
-    Returns (u, separation residual (gap at c minus h, over h), iterations used).
+    Returns (u, separation residual (gap at c minus h, over h), iterations used). Arrays of
+    any shape (broadcast together) or scalars; each point stops as soon as it has converged.
     """
-    abar, kap = np.broadcast_arrays(np.asarray(abar, float), np.asarray(kap, float))
-    target = np.log(abar)
-    w_lo = np.full(abar.shape, np.log(1e-9))
-    w_hi = np.full(abar.shape, np.log(750.0))
-    # initial guess from the two asymptotes
-    X_inf = 2.0 / (kap * LN2 + np.sqrt(kap * kap * LN2 * LN2 + 4))
-    u_large = np.log(np.maximum(2 * X_inf / abar, 1.0 + 1e-12))
-    # small u: (2/3) abar^2 u^3 + kappa abar u^2 / 2 = 1  -> take the larger of the two roots
-    with np.errstate(over="ignore", divide="ignore"):  # abar**2 under/overflows at the ends
-        u_small = np.minimum(
-            (1.5 / abar**2) ** (1 / 3), np.sqrt(2.0 / np.maximum(kap * abar, 1e-300))
-        )
-    u0 = np.clip(np.where(u_large > 1.0, u_large, u_small), 1e-9, 700.0)
-    w = np.log(u0)
-    it = np.zeros(abar.shape, dtype=int)
-    active = np.ones(abar.shape, dtype=bool)
-    for k in range(maxiter):
-        u = np.exp(w)
-        bp = _branch_point(u, kap)
-        r = np.log(bp["abar"]) - target  # decreasing in w
-        w_lo = np.where(r > 0, w, w_lo)
-        w_hi = np.where(r <= 0, w, w_hi)
-        dr = bp["dln"] * u
-        with np.errstate(divide="ignore", invalid="ignore"):
-            w_new = w - r / dr
-        bad = ~np.isfinite(w_new) | (w_new < w_lo) | (w_new > w_hi)
-        w_new = np.where(bad, 0.5 * (w_lo + w_hi), w_new)
-        done = np.abs(r) <= 2e-16
-        w_new = np.where(done, w, w_new)
-        step = np.abs(w_new - w)
-        it = np.where(active, k + 1, it)
-        w = np.where(active, w_new, w)
-        active = active & ~done & (step > 1e-15 * np.maximum(1.0, np.abs(w)))
-        if not active.any():
-            break
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore"):
+        if _is_scalar(abar, kap):
+            u, res, it, _ = _solve_abar(*_scalars(abar, kap), maxiter=maxiter)
+            return u, res, it
+        abar, kap = np.broadcast_arrays(np.asarray(abar, float), np.asarray(kap, float))
+        shape = abar.shape
+        u, res, it, _ = _solve_abar(abar.reshape(-1), kap.reshape(-1), maxiter=maxiter)
+    return u.reshape(shape), res.reshape(shape), it.reshape(shape)
+
+
+# --------------------------------------------------------------------------------------------
+# the load minimum
+
+
+_WS_LO = float(np.log(1e-10))  # bracket of _u_stationary in w = ln u: kappa_s(lo) > kappa
+_WS_HI = float(np.log(1e9))
+
+
+def _stationary_step(w, lo, hi, lk):
+    """One bracketed Newton step of ln kappa_s(u) = ln kappa in w = ln u.
+
+    With D = L^2 F1 + 2 L St F2 and kappa_s = 2 St / sqrt(D), the derivatives of the scaled
+    pieces are St' = 2q, L' = St/Ct, F1' = 2 St^2 - 2 F1 and F2' = 2q (u + L).
+    """
     u = np.exp(w)
-    # separation residual (gap(c) - gap(a))/h - 1 = abar^2 f1 + kappa abar f2 - 1 at the
-    # given abar, in the scaled form (Y = abar e^u / 2)
     p = _scaled(u)
-    Y = abar * np.exp(np.minimum(u, 700.0)) / 2
-    res = np.abs(Y * Y * p["F1"] + kap * Y * p["F2"] - 1)
-    return u, res, it
+    q, St, L, F1, F2 = p["q"], p["St"], p["L"], p["F1"], p["F2"]
+    LSt = L * St
+    D = L * L * F1 + 2 * LSt * F2
+    g = np.log(2 * St / np.sqrt(D)) - lk  # decreasing in w
+    dL = St / p["Ct"]
+    dD = (
+        2 * L * dL * F1
+        + L * L * (2 * St * St - 2 * F1)
+        + 2 * (dL * St + 2 * q * L) * F2
+        + 4 * LSt * q * (u + L)
+    )
+    dg = u * (2 * q / St - dD / (2 * D))
+    lo = _where(g > 0, w, lo)
+    hi = _where(g > 0, hi, w)
+    w_new = w - g / dg
+    bad = ~np.isfinite(w_new) | (w_new < lo) | (w_new > hi)
+    w_new = _where(bad, 0.5 * (lo + hi), w_new)
+    done = g == 0
+    w_new = _where(done, w, w_new)
+    # converged: a step at rounding level, or a bracket shrunk to nothing (a root beyond the
+    # bracket's end, for kappa < 2e-9, leaves u at that end, as the bisection did)
+    tiny = 1e-15 * np.maximum(1.0, np.abs(w))
+    stop = done | (np.abs(w_new - w) <= tiny) | (hi - lo <= tiny)
+    return (w_new, lo, hi), stop
 
 
-def _u_stationary(kap: NDArray) -> NDArray:
-    """The u of the single load minimum for group kappa > 0 (bisection in ln u, monotone)."""
-    kap = np.asarray(kap, dtype=float)
-    lo = np.full(kap.shape, np.log(1e-10))  # kappa_s(lo) > kappa
-    hi = np.full(kap.shape, np.log(1e9))
-    for _ in range(90):
-        mid = 0.5 * (lo + hi)
-        above = _kappa_stationary(np.exp(mid)) > kap
-        lo = np.where(above, mid, lo)
-        hi = np.where(above, hi, mid)
-    return np.exp(0.5 * (lo + hi))
+def _u_stationary(kap: NDArray | np.float64) -> NDArray | np.float64:
+    """The u of the single load minimum for group kappa > 0.
+
+    ``kappa_s(u)`` (:func:`_kappa_stationary`) decreases from infinity (as
+    ``2 sqrt(2) u^(-3/2)``) to zero (as ``2/sqrt(u^2 - ln^2 2)``): a bracketed Newton
+    iteration in ``w = ln u`` on ``ln kappa_s = ln kappa`` starts from these asymptotes and
+    falls back on bisection whenever a step would leave the bracket. Arrays or scalars.
+    """
+    scalar = _is_scalar(kap)
+    shape = np.shape(kap)
+    kap = np.float64(kap) if scalar else np.asarray(kap, dtype=float).reshape(-1)
+    with np.errstate(over="ignore", divide="ignore", invalid="ignore", under="ignore"):
+        u_small = (2 * np.sqrt(2.0) / kap) ** (2 / 3)
+        u_large = np.sqrt(4 / (kap * kap) + LN2 * LN2)
+        u0 = _where(u_small < 1.0, u_small, u_large)
+        w0 = np.minimum(np.maximum(np.log(u0), _WS_LO), _WS_HI)
+        lo, hi = _full(w0, _WS_LO), _full(w0, _WS_HI)
+        (w, _, _), _ = _iterate(_stationary_step, (w0, lo, hi), (np.log(kap),), 100)
+        u = np.exp(w)
+    return u if scalar else u.reshape(shape)

@@ -53,8 +53,6 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 import numpy as np
-import scipy.fft
-import scipy.linalg
 from numpy.typing import ArrayLike, NDArray
 
 __all__ = [
@@ -93,6 +91,24 @@ SIZES = (
 
 
 _DCT_FROM = 48  # from this size on the bounded solve uses the fast cosine transform
+
+#: The collocation solvers of the problems work on batches of at most about this many
+#: (point, node) pairs at a time, so that their memory does not grow with the number of
+#: points (~30 arrays of this size are alive at once: ~60 MB).
+_CHUNK_ELEMENTS = 1 << 18
+
+
+def _chunks(size: int, n: int) -> list[slice]:
+    """Slices of ``range(size)`` of at most ``_CHUNK_ELEMENTS // (n + 1)`` points (>= 1)."""
+    step = max(1, _CHUNK_ELEMENTS // (n + 1))
+    return [slice(i, min(i + step, size)) for i in range(0, size, step)]
+
+
+def _linalg():
+    """``scipy.linalg``, imported on first use (not with the package, to keep it light)."""
+    import scipy.linalg
+
+    return scipy.linalg
 
 
 def _check_n(n: int, minimum: int = 1, name: str = "n") -> int:
@@ -307,7 +323,10 @@ class BoundedSolver:
                 lam = -f.mean(axis=-1) / s1
             f = f + lam[..., None] * f1
         if self.n >= _DCT_FROM:
-            # b_j = -(2/(n+1)) sum_k f_k T_{j+1}(x_k) is a type-II DCT of f
+            # b_j = -(2/(n+1)) sum_k f_k T_{j+1}(x_k) is a type-II DCT of f (scipy.fft is
+            # imported here, not with the package: it takes ~0.2 s)
+            import scipy.fft
+
             b = -scipy.fft.dct(f, type=2, axis=-1)[..., 1:] / (self.n + 1)
         else:
             b = f @ self._coef_from_f
@@ -498,7 +517,7 @@ class EndBoundedSolver:
         self.collocation_unit = self._sign * x
         self.weights_unit = w
         mat = w[None, :] / (np.pi * (self.nodes_unit[None, :] - self.collocation_unit[:, None]))
-        self._lu = scipy.linalg.lu_factor(mat)
+        self._lu = _linalg().lu_factor(mat)
 
     @property
     def nodes(self) -> NDArray[np.float64]:
@@ -522,7 +541,7 @@ class EndBoundedSolver:
         """
         f = _check_rhs("f", f, self.n, "n")
         flat = f.reshape(-1, self.n).T
-        g = scipy.linalg.lu_solve(self._lu, flat).T
+        g = _linalg().lu_solve(self._lu, flat).T
         return g.reshape(f.shape)
 
     def resultant(self, g: ArrayLike) -> NDArray[np.float64]:
@@ -561,7 +580,7 @@ class UnboundedSolver:
             np.pi * (self.nodes_unit[None, :] - self.collocation_unit[:, None])
         )
         mat[-1] = self.weights_unit * self._half
-        self._lu = scipy.linalg.lu_factor(mat)
+        self._lu = _linalg().lu_factor(mat)
 
     @property
     def nodes(self) -> NDArray[np.float64]:
@@ -598,7 +617,7 @@ class UnboundedSolver:
             ) from None
         rhs = np.concatenate([f, c[..., None]], axis=-1)
         flat = rhs.reshape(-1, self.n).T
-        g = scipy.linalg.lu_solve(self._lu, flat).T
+        g = _linalg().lu_solve(self._lu, flat).T
         return g.reshape(rhs.shape)
 
     def resultant(self, g: ArrayLike) -> NDArray[np.float64]:

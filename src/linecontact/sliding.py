@@ -122,7 +122,7 @@ from ._validation import (
 )
 from .errors import ConvergenceError, NoEquilibriumError
 from .results import Result, as_output
-from .sie import SIZES, BoundedSolution, BoundedSolver, log_end_moments
+from .sie import SIZES, BoundedSolution, BoundedSolver, _chunks, log_end_moments
 
 __all__ = [
     "SlidingContact",
@@ -376,18 +376,22 @@ class SlidingPullOff(Result):
 
 
 def _f1(u):
-    """f1 = sinh u cosh u - u (Baney & Hui), by its series below u = 0.5."""
-    u = np.asarray(u, dtype=float)
+    """f1 = sinh u cosh u - u (Baney & Hui), by its series below u = 0.5.
+
+    Arrays or NumPy scalars (a scalar evaluates only the branch it takes).
+    """
     small = u < 0.5
-    us = np.where(small, u, 0.0)
-    x = 4 * us * us
-    # sum_{k>=1} 4^k u^(2k+1)/(2k+1)! = u sum_k x^k/(2k+1)!, Horner over k = 1..12
-    acc = np.zeros_like(us)
-    for k in range(12, 0, -1):
-        acc = (acc + 1.0) * x / ((2 * k) * (2 * k + 1))
+    if isinstance(small, np.ndarray):
+        us = np.where(small, u, 0.0)
+        ub = np.where(small, 1.0, u)
+        with np.errstate(over="ignore"):
+            return np.where(small, _ref._f1_series(us), 0.5 * np.sinh(2 * ub) - ub)
+    if small:
+        return _ref._f1_series(u)
+    if u < 350.0:  # sinh(2u) is finite (and no errstate is needed, ~1.5 us each)
+        return 0.5 * np.sinh(2 * u) - u
     with np.errstate(over="ignore"):
-        big = 0.5 * np.sinh(2 * np.where(small, 1.0, u)) - np.where(small, 1.0, u)
-    return np.where(small, us * acc, big)
+        return 0.5 * np.sinh(2 * u) - u
 
 
 def _cf_parts(u1, u2):
@@ -415,95 +419,121 @@ def _cf_eval(ab, kap, r, u1, u2):
     a2 = ab * ab
     E1 = (a2 * _f1(u1) + kap * ab * G1) / r - 1
     E2 = a2 * _f1(u2) + kap * ab * G2 - 1
-    J11 = (a2 * 2 * np.sinh(u1) ** 2 + kap * ab * dG1[0]) / r
+    # (sh * sh, not sh ** 2: a NumPy scalar's power is pow(), not always the product)
+    sh1, sh2 = np.sinh(u1), np.sinh(u2)
+    J11 = (a2 * 2 * (sh1 * sh1) + kap * ab * dG1[0]) / r
     J12 = kap * ab * dG1[1] / r
     J21 = kap * ab * dG2[0]
-    J22 = a2 * 2 * np.sinh(u2) ** 2 + kap * ab * dG2[1]
+    J22 = a2 * 2 * (sh2 * sh2) + kap * ab * dG2[1]
     return E1, E2, J11, J12, J21, J22
 
 
 def _initial_u(ab, kap, r):
     """Each edge as if the contact were symmetric with its own range (normal closed form)."""
-    u2, _, _ = _ref._u_of_abar(ab, kap)
     sr = np.sqrt(r)
-    u1, _, _ = _ref._u_of_abar(ab / sr, kap / sr)
-    return u1, u2
+    if not isinstance(ab, np.ndarray):
+        u2, _, _ = _ref._u_of_abar(ab, kap)
+        u1, _, _ = _ref._u_of_abar(ab / sr, kap / sr)
+        return u1, u2
+    # both edges as one batch (the points are independent; fewer calls on small batches)
+    u, _, _ = _ref._u_of_abar(np.concatenate([ab / sr, ab]), np.concatenate([kap / sr, kap]))
+    return u[: ab.size], u[ab.size :]
 
 
-def _newton2(evaluate, u1, u2, *, maxiter=60, tol=1e-15, floor=2e-14, umax=300.0):
-    """Damped Newton for two residuals in (u1, u2) > 0, vectorised over points.
+_BIG = float(np.finfo(float).max)
 
-    ``evaluate(idx, u1, u2)`` returns ``(E1, E2, J11, J12, J21, J22, extra)`` for the points
-    ``idx``. Steps are limited to keep ``u`` positive and halved (at most 12 times) while
-    they do not reduce the larger residual; below ``floor`` (rounding level) any step is
-    accepted. A point stops when its residual is below ``tol``, its step is at rounding
-    level or no step reduces its residual. Returns ``u1, u2, |E1|, |E2|, extra`` of the last
-    evaluation at the returned ``u``.
+
+def _nan_to_num(x):
+    """``np.nan_to_num`` (nan to 0, infinities to the largest floats), also for NumPy scalars."""
+    if isinstance(x, np.ndarray):
+        return np.nan_to_num(x)
+    if x != x:
+        return np.float64(0.0)
+    return _ref._minimum(_ref._maximum(x, -_BIG), _BIG)
+
+
+def _direction(u1, u2, E1, E2, J11, J12, J21, J22, tol, umax):
+    """The damped Newton step of :func:`_newton2` from an accepted point (elementwise).
+
+    Returns the direction, the largest step length that keeps ``u`` positive (at most 3/4 of
+    the way to 0) and below ``umax``, and whether the point is done: its residual is below
+    ``tol`` or the step is at rounding level.
     """
-    P = u1.size
-    u1 = u1.astype(float).copy()
-    u2 = u2.astype(float).copy()
-    idx = np.arange(P)
-    E1, E2, J11, J12, J21, J22, extra = evaluate(idx, u1, u2)
-    E1, E2 = np.asarray(E1, float).copy(), np.asarray(E2, float).copy()
-    extra = {k: np.asarray(v).copy() for k, v in extra.items()}
-    J = [np.asarray(j, float).copy() for j in (J11, J12, J21, J22)]
-    active = np.ones(P, bool)
-    for _ in range(maxiter):
-        nrm = np.maximum(np.abs(E1), np.abs(E2))
-        active &= nrm > tol
-        ia = np.nonzero(active)[0]
-        if ia.size == 0:
-            break
-        j11, j12, j21, j22 = (j[ia] for j in J)
-        det = j11 * j22 - j12 * j21
-        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-            d1 = (-E1[ia] * j22 + E2[ia] * j12) / det
-            d2 = (-E2[ia] * j11 + E1[ia] * j21) / det
-            # fall back to the diagonal (each residual is monotone in its own u) if singular
-            bad = ~(np.isfinite(d1) & np.isfinite(d2))
-            d1 = np.nan_to_num(np.where(bad, -E1[ia] / j11, d1))
-            d2 = np.nan_to_num(np.where(bad, -E2[ia] / j22, d2))
-        lam = np.ones(ia.size)
-        # positivity: never more than 3/4 of the way to u = 0, never beyond umax
-        for d, u in ((d1, u1[ia]), (d2, u2[ia])):
-            neg = d < -0.75 * u
-            lam = np.where(neg, np.minimum(lam, 0.75 * u / np.where(neg, -d, 1.0)), lam)
-            big = u + d > umax
-            lam = np.where(big, np.minimum(lam, (umax - u) / np.where(big, d, 1.0)), lam)
-        tiny_step = (np.abs(d1) <= 4e-16 * np.maximum(u1[ia], 1e-3)) & (
-            np.abs(d2) <= 4e-16 * np.maximum(u2[ia], 1e-3)
+    where = _ref._where
+    det = J11 * J22 - J12 * J21
+    d1 = (-E1 * J22 + E2 * J12) / det
+    d2 = (-E2 * J11 + E1 * J21) / det
+    # fall back to the diagonal (each residual is monotone in its own u) if singular (the
+    # `if`s skip work that would change nothing: the rare cases are rare in a batch too)
+    bad = ~((abs(d1) < np.inf) & (abs(d2) < np.inf))
+    if bad.any():
+        d1 = _nan_to_num(where(bad, -E1 / J11, d1))
+        d2 = _nan_to_num(where(bad, -E2 / J22, d2))
+    lam = 1.0
+    for d, u in ((d1, u1), (d2, u2)):
+        neg = d < -0.75 * u
+        if neg.any():
+            lam = where(neg, _ref._minimum(lam, 0.75 * u / where(neg, -d, 1.0)), lam)
+        big = u + d > umax
+        if big.any():
+            lam = where(big, _ref._minimum(lam, (umax - u) / where(big, d, 1.0)), lam)
+    tiny = (abs(d1) <= 4e-16 * _ref._maximum(u1, 1e-3)) & (
+        abs(d2) <= 4e-16 * _ref._maximum(u2, 1e-3)
+    )
+    done = ~(_ref._maximum(abs(E1), abs(E2)) > tol) | tiny
+    return d1, d2, lam + 0.0 * u1, done
+
+
+def _newton2(evaluate, u1, u2, params, *, nextra=0, maxiter=60, tol=1e-15, floor=2e-14, umax=300.0):
+    """Damped Newton for two residuals in (u1, u2) > 0, per point (flat arrays or scalars).
+
+    ``evaluate(u1, u2, *params)`` returns ``(E1, E2, J11, J12, J21, J22, *extra)`` with
+    ``nextra`` extra quantities. Steps are limited to keep ``u`` positive and halved (at most
+    12 times) while they do not reduce the larger residual; below ``floor`` (rounding level)
+    any step is accepted. A point stops when its residual is below ``tol``, its step is at
+    rounding level or no step reduces its residual, or after ``maxiter`` Newton steps.
+
+    Each iteration evaluates one trial point (a full step or a halved one) of every point
+    still active; a point that stops leaves the loop (:func:`linecontact.reference._iterate`),
+    so one slow point does not keep the batch iterating. Returns ``u1, u2, |E1|, |E2|`` and
+    the extras of the last evaluation at the returned ``u``.
+    """
+    where = _ref._where
+    ev = tuple(evaluate(u1, u2, *params))
+    d1, d2, lam, done = _direction(u1, u2, *ev[:6], tol, umax)
+    zero = 0.0 * lam
+    ncur = 6 + nextra
+    nstate = 2 + ncur + 5
+
+    def step(*args):
+        u1, u2 = args[0], args[1]
+        cur = args[2 : 2 + ncur]
+        d1, d2, lam, tries, steps = args[2 + ncur : nstate]
+        n1 = u1 + lam * d1
+        n2 = u2 + lam * d2
+        r = evaluate(n1, n2, *args[nstate:])
+        nrm = _ref._maximum(abs(cur[0]), abs(cur[1]))
+        nn = _ref._maximum(abs(r[0]), abs(r[1]))
+        ok = (abs(nn) < np.inf) & ((nn < nrm) | (nn <= floor))
+        cur = tuple(where(ok, a, b) for a, b in zip(r, cur, strict=True))
+        u1, u2 = where(ok, n1, u1), where(ok, n2, u2)
+        # a step at rounding level: quadratic convergence leaves nothing to gain
+        small = (abs(lam * d1) <= 1e-12 * _ref._maximum(u1, 1e-3)) & (
+            abs(lam * d2) <= 1e-12 * _ref._maximum(u2, 1e-3)
         )
-        todo = ~tiny_step
-        active[ia[tiny_step]] = False
-        for ls in range(13):
-            it = np.nonzero(todo)[0]
-            if it.size == 0:
-                break
-            gi = ia[it]
-            n1 = u1[gi] + lam[it] * d1[it]
-            n2 = u2[gi] + lam[it] * d2[it]
-            r = evaluate(gi, n1, n2)
-            nn = np.maximum(np.abs(r[0]), np.abs(r[1]))
-            ok = np.isfinite(nn) & ((nn < nrm[gi]) | (nn <= floor))
-            acc = it[ok]
-            ga = ia[acc]
-            u1[ga], u2[ga] = n1[ok], n2[ok]
-            E1[ga], E2[ga] = r[0][ok], r[1][ok]
-            for j, v in zip(J, r[2:6], strict=True):
-                j[ga] = v[ok]
-            for k, v in r[6].items():
-                extra[k][ga] = v[ok]
-            todo[acc] = False
-            # a step at rounding level: quadratic convergence leaves nothing to gain
-            small = (np.abs(lam[acc] * d1[acc]) <= 1e-12 * np.maximum(u1[ga], 1e-3)) & (
-                np.abs(lam[acc] * d2[acc]) <= 1e-12 * np.maximum(u2[ga], 1e-3)
-            )
-            active[ga[small]] = False
-            lam[it[~ok]] *= 0.5
-            if ls == 12:  # no step reduces the residual: it is at its rounding floor
-                active[ia[it[~ok]]] = False
-    return u1, u2, np.abs(E1), np.abs(E2), extra
+        nd1, nd2, nlam, converged = _direction(u1, u2, *cur[:6], tol, umax)
+        # thirteen trials that do not reduce the residual: it is at its rounding floor
+        give_up = ~ok & (tries >= 12)
+        steps = steps + where(ok, 1.0, 0.0)
+        stop = (ok & (small | converged | (steps >= maxiter))) | give_up
+        d1, d2 = where(ok, nd1, d1), where(ok, nd2, d2)
+        lam = where(ok, nlam, 0.5 * lam)
+        tries = where(ok, 0.0, tries + 1)
+        return (u1, u2, *cur, d1, d2, lam, tries, steps), stop
+
+    state = (u1, u2, *ev, d1, d2, lam, zero, zero)
+    (u1, u2, E1, E2, *rest), _ = _ref._iterate(step, state, tuple(params), 13 * maxiter, done)
+    return u1, u2, abs(E1), abs(E2), tuple(rest[4 : 4 + nextra])
 
 
 def _closed_form(A, rho, r, s, u1=None, u2=None):
@@ -512,12 +542,13 @@ def _closed_form(A, rho, r, s, u1=None, u2=None):
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     if u1 is None or u2 is None:
         u1, u2 = _initial_u(ab, kap, r)
-
-    def evaluate(idx, v1, v2):
-        return (*_cf_eval(ab[idx], kap[idx], r[idx], v1, v2), {})
-
-    u1, u2, e1, e2, _ = _newton2(evaluate, u1, u2)
+    u1, u2, e1, e2, _ = _newton2(_cf_evaluate, u1, u2, (ab, kap, r))
     return u1, u2, e1, e2
+
+
+def _cf_evaluate(u1, u2, ab, kap, r):
+    """:func:`_cf_eval` in the argument order of :func:`_newton2`."""
+    return _cf_eval(ab, kap, r, u1, u2)
 
 
 def _cf_outputs(A, rho, r, s, u1, u2):
@@ -630,11 +661,15 @@ def _colloc_eval(solver: BoundedSolver, A, s, rho, r, u1, u2):
     res = (np.pi / 2) * b[:, 0]
     mom = (np.pi / 4) * b[:, 1] if n > 1 else np.zeros_like(res)
     tail = np.max(np.abs(b[:, -3:]), axis=-1) / np.maximum(np.max(np.abs(b), axis=-1), 1e-300)
-    extra = dict(
-        ecc=ecc, resultant=res, moment=mom, consistency=np.abs(sol.consistency[:, 0]), tail=tail
+    # residuals as (gap - h)/h, the sign of the closed-form ones; the extras as in _EXTRA
+    return (
+        *(-R1, -R2, -J11, -J12, -J21, -J22),
+        *(ecc, res, mom, np.abs(sol.consistency[:, 0]), tail),
     )
-    # residuals as (gap - h)/h, the sign of the closed-form ones
-    return -R1, -R2, -J11, -J12, -J21, -J22, extra
+
+
+#: The extra quantities of :func:`_colloc_eval`, in its order.
+_EXTRA = ("ecc", "resultant", "moment", "consistency", "tail")
 
 
 def _collocation(A, rho, r, s, n, tol):
@@ -645,13 +680,21 @@ def _collocation(A, rho, r, s, n, tol):
     u1, u2 = _initial_u(ab, kap, r)  # each edge from the symmetric solution with its range
 
     def run(nn, idx, v1, v2):
+        """Newton at nn nodes on the points idx, in chunks of bounded memory."""
         solver = BoundedSolver(int(nn))
 
-        def evaluate(i, w1, w2):
-            g = idx[i]
-            return _colloc_eval(solver, A[g], s[g], rho[g], r[g], w1, w2)
+        def evaluate(w1, w2, A_, s_, rho_, r_):
+            return _colloc_eval(solver, A_, s_, rho_, r_, w1, w2)
 
-        return _newton2(evaluate, v1, v2)
+        out = [np.empty(idx.size) for _ in range(4 + len(_EXTRA))]
+        for c in _chunks(idx.size, int(nn)):
+            g = idx[c]
+            w1, w2, f1, f2, ex_ = _newton2(
+                evaluate, v1[c], v2[c], (A[g], s[g], rho[g], r[g]), nextra=len(_EXTRA)
+            )
+            for o, v in zip(out, (w1, w2, f1, f2, *ex_), strict=True):
+                o[c] = v
+        return (*out[:4], dict(zip(_EXTRA, out[4:], strict=True)))
 
     n0 = 16 if n == "auto" else int(n)
     P = A.size
@@ -713,12 +756,16 @@ def _check_method(method, n, tol, raise_on_failure):
 
 
 def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
-    """Solve at flat arrays; returns a dict of flat arrays (both methods)."""
+    """Solve at flat arrays; returns a dict of flat arrays (both methods).
+
+    The closed form also takes NumPy scalars (the scalar fast path of the public functions).
+    """
     if method == "closed-form":
         g1, g2 = (None, None) if u_guess is None else u_guess
         u1, u2, e1, e2 = _closed_form(A, rho, r, s, g1, g2)
         ecc, F, M, dphi = _cf_outputs(A, rho, r, s, u1, u2)
-        z = np.zeros(A.shape)
+        flat = isinstance(A, np.ndarray)
+        z = np.zeros(A.shape) if flat else 0.0
         d = dict(
             u1=u1,
             u2=u2,
@@ -729,8 +776,8 @@ def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
             res2=e2,
             cons=z,
             tail=z,
-            n=np.zeros(A.shape, int),
-            converged=(np.maximum(e1, e2) <= 1e-12) & np.isfinite(F),
+            n=np.zeros(A.shape, int) if flat else 0,
+            converged=(_ref._maximum(e1, e2) <= 1e-12) & (abs(F) < np.inf),
         )
     else:
         d = _collocation(A, rho, r, s, n, tol)
@@ -749,7 +796,9 @@ def _pack(
     missing = np.zeros(A.shape, bool) if missing is None else missing
     conv = d["converged"] | missing
     if raise_on_failure and not np.all(conv):
-        i = np.flatnonzero(~conv)[0]
+        i = np.flatnonzero(~np.reshape(conv, -1))[0]
+        A, rho, r, s = (np.reshape(v, -1) for v in (A, rho, r, s))
+        d = {k: np.reshape(v, -1) for k, v in d.items()}
         raise ConvergenceError(
             f"{where} ({method}) did not converge at a_over_R={float(A[i])!r}, "
             f"R_over_h2={float(rho[i])!r}, h1_over_h2={float(r[i])!r}, "
@@ -785,7 +834,10 @@ def _pack(
         stable=d["stable"] & ~missing,
         state=np.where(missing, "no-equilibrium", "contact"),
     )
-    vals = {k: as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
+    if isinstance(A, np.ndarray):
+        vals = {k: as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
+    else:  # NumPy scalars from the scalar fast path
+        vals = {k: as_output(v, True) for k, v in vals.items()}
     return SlidingContact(method=method, **vals)
 
 
@@ -853,9 +905,12 @@ def sliding_contact(
     _ref._check_kappa(rho, s, "R_over_h2")
     _ref._warn_wide(A)
     shape = A.shape
-    A, rho, r, s, tau = (
-        np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (A, rho, r, s, tau)
-    )
+    if scalar and method == "closed-form":  # the same kernels on NumPy scalars
+        A, rho, r, s, tau = _ref._scalars(A, rho, r, s, tau)
+    else:
+        A, rho, r, s, tau = (
+            np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (A, rho, r, s, tau)
+        )
     # a contact half-width far outside the solvers' range overflows on the way; _pack's
     # convergence check reports it
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
@@ -879,31 +934,30 @@ def _zero_width(kap, r):
     X2 = 2.0 / (kap * ln2 + np.sqrt(kap * kap * ln2 * ln2 + 4))
     X1 = 2.0 * r / (kap * ln2 + np.sqrt(kap * kap * ln2 * ln2 + 4 * r))
 
-    def evaluate(idx, x1, x2):
-        k = kap[idx]
+    def evaluate(x1, x2, k, r):
         S = x1 + x2
         L2 = np.log(S / x1)
         L1 = np.log(S / x2)
-        E1 = (x1 * x1 + 0.5 * k * S * L1) / r[idx] - 1
+        E1 = (x1 * x1 + 0.5 * k * S * L1) / r - 1
         E2 = x2 * x2 + 0.5 * k * S * L2 - 1
-        J11 = (2 * x1 + 0.5 * k * (L1 + 1)) / r[idx]
-        J12 = 0.5 * k * (L1 - x1 / x2) / r[idx]
+        J11 = (2 * x1 + 0.5 * k * (L1 + 1)) / r
+        J12 = 0.5 * k * (L1 - x1 / x2) / r
         J21 = 0.5 * k * (L2 - x2 / x1)
         J22 = 2 * x2 + 0.5 * k * (L2 + 1)
-        return E1, E2, J11, J12, J21, J22, {}
+        return E1, E2, J11, J12, J21, J22
 
-    X1, X2, e1, e2, _ = _newton2(evaluate, X1, X2)
+    X1, X2, e1, e2, _ = _newton2(evaluate, X1, X2, (kap, r))
     return X1, X2, np.maximum(e1, e2)
 
 
 def _phi_at(lab, kap, r):
     """Phi = (2/pi) F/(E h2), dPhi/dabar, u1, u2 at abar = exp(lab) (closed form).
 
-    Each call starts from the symmetric guesses (robust; warm starts from a distant abar
-    can lead Newton astray).
+    Flat arrays or NumPy scalars. Each call starts from the symmetric guesses (robust; warm
+    starts from a distant abar can lead Newton astray).
     """
     ab = np.exp(lab)
-    one = np.ones_like(ab)  # the closed form depends on abar and kappa only: take R/h2 = 1
+    one = _ref._full(ab, 1.0)  # the closed form depends on abar and kappa only: R/h2 = 1
     A = ab * np.sqrt(2.0)
     s = kap * (np.pi / 4) / np.sqrt(2.0)
     u1, u2, _, _ = _closed_form(A, one, r, s)
@@ -912,56 +966,85 @@ def _phi_at(lab, kap, r):
 
 
 _LAB_LO = np.log(1e-9)  # abar below which the load is indistinguishable from its a -> 0 limit
+_GRID = np.linspace(0.0, 1.0, 41)  # the grid in ln abar that brackets the load minimum
+
+
+def _phi_grid(labs, kap, r):
+    """Phi and dPhi/dabar on the grid ``labs`` (grid, points), as one batch per chunk.
+
+    The grid values of a few points at a time are solved together (a scalar call evaluates
+    its 41 grid values in one vectorised solve instead of 41 scalar ones).
+    """
+    G, P = labs.shape
+    phis = np.empty((G, P))
+    dphis = np.empty((G, P))
+    step = max(1, (1 << 16) // G)
+    for c in range(0, P, step):
+        sl = slice(c, min(c + step, P))
+        m = sl.stop - sl.start
+        ph, dph, _, _ = _phi_at(
+            labs[:, sl].reshape(-1),
+            np.broadcast_to(kap[sl], (G, m)).reshape(-1),
+            np.broadcast_to(r[sl], (G, m)).reshape(-1),
+        )
+        phis[:, sl] = ph.reshape(G, m)
+        dphis[:, sl] = dph.reshape(G, m)
+    return phis, dphis
+
+
+def _secant_step(xp, fp, x, fx, lo, hi, ph, kap, r):
+    """One step of the secant on dPhi inside its bracket (bisection otherwise), per point."""
+    where = _ref._where
+    nx = x - fx * (x - xp) / (fx - fp)
+    ok = (abs(nx) < np.inf) & (nx > lo) & (nx < hi)
+    nx = where(ok, nx, 0.5 * (lo + hi))
+    ph, fn, _, _ = _phi_at(nx, kap, r)
+    xp, fp, x, fx = x, fx, nx, fn
+    up = fx > 0
+    hi = where(up, x, hi)
+    lo = where(up, lo, x)
+    stop = ~(abs(x - xp) > 1e-10 * _ref._maximum(1.0, abs(x))) | (fx == 0)
+    return (xp, fp, x, fx, lo, hi, ph), stop
 
 
 def _pulloff_flat(kap, r):
-    """Minimum of Phi(abar) along the branch: grid in ln abar, then a secant on dPhi."""
-    P = kap.size
+    """Minimum of Phi(abar) along the branch: grid in ln abar, then a secant on dPhi.
+
+    Flat arrays or NumPy scalars (the grid is solved as a batch either way).
+    """
+    scalar = not isinstance(kap, np.ndarray)
     X1, X2, _ = _zero_width(kap, r)
     phi0 = -0.5 * kap * (X1 + X2)
     # upper end: Hertz dominates beyond abar ~ 1 + kappa
     lab_hi = np.log(3.0 + 3.0 * kap)
-    grid = np.linspace(0.0, 1.0, 41)
-    labs = _LAB_LO + grid[:, None] * (lab_hi - _LAB_LO)[None, :]
-    phis = np.empty((grid.size, P))
-    dphis = np.empty((grid.size, P))
-    for i in range(grid.size):
-        phis[i], dphis[i], _, _ = _phi_at(labs[i], kap, r)
+    kv, rv = np.atleast_1d(kap), np.atleast_1d(r)
+    labs = _LAB_LO + _GRID[:, None] * (np.atleast_1d(lab_hi) - _LAB_LO)[None, :]
+    phis, dphis = _phi_grid(labs, kv, rv)
     # interior minimum: bracket the smallest grid value
     k = np.argmin(phis, axis=0)
-    cols = np.arange(P)
-    interior = (k > 0) & (k < grid.size - 1)
-    kk = np.clip(k, 1, grid.size - 2)
-    lo, hi = labs[kk - 1, cols], labs[kk + 1, cols]
-    _, flo, _, _ = _phi_at(lo, kap, r)
-    _, fhi, _, _ = _phi_at(hi, kap, r)
-    # secant on dPhi, kept inside the bracket (bisection otherwise); the load is flat at its
-    # minimum, so locating it to 1e-10 in ln(abar) gives the load to rounding
-    xp, fp, x, fx = lo, flo, hi, fhi
-    todo = interior.copy()
-    for _ in range(100):
-        if not todo.any():
-            break
-        with np.errstate(divide="ignore", invalid="ignore"):
-            nx = x - fx * (x - xp) / (fx - fp)
-        ok = np.isfinite(nx) & (nx > lo) & (nx < hi)
-        nx = np.where(ok, nx, 0.5 * (lo + hi))
-        i = np.nonzero(todo)[0]
-        _, fn, _, _ = _phi_at(nx[i], kap[i], r[i])
-        f_new = fx.copy()
-        f_new[i] = fn
-        xp, fp = np.where(todo, x, xp), np.where(todo, fx, fp)
-        x, fx = np.where(todo, nx, x), np.where(todo, f_new, fx)
-        up = todo & (fx > 0)
-        dn = todo & (fx <= 0)
-        hi, fhi = np.where(up, x, hi), np.where(up, fx, fhi)
-        lo, flo = np.where(dn, x, lo), np.where(dn, fx, flo)
-        todo &= (np.abs(x - xp) > 1e-10 * np.maximum(1.0, np.abs(x))) & (fx != 0)
-    lab_min = x
-    ph, _, _, _ = _phi_at(lab_min, kap, r)
-    interior &= ph < phi0
-    phi_min = np.where(interior, ph, phi0)
-    lab_min = np.where(interior, lab_min, -np.inf)
+    cols = np.arange(kv.size)
+    interior = (k > 0) & (k < _GRID.size - 1)
+    kk = np.clip(k, 1, _GRID.size - 2)
+    # the secant on dPhi starts from the grid values at the bracket's ends (kept inside the
+    # bracket, bisection otherwise); the load is flat at its minimum, so locating it to
+    # 1e-10 in ln(abar) gives the load to rounding
+    start = (
+        labs[kk - 1, cols],
+        dphis[kk - 1, cols],
+        labs[kk + 1, cols],
+        dphis[kk + 1, cols],
+        labs[kk - 1, cols],
+        labs[kk + 1, cols],
+        phis[kk + 1, cols],
+    )
+    if scalar:
+        start, interior = _ref._scalars(*(v[0] for v in start)), bool(interior[0])
+    (_, _, lab_min, _, _, _, ph), _ = _ref._iterate(
+        _secant_step, start, (kap, r), 100, done=not interior if scalar else ~interior
+    )
+    interior = interior & (ph < phi0)
+    phi_min = _ref._where(interior, ph, phi0)
+    lab_min = _ref._where(interior, lab_min, -np.inf)
     return dict(
         X1=X1,
         X2=X2,
@@ -1001,8 +1084,12 @@ def sliding_pull_off(
     rho, r, s = broadcast(R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s)
     _ref._check_kappa(rho, s, "R_over_h2")
     shape = rho.shape
-    rho, r, s = (np.ascontiguousarray(v, float).reshape(-1) for v in (rho, r, s))
+    if scalar:  # the same kernels on NumPy scalars (the grid is a batch of 41 either way)
+        rho, r, s = _ref._scalars(rho, r, s)
+    else:
+        rho, r, s = (np.ascontiguousarray(v, float).reshape(-1) for v in (rho, r, s))
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    where = _ref._where
     # h1/h2 far from 1 (1e-300, 1e12) overflows on the way to a finite answer; a result that
     # is not finite is reported below
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
@@ -1010,12 +1097,13 @@ def sliding_pull_off(
         sq = np.sqrt(2 / rho)
         F0 = (np.pi / 2) * d["phi0"]
         Fmin = (np.pi / 2) * d["phi_min"]
-        a_min = np.where(d["interior"], np.exp(d["lab_min"]) * sq, 0.0)
+        a_min = where(d["interior"], np.exp(d["lab_min"]) * sq, 0.0)
         # a snap-off lets go from a width of at least the shorter adhesion range
-        snap = d["interior"] & (a_min >= SNAP_OFF_MIN_WIDTH_OVER_H * np.minimum(1.0, r) / rho)
-    bad = ~(np.isfinite(F0) & np.isfinite(Fmin) & np.isfinite(a_min))
+        snap = d["interior"] & (a_min >= SNAP_OFF_MIN_WIDTH_OVER_H * _ref._minimum(1.0, r) / rho)
+    bad = ~((abs(F0) < np.inf) & (abs(Fmin) < np.inf) & (abs(a_min) < np.inf))
     if np.any(bad):
-        i = int(np.flatnonzero(bad)[0])
+        i = int(np.flatnonzero(np.reshape(bad, -1))[0])
+        rho, r, s = (np.reshape(v, -1) for v in (rho, r, s))
         raise ConvergenceError(
             f"sliding_pull_off did not converge at R_over_h2={float(rho[i])!r}, h1_over_h2="
             f"{float(r[i])!r}, sigma0_over_E={float(s[i])!r}: the point is outside the "
@@ -1024,7 +1112,7 @@ def sliding_pull_off(
     vals = dict(
         F_pulloff_over_Eh2=Fmin,
         a_over_R_at_pulloff=a_min,
-        mechanism=np.where(snap, "snap-off", "zero-width"),
+        mechanism=where(snap, "snap-off", "zero-width"),
         F_zero_width_over_Eh2=F0,
         c1_over_R_zero_width=d["X1"] * sq,
         c2_over_R_zero_width=d["X2"] * sq,
@@ -1032,8 +1120,89 @@ def sliding_pull_off(
         h1_over_h2=r,
         sigma0_over_E=s,
     )
-    vals = {k: as_output(np.asarray(v).reshape(shape), scalar) for k, v in vals.items()}
+    vals = {
+        k: as_output(v if scalar else np.asarray(v).reshape(shape), scalar) for k, v in vals.items()
+    }
     return SlidingPullOff(**vals)
+
+
+def _lower_end(F, rho, r, s, kap, phi_t, report: bool = False):
+    """Lower end (ln abar) of the stable branch; below the pull-off, NoEquilibriumError.
+
+    Flat arrays or NumPy scalars; the pull-off search runs on the adhesive points only.
+    With ``report`` the points below the pull-off force (or at a load <= 0 without
+    adhesion) are not an error: they are marked ``missing`` and their target load is moved
+    to one that a contact carries. Returns ``(lab_lo, phi_t, missing)``.
+    """
+    adh = s > 0
+    if not isinstance(F, np.ndarray):
+        phi_po, lab_lo = np.float64(0.0), np.float64(_LAB_LO)
+        if adh:
+            d = _pulloff_flat(kap, r)
+            phi_po = d["phi_min"]
+            lab_lo = _ref._where(d["interior"], d["lab_min"], lab_lo)
+    else:
+        lab_lo = np.full(F.shape, _LAB_LO)
+        phi_po = np.zeros(F.shape)
+        if adh.any():
+            d = _pulloff_flat(kap[adh], r[adh])
+            phi_po[adh] = d["phi_min"]
+            lab_lo[adh] = np.where(d["interior"], d["lab_min"], _LAB_LO)
+    below = adh & (phi_t < phi_po)
+    nonpos = ~adh & (phi_t <= 0)
+    missing = below | nonpos
+    if report:
+        # a load that a contact carries stands in (the values are NaN in the result)
+        phi_t = _ref._where(below, phi_po, _ref._where(nonpos, 1.0, phi_t))
+        return lab_lo, phi_t, missing
+    bad = np.reshape(below, -1)
+    F, rho, r, s, phi_po = (np.reshape(v, -1) for v in (F, rho, r, s, phi_po))
+    if bad.any():
+        g = np.flatnonzero(bad)[0]
+        raise NoEquilibriumError(
+            f"no steadily sliding contact carries F_over_Eh2={float(F[g])!r}: it is below "
+            f"the pull-off force F_pulloff_over_Eh2={float(np.pi / 2 * phi_po[g])!r} "
+            f"(R_over_h2={float(rho[g])!r}, h1_over_h2={float(r[g])!r}, "
+            f"sigma0_over_E={float(s[g])!r}); the cylinder has pulled off"
+        )
+    nonpos = np.reshape(nonpos, -1)
+    if nonpos.any():
+        i = np.flatnonzero(nonpos)[0]
+        raise NoEquilibriumError(
+            f"no contact carries F_over_Eh2={float(F[i])!r} without adhesion "
+            f"(sigma0_over_E=0): the load must be > 0"
+        )
+    return lab_lo, phi_t, missing
+
+
+def _double_step(lab, ph, phi_t, kap, r):
+    """Double abar until the load at it exceeds the target (the upper end of the bracket)."""
+    lab = lab + np.log(2.0)
+    ph, _, _, _ = _phi_at(lab, kap, r)
+    return (lab, ph), ~(ph < phi_t)
+
+
+def _load_step(lab, lo, hi, u1, u2, phi_t, kap, r):
+    """One bracketed Newton step in ln abar of Phi(abar) = phi_t along the stable branch.
+
+    Also returns the u1, u2 of the closed form at the point evaluated (a done point keeps
+    that point, so they belong to the returned ln abar).
+    """
+    where = _ref._where
+    mx = _ref._maximum
+    ph, dph, u1, u2 = _phi_at(lab, kap, r)
+    fx = ph - phi_t
+    up = fx > 0
+    hi = where(up, lab, hi)
+    lo = where(up, lo, lab)
+    nxt = lab - fx / (dph * np.exp(lab))
+    nxt = where((abs(nxt) < np.inf) & (nxt > lo) & (nxt < hi), nxt, 0.5 * (lo + hi))
+    done = (
+        (abs(fx) <= 4e-16 * mx(1.0, abs(phi_t)))
+        | (abs(nxt - lab) <= 1e-15 * mx(1.0, abs(lab)))
+        | (hi - lo <= 1e-15 * mx(1.0, abs(hi)))
+    )
+    return (where(done, lab, nxt), lo, hi, u1, u2), done
 
 
 def sliding_contact_for_load(
@@ -1098,81 +1267,36 @@ def sliding_contact_for_load(
     )
     _ref._check_kappa(rho, s, "R_over_h2")
     shape = F.shape
-    F, rho, r, s, tau = (
-        np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (F, rho, r, s, tau)
-    )
+    if scalar:  # the search runs on NumPy scalars (see reference._where)
+        F, rho, r, s, tau = _ref._scalars(F, rho, r, s, tau)
+    else:
+        F, rho, r, s, tau = (
+            np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (F, rho, r, s, tau)
+        )
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     phi_t = F * (2 / np.pi)
-    missing = np.zeros(F.shape, bool)
     # as in sliding_pull_off: far from h1 = h2 the search overflows on the way; the
     # convergence check of the state found reports a failure
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         # lower end of the stable branch and its load
-        lab_lo = np.full(F.shape, _LAB_LO)
-        phi_lo = np.zeros(F.shape)
-        adh = s > 0
-        if adh.any():
-            d = _pulloff_flat(kap[adh], r[adh])
-            phi_po = d["phi_min"]
-            bad = phi_t[adh] < phi_po
-            if bad.any() and report:
-                # a load that exists (the pull-off force) stands in for the ones reported
-                missing[np.flatnonzero(adh)[bad]] = True
-                phi_t[np.flatnonzero(adh)[bad]] = phi_po[bad]
-            elif bad.any():
-                i = np.flatnonzero(bad)[0]
-                g = np.flatnonzero(adh)[i]
-                raise NoEquilibriumError(
-                    f"no steadily sliding contact carries F_over_Eh2={float(F[g])!r}: it is below "
-                    f"the pull-off force F_pulloff_over_Eh2={float(np.pi / 2 * phi_po[i])!r} "
-                    f"(R_over_h2={float(rho[g])!r}, h1_over_h2={float(r[g])!r}, "
-                    f"sigma0_over_E={float(s[g])!r}); the cylinder has pulled off"
-                )
-            lab_lo[adh] = np.where(d["interior"], d["lab_min"], _LAB_LO)
-            phi_lo[adh] = d["phi_min"]
-        if np.any(~adh & (phi_t <= 0)) and report:
-            hertz_bad = ~adh & (phi_t <= 0)
-            missing |= hertz_bad
-            phi_t = np.where(hertz_bad, 1.0, phi_t)
-        if np.any(~adh & (phi_t <= 0)):
-            i = np.flatnonzero(~adh & (phi_t <= 0))[0]
-            raise NoEquilibriumError(
-                f"no contact carries F_over_Eh2={float(F[i])!r} without adhesion "
-                f"(sigma0_over_E=0): the load must be > 0"
-            )
+        lab_lo, phi_t, missing = _lower_end(F, rho, r, s, kap, phi_t, report)
         # upper end: where Phi exceeds the target (Hertz: Phi >= abar^2 - kappa abar sinh ...)
-        lab_hi = np.log(np.sqrt(np.maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
+        lab_hi = np.log(np.sqrt(_ref._maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
         ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
-        for _ in range(60):
-            low = ph_hi < phi_t
-            if not low.any():
-                break
-            lab_hi = np.where(low, lab_hi + np.log(2.0), lab_hi)
-            ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
+        (lab_hi, _), _ = _ref._iterate(
+            _double_step, (lab_hi, ph_hi), (phi_t, kap, r), 60, done=~(ph_hi < phi_t)
+        )
         # bracketed Newton in ln abar on [lab_lo, lab_hi], where Phi increases
-        lo, hi = lab_lo.copy(), lab_hi.copy()
-        lab = 0.5 * (lo + hi)
-        u1 = u2 = None
-        active = np.ones(F.shape, bool)
-        for _ in range(200):
-            ph, dph, u1, u2 = _phi_at(lab, kap, r)
-            fx = ph - phi_t
-            up = fx > 0
-            hi = np.where(up, lab, hi)
-            lo = np.where(up, lo, lab)
-            with np.errstate(divide="ignore", invalid="ignore"):
-                nxt = lab - fx / (dph * np.exp(lab))
-            nxt = np.where(np.isfinite(nxt) & (nxt > lo) & (nxt < hi), nxt, 0.5 * (lo + hi))
-            done = (
-                (np.abs(fx) <= 4e-16 * np.maximum(1.0, np.abs(phi_t)))
-                | (np.abs(nxt - lab) <= 1e-15 * np.maximum(1.0, np.abs(lab)))
-                | (hi - lo <= 1e-15 * np.maximum(1.0, np.abs(hi)))
-            )
-            active &= ~done
-            if not active.any():
-                break
-            lab = np.where(active, nxt, lab)
+        lab = 0.5 * (lab_lo + lab_hi)
+        zero = 0.0 * lab
+        (lab, _, _, u1, u2), _ = _ref._iterate(
+            _load_step, (lab, lab_lo, lab_hi, zero, zero), (phi_t, kap, r), 200
+        )
         A = np.exp(lab) * np.sqrt(2 / rho)
+        if not scalar or method != "closed-form":  # the collocation works on arrays
+            A, rho, r, s, tau, u1, u2, F, missing = (
+                np.reshape(v, -1) for v in (A, rho, r, s, tau, u1, u2, F, missing)
+            )
     _ref._warn_wide(np.where(missing, np.nan, A))
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # see sliding_contact
         dd = _solve_flat(

@@ -28,7 +28,7 @@ from .._validation import (
 from ..errors import ConvergenceError, NoEquilibriumError
 from ..results import Result, as_output
 from ..sie import SIZES as _SIE_SIZES
-from ..sie import BoundedSolver
+from ..sie import BoundedSolver, _chunks
 
 #: Collocation sizes tried by ``n="auto"`` (the largest bounds the work per point).
 SIZES = _SIE_SIZES
@@ -42,6 +42,20 @@ _FORCE_TOL = 1e-12  # Newton tolerance on T (relative to the full-slip load)
 _STICK = "stick"
 _STICK_SLIP = "stick-slip"
 _SLIDING = "sliding"
+
+
+# --------------------------------------------------------------------------------------------
+# elementary functions
+
+
+def _xlogy(x, y):
+    """``x ln y``, zero where ``x = 0`` (unless ``y`` is nan): ``scipy.special.xlogy``.
+
+    In NumPy, so that importing the package does not import ``scipy.special`` (~0.1 s).
+    """
+    with np.errstate(divide="ignore", invalid="ignore"):
+        v = x * np.log(y)
+    return np.where((x == 0) & ~np.isnan(y), 0.0, v)
 
 
 # --------------------------------------------------------------------------------------------
@@ -109,12 +123,14 @@ def _adaptive(kernel, delta: NDArray, rate: NDArray, n, tol: float) -> dict[str,
     pending = np.ones(P, bool)
     while pending.any():
         for nn in np.unique(nsel[pending]):
-            idx = np.flatnonzero(pending & (nsel == nn))
-            r = kernel(delta[idx], int(nn))
-            for key, v in r.items():
-                if key not in out:
-                    out[key] = np.zeros(P, dtype=np.asarray(v).dtype)
-                out[key][idx] = v
+            sel = np.flatnonzero(pending & (nsel == nn))
+            for c in _chunks(sel.size, int(nn)):  # bounded memory for any number of points
+                idx = sel[c]
+                r = kernel(delta[idx], int(nn))
+                for key, v in r.items():
+                    if key not in out:
+                        out[key] = np.zeros(P, dtype=np.asarray(v).dtype)
+                    out[key][idx] = v
         if n != "auto":
             break
         pending = pending & (out["tail"] > tol) & (nsel < sizes[-1])
@@ -168,19 +184,28 @@ def _solve_points(
     if method == "closed-form":
         out["T"][idx] = T_closed(d)
     else:
+        # Newton on d with the closed-form slope; a point whose force is met leaves the
+        # iteration (only the others are solved again)
+        act = np.arange(idx.size)
+        r = {}
         for _ in range(12):
-            r = _adaptive(kernel, d, rate(d), n, tol)
+            ra = _adaptive(kernel, d[act], rate(d[act]), n, tol)
+            for key, v in ra.items():
+                if key not in r:
+                    r[key] = np.zeros(idx.size, dtype=v.dtype)
+                r[key][act] = v
             if T_target is None:
                 break
-            err = r["T"] - T_target[idx]
+            err = ra["T"] - T_target[idx[act]]
             with np.errstate(divide="ignore", invalid="ignore"):  # infinite slope at d = a
-                slope = dT_closed(d)
+                slope = dT_closed(d[act])
             ok = np.abs(err) <= _FORCE_TOL * T_full
             if ok.all():
                 break
             with np.errstate(divide="ignore", invalid="ignore"):
                 step = np.where(ok | (np.abs(slope) < 1e-300), 0.0, err / slope)
-            d = np.clip(d - step, lo, hi)
+            d[act] = np.clip(d[act] - step, lo, hi)
+            act = act[~ok]
         out["delta"][idx] = d
         out["T"][idx] = r["T"]
         for key in ("n", "stick", "cons", "tail"):

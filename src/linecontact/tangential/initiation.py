@@ -12,7 +12,6 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 import numpy as np
-import scipy.special
 from numpy.typing import ArrayLike, NDArray
 
 from .._validation import positive
@@ -32,6 +31,7 @@ from ._core import (
     _tail,
     _Tangential,
     _wide,
+    _xlogy,
 )
 
 __all__ = [
@@ -85,7 +85,7 @@ def _init_coefficients(delta: NDArray, n: int) -> NDArray:
 
 def _G(x):
     """(1 + x) ln(1 + x) + (1 - x) ln(1 - x): the antiderivative of ln((1+x)/(1-x))."""
-    return scipy.special.xlogy(1 + x, 1 + x) + scipy.special.xlogy(1 - x, 1 - x)
+    return _xlogy(1 + x, 1 + x) + _xlogy(1 - x, 1 - x)
 
 
 def _init_slip_closed(x, delta):
@@ -98,13 +98,9 @@ def _init_slip_closed(x, delta):
     k = np.sqrt((1 - delta) * (1 + delta))
     r = np.sqrt(np.clip((x - delta) * (x + delta), 0.0, None))
     with np.errstate(divide="ignore", invalid="ignore"):
-        head = (
-            k * np.log(x + r)
-            - np.log(x * k + r)
-            + scipy.special.xlogy(delta * delta / (1 + k), delta)
-        )
+        head = k * np.log(x + r) - np.log(x * k + r) + _xlogy(delta * delta / (1 + k), delta)
     head = np.where(delta > 0, head, 0.0)
-    return head + scipy.special.xlogy((1 - x) / 2, (1 - x) * (1 + x)) + x * np.log(k + r)
+    return head + _xlogy((1 - x) / 2, (1 - x) * (1 + x)) + x * np.log(k + r)
 
 
 # --------------------------------------------------------------------------------------------

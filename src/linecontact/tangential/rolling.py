@@ -13,7 +13,6 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 import numpy as np
-import scipy.special
 from numpy.typing import ArrayLike, NDArray
 
 from .._validation import positive
@@ -31,6 +30,7 @@ from ._core import (
     _tail,
     _Tangential,
     _wide,
+    _xlogy,
 )
 
 __all__ = [
@@ -78,10 +78,7 @@ def _roll_rhs(delta, t, split: str = "endpoint"):
     if split == "endpoint":
         return -(1.0 / np.pi) * np.log(2.0 * (t + Y))
     return (1.0 / np.pi) * (
-        scipy.special.xlogy((1 - t) / 2, 1 - t)
-        + scipy.special.xlogy((1 + t) / 2, 1 + t)
-        - 1.0
-        - np.log(t + Y)
+        _xlogy((1 - t) / 2, 1 - t) + _xlogy((1 + t) / 2, 1 + t) - 1.0 - np.log(t + Y)
     )
 
 
