@@ -87,18 +87,26 @@ A_OVER_R_SMALL_STRAIN = 0.2
 
 
 def _warn_wide(a_over_R: ArrayLike, stacklevel: int = 3) -> None:
-    """Warn once per call when a contact is wider than :data:`A_OVER_R_SMALL_STRAIN`."""
-    a = np.asarray(a_over_R, dtype=float)
-    with np.errstate(invalid="ignore"):
-        wide = a > A_OVER_R_SMALL_STRAIN
-    if np.any(wide):
-        warnings.warn(
-            f"a_over_R = {float(np.max(a[wide])):.3g} is beyond the small-strain range of the "
-            f"half-plane theory (a/R <= {A_OVER_R_SMALL_STRAIN:g}, strain a/(2R) <= "
-            f"{A_OVER_R_SMALL_STRAIN / 2:g}): the results are those of linear elasticity",
-            ModelValidityWarning,
-            stacklevel=stacklevel,
-        )
+    """Warn once per call when a contact is wider than :data:`A_OVER_R_SMALL_STRAIN`.
+
+    NaN (a point without a state) never warns; a scalar costs one comparison.
+    """
+    if isinstance(a_over_R, np.ndarray) and a_over_R.ndim:
+        wide = a_over_R > A_OVER_R_SMALL_STRAIN  # NaN compares False, silently
+        if not wide.any():
+            return
+        worst = float(np.max(a_over_R[wide]))
+    else:
+        worst = float(a_over_R)  # type: ignore[arg-type]
+        if not worst > A_OVER_R_SMALL_STRAIN:
+            return
+    warnings.warn(
+        f"a_over_R = {worst:.3g} is beyond the small-strain range of the half-plane theory "
+        f"(a/R <= {A_OVER_R_SMALL_STRAIN:g}, strain a/(2R) <= {A_OVER_R_SMALL_STRAIN / 2:g}): "
+        "the results are those of linear elasticity",
+        ModelValidityWarning,
+        stacklevel=stacklevel,
+    )
 
 
 def _check_kappa(rho: NDArray, s: NDArray, rho_name: str = "R_over_h") -> None:
