@@ -944,10 +944,10 @@ def equilibria(F_over_Eh: float, R_over_h: float, sigma0_over_E: float) -> tuple
     states: list[Equilibrium] = []
     if F >= po.F_minimum_over_Eh:
         r = contact_for_load(F, rho, s, branch="stable")
-        states.append(Equilibrium("contact", True, F, r.a_over_R, r.c_over_R, 0.0))
+        states.append(Equilibrium("contact", True, F, float(r.a_over_R), float(r.c_over_R), 0.0))
     if po.F_minimum_over_Eh < F < po.F_zero_width_over_Eh:
         r = contact_for_load(F, rho, s, branch="unstable")
-        states.append(Equilibrium("contact", False, F, r.a_over_R, r.c_over_R, 0.0))
+        states.append(Equilibrium("contact", False, F, float(r.a_over_R), float(r.c_over_R), 0.0))
     if s > 0 and po.F_zero_width_over_Eh <= F < 0:
         # invert F = -2 s rho C for C, then the gap
         C = -F / (2 * s * rho)
@@ -1021,11 +1021,11 @@ def load_curve(
             raise ValueError(f"{name} must be an integer >= 2, got {v!r}")
     po = pull_off(rho, s)
     if a_max_over_R is None:
-        a_h = np.sqrt(4 * 10 * abs(po.F_pulloff_over_Eh) / (np.pi * rho))
-        a_max_over_R = max(3 * po.a_over_R_at_minimum, a_h, 0.02)
+        a_po = float(po.a_over_R_at_minimum)
+        a_h = float(np.sqrt(4 * 10 * abs(float(po.F_pulloff_over_Eh)) / (np.pi * rho)))
         # within the small-strain range unless the pull-off itself is close to its end
-        cap = max(_ref.A_OVER_R_SMALL_STRAIN, 1.5 * po.a_over_R_at_minimum)
-        a_max_over_R = min(a_max_over_R, cap)
+        cap = max(_ref.A_OVER_R_SMALL_STRAIN, 1.5 * a_po)
+        a_max_over_R = min(max(3 * a_po, a_h, 0.02), cap)
     amax = scalar("a_max_over_R", a_max_over_R)
     A = np.unique(
         np.concatenate(

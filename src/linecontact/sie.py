@@ -309,7 +309,7 @@ class BoundedSolver:
         -------
         BoundedSolution
         """
-        f = _check_rhs("f", f, self.n + 1, "n + 1")
+        rhs = _check_rhs("f", f, self.n + 1, "n + 1")
         lam = None
         if extra is not None:
             f1 = _check_rhs("extra", extra, self.n + 1, "n + 1")
@@ -320,18 +320,18 @@ class BoundedSolver:
                     "the consistency condition fixes its multiplier through it"
                 )
             with np.errstate(divide="ignore", invalid="ignore"):
-                lam = -f.mean(axis=-1) / s1
-            f = f + lam[..., None] * f1
+                lam = -rhs.mean(axis=-1) / s1
+            rhs = rhs + lam[..., None] * f1
         if self.n >= _DCT_FROM:
             # b_j = -(2/(n+1)) sum_k f_k T_{j+1}(x_k) is a type-II DCT of f (scipy.fft is
             # imported here, not with the package: it takes ~0.2 s)
             import scipy.fft
 
-            b = -scipy.fft.dct(f, type=2, axis=-1)[..., 1:] / (self.n + 1)
+            b = -scipy.fft.dct(rhs, type=2, axis=-1)[..., 1:] / (self.n + 1)
         else:
-            b = f @ self._coef_from_f
+            b = rhs @ self._coef_from_f
         g = b @ self._values_from_coef if values else None
-        return BoundedSolution(b, g, f.mean(axis=-1), lam)
+        return BoundedSolution(b, g, rhs.mean(axis=-1), lam)
 
     # --- linear functionals (on the interval, with the map's Jacobian) ---------------------
     def resultant(self, sol: BoundedSolution) -> NDArray[np.float64]:
@@ -539,10 +539,10 @@ class EndBoundedSolver:
 
         ``f`` has shape ``(..., n)``; so has the result.
         """
-        f = _check_rhs("f", f, self.n, "n")
-        flat = f.reshape(-1, self.n).T
+        rhs = _check_rhs("f", f, self.n, "n")
+        flat = rhs.reshape(-1, self.n).T
         g = _linalg().lu_solve(self._lu, flat).T
-        return g.reshape(f.shape)
+        return g.reshape(rhs.shape)
 
     def resultant(self, g: ArrayLike) -> NDArray[np.float64]:
         r""":math:`\int_\alpha^\beta \phi(t)\,dt` from the node values ``g``."""

@@ -105,7 +105,7 @@ F. Erdogan, G. D. Gupta, T. S. Cook, "Numerical solution of singular integral eq
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import ClassVar
+from typing import ClassVar, cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -623,7 +623,7 @@ def _colloc_eval(solver: BoundedSolver, A, s, rho, r, u1, u2):
     f = _colloc_rhs(x, A, s, u1, u2)
     sol = solver.solve(f, extra=np.full(n + 1, 0.5), values=False)
     B = sol.coefficients  # (P, 3, n): b, db/du1, db/du2
-    lam = sol.extra  # (P, 3): e/R and its derivatives
+    lam = cast(NDArray, sol.extra)  # (P, 3): e/R and its derivatives
     b, db1, db2 = B[:, 0], B[:, 1], B[:, 2]
     ecc, de1, de2 = lam[:, 0], lam[:, 1], lam[:, 2]
     sg = (-1.0) ** np.arange(n)

@@ -10,7 +10,7 @@ friction on the Hertz contact (Carter). Units, sign conventions and references:
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import ClassVar
+from typing import ClassVar, cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -115,7 +115,7 @@ def _carter_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
     sol = s.solve(-xs, extra=np.ones_like(xs), values=False)
     b = sol.coefficients
     T = 1.0 - h * b[:, 0]
-    lam = sol.extra  # = -E creep/(2 mu p0 V); creep/V = -lam mu a/R
+    lam = cast(NDArray, sol.extra)  # = -E creep/(2 mu p0 V); creep/V = -lam mu a/R
     xc = m[:, None] + h[:, None] * _CHECK_Y[None, :]
     res = np.max(np.abs(-b @ _check_matrix(n) + xc - lam[:, None]), axis=-1)
     return dict(T=T, creep=-lam, tail=_tail(b), stick=res, cons=np.abs(sol.consistency))
