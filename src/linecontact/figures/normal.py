@@ -44,7 +44,7 @@ All curves depend on ``(R/h, sigma0/E)`` only through
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+from collections.abc import Iterable
 
 import numpy as np
 
@@ -56,6 +56,9 @@ from ._style import (
     _FILLED_KW,
     _OPEN_KW,
     _PO_KW,
+    Job,
+    Margins,
+    Run,
     _branch_lines,
     _colors,
     _legends,
@@ -160,9 +163,12 @@ _STYLE_BRANCH = [
 ]
 
 
-def _load_figure(number: int, rho: float, data: list[dict]):
+def _load_figure(run: Run, number: int, rho: float):
     """Figs. 2, 3: F/(Eh) versus a/R."""
+    data = _data(run, rho)
     fig, ax = _new_axes(
+        run,
+        Margins(0.813, 2.214),
         f"Fig. {number} ({_CITE}): normal load, $R/h = {rho:g}$",
         r"contact half-width $a/R$",
         r"load $F/(Eh)$",
@@ -201,9 +207,12 @@ def _load_figure(number: int, rho: float, data: list[dict]):
     return fig
 
 
-def _zone_figure(number: int, rho: float, data: list[dict]):
+def _zone_figure(run: Run, number: int, rho: float):
     """Figs. 4, 5: c/R versus a/R."""
+    data = _data(run, rho)
     fig, ax = _new_axes(
+        run,
+        Margins(0.783, 2.144),
         f"Fig. {number} ({_CITE}): adhesive-zone width, $R/h = {rho:g}$",
         r"contact half-width $a/R$",
         r"adhesive-zone half-width $c/R$",
@@ -222,9 +231,11 @@ def _zone_figure(number: int, rho: float, data: list[dict]):
     return fig
 
 
-def _zero_width_figure():
+def _zero_width_figure(run: Run):
     """Fig. 6: Eq. (14) versus sigma0/E, with the true pull-off force as markers."""
     fig, ax = _new_axes(
+        run,
+        Margins(0.813, 2.391, top=0.349),
         f"Fig. 6 ({_CITE}): zero-contact-width force, Eq. (14)",
         r"adhesive stress $\sigma_0/E$",
         r"load $F/(Eh)$",
@@ -262,20 +273,22 @@ def _zero_width_figure():
     return fig
 
 
-def jobs(progress: Callable[[str], object]) -> list[tuple[str, Callable]]:
-    """(file stem, figure builder) pairs of Figs. 2--6; the load curves are computed here."""
+def _data(run: Run, rho: float) -> list[dict]:
+    """The load curves of ``R/h = rho``, computed once per run for Figs. 2--5."""
+    return run.data(
+        ("normal", rho),
+        lambda: _branch_data(rho, LOAD_SIGMA0_OVER_E),
+        f"load curves for R/h = {rho:g} ({len(LOAD_SIGMA0_OVER_E)} values of sigma0/E)",
+    )
+
+
+def jobs() -> list[Job]:
+    """The figures of Figs. 2--6; Figs. 2 and 4 (3 and 5) draw the same load curves."""
     rho_a, rho_b = LOAD_R_OVER_H
-    data = {}
-    for rho in LOAD_R_OVER_H:
-        progress(
-            f"computing load curves for R/h = {rho:g} "
-            f"({len(LOAD_SIGMA0_OVER_E)} values of sigma0/E)"
-        )
-        data[rho] = _branch_data(rho, LOAD_SIGMA0_OVER_E)
     return [
-        ("fig02_load_R100", lambda: _load_figure(2, rho_a, data[rho_a])),
-        ("fig03_load_R200", lambda: _load_figure(3, rho_b, data[rho_b])),
-        ("fig04_zone_R100", lambda: _zone_figure(4, rho_a, data[rho_a])),
-        ("fig05_zone_R200", lambda: _zone_figure(5, rho_b, data[rho_b])),
-        ("fig06_zero_width", _zero_width_figure),
+        Job("fig02_load_R100", lambda run: _load_figure(run, 2, rho_a), "normal-a", 0.36),
+        Job("fig03_load_R200", lambda run: _load_figure(run, 3, rho_b), "normal-b", 0.32),
+        Job("fig04_zone_R100", lambda run: _zone_figure(run, 4, rho_a), "normal-a", 0.24),
+        Job("fig05_zone_R200", lambda run: _zone_figure(run, 5, rho_b), "normal-b", 0.24),
+        Job("fig06_zero_width", _zero_width_figure, "fig06", 0.30),
     ]
