@@ -162,10 +162,11 @@ def _processes(processes: int | None) -> int:
 
 
 def _share(jobs: Sequence[Job], nproc: int) -> list[list[Job]]:
-    """Share the groups of figures out between ``nproc`` processes, largest first.
+    """Share the groups of figures out between ``nproc`` processes, largest group first.
 
     Figures of one group stay together (they draw the same data sets); each share keeps
-    the order of ``jobs``.
+    the order of ``jobs``; the lightest share comes first (it is drawn by this process,
+    which also relays the worker's messages).
     """
     if nproc == 1:
         return [list(jobs)]
@@ -178,7 +179,8 @@ def _share(jobs: Sequence[Job], nproc: int) -> list[list[Job]]:
         k = load.index(min(load))
         where[group] = k
         load[k] += cost
-    shares = [[job for job in jobs if where[job.group] == k] for k in range(nproc)]
+    order = sorted(range(nproc), key=lambda k: load[k])
+    shares = [[job for job in jobs if where[job.group] == k] for k in order]
     return [s for s in shares if s]
 
 

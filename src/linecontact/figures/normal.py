@@ -96,10 +96,13 @@ ZERO_WIDTH_SIGMA0_MAX = 0.1
 
 
 def _branch_data(rho: float, sigmas: Iterable[float]) -> list[dict]:
-    """Closed-form (dense), collocation (sparse) and pull-off data, one dict per sigma0/E."""
+    """Closed-form (dense), collocation (sparse) and pull-off data, one dict per sigma0/E.
+
+    Every solver is called once for all the curves (the solvers are vectorised).
+    """
     sig = np.asarray(tuple(sigmas), dtype=float)
     rhos = np.full(sig.shape, rho)
-    po = pull_off(rhos, sig)  # arrays: one vectorised call for all curves
+    po = pull_off(rhos, sig)
     # the a -> 0 limit of the contact branch is the touching non-contact state (g0 = 0)
     c_touch = non_contact(np.zeros(sig.shape), rhos, sig).c_over_R
     a_col = np.linspace(A_MAX_OVER_R / N_COLLOCATION_MARKERS, A_MAX_OVER_R, N_COLLOCATION_MARKERS)
@@ -107,26 +110,32 @@ def _branch_data(rho: float, sigmas: Iterable[float]) -> list[dict]:
         np.geomspace(A_MAX_OVER_R * 1e-6, A_MAX_OVER_R, 120),
         np.linspace(A_MAX_OVER_R / 500, A_MAX_OVER_R, 500),
     )
+    cf = normal_contact(base[None, :], rho, sig[:, None])
+    col = normal_contact(a_col[None, :], rho, sig[:, None], method="collocation")
+    # a snap-off curve also gets the point of its load minimum, where the dotted part ends
+    a_min = np.asarray(po.a_over_R_at_minimum, dtype=float)
+    snap = np.asarray(po.mechanism) == "snap-off"
+    extra = snap & (a_min < A_MAX_OVER_R) & ~np.isin(a_min, base)
+    at_min = normal_contact(a_min[extra], rho, sig[extra]) if extra.any() else None
     out = []
     for i, s in enumerate(sig):
-        a_min = float(po.a_over_R_at_minimum[i])
-        snap = po.mechanism[i] == "snap-off"
-        a = np.union1d(base, [a_min]) if snap and a_min < A_MAX_OVER_R else base
-        cf = normal_contact(a, rho, s)
-        col = normal_contact(a_col, rho, s, method="collocation")
-        F0 = float(po.F_zero_width_over_Eh[i])
-        c0 = float(c_touch[i])
+        a, F, c = base, cf.F_over_Eh[i], cf.c_over_R[i]
+        if extra[i]:
+            j, k = int(np.count_nonzero(extra[:i])), int(np.searchsorted(base, a_min[i]))
+            a = np.insert(a, k, a_min[i])
+            F = np.insert(F, k, at_min.F_over_Eh[j])
+            c = np.insert(c, k, at_min.c_over_R[j])
         out.append(
             dict(
                 sigma=float(s),
                 # the a -> 0 limit (Eq. 14 and the zero-width adhesive zone) closes each line
                 a=np.concatenate([[0.0], a]),
-                F=np.concatenate([[F0], cf.F_over_Eh]),
-                c=np.concatenate([[c0], cf.c_over_R]),
-                unstable=np.concatenate([[snap], snap & (a <= a_min)]),
+                F=np.concatenate([[float(po.F_zero_width_over_Eh[i])], F]),
+                c=np.concatenate([[float(c_touch[i])], c]),
+                unstable=np.concatenate([[snap[i]], snap[i] & (a <= a_min[i])]),
                 a_col=a_col,
-                F_col=col.F_over_Eh,
-                c_col=col.c_over_R,
+                F_col=col.F_over_Eh[i],
+                c_col=col.c_over_R[i],
                 a_po=float(po.a_over_R_at_pulloff[i]),
                 F_po=float(po.F_pulloff_over_Eh[i]),
                 c_po=float(po.c_over_R_at_pulloff[i]),
@@ -286,9 +295,9 @@ def jobs() -> list[Job]:
     """The figures of Figs. 2--6; Figs. 2 and 4 (3 and 5) draw the same load curves."""
     rho_a, rho_b = LOAD_R_OVER_H
     return [
-        Job("fig02_load_R100", lambda run: _load_figure(run, 2, rho_a), "normal-a", 0.36),
-        Job("fig03_load_R200", lambda run: _load_figure(run, 3, rho_b), "normal-b", 0.32),
-        Job("fig04_zone_R100", lambda run: _zone_figure(run, 4, rho_a), "normal-a", 0.24),
-        Job("fig05_zone_R200", lambda run: _zone_figure(run, 5, rho_b), "normal-b", 0.24),
-        Job("fig06_zero_width", _zero_width_figure, "fig06", 0.30),
+        Job("fig02_load_R100", lambda run: _load_figure(run, 2, rho_a), "normal-a", 0.27),
+        Job("fig03_load_R200", lambda run: _load_figure(run, 3, rho_b), "normal-b", 0.24),
+        Job("fig04_zone_R100", lambda run: _zone_figure(run, 4, rho_a), "normal-a", 0.17),
+        Job("fig05_zone_R200", lambda run: _zone_figure(run, 5, rho_b), "normal-b", 0.17),
+        Job("fig06_zero_width", _zero_width_figure, "fig06", 0.20),
     ]

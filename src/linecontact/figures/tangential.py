@@ -257,7 +257,7 @@ def _fig14(run: Run):
 def jobs() -> list[Job]:
     """The figures of Figs. 7, 13 and 14; Figs. 13 and 14 draw the same rolling states."""
     return [
-        Job("fig07_sliding_initiation", _fig07, "fig07", 0.36),
-        Job("fig13_rolling_force", _fig13, "rolling", 0.38),
-        Job("fig14_rolling_creep", _fig14, "rolling", 0.40),
+        Job("fig07_sliding_initiation", _fig07, "fig07", 0.20),
+        Job("fig13_rolling_force", _fig13, "rolling", 0.24),
+        Job("fig14_rolling_creep", _fig14, "rolling", 0.21),
     ]
