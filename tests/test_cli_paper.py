@@ -46,6 +46,21 @@ def test_cli_formats_and_size(capsys, tmp_path, few):
         assert im.size == (1800, 900)
 
 
+def test_cli_as_the_command_freezes_the_objects(capsys, tmp_path, few, monkeypatch):
+    """main() without argv (the console script) freezes the objects for a faster exit."""
+    import gc
+
+    monkeypatch.setattr("sys.argv", ["linecontact", "paper", "--outdir", str(tmp_path)])
+    frozen = gc.get_freeze_count()
+    try:
+        assert main() == 0
+        assert gc.get_freeze_count() > frozen
+    finally:
+        gc.unfreeze()
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(f"{s}.png" for s in few)
+    assert capsys.readouterr().out.startswith("wrote 2 files")
+
+
 @pytest.mark.parametrize(
     "argv, option",
     [

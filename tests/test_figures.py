@@ -185,3 +185,19 @@ def test_missing_matplotlib_message(tmp_path, monkeypatch):
     monkeypatch.setitem(sys.modules, "matplotlib", None)
     with pytest.raises(ImportError, match=r"pip install 'linecontact\[plot\]'"):
         paper_figures(tmp_path)
+
+
+def test_a_worker_that_dies_is_reported(tmp_path, few, monkeypatch):
+    import os
+
+    drawn_there = figs._share(figs._jobs(), 2)[1][0].stem
+    real_save = figs._save
+
+    def die_there(fig, out, stem, fmts):
+        if stem == drawn_there:
+            os._exit(3)
+        return real_save(fig, out, stem, fmts)
+
+    monkeypatch.setattr(figs, "_save", die_there)
+    with pytest.raises(RuntimeError, match=r"stopped without a result \(exit code 3\)"):
+        paper_figures(tmp_path, processes=2)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 import math
 import re
 import sys
@@ -182,6 +183,16 @@ def _cmd_paper(args) -> int:
     formats = _formats_arg(args.format)
     size = _size_arg(args.size)
     from ..figures import paper_figures
+    from ..figures._style import _mpl
+
+    # Run as the command (not main([...]) in a process that goes on): after the imports,
+    # freeze the objects so that the garbage collector skips them while drawing (and the
+    # forked worker does not copy their pages), and freeze again before the process exits,
+    # which spares the interpreter's final collections over some 10^5 objects (~0.15 s).
+    exiting = getattr(args, "argv", ()) is None
+    if exiting:
+        _mpl()
+        gc.freeze()
 
     def progress(msg: str) -> None:
         print(msg, file=sys.stderr)
@@ -195,6 +206,8 @@ def _cmd_paper(args) -> int:
     print(f"wrote {len(paths)} files to {args.outdir}/:")
     for p in paths:
         print(f"  {p}")
+    if exiting:
+        gc.freeze()
     return 0
 
 

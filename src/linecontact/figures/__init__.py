@@ -218,6 +218,7 @@ def _draw_in_two(
             try:
                 kind, value = recv.recv()
             except EOFError:
+                worker.join()
                 result["done"] = RuntimeError(
                     "the second process drawing the figures stopped without a result "
                     f"(exit code {worker.exitcode})"
