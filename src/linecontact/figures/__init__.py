@@ -200,6 +200,13 @@ def _draw_in_two(
     """
     import multiprocessing
 
+    # build the mathtext grammar (pure Python, ~0.15 s) once, before the fork, rather than
+    # in both processes; the font it loads is opened anew by the worker (matplotlib clears
+    # its font cache after a fork)
+    from matplotlib.mathtext import MathTextParser
+
+    MathTextParser("path").parse("$x$")
+
     ctx = multiprocessing.get_context("fork")
     recv, send = ctx.Pipe(duplex=False)
     worker = ctx.Process(
