@@ -177,3 +177,18 @@ def test_citation_cff_matches():
     )
     for key, cff_key in (("journal", "journal"), ("year", "year"), ("doi", "doi")):
         assert pref.get(cff_key) == PAPER[key], key
+
+
+def test_cite_once_the_details_are_confirmed(capsys, monkeypatch):
+    """Filling in the paper's details (PAPER) puts them in both outputs."""
+    details = dict(journal="J. Test", year=2005, volume=18, pages="215-222", doi="10.1/x_y")
+    for key, value in details.items():
+        monkeypatch.setitem(PAPER, key, value)
+    code, out, _ = run_cli(capsys, "cite")
+    assert code == 0
+    assert '", J. Test 18 (2005) 215-222, doi:10.1/x_y' in out and "not confirmed" not in out
+    code, out, _ = run_cli(capsys, "cite", "--bibtex")
+    kind, fields = _bib_entries(out)["sari_adams_muftu"]
+    assert kind == "article" and "note" not in fields
+    assert fields["journal"] == "J. Test" and fields["year"] == "2005"
+    assert fields["pages"] == "215--222" and fields["doi"] == "10.1/x_y"

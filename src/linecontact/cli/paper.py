@@ -93,8 +93,11 @@ def _bib_escape(text: str) -> str:
 
 
 def _bib_entry(kind: str, key: str, fields: list[tuple[str, object]]) -> str:
+    """One BibTeX entry; empty fields are left out, a DOI is not escaped (it is a link)."""
     body = ",\n".join(
-        f"  {name:<9} = {{{_bib_escape(str(value))}}}" for name, value in fields if value
+        f"  {name:<9} = {{{value if name == 'doi' else _bib_escape(str(value))}}}"
+        for name, value in fields
+        if value
     )
     return f"@{kind}{{{key},\n{body}\n}}"
 
@@ -109,7 +112,9 @@ def citation_bibtex() -> str:
         [
             ("author", authors),
             ("title", f"{{{PAPER['title']}}}"),
-            *((k, PAPER[k]) for k in _PAPER_FIELDS),
+            *((k, PAPER[k]) for k in ("journal", "year", "volume")),
+            ("pages", re.sub(r"(?<!-)-(?!-)", "--", str(PAPER["pages"] or "")) or None),
+            ("doi", PAPER["doi"]),
             ("note", f"{', '.join(missing)} not confirmed" if missing else None),
         ],
     )
