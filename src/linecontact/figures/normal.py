@@ -44,7 +44,7 @@ All curves depend on ``(R/h, sigma0/E)`` only through
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+from collections.abc import Iterable
 
 import numpy as np
 
@@ -56,6 +56,9 @@ from ._style import (
     _FILLED_KW,
     _OPEN_KW,
     _PO_KW,
+    Job,
+    Margins,
+    Run,
     _branch_lines,
     _colors,
     _legends,
@@ -93,10 +96,13 @@ ZERO_WIDTH_SIGMA0_MAX = 0.1
 
 
 def _branch_data(rho: float, sigmas: Iterable[float]) -> list[dict]:
-    """Closed-form (dense), collocation (sparse) and pull-off data, one dict per sigma0/E."""
+    """Closed-form (dense), collocation (sparse) and pull-off data, one dict per sigma0/E.
+
+    Every solver is called once for all the curves (the solvers are vectorised).
+    """
     sig = np.asarray(tuple(sigmas), dtype=float)
     rhos = np.full(sig.shape, rho)
-    po = pull_off(rhos, sig)  # arrays: one vectorised call for all curves
+    po = pull_off(rhos, sig)
     # the a -> 0 limit of the contact branch is the touching non-contact state (g0 = 0)
     c_touch = non_contact(np.zeros(sig.shape), rhos, sig).c_over_R
     a_col = np.linspace(A_MAX_OVER_R / N_COLLOCATION_MARKERS, A_MAX_OVER_R, N_COLLOCATION_MARKERS)
@@ -104,26 +110,32 @@ def _branch_data(rho: float, sigmas: Iterable[float]) -> list[dict]:
         np.geomspace(A_MAX_OVER_R * 1e-6, A_MAX_OVER_R, 120),
         np.linspace(A_MAX_OVER_R / 500, A_MAX_OVER_R, 500),
     )
+    cf = normal_contact(base[None, :], rho, sig[:, None])
+    col = normal_contact(a_col[None, :], rho, sig[:, None], method="collocation")
+    # a snap-off curve also gets the point of its load minimum, where the dotted part ends
+    a_min = np.asarray(po.a_over_R_at_minimum, dtype=float)
+    snap = np.asarray(po.mechanism) == "snap-off"
+    extra = snap & (a_min < A_MAX_OVER_R) & ~np.isin(a_min, base)
+    at_min = normal_contact(a_min[extra], rho, sig[extra]) if extra.any() else None
     out = []
     for i, s in enumerate(sig):
-        a_min = float(po.a_over_R_at_minimum[i])
-        snap = po.mechanism[i] == "snap-off"
-        a = np.union1d(base, [a_min]) if snap and a_min < A_MAX_OVER_R else base
-        cf = normal_contact(a, rho, s)
-        col = normal_contact(a_col, rho, s, method="collocation")
-        F0 = float(po.F_zero_width_over_Eh[i])
-        c0 = float(c_touch[i])
+        a, F, c = base, cf.F_over_Eh[i], cf.c_over_R[i]
+        if extra[i]:
+            j, k = int(np.count_nonzero(extra[:i])), int(np.searchsorted(base, a_min[i]))
+            a = np.insert(a, k, a_min[i])
+            F = np.insert(F, k, at_min.F_over_Eh[j])
+            c = np.insert(c, k, at_min.c_over_R[j])
         out.append(
             dict(
                 sigma=float(s),
                 # the a -> 0 limit (Eq. 14 and the zero-width adhesive zone) closes each line
                 a=np.concatenate([[0.0], a]),
-                F=np.concatenate([[F0], cf.F_over_Eh]),
-                c=np.concatenate([[c0], cf.c_over_R]),
-                unstable=np.concatenate([[snap], snap & (a <= a_min)]),
+                F=np.concatenate([[float(po.F_zero_width_over_Eh[i])], F]),
+                c=np.concatenate([[float(c_touch[i])], c]),
+                unstable=np.concatenate([[snap[i]], snap[i] & (a <= a_min[i])]),
                 a_col=a_col,
-                F_col=col.F_over_Eh,
-                c_col=col.c_over_R,
+                F_col=col.F_over_Eh[i],
+                c_col=col.c_over_R[i],
                 a_po=float(po.a_over_R_at_pulloff[i]),
                 F_po=float(po.F_pulloff_over_Eh[i]),
                 c_po=float(po.c_over_R_at_pulloff[i]),
@@ -160,9 +172,12 @@ _STYLE_BRANCH = [
 ]
 
 
-def _load_figure(number: int, rho: float, data: list[dict]):
+def _load_figure(run: Run, number: int, rho: float):
     """Figs. 2, 3: F/(Eh) versus a/R."""
+    data = _data(run, rho)
     fig, ax = _new_axes(
+        run,
+        Margins(0.813, 2.214),
         f"Fig. {number} ({_CITE}): normal load, $R/h = {rho:g}$",
         r"contact half-width $a/R$",
         r"load $F/(Eh)$",
@@ -201,9 +216,12 @@ def _load_figure(number: int, rho: float, data: list[dict]):
     return fig
 
 
-def _zone_figure(number: int, rho: float, data: list[dict]):
+def _zone_figure(run: Run, number: int, rho: float):
     """Figs. 4, 5: c/R versus a/R."""
+    data = _data(run, rho)
     fig, ax = _new_axes(
+        run,
+        Margins(0.783, 2.144),
         f"Fig. {number} ({_CITE}): adhesive-zone width, $R/h = {rho:g}$",
         r"contact half-width $a/R$",
         r"adhesive-zone half-width $c/R$",
@@ -222,9 +240,11 @@ def _zone_figure(number: int, rho: float, data: list[dict]):
     return fig
 
 
-def _zero_width_figure():
+def _zero_width_figure(run: Run):
     """Fig. 6: Eq. (14) versus sigma0/E, with the true pull-off force as markers."""
     fig, ax = _new_axes(
+        run,
+        Margins(0.813, 2.391, top=0.349),
         f"Fig. 6 ({_CITE}): zero-contact-width force, Eq. (14)",
         r"adhesive stress $\sigma_0/E$",
         r"load $F/(Eh)$",
@@ -262,20 +282,22 @@ def _zero_width_figure():
     return fig
 
 
-def jobs(progress: Callable[[str], object]) -> list[tuple[str, Callable]]:
-    """(file stem, figure builder) pairs of Figs. 2--6; the load curves are computed here."""
+def _data(run: Run, rho: float) -> list[dict]:
+    """The load curves of ``R/h = rho``, computed once per run for Figs. 2--5."""
+    return run.data(
+        ("normal", rho),
+        lambda: _branch_data(rho, LOAD_SIGMA0_OVER_E),
+        f"load curves for R/h = {rho:g} ({len(LOAD_SIGMA0_OVER_E)} values of sigma0/E)",
+    )
+
+
+def jobs() -> list[Job]:
+    """The figures of Figs. 2--6; Figs. 2 and 4 (3 and 5) draw the same load curves."""
     rho_a, rho_b = LOAD_R_OVER_H
-    data = {}
-    for rho in LOAD_R_OVER_H:
-        progress(
-            f"computing load curves for R/h = {rho:g} "
-            f"({len(LOAD_SIGMA0_OVER_E)} values of sigma0/E)"
-        )
-        data[rho] = _branch_data(rho, LOAD_SIGMA0_OVER_E)
     return [
-        ("fig02_load_R100", lambda: _load_figure(2, rho_a, data[rho_a])),
-        ("fig03_load_R200", lambda: _load_figure(3, rho_b, data[rho_b])),
-        ("fig04_zone_R100", lambda: _zone_figure(4, rho_a, data[rho_a])),
-        ("fig05_zone_R200", lambda: _zone_figure(5, rho_b, data[rho_b])),
-        ("fig06_zero_width", _zero_width_figure),
+        Job("fig02_load_R100", lambda run: _load_figure(run, 2, rho_a), "normal-a", 0.27),
+        Job("fig03_load_R200", lambda run: _load_figure(run, 3, rho_b), "normal-b", 0.24),
+        Job("fig04_zone_R100", lambda run: _zone_figure(run, 4, rho_a), "normal-a", 0.17),
+        Job("fig05_zone_R200", lambda run: _zone_figure(run, 5, rho_b), "normal-b", 0.17),
+        Job("fig06_zero_width", _zero_width_figure, "fig06", 0.20),
     ]

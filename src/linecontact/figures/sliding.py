@@ -35,12 +35,24 @@ limit. ``a/R`` runs up to :data:`A_MAX_OVER_R` = 0.1, as in Figs. 2--5.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from types import SimpleNamespace
 
 import numpy as np
 
 from ..sliding import SlidingContact, sliding_contact, sliding_pull_off
-from ._style import _CITE, _COL_KW, _PO_KW, _branch_lines, _colors, _legends, _mpl, _new_axes
+from ._style import (
+    _CITE,
+    _COL_KW,
+    _PO_KW,
+    Job,
+    Margins,
+    Run,
+    _branch_lines,
+    _colors,
+    _legends,
+    _new_axes,
+    _new_figure,
+)
 
 __all__ = [
     "A_MAX_OVER_R",
@@ -66,14 +78,46 @@ N_COLLOCATION_MARKERS = 12
 SCHEMATIC = dict(a_over_R=0.08, R_over_h2=100.0, h1_over_h2=3.0, sigma0_over_E=0.02)
 
 
-def _curves(s: float) -> list[dict]:
+def _pull_off(run: Run, s: float) -> SimpleNamespace:
+    """The pull-off of every h1/h2 at ``sigma0/E = s``.
+
+    One call for every curve of Figs. 9--12 (both values of sigma0/E: the solver is
+    vectorised), computed once per run; the columns of ``s`` are returned.
+    """
+
+    def compute():
+        r = np.asarray(H1_OVER_H2)[:, None]
+        return sliding_pull_off(R_OVER_H2, r, np.asarray(SIGMA0_OVER_E)[None, :])
+
+    po = run.data("sliding-pulloff", compute, "steady-sliding pull-off")
+    j = SIGMA0_OVER_E.index(s)
+    keys = (
+        "mechanism",
+        "a_over_R_at_pulloff",
+        "c1_over_R_zero_width",
+        "c2_over_R_zero_width",
+        "F_zero_width_over_Eh2",
+    )
+    return SimpleNamespace(**{k: np.asarray(getattr(po, k))[:, j] for k in keys})
+
+
+def _data(run: Run, s: float) -> list[dict]:
+    """The curves of ``sigma0/E = s``, computed once per run for Figs. 9--12."""
+    return run.data(
+        ("sliding", s),
+        lambda: _curves(s, _pull_off(run, s)),
+        f"steady-sliding curves (R/h2 = {R_OVER_H2:g}, sigma0/E = {s:g}, "
+        f"{len(H1_OVER_H2)} values of h1/h2)",
+    )
+
+
+def _curves(s: float, po) -> list[dict]:
     """Closed-form lines, collocation markers, limits and pull-off, one dict per h1/h2."""
     r = np.asarray(H1_OVER_H2)
     base = np.union1d(
         np.geomspace(A_MAX_OVER_R * 1e-5, A_MAX_OVER_R, 100),
         np.linspace(A_MAX_OVER_R / 300, A_MAX_OVER_R, 300),
     )
-    po = sliding_pull_off(R_OVER_H2, r, s)
     cf = sliding_contact(base[None, :], R_OVER_H2, r[:, None], s, method="closed-form")
     a_col = np.linspace(A_MAX_OVER_R / N_COLLOCATION_MARKERS, A_MAX_OVER_R, N_COLLOCATION_MARKERS)
     col = sliding_contact(a_col[None, :], R_OVER_H2, r[:, None], s)
@@ -113,9 +157,13 @@ def _r_colors(n: int) -> list:
     return _colors(n)
 
 
-def _curve_figure(number: int, s: float, data: list[dict], key: str):
+def _curve_figure(run: Run, number: int, s: float, key: str):
+    data = _data(run, s)
+    margins = Margins(0.873 if number == 11 else 0.783, 2.214)
     if key == "d":
         fig, ax = _new_axes(
+            run,
+            margins,
             f"Fig. {number} ({_CITE}): difference of the adhesive zones in steady sliding, "
             f"$R/h_2 = {R_OVER_H2:g}$, $\\sigma_0/E = {s:g}$",
             r"contact half-width $a/R$",
@@ -123,6 +171,8 @@ def _curve_figure(number: int, s: float, data: list[dict], key: str):
         )
     else:
         fig, ax = _new_axes(
+            run,
+            margins,
             f"Fig. {number} ({_CITE}): moment in steady sliding, "
             f"$R/h_2 = {R_OVER_H2:g}$, $\\sigma_0/E = {s:g}$",
             r"contact half-width $a/R$",
@@ -155,9 +205,8 @@ def _curve_figure(number: int, s: float, data: list[dict], key: str):
     return fig
 
 
-def _schematic():
+def _schematic(run: Run):
     """Fig. 8 drawn from a computed state: the gap (top) and the pressure (bottom)."""
-    Figure, FigureCanvasAgg, _, _ = _mpl()
     par = SCHEMATIC
     st: SlidingContact = sliding_contact(**par, method="closed-form")
     col = sliding_contact(**par)
@@ -169,9 +218,11 @@ def _schematic():
     gap = st.gap(x)
     p = st.pressure(x)
 
-    fig = Figure(figsize=(9.6, 7.2))
-    FigureCanvasAgg(fig)
-    ax1, ax2 = fig.subplots(2, 1, sharex=True, gridspec_kw=dict(height_ratios=(1.0, 1.25)))
+    # two panels: as wide as the other figures and a third taller
+    fig = _new_figure(run, Margins(0.903, 0.15, bottom=0.756, top=0.502), height_scale=4 / 3)
+    ax1, ax2 = fig.subplots(
+        2, 1, sharex=True, gridspec_kw=dict(height_ratios=(1.0, 1.25), hspace=0.07)
+    )
     fig.suptitle(
         f"Fig. 8 ({_CITE}): steady sliding, computed  —  $R/h_2 = {par['R_over_h2']:g}$, "
         f"$h_1/h_2 = {r:g}$, $\\sigma_0/E = {s:g}$, $a/R = {a:g}$",
@@ -278,19 +329,13 @@ def _schematic():
     return fig
 
 
-def jobs(progress: Callable[[str], object]) -> list[tuple[str, Callable]]:
-    """(stem, builder) pairs of Figs. 8--12 for :func:`linecontact.figures.paper_figures`."""
-    progress(
-        f"computing steady-sliding curves (R/h2 = {R_OVER_H2:g}, "
-        f"{len(H1_OVER_H2)} values of h1/h2, sigma0/E = "
-        f"{', '.join(f'{s:g}' for s in SIGMA0_OVER_E)})"
-    )
-    data = {s: _curves(s) for s in SIGMA0_OVER_E}
+def jobs() -> list[Job]:
+    """The figures of Figs. 8--12; Figs. 9--12 draw the curves of one pull-off computation."""
     s_a, s_b = SIGMA0_OVER_E
     return [
-        ("fig08_sliding_schematic", _schematic),
-        ("fig09_zone_difference_s001", lambda: _curve_figure(9, s_a, data[s_a], "d")),
-        ("fig10_zone_difference_s004", lambda: _curve_figure(10, s_b, data[s_b], "d")),
-        ("fig11_moment_s001", lambda: _curve_figure(11, s_a, data[s_a], "M")),
-        ("fig12_moment_s004", lambda: _curve_figure(12, s_b, data[s_b], "M")),
+        Job("fig08_sliding_schematic", _schematic, "fig08", 0.38),
+        Job("fig09_zone_difference_s001", lambda r: _curve_figure(r, 9, s_a, "d"), "sliding", 0.4),
+        Job("fig10_zone_difference_s004", lambda r: _curve_figure(r, 10, s_b, "d"), "sliding", 0.2),
+        Job("fig11_moment_s001", lambda r: _curve_figure(r, 11, s_a, "M"), "sliding", 0.21),
+        Job("fig12_moment_s004", lambda r: _curve_figure(r, 12, s_b, "M"), "sliding", 0.19),
     ]

@@ -40,8 +40,6 @@ fig14_rolling_creep
 
 from __future__ import annotations
 
-from collections.abc import Callable
-
 import numpy as np
 
 from ..tangential import (
@@ -51,6 +49,7 @@ from ..tangential import (
     steady_rolling_coulomb,
 )
 from . import _style as _fig
+from ._style import Job, Margins, Run
 
 __all__ = ["N_COLLOCATION_MARKERS", "TAU0_OVER_E", "jobs"]
 
@@ -93,8 +92,10 @@ def _styles(eq: str, coulomb: str) -> list:
     ]
 
 
-def _fig07():
+def _fig07(run: Run):
     fig, ax = _fig._new_axes(
+        run,
+        Margins(0.873, 2.924, top=0.349),
         f"Fig. 7 ({_fig._CITE}): initiation of sliding",
         r"stick-zone half-width $d/a$",
         r"tangential force $T/(Ea)$",
@@ -140,25 +141,44 @@ def _rolling_d():
     )
 
 
-def _fig13():
+def _rolling_data(run: Run) -> dict:
+    """Closed form, collocation and Coulomb (Carter) rolling, drawn by Figs. 13 and 14."""
+
+    def compute():
+        d = _rolling_d()
+        d_col = np.linspace(-0.92, 0.92, N_COLLOCATION_MARKERS)
+        t0 = np.asarray(TAU0_OVER_E)[:, None]
+        return dict(
+            d=d,
+            d_col=d_col,
+            closed=steady_rolling(t0, d[None, :]),
+            col=steady_rolling(t0, d_col[None, :], method="collocation"),
+            coulomb=[steady_rolling_coulomb(_coulomb_mu(t), _A_OVER_R, d) for t in TAU0_OVER_E],
+        )
+
+    return run.data("rolling", compute, f"steady rolling ({len(TAU0_OVER_E)} values of tau0/E)")
+
+
+def _fig13(run: Run):
+    r = _rolling_data(run)
     fig, ax = _fig._new_axes(
+        run,
+        Margins(0.873, 2.404, top=0.349),
         f"Fig. 13 ({_fig._CITE}): steady rolling of a driving cylinder, tractive force",
         r"start of the leading-edge stick zone $d/a$ (stick: $d < x < a$)",
         r"tractive force $T/(Ea)$",
     )
     colors = _fig._colors(len(TAU0_OVER_E))
-    d = _rolling_d()
-    d_col = np.linspace(-0.92, 0.92, N_COLLOCATION_MARKERS)
-    for t0, col in zip(TAU0_OVER_E, colors, strict=True):
+    d, d_col = r["d"], r["d_col"]
+    for i, (t0, col) in enumerate(zip(TAU0_OVER_E, colors, strict=True)):
         ax.plot(
             np.concatenate([[-1], d, [1]]),
-            np.concatenate([[0], steady_rolling(t0, d).T_over_Ea, [2 * t0]]),
+            np.concatenate([[0], r["closed"].T_over_Ea[i], [2 * t0]]),
             color=col,
             lw=1.8,
         )
-        c = steady_rolling(t0, d_col, method="collocation")
-        ax.plot(d_col, c.T_over_Ea, color=col, **_fig._COL_KW, zorder=5)
-        cm = steady_rolling_coulomb(_coulomb_mu(t0), _A_OVER_R, d)
+        ax.plot(d_col, r["col"].T_over_Ea[i], color=col, **_fig._COL_KW, zorder=5)
+        cm = r["coulomb"][i]
         ax.plot(
             np.concatenate([[-1], d, [1]]),
             np.concatenate([[0], cm.T_over_Ea, [2 * t0]]),
@@ -181,25 +201,26 @@ def _fig13():
     return fig
 
 
-def _fig14():
+def _fig14(run: Run):
+    r = _rolling_data(run)
     fig, ax = _fig._new_axes(
+        run,
+        Margins(0.953, 2.404, top=0.349),
         f"Fig. 14 ({_fig._CITE}): steady rolling of a driving cylinder, creep",
         r"start of the leading-edge stick zone $d/a$ (stick: $d < x < a$)",
         r"creep velocity $\dot C/V = (V - \omega R)/V$",
     )
     colors = _fig._colors(len(TAU0_OVER_E))
-    d = _rolling_d()
-    d_col = np.linspace(-0.92, 0.92, N_COLLOCATION_MARKERS)
-    for t0, col in zip(TAU0_OVER_E, colors, strict=True):
+    d, d_col = r["d"], r["d_col"]
+    for i, (t0, col) in enumerate(zip(TAU0_OVER_E, colors, strict=True)):
         ax.plot(
             np.concatenate([[-1], d]),
-            np.concatenate([[0], steady_rolling(t0, d).creep_over_V]),
+            np.concatenate([[0], r["closed"].creep_over_V[i]]),
             color=col,
             lw=1.8,
         )
-        c = steady_rolling(t0, d_col, method="collocation")
-        ax.plot(d_col, c.creep_over_V, color=col, **_fig._COL_KW, zorder=5)
-        cm = steady_rolling_coulomb(_coulomb_mu(t0), _A_OVER_R, d)
+        ax.plot(d_col, r["col"].creep_over_V[i], color=col, **_fig._COL_KW, zorder=5)
+        cm = r["coulomb"][i]
         ax.plot(
             np.concatenate([[-1], d, [1]]),
             np.concatenate([[0], cm.creep_over_V, [-_coulomb_mu(t0) * _A_OVER_R]]),
@@ -233,10 +254,10 @@ def _fig14():
     return fig
 
 
-def jobs() -> list[tuple[str, Callable]]:
-    """The (file stem, figure builder) pairs of Figs. 7, 13 and 14."""
+def jobs() -> list[Job]:
+    """The figures of Figs. 7, 13 and 14; Figs. 13 and 14 draw the same rolling states."""
     return [
-        ("fig07_sliding_initiation", _fig07),
-        ("fig13_rolling_force", _fig13),
-        ("fig14_rolling_creep", _fig14),
+        Job("fig07_sliding_initiation", _fig07, "fig07", 0.20),
+        Job("fig13_rolling_force", _fig13, "rolling", 0.24),
+        Job("fig14_rolling_creep", _fig14, "rolling", 0.21),
     ]
