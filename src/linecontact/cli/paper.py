@@ -6,6 +6,7 @@ import gc
 import math
 import re
 import sys
+from typing import Any
 
 from .._version import __version__
 
@@ -15,7 +16,7 @@ from .._version import __version__
 #: The founding paper. Only fields confirmed from a source are filled in; journal, year,
 #: volume, pages and DOI could not be confirmed when this was written (see CITATION.cff)
 #: and are left out rather than guessed: fill them in here and in CITATION.cff together.
-PAPER: dict[str, object] = {
+PAPER: dict[str, Any] = {
     "authors": (("Sari", "I."), ("Adams", "G. G."), ("Müftü", "S.")),
     "title": "Nano-scale effects in the adherence, sliding and rolling of a cylinder on a "
     "substrate",

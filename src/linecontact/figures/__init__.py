@@ -131,7 +131,6 @@ def _draw(
     say: Callable[[str], object],
 ) -> dict[str, list[pathlib.Path]]:
     """Draw and save ``jobs`` in this process; the files of each figure by stem."""
-
     run = Run(size=size, say=say)
     done = {}
     for job in jobs:

@@ -268,7 +268,7 @@ def _save(fig, outdir: pathlib.Path, stem: str, formats: tuple[str, ...]) -> lis
                 if fmt == "png":
                     _write_png(fig, fh, tag)
                 else:
-                    meta = {"Creator": tag}
+                    meta: dict[str, str | None] = {"Creator": tag}
                     if fmt == "svg":
                         meta["Date"] = None
                     fig.savefig(fh, format=fmt, dpi=DPI, metadata=meta)

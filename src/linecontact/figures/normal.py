@@ -20,8 +20,9 @@ fig02_load_R100, fig03_load_R200
     load control); markers: the paper's route, Gauss--Chebyshev collocation of Eq. (9), at
     :data:`N_COLLOCATION_MARKERS` points per curve; dashed black: Hertz (Eq. 13); dashed
     grey: JKR line contact (``w = sigma0 h``) for the largest ``sigma0/E``; open circles:
-    pull-off, at ``a = 0`` on Eq. (14) for the zero-width mechanism. Lines are continued to
-    their ``a -> 0`` limit, Eq. (14).
+    pull-off, at the load minimum (for the zero-width mechanism at a width below ``h``,
+    indistinguishable from ``a = 0`` on Eq. 14 at this scale). Lines are continued to their
+    ``a -> 0`` limit, Eq. (14).
 fig04_zone_R100, fig05_zone_R200
     Adhesive-zone half-width ``c/R`` versus ``a/R``, same ``R/h``, ``sigma0/E`` and styles;
     at ``a -> 0`` the lines end on the adhesive zone of the touching state (central gap
@@ -32,10 +33,11 @@ fig06_zero_width
     (:data:`ZERO_WIDTH_SIGMA0_MAX`) for ``R/h`` in :data:`ZERO_WIDTH_R_OVER_H` = 10, 50,
     100, 200, 500, 1000 (the paper: "different cylinder radii", values not given; these
     span two decades around the ``R/h`` of Figs. 2--3). Markers: the true pull-off force,
-    open where it is Eq. (14) (zero-width mechanism), filled where the contact snaps off
-    at a lower load; the fan of filled markers below the lines shows where Eq. (14) stops
-    being the pull-off force. The dotted line is the ``sigma0/E -> inf`` limit of Eq. (14),
-    ``-pi/(2 ln 2)``, independent of ``R/h``.
+    open where the contact peels to a width below ``h`` (zero-width mechanism: the load is
+    then within a small fraction of Eq. 14), filled where it snaps off from a width of at
+    least ``h`` at a lower load; the fan of filled markers below the lines shows where
+    Eq. (14) stops being the pull-off force. The dotted line is the ``sigma0/E -> inf``
+    limit of Eq. (14), ``-pi/(2 ln 2)``, independent of ``R/h``.
 
 All curves depend on ``(R/h, sigma0/E)`` only through
 :math:`\kappa = (4/\pi)(\sigma_0/E)\sqrt{2R/h}` once ``a/R`` is scaled by ``sqrt(R/h)``
@@ -104,7 +106,7 @@ def _branch_data(rho: float, sigmas: Iterable[float]) -> list[dict]:
     rhos = np.full(sig.shape, rho)
     po = pull_off(rhos, sig)
     # the a -> 0 limit of the contact branch is the touching non-contact state (g0 = 0)
-    c_touch = non_contact(np.zeros(sig.shape), rhos, sig).c_over_R
+    c_touch = np.asarray(non_contact(np.zeros(sig.shape), rhos, sig).c_over_R)
     a_col = np.linspace(A_MAX_OVER_R / N_COLLOCATION_MARKERS, A_MAX_OVER_R, N_COLLOCATION_MARKERS)
     base = np.union1d(
         np.geomspace(A_MAX_OVER_R * 1e-6, A_MAX_OVER_R, 120),
@@ -112,34 +114,42 @@ def _branch_data(rho: float, sigmas: Iterable[float]) -> list[dict]:
     )
     cf = normal_contact(base[None, :], rho, sig[:, None])
     col = normal_contact(a_col[None, :], rho, sig[:, None], method="collocation")
-    # a snap-off curve also gets the point of its load minimum, where the dotted part ends
+    cfF, cfc = np.asarray(cf.F_over_Eh), np.asarray(cf.c_over_R)
+    colF, colc = np.asarray(col.F_over_Eh), np.asarray(col.c_over_R)
+    F0s, a_pos = np.asarray(po.F_zero_width_over_Eh), np.asarray(po.a_over_R_at_pulloff)
+    F_pos, c_pos = np.asarray(po.F_pulloff_over_Eh), np.asarray(po.c_over_R_at_pulloff)
+    mechs = np.asarray(po.mechanism)
+    # a curve with an interior load minimum (a snap-off, or a zero-width pull-off below the
+    # range h) also gets the point of the minimum, where the dotted (unstable) part ends
     a_min = np.asarray(po.a_over_R_at_minimum, dtype=float)
-    snap = np.asarray(po.mechanism) == "snap-off"
-    extra = snap & (a_min < A_MAX_OVER_R) & ~np.isin(a_min, base)
+    interior = a_min > 0
+    extra = interior & (a_min < A_MAX_OVER_R) & ~np.isin(a_min, base)
     at_min = normal_contact(a_min[extra], rho, sig[extra]) if extra.any() else None
+    at_F = np.atleast_1d(np.asarray(at_min.F_over_Eh)) if at_min is not None else None
+    at_c = np.atleast_1d(np.asarray(at_min.c_over_R)) if at_min is not None else None
     out = []
     for i, s in enumerate(sig):
-        a, F, c = base, cf.F_over_Eh[i], cf.c_over_R[i]
-        if extra[i]:
+        a, F, c = base, cfF[i], cfc[i]
+        if extra[i] and at_F is not None and at_c is not None:
             j, k = int(np.count_nonzero(extra[:i])), int(np.searchsorted(base, a_min[i]))
             a = np.insert(a, k, a_min[i])
-            F = np.insert(F, k, at_min.F_over_Eh[j])
-            c = np.insert(c, k, at_min.c_over_R[j])
+            F = np.insert(F, k, at_F[j])
+            c = np.insert(c, k, at_c[j])
         out.append(
             dict(
                 sigma=float(s),
                 # the a -> 0 limit (Eq. 14 and the zero-width adhesive zone) closes each line
                 a=np.concatenate([[0.0], a]),
-                F=np.concatenate([[float(po.F_zero_width_over_Eh[i])], F]),
+                F=np.concatenate([[float(F0s[i])], F]),
                 c=np.concatenate([[float(c_touch[i])], c]),
-                unstable=np.concatenate([[snap[i]], snap[i] & (a <= a_min[i])]),
+                unstable=np.concatenate([[interior[i]], interior[i] & (a <= a_min[i])]),
                 a_col=a_col,
-                F_col=col.F_over_Eh[i],
-                c_col=col.c_over_R[i],
-                a_po=float(po.a_over_R_at_pulloff[i]),
-                F_po=float(po.F_pulloff_over_Eh[i]),
-                c_po=float(po.c_over_R_at_pulloff[i]),
-                mechanism=str(po.mechanism[i]),
+                F_col=colF[i],
+                c_col=colc[i],
+                a_po=float(a_pos[i]),
+                F_po=float(F_pos[i]),
+                c_po=float(c_pos[i]),
+                mechanism=str(mechs[i]),
             )
         )
     return out
@@ -253,14 +263,14 @@ def _zero_width_figure(run: Run):
     colors = _colors(rhos.size)
     s_line = np.linspace(0.0, ZERO_WIDTH_SIGMA0_MAX, 300)
     s_mark = np.linspace(ZERO_WIDTH_SIGMA0_MAX / 12, ZERO_WIDTH_SIGMA0_MAX, 12)
-    F_line = _ref.zero_width_load(rhos[:, None], s_line[None, :])
+    F_line = np.asarray(_ref.zero_width_load(rhos[:, None], s_line[None, :]))
     po = pull_off(rhos[:, None], s_mark[None, :])
     ax.axhline(0.0, color="0.3", lw=0.8)
     ax.axhline(-np.pi / (2 * _ref.LN2), color="0.5", ls=":", lw=1.0)
     for i, col in enumerate(colors):
         ax.plot(s_line, F_line[i], color=col, lw=1.8)
-        snap = po.mechanism[i] == "snap-off"
-        F = po.F_pulloff_over_Eh[i]
+        snap = np.asarray(po.mechanism)[i] == "snap-off"
+        F = np.asarray(po.F_pulloff_over_Eh)[i]
         ax.plot(s_mark[~snap], F[~snap], color=col, mec=col, **_OPEN_KW)
         ax.plot(s_mark[snap], F[snap], color=col, mec=col, **_FILLED_KW)
     ax.set_xlim(0.0, ZERO_WIDTH_SIGMA0_MAX * 1.02)
@@ -271,8 +281,11 @@ def _zero_width_figure(run: Run):
         [f"{r:g}" for r in rhos],
         [
             ("Eq. 14 (zero contact width)", dict(color="0.2", lw=1.8)),
-            ("pull-off = Eq. 14\n(peels to zero width)", dict(color="0.2", **_OPEN_KW)),
-            ("pull-off below Eq. 14\n(snap-off at finite width)", dict(color="0.2", **_FILLED_KW)),
+            (
+                "pull-off, peels to zero width\n(a < h: close to Eq. 14)",
+                dict(color="0.2", **_OPEN_KW),
+            ),
+            ("pull-off, snap-off\n(a >= h: below Eq. 14)", dict(color="0.2", **_FILLED_KW)),
             (
                 "Eq. 14 as $\\sigma_0/E\\to\\infty$:\n$-\\pi/(2\\ln 2)$, any $R/h$",
                 dict(color="0.5", ls=":", lw=1.0),

@@ -121,10 +121,17 @@ def _curves(s: float, po) -> list[dict]:
     cf = sliding_contact(base[None, :], R_OVER_H2, r[:, None], s, method="closed-form")
     a_col = np.linspace(A_MAX_OVER_R / N_COLLOCATION_MARKERS, A_MAX_OVER_R, N_COLLOCATION_MARKERS)
     col = sliding_contact(a_col[None, :], R_OVER_H2, r[:, None], s)
-    snap = np.asarray(po.mechanism) == "snap-off"
-    # at the pull-off state itself (snap-off: an interior width; zero width: the limit)
+    # at the pull-off state itself: the load minimum at an interior width (a snap-off, or a
+    # zero-width pull-off below the range h), or else the a -> 0 limit
     a_po = np.asarray(po.a_over_R_at_pulloff)
-    at_po = sliding_contact(np.where(snap, a_po, 1.0), R_OVER_H2, r, s, method="closed-form")
+    interior = a_po > 0
+    at_po = sliding_contact(np.where(interior, a_po, 1.0), R_OVER_H2, r, s, method="closed-form")
+    at_d = np.asarray(at_po.c1_over_R) - np.asarray(at_po.c2_over_R)
+    at_M = np.asarray(at_po.M_over_Eh2R)
+    cf_d = np.asarray(cf.c1_over_R) - np.asarray(cf.c2_over_R)
+    cf_M, cf_stable = np.asarray(cf.M_over_Eh2R), np.asarray(cf.stable)
+    col_d = np.asarray(col.c1_over_R) - np.asarray(col.c2_over_R)
+    col_M = np.asarray(col.M_over_Eh2R)
     out = []
     for i, ri in enumerate(r):
         C1_0, C2_0 = po.c1_over_R_zero_width[i], po.c2_over_R_zero_width[i]
@@ -132,20 +139,20 @@ def _curves(s: float, po) -> list[dict]:
         e0 = (2 * s / np.pi) * np.log(C1_0 / C2_0)  # e = (2 sigma0 R/(pi E))(u1 - u2)
         M0 = s * (ri - 1) + e0 * F0
         d_lim = C1_0 - C2_0
-        if snap[i]:
-            po_xy = (a_po[i], at_po.c1_over_R[i] - at_po.c2_over_R[i], at_po.M_over_Eh2R[i])
+        if interior[i]:
+            po_xy = (a_po[i], at_d[i], at_M[i])
         else:
             po_xy = (0.0, d_lim, M0)
         out.append(
             dict(
                 r=float(ri),
                 a=np.concatenate([[0.0], base]),
-                d=np.concatenate([[d_lim], cf.c1_over_R[i] - cf.c2_over_R[i]]),
-                M=np.concatenate([[M0], cf.M_over_Eh2R[i]]),
-                unstable=np.concatenate([[snap[i]], ~cf.stable[i]]),
+                d=np.concatenate([[d_lim], cf_d[i]]),
+                M=np.concatenate([[M0], cf_M[i]]),
+                unstable=np.concatenate([[interior[i]], ~cf_stable[i]]),
                 a_col=a_col,
-                d_col=col.c1_over_R[i] - col.c2_over_R[i],
-                M_col=col.M_over_Eh2R[i],
+                d_col=col_d[i],
+                M_col=col_M[i],
                 po=po_xy,
                 M_axis=s * (ri - 1),
             )
@@ -208,8 +215,8 @@ def _curve_figure(run: Run, number: int, s: float, key: str):
 def _schematic(run: Run):
     """Fig. 8 drawn from a computed state: the gap (top) and the pressure (bottom)."""
     par = SCHEMATIC
-    st: SlidingContact = sliding_contact(**par, method="closed-form")
-    col = sliding_contact(**par)
+    st: SlidingContact = sliding_contact(**par, method="closed-form")  # type: ignore[arg-type]
+    col = sliding_contact(**par)  # type: ignore[arg-type]
     a, c1, c2, e = st.a_over_R, st.c1_over_R, st.c2_over_R, st.e_over_R
     r, s = par["h1_over_h2"], par["sigma0_over_E"]
     lo, hi = -1.35 * c1, 1.35 * c2
