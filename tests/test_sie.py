@@ -675,3 +675,28 @@ def test_log_moment_derivative_matches_finite_difference():
         up, down = (s.log_moment(sol, 1.5 + np.cosh(v + d)) for d in (h, -h))
         fd = (up - down) / (2 * h)
         assert abs(s.log_moment_derivative(sol, y) - fd) < 1e-7 * max(1.0, abs(fd)), v
+
+
+@pytest.mark.parametrize("N", [1, 2, 3, 4, 7, 48, 49, 97, 256, 1025])
+def test_dct2_is_scipys_type_2_dct(N):
+    import scipy.fft
+
+    from linecontact.sie import dct2
+
+    x = np.random.default_rng(N).standard_normal((3, N))
+    np.testing.assert_allclose(
+        dct2(x), scipy.fft.dct(x, type=2, axis=-1), rtol=0, atol=1e-14 * np.abs(x).sum()
+    )
+
+
+def test_bounded_solve_needs_no_scipy():
+    import subprocess
+    import sys
+
+    code = (
+        "import sys, numpy as np; from linecontact.sie import BoundedSolver; "
+        "s = BoundedSolver(200); s.solve(-s.collocation); "
+        "assert 'scipy' not in sys.modules, sorted(m for m in sys.modules if 'scipy' in m)"
+    )
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert p.returncode == 0, p.stderr

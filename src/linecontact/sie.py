@@ -63,6 +63,7 @@ __all__ = [
     "UnboundedSolver",
     "bounded_rule",
     "chebyshev_log_expansion",
+    "dct2",
     "log_end_moments",
 ]
 
@@ -136,6 +137,29 @@ def _check_rhs(name: str, f: ArrayLike, m: int, what: str) -> NDArray:
         got = "a scalar" if arr.ndim == 0 else arr.shape[-1]
         raise ValueError(f"{name} must have {what} = {m} values on its last axis, got {got}")
     return arr
+
+
+def dct2(x: ArrayLike) -> NDArray[np.float64]:
+    r"""The type-II discrete cosine transform along the last axis, by one complex FFT.
+
+    :math:`y_k = 2\sum_{j=0}^{N-1} x_j\cos(\pi k(2j+1)/(2N))`, ``scipy.fft.dct(x, type=2)``
+    (Makhoul's reordering: even entries forward, odd ones backward, then a phase shift). It
+    uses ``numpy.fft`` so that the collocation needs no SciPy import (0.3--0.4 s).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> x = np.array([1.0, 2.0, 3.0])
+    >>> k, j = np.arange(3)[:, None], np.arange(3)[None, :]
+    >>> bool(np.allclose(dct2(x), 2 * (x * np.cos(np.pi * k * (2 * j + 1) / 6)).sum(axis=1)))
+    True
+    """
+    x = np.asarray(x, dtype=float)
+    N = x.shape[-1]
+    v = np.concatenate([x[..., ::2], x[..., 1::2][..., ::-1]], axis=-1)
+    V = np.fft.fft(v, axis=-1)
+    phase = np.exp(-0.5j * np.pi * np.arange(N) / N)
+    return 2.0 * (V * phase).real
 
 
 def bounded_rule(n: int) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
@@ -323,11 +347,8 @@ class BoundedSolver:
                 lam = -rhs.mean(axis=-1) / s1
             rhs = rhs + lam[..., None] * f1
         if self.n >= _DCT_FROM:
-            # b_j = -(2/(n+1)) sum_k f_k T_{j+1}(x_k) is a type-II DCT of f (scipy.fft is
-            # imported here, not with the package: it takes ~0.2 s)
-            import scipy.fft
-
-            b = -scipy.fft.dct(rhs, type=2, axis=-1)[..., 1:] / (self.n + 1)
+            # b_j = -(2/(n+1)) sum_k f_k T_{j+1}(x_k) is a type-II DCT of f
+            b = -dct2(rhs)[..., 1:] / (self.n + 1)
         else:
             b = rhs @ self._coef_from_f
         g = b @ self._values_from_coef if values else None
