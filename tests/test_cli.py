@@ -355,3 +355,27 @@ def test_version_is_one_line(capsys):
         main(["--version"])
     assert exc.value.code == 0
     assert capsys.readouterr().out == f"linecontact {lc_version}\n"
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["normal", "--R-over-h", "100", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],
+        ["slide-init", "--tau0-over-E", "0.01", "--d-over-a", "0.5"],
+        [
+            "slide",
+            "--R-over-h2",
+            "100",
+            "--h1-over-h2",
+            "2",
+            "--sigma0-over-E",
+            "0.01",
+            "--a-over-R",
+            "0.01",
+        ],
+    ],
+)
+def test_length_needs_si_inputs(capsys, argv):
+    code, out, err = run(capsys, *argv, "--length", "5e-6")
+    assert code == 2 and out == "" and err.count("\n") == 1
+    assert "--length [m] gives the totals of SI forces" in err

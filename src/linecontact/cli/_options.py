@@ -252,8 +252,16 @@ def add_si_materials(p: argparse.ArgumentParser, range_flag: str = "--h") -> Any
 
 
 def si_given(args: argparse.Namespace, extra: Sequence[str] = ()) -> bool:
-    """Whether any SI input (or one of ``extra``) was given."""
-    return any(getattr(args, k, None) is not None for k in (*SI_KEYS, "length", *extra))
+    """Whether any SI input (or one of ``extra``) was given.
+
+    ``--length`` alone is refused: it scales SI forces and means nothing without them.
+    """
+    si = any(getattr(args, k, None) is not None for k in (*SI_KEYS, *extra))
+    if not si and getattr(args, "length", None) is not None:
+        raise ValueError(
+            "--length [m] gives the totals of SI forces: give --radius and the materials too"
+        )
+    return si
 
 
 def cylinder(args: argparse.Namespace, range_flag: str = "--h") -> Cylinder:

@@ -16,7 +16,6 @@ import numpy as np
 from ..output import table_from_result
 from ..sliding import sliding_contact, sliding_contact_for_load, sliding_pull_off
 from ._options import (
-    SI_KEYS,
     add_command,
     add_output_options,
     add_si_materials,
@@ -27,6 +26,7 @@ from ._options import (
     finish,
     half_widths,
     null_missing,
+    si_given,
     si_parameters,
 )
 
@@ -104,11 +104,7 @@ def register(sub: Any) -> None:
 
 def _setup(args: argparse.Namespace):
     """(R/h2, h1/h2, sigma0/E, tau0/E or None, Cylinder or None) from the arguments."""
-    si = (
-        any(getattr(args, k) is not None for k in (*SI_KEYS, "length"))
-        or args.h1 is not None
-        or args.tau0 is not None
-    )
+    si = si_given(args, extra=("h1", "tau0"))
     nd = any(v is not None for v in (args.R_over_h2, args.sigma0_over_E, args.tau0_over_E))
     if si and nd:
         raise ValueError(

@@ -21,7 +21,6 @@ from ..cylinder import Cylinder, cylinder_sliding_initiation, cylinder_steady_ro
 from ..normal import contact_for_load
 from ..output import Table, table_from_result
 from ._options import (
-    SI_KEYS,
     add_command,
     add_groups,
     add_output_options,
@@ -29,6 +28,7 @@ from ._options import (
     cylinder,
     emit,
     finish,
+    si_given,
     si_parameters,
 )
 
@@ -155,7 +155,7 @@ def _given(args: argparse.Namespace, *names: str) -> list[str]:
 
 def _normal_contact(args: argparse.Namespace, coulomb: bool):
     """(a_over_R or None, F_over_Eh or None, Cylinder or None) from the normal inputs."""
-    si = bool(_given(args, *SI_KEYS, "length"))
+    si = si_given(args)
     groups = bool(_given(args, "R_over_h", "sigma0_over_E"))
     if si:
         if groups or args.a_over_R is not None or args.F_over_Eh is not None:
