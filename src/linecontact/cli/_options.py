@@ -185,7 +185,7 @@ def command_line(args: argparse.Namespace) -> list[str]:
 
 def flag_message(message: str, args: argparse.Namespace) -> str:
     """``message`` with the API's parameter names replaced by the flags the user typed."""
-    given = set(args.argv if args.argv is not None else sys.argv[1:])
+    given = {t.split("=", 1)[0] for t in (args.argv if args.argv is not None else sys.argv[1:])}
     names: dict[str, str] = {}
     for dest, flag in getattr(args, "_flags", {}).items():
         names[dest] = flag
