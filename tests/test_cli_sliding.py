@@ -130,11 +130,11 @@ BAD = [
             "--a-over-R",
             "0.01",
         ],
-        "--h1-over-h2 must be in (0, inf), got -1.0",
+        "--h1-over-h2 must be in [0.001, 1000], got -1.0",
     ),
     (
         ["--R-over-h2", "0", "--h1-over-h2", "2", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],
-        "--R-over-h2 must be in (0, inf), got 0.0",
+        "--R-over-h2 must be in [0.001, 1e+12], got 0.0",
     ),
     (
         ["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "nan", "--a-over-R", "0.01"],
@@ -151,7 +151,7 @@ BAD = [
             "--a-over-R",
             "-0.01",
         ],
-        "--a-over-R must be in (0, inf), got -0.01",
+        "--a-over-R must be in [1e-20, 10], got -0.01",
     ),
     (
         ["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.01"],
@@ -212,7 +212,7 @@ BAD = [
             "--a-over-R",
             "0.01",
         ],
-        "--tau0-over-E must be in [0, inf)",
+        "--tau0-over-E must be in [0, 1]",
     ),
 ]
 

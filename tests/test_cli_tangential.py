@@ -226,7 +226,7 @@ def test_si_mode_coulomb_needs_no_adhesion_range(capsys):
 BAD = [
     (
         ["slide-init", "--tau0-over-E", "0", "--d-over-a", "0.5"],
-        "--tau0-over-E must be in (0, inf), got 0.0",
+        "--tau0-over-E must be in [1e-12, 1], got 0.0",
     ),
     (
         ["roll", "--tau0-over-E", "0.01", "--d-over-a", "1.5"],
@@ -238,7 +238,7 @@ BAD = [
     ),
     (
         ["roll", "--tau0-over-E", "nan", "--d-over-a", "0.5"],
-        "--tau0-over-E must be a finite number in (0, inf), got nan",
+        "--tau0-over-E must be a finite number in [1e-12, 1], got nan",
     ),
     (
         ["roll", "--tau0-over-E", "0.01", "--T-over-Ea", "-1"],
@@ -278,7 +278,7 @@ BAD = [
             "--d-over-a",
             "0.5",
         ],
-        "--mu must be in (0, inf), got 0.0",
+        "--mu must be in [1e-06, 100], got 0.0",
     ),
     (
         [

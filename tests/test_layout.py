@@ -19,6 +19,7 @@ FLOORS = {
         "linecontact._version",
         "linecontact.errors",
         "linecontact._validation",
+        "linecontact.domain",
         "linecontact.results",
     ],
     "core": ["linecontact.sie", "linecontact.reference", "linecontact.materials"],

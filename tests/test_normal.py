@@ -745,14 +745,14 @@ def test_load_curve_sizes_and_hertz():
 # bad input: ValueError naming the parameter (the message is part of the API)
 
 BAD_NORMAL = [
-    (normal_contact, (0.0, 100.0, 0.01), {}, r"a_over_R must be in \(0, inf\), got 0\.0"),
-    (normal_contact, (-0.1, 100.0, 0.01), {}, r"a_over_R must be in \(0, inf\), got -0\.1"),
+    (normal_contact, (0.0, 100.0, 0.01), {}, r"a_over_R must be in \[1e-150, 10\], got 0\.0"),
+    (normal_contact, (-0.1, 100.0, 0.01), {}, r"a_over_R must be in \[1e-150, 10\], got -0\.1"),
     (normal_contact, (np.nan, 100.0, 0.01), {}, r"a_over_R must be a finite number"),
     (normal_contact, (np.inf, 100.0, 0.01), {}, r"a_over_R must be a finite number"),
-    (normal_contact, (0.1, 0.0, 0.01), {}, r"R_over_h must be in \(0, inf\), got 0\.0"),
-    (normal_contact, (0.1, -100.0, 0.01), {}, r"R_over_h must be in \(0, inf\)"),
+    (normal_contact, (0.1, 0.0, 0.01), {}, r"R_over_h must be in \[0.001, 1e\+12\], got 0\.0"),
+    (normal_contact, (0.1, -100.0, 0.01), {}, r"R_over_h must be in \[0.001, 1e\+12\]"),
     (normal_contact, (0.1, np.inf, 0.01), {}, r"R_over_h must be a finite number"),
-    (normal_contact, (0.1, 100.0, -0.01), {}, r"sigma0_over_E must be in \[0, inf\)"),
+    (normal_contact, (0.1, 100.0, -0.01), {}, r"sigma0_over_E must be in \[0, 1e\+06\]"),
     (normal_contact, (0.1, 100.0, np.nan), {}, r"sigma0_over_E must be a finite number"),
     (normal_contact, ([0.1, -0.2], 100.0, 0.01), {}, r"a_over_R must be in .* got -0\.2"),
     (
@@ -774,14 +774,14 @@ BAD_NORMAL = [
     (normal_contact, (0.1, 100.0, 0.01), {"tol": 0}, r"tol must be in \[1e-15, 1e-2\), got 0"),
     (normal_contact, (0.1, 100.0, 0.01), {"tol": 0.1}, r"tol must be in \[1e-15, 1e-2\)"),
     (normal_contact, (0.1, 100.0, 0.01), {"tol": np.nan}, r"tol must be in \[1e-15, 1e-2\)"),
-    (pull_off, (0.0, 0.1), {}, r"R_over_h must be in \(0, inf\), got 0\.0"),
+    (pull_off, (0.0, 0.1), {}, r"R_over_h must be in \[0.001, 1e\+12\], got 0\.0"),
     (pull_off, (np.nan, 0.1), {}, r"R_over_h must be a finite number"),
-    (pull_off, (100.0, -0.1), {}, r"sigma0_over_E must be in \[0, inf\), got -0\.1"),
+    (pull_off, (100.0, -0.1), {}, r"sigma0_over_E must be in \[0, 1e\+06\], got -0\.1"),
     (pull_off, (100.0, np.inf), {}, r"sigma0_over_E must be a finite number"),
     (contact_for_load, (np.nan, 100.0, 0.1), {}, r"F_over_Eh must be a finite number"),
     (contact_for_load, (np.inf, 100.0, 0.1), {}, r"F_over_Eh must be a finite number"),
-    (contact_for_load, (1.0, -1.0, 0.1), {}, r"R_over_h must be in \(0, inf\)"),
-    (contact_for_load, (1.0, 100.0, -0.1), {}, r"sigma0_over_E must be in \[0, inf\)"),
+    (contact_for_load, (1.0, -1.0, 0.1), {}, r"R_over_h must be in \[0.001, 1e\+12\]"),
+    (contact_for_load, (1.0, 100.0, -0.1), {}, r"sigma0_over_E must be in \[0, 1e\+06\]"),
     (
         contact_for_load,
         (1.0, 100.0, 0.1),
@@ -791,13 +791,13 @@ BAD_NORMAL = [
     (non_contact, (-0.1, 100.0, 0.1), {}, r"central_gap_over_h must be in \[0, 1\], got -0\.1"),
     (non_contact, (1.5, 100.0, 0.1), {}, r"central_gap_over_h must be in \[0, 1\], got 1\.5"),
     (non_contact, (np.nan, 100.0, 0.1), {}, r"central_gap_over_h must be a finite number"),
-    (non_contact, (0.5, 0.0, 0.1), {}, r"R_over_h must be in \(0, inf\)"),
-    (non_contact, (0.5, 100.0, -1.0), {}, r"sigma0_over_E must be in \[0, inf\)"),
+    (non_contact, (0.5, 0.0, 0.1), {}, r"R_over_h must be in \[0.001, 1e\+12\]"),
+    (non_contact, (0.5, 100.0, -1.0), {}, r"sigma0_over_E must be in \[0, 1e\+06\]"),
     (equilibria, (np.nan, 100.0, 0.1), {}, r"F_over_Eh must be a finite number"),
-    (equilibria, (1.0, 0.0, 0.1), {}, r"R_over_h must be in \(0, inf\)"),
+    (equilibria, (1.0, 0.0, 0.1), {}, r"R_over_h must be in \[0.001, 1e\+12\]"),
     (load_curve, (100.0, 0.1), {"num": 1}, r"num must be an integer >= 2, got 1"),
     (load_curve, (100.0, 0.1), {"num_noncontact": 1.5}, r"num_noncontact must be an integer"),
-    (load_curve, (100.0, 0.1), {"a_max_over_R": -1.0}, r"a_max_over_R must be in \(0, inf\)"),
+    (load_curve, (100.0, 0.1), {"a_max_over_R": -1.0}, r"a_max_over_R must be in \[1e-100, 10\]"),
 ]
 
 

@@ -400,13 +400,13 @@ def test_scalars_in_scalars_out_and_broadcasting():
 
 
 BAD = [
-    (dict(a_over_R=0.0), "a_over_R must be in \\(0, inf\\), got 0.0"),
-    (dict(a_over_R=np.nan), "a_over_R must be a finite number in \\(0, inf\\), got nan"),
-    (dict(R_over_h2=-1.0), "R_over_h2 must be in \\(0, inf\\), got -1.0"),
-    (dict(h1_over_h2=-1.0), "h1_over_h2 must be in \\(0, inf\\), got -1.0"),
-    (dict(h1_over_h2=np.inf), "h1_over_h2 must be a finite number in \\(0, inf\\), got inf"),
-    (dict(sigma0_over_E=-0.1), "sigma0_over_E must be in \\[0, inf\\), got -0.1"),
-    (dict(tau0_over_E=-1.0), "tau0_over_E must be in \\[0, inf\\), got -1.0"),
+    (dict(a_over_R=0.0), "a_over_R must be in \\[1e-20, 10\\], got 0.0"),
+    (dict(a_over_R=np.nan), "a_over_R must be a finite number in \\[1e-20, 10\\], got nan"),
+    (dict(R_over_h2=-1.0), "R_over_h2 must be in \\[0.001, 1e\\+12\\], got -1.0"),
+    (dict(h1_over_h2=-1.0), "h1_over_h2 must be in \\[0.001, 1000\\], got -1.0"),
+    (dict(h1_over_h2=np.inf), "h1_over_h2 must be a finite number in \\[0.001, 1000\\], got inf"),
+    (dict(sigma0_over_E=-0.1), "sigma0_over_E must be in \\[0, 1e\\+06\\], got -0.1"),
+    (dict(tau0_over_E=-1.0), "tau0_over_E must be in \\[0, 1\\], got -1.0"),
     (dict(method="spline"), "method must be 'collocation' or 'closed-form'"),
     (dict(n=1), "n must be 'auto' or an integer in \\[2, 8192\\]"),
     (dict(tol=0.5), "tol must be in \\[1e-15, 1e-2\\)"),
@@ -423,8 +423,8 @@ def test_bad_input(kwargs, message):
 
 BAD_INVERSE = [
     (dict(F_over_Eh2=np.nan), "F_over_Eh2 must be a finite number"),
-    (dict(R_over_h2=0.0), "R_over_h2 must be in \\(0, inf\\), got 0.0"),
-    (dict(h1_over_h2=0.0), "h1_over_h2 must be in \\(0, inf\\), got 0.0"),
+    (dict(R_over_h2=0.0), "R_over_h2 must be in \\[0.001, 1e\\+12\\], got 0.0"),
+    (dict(h1_over_h2=0.0), "h1_over_h2 must be in \\[0.001, 1000\\], got 0.0"),
 ]
 
 
@@ -437,7 +437,7 @@ def test_bad_input_inverse(kwargs, message):
 
 
 def test_bad_input_pull_off():
-    with pytest.raises(ValueError, match="sigma0_over_E must be in \\(0, inf\\), got 0.0"):
+    with pytest.raises(ValueError, match="sigma0_over_E must be in \\(0, 1e\\+06\\], got 0.0"):
         sl.sliding_pull_off(100.0, 2.0, 0.0)
-    with pytest.raises(ValueError, match="h1_over_h2 must be in \\(0, inf\\), got -2.0"):
+    with pytest.raises(ValueError, match="h1_over_h2 must be in \\[0.001, 1000\\], got -2.0"):
         sl.sliding_pull_off(100.0, -2.0, 0.1)

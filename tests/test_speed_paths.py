@@ -218,13 +218,26 @@ def test_u_stationary_matches_bisection():
 
 
 def test_batch_with_an_unconvergeable_point_keeps_the_others():
-    A = np.array([0.02, 1e20, 0.15, 1e-200, 0.003])
-    batch = lc.normal_contact(A, 100.0, 0.01, raise_on_failure=False)
+    # inside the domain the closed forms converge almost everywhere; the collocation cannot
+    # resolve an adhesive zone of c/a - 1 ~ 1e-9 with n <= 2048 nodes, nor the sliding
+    # closed form this corner (R/h2 = 3e11, sigma0/E = 5e4) to its tolerance
+    A = np.array([0.02, 1.6596315985408394, 0.15])
+    rho = np.array([100.0, 21153758.746772554, 100.0])
+    s = np.array([0.01, 7.749102910688328, 0.01])
+    batch = lc.normal_contact(A, rho, s, method="collocation", raise_on_failure=False)
     assert not batch.converged[1]
-    for i in (0, 2, 3, 4):
-        _same(lc.normal_contact(float(A[i]), 100.0, 0.01), batch, i, NORMAL_FIELDS)
+    for i in (0, 2):
+        one = lc.normal_contact(float(A[i]), float(rho[i]), float(s[i]), method="collocation")
+        for f in NORMAL_FIELDS:
+            _close(getattr(one, f), np.asarray(getattr(batch, f))[i], f)
+    corner = (1.7821645537950392, 334651438040.73004, 0.0027394827605628914, 53570.51032412535)
     batch = lc.sliding_contact(
-        np.array([0.03, 1e20, 0.01]), 100.0, 2.0, 0.01, method="closed-form", raise_on_failure=False
+        np.array([0.03, corner[0], 0.01]),
+        np.array([100.0, corner[1], 100.0]),
+        np.array([2.0, corner[2], 2.0]),
+        np.array([0.01, corner[3], 0.01]),
+        method="closed-form",
+        raise_on_failure=False,
     )
     assert not batch.converged[1]
     for i, a in ((0, 0.03), (2, 0.01)):

@@ -500,13 +500,13 @@ def test_si_layer_coulomb_uses_hertz():
 
 
 BAD = [
-    (sliding_initiation, (0.0, 0.5), {}, r"tau0_over_E must be in \(0, inf\), got 0\.0"),
-    (steady_rolling, (-0.01, 0.5), {}, r"tau0_over_E must be in \(0, inf\), got -0\.01"),
+    (sliding_initiation, (0.0, 0.5), {}, r"tau0_over_E must be in \[1e-12, 1\], got 0\.0"),
+    (steady_rolling, (-0.01, 0.5), {}, r"tau0_over_E must be in \[1e-12, 1\], got -0\.01"),
     (
         sliding_initiation,
         (np.nan, 0.5),
         {},
-        r"tau0_over_E must be a finite number in \(0, inf\), "
+        r"tau0_over_E must be a finite number in \[1e-12, 1\], "
         r"got nan",
     ),
     (sliding_initiation, (0.01, 1.0), {}, r"d_over_a must be in \[0, 1\), got 1\.0"),
@@ -535,8 +535,8 @@ BAD = [
         r"got -0\.01",
     ),
     (sliding_initiation, (0.01,), {"T_over_Ea": np.inf}, r"T_over_Ea must be a finite number"),
-    (sliding_initiation_coulomb, (0.0, 0.01, 0.5), {}, r"mu must be in \(0, inf\), got 0\.0"),
-    (steady_rolling_coulomb, (0.3, 0.0, 0.5), {}, r"a_over_R must be in \(0, inf\), got 0\.0"),
+    (sliding_initiation_coulomb, (0.0, 0.01, 0.5), {}, r"mu must be in \[1e-06, 100\], got 0\.0"),
+    (steady_rolling_coulomb, (0.3, 0.0, 0.5), {}, r"a_over_R must be in \[1e-150, 10\], got 0\.0"),
     (steady_rolling_coulomb, (0.3, 0.01), {}, r"give exactly one of d_over_a or T_over_muF"),
     (
         sliding_initiation_coulomb,

@@ -38,7 +38,13 @@ def _real_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
             for v in raw.flat
         ):
             raise ValueError(_not_real(name, value))
-    return np.asarray(raw, dtype=float)
+    try:
+        return np.asarray(raw, dtype=float)
+    except OverflowError:  # a Python integer beyond the float range (10**400)
+        raise ValueError(
+            f"{name} must be a real number within the floating-point range, got an integer "
+            "beyond it"
+        ) from None
 
 
 def _not_real(name: str, value: object) -> str:

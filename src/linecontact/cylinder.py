@@ -339,6 +339,17 @@ class Cylinder:
                 branch=branch,
                 on_no_equilibrium=on_no_equilibrium,
             )
+            # the load asked for, not F/(Eh) times E h (which need not give back F exactly)
+            c = self._wrap(r)
+            load_given = F.item() if np.ndim(c.load) == 0 else np.broadcast_to(F, np.shape(c.load))
+            return CylinderContact(
+                c.contact_half_width,
+                c.adhesive_zone_half_width,
+                load_given,
+                c.stable,
+                c.state,
+                r,
+            )
         return self._wrap(r)
 
     def pull_off(self) -> CylinderPullOff:

@@ -34,7 +34,8 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._validation import broadcast, check_array, positive, scalar
+from ._validation import broadcast, check_array, scalar
+from .domain import DOMAIN, check
 
 __all__ = [
     "BETA_WARN",
@@ -48,11 +49,24 @@ __all__ = [
 BETA_WARN = 0.05
 
 
+def _modulus(name: str, value: ArrayLike) -> NDArray[np.float64]:
+    """A Young's modulus inside the domain of ``name``, or inf (a rigid body)."""
+    E = check_array(name, value, allow_inf=True)
+    lo, _, hi, _ = DOMAIN[name]
+    finite = E[np.isfinite(E)]
+    if finite.size and (finite.min() < lo or finite.max() > hi):
+        bad = finite[(finite < lo) | (finite > hi)].flat[0]
+        raise ValueError(
+            f"{name} must be in [{lo:g}, {hi:g}] (or inf for a rigid body), got {float(bad)}"
+        )
+    return E
+
+
 def _moduli(
     E1: ArrayLike, nu1: ArrayLike, E2: ArrayLike, nu2: ArrayLike
 ) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
-    E1 = check_array("E1", E1, allow_inf=True)
-    E2 = check_array("E2", E2, allow_inf=True)
+    E1 = _modulus("E1", E1)
+    E2 = _modulus("E2", E2)
     nu1 = check_array("nu1", nu1, low=-1.0, high=0.5, high_inclusive=True)
     nu2 = check_array("nu2", nu2, low=-1.0, high=0.5, high_inclusive=True)
     E1, nu1, E2, nu2 = broadcast(E1=E1, nu1=nu1, E2=E2, nu2=nu2)
@@ -106,8 +120,8 @@ def adhesion_from_work(work_of_adhesion: ArrayLike, equilibrium_spacing: ArrayLi
     >>> round(h / 0.3e-9, 4)
     0.9743
     """
-    w = positive("work_of_adhesion", work_of_adhesion)
-    z0 = positive("equilibrium_spacing", equilibrium_spacing)
+    w = check("work_of_adhesion", work_of_adhesion)
+    z0 = check("equilibrium_spacing", equilibrium_spacing)
     w, z0 = broadcast(work_of_adhesion=w, equilibrium_spacing=z0)
     with np.errstate(over="ignore", under="ignore"):
         s0 = 16 * w / (9 * np.sqrt(3) * z0)

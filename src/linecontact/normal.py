@@ -30,16 +30,13 @@ from typing import ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from . import domain as _domain
 from . import reference as _ref
 from ._validation import (
     broadcast,
     check_array,
     check_solver_options,
-    finite,
-    non_negative,
     positions,
-    positive,
-    scalar,
     scalar_or_array,
 )
 from .errors import ConvergenceError, NoEquilibriumError
@@ -182,6 +179,31 @@ def _closed_form_from_u(u, kap, rho, ustar):
     return A, C, F, stable
 
 
+def _stable(u, kap, bp):
+    """Stable under load control: wider than the load minimum, ``u <= u*`` (one definition).
+
+    ``dF/da > 0`` decides where its sign is clear; where the derivative is lost in
+    round-off (near the minimum, or at widths so small that the load is flat to the last
+    digit) ``u`` is compared with the ``u*`` of the minimum (:func:`_ustar`), as
+    :func:`contact_for_load` and :func:`equilibria` do. Arrays or NumPy scalars.
+    """
+    d = bp["dphi"]
+    terms = (
+        abs(2 * bp["abar"] * bp["abar"] * bp["dln"])
+        + abs(kap * bp["X"] * bp["dln"] * bp["St"])
+        + abs(kap * bp["X"] * bp["Ct"])
+    )
+    clear = abs(d) > 1e-8 * terms
+    if not isinstance(u, np.ndarray):
+        return bool(d < 0) if clear else bool(u <= _ustar(kap))
+    out = np.asarray(d < 0)
+    unclear = ~clear
+    if np.any(unclear):
+        out = out.copy()
+        out[unclear] = u[unclear] <= _ustar(kap[unclear])
+    return out
+
+
 def _ustar(kap: NDArray | np.float64) -> NDArray | np.float64:
     """U of the load minimum (inf where the minimum sits at vanishing width, kappa = 0).
 
@@ -207,7 +229,7 @@ def _closed_form(A, rho, s):
     u, res, _, bp = _ref._solve_abar(abar, kap)
     C = bp["X"] * bp["Ct"] * np.sqrt(2 / rho)
     F = (np.pi / 2) * bp["phi"]
-    return u, C, F, res, bp["dphi"] < 0
+    return u, C, F, res, _stable(u, kap, bp)
 
 
 # --------------------------------------------------------------------------------------------
@@ -329,7 +351,7 @@ def _stable_at(u, kap):
     kap = np.broadcast_to(kap, shape).reshape(-1)
     out = np.empty(u.size, bool)
     for c in _chunks(u.size, 0):
-        out[c] = _ref._branch_point(u[c], kap[c])["dphi"] < 0
+        out[c] = _stable(u[c], kap[c], _ref._branch_point(u[c], kap[c]))
     return out.reshape(shape)
 
 
@@ -429,9 +451,9 @@ def normal_contact(
     >>> abs(r2.F_over_Eh - normal_contact(0.05, 100.0, 0.01).F_over_Eh) < 1e-10
     True
     """
-    A = positive("a_over_R", a_over_R)
-    rho = positive("R_over_h", R_over_h)
-    s = non_negative("sigma0_over_E", sigma0_over_E)
+    A = _domain.check("a_over_R", a_over_R)
+    rho = _domain.check("R_over_h", R_over_h)
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
     if method not in ("closed-form", "collocation"):
         raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
     check_solver_options(n, tol, raise_on_failure, n_max=8192)
@@ -578,11 +600,11 @@ def _pulloff_flat(rho: NDArray, s: NDArray):
         # the load minimum along the branch in units of Phi = (2/pi) F/(Eh) (contact_for_load)
         phi_min = where(fin, _ref._minimum(bp["phi"], F0 * (2 / np.pi)), F0 * (2 / np.pi))
     zero_c = sq * 2 / (kap * _ref.LN2 + np.sqrt(kap * kap * _ref.LN2**2 + 4))
-    # the pull-off force is the minimum of the load; the label says whether the contact lets
-    # go from a width the continuum model resolves (at least the range h) or peels below it
-    interior = F_min < F0
-    A_min = where(interior, A_min, 0.0)
-    snap = interior & (A_min >= SNAP_OFF_MIN_WIDTH_OVER_H / rho)
+    # the pull-off force is the minimum of the load, at the width of u* (however small: the
+    # stability of every state is judged against it); the label says whether the contact
+    # lets go from a width the continuum model resolves (at least the range h) or peels
+    # below it
+    snap = (F_min < F0) & (A_min >= SNAP_OFF_MIN_WIDTH_OVER_H / rho)
     return dict(
         F_pulloff_over_Eh=F_min,
         a_over_R_at_pulloff=A_min,
@@ -632,8 +654,8 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     >>> po.mechanism, round(po.a_over_R_at_pulloff, 4)
     ('snap-off', 0.0869)
     """
-    rho = positive("R_over_h", R_over_h)
-    s = non_negative("sigma0_over_E", sigma0_over_E)
+    rho = _domain.check("R_over_h", R_over_h)
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
     scalar = scalar_or_array(rho, s)
     rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     _ref._check_kappa(rho, s)
@@ -755,6 +777,8 @@ def contact_for_load(
     Returns
     -------
     NormalContact
+        ``F_over_Eh`` is the load asked for (the state carries it to within
+        ``error_estimate``, relative to the larger of the load, Eq. 14 and the Hertz term);
         ``state`` is ``"contact"``, or ``"no-equilibrium"`` for the points reported.
 
     Raises
@@ -762,9 +786,9 @@ def contact_for_load(
     NoEquilibriumError
         If no contact of the requested branch carries the load, naming the pull-off force.
     """
-    F = finite("F_over_Eh", F_over_Eh)
-    rho = positive("R_over_h", R_over_h)
-    s = non_negative("sigma0_over_E", sigma0_over_E)
+    F = _domain.check("F_over_Eh", F_over_Eh)
+    rho = _domain.check("R_over_h", R_over_h)
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
     if branch not in ("stable", "unstable"):
         raise ValueError(f"branch must be 'stable' or 'unstable', got {branch!r}")
     if on_no_equilibrium not in ("raise", "report"):
@@ -830,13 +854,14 @@ def contact_for_load(
             f"{float(s.reshape(-1)[i])!r}: the closest contact carries F_over_Eh="
             f"{float(np.reshape(Fc, -1)[i])!r} (the load is outside the range of the solver)"
         )
+    _domain.check_widths(np.where(bad, np.nan, A), F_asked, "F_over_Eh")
     _ref._warn_wide(np.where(bad, np.nan, A))
     z: NDArray | float = 0.0 if scalar else np.zeros(F.shape)
     nan = np.where(bad, np.nan, 1.0)
     vals = dict(
         a_over_R=A * nan,
         c_over_R=C * nan,
-        F_over_Eh=np.where(bad, F_asked, Fc),
+        F_over_Eh=F_asked,  # the load asked for; its residual is the error_estimate
         R_over_h=rho,
         sigma0_over_E=s,
         n_collocation=0 if scalar else np.zeros(F.shape, dtype=int),
@@ -894,8 +919,8 @@ def non_contact(
         high=1.0,
         high_inclusive=True,
     )
-    rho = positive("R_over_h", R_over_h)
-    s = non_negative("sigma0_over_E", sigma0_over_E)
+    rho = _domain.check("R_over_h", R_over_h)
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
     scalar = scalar_or_array(g, rho, s)
     g, rho, s = (
         np.asarray(v, float) for v in broadcast(central_gap_over_h=g, R_over_h=rho, sigma0_over_E=s)
@@ -937,9 +962,9 @@ def equilibria(F_over_Eh: float, R_over_h: float, sigma0_over_E: float) -> tuple
     Eq. 14), and the non-contact state (between Eq. 14 and 0). Empty below the pull-off
     force; the caller says so.
     """
-    F = scalar("F_over_Eh", F_over_Eh, low=-np.inf, low_inclusive=True)
-    rho = scalar("R_over_h", R_over_h)
-    s = scalar("sigma0_over_E", sigma0_over_E, low_inclusive=True)
+    F = _domain.scalar("F_over_Eh", F_over_Eh)
+    rho = _domain.scalar("R_over_h", R_over_h)
+    s = _domain.scalar("sigma0_over_E", sigma0_over_E)
     po = pull_off(rho, s)
     states: list[Equilibrium] = []
     if F >= po.F_minimum_over_Eh:
@@ -1014,8 +1039,8 @@ def load_curve(
     num, num_noncontact : int
         Points on the contact and the non-contact branches (>= 2 each).
     """
-    rho = scalar("R_over_h", R_over_h)
-    s = scalar("sigma0_over_E", sigma0_over_E, low_inclusive=True)
+    rho = _domain.scalar("R_over_h", R_over_h)
+    s = _domain.scalar("sigma0_over_E", sigma0_over_E)
     for name, v in (("num", num), ("num_noncontact", num_noncontact)):
         if not isinstance(v, (int, np.integer)) or v < 2:
             raise ValueError(f"{name} must be an integer >= 2, got {v!r}")
@@ -1026,7 +1051,7 @@ def load_curve(
         # within the small-strain range unless the pull-off itself is close to its end
         cap = max(_ref.A_OVER_R_SMALL_STRAIN, 1.5 * a_po)
         a_max_over_R = min(max(3 * a_po, a_h, 0.02), cap)
-    amax = scalar("a_max_over_R", a_max_over_R)
+    amax = _domain.scalar("a_max_over_R", a_max_over_R)
     A = np.unique(
         np.concatenate(
             [

@@ -58,7 +58,8 @@ import warnings
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._validation import broadcast, non_negative, out, positive, scalar_or_array
+from . import domain as _domain
+from ._validation import broadcast, out, scalar_or_array
 from .errors import ModelValidityWarning
 
 __all__ = [
@@ -153,8 +154,8 @@ def kappa(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | float:
     JKR-like (compliant, short-range) end. :math:`\kappa = \lambda^{3/2}/\sqrt2`
     with :math:`\lambda` of :func:`maugis_parameter`.
     """
-    rho = positive("R_over_h", R_over_h)
-    s = non_negative("sigma0_over_E", sigma0_over_E)
+    rho = _domain.check("R_over_h", R_over_h)
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
     rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     with np.errstate(over="ignore"):
         val = (4 / np.pi) * s * np.sqrt(2 * rho)
@@ -170,8 +171,8 @@ def maugis_parameter(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray |
     With :math:`w = \sigma_0 h`: :math:`\lambda = (4/\pi^{2/3})(\sigma_0/E)^{2/3}(R/h)^{1/3}`.
     DMT-like for :math:`\lambda \lesssim 0.1`, JKR-like for :math:`\lambda \gtrsim 5`.
     """
-    rho = positive("R_over_h", R_over_h)
-    s = non_negative("sigma0_over_E", sigma0_over_E)
+    rho = _domain.check("R_over_h", R_over_h)
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
     rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     with np.errstate(over="ignore"):
         val = 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
@@ -185,8 +186,8 @@ def maugis_parameter(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray |
 
 def hertz_load(a_over_R: ArrayLike, R_over_h: ArrayLike) -> NDArray | float:
     r"""Hertz line contact, Eq. (13): :math:`F/(Eh) = (\pi/4)(a/R)^2 (R/h)`."""
-    A = positive("a_over_R", a_over_R)
-    rho = positive("R_over_h", R_over_h)
+    A = _domain.check("a_over_R", a_over_R)
+    rho = _domain.check("R_over_h", R_over_h)
     A, rho = broadcast(a_over_R=A, R_over_h=rho)
     with np.errstate(over="ignore"):
         val = np.pi / 4 * A * A * rho
@@ -201,9 +202,9 @@ def jkr_load(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike)
     :math:`F/(Eh) = (\pi/4)(a/R)^2(R/h) - \sqrt{2\pi(\sigma_0/E)(R/h)(a/R)}`.
     (Chaudhury et al. 1996; the :math:`m \to 1` limit of the Maugis--Dugdale solution.)
     """
-    A = positive("a_over_R", a_over_R)
-    rho = positive("R_over_h", R_over_h)
-    s = non_negative("sigma0_over_E", sigma0_over_E)
+    A = _domain.check("a_over_R", a_over_R)
+    rho = _domain.check("R_over_h", R_over_h)
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
     A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
     with np.errstate(over="ignore", invalid="ignore"):
         val = np.pi / 4 * A * A * rho - np.sqrt(2 * np.pi * s * rho * A)
@@ -222,8 +223,8 @@ def zero_width_load(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | 
 
     It is also the most tensile force on the non-contact branch (central gap zero).
     """
-    rho = positive("R_over_h", R_over_h)
-    s = non_negative("sigma0_over_E", sigma0_over_E)
+    rho = _domain.check("R_over_h", R_over_h)
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
     rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     return out(_zero_width(rho, s), scalar_or_array(rho, s))
 

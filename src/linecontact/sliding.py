@@ -110,14 +110,13 @@ from typing import ClassVar, cast
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from . import domain as _domain
 from . import reference as _ref
 from ._validation import (
     broadcast,
+    check_array,
     check_solver_options,
-    finite,
-    non_negative,
     positions,
-    positive,
     scalar_or_array,
 )
 from .errors import ConvergenceError, NoEquilibriumError
@@ -236,7 +235,7 @@ class SlidingContact(Result):
 
     def friction_force(self, tau0_over_E: ArrayLike) -> NDArray | float:
         """Friction force per unit length ``2 a tau0`` over ``E h2``, for ``tau0/E >= 0``."""
-        t = non_negative("tau0_over_E", tau0_over_E)
+        t = _domain.check("tau0_over_E", tau0_over_E, "friction_tau0_over_E")
         val = 2 * np.asarray(self.a_over_R) * np.asarray(self.R_over_h2) * t
         return val.item() if np.ndim(val) == 0 else val
 
@@ -743,9 +742,9 @@ def _collocation(A, rho, r, s, n, tol):
 
 
 def _check_common(R_over_h2, h1_over_h2, sigma0_over_E):
-    rho = positive("R_over_h2", R_over_h2)
-    r = positive("h1_over_h2", h1_over_h2)
-    s = non_negative("sigma0_over_E", sigma0_over_E)
+    rho = _domain.check("R_over_h2", R_over_h2)
+    r = _domain.check("h1_over_h2", h1_over_h2)
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
     return rho, r, s
 
 
@@ -894,9 +893,13 @@ def sliding_contact(
     >>> abs(s.F_over_Eh2 - lc.normal_contact(0.03, 100.0, 0.01).F_over_Eh) < 1e-10
     True
     """
-    A = positive("a_over_R", a_over_R)
+    A = _domain.check("a_over_R", a_over_R, "sliding_a_over_R")
     rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
-    tau = np.full((), np.nan) if tau0_over_E is None else non_negative("tau0_over_E", tau0_over_E)
+    tau = (
+        np.full((), np.nan)
+        if tau0_over_E is None
+        else _domain.check("tau0_over_E", tau0_over_E, "friction_tau0_over_E")
+    )
     _check_method(method, n, tol, raise_on_failure)
     scalar = scalar_or_array(A, rho, r, s, tau)
     A, rho, r, s, tau = broadcast(
@@ -1079,7 +1082,9 @@ def sliding_pull_off(
     SlidingPullOff
     """
     rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
-    s = positive("sigma0_over_E", s)
+    s = check_array(
+        "sigma0_over_E", s, high=_domain.DOMAIN["sigma0_over_E"][2], high_inclusive=True
+    )
     scalar = scalar_or_array(rho, r, s)
     rho, r, s = broadcast(R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s)
     _ref._check_kappa(rho, s, "R_over_h2")
@@ -1252,9 +1257,13 @@ def sliding_contact_for_load(
     >>> abs(r.F_over_Eh2 - 0.5) < 1e-10, bool(r.stable)
     (True, True)
     """
-    F = finite("F_over_Eh2", F_over_Eh2)
+    F = _domain.check("F_over_Eh2", F_over_Eh2)
     rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
-    tau = np.full((), np.nan) if tau0_over_E is None else non_negative("tau0_over_E", tau0_over_E)
+    tau = (
+        np.full((), np.nan)
+        if tau0_over_E is None
+        else _domain.check("tau0_over_E", tau0_over_E, "friction_tau0_over_E")
+    )
     _check_method(method, n, tol, raise_on_failure)
     if on_no_equilibrium not in ("raise", "report"):
         raise ValueError(
@@ -1297,6 +1306,7 @@ def sliding_contact_for_load(
             A, rho, r, s, tau, u1, u2, F, missing = (
                 np.reshape(v, -1) for v in (A, rho, r, s, tau, u1, u2, F, missing)
             )
+    _domain.check_widths(np.where(missing, np.nan, A), F, "F_over_Eh2")
     _ref._warn_wide(np.where(missing, np.nan, A))
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # see sliding_contact
         dd = _solve_flat(

@@ -14,7 +14,7 @@ from typing import ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._validation import positive
+from .. import domain as _domain
 from ..sie import _log_moment_vector
 from ._core import (
     _CHECK_Y,
@@ -396,7 +396,7 @@ def sliding_initiation(
         tol,
         raise_on_failure,
         on_sliding,
-        {"tau0_over_E": positive("tau0_over_E", tau0_over_E)},
+        {"tau0_over_E": _domain.check("tau0_over_E", tau0_over_E)},
     )
     (t0,) = arrays
     return _build(SlidingInitiation, method, scalar, T_over_Ea=t0 * T_unit, tau0_over_E=t0, **diag)
@@ -456,7 +456,7 @@ def sliding_initiation_coulomb(
         tol,
         raise_on_failure,
         on_sliding,
-        {"mu": positive("mu", mu), "a_over_R": _wide(positive("a_over_R", a_over_R))},
+        {"mu": _domain.check("mu", mu), "a_over_R": _wide(_domain.check("a_over_R", a_over_R))},
     )
     m, A = arrays
     return _build(

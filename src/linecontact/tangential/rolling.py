@@ -15,7 +15,7 @@ from typing import ClassVar, cast
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._validation import positive
+from .. import domain as _domain
 from ._core import (
     _CHECK_Y,
     _STICK,
@@ -338,7 +338,7 @@ def steady_rolling(
         tol,
         raise_on_failure,
         on_sliding,
-        {"tau0_over_E": positive("tau0_over_E", tau0_over_E)},
+        {"tau0_over_E": _domain.check("tau0_over_E", tau0_over_E)},
     )
     (t0,) = arrays
     return _build(
@@ -403,7 +403,7 @@ def steady_rolling_coulomb(
         tol,
         raise_on_failure,
         on_sliding,
-        {"mu": positive("mu", mu), "a_over_R": _wide(positive("a_over_R", a_over_R))},
+        {"mu": _domain.check("mu", mu), "a_over_R": _wide(_domain.check("a_over_R", a_over_R))},
     )
     m, A = arrays
     return _build(
