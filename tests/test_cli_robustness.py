@@ -201,6 +201,7 @@ def test_solver_failure_exit_1_one_line(capsys):
         "--method",
         "collocation",
         "--json",
+        "--quiet",
     )
     assert code == 1 and err.count("\n") == 1
     assert "no point could be computed" in err and "did not converge" in err
@@ -221,6 +222,7 @@ def test_one_unconverged_point_does_not_fail_the_run(capsys):
         "--method",
         "collocation",
         "--json",
+        "--quiet",
     )
     assert code == 0 and err == ""
     bad, good = records(out)
