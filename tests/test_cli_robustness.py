@@ -218,7 +218,7 @@ def test_one_unconverged_point_does_not_fail_the_run(capsys):
         *THIN,
         "--a-over-R",
         "1.6596315985408394",
-        "0.001",
+        "1e-6",
         "--method",
         "collocation",
         "--json",
