@@ -89,7 +89,7 @@ def strict_json(text):
                 "--T-over-Ea",
                 "-1",
             ],
-            r"--T-over-Ea must be in \[0, inf\), got -1.0",
+            r"--T-over-Ea must be in \[0, 1e\+12\], got -1.0",
         ),
         (
             ["pulloff", "--radius", "50e-9", "--modulus", "100e9", "--sigma0", "1e9"],

@@ -242,7 +242,7 @@ BAD = [
     ),
     (
         ["roll", "--tau0-over-E", "0.01", "--T-over-Ea", "-1"],
-        "--T-over-Ea must be in [0, inf), got -1.0",
+        "--T-over-Ea must be in [0, 1e+12], got -1.0",
     ),
     (
         ["roll", "--tau0-over-E", "0.01"],

@@ -18,6 +18,7 @@ import numpy as np
 from .. import tangential as tg
 from .._validation import non_negative
 from ..cylinder import Cylinder, cylinder_sliding_initiation, cylinder_steady_rolling
+from ..domain import DOMAIN, check
 from ..normal import contact_for_load
 from ..output import Table, table_from_result
 from ._options import (
@@ -227,7 +228,10 @@ def _run(args: argparse.Namespace, rolling: bool) -> int:
     if state != "d_over_a":
         # checked before any conversion (T/(Ea) to T/(mu F), ...), so that the message names
         # the option given and its value
-        non_negative(state, values)
+        if state in DOMAIN:
+            check(state, values)
+        else:
+            non_negative(state, values)
     d = values if state == "d_over_a" else None
     law = {"friction": "coulomb" if coulomb else "constant"}
     if cyl is not None:

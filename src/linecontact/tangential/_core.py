@@ -16,12 +16,12 @@ from functools import lru_cache
 import numpy as np
 from numpy.typing import NDArray
 
+from .. import domain as _domain
 from .. import reference as _ref
 from .._validation import (
     broadcast,
     check_array,
     check_solver_options,
-    non_negative,
     positions,
     scalar_or_array,
 )
@@ -92,6 +92,21 @@ def _check_matrix(n: int) -> NDArray:
     return m
 
 
+def _rounding(f: NDArray, lam: NDArray) -> NDArray:
+    """Relative rounding error of an extra unknown ``lam`` fixed by the consistency condition.
+
+    ``lam`` is a mean of right-hand-side values of size ``max |f|``; as it vanishes (the creep
+    at full stick) its relative error grows like ``eps max|f| / |lam|``. Measured against the
+    closed forms (rolling and Carter, ``1 + d/a`` from 1e-9 to 0.1, ``n`` from 64 to 8192) the
+    actual error is 0.1 to 1.4 times that, independent of n, once the truncation error is
+    resolved; twice it is counted in the error estimate, so that such a point is not reported
+    converged.
+    """
+    scale = np.max(np.abs(f), axis=-1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(lam != 0, 2 * 2.2e-16 * scale / np.abs(lam), 0.0)
+
+
 def _tail(b: NDArray) -> NDArray:
     """Chebyshev tail: the largest of the last three coefficients over the largest one.
 
@@ -127,6 +142,11 @@ def _adaptive(kernel, delta: NDArray, rate: NDArray, n, tol: float) -> dict[str,
             for c in _chunks(sel.size, int(nn)):  # bounded memory for any number of points
                 idx = sel[c]
                 r = kernel(delta[idx], int(nn))
+                # the a-priori truncation error exp(-rate n) is a floor under the tail: near
+                # full stick the last coefficients understate the error of a solution that
+                # the size does not resolve yet
+                with np.errstate(over="ignore"):
+                    r["tail"] = np.maximum(r["tail"], np.exp(-rate[idx] * nn))
                 for key, v in r.items():
                     if key not in out:
                         out[key] = np.zeros(P, dtype=np.asarray(v).dtype)
@@ -322,6 +342,9 @@ class _Problem:
     d_stick: float  # delta at T = 0
     constant: bool = True  # constant tau0 (load T_over_Ea) or Coulomb (load T_over_muF)
     creep_closed: Callable[[NDArray], NDArray] | None = None  # rolling only
+    # the creep from T over the full-slip load, without the loss of precision of going
+    # through d near full stick (rolling only)
+    creep_of_r: Callable[[NDArray], NDArray] | None = None
     n_auto: int | None = None  # fixed n for n="auto" (Coulomb: linear right-hand sides)
 
 
@@ -349,7 +372,7 @@ def _run(
         given = ("d_over_a", dl)
     else:
         dl = None
-        given = (load_name, non_negative(load_name, load))
+        given = (load_name, _domain.check(load_name, load))
     scalar = scalar_or_array(*arrays, given[1])
     *arrays, g = (
         np.asarray(v, float)
@@ -393,7 +416,12 @@ def _run(
         T_unit = pb.T_full * r
         dl = np.where(active, out["delta"].reshape(shape), np.where(stick, pb.d_stick, dl))
     if pb.creep_closed is not None:
-        creep = out["creep"] if method == "collocation" else pb.creep_closed(out["delta"])
+        if method == "collocation":
+            creep = out["creep"]
+        elif T_target is not None and pb.creep_of_r is not None:
+            creep = pb.creep_of_r(np.where(act, r.reshape(-1), 0.0))
+        else:
+            creep = pb.creep_closed(out["delta"])
         creep = np.where(act, creep, np.nan).reshape(shape)
         creep = np.where(stick, 0.0, creep)
     else:

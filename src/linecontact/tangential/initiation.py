@@ -310,7 +310,7 @@ _CATTANEO_MINDLIN = _Problem(
     "sliding_initiation_coulomb",
     _cm_kernel,
     lambda d: np.full(d.shape, np.inf),
-    lambda d: 1 - d * d,
+    lambda d: (1 - d) * (1 + d),  # 1 - d^2, without cancellation as d -> 1 (T -> 0)
     lambda d: -2 * d,
     lambda r: np.sqrt(1 - r),
     1.0,

@@ -25,6 +25,7 @@ from ._core import (
     _cheb_u_series,
     _check_matrix,
     _Problem,
+    _rounding,
     _run,
     _solver,
     _tail,
@@ -94,11 +95,13 @@ def _roll_kernel(delta: NDArray, n: int, split: str = "endpoint") -> dict[str, N
     h = (1.0 - delta) / 2.0
     # Eq 29 (sign of the integral corrected): T = (3a + d) tau0/2 - int tau-bar
     T = (3.0 + delta) / 2.0 - h * (np.pi / 2) * b[:, 0]
-    lam = sol.extra  # = -E creep/(2 tau0 V)
+    lam = cast(NDArray, sol.extra)  # = -E creep/(2 tau0 V)
     res = np.max(
         np.abs(-b @ _check_matrix(n) - _roll_rhs(delta, _CHECK_Y, split) - lam[:, None]), axis=-1
     )
-    return dict(T=T, creep=-2.0 * lam, tail=_tail(b), stick=res, cons=np.abs(sol.consistency))
+    f = _roll_rhs(delta, _solver(n).collocation_unit, split)
+    tail = np.maximum(_tail(b), _rounding(f, lam))
+    return dict(T=T, creep=-2.0 * lam, tail=tail, stick=res, cons=np.abs(sol.consistency))
 
 
 def _roll_rate(delta):
@@ -118,7 +121,8 @@ def _carter_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
     lam = cast(NDArray, sol.extra)  # = -E creep/(2 mu p0 V); creep/V = -lam mu a/R
     xc = m[:, None] + h[:, None] * _CHECK_Y[None, :]
     res = np.max(np.abs(-b @ _check_matrix(n) + xc - lam[:, None]), axis=-1)
-    return dict(T=T, creep=-lam, tail=_tail(b), stick=res, cons=np.abs(sol.consistency))
+    tail = np.maximum(_tail(b), _rounding(xs, lam))
+    return dict(T=T, creep=-lam, tail=tail, stick=res, cons=np.abs(sol.consistency))
 
 
 @dataclass(frozen=True)
@@ -254,20 +258,25 @@ _ROLLING = _Problem(
     False,
     -1.0,
     creep_closed=_roll_creep_unit,
+    # creep/V over tau0/E = -(2/pi) u0 = -(4/pi) artanh(T/(2 a tau0)), with r = T/(2 a tau0)
+    creep_of_r=lambda r: -(4 / np.pi) * np.arctanh(r),
 )
 _CARTER = _Problem(
     "steady_rolling_coulomb",
     _carter_kernel,
     lambda d: np.full(d.shape, np.inf),
-    lambda d: 1 - ((1 - d) / 2) ** 2,
+    # 1 - ((1 - d)/2)^2 and its inverse, in forms that keep their relative precision at full
+    # stick (d -> -1, T -> 0)
+    lambda d: (1 + d) * (3 - d) / 4,
     lambda d: (1 - d) / 2,
-    lambda r: 1 - 2 * np.sqrt(1 - r),
+    lambda r: -1 + 2 * r / (1 + np.sqrt(1 - r)),
     1.0,
     -1.0,
     False,
     -1.0,
     constant=False,
     creep_closed=lambda d: -(1 + d) / 2,
+    creep_of_r=lambda r: -r / (1 + np.sqrt(1 - r)),
     n_auto=N_COULOMB,
 )
 
