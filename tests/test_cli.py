@@ -3,7 +3,7 @@
 import json
 import math
 import os
-import shutil
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -15,7 +15,13 @@ from linecontact import __version__ as lc_version
 from linecontact import contact_for_load, normal_contact, pull_off, zero_width_load
 from linecontact.cli import main
 
-CONTRACT = Path(__file__).resolve().parents[2] / "shared" / "tools" / "check-cli-contract"
+#: The project root (this file is tests/test_cli.py in it).
+PROJECT = Path(__file__).resolve().parents[1]
+#: An environment variable that points at the shared CLI-contract checker.
+CHECKER_ENV = "LINECONTACT_CONTRACT_CHECKER"
+#: Where the checker lives relative to a folder that holds ``shared/`` (the project root's
+#: parent in the usual layout: ``<root>/../shared/tools/check-cli-contract``).
+CHECKER_PATH = Path("shared", "tools", "check-cli-contract")
 
 
 def run(capsys, *argv):
@@ -270,20 +276,74 @@ def test_module_entry_point():
     assert records(p.stdout)[0]["mechanism"] in ("zero-width", "snap-off")
 
 
-@pytest.mark.skipif(
-    not CONTRACT.exists() or shutil.which("linecontact") is None,
-    reason="the shared contract checker or the console script is absent",
-)
-def test_shared_cli_contract():
+def find_contract_checker(environ=os.environ, root=PROJECT):
+    """The shared CLI-contract checker: ``$LINECONTACT_CONTRACT_CHECKER`` if set, else
+    ``shared/tools/check-cli-contract`` in the project root's parent or a folder above it
+    (a worktree may sit one level deeper than the main checkout).
+
+    Returns ``(path or None, the places looked at)``.
+    """
+    if environ.get(CHECKER_ENV):
+        path = Path(environ[CHECKER_ENV]).expanduser()
+        return path, [f"${CHECKER_ENV} = {path}"]
+    looked = [parent / CHECKER_PATH for parent in root.parents]
+    return next((p for p in looked if p.is_file()), None), [str(p) for p in looked]
+
+
+def test_contract_checker_is_found_where_it_lives(tmp_path, monkeypatch):
+    # beside the project root: <parent>/shared/tools/check-cli-contract
+    root = tmp_path / "work" / "wt-tests"
+    checker = tmp_path / "work" / CHECKER_PATH
+    checker.parent.mkdir(parents=True)
+    root.mkdir()
+    assert find_contract_checker({}, root) == (None, [str(p / CHECKER_PATH) for p in root.parents])
+    checker.write_text("")
+    assert find_contract_checker({}, root)[0] == checker
+    # from a worktree one level deeper
+    assert find_contract_checker({}, tmp_path / "work" / "trees" / "t1")[0] == checker
+    # the environment variable wins, and is reported as such
+    other = tmp_path / "elsewhere" / "checker"
+    path, looked = find_contract_checker({CHECKER_ENV: str(other)}, root)
+    assert path == other and looked == [f"${CHECKER_ENV} = {other}"]
+
+
+def _linecontact_on_path(tmp_path):
+    """A PATH whose first ``linecontact`` runs this interpreter's package: the console script
+    installed beside ``sys.executable`` if there is one, else a shim in ``tmp_path`` that runs
+    ``python -m linecontact``. None where neither is possible (no script, not POSIX)."""
+    bindir = Path(sys.executable).parent
+    if not (bindir / "linecontact").is_file():
+        if os.name != "posix":
+            return None
+        bindir = tmp_path / "bin"
+        bindir.mkdir()
+        shim = bindir / "linecontact"
+        shim.write_text(f'#!/bin/sh\nexec "{sys.executable}" -m linecontact "$@"\n')
+        shim.chmod(0o755)
+    return os.pathsep.join([str(bindir), os.environ.get("PATH", "")])
+
+
+def test_shared_cli_contract(tmp_path):
+    checker, looked = find_contract_checker()
+    if checker is None:
+        pytest.skip("the shared CLI-contract checker is absent; looked at " + ", ".join(looked))
+    if not checker.is_file():  # named by the environment variable: a setup error, not a skip
+        pytest.fail(f"${CHECKER_ENV} names {checker}, which is not a file")
+    path = _linecontact_on_path(tmp_path)
+    if path is None:  # pragma: no cover - Windows without the console script
+        pytest.skip("no linecontact console script beside this interpreter")
     p = subprocess.run(
-        [sys.executable, str(CONTRACT)],
+        [sys.executable, str(checker)],
         capture_output=True,
         text=True,
         timeout=600,
-        env=dict(os.environ),
+        env={**os.environ, "PATH": path},
     )
     assert "BROKEN" not in p.stdout, p.stdout
     assert p.returncode == 0, p.stdout + p.stderr
+    # the subcommands that exist were checked (not all reported "not yet")
+    for name in ("normal", "pulloff", "slide-init", "roll", "slide"):
+        assert re.search(rf"^{re.escape(name)}\s+ok$", p.stdout, re.M), p.stdout
 
 
 def test_coupling_warning_is_one_line(capsys):

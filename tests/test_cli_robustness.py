@@ -260,5 +260,7 @@ def test_si_load_below_pull_off_in_newton_per_metre(capsys, cmd):
     assert code == 1 and err.count("\n") == 1, err
     assert "no point could be computed" in err and "below the pull-off force" in err, err
     assert "N/m" in err
-    for rec in records(out):
+    recs = records(out)
+    assert len(recs) == 1
+    for rec in recs:
         assert rec["state"] == "no-equilibrium" and "N/m" in rec["reason"]

@@ -185,7 +185,8 @@ def test_iterate_drops_finished_points():
     (x,), its = reference._iterate(
         step, (np.zeros(3),), (np.array([2.0, 2.0, 2.0]),), 8, done=np.array([True, False, True])
     )
-    assert_array_equal(its, [0, 2, 0]) and sizes == [1, 1]
+    assert_array_equal(its, [0, 2, 0])
+    assert sizes == [1, 1]
     assert_array_equal(x, [0.0, 2.0, 0.0])
 
 
