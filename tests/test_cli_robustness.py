@@ -8,6 +8,7 @@ import pytest
 
 from linecontact.cli import main
 
+SI0 = ["--radius", "50e-9", "--modulus", "100e9", "--sigma0", "1e9"]  # no range
 G = ["--R-over-h", "100", "--sigma0-over-E", "0.2"]
 SI = ["--radius", "50e-9", "--modulus", "100e9", "--sigma0", "1e9", "--h", "0.5e-9"]
 
@@ -144,6 +145,52 @@ def strict_json(text):
         (
             ["pulloff", "--R-over-h", "1e12", "--sigma0-over-E", "1e6", "--json"],
             r"kappa = \(4/pi\) --sigma0-over-E sqrt\(2 --R-over-h\) must be <= 1e\+12",
+        ),
+        # the validated domain said in SI units and flags (E h = 50 N/m, R = 50 nm)
+        (
+            ["normal", *SI0, "--h", "0.5e-9", "--a", "1e-3"],
+            r"--a must be in \[5e-158, 5e-07\] m \(a_over_R in \[1e-150, 10\]\), got 0\.001$",
+        ),
+        (
+            ["normal", *SI0, "--h", "0.5e-9", "--load", "1e20"],
+            r"--load must be in \[-5e\+13, 5e\+13\] N/m \(F_over_Eh in \[-1e\+12, 1e\+12\]\)",
+        ),
+        (
+            ["normal", *SI0, "--h", "0.5e-9", "--load", "1", "1e6"],
+            r"--load=1000000\.0 N/m needs a contact of half-width 7\.979\d*e-07 m, 15\.958\d* "
+            r"radii: beyond the domain of the solvers \(a_over_R <= 10\)$",
+        ),
+        (
+            ["normal", *SI0, "--h", "1e-21", "--load", "1"],
+            r"R_over_h = 5e\+13 \(radius over --h\) is outside the validated domain "
+            r"\[0\.001, 1e\+12\]",
+        ),
+        (
+            ["slide", *SI0, "--h2", "0.5e-9", "--h1", "1e-20", "--a", "1e-9"],
+            r"--h1 must be in \[5e-13, 5e-07\] m \(h1_over_h2 in \[0\.001, 1000\]\)",
+        ),
+        (
+            ["slide", *SI0, "--h2", "0.5e-9", "--h1", "5e-10", "--tau0", "1e13", "--a", "1e-9"],
+            r"--tau0 must be in \[0, 1e\+11\] Pa \(tau0_over_E in \[0, 1\]\)",
+        ),
+        (
+            ["slide", *SI0, "--h2", "0.5e-9", "--h1", "5e-10", "--a", "1e-3"],
+            r"--a must be in \[5e-28, 5e-07\] m \(a_over_R in \[1e-20, 10\]\)",
+        ),
+        (
+            ["slide", *SI0, "--h2", "0.5e-9", "--h1", "5e-10", "--load", "1e7"],
+            r"--load=10000000\.0 N/m needs a contact of half-width 2\.52\d*e-06 m",
+        ),
+        (
+            ["roll", *SI0, "--h", "0.5e-9", "--load", "1", "--tau0", "1e13", "--d-over-a", "0.1"],
+            r"--tau0 must be in \[0\.1, 1e\+11\] Pa \(tau0_over_E in \[1e-12, 1\]\)",
+        ),
+        (
+            [
+                *["roll", *SI0, "--h", "0.5e-9", "--load", "1", "--tau0", "1e8"],
+                *["--tangential-load", "1e40"],
+            ],
+            r"--tangential-load must be in \[0, [0-9.e+]+\] N/m \(T_over_Ea in \[0, 1e\+12\]\)",
         ),
     ],
 )

@@ -712,5 +712,46 @@ def test_cylinder_load_below_pull_off_is_said_in_newton_per_metre():
         r"on the contact branch -13.287\d* N/m",
     ):
         CYL.contact(load=[1.0, -100.0])
-    with pytest.raises(NoEquilibriumError, match=r"^no contact carries load=-50.0 N/m"):
+    # and the tangential functions name their own parameter
+    with pytest.raises(NoEquilibriumError, match=r"^no contact carries normal_load=-50.0 N/m"):
         lc.cylinder_steady_rolling(CYL, -50.0, friction_stress=1e8, d_over_a=0.1)
+
+
+def test_si_inputs_outside_the_validated_domain_are_named_in_si():
+    # E h = 50 N/m, R = 50 nm: F/(Eh) in [-1e12, 1e12] is F in [-5e13, 5e13] N/m
+    with pytest.raises(
+        ValueError,
+        match=r"^load must be in \[-5e\+13, 5e\+13\] N/m \(F_over_Eh in \[-1e\+12, 1e\+12\]\), "
+        r"got 1e\+20$",
+    ):
+        CYL.contact(load=[1.0, 1e20])
+    with pytest.raises(ValueError, match=r"^normal_load must be in \[-5e\+13, 5e\+13\] N/m"):
+        lc.cylinder_steady_rolling(CYL, 1e20, friction_stress=1e8, d_over_a=0.1)
+    # a load inside that range whose contact is wider than 10 radii (Hertz: 3.9e5 N/m)
+    with pytest.raises(
+        ValueError,
+        match=r"^normal_load=1000000\.0 N/m needs a contact of half-width 7\.979\d*e-07 m, "
+        r"15\.9\d* radii: beyond the domain of the solvers \(a_over_R <= 10\)$",
+    ):
+        lc.cylinder_steady_rolling(CYL, 1e6, friction_stress=1e8, d_over_a=0.1)
+    with pytest.raises(ValueError, match=r"^load=1000000\.0 N/m needs a contact"):
+        CYL.contact(load=1e6)
+    with pytest.raises(
+        ValueError,
+        match=r"^contact_half_width must be in \[5e-158, 5e-07\] m \(a_over_R in \[1e-150, "
+        r"10\]\), got 1e-06$",
+    ):
+        CYL.contact(contact_half_width=[1e-9, 1e-6])
+    # the groups of the cylinder itself
+    with pytest.raises(
+        ValueError,
+        match=r"^R_over_h = 1e\+15 \(radius over adhesion_range\) is outside the validated "
+        r"domain \[0\.001, 1e\+12\]: radius=1\.0, modulus=100000000000\.0, "
+        r"cohesive_stress=1000000000\.0, "
+        r"adhesion_range=1e-15$",
+    ):
+        Cylinder.from_modulus(1.0, 1e11, cohesive_stress=1e9, adhesion_range=1e-15)
+    with pytest.raises(
+        ValueError, match=r"^sigma0_over_E = 1e\+07 \(cohesive_stress over modulus\) is outside"
+    ):
+        Cylinder.from_modulus(5e-8, 100.0, cohesive_stress=1e9, adhesion_range=5e-10)

@@ -582,10 +582,24 @@ BAD_SI = [
     ),
     (dict(friction_stress=1e8, friction_coefficient=0.3), r"give exactly one of friction_stress"),
     (dict(friction_stress=0.0), r"friction_stress must be in \(0, inf\), got 0\.0"),
-    (dict(friction_coefficient=-0.3), r"friction_coefficient must be in \(0, inf\)"),
+    (dict(friction_coefficient=-0.3), r"friction_coefficient must be in \[1e-06, 100\], got -0\.3"),
     (
         dict(friction_stress=1e8, tangential_load=1.0, d_over_a=0.5),
         r"give exactly one of d_over_a or tangential_load \[N/m\]",
+    ),
+    # the validated domain, said in SI units (E = 1e11 Pa, so tau0/E in [1e-12, 1] is
+    # tau0 in [0.1, 1e11] Pa)
+    (
+        dict(friction_stress=1e12),
+        r"friction_stress must be in \[0\.1, 1e\+11\] Pa \(tau0_over_E in \[1e-12, 1\]\), "
+        r"got 1000000000000\.0",
+    ),
+    (dict(friction_stress=1e-3), r"friction_stress must be in \[0\.1, 1e\+11\] Pa"),
+    (dict(friction_coefficient=1e3), r"friction_coefficient must be in \[1e-06, 100\], got 1000"),
+    (
+        dict(friction_stress=1e8, tangential_load=1e30),
+        r"tangential_load must be in \[0, [0-9.e+]+\] N/m \(T_over_Ea in \[0, 1e\+12\]\), "
+        r"got 1e\+30",
     ),
 ]
 

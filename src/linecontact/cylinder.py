@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from . import domain as _domain
 from . import normal as _normal
 from . import reference as _ref
 from ._validation import broadcast, check_array, non_negative, positive, scalar
@@ -178,6 +179,18 @@ class Cylinder:
                     f"{self.cohesive_stress!r}, adhesion_range="
                     f"{self.adhesion_range!r} are too far apart in scale"
                 )
+        for key, v, what in (
+            ("R_over_h", self.R_over_h, "radius over adhesion_range"),
+            ("sigma0_over_E", self.sigma0_over_E, "cohesive_stress over modulus"),
+        ):
+            low, _, high, _ = _domain.DOMAIN[key]
+            if not low <= v <= high:
+                raise ValueError(
+                    f"{key} = {v:.6g} ({what}) is outside the validated domain [{low:g}, "
+                    f"{high:g}]: radius={self.radius!r}, modulus={self.modulus!r}, "
+                    f"cohesive_stress={self.cohesive_stress!r}, adhesion_range="
+                    f"{self.adhesion_range!r}"
+                )
         _plausible("radius", self.radius, 4)
         _plausible("modulus", self.modulus, 4)
         if self.cohesive_stress > 0:  # without adhesion the range only sets a length scale
@@ -317,21 +330,31 @@ class Cylinder:
             )
         if contact_half_width is not None:
             a = positive("contact_half_width", contact_half_width)
+            _domain.check_si("contact_half_width", a, self.radius, "a_over_R", "m")
             r = _normal.normal_contact(
                 a / self.radius, self.R_over_h, self.sigma0_over_E, method=method
             )
         else:
-            F = check_array("load", load, low=-np.inf, low_inclusive=True)  # type: ignore[arg-type]
-            Eh = self.modulus * self.adhesion_range
-            if branch == "stable" and on_no_equilibrium == "raise":
-                # said in the units given ([N/m]), not only as F_over_Eh
-                F_min = _normal.pull_off(self.R_over_h, self.sigma0_over_E).F_minimum_over_Eh * Eh
-                if np.any(F < F_min):
-                    raise NoEquilibriumError(
-                        f"no contact carries load={float(F[F < F_min].flat[0])!r} N/m: it is "
-                        f"below the pull-off force, the minimum load on the contact branch "
-                        f"{F_min!r} N/m; the cylinder has pulled off"
-                    )
+            return self._for_load("load", load, branch, on_no_equilibrium)  # type: ignore[arg-type]
+        return self._wrap(r)
+
+    def _for_load(
+        self, name: str, load: ArrayLike, branch: str = "stable", on_no_equilibrium: str = "raise"
+    ) -> CylinderContact:
+        """The contact carrying ``load`` [N/m]; messages name the caller's parameter."""
+        F = check_array(name, load, low=-np.inf, low_inclusive=True)
+        Eh = self.modulus * self.adhesion_range
+        _domain.check_si(name, F, Eh, "F_over_Eh", "N/m")
+        if branch == "stable" and on_no_equilibrium == "raise":
+            # said in the units given ([N/m]), not only as F_over_Eh
+            F_min = _normal.pull_off(self.R_over_h, self.sigma0_over_E).F_minimum_over_Eh * Eh
+            if np.any(F < F_min):
+                raise NoEquilibriumError(
+                    f"no contact carries {name}={float(F[F < F_min].flat[0])!r} N/m: it is "
+                    f"below the pull-off force, the minimum load on the contact branch "
+                    f"{F_min!r} N/m; the cylinder has pulled off"
+                )
+        try:
             r = _normal.contact_for_load(
                 F / Eh,
                 self.R_over_h,
@@ -339,18 +362,24 @@ class Cylinder:
                 branch=branch,
                 on_no_equilibrium=on_no_equilibrium,
             )
-            # the load asked for, not F/(Eh) times E h (which need not give back F exactly)
-            c = self._wrap(r)
-            load_given = F.item() if np.ndim(c.load) == 0 else np.broadcast_to(F, np.shape(c.load))
-            return CylinderContact(
-                c.contact_half_width,
-                c.adhesive_zone_half_width,
-                load_given,
-                c.stable,
-                c.state,
-                r,
-            )
-        return self._wrap(r)
+        except _domain.TooWideError as e:
+            Fi = float(np.reshape(np.broadcast_to(F, np.shape(F)), -1)[e.index])
+            raise ValueError(
+                f"{name}={Fi!r} N/m needs a contact of half-width {e.a_over_R * self.radius:.6g}"
+                f" m, {e.a_over_R:.6g} radii: beyond the domain of the solvers (a_over_R <= "
+                f"{_domain.DOMAIN['a_over_R'][2]:g})"
+            ) from None
+        # the load asked for, not F/(Eh) times E h (which need not give back F exactly)
+        c = self._wrap(r)
+        load_given = F.item() if np.ndim(c.load) == 0 else np.broadcast_to(F, np.shape(c.load))
+        return CylinderContact(
+            c.contact_half_width,
+            c.adhesive_zone_half_width,
+            load_given,
+            c.stable,
+            c.state,
+            r,
+        )
 
     def pull_off(self) -> CylinderPullOff:
         """Pull-off force under load control [N/m]."""
@@ -447,10 +476,14 @@ def _cylinder_tangential(
     # every input checked, and the shapes against each other, before any solve
     if coulomb:
         F = check_array("normal_load", normal_load)
-        fr_name, fr = "friction_coefficient", positive("friction_coefficient", friction_coefficient)
+        fr_name, fr = (
+            "friction_coefficient",
+            _domain.check("friction_coefficient", friction_coefficient, "mu"),
+        )
     else:
         F = check_array("normal_load", normal_load, low=-np.inf)
         fr_name, fr = "friction_stress", positive("friction_stress", friction_stress)
+        _domain.check_si("friction_stress", fr, E, "tau0_over_E", "Pa")
     if d_over_a is not None:
         st_name = "d_over_a"
         st = check_array(
@@ -467,18 +500,22 @@ def _cylinder_tangential(
                 "non-adhesive Hertz contact: use a Cylinder without adhesion "
                 "(cohesive_stress = 0), or give friction_stress"
             )
-        contact = cylinder.contact(load=F)
+        contact = cylinder._for_load("normal_load", F)
         A = np.asarray(contact.contact_half_width) / cylinder.radius
         mu = fr
+        if d is None:
+            _domain.check_si("tangential_load", st, mu * F, "T_over_muF", "N/m")
         T = None if d is not None else st / (mu * F)
         coulomb_fn = steady_rolling_coulomb if rolling else sliding_initiation_coulomb
         r: Any = coulomb_fn(mu, A, d, T_over_muF=T, method=method, on_sliding=on_sliding)
         full = mu * F
         friction = "coulomb"
     else:
-        contact = cylinder.contact(load=F)
+        contact = cylinder._for_load("normal_load", F)
         a = np.asarray(contact.contact_half_width)
         t0 = fr
+        if d is None:
+            _domain.check_si("tangential_load", st, E * a, "T_over_Ea", "N/m")
         T = None if d is not None else st / (E * a)
         fn = steady_rolling if rolling else sliding_initiation
         # broadcast with a so that every field has the shape of the points

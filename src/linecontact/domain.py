@@ -20,7 +20,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ._validation import check_array
 
-__all__ = ["DOMAIN", "check", "check_widths", "scalar"]
+__all__ = ["DOMAIN", "TooWideError", "check", "check_si", "check_widths", "scalar"]
 
 #: name -> (low, low inclusive, high, high inclusive)
 DOMAIN: dict[str, tuple[float, bool, float, bool]] = {
@@ -66,6 +66,19 @@ def scalar(name: str, value: ArrayLike, key: str | None = None) -> float:
     return float(arr)
 
 
+class TooWideError(ValueError):
+    """A load whose contact is wider than the domain of ``a/R``.
+
+    ``index`` and ``a_over_R`` say which point and how wide, so that the SI layer can say it
+    in its own units.
+    """
+
+    def __init__(self, message: str, index: int, a_over_R: float) -> None:
+        super().__init__(message)
+        self.index = index
+        self.a_over_R = a_over_R
+
+
 def check_widths(A, F, F_name: str) -> None:
     """Refuse the loads whose contact is wider than the domain of ``a/R`` allows."""
     a_max = DOMAIN["a_over_R"][2]
@@ -74,7 +87,32 @@ def check_widths(A, F, F_name: str) -> None:
         i = int(np.flatnonzero(over.reshape(-1))[0])
         Fi = float(np.reshape(np.broadcast_to(F, over.shape), -1)[i])
         Ai = float(np.reshape(A, -1)[i])
-        raise ValueError(
+        raise TooWideError(
             f"{F_name}={Fi!r} needs a contact of half-width a_over_R = {Ai:.6g}, beyond the "
-            f"domain of the solvers (a_over_R <= {a_max:g})"
+            f"domain of the solvers (a_over_R <= {a_max:g})",
+            i,
+            Ai,
+        )
+
+
+def check_si(name: str, value: ArrayLike, unit_value: ArrayLike, key: str, unit: str) -> None:
+    """Refuse SI values whose group ``value/unit_value`` lies outside the domain of ``key``.
+
+    The message names the SI parameter and its range in SI units at that point, and the
+    group, e.g. ``contact_half_width must be in [5e-158, 5e-07] m (a_over_R in [1e-150,
+    10]), got 1e-06``.
+    """
+    v, u = np.broadcast_arrays(np.asarray(value, float), np.asarray(unit_value, float))
+    low, lo_inc, high, hi_inc = DOMAIN[key]
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore", under="ignore"):
+        g = v / u
+    bad = ~((g >= low if lo_inc else g > low) & (g <= high if hi_inc else g < high))
+    if np.any(bad):
+        i = int(np.flatnonzero(bad.reshape(-1))[0])
+        ui = float(u.reshape(-1)[i])
+        lo_br, hi_br = "[" if lo_inc else "(", "]" if hi_inc else ")"
+        group = key.removeprefix("sliding_").removeprefix("friction_")  # as the API names it
+        raise ValueError(
+            f"{name} must be in {lo_br}{low * ui:.6g}, {high * ui:.6g}{hi_br} {unit} ({group} in "
+            f"{lo_br}{low:g}, {high:g}{hi_br}), got {float(v.reshape(-1)[i])!r}"
         )

@@ -19,6 +19,7 @@ from typing import Any
 import numpy as np
 
 from ..cylinder import Cylinder
+from ..domain import TooWideError, check_si
 from ..output import FORMATS, Table, write
 
 #: Values that are numbers even though they start with "-": argparse (before Python 3.13)
@@ -415,8 +416,27 @@ def half_widths(args: argparse.Namespace, cyl: Cylinder | None, load_attr: str):
         if not np.all(np.isfinite(a) & (a > 0)):
             bad = a[~(np.isfinite(a) & (a > 0))][0]
             raise ValueError(f"--a must be a finite number > 0, got {bad!r}")
+        key = "sliding_a_over_R" if load_attr == "F_over_Eh2" else "a_over_R"
+        check_si("--a", a, cyl.radius, key, "m")  # type: ignore[union-attr]
         return a / cyl.radius  # type: ignore[union-attr]
     return None
+
+
+def si_loads(args: argparse.Namespace, cyl: Cylinder, key: str) -> np.ndarray:
+    """``--load`` [N/m] over its unit ``E h`` (``E h2`` for sliding), inside ``key``'s domain."""
+    load = np.asarray(args.load, float)
+    Eh = cyl.modulus * cyl.adhesion_range
+    check_si("--load", load, Eh, key, "N/m")
+    return load / Eh
+
+
+def too_wide(e: TooWideError, args: argparse.Namespace, cyl: Cylinder) -> ValueError:
+    """The API's 'needs a contact of half-width a_over_R = ...' said for ``--load`` in SI."""
+    load = float(np.reshape(np.asarray(args.load, float), -1)[e.index])
+    return ValueError(
+        f"--load={load!r} N/m needs a contact of half-width {e.a_over_R * cyl.radius:.6g} m, "
+        f"{e.a_over_R:.6g} radii: beyond the domain of the solvers (a_over_R <= 10)"
+    )
 
 
 def record_flags(parser: argparse.ArgumentParser, args: argparse.Namespace) -> None:

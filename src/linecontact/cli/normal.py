@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 
 from ..cylinder import Cylinder
+from ..domain import TooWideError
 from ..normal import NormalContact, contact_for_load, load_curve, normal_contact, pull_off
 from ..output import Table, table_from_result
 from ..reference import kappa, maugis_parameter
@@ -23,7 +24,9 @@ from ._options import (
     groups,
     half_widths,
     null_missing,
+    si_loads,
     si_parameters,
+    too_wide,
 )
 
 __all__ = ["register"]
@@ -68,11 +71,11 @@ def _cmd_normal(args: argparse.Namespace) -> int:
                 "--a-over-R-range or --a); the contact for a given load is found by the closed "
                 "form"
             )
-        if cyl is None:
-            F = np.asarray(args.F_over_Eh, float)
-        else:
-            F = np.asarray(args.load, float) / (cyl.modulus * cyl.adhesion_range)
-        r = contact_for_load(F, rho, s, branch=args.branch, on_no_equilibrium="report")
+        F = np.asarray(args.F_over_Eh, float) if cyl is None else si_loads(args, cyl, "F_over_Eh")
+        try:
+            r = contact_for_load(F, rho, s, branch=args.branch, on_no_equilibrium="report")
+        except TooWideError as e:
+            raise e if cyl is None else too_wide(e, args, cyl) from None
         state = np.asarray(r.state).reshape(-1)
         reason = _load_reasons(F.reshape(-1), state, rho, s, args.branch, cyl)
         given = "F_over_Eh"

@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from ..domain import TooWideError, check_si
 from ..output import table_from_result
 from ..sliding import sliding_contact, sliding_contact_for_load, sliding_pull_off
 from ._options import (
@@ -27,7 +28,9 @@ from ._options import (
     half_widths,
     null_missing,
     si_given,
+    si_loads,
     si_parameters,
+    too_wide,
 )
 
 __all__ = ["register"]
@@ -124,6 +127,10 @@ def _setup(args: argparse.Namespace):
         raise ValueError(f"--h1 must be a finite number > 0, got {args.h1!r}")
     if args.tau0 is not None and not (np.isfinite(args.tau0) and args.tau0 >= 0):
         raise ValueError(f"--tau0 must be a finite number >= 0, got {args.tau0!r}")
+    if args.h1 is not None:
+        check_si("--h1", args.h1, cyl.adhesion_range, "h1_over_h2", "m")
+    if args.tau0 is not None:
+        check_si("--tau0", args.tau0, cyl.modulus, "friction_tau0_over_E", "Pa")
     r = args.h1_over_h2 if args.h1 is None else args.h1 / cyl.adhesion_range
     tau = None if args.tau0 is None else args.tau0 / cyl.modulus
     return cyl.R_over_h, r, cyl.sigma0_over_E, tau, cyl
@@ -143,13 +150,13 @@ def _cmd_slide(args: argparse.Namespace) -> int:
             reason[i] = f"the {args.method} solver did not converge at a_over_R={float(A[i])!r}"
         given = "a_over_R"
     else:
-        if cyl is None:
-            F = np.asarray(args.F_over_Eh2, float)
-        else:
-            F = np.asarray(args.load, float) / (cyl.modulus * cyl.adhesion_range)
-        res = sliding_contact_for_load(
-            F, rho, r, s, tau0_over_E=tau, method=args.method, on_no_equilibrium="report"
-        )
+        F = np.asarray(args.F_over_Eh2, float) if cyl is None else si_loads(args, cyl, "F_over_Eh2")
+        try:
+            res = sliding_contact_for_load(
+                F, rho, r, s, tau0_over_E=tau, method=args.method, on_no_equilibrium="report"
+            )
+        except TooWideError as e:
+            raise e if cyl is None else too_wide(e, args, cyl) from None
         state = np.asarray(res.state).reshape(-1)
         reason = np.full(state.shape, None, dtype=object)
         if np.any(state != "contact"):
