@@ -27,3 +27,15 @@ def test_readme_python_block_runs(block, tmp_path):
     )
     assert p.returncode == 0, p.stderr
     assert "Traceback" not in p.stderr
+
+
+@pytest.mark.skipif(not README.exists(), reason="README.md is not beside the tests")
+def test_the_readme_domain_table_is_the_code_s():
+    from linecontact.domain import DOMAIN
+
+    text = README.read_text(encoding="utf-8")
+    section = text[text.index("## Validated domain") :]
+    section = section[: section.index("\n## ", 5)]
+    rows = re.findall(r"^\| `(\w+)` \| ([\[(])([-+.e\d]+), ([-+.e\d]+)([\])]) \|", section, re.M)
+    table = {k: (float(lo), b1 == "[", float(hi), b2 == "]") for k, b1, lo, hi, b2 in rows}
+    assert table == DOMAIN
