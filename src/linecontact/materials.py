@@ -102,7 +102,10 @@ def dundurs_beta(E1: ArrayLike, nu1: ArrayLike, E2: ArrayLike, nu2: ArrayLike):
     r"""Dundurs' second parameter :math:`\beta = -B/A` (Eq. 7; 0 for identical materials).
 
     With the cylinder as body 1: :math:`\beta = [G_1(1-2\nu_2) - G_2(1-2\nu_1)] /
-    [2(G_1(1-\nu_2) + G_2(1-\nu_1))]`, the standard sign convention.
+    [2(G_1(1-\nu_2) + G_2(1-\nu_1))]`, the sign of Hutchinson & Suo (1992)
+    with the cylinder as material 1: a rigid cylinder on a substrate of Poisson ratio
+    :math:`\nu_2` gives :math:`\beta = (1-2\nu_2)/(2(1-\nu_2))`, 2/7 for 0.3. Some texts
+    write the opposite sign; only :math:`|\beta|` matters here (the coupling warning).
     """
     A, B = compliance_constants(E1, nu1, E2, nu2)
     return -B / A
