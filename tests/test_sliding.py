@@ -436,8 +436,16 @@ def test_bad_input_inverse(kwargs, message):
         sl.sliding_contact_for_load(**args)
 
 
+def test_pull_off_without_adhesion_is_zero_at_zero_width():
+    # as pull_off: no adhesion, no tensile load; the zones are the touching gaps' h1 and h2
+    po = sl.sliding_pull_off(100.0, 2.0, 0.0)
+    assert po.F_pulloff_over_Eh2 == 0 and po.a_over_R_at_pulloff == 0
+    assert po.c1_over_R_zero_width == pytest.approx(math.sqrt(2 * 2.0 / 100.0), rel=1e-15)
+    assert po.c2_over_R_zero_width == pytest.approx(math.sqrt(2 / 100.0), rel=1e-15)
+
+
 def test_bad_input_pull_off():
-    with pytest.raises(ValueError, match="sigma0_over_E must be in \\(0, 1e\\+06\\], got 0.0"):
-        sl.sliding_pull_off(100.0, 2.0, 0.0)
+    with pytest.raises(ValueError, match="sigma0_over_E must be in \\[0, 1e\\+06\\], got -0.1"):
+        sl.sliding_pull_off(100.0, 2.0, -0.1)
     with pytest.raises(ValueError, match="h1_over_h2 must be in \\[0.001, 1000\\], got -2.0"):
         sl.sliding_pull_off(100.0, -2.0, 0.1)

@@ -366,8 +366,7 @@ class Cylinder:
             Fi = float(np.reshape(np.broadcast_to(F, np.shape(F)), -1)[e.index])
             raise ValueError(
                 f"{name}={Fi!r} N/m needs a contact of half-width {e.a_over_R * self.radius:.6g}"
-                f" m, {e.a_over_R:.6g} radii: beyond the domain of the solvers (a_over_R <= "
-                f"{_domain.DOMAIN['a_over_R'][2]:g})"
+                f" m, {e.a_over_R:.6g} radii: {e.limit}"
             ) from None
         # the load asked for, not F/(Eh) times E h (which need not give back F exactly)
         c = self._wrap(r)

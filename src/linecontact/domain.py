@@ -67,32 +67,46 @@ def scalar(name: str, value: ArrayLike, key: str | None = None) -> float:
 
 
 class TooWideError(ValueError):
-    """A load whose contact is wider than the domain of ``a/R``.
+    """A load whose contact half-width lies outside the domain of ``a/R`` of the solvers.
 
-    ``index`` and ``a_over_R`` say which point and how wide, so that the SI layer can say it
-    in its own units.
+    Mostly a contact wider than ``a/R = 10``; for steady sliding also one narrower than
+    ``a/R = 1e-20``. ``index``, ``a_over_R`` and ``limit`` (``"beyond the domain of the
+    solvers (a_over_R <= 10)"``) say which point, how wide and which bound, so that the SI
+    layer can say it in its own units.
     """
 
-    def __init__(self, message: str, index: int, a_over_R: float) -> None:
+    def __init__(self, message: str, index: int, a_over_R: float, limit: str = "") -> None:
         super().__init__(message)
         self.index = index
         self.a_over_R = a_over_R
+        self.limit = limit
 
 
-def check_widths(A, F, F_name: str) -> None:
-    """Refuse the loads whose contact is wider than the domain of ``a/R`` allows."""
-    a_max = DOMAIN["a_over_R"][2]
-    over = np.asarray(A > a_max)
-    if np.any(over):
-        i = int(np.flatnonzero(over.reshape(-1))[0])
-        Fi = float(np.reshape(np.broadcast_to(F, over.shape), -1)[i])
-        Ai = float(np.reshape(A, -1)[i])
-        raise TooWideError(
-            f"{F_name}={Fi!r} needs a contact of half-width a_over_R = {Ai:.6g}, beyond the "
-            f"domain of the solvers (a_over_R <= {a_max:g})",
-            i,
-            Ai,
-        )
+def check_widths(A, F, F_name: str, key: str = "a_over_R", narrow: bool = False) -> None:
+    """Refuse the loads whose contact half-width lies outside the domain of ``key``.
+
+    Wider than its upper end always; narrower than its lower end with ``narrow`` (where the
+    state at the width is then computed by a solver validated only down to that end).
+    """
+    a_min, _, a_max, _ = DOMAIN[key]
+    with np.errstate(invalid="ignore"):
+        over = np.asarray(A > a_max)
+        under = np.asarray(A < a_min) if narrow else np.zeros_like(over)
+    for bad, limit in (
+        (over, f"beyond the domain of the solvers (a_over_R <= {a_max:g})"),
+        (under, f"below the domain of the solvers (a_over_R >= {a_min:g})"),
+    ):
+        if np.any(bad):
+            i = int(np.flatnonzero(bad.reshape(-1))[0])
+            Fi = float(np.reshape(np.broadcast_to(F, bad.shape), -1)[i])
+            Ai = float(np.reshape(A, -1)[i])
+            width = f"a_over_R = {Ai:.6g}" if Ai > 0 else f"a_over_R < {a_min:g}"
+            raise TooWideError(
+                f"{F_name}={Fi!r} needs a contact of half-width {width}, {limit}",
+                i,
+                Ai,
+                limit,
+            )
 
 
 def check_si(name: str, value: ArrayLike, unit_value: ArrayLike, key: str, unit: str) -> None:

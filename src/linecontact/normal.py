@@ -173,7 +173,7 @@ def _closed_form_from_u(u, kap, rho, ustar):
     bp = _ref._branch_point(u, kap)
     sq = np.sqrt(2 / rho)
     A = bp["abar"] * sq
-    C = bp["X"] * bp["Ct"] * sq
+    C = np.maximum(bp["X"] * bp["Ct"] * sq, A)  # c >= a despite rounding
     F = (np.pi / 2) * bp["phi"]
     stable = u <= ustar
     return A, C, F, stable
@@ -227,7 +227,8 @@ def _closed_form(A, rho, s):
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     abar = A * np.sqrt(rho / 2)
     u, res, _, bp = _ref._solve_abar(abar, kap)
-    C = bp["X"] * bp["Ct"] * np.sqrt(2 / rho)
+    # c >= a exactly (coth u >= 1), which the product's rounding can miss by an ulp or two
+    C = np.maximum(bp["X"] * bp["Ct"] * np.sqrt(2 / rho), A)
     F = (np.pi / 2) * bp["phi"]
     return u, C, F, res, _stable(u, kap, bp)
 
@@ -805,7 +806,16 @@ def contact_for_load(
     Fmin, F0, us, kap = d["F_minimum_over_Eh"], d["F_zero_width_over_Eh"], d["us"], d["kappa"]
     F_asked = F
     if branch == "stable":
-        bad = F < Fmin
+        # without adhesion a contact needs a compressive load (F = 0 touches at zero width),
+        # as in sliding_contact_for_load
+        nonpos = (s == 0) & (F <= 0)
+        bad = (F < Fmin) | nonpos
+        if np.any(nonpos) and not report:
+            i = np.flatnonzero(np.reshape(nonpos, -1))[0]
+            raise NoEquilibriumError(
+                f"no contact carries F_over_Eh={float(F.reshape(-1)[i])!r} without adhesion "
+                f"(sigma0_over_E=0): the pull-off force is 0 and the load must be > 0"
+            )
         if np.any(bad) and not report:
             i = np.flatnonzero(np.reshape(bad, -1))[0]
             raise NoEquilibriumError(
@@ -927,7 +937,9 @@ def non_contact(
     )
     k = 4 * _ref.LN2 * s / np.pi
     rhs = 2 * (1 - g) / rho
-    C = rhs / (k + np.hypot(k, np.sqrt(rhs)))  # no overflow of k^2
+    # the root of C^2 + 2 k C = rhs without overflow of k^2; C = 0 at g0 = h (also 0/0 at s = 0)
+    den = k + np.hypot(k, np.sqrt(rhs))
+    C = rhs / np.where(rhs > 0, den, 1.0)
     F = -2 * s * rho * C
     vals = dict(
         central_gap_over_h=g,

@@ -114,7 +114,6 @@ from . import domain as _domain
 from . import reference as _ref
 from ._validation import (
     broadcast,
-    check_array,
     check_solver_options,
     positions,
     scalar_or_array,
@@ -969,6 +968,7 @@ def _phi_at(lab, kap, r):
 
 
 _LAB_LO = np.log(1e-9)  # abar below which the load is indistinguishable from its a -> 0 limit
+_LAB_DEEP = -300.0  # the lower end of a contact-for-load bracket at a zero-width minimum
 _GRID = np.linspace(0.0, 1.0, 41)  # the grid in ln abar that brackets the load minimum
 
 
@@ -1075,16 +1075,14 @@ def sliding_pull_off(
     Parameters
     ----------
     R_over_h2, h1_over_h2, sigma0_over_E : array_like
-        As in :func:`sliding_contact`; ``sigma0_over_E > 0``.
+        As in :func:`sliding_contact`. Without adhesion (``sigma0_over_E = 0``) the
+        pull-off force is 0, at zero width, as in :func:`linecontact.pull_off`.
 
     Returns
     -------
     SlidingPullOff
     """
     rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
-    s = check_array(
-        "sigma0_over_E", s, high=_domain.DOMAIN["sigma0_over_E"][2], high_inclusive=True
-    )
     scalar = scalar_or_array(rho, r, s)
     rho, r, s = broadcast(R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s)
     _ref._check_kappa(rho, s, "R_over_h2")
@@ -1137,47 +1135,56 @@ def _lower_end(F, rho, r, s, kap, phi_t, report: bool = False):
     Flat arrays or NumPy scalars; the pull-off search runs on the adhesive points only.
     With ``report`` the points below the pull-off force (or at a load <= 0 without
     adhesion) are not an error: they are marked ``missing`` and their target load is moved
-    to one that a contact carries. Returns ``(lab_lo, phi_t, missing)``.
+    to one that a contact carries. Returns ``(lab_lo, phi_t, missing, phi_po)``, the last
+    the load at the lower end (the pull-off load; 0 without adhesion).
+
+    Where the minimum sits at zero width the branch starts at ``abar -> 0``: the bracket
+    starts at ``abar = e**-300`` (a load within round-off of the zero-width one); without
+    adhesion just below the width that carries the target (``Phi = abar^2``).
     """
     adh = s > 0
     if not isinstance(F, np.ndarray):
-        phi_po, lab_lo = np.float64(0.0), np.float64(_LAB_LO)
+        phi_po, lab_lo = np.float64(0.0), np.float64(_LAB_DEEP)
         if adh:
             d = _pulloff_flat(kap, r)
             phi_po = d["phi_min"]
             lab_lo = _ref._where(d["interior"], d["lab_min"], lab_lo)
     else:
-        lab_lo = np.full(F.shape, _LAB_LO)
+        lab_lo = np.full(F.shape, _LAB_DEEP)
         phi_po = np.zeros(F.shape)
         if adh.any():
             d = _pulloff_flat(kap[adh], r[adh])
             phi_po[adh] = d["phi_min"]
-            lab_lo[adh] = np.where(d["interior"], d["lab_min"], _LAB_LO)
-    below = adh & (phi_t < phi_po)
+            lab_lo[adh] = np.where(d["interior"], d["lab_min"], _LAB_DEEP)
+    below = adh & (F < (np.pi / 2) * phi_po)  # as the pull-off force is reported
     nonpos = ~adh & (phi_t <= 0)
     missing = below | nonpos
+    # without adhesion the load is Hertz's, Phi = abar^2, down to any width: start the
+    # bracket below the width that carries the target (F = 1e-300 needs abar ~ 1e-150)
+    hertz_lo = 0.5 * np.log(_ref._maximum(phi_t, 1e-300)) - 1.0
+    lab_lo = _ref._where(~adh, hertz_lo, lab_lo)
     if report:
         # a load that a contact carries stands in (the values are NaN in the result)
         phi_t = _ref._where(below, phi_po, _ref._where(nonpos, 1.0, phi_t))
-        return lab_lo, phi_t, missing
+        return lab_lo, phi_t, missing, phi_po
     bad = np.reshape(below, -1)
-    F, rho, r, s, phi_po = (np.reshape(v, -1) for v in (F, rho, r, s, phi_po))
+    Ff, rhof, rf, sf, pf = (np.reshape(v, -1) for v in (F, rho, r, s, phi_po))
     if bad.any():
         g = np.flatnonzero(bad)[0]
         raise NoEquilibriumError(
-            f"no steadily sliding contact carries F_over_Eh2={float(F[g])!r}: it is below "
-            f"the pull-off force F_pulloff_over_Eh2={float(np.pi / 2 * phi_po[g])!r} "
-            f"(R_over_h2={float(rho[g])!r}, h1_over_h2={float(r[g])!r}, "
-            f"sigma0_over_E={float(s[g])!r}); the cylinder has pulled off"
+            f"no steadily sliding contact carries F_over_Eh2={float(Ff[g])!r}: it is below "
+            f"the pull-off force F_pulloff_over_Eh2={float(np.pi / 2 * pf[g])!r} "
+            f"(R_over_h2={float(rhof[g])!r}, h1_over_h2={float(rf[g])!r}, "
+            f"sigma0_over_E={float(sf[g])!r}); the cylinder has pulled off"
         )
     nonpos = np.reshape(nonpos, -1)
     if nonpos.any():
         i = np.flatnonzero(nonpos)[0]
         raise NoEquilibriumError(
-            f"no contact carries F_over_Eh2={float(F[i])!r} without adhesion "
-            f"(sigma0_over_E=0): the load must be > 0"
+            f"no contact carries F_over_Eh2={float(Ff[i])!r} without adhesion "
+            f"(sigma0_over_E=0): the pull-off force is 0 and the load must be > 0"
         )
-    return lab_lo, phi_t, missing
+    return lab_lo, phi_t, missing, phi_po
 
 
 def _double_step(lab, ph, phi_t, kap, r):
@@ -1187,9 +1194,12 @@ def _double_step(lab, ph, phi_t, kap, r):
     return (lab, ph), ~(ph < phi_t)
 
 
-def _load_step(lab, lo, hi, u1, u2, phi_t, kap, r):
+def _load_step(lab, lo, hi, u1, u2, phi_t, pmin, kap, r):
     """One bracketed Newton step in ln abar of Phi(abar) = phi_t along the stable branch.
 
+    Newton on ``ln(Phi - pmin) = ln(phi_t - pmin)`` (``pmin`` the load at the lower end),
+    which is exact for Hertz (``Phi = abar^2``) and takes loads many decades above the
+    lower end in a few steps; on ``Phi - phi_t`` where a difference is not positive.
     Also returns the u1, u2 of the closed form at the point evaluated (a done point keeps
     that point, so they belong to the returned ln abar).
     """
@@ -1200,10 +1210,19 @@ def _load_step(lab, lo, hi, u1, u2, phi_t, kap, r):
     up = fx > 0
     hi = where(up, lab, hi)
     lo = where(up, lo, lab)
-    nxt = lab - fx / (dph * np.exp(lab))
+    ab = np.exp(lab)
+    d, dt = ph - pmin, phi_t - pmin
+    logs = (d > 0) & (dt > 0)
+    nxt = where(
+        logs,
+        lab - np.log(where(logs, d / dt, 1.0)) * d / (dph * ab),
+        lab - fx / (dph * ab),
+    )
     nxt = where((abs(nxt) < np.inf) & (nxt > lo) & (nxt < hi), nxt, 0.5 * (lo + hi))
+    # at the noise of Phi's terms (Hertz's abar^2, the adhesive rest), relative at any scale
+    ab2 = np.exp(2 * lab)
     done = (
-        (abs(fx) <= 4e-16 * mx(1.0, abs(phi_t)))
+        (abs(fx) <= 4e-16 * mx(mx(abs(phi_t), ab2), abs(ph - ab2)))
         | (abs(nxt - lab) <= 1e-15 * mx(1.0, abs(lab)))
         | (hi - lo <= 1e-15 * mx(1.0, abs(hi)))
     )
@@ -1288,7 +1307,7 @@ def sliding_contact_for_load(
     # convergence check of the state found reports a failure
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         # lower end of the stable branch and its load
-        lab_lo, phi_t, missing = _lower_end(F, rho, r, s, kap, phi_t, report)
+        lab_lo, phi_t, missing, phi_lo = _lower_end(F, rho, r, s, kap, phi_t, report)
         # upper end: where Phi exceeds the target (Hertz: Phi >= abar^2 - kappa abar sinh ...)
         lab_hi = np.log(np.sqrt(_ref._maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
         ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
@@ -1299,14 +1318,28 @@ def sliding_contact_for_load(
         lab = 0.5 * (lab_lo + lab_hi)
         zero = 0.0 * lab
         (lab, _, _, u1, u2), _ = _ref._iterate(
-            _load_step, (lab, lab_lo, lab_hi, zero, zero), (phi_t, kap, r), 200
+            _load_step, (lab, lab_lo, lab_hi, zero, zero), (phi_t, phi_lo, kap, r), 200
         )
         A = np.exp(lab) * np.sqrt(2 / rho)
+        # narrower than the domain of sliding_contact: the load there is the zero-width one
+        # to round-off (kept at the domain's end), or the point is refused (A = 0 below)
+        a_min = _domain.DOMAIN["sliding_a_over_R"][0]
+        narrow = (A < a_min) & ~missing
+        if np.any(narrow):
+            ph_f, _, u1f, u2f = _phi_at(np.log(a_min * np.sqrt(rho / 2)), kap, r)
+            scale = _ref._maximum(abs(phi_t), abs(phi_lo))
+            ok = abs(ph_f - phi_t) <= 1e-12 * scale
+            where = _ref._where
+            # (without adhesion the width found is Hertz's and is said; else it is < a_min)
+            A = where(narrow, where(ok, a_min, where(s == 0, A, 0.0)), A)
+            u1, u2 = where(narrow, u1f, u1), where(narrow, u2f, u2)
         if not scalar or method != "closed-form":  # the collocation works on arrays
             A, rho, r, s, tau, u1, u2, F, missing = (
                 np.reshape(v, -1) for v in (A, rho, r, s, tau, u1, u2, F, missing)
             )
-    _domain.check_widths(np.where(missing, np.nan, A), F, "F_over_Eh2")
+    _domain.check_widths(
+        np.where(missing, np.nan, A), F, "F_over_Eh2", "sliding_a_over_R", narrow=True
+    )
     _ref._warn_wide(np.where(missing, np.nan, A))
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # see sliding_contact
         dd = _solve_flat(

@@ -435,7 +435,7 @@ def too_wide(e: TooWideError, args: argparse.Namespace, cyl: Cylinder) -> ValueE
     load = float(np.reshape(np.asarray(args.load, float), -1)[e.index])
     return ValueError(
         f"--load={load!r} N/m needs a contact of half-width {e.a_over_R * cyl.radius:.6g} m, "
-        f"{e.a_over_R:.6g} radii: beyond the domain of the solvers (a_over_R <= 10)"
+        f"{e.a_over_R:.6g} radii: {e.limit}"
     )
 
 

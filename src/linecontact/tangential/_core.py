@@ -360,7 +360,13 @@ def _run(
     on_sliding,
     params: dict,
 ):
-    """Validate the state variable, solve, return (fields, diagnostics, scalar-flag parts)."""
+    """Validate the state variable and solve.
+
+    Returns ``(arrays, load, creep, diag, scalar)``: the broadcast parameters, the tangential
+    load in the problem's unit (``T_over_Ea`` for constant ``tau0``, ``T_over_muF`` for
+    Coulomb; the one given is returned exactly), the creep over its scale (rolling), the
+    diagnostic fields and whether the call was scalar.
+    """
     _one_of(d_over_a, load, load_name)
     _check_options(method, n, tol, raise_on_failure, on_sliding)
     names = list(params)
@@ -454,7 +460,12 @@ def _run(
         d_over_a=dl,
         T_over_T_full_slip=T_unit / pb.T_full,
     )
-    return arrays, T_unit, creep, diag, scalar
+    # the load in the caller's unit: the one given, exactly, or the one of the d/a given
+    if T_target is not None:
+        load = g
+    else:
+        load = arrays[0] * T_unit if pb.constant else T_unit
+    return arrays, load, creep, diag, scalar
 
 
 def _build(cls, method, scalar, **vals):

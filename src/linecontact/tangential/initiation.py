@@ -386,7 +386,7 @@ def sliding_initiation(
     >>> sliding_initiation(0.01, T_over_Ea=0.03).state
     'sliding'
     """
-    arrays, T_unit, _, diag, scalar = _run(
+    arrays, load, _, diag, scalar = _run(
         _INITIATION,
         d_over_a,
         T_over_Ea,
@@ -399,7 +399,7 @@ def sliding_initiation(
         {"tau0_over_E": _domain.check("tau0_over_E", tau0_over_E)},
     )
     (t0,) = arrays
-    return _build(SlidingInitiation, method, scalar, T_over_Ea=t0 * T_unit, tau0_over_E=t0, **diag)
+    return _build(SlidingInitiation, method, scalar, T_over_Ea=load, tau0_over_E=t0, **diag)
 
 
 def sliding_initiation_coulomb(
@@ -446,7 +446,7 @@ def sliding_initiation_coulomb(
     >>> round(r.T_over_muF, 12)
     0.75
     """
-    arrays, T_unit, _, diag, scalar = _run(
+    arrays, load, _, diag, scalar = _run(
         _CATTANEO_MINDLIN,
         d_over_a,
         T_over_muF,
@@ -463,8 +463,8 @@ def sliding_initiation_coulomb(
         CoulombSlidingInitiation,
         method,
         scalar,
-        T_over_muF=T_unit,
-        T_over_Ea=(np.pi / 4) * m * A * T_unit,
+        T_over_muF=load,
+        T_over_Ea=(np.pi / 4) * m * A * load,
         mu=m,
         a_over_R=A,
         **diag,

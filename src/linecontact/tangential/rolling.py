@@ -337,7 +337,7 @@ def steady_rolling(
     >>> abs(steady_rolling(0.01, 0.0, method="collocation").creep_over_V - r.creep_over_V) < 1e-14
     True
     """
-    arrays, T_unit, creep, diag, scalar = _run(
+    arrays, load, creep, diag, scalar = _run(
         _ROLLING,
         d_over_a,
         T_over_Ea,
@@ -354,7 +354,7 @@ def steady_rolling(
         SteadyRolling,
         method,
         scalar,
-        T_over_Ea=t0 * T_unit,
+        T_over_Ea=load,
         creep_over_V=t0 * creep,
         tau0_over_E=t0,
         **diag,
@@ -402,7 +402,7 @@ def steady_rolling_coulomb(
     >>> round(r.T_over_muF, 12), round(r.creep_over_V / (0.3 * 0.01), 12)
     (0.75, -0.5)
     """
-    arrays, T_unit, creep, diag, scalar = _run(
+    arrays, load, creep, diag, scalar = _run(
         _CARTER,
         d_over_a,
         T_over_muF,
@@ -419,8 +419,8 @@ def steady_rolling_coulomb(
         CoulombRolling,
         method,
         scalar,
-        T_over_muF=T_unit,
-        T_over_Ea=(np.pi / 4) * m * A * T_unit,
+        T_over_muF=load,
+        T_over_Ea=(np.pi / 4) * m * A * load,
         creep_over_V=m * A * creep,
         mu=m,
         a_over_R=A,
