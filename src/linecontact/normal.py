@@ -1047,7 +1047,8 @@ def load_curve(
         Largest contact half-width; default: three times the width at pull-off, at least
         the Hertz width at ``F = 10 |F_pulloff|`` and at least ``0.02``, but at most the
         small-strain limit :data:`~linecontact.reference.A_OVER_R_SMALL_STRAIN` (or 1.5
-        times the width at pull-off, if that is larger).
+        times the width at pull-off, if that is larger), and never beyond ``a/R = 10``, the
+        end of the domain (where the pull-off is wider still, the curve stops short of it).
     num, num_noncontact : int
         Points on the contact and the non-contact branches (>= 2 each).
     """
@@ -1061,7 +1062,8 @@ def load_curve(
         a_po = float(po.a_over_R_at_minimum)
         a_h = float(np.sqrt(4 * 10 * abs(float(po.F_pulloff_over_Eh)) / (np.pi * rho)))
         # within the small-strain range unless the pull-off itself is close to its end
-        cap = max(_ref.A_OVER_R_SMALL_STRAIN, 1.5 * a_po)
+        # and never beyond the domain of the solvers (a pull-off wider than that is cut off)
+        cap = min(max(_ref.A_OVER_R_SMALL_STRAIN, 1.5 * a_po), _domain.DOMAIN["a_over_R"][2])
         a_max_over_R = min(max(3 * a_po, a_h, 0.02), cap)
     amax = _domain.scalar("a_max_over_R", a_max_over_R)
     A = np.unique(
@@ -1072,7 +1074,10 @@ def load_curve(
             ]
         )
     )
-    if 0 < po.a_over_R_at_minimum < amax:
+    # the minimum is a point of the curve (unless narrower than the domain: for small kappa
+    # it sits at widths like 1e-152 R, its load within round-off of the zero-width load)
+    at_min = _domain.DOMAIN["a_over_R"][0] <= po.a_over_R_at_minimum < amax
+    if at_min:
         A = np.unique(np.append(A, po.a_over_R_at_minimum))
     nc = normal_contact(A, rho, s)
     parts_branch = []
@@ -1090,6 +1095,6 @@ def load_curve(
     F = np.concatenate([F_nc, nc.F_over_Eh])
     stable = np.concatenate([np.zeros(gaps.size, bool), nc.stable])
     turning = np.zeros(a.size, bool)
-    if po.a_over_R_at_minimum > 0:
+    if at_min:
         turning[gaps.size + int(np.argmin(np.abs(A - po.a_over_R_at_minimum)))] = True
     return LoadCurve(branch, gap, a, c, F, stable, turning, rho, s, po)

@@ -12,6 +12,7 @@ status 1.
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 import textwrap
 import warnings
@@ -67,12 +68,25 @@ def build_parser() -> argparse.ArgumentParser:
     return p
 
 
+def _silence_stdout() -> None:
+    """Send whatever stdout still holds to the null device (after a broken pipe)."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError, AttributeError):  # not a file descriptor (a test's buffer)
+        pass
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the CLI; returns the exit status (also usable in-process by tests).
 
     Exit status: 0 when the run produced its output (points without a state are records
     with ``state`` and ``reason``), 1 when no point could be computed or a solver failed,
-    2 for bad input (one ``error:`` line on stderr naming the flag, no traceback).
+    2 for bad input (one ``error:`` line on stderr naming the flag, no traceback), 130 when
+    interrupted (Ctrl-C: one line on stderr). Output piped into a reader that stops early
+    (``| head``) ends quietly with status 0. A file written with ``-o`` appears whole or
+    not at all.
     """
     parser = build_parser()
     args = parser.parse_args(argv)
@@ -101,6 +115,14 @@ def main(argv: Sequence[str] | None = None) -> int:
                 warnings.simplefilter("always")
                 warnings.showwarning = once
             return int(args.func(args))
+    except BrokenPipeError:
+        # the reader went away (``linecontact ... | head``): nothing more to say to it. Point
+        # stdout at the null device so that the interpreter's final flush is quiet too.
+        _silence_stdout()
+        return 0
+    except KeyboardInterrupt:
+        print(f"{prefix}: interrupted", file=sys.stderr)
+        return 130
     except NoPointError as exc:
         print(f"{prefix}: error: no point could be computed: {exc}", file=sys.stderr)
         return 1
