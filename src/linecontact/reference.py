@@ -440,7 +440,7 @@ def _kappa_stationary(u: NDArray) -> NDArray:
 # the contact branch at a given width
 
 
-_W_LO = float(np.log(1e-9))  # bracket of _u_of_abar in w = ln u
+_W_LO = float(np.log(1e-60))  # bracket of _u_of_abar in w = ln u (c - a ~ u^2 a / 2)
 _W_HI = float(np.log(750.0))
 
 

@@ -571,6 +571,35 @@ def _cf_outputs(A, rho, r, s, u1, u2):
     return ecc, F, M, dPhi
 
 
+def _stable(A, rho, r, s, u1, u2, dphi):
+    """Stable under load control: ``dF/da > 0`` where its sign is clear (one definition).
+
+    Where the derivative is lost in round-off (near the load minimum, or at widths so small
+    that the load is flat to the last digit, next to a zero-width minimum) the width is
+    compared with that of the minimum (:func:`_pulloff_flat`), as :func:`sliding_pull_off`
+    and :func:`sliding_contact_for_load` locate it: stable iff wider than an interior
+    minimum, always next to a zero-width one. Flat arrays or NumPy scalars.
+    """
+    ab = A * np.sqrt(rho / 2)
+    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    with np.errstate(over="ignore", invalid="ignore"):
+        c1, c2 = np.cosh(u1), np.cosh(u2)
+        scale = 2 * ab + kap * (c1 + c2) + kap * ab * (c1 + c2)
+    clear = abs(dphi) > 1e-8 * scale
+    if not isinstance(A, np.ndarray):
+        if clear or not s > 0:
+            return bool(dphi > 0)
+        d = _pulloff_flat(kap, r)
+        return bool(not d["interior"] or np.log(ab) >= d["lab_min"])
+    out = np.asarray(dphi > 0)
+    unclear = ~clear & (s > 0)
+    if np.any(unclear):
+        out = out.copy()
+        d = _pulloff_flat(kap[unclear], r[unclear])
+        out[unclear] = ~d["interior"] | (np.log(ab[unclear]) >= d["lab_min"])
+    return out
+
+
 def _cf_coefficients(A, s, u1, u2, n):
     """Chebyshev-U coefficients b_j (j < n) of pbar/E on [-1, 1] (closed form)."""
     k = np.arange(1, n + 1)
@@ -780,7 +809,7 @@ def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
     else:
         d = _collocation(A, rho, r, s, n, tol)
         _, _, _, dphi = _cf_outputs(A, rho, r, s, d["u1"], d["u2"])
-    d["stable"] = dphi > 0
+    d["stable"] = _stable(A, rho, r, s, d["u1"], d["u2"], dphi)
     return d
 
 
