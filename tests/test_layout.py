@@ -23,7 +23,12 @@ FLOORS = {
         "linecontact.results",
     ],
     "core": ["linecontact.sie", "linecontact.reference", "linecontact.materials"],
-    "problems": ["linecontact.normal", "linecontact.sliding", "linecontact.tangential"],
+    "problems": [
+        "linecontact.normal",
+        "linecontact.sliding",
+        "linecontact.tangential",
+        "linecontact.push",
+    ],
     "si": ["linecontact.cylinder"],
     "shells": ["linecontact.output", "linecontact.cli", "linecontact.figures"],
     "front": ["linecontact", "linecontact.__main__"],

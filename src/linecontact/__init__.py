@@ -39,6 +39,7 @@ from .normal import (
     normal_contact,
     pull_off,
 )
+from .push import Push, TipPush, push, tip_push
 from .reference import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
 from .sliding import (
     SlidingContact,
@@ -62,8 +63,10 @@ __all__ = [
     "NoEquilibriumError",
     "NormalContact",
     "PullOff",
+    "Push",
     "SlidingContact",
     "SlidingPullOff",
+    "TipPush",
     "__version__",
     "adhesion_from_work",
     "compliance_constants",
@@ -81,6 +84,7 @@ __all__ = [
     "non_contact",
     "normal_contact",
     "pull_off",
+    "push",
     "sliding_contact",
     "sliding_contact_for_load",
     "sliding_initiation",
@@ -88,5 +92,6 @@ __all__ = [
     "sliding_pull_off",
     "steady_rolling",
     "steady_rolling_coulomb",
+    "tip_push",
     "zero_width_load",
 ]

@@ -1,0 +1,379 @@
+r"""A fibre pushed sideways: will it stay, roll or slide (the paper's future work).
+
+A push ``Q`` per unit length acts horizontally at height ``H`` above the substrate on a
+cylinder under the normal load ``F``, held by Maugis--Dugdale adhesion with the receding
+range ``h1`` (trailing edge) and the advancing range ``h2`` (leading edge), ``h1 >= h2``,
+and by a friction stress ``tau0``. The derivation is ``docs/push.md``:
+
+- the contact of steady motion, rolling or sliding, is the steady sliding contact at the
+  load (half-width ``a_slide``); its pressure's moment about the axis is ``R dw``, with the
+  adhesion hysteresis ``dw = sigma0 (h1 - h2)``;
+- rolling resistance ``Q_roll = R dw / H`` (moment balance; energy gives the same), with the
+  contact shear ``S = Q_roll (H - R)/R`` that the steady rolling solution carries (its creep
+  is reported);
+- sliding resistance ``Q_slide = 2 a_slide tau0 + dw`` (friction, and the horizontal pull of
+  the adhesive zones on the curved surface, which the energy balance requires);
+- the first motion is the one with the lower resistance: rolling iff ``H > H* = R dw /
+  Q_slide``; gross slip of the contact at rest (half-width ``a_rest``, the normal contact
+  with the advancing range) starts at ``Q_onset = 2 a_rest tau0``, and the resistance rises
+  to ``Q_slide`` as the trailing edge stretches: the static peak is the kinetic value.
+
+Groups as in steady sliding: lengths over ``R`` (``H_over_R``) or ``h2``, forces per unit
+length over ``E h2``.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from . import domain as _domain
+from ._validation import broadcast, check_array, scalar_or_array
+from .normal import contact_for_load
+from .results import Result, as_output
+from .sliding import sliding_contact_for_load
+from .tangential import sliding_initiation, steady_rolling
+
+__all__ = ["Push", "TipPush", "push", "tip_push"]
+
+#: The states of a pushed fibre (``Push.state``) and its first motions.
+STATES = ("rest", "roll", "slide", "roll+slide")
+
+
+@dataclass(frozen=True)
+class Push(Result):
+    """Rolling and sliding resistance of a pushed fibre, its first motion and its state.
+
+    Attributes
+    ----------
+    H_over_R : ndarray or float
+        Height of the push above the substrate over ``R`` (1 at the axis).
+    a_rest_over_R : ndarray or float
+        Contact half-width at rest (the normal contact at the load with the advancing
+        range ``h2``); NaN where no contact at rest carries the load (it is below the
+        pull-off force of the contact at rest, though not below that of steady sliding).
+    a_slide_over_R : ndarray or float
+        Contact half-width of steady motion (the steady sliding contact at the load).
+    Q_roll_over_Eh2 : ndarray or float
+        Steady rolling resistance ``R dw / H`` (``inf`` at ``H = 0``), from the moment of
+        the sliding contact's pressure about the axis.
+    Q_slide_over_Eh2 : ndarray or float
+        Steady sliding resistance ``2 a_slide tau0 + dw``; the static (peak) value too.
+    friction_over_Eh2, hysteresis_over_Eh2 : ndarray or float
+        Its two parts: ``2 a_slide tau0`` and ``dw = sigma0 (h1 - h2)``.
+    Q_onset_over_Eh2 : ndarray or float
+        ``2 a_rest tau0``: gross slip of the contact at rest begins (the resistance then
+        rises to ``Q_slide`` as the trailing edge stretches).
+    H_critical_over_R : ndarray or float
+        ``H* = R dw / Q_slide``: rolling comes first above it.
+    first_motion : ndarray of str or str
+        ``"roll"``, ``"slide"``, or ``"roll+slide"`` (rolling comes first but needs more
+        shear than the contact holds, ``|S_roll| >= 2 a_slide tau0``).
+    S_roll_over_Eh2 : ndarray or float
+        The contact's shear on the fibre while rolling, ``Q_roll (H - R)/R`` (negative:
+        resisting, below the axis; positive: driving, above it).
+    creep_over_V : ndarray or float
+        Creep while rolling, ``(V - omega R)/V`` (negative when the shear drives); NaN
+        where the contact cannot hold ``S_roll``. Also the relative size of the
+        difference between the energy and moment balances (``docs/push.md`` section 2).
+    Q_over_Eh2 : ndarray or float
+        The push given (NaN without one).
+    state : ndarray of str or str
+        For a push given: ``"rest"``, ``"roll"``, ``"slide"`` or ``"roll+slide"`` (above
+        both resistances); ``""`` without one.
+    d_over_a_rest : ndarray or float
+        Stick-zone half-width over ``a_rest`` at rest under the push given (0 from
+        ``Q_onset`` on: the fibre has slipped and stopped, the trailing edge stretched);
+        NaN when moving or without a push.
+    residual_load : ndarray or float
+        Relative residual of the two load inversions (the contacts carry ``F``).
+    converged : ndarray or bool
+        Every sub-solution converged.
+    """
+
+    inputs: ClassVar[tuple[str, ...]] = (
+        "R_over_h2",
+        "h1_over_h2",
+        "sigma0_over_E",
+        "tau0_over_E",
+        "F_over_Eh2",
+    )
+
+    H_over_R: NDArray | float
+    a_rest_over_R: NDArray | float
+    a_slide_over_R: NDArray | float
+    Q_roll_over_Eh2: NDArray | float
+    Q_slide_over_Eh2: NDArray | float
+    friction_over_Eh2: NDArray | float
+    hysteresis_over_Eh2: NDArray | float
+    Q_onset_over_Eh2: NDArray | float
+    H_critical_over_R: NDArray | float
+    first_motion: NDArray | str
+    S_roll_over_Eh2: NDArray | float
+    creep_over_V: NDArray | float
+    Q_over_Eh2: NDArray | float
+    state: NDArray | str
+    d_over_a_rest: NDArray | float
+    R_over_h2: NDArray | float
+    h1_over_h2: NDArray | float
+    sigma0_over_E: NDArray | float
+    tau0_over_E: NDArray | float
+    F_over_Eh2: NDArray | float
+    residual_load: NDArray | float
+    converged: NDArray | bool
+
+
+def push(
+    R_over_h2: ArrayLike,
+    h1_over_h2: ArrayLike,
+    sigma0_over_E: ArrayLike,
+    tau0_over_E: ArrayLike,
+    F_over_Eh2: ArrayLike,
+    H_over_R: ArrayLike,
+    Q_over_Eh2: ArrayLike | None = None,
+) -> Push:
+    r"""Will a fibre pushed sideways at height ``H`` stay, roll or slide, and at what push.
+
+    Vectorised: the inputs broadcast together. The contacts come from the closed forms
+    (:func:`~linecontact.sliding_contact_for_load`, :func:`~linecontact.contact_for_load`),
+    the creep from :func:`~linecontact.steady_rolling`, the stick zone at rest from
+    :func:`~linecontact.sliding_initiation`. Derivation: ``docs/push.md``.
+
+    Parameters
+    ----------
+    R_over_h2 : array_like
+        Radius over the advancing (leading-edge) adhesion range ``h2``.
+    h1_over_h2 : array_like
+        Receding over advancing range, in ``[1, 1000]`` (``h1 >= h2``: the adhesion
+        hysteresis ``dw = sigma0 (h1 - h2)`` is not negative).
+    sigma0_over_E, tau0_over_E : array_like
+        Adhesive stress and friction stress over the composite modulus.
+    F_over_Eh2 : array_like
+        Normal load per unit length over ``E h2`` (compressive positive), at or above the
+        pull-off force of steady sliding.
+    H_over_R : array_like
+        Height of the push above the substrate over ``R``, in ``[0, 2]``.
+    Q_over_Eh2 : array_like, optional
+        A push (``>= 0``) whose state is wanted.
+
+    Returns
+    -------
+    Push
+
+    Raises
+    ------
+    ValueError
+        For inputs outside their domain, naming the parameter and its range.
+    NoEquilibriumError
+        For a load below the pull-off force of steady sliding (the fibre has pulled off).
+
+    Examples
+    --------
+    >>> p = push(100.0, 2.0, 0.01, 1e-3, 0.0, [0.25, 1.0, 2.0])
+    >>> [str(m) for m in p.first_motion], round(float(p.H_critical_over_R[0]), 4)
+    (['slide', 'roll', 'roll'], 0.4255)
+    >>> bool(abs(p.Q_roll_over_Eh2[1] * 1.0 - 0.01 * (2.0 - 1.0)) < 1e-12)
+    True
+    """
+    rho = _domain.check("R_over_h2", R_over_h2)
+    r = check_array(
+        "h1_over_h2",
+        h1_over_h2,
+        low=1.0,
+        low_inclusive=True,
+        high=_domain.DOMAIN["h1_over_h2"][2],
+        high_inclusive=True,
+    )
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
+    tau = _domain.check("tau0_over_E", tau0_over_E)
+    F = _domain.check("F_over_Eh2", F_over_Eh2)
+    H = check_array(
+        "H_over_R", H_over_R, low=0.0, low_inclusive=True, high=2.0, high_inclusive=True
+    )
+    Q = (
+        np.full((), np.nan)
+        if Q_over_Eh2 is None
+        else check_array(
+            "Q_over_Eh2", Q_over_Eh2, low=0.0, low_inclusive=True, high=1e12, high_inclusive=True
+        )
+    )
+    scalar = scalar_or_array(rho, r, s, tau, F, H, Q)
+    rho, r, s, tau, F, H, Q = (
+        np.asarray(v, float)
+        for v in broadcast(
+            R_over_h2=rho,
+            h1_over_h2=r,
+            sigma0_over_E=s,
+            tau0_over_E=tau,
+            F_over_Eh2=F,
+            H_over_R=H,
+            Q_over_Eh2=Q,
+        )
+    )
+    shape = rho.shape
+    rho, r, s, tau, F, H, Q = (np.reshape(v, -1) for v in (rho, r, s, tau, F, H, Q))
+
+    # the contact of steady motion (raises below the sliding pull-off force) and at rest
+    slide = sliding_contact_for_load(F, rho, r, s, method="closed-form")
+    rest = contact_for_load(F, rho, s, on_no_equilibrium="report")
+    a_slide = np.asarray(slide.a_over_R, float)
+    a_rest = np.asarray(rest.a_over_R, float)
+    m_axis = np.asarray(slide.M_axis_over_Eh2R, float)  # R dw over E h2 R: eq. (1)
+
+    dw = s * (r - 1.0)
+    capacity = 2.0 * a_slide * rho * tau  # full slip of a contact of half-width a_slide
+    Q_slide = capacity + dw
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        # Q_roll = M_axis / H (inf for a push at the contact line, or within 1e-308 of it): 0 without hysteresis (H > 0), inf at H = 0
+        Q_roll = np.where(H > 0, m_axis / np.where(H > 0, H, 1.0), np.inf)
+        S_roll = np.where(H > 0, Q_roll * (H - 1.0), -np.inf)
+    H_crit = dw / Q_slide
+    holds = np.abs(S_roll) < capacity
+    roll_first = Q_roll < Q_slide
+    first = np.where(roll_first, np.where(holds, "roll", "roll+slide"), "slide")
+
+    creep = np.full(rho.shape, np.nan)
+    if np.any(holds):
+        T = np.abs(S_roll[holds]) / (rho[holds] * a_slide[holds])  # T over E a_slide
+        roll = steady_rolling(tau[holds], T_over_Ea=np.minimum(T, 2 * tau[holds]))
+        creep[holds] = np.sign(S_roll[holds]) * np.asarray(roll.creep_over_V, float)
+        creep[holds] = np.where(S_roll[holds] == 0, 0.0, creep[holds])
+
+    Q_onset = 2.0 * a_rest * rho * tau
+    given = np.isfinite(Q)
+    state = np.full(rho.shape, "", dtype="<U10")
+    d_rest = np.full(rho.shape, np.nan)
+    if np.any(given):
+        over_roll = Q >= Q_roll
+        over_slide = Q >= Q_slide
+        moving = np.where(
+            over_roll & over_slide,
+            "roll+slide",
+            np.where(over_roll, np.where(holds, "roll", "roll+slide"), "slide"),
+        )
+        state = np.where(given, np.where(over_roll | over_slide, moving, "rest"), "")
+        at_rest = given & (state == "rest") & np.isfinite(a_rest)
+        if np.any(at_rest):
+            T = Q[at_rest] / (rho[at_rest] * a_rest[at_rest])
+            init = sliding_initiation(tau[at_rest], T_over_Ea=T)
+            d_rest[at_rest] = np.where(
+                np.asarray(init.state) == "sliding", 0.0, np.asarray(init.d_over_a, float)
+            )
+
+    with np.errstate(invalid="ignore"):
+        # the load's scale: the Hertz load of the contact (its adhesive part is of that order)
+        scale = np.abs(F) + (np.pi / 4) * rho * a_slide * a_slide + 1e-300
+        res = np.abs(np.asarray(slide.F_over_Eh2) - F) / scale
+    conv = np.asarray(slide.converged) & (np.asarray(rest.converged) | ~np.isfinite(a_rest))
+    vals = dict(
+        H_over_R=H,
+        a_rest_over_R=a_rest,
+        a_slide_over_R=a_slide,
+        Q_roll_over_Eh2=Q_roll,
+        Q_slide_over_Eh2=Q_slide,
+        friction_over_Eh2=capacity,
+        hysteresis_over_Eh2=dw,
+        Q_onset_over_Eh2=Q_onset,
+        H_critical_over_R=H_crit,
+        first_motion=first,
+        S_roll_over_Eh2=S_roll,
+        creep_over_V=creep,
+        Q_over_Eh2=Q,
+        state=state,
+        d_over_a_rest=d_rest,
+        R_over_h2=rho,
+        h1_over_h2=r,
+        sigma0_over_E=s,
+        tau0_over_E=tau,
+        F_over_Eh2=F,
+        residual_load=res,
+        converged=conv,
+    )
+    return Push(**{k: as_output(np.reshape(v, shape), scalar) for k, v in vals.items()})
+
+
+@dataclass(frozen=True)
+class TipPush(Result):
+    """A tip's push reduced to a horizontal push, a load change and a moment arm.
+
+    Attributes
+    ----------
+    Q_per_P : ndarray or float
+        Horizontal push per unit tip force ``P`` (along +x).
+    dF_per_P : ndarray or float
+        Added compressive normal load per unit tip force (negative: the tip lifts).
+    H_effective_over_R : ndarray or float
+        Height of the horizontal push with the same moment about the contact point.
+    """
+
+    inputs: ClassVar[tuple[str, ...]] = ("H_over_R", "tip_friction")
+
+    Q_per_P: NDArray | float
+    dF_per_P: NDArray | float
+    H_effective_over_R: NDArray | float
+    H_over_R: NDArray | float
+    tip_friction: NDArray | float
+
+
+def tip_push(H_over_R: ArrayLike, tip_friction: ArrayLike = 0.0) -> TipPush:
+    r"""Reduce a tip touching the fibre at height ``H`` to the push it exerts.
+
+    The tip touches the rear of the fibre at the angle ``theta`` above the horizontal
+    through the axis, ``sin(theta) = H/R - 1``, and presses along the surface normal
+    (through the axis) with the force ``P``; its friction ``mu_tip``, at its limit, opposes
+    the rotation of a forward-rolling fibre. Then (``docs/push.md`` section 6)
+    ``Q/P = cos(theta) - mu_tip sin(theta)``, ``dF/P = sin(theta) + mu_tip cos(theta)`` and
+    ``H_eff = R [cos(theta) - mu_tip (1 + sin(theta))] / (cos(theta) - mu_tip sin(theta))``;
+    a frictionless tip acts at ``H_eff = R`` at any height.
+
+    Parameters
+    ----------
+    H_over_R : array_like
+        Height of the tip's contact over ``R``, in ``(0, 2)`` (at 0 and 2 the normal is
+        vertical: the tip does not push sideways).
+    tip_friction : array_like
+        Friction coefficient of the tip on the fibre, in ``[0, 10]``.
+
+    Returns
+    -------
+    TipPush
+
+    Raises
+    ------
+    ValueError
+        For a height outside ``(0, 2)`` or a friction outside ``[0, 10]``, or where the tip
+        no longer pushes forward (``cos(theta) <= mu_tip sin(theta)``).
+
+    Examples
+    --------
+    >>> t = tip_push(1.5)
+    >>> round(t.H_effective_over_R, 12), round(t.dF_per_P, 12)
+    (1.0, 0.5)
+    """
+    H = check_array("H_over_R", H_over_R, low=0.0, high=2.0)
+    mu = check_array(
+        "tip_friction", tip_friction, low=0.0, low_inclusive=True, high=10.0, high_inclusive=True
+    )
+    scalar = scalar_or_array(H, mu)
+    H, mu = (np.asarray(v, float) for v in broadcast(H_over_R=H, tip_friction=mu))
+    sin = H - 1.0
+    cos = np.sqrt((1.0 - sin) * (1.0 + sin))
+    qx = cos - mu * sin
+    if np.any(qx <= 0):
+        i = int(np.flatnonzero(np.reshape(qx <= 0, -1))[0])
+        raise ValueError(
+            f"tip_friction={float(np.reshape(mu, -1)[i])!r} at H_over_R="
+            f"{float(np.reshape(H, -1)[i])!r} turns the tip's force backwards or vertical "
+            f"(cos(theta) <= tip_friction sin(theta)): the tip does not push the fibre"
+        )
+    vals = dict(
+        Q_per_P=qx,
+        dF_per_P=sin + mu * cos,
+        H_effective_over_R=(cos - mu * (1.0 + sin)) / qx,
+        H_over_R=H,
+        tip_friction=mu,
+    )
+    return TipPush(**{k: as_output(v, scalar) for k, v in vals.items()})
