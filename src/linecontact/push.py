@@ -227,7 +227,8 @@ def push(
     capacity = 2.0 * a_slide * rho * tau  # full slip of a contact of half-width a_slide
     Q_slide = capacity + dw
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        # Q_roll = M_axis / H (inf for a push at the contact line, or within 1e-308 of it): 0 without hysteresis (H > 0), inf at H = 0
+        # Q_roll = M_axis / H: 0 without hysteresis (H > 0); inf for a push at the contact
+        # line (H = 0, or so close to it that M_axis / H overflows)
         Q_roll = np.where(H > 0, m_axis / np.where(H > 0, H, 1.0), np.inf)
         S_roll = np.where(H > 0, Q_roll * (H - 1.0), -np.inf)
     H_crit = dw / Q_slide
