@@ -395,6 +395,7 @@ def test_every_option_is_documented_and_every_command_has_examples(capsys):
         "slide-init",
         "roll",
         "slide",
+        "push",
         "paper",
         "cite",
     }

@@ -411,6 +411,29 @@ def test_coulomb_problems_inside(mu, a, T, rolling):
         assert _finite(r.creep_over_V) and r.creep_over_V <= 0
 
 
+@FUZZ
+@given(
+    inside("R_over_h2"),
+    inside("h1_over_h2").filter(lambda r: r >= 1),
+    inside("sigma0_over_E"),
+    inside("tau0_over_E"),
+    inside("F_over_Eh2"),
+    st.floats(0.0, 2.0),
+)
+def test_push_inside(rho, r, s, tau, F, H):
+    p = _quiet(lc.push, rho, r, s, tau, F, H, 0.5 * tau)
+    if p is None:
+        return
+    assert _finite(p.a_slide_over_R, p.Q_slide_over_Eh2, p.H_critical_over_R)
+    assert p.converged and p.first_motion in ("roll", "slide", "roll+slide")
+    assert p.state in ("rest", "roll", "slide", "roll+slide")
+    dw = s * (r - 1)
+    assert p.hysteresis_over_Eh2 == pytest.approx(dw, rel=1e-15, abs=0)
+    if H > 0 and dw / H < 1e300:
+        assert p.Q_roll_over_Eh2 * H == pytest.approx(dw, rel=1e-9, abs=1e-300)
+    assert (p.first_motion == "slide") == (not p.Q_roll_over_Eh2 < p.Q_slide_over_Eh2)
+
+
 # --------------------------------------------------------------------------------------------
 # the SI layer
 
@@ -469,6 +492,10 @@ def _inside_point():
     )
 
 
+def push_at_the_axis(*args):
+    return lc.push(*args, 1.0)
+
+
 # function, its arguments by domain key (positional), keyword arguments by domain key
 CALLS = [
     (lc.hertz_load, ["a_over_R", "R_over_h"], {}),
@@ -498,6 +525,11 @@ CALLS = [
     (lc.sliding_initiation_coulomb, ["mu", "a_over_R"], {"T_over_muF": "T_over_muF"}),
     (lc.steady_rolling_coulomb, ["mu", "a_over_R"], {"T_over_muF": "T_over_muF"}),
     (lc.adhesion_from_work, ["work_of_adhesion", "equilibrium_spacing"], {}),
+    (
+        push_at_the_axis,
+        ["R_over_h2", "h1_over_h2", "sigma0_over_E", "tau0_over_E", "F_over_Eh2"],
+        {},
+    ),
 ]
 
 #: the parameter's name where the function calls it something else than its domain key
@@ -536,6 +568,15 @@ FLAGS = {
     "slide-init": ["--tau0-over-E", "--d-over-a", "--T-over-Ea", "--mu", "--friction"],
     "roll": ["--tau0-over-E", "--d-over-a", "--T-over-Ea", "--T-over-muF", "--a-over-R"],
     "slide": ["--R-over-h2", "--h1-over-h2", "--sigma0-over-E", "--a-over-R", "--F-over-Eh2"],
+    "push": [
+        "--R-over-h2",
+        "--h1-over-h2",
+        "--sigma0-over-E",
+        "--tau0-over-E",
+        "--H-over-R",
+        "--F-over-Eh2",
+        "--Q-over-Eh2",
+    ],
 }
 SI_FLAGS = ["--radius", "--modulus", "--sigma0", "--h", "--load", "--a", "--tau0", "--h1"]
 VALUES = st.one_of(

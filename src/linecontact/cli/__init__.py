@@ -22,13 +22,14 @@ from .._version import __version__
 from ..errors import ConvergenceError
 from . import normal as _normal
 from . import paper as _paper
+from . import push as _push
 from . import sliding as _sliding
 from . import tangential as _tangential
 from ._options import NoPointError, Parser, flag_message, record_flags
 
 __all__ = ["build_parser", "main"]
 
-_COMMANDS = "normal, pulloff, curve, slide-init, roll, slide, paper or cite"
+_COMMANDS = "normal, pulloff, curve, slide-init, roll, slide, push, paper or cite"
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -61,6 +62,7 @@ def build_parser() -> argparse.ArgumentParser:
     _normal.register(sub)
     _tangential.register(sub)
     _sliding.register(sub)
+    _push.register(sub)
     _paper.register(sub)
     for sp in sub.choices.values():
         sp.allow_abbrev = False

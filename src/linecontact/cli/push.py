@@ -1,0 +1,203 @@
+"""The ``push`` subcommand: a fibre pushed sideways, will it stay, roll or slide.
+
+A thin shell over :func:`linecontact.push.push`. The records carry at least ``H_over_R``,
+``a_rest_over_R``, ``a_slide_over_R``, ``Q_roll_over_Eh2``, ``Q_slide_over_Eh2``,
+``H_critical_over_R``, ``first_motion`` and, with a push given, ``state`` (a contract).
+"""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+import numpy as np
+
+from ..domain import check_si
+from ..output import table_from_result
+from ..push import push
+from ._options import (
+    add_command,
+    add_output_options,
+    add_si_materials,
+    command_line,
+    cylinder,
+    emit,
+    finish,
+    si_given,
+    si_parameters,
+)
+
+__all__ = ["register"]
+
+_DESCRIPTION = (
+    "A fibre pushed sideways at height H above the substrate (docs/push.md): the contact of "
+    "steady motion is the steady sliding contact (trailing range h1 >= leading range h2, "
+    "adhesion hysteresis dw = sigma0 (h1 - h2)); rolling resists Q_roll = R dw / H "
+    "(Kendall), sliding Q_slide = 2 a_slide tau0 + dw; the lower one is the first motion "
+    "(rolling iff H > H* = R dw / Q_slide). With a push Q given, the state: rest, roll, "
+    "slide or roll+slide. Forces per unit length over E h2, compressive load positive."
+)
+
+
+def register(sub: Any) -> None:
+    """Add the ``push`` subcommand to the subparsers ``sub``."""
+    p = add_command(
+        sub,
+        "push",
+        "a fibre pushed sideways: stay, roll or slide, and at what push",
+        _DESCRIPTION,
+        [
+            "linecontact push --R-over-h2 100 --h1-over-h2 2 --sigma0-over-E 0.01 "
+            "--tau0-over-E 1e-3 --H-over-R 0.25 1 2",
+            "linecontact push --R-over-h2 100 --h1-over-h2 2 --sigma0-over-E 0.01 "
+            "--tau0-over-E 1e-3 --H-over-R 0.5 --Q-over-Eh2 0.015 --json",
+            "linecontact push --radius 50e-9 --modulus 48e9 --sigma0 1e8 --h2 0.3e-9 "
+            "--h1 0.6e-9 --tau0 1e6 --height 25e-9 50e-9 100e-9 --length 5e-6",
+        ],
+    )
+    g = p.add_argument_group("nondimensional groups (the paper's)")
+    g.add_argument(
+        "--R-over-h2", type=float, metavar="R/h2", help="radius over the advancing range h2"
+    )
+    g.add_argument(
+        "--h1-over-h2",
+        type=float,
+        metavar="H",
+        help="receding over advancing range, in [1, 1000] (1: no hysteresis)",
+    )
+    g.add_argument(
+        "--sigma0-over-E", type=float, metavar="S", help="adhesive stress over modulus, >= 0"
+    )
+    g.add_argument(
+        "--tau0-over-E", type=float, metavar="T", help="friction stress over modulus, > 0"
+    )
+    g.add_argument(
+        "--F-over-Eh2",
+        type=float,
+        metavar="F",
+        help="normal load over E h2 (default 0: adhesion alone holds the fibre)",
+    )
+    g.add_argument(
+        "--H-over-R",
+        type=float,
+        nargs="+",
+        metavar="H",
+        help="push heights over R, in [0, 2] (1: at the axis)",
+    )
+    g.add_argument(
+        "--Q-over-Eh2", type=float, metavar="Q", help="a push over E h2: report the state"
+    )
+    si = add_si_materials(p, range_flag="--h2")
+    si.add_argument("--h1", type=float, help="receding (trailing-edge) adhesion range h1 [m]")
+    si.add_argument("--tau0", type=float, help="friction stress tau0 [Pa]")
+    si.add_argument("--load", type=float, help="normal load [N/m] (default 0)")
+    si.add_argument("--height", type=float, nargs="+", help="push heights H [m], in [0, 2R]")
+    si.add_argument("--push", type=float, help="a push [N/m]: report the state")
+    add_output_options(p)
+    p.set_defaults(func=_cmd_push, _api_flags={"adhesion_range": "--h2"})
+
+
+def _cmd_push(args: argparse.Namespace) -> int:
+    si = si_given(args, extra=("h1", "tau0", "load", "height", "push"))
+    nd_flags = (args.R_over_h2, args.sigma0_over_E, args.tau0_over_E, args.F_over_Eh2)
+    nd = any(v is not None for v in (*nd_flags, args.H_over_R, args.Q_over_Eh2))
+    if si and nd:
+        raise ValueError(
+            "give either the nondimensional groups (--R-over-h2, ...) or SI inputs "
+            "(--radius, ...), not both"
+        )
+    cyl = None
+    if not si:
+        missing = [
+            f
+            for f, v in (
+                ("--R-over-h2", args.R_over_h2),
+                ("--h1-over-h2", args.h1_over_h2),
+                ("--sigma0-over-E", args.sigma0_over_E),
+                ("--tau0-over-E", args.tau0_over_E),
+                ("--H-over-R", args.H_over_R),
+            )
+            if v is None
+        ]
+        if missing:
+            raise ValueError(f"give {', '.join(missing)} (or SI inputs with --radius)")
+        rho, r, s, tau = args.R_over_h2, args.h1_over_h2, args.sigma0_over_E, args.tau0_over_E
+        F = 0.0 if args.F_over_Eh2 is None else args.F_over_Eh2
+        H = np.asarray(args.H_over_R, float)
+        Q = args.Q_over_Eh2
+    else:
+        if (args.h1_over_h2 is None) == (args.h1 is None):
+            raise ValueError("give exactly one of --h1-over-h2 or --h1 [m]")
+        for flag, v in (("--tau0", args.tau0), ("--height", args.height)):
+            if v is None:
+                raise ValueError(f"give {flag}")
+        cyl = cylinder(args, range_flag="--h2")
+        Eh = cyl.modulus * cyl.adhesion_range
+        if args.h1 is not None:
+            check_si("--h1", args.h1, cyl.adhesion_range, "h1_over_h2", "m")
+        check_si("--tau0", args.tau0, cyl.modulus, "tau0_over_E", "Pa")
+        heights = np.asarray(args.height, float)
+        if not np.all((heights >= 0) & (heights <= 2 * cyl.radius)):
+            bad = float(heights[~((heights >= 0) & (heights <= 2 * cyl.radius))][0])
+            raise ValueError(f"--height must be in [0, {2 * cyl.radius:g}] m (2R), got {bad!r}")
+        load = 0.0 if args.load is None else args.load
+        check_si("--load", load, Eh, "F_over_Eh2", "N/m")
+        if args.push is not None:
+            check_si("--push", args.push, Eh, "T_over_Ea", "N/m")
+        rho, s = cyl.R_over_h, cyl.sigma0_over_E
+        r = args.h1_over_h2 if args.h1 is None else args.h1 / cyl.adhesion_range
+        tau, F, H = args.tau0 / cyl.modulus, load / Eh, heights / cyl.radius
+        Q = None if args.push is None else args.push / Eh
+    res = push(rho, r, s, tau, F, H, Q)
+    show = [
+        "H_over_R",
+        "a_rest_over_R",
+        "a_slide_over_R",
+        "Q_roll_over_Eh2",
+        "Q_slide_over_Eh2",
+        "H_critical_over_R",
+        "first_motion",
+        "creep_over_V",
+    ]
+    drop = []
+    if Q is None:
+        drop += ["Q_over_Eh2", "state", "d_over_a_rest"]
+    else:
+        show += ["state"]
+    params: dict[str, Any] = {}
+    extra: dict[str, Any] = {}
+    if cyl is not None:
+        params.update(si_parameters(args, cyl))
+        params.update(h1_m=r * cyl.adhesion_range, tau0_Pa=args.tau0, load_N_per_m=F * Eh)
+        if Q is not None:
+            params["push_N_per_m"] = args.push
+        R = cyl.radius
+        extra.update(
+            H_m=np.multiply(res.H_over_R, R),
+            a_rest_m=np.multiply(res.a_rest_over_R, R),
+            a_slide_m=np.multiply(res.a_slide_over_R, R),
+            Q_roll_N_per_m=np.multiply(res.Q_roll_over_Eh2, Eh),
+            Q_slide_N_per_m=np.multiply(res.Q_slide_over_Eh2, Eh),
+            Q_onset_N_per_m=np.multiply(res.Q_onset_over_Eh2, Eh),
+            H_critical_m=np.multiply(res.H_critical_over_R, R),
+        )
+        show = ["H_m", "a_slide_m", "Q_roll_N_per_m", "Q_slide_N_per_m", "H_critical_m"]
+        show += ["first_motion"] + (["state"] if Q is not None else [])
+        if args.length is not None:
+            L = args.length
+            extra.update(
+                Q_roll_total_N=np.multiply(res.Q_roll_over_Eh2, Eh * L),
+                Q_slide_total_N=np.multiply(res.Q_slide_over_Eh2, Eh * L),
+            )
+            show += ["Q_roll_total_N", "Q_slide_total_N"]
+    table = table_from_result(
+        res,
+        columns=extra,
+        drop=drop,
+        parameters=params,
+        command=command_line(args),
+        title="a fibre pushed sideways: rolling and sliding resistance, first motion",
+        show=show,
+    )
+    emit(args, table)
+    return finish(table, ("rest", "roll", "slide", "roll+slide"))
