@@ -36,7 +36,10 @@ def strict_json(text):
 @pytest.mark.parametrize(
     "argv, message",
     [
-        ([], r"give a command: normal, pulloff, curve, slide-init, roll, slide, push, paper or cite"),
+        (
+            [],
+            r"give a command: normal, pulloff, curve, slide-init, roll, slide, push, paper or cite",
+        ),
         (
             ["curve", *G, "-o", "/nonexistent-dir/curve.csv"],
             r"cannot write -o/--output '/nonexistent-dir/curve.csv': No such file or directory",

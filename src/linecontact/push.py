@@ -216,12 +216,18 @@ def push(
     shape = rho.shape
     rho, r, s, tau, F, H, Q = (np.reshape(v, -1) for v in (rho, r, s, tau, F, H, Q))
 
-    # the contact of steady motion (raises below the sliding pull-off force) and at rest
-    slide = sliding_contact_for_load(F, rho, r, s, method="closed-form")
-    rest = contact_for_load(F, rho, s, on_no_equilibrium="report")
-    a_slide = np.asarray(slide.a_over_R, float)
-    a_rest = np.asarray(rest.a_over_R, float)
-    m_axis = np.asarray(slide.M_axis_over_Eh2R, float)  # R dw over E h2 R: eq. (1)
+    # the contact of steady motion (raises below the sliding pull-off force) and at rest; a
+    # scalar call takes the inverses' scalar fast paths
+    one = (lambda v: float(v[0])) if scalar else (lambda v: v)
+    slide = sliding_contact_for_load(one(F), one(rho), one(r), one(s), method="closed-form")
+    rest = contact_for_load(one(F), one(rho), one(s), on_no_equilibrium="report")
+    flat = (lambda v: np.reshape(np.asarray(v, float), -1)) if scalar else np.asarray
+    a_slide, a_rest = flat(slide.a_over_R), flat(rest.a_over_R)
+    m_axis = flat(slide.M_axis_over_Eh2R)  # R dw over E h2 R: eq. (1)
+    F_slide = flat(slide.F_over_Eh2)
+    conv = np.reshape(np.asarray(slide.converged), -1) & (
+        np.reshape(np.asarray(rest.converged), -1) | ~np.isfinite(a_rest)
+    )
 
     dw = s * (r - 1.0)
     capacity = 2.0 * a_slide * rho * tau  # full slip of a contact of half-width a_slide
@@ -267,8 +273,7 @@ def push(
     with np.errstate(invalid="ignore"):
         # the load's scale: the Hertz load of the contact (its adhesive part is of that order)
         scale = np.abs(F) + (np.pi / 4) * rho * a_slide * a_slide + 1e-300
-        res = np.abs(np.asarray(slide.F_over_Eh2) - F) / scale
-    conv = np.asarray(slide.converged) & (np.asarray(rest.converged) | ~np.isfinite(a_rest))
+        res = np.abs(F_slide - F) / scale
     vals = dict(
         H_over_R=H,
         a_rest_over_R=a_rest,

@@ -1,0 +1,56 @@
+"""The pushed fibre: time of 10,000 points and the worst residuals against independent checks.
+
+    python benchmarks/push.py
+
+Prints the best-of-3 wall time of ``push`` over 10,000 random points (the closed forms; the
+sliding inverse dominates), and over the same points the worst relative residuals of
+
+- Kendall's energy balance ``Q_roll H = R dw`` against the moment of the sliding solution;
+- the load carried by the steady contact (``residual_load``);
+- the load the collocation solver finds at ``a_slide``, against ``F`` (on 200 points).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+import linecontact as lc
+from _common import best_of
+
+
+def sample(n: int, rng: np.random.Generator):
+    rho = 10 ** rng.uniform(1, 4, n)
+    r = 10 ** rng.uniform(0, 1, n)  # h1/h2 in [1, 10]
+    s = 10 ** rng.uniform(-3, -1, n)
+    tau = 10 ** rng.uniform(-5, -2, n)
+    H = rng.uniform(0.0, 2.0, n)
+    F0 = lc.sliding_pull_off(rho, r, s).F_pulloff_over_Eh2
+    load = rng.uniform(0.01, 3.0, n)
+    F = F0 * (1 - load) + load * np.abs(F0)
+    return rho, r, s, tau, F, H
+
+
+def main() -> None:
+    rng = np.random.default_rng(20261123)
+    n = 10_000
+    rho, r, s, tau, F, H = sample(n, rng)
+    t, p = best_of(lambda: lc.push(rho, r, s, tau, F, H, 0.5 * tau))
+    print(f"push, {n} points (closed forms): {t:.3f} s ({1e6 * t / n:.1f} us/point)")
+    dw = s * (r - 1)
+    ok = H > 0
+    kendall = np.abs(p.Q_roll_over_Eh2[ok] * H[ok] - dw[ok]) / np.maximum(dw[ok], 1e-300)
+    print(f"  worst |Q_roll H - R dw| / (R dw):          {kendall.max():.2e}")
+    print(f"  worst load residual of the steady contact: {np.max(p.residual_load):.2e}")
+    m = 200
+    c = lc.sliding_contact(p.a_slide_over_R[:m], rho[:m], r[:m], s[:m], method="collocation")
+    scale = np.abs(F[:m]) + np.pi / 4 * rho[:m] * p.a_slide_over_R[:m] ** 2
+    rel = np.abs(c.F_over_Eh2 - F[:m]) / scale
+    print(f"  worst load of the collocation at a_slide, against F ({m} points): {rel.max():.2e}")
+    firsts, counts = np.unique(p.first_motion, return_counts=True)
+    print("  first motions: " + ", ".join(f"{k} {v}" for k, v in zip(firsts, counts, strict=True)))
+    t1, _ = best_of(lambda: lc.push(100.0, 2.0, 0.01, 1e-3, 0.0, 1.0))
+    print(f"push, one point: {1e3 * t1:.2f} ms")
+
+
+if __name__ == "__main__":
+    main()
