@@ -58,8 +58,8 @@ class Push(Result):
     a_slide_over_R : ndarray or float
         Contact half-width of steady motion (the steady sliding contact at the load).
     Q_roll_over_Eh2 : ndarray or float
-        Steady rolling resistance ``R dw / H`` (``inf`` at ``H = 0``), from the moment of
-        the sliding contact's pressure about the axis.
+        Steady rolling resistance ``R dw / H`` (``inf`` at ``H = 0``): the moment of the
+        sliding contact's pressure about the axis, ``M - e F = R dw``, over the arm.
     Q_slide_over_Eh2 : ndarray or float
         Steady sliding resistance ``2 a_slide tau0 + dw``; the static (peak) value too.
     friction_over_Eh2, hysteresis_over_Eh2 : ndarray or float
@@ -223,7 +223,6 @@ def push(
     rest = contact_for_load(one(F), one(rho), one(s), on_no_equilibrium="report")
     flat = (lambda v: np.reshape(np.asarray(v, float), -1)) if scalar else np.asarray
     a_slide, a_rest = flat(slide.a_over_R), flat(rest.a_over_R)
-    m_axis = flat(slide.M_axis_over_Eh2R)  # R dw over E h2 R: eq. (1)
     F_slide = flat(slide.F_over_Eh2)
     conv = np.reshape(np.asarray(slide.converged), -1) & (
         np.reshape(np.asarray(rest.converged), -1) | ~np.isfinite(a_rest)
@@ -235,7 +234,9 @@ def push(
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         # Q_roll = M_axis / H: 0 without hysteresis (H > 0); inf for a push at the contact
         # line (H = 0, or so close to it that M_axis / H overflows)
-        Q_roll = np.where(H > 0, m_axis / np.where(H > 0, H, 1.0), np.inf)
+        # (the identity M_axis = R dw of the sliding contact, eq. (1), tested at every width,
+        # taken exactly: M - e F loses digits when the adhesion is tiny beside the load)
+        Q_roll = np.where(H > 0, dw / np.where(H > 0, H, 1.0), np.inf)
         S_roll = np.where(H > 0, Q_roll * (H - 1.0), -np.inf)
     H_crit = dw / Q_slide
     holds = np.abs(S_roll) < capacity
