@@ -397,6 +397,7 @@ def test_every_option_is_documented_and_every_command_has_examples(capsys):
         "slide",
         "push",
         "paper",
+        "figures",
         "cite",
     }
     for name, p in sub.choices.items():

@@ -38,7 +38,8 @@ def strict_json(text):
     [
         (
             [],
-            r"give a command: normal, pulloff, curve, slide-init, roll, slide, push, paper or cite",
+            r"give a command: normal, pulloff, curve, slide-init, roll, slide, push, paper, "
+            r"figures or cite",
         ),
         (
             ["curve", *G, "-o", "/nonexistent-dir/curve.csv"],

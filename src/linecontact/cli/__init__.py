@@ -29,7 +29,7 @@ from ._options import NoPointError, Parser, flag_message, record_flags
 
 __all__ = ["build_parser", "main"]
 
-_COMMANDS = "normal, pulloff, curve, slide-init, roll, slide, push, paper or cite"
+_COMMANDS = "normal, pulloff, curve, slide-init, roll, slide, push, paper, figures or cite"
 
 
 def build_parser() -> argparse.ArgumentParser:

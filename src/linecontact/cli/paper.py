@@ -217,8 +217,28 @@ def _cmd_paper(args) -> int:
     return 0
 
 
+def _cmd_figures(args) -> int:
+    formats = _formats_arg(args.format)
+    size = _size_arg(args.size)
+    from ..figures import push_figures
+
+    def progress(msg: str) -> None:
+        print(msg, file=sys.stderr)
+
+    try:
+        paths = push_figures(args.outdir, formats=formats, size=size, progress=progress)
+    except OSError as exc:
+        raise ValueError(
+            f"cannot write the figures to --outdir {args.outdir!r}: {exc.strerror or exc}"
+        ) from None
+    print(f"wrote {len(paths)} files to {args.outdir}/:")
+    for p in paths:
+        print(f"  {p}")
+    return 0
+
+
 def register(sub) -> None:
-    """Add ``paper`` and ``cite`` to the subparsers ``sub``."""
+    """Add ``paper``, ``figures`` and ``cite`` to the subparsers ``sub``."""
     pa = sub.add_parser(
         "paper",
         help="redraw the paper's Figs. 2-14 (PNG by default)",
@@ -249,6 +269,38 @@ def register(sub) -> None:
         "the same size); the two-panel Fig. 8 is a third taller (default: %(default)s)",
     )
     pa.set_defaults(func=_cmd_paper)
+
+    fi = sub.add_parser(
+        "figures",
+        help="draw the figures beyond the paper: the pushed fibre's motion maps and force",
+        description="Draw the figures of the pushed fibre (docs/push.md): the first motion "
+        "over the push height and the hysteresis or the friction stress, with the boundary "
+        "H*, and the lateral force against the push's progress (push01_*.png, ...).",
+        epilog="examples:\n  linecontact figures\n"
+        "  linecontact figures --outdir figs --format png,pdf",
+    )
+    fi.add_argument(
+        "--outdir",
+        default="figures",
+        metavar="DIR",
+        help="directory to write into, created if missing; files of the same names are "
+        "replaced (default: %(default)s)",
+    )
+    fi.add_argument(
+        "--format",
+        default="png",
+        metavar="LIST",
+        help="comma-separated file formats, any of png, svg, pdf; PNG at 150 dpi "
+        "(default: %(default)s)",
+    )
+    fi.add_argument(
+        "--size",
+        default="9.6x5.4",
+        metavar="WxH",
+        help="width x height of the figures in inches, from 9.5x5.2 to 30x20 "
+        "(default: %(default)s)",
+    )
+    fi.set_defaults(func=_cmd_figures)
 
     ci = sub.add_parser(
         "cite",

@@ -1,8 +1,9 @@
-"""The paper's figures (Figs. 2--14), redrawn from the library's solvers.
+"""The paper's figures (Figs. 2--14), redrawn from the library's solvers, and our own.
 
 One module per family of figures, each with the parameters it draws and why:
 :mod:`linecontact.figures.normal` (Figs. 2--6), :mod:`linecontact.figures.tangential`
-(Figs. 7, 13, 14), :mod:`linecontact.figures.sliding` (Figs. 8--12); the shared plumbing in
+(Figs. 7, 13, 14), :mod:`linecontact.figures.sliding` (Figs. 8--12), and beyond the paper
+:mod:`linecontact.figures.push` (the pushed fibre, :func:`push_figures`); the shared plumbing in
 :mod:`linecontact.figures._style`. matplotlib is imported only when a figure is drawn.
 """
 
@@ -15,6 +16,7 @@ import warnings
 from collections.abc import Callable, Iterable, Sequence
 
 from . import normal as _normal
+from . import push as _push
 from . import sliding as _sliding
 from . import tangential as _tangential
 from ._style import (
@@ -31,7 +33,15 @@ from ._style import (
     check_size,
 )
 
-__all__ = ["DEFAULT_SIZE", "DPI", "FORMATS", "MAX_SIZE", "MIN_SIZE", "paper_figures"]
+__all__ = [
+    "DEFAULT_SIZE",
+    "DPI",
+    "FORMATS",
+    "MAX_SIZE",
+    "MIN_SIZE",
+    "paper_figures",
+    "push_figures",
+]
 
 
 def _jobs() -> list[Job]:
@@ -261,3 +271,35 @@ def _worker(send, jobs, out, fmts, size) -> None:  # pragma: no cover - runs in 
             send.send(("done", RuntimeError(f"{type(exc).__name__}: {exc}")))
     finally:
         send.close()
+
+
+def push_figures(
+    outdir: str | os.PathLike = "figures",
+    *,
+    formats: str | Iterable[str] = ("png",),
+    size: Sequence[float] = DEFAULT_SIZE,
+    progress: Callable[[str], object] | None = None,
+) -> list[pathlib.Path]:
+    """Draw the figures of the pushed fibre (:mod:`linecontact.figures.push`) into ``outdir``.
+
+    The motion maps over the push height and the hysteresis or the friction stress, with
+    the boundary ``H*``, and the lateral force against the push's progress. ``formats``,
+    ``size``, ``progress``, the errors and the atomic writes are those of
+    :func:`paper_figures`; one process draws.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written, figure by figure, each in the order of ``formats``.
+    """
+    _mpl()
+    fmts = check_formats(formats)
+    wh = check_size(size)
+    say = progress if progress is not None else (lambda msg: None)
+    out = pathlib.Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    jobs = _push.jobs()
+    done = _draw(jobs, out, fmts, wh, say)
+    written = [p for job in jobs for p in done[job.stem]]
+    say(f"wrote {len(written)} files to {out}")
+    return written

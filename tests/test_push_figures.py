@@ -1,0 +1,90 @@
+"""The pushed fibre's figures: the plotted data are the API's numbers; the layout clips nothing.
+
+matplotlib is needed (the ``plot`` extra, part of ``test``).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from numpy.testing import assert_allclose
+
+pytest.importorskip("matplotlib")
+
+import linecontact as lc  # noqa: E402
+import linecontact.figures as figs  # noqa: E402
+from linecontact.cli import main  # noqa: E402
+from linecontact.figures import push as push_figs  # noqa: E402
+from linecontact.figures._style import Run  # noqa: E402
+
+
+@pytest.fixture(scope="module")
+def built():
+    run = Run(size=figs.MIN_SIZE)
+    jobs = {j.stem: j for j in push_figs.jobs()}
+    cache = {}
+
+    def build(stem):
+        if stem not in cache:
+            cache[stem] = jobs[stem].build(run)
+        return cache[stem]
+
+    return build
+
+
+STEMS = ["push01_motion_map_hysteresis", "push02_motion_map_friction", "push03_lateral_force"]
+
+
+@pytest.mark.parametrize("stem", STEMS)
+def test_fixed_layout_clips_nothing(built, stem):
+    fig = built(stem)
+    box = fig.get_tightbbox(fig.canvas.get_renderer())
+    w, h = fig.get_size_inches()
+    assert box.x0 >= -0.02 and box.y0 >= -0.02 and box.x1 <= w + 0.02 and box.y1 <= h + 0.02
+
+
+@pytest.mark.parametrize(("stem", "name"), [(STEMS[0], "h1_over_h2"), (STEMS[1], "tau0_over_E")])
+def test_motion_maps_are_the_api_numbers(built, stem, name):
+    ax = built(stem).axes[0]
+    rho, r, s, tau, F = push_figs.BASE
+    line = next(ln for ln in ax.get_lines() if "H^*" in ln.get_label())
+    H_star, ys = line.get_xdata(), line.get_ydata()
+    kw = {"h1_over_h2": r, "tau0_over_E": tau, name: ys}
+    p = lc.push(rho, kw["h1_over_h2"], s, kw["tau0_over_E"], F, 1.0)
+    assert_allclose(H_star, p.H_critical_over_R, rtol=1e-14)
+    # the coloured cells: the first motion of the API at the cell centres
+    mesh = ax.collections[0]
+    codes = np.asarray(mesh.get_array()).reshape(ys.size, -1)
+    H = np.linspace(0.0, 2.0, codes.shape[1])
+    first = lc.push(
+        rho,
+        kw["h1_over_h2"][:, None] if name == "h1_over_h2" else r,
+        s,
+        kw["tau0_over_E"][:, None] if name == "tau0_over_E" else tau,
+        F,
+        H,
+    ).first_motion
+    want = np.select([first == m for m in ("slide", "roll", "roll+slide")], [0, 1, 2])
+    np.testing.assert_array_equal(codes, want)
+
+
+def test_lateral_force_rises_from_onset_to_the_steady_resistances(built):
+    ax = built(STEMS[2]).axes[0]
+    rho, r, s, tau, F = push_figs.BASE
+    lines = {ln.get_label(): ln for ln in ax.get_lines()}
+    slide = next(v for k, v in lines.items() if "slides" in k)
+    roll = next(v for k, v in lines.items() if "rolls" in k)
+    p = lc.push(rho, r, s, tau, F, [0.3, 1.5])
+    assert p.first_motion[0] == "slide" and p.first_motion[1] == "roll"
+    qs, qr = slide.get_ydata(), roll.get_ydata()
+    assert qs[0] == pytest.approx(p.Q_onset_over_Eh2[0], rel=1e-9)
+    assert qs[-1] == pytest.approx(p.Q_slide_over_Eh2[0], rel=1e-12)
+    assert qr[0] == 0 and qr[-1] == pytest.approx(p.Q_roll_over_Eh2[1], rel=1e-12)
+    assert np.all(np.diff(qs) >= 0) and np.all(np.diff(qr) >= 0)
+
+
+def test_the_figures_command_writes_the_three_files(tmp_path, capsys):
+    assert main(["figures", "--outdir", str(tmp_path)]) == 0
+    assert sorted(p.name for p in tmp_path.iterdir()) == [f"{s}.png" for s in STEMS]
+    assert main(["figures", "--outdir", str(tmp_path), "--format", "gif"]) == 2
+    assert "error:" in capsys.readouterr().err
