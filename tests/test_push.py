@@ -281,3 +281,43 @@ def test_a_load_below_the_sliding_pull_off_says_so():
 def test_tip_bad_input(args, message):
     with pytest.raises(ValueError, match=message):
         lc.tip_push(*args)
+
+
+# --------------------------------------------------------------------------------------------
+# a push from a tip
+
+
+def test_a_frictionless_tip_rolls_the_fibre_at_the_axis_resistance_from_any_height():
+    H = np.array([0.3, 1.0, 1.7])
+    p = lc.push(100.0, 2.0, 0.01, 1e-3, 0.0, H, tip_friction=0.0)
+    np.testing.assert_allclose(p.H_arm_over_R, 1.0, rtol=1e-15)
+    np.testing.assert_allclose(p.Q_roll_over_Eh2, 0.01, rtol=1e-12)  # R dw / R
+    # at the axis the tip adds no load: the horizontal push's numbers
+    h = _push(H_over_R=1.0)
+    assert p.Q_slide_over_Eh2[1] == pytest.approx(h.Q_slide_over_Eh2, rel=1e-14)
+
+
+@pytest.mark.parametrize(("H", "mu"), [(0.4, 0.0), (1.6, 0.0), (1.6, 0.3), (0.5, 0.2)])
+def test_the_tips_sliding_threshold_carries_the_load_the_tip_adds(H, mu):
+    # independent: the steady contact at F + dF(Q_slide) resists exactly Q_slide
+    F, rho, r, s, tau = 0.05, 100.0, 2.0, 0.01, 1e-3
+    p = lc.push(rho, r, s, tau, F, H, tip_friction=mu)
+    t = lc.tip_push(H, mu)
+    load = F + t.dF_per_P / t.Q_per_P * p.Q_slide_over_Eh2
+    a = lc.sliding_contact_for_load(load, rho, r, s, method="collocation").a_over_R
+    assert p.Q_slide_over_Eh2 == pytest.approx(2 * a * rho * tau + s * (r - 1), rel=1e-12)
+    assert p.a_slide_over_R == pytest.approx(a, rel=1e-12)
+    assert p.Q_roll_over_Eh2 * t.H_effective_over_R == pytest.approx(s * (r - 1), rel=1e-12)
+
+
+def test_a_tip_low_on_the_fibre_lifts_it_off_first():
+    # frictionless at H = 0.05 R the tip pulls up 3 times as hard as it pushes: the load
+    # reaches the pull-off force of the contact at rest at Q = (F - F_po)/3.04 = 0.0873,
+    # below Q_roll = R dw / R = 0.09
+    p = lc.push(100.0, 10.0, 0.01, 1e-3, 0.0, 0.05, [0.05, 0.088], tip_friction=0.0)
+    F_po = lc.pull_off(100.0, 0.01).F_pulloff_over_Eh
+    t = lc.tip_push(0.05)
+    Q_lift = -F_po / (-t.dF_per_P / t.Q_per_P)
+    assert 0.05 < Q_lift < 0.088 and Q_lift < p.Q_roll_over_Eh2[0]
+    assert list(p.first_motion) == ["lift-off", "lift-off"]
+    assert list(p.state) == ["rest", "lift-off"]

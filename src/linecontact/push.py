@@ -32,7 +32,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from . import domain as _domain
 from ._validation import broadcast, check_array, scalar_or_array
-from .normal import contact_for_load
+from .normal import contact_for_load, pull_off
 from .results import Result, as_output
 from .sliding import sliding_contact_for_load
 from .tangential import sliding_initiation, steady_rolling
@@ -40,7 +40,7 @@ from .tangential import sliding_initiation, steady_rolling
 __all__ = ["Push", "TipPush", "push", "tip_push"]
 
 #: The states of a pushed fibre (``Push.state``) and its first motions.
-STATES = ("rest", "roll", "slide", "roll+slide")
+STATES = ("rest", "roll", "slide", "roll+slide", "lift-off")
 
 
 @dataclass(frozen=True)
@@ -50,7 +50,13 @@ class Push(Result):
     Attributes
     ----------
     H_over_R : ndarray or float
-        Height of the push above the substrate over ``R`` (1 at the axis).
+        Height of the push above the substrate over ``R`` (1 at the axis); for a tip, the
+        height where it touches the fibre.
+    H_arm_over_R : ndarray or float
+        The moment arm of the push about the contact: ``H``, or the tip's ``H_eff``
+        (:func:`tip_push`).
+    tip_friction : ndarray or float
+        The tip's friction coefficient (NaN for a horizontal push).
     a_rest_over_R : ndarray or float
         Contact half-width at rest (the normal contact at the load with the advancing
         range ``h2``); NaN where no contact at rest carries the load (it is below the
@@ -68,10 +74,12 @@ class Push(Result):
         ``2 a_rest tau0``: gross slip of the contact at rest begins (the resistance then
         rises to ``Q_slide`` as the trailing edge stretches).
     H_critical_over_R : ndarray or float
-        ``H* = R dw / Q_slide``: rolling comes first above it.
+        ``H* = R dw / Q_slide``: rolling comes first for a moment arm above it.
     first_motion : ndarray of str or str
         ``"roll"``, ``"slide"``, or ``"roll+slide"`` (rolling comes first but needs more
-        shear than the contact holds, ``|S_roll| >= 2 a_slide tau0``).
+        shear than the contact holds, ``|S_roll| >= 2 a_slide tau0``); with a tip below the
+        axis also ``"lift-off"`` (its vertical pull takes the load to the pull-off force of
+        the contact at rest before either resistance is reached).
     S_roll_over_Eh2 : ndarray or float
         The contact's shear on the fibre while rolling, ``Q_roll (H - R)/R`` (negative:
         resisting, below the axis; positive: driving, above it).
@@ -82,8 +90,8 @@ class Push(Result):
     Q_over_Eh2 : ndarray or float
         The push given (NaN without one).
     state : ndarray of str or str
-        For a push given: ``"rest"``, ``"roll"``, ``"slide"`` or ``"roll+slide"`` (above
-        both resistances); ``""`` without one.
+        For a push given: ``"rest"``, ``"roll"``, ``"slide"``, ``"roll+slide"`` (above
+        both resistances) or ``"lift-off"`` (a tip); ``""`` without one.
     d_over_a_rest : ndarray or float
         Stick-zone half-width over ``a_rest`` at rest under the push given (0 from
         ``Q_onset`` on: the fibre has slipped and stopped, the trailing edge stretched);
@@ -103,6 +111,8 @@ class Push(Result):
     )
 
     H_over_R: NDArray | float
+    H_arm_over_R: NDArray | float
+    tip_friction: NDArray | float
     a_rest_over_R: NDArray | float
     a_slide_over_R: NDArray | float
     Q_roll_over_Eh2: NDArray | float
@@ -134,6 +144,8 @@ def push(
     F_over_Eh2: ArrayLike,
     H_over_R: ArrayLike,
     Q_over_Eh2: ArrayLike | None = None,
+    *,
+    tip_friction: ArrayLike | None = None,
 ) -> Push:
     r"""Will a fibre pushed sideways at height ``H`` stay, roll or slide, and at what push.
 
@@ -157,7 +169,13 @@ def push(
     H_over_R : array_like
         Height of the push above the substrate over ``R``, in ``[0, 2]``.
     Q_over_Eh2 : array_like, optional
-        A push (``>= 0``) whose state is wanted.
+        A push (``>= 0``, its horizontal part for a tip) whose state is wanted.
+    tip_friction : array_like, optional
+        The push comes from a tip touching the fibre at the height ``H`` (in ``(0, 2)``)
+        with this friction coefficient (:func:`tip_push`): the moment arm is the tip's
+        ``H_eff`` and each threshold's contact carries the load ``F + dF`` the tip adds
+        at that push (solved by fixed-point iteration for sliding). Without it the push is
+        horizontal at ``H``.
 
     Returns
     -------
@@ -168,7 +186,8 @@ def push(
     ValueError
         For inputs outside their domain, naming the parameter and its range.
     NoEquilibriumError
-        For a load below the pull-off force of steady sliding (the fibre has pulled off).
+        For a load below the pull-off force of steady sliding (the fibre has pulled off),
+        or a tip that lifts the fibre off before it moves.
 
     Examples
     --------
@@ -200,8 +219,21 @@ def push(
             "Q_over_Eh2", Q_over_Eh2, low=0.0, low_inclusive=True, high=1e12, high_inclusive=True
         )
     )
-    scalar = scalar_or_array(rho, r, s, tau, F, H, Q)
-    rho, r, s, tau, F, H, Q = (
+    tip = tip_friction is not None
+    mu = (
+        np.full((), np.nan)
+        if tip_friction is None
+        else check_array(
+            "tip_friction",
+            tip_friction,
+            low=0.0,
+            low_inclusive=True,
+            high=10.0,
+            high_inclusive=True,
+        )
+    )
+    scalar = scalar_or_array(rho, r, s, tau, F, H, Q, mu)
+    rho, r, s, tau, F, H, Q, mu = (
         np.asarray(v, float)
         for v in broadcast(
             R_over_h2=rho,
@@ -211,46 +243,99 @@ def push(
             F_over_Eh2=F,
             H_over_R=H,
             Q_over_Eh2=Q,
+            tip_friction=mu,
         )
     )
     shape = rho.shape
-    rho, r, s, tau, F, H, Q = (np.reshape(v, -1) for v in (rho, r, s, tau, F, H, Q))
+    rho, r, s, tau, F, H, Q, mu = (np.reshape(v, -1) for v in (rho, r, s, tau, F, H, Q, mu))
+    if tip:  # the moment arm and the load the tip adds per unit horizontal push
+        tp = tip_push(H, mu)
+        arm = np.asarray(tp.H_effective_over_R, float)
+        k = np.asarray(tp.dF_per_P, float) / np.asarray(tp.Q_per_P, float)
+    else:
+        arm, k = H, np.zeros(H.shape)
 
-    # the contact of steady motion (raises below the sliding pull-off force) and at rest; a
-    # scalar call takes the inverses' scalar fast paths
+    # a scalar call takes the inverses' scalar fast paths
     one = (lambda v: float(v[0])) if scalar else (lambda v: v)
-    slide = sliding_contact_for_load(one(F), one(rho), one(r), one(s), method="closed-form")
-    rest = contact_for_load(one(F), one(rho), one(s), on_no_equilibrium="report")
     flat = (lambda v: np.reshape(np.asarray(v, float), -1)) if scalar else np.asarray
-    a_slide, a_rest = flat(slide.a_over_R), flat(rest.a_over_R)
-    F_slide = flat(slide.F_over_Eh2)
-    conv = np.reshape(np.asarray(slide.converged), -1) & (
-        np.reshape(np.asarray(rest.converged), -1) | ~np.isfinite(a_rest)
-    )
+
+    def slide_at(load, report=False):
+        """The steady contact carrying ``load``: its a/R and F, converged; NaN where none.
+
+        The load given raises below the pull-off force of steady sliding; where the load a
+        tip adds takes it beyond (``report``), NaN: the fibre lifts off first.
+        """
+        res = sliding_contact_for_load(
+            one(load),
+            one(rho),
+            one(r),
+            one(s),
+            method="closed-form",
+            on_no_equilibrium="report" if report else "raise",
+        )
+        return flat(res.a_over_R), flat(res.F_over_Eh2), np.reshape(np.asarray(res.converged), -1)
+
+    def rest_at(load):
+        res = contact_for_load(one(load), one(rho), one(s), on_no_equilibrium="report")
+        return flat(res.a_over_R), np.reshape(np.asarray(res.converged), -1)
 
     dw = s * (r - 1.0)
-    capacity = 2.0 * a_slide * rho * tau  # full slip of a contact of half-width a_slide
-    Q_slide = capacity + dw
+    # the contact of steady sliding (raises below the sliding pull-off force) and at rest;
+    # with a tip, each at the load the tip adds at its threshold (fixed point: the tip's
+    # load changes the width by a part of order tau0/E, a few iterations)
+    a_slide, F_slide, conv = slide_at(F)
+    a_rest, conv_rest = rest_at(F)
+    Q_slide = 2.0 * a_slide * rho * tau + dw
+    Q_onset = 2.0 * a_rest * rho * tau
+    if tip and np.any(k != 0):
+        for _ in range(60):
+            a_slide, F_slide, conv = slide_at(F + k * Q_slide, report=True)
+            Q_new = 2.0 * a_slide * rho * tau + dw  # NaN: the tip lifts the fibre first
+            step = np.abs(np.nan_to_num(Q_new - Q_slide))
+            Q_slide = Q_new
+            if np.all(step <= 1e-14 * np.nan_to_num(Q_new, nan=1.0)):
+                break
+        F_slide = np.where(np.isfinite(a_slide), F_slide - k * Q_slide, F)  # the load given
+        for _ in range(60):
+            a_new, conv_rest = rest_at(F + k * np.nan_to_num(Q_onset))  # NaN: lifted
+            Q_new = 2.0 * a_new * rho * tau
+            step = np.abs(np.nan_to_num(Q_new - Q_onset))
+            a_rest, Q_onset = a_new, Q_new
+            if np.all(step <= 1e-14 * np.nan_to_num(Q_new, nan=1.0)):
+                break
+    capacity = Q_slide - dw  # 2 a_slide tau0: full slip of the steady contact
+    conv = conv & (conv_rest | ~np.isfinite(a_rest))
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         # Q_roll = M_axis / H: 0 without hysteresis (H > 0); inf for a push at the contact
         # line (H = 0, or so close to it that M_axis / H overflows)
         # (the identity M_axis = R dw of the sliding contact, eq. (1), tested at every width,
         # taken exactly: M - e F loses digits when the adhesion is tiny beside the load)
-        Q_roll = np.where(H > 0, dw / np.where(H > 0, H, 1.0), np.inf)
-        S_roll = np.where(H > 0, Q_roll * (H - 1.0), -np.inf)
+        Q_roll = np.where(arm > 0, dw / np.where(arm > 0, arm, 1.0), np.inf)
+        S_roll = np.where(arm > 0, Q_roll * (arm - 1.0), -np.inf)
+    # the rolling contact: the steady contact at the load while rolling
+    a_roll = a_slide
+    if tip and np.any(k != 0):
+        a_roll, _, _ = slide_at(F + k * np.where(np.isfinite(Q_roll), Q_roll, 0.0), True)
+    # a tip that lifts (k < 0) pulls the fibre off at rest when F + k Q falls to the pull-off
+    # force of the contact at rest; a threshold beyond that push is not reached (NaN -> inf)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        F_po = np.asarray(pull_off(one(rho), one(s)).F_pulloff_over_Eh, float)
+        Q_lift = np.where(k < 0, (F - F_po) / np.where(k < 0, -k, 1.0), np.inf)
+    Q_slide = np.where(np.isnan(Q_slide), np.inf, Q_slide)
+    Q_roll = np.where(np.isnan(a_roll) & np.isfinite(Q_roll), np.inf, Q_roll)
     H_crit = dw / Q_slide
-    holds = np.abs(S_roll) < capacity
+    holds = np.abs(S_roll) < 2.0 * a_roll * rho * tau
     roll_first = Q_roll < Q_slide
     first = np.where(roll_first, np.where(holds, "roll", "roll+slide"), "slide")
+    first = np.where(Q_lift < np.minimum(Q_roll, Q_slide), "lift-off", first)
 
     creep = np.full(rho.shape, np.nan)
     if np.any(holds):
-        T = np.abs(S_roll[holds]) / (rho[holds] * a_slide[holds])  # T over E a_slide
+        T = np.abs(S_roll[holds]) / (rho[holds] * a_roll[holds])  # T over E a_roll
         roll = steady_rolling(tau[holds], T_over_Ea=np.minimum(T, 2 * tau[holds]))
         creep[holds] = np.sign(S_roll[holds]) * np.asarray(roll.creep_over_V, float)
         creep[holds] = np.where(S_roll[holds] == 0, 0.0, creep[holds])
 
-    Q_onset = 2.0 * a_rest * rho * tau
     given = np.isfinite(Q)
     state = np.full(rho.shape, "", dtype="<U10")
     d_rest = np.full(rho.shape, np.nan)
@@ -263,9 +348,14 @@ def push(
             np.where(over_roll, np.where(holds, "roll", "roll+slide"), "slide"),
         )
         state = np.where(given, np.where(over_roll | over_slide, moving, "rest"), "")
-        at_rest = given & (state == "rest") & np.isfinite(a_rest)
+        state = np.where(given & (Q >= Q_lift), "lift-off", state)
+        at_rest = given & (state == "rest")
+        a_here = a_rest
+        if tip and np.any(at_rest & (k != 0)):  # the contact at rest under the tip's load
+            a_here, _ = rest_at(F + k * np.where(given, Q, 0.0))
+        at_rest &= np.isfinite(a_here)
         if np.any(at_rest):
-            T = Q[at_rest] / (rho[at_rest] * a_rest[at_rest])
+            T = Q[at_rest] / (rho[at_rest] * a_here[at_rest])
             init = sliding_initiation(tau[at_rest], T_over_Ea=T)
             d_rest[at_rest] = np.where(
                 np.asarray(init.state) == "sliding", 0.0, np.asarray(init.d_over_a, float)
@@ -277,6 +367,8 @@ def push(
         res = np.abs(F_slide - F) / scale
     vals = dict(
         H_over_R=H,
+        H_arm_over_R=arm,
+        tip_friction=mu,
         a_rest_over_R=a_rest,
         a_slide_over_R=a_slide,
         Q_roll_over_Eh2=Q_roll,
