@@ -79,8 +79,17 @@ def test_si_columns(capsys):
         ([*ND, "--H-over-R", "1", "--F-over-Eh2", "-1"], r"below the pull-off force"),
         ([*ND, "--H-over-R", "1", "--radius", "5e-8"], r"not both"),
         ([*SI, "--height", "2e-7"], r"--height must be in \[0, 1e-07\] m \(2R\), got 2e-07"),
-        ([*SI], r"give --height"),
+        ([*SI], r"give exactly one of --height or --tip-height"),
         ([*SI, "--height", "5e-8", "--tau0", "-1"], r"--tau0 must be in"),
+        ([*SI, "--tip-height", "1e-7"], r"--tip-height must be in \(0, 1e-07\) m \(2R\)"),
+        ([*SI, "--height", "5e-8", "--tip-friction", "0.1"], r"goes with --tip-height"),
+        ([*ND, "--H-over-R", "1", "--tip-friction", "-1"], r"--tip-friction must be in \[0, 10\]"),
+        (
+            ["push", "--radius", "5e-8", "--modulus", "48e9", "--tau0", "1e6", "--height", "5e-8"]
+            + ["--work-of-adhesion-receding", "0.02", "--work-of-adhesion-advancing", "0.05"]
+            + ["--z0", "3e-10"],
+            r"--work-of-adhesion-advancing must be <= --work-of-adhesion-receding",
+        ),
     ],
 )
 def test_bad_input_is_one_error_line_and_status_2(argv, message, capsys):
@@ -89,3 +98,20 @@ def test_bad_input_is_one_error_line_and_status_2(argv, message, capsys):
     lines = err.strip().splitlines()
     assert len(lines) == 1 and lines[0].startswith("linecontact push: error: ")
     assert re.search(message, lines[0]), lines[0]
+
+
+def test_a_tip_and_the_two_works_of_adhesion(capsys):
+    argv = ["push", "--radius", "50e-9", "--modulus", "48e9", "--tau0", "1e6"]
+    argv += ["--work-of-adhesion-receding", "0.05", "--work-of-adhesion-advancing", "0.025"]
+    argv += ["--z0", "0.3e-9", "--tip-height", "25e-9", "75e-9", "--tip-friction", "0.2"]
+    code, out, _ = _run([*argv, "--json"], capsys)
+    assert code == 0
+    doc = json.loads(out)
+    s0, h1 = lc.adhesion_from_work(0.05, 0.3e-9)
+    h2 = 0.025 / s0
+    ref = lc.push(50e-9 / h2, h1 / h2, s0 / 48e9, 1e6 / 48e9, 0.0, [0.5, 1.5], tip_friction=0.2)
+    for i, rec in enumerate(doc["results"]):
+        assert rec["H_arm_over_R"] == pytest.approx(ref.H_arm_over_R[i], rel=1e-15)
+        assert rec["Q_slide_over_Eh2"] == pytest.approx(ref.Q_slide_over_Eh2[i], rel=1e-12)
+        assert rec["H_arm_m"] == pytest.approx(ref.H_arm_over_R[i] * 50e-9, rel=1e-15)
+    assert doc["parameters"]["work_of_adhesion_advancing_J_per_m2"] == 0.025

@@ -13,6 +13,7 @@ from typing import Any
 import numpy as np
 
 from ..domain import check_si
+from ..materials import adhesion_from_work
 from ..output import table_from_result
 from ..push import push
 from ._options import (
@@ -87,18 +88,50 @@ def register(sub: Any) -> None:
     g.add_argument(
         "--Q-over-Eh2", type=float, metavar="Q", help="a push over E h2: report the state"
     )
+    g.add_argument(
+        "--tip-friction",
+        type=float,
+        metavar="MU",
+        help="the push comes from a tip touching the fibre at the height given (--H-over-R "
+        "or --tip-height), with this friction coefficient in [0, 10] (0: frictionless)",
+    )
     si = add_si_materials(p, range_flag="--h2")
     si.add_argument("--h1", type=float, help="receding (trailing-edge) adhesion range h1 [m]")
     si.add_argument("--tau0", type=float, help="friction stress tau0 [Pa]")
     si.add_argument("--load", type=float, help="normal load [N/m] (default 0)")
     si.add_argument("--height", type=float, nargs="+", help="push heights H [m], in [0, 2R]")
+    si.add_argument(
+        "--tip-height",
+        type=float,
+        nargs="+",
+        metavar="H",
+        help="heights [m] where a tip touches the fibre, in (0, 2R) (with --tip-friction, "
+        "default 0), instead of --height",
+    )
     si.add_argument("--push", type=float, help="a push [N/m]: report the state")
+    si.add_argument(
+        "--work-of-adhesion-receding",
+        type=float,
+        metavar="W1",
+        help="receding (separation) work of adhesion [J/m^2], with "
+        "--work-of-adhesion-advancing and --z0: sigma0 = 16 W1/(9 sqrt(3) z0), "
+        "h1 = W1/sigma0, h2 = W2/sigma0",
+    )
+    si.add_argument(
+        "--work-of-adhesion-advancing",
+        type=float,
+        metavar="W2",
+        help="advancing (approach) work of adhesion [J/m^2], <= W1",
+    )
     add_output_options(p)
     p.set_defaults(func=_cmd_push, _api_flags={"adhesion_range": "--h2"})
 
 
 def _cmd_push(args: argparse.Namespace) -> int:
-    si = si_given(args, extra=("h1", "tau0", "load", "height", "push"))
+    works = (args.work_of_adhesion_receding, args.work_of_adhesion_advancing)
+    si = si_given(args, extra=("h1", "tau0", "load", "height", "tip_height", "push")) or any(
+        w is not None for w in works
+    )
     nd_flags = (args.R_over_h2, args.sigma0_over_E, args.tau0_over_E, args.F_over_Eh2)
     nd = any(v is not None for v in (*nd_flags, args.H_over_R, args.Q_over_Eh2))
     if si and nd:
@@ -126,20 +159,32 @@ def _cmd_push(args: argparse.Namespace) -> int:
         H = np.asarray(args.H_over_R, float)
         Q = args.Q_over_Eh2
     else:
+        if any(w is not None for w in works):
+            _works_to_ranges(args)
         if (args.h1_over_h2 is None) == (args.h1 is None):
             raise ValueError("give exactly one of --h1-over-h2 or --h1 [m]")
-        for flag, v in (("--tau0", args.tau0), ("--height", args.height)):
-            if v is None:
-                raise ValueError(f"give {flag}")
+        if args.tau0 is None:
+            raise ValueError("give --tau0")
+        if (args.height is None) == (args.tip_height is None):
+            raise ValueError("give exactly one of --height or --tip-height [m]")
+        if args.tip_height is not None and args.tip_friction is None:
+            args.tip_friction = 0.0
+        if args.tip_height is None and args.tip_friction is not None:
+            raise ValueError("--tip-friction goes with --tip-height (a tip), not --height")
         cyl = cylinder(args, range_flag="--h2")
         Eh = cyl.modulus * cyl.adhesion_range
         if args.h1 is not None:
             check_si("--h1", args.h1, cyl.adhesion_range, "h1_over_h2", "m")
         check_si("--tau0", args.tau0, cyl.modulus, "tau0_over_E", "Pa")
-        heights = np.asarray(args.height, float)
-        if not np.all((heights >= 0) & (heights <= 2 * cyl.radius)):
-            bad = float(heights[~((heights >= 0) & (heights <= 2 * cyl.radius))][0])
-            raise ValueError(f"--height must be in [0, {2 * cyl.radius:g}] m (2R), got {bad!r}")
+        tip = args.tip_height is not None
+        flag = "--tip-height" if tip else "--height"
+        heights = np.asarray(args.tip_height if tip else args.height, float)
+        ok = (heights > 0) & (heights < 2 * cyl.radius) if tip else (heights >= 0)
+        ok &= heights <= 2 * cyl.radius
+        if not np.all(ok):
+            bad = float(heights[~ok][0])
+            rng = f"(0, {2 * cyl.radius:g})" if tip else f"[0, {2 * cyl.radius:g}]"
+            raise ValueError(f"{flag} must be in {rng} m (2R), got {bad!r}")
         load = 0.0 if args.load is None else args.load
         check_si("--load", load, Eh, "F_over_Eh2", "N/m")
         if args.push is not None:
@@ -148,7 +193,7 @@ def _cmd_push(args: argparse.Namespace) -> int:
         r = args.h1_over_h2 if args.h1 is None else args.h1 / cyl.adhesion_range
         tau, F, H = args.tau0 / cyl.modulus, load / Eh, heights / cyl.radius
         Q = None if args.push is None else args.push / Eh
-    res = push(rho, r, s, tau, F, H, Q)
+    res = push(rho, r, s, tau, F, H, Q, tip_friction=args.tip_friction)
     show = [
         "H_over_R",
         "a_rest_over_R",
@@ -160,6 +205,10 @@ def _cmd_push(args: argparse.Namespace) -> int:
         "creep_over_V",
     ]
     drop = []
+    if args.tip_friction is None:
+        drop += ["H_arm_over_R", "tip_friction"]
+    else:
+        show.insert(1, "H_arm_over_R")
     if Q is None:
         drop += ["Q_over_Eh2", "state", "d_over_a_rest"]
     else:
@@ -171,6 +220,12 @@ def _cmd_push(args: argparse.Namespace) -> int:
         params.update(h1_m=r * cyl.adhesion_range, tau0_Pa=args.tau0, load_N_per_m=F * Eh)
         if Q is not None:
             params["push_N_per_m"] = args.push
+        for key, name in (
+            ("work_of_adhesion_receding", "work_of_adhesion_receding_J_per_m2"),
+            ("work_of_adhesion_advancing", "work_of_adhesion_advancing_J_per_m2"),
+        ):
+            if getattr(args, key) is not None:
+                params[name] = getattr(args, key)
         R = cyl.radius
         extra.update(
             H_m=np.multiply(res.H_over_R, R),
@@ -182,6 +237,9 @@ def _cmd_push(args: argparse.Namespace) -> int:
             H_critical_m=np.multiply(res.H_critical_over_R, R),
         )
         show = ["H_m", "a_slide_m", "Q_roll_N_per_m", "Q_slide_N_per_m", "H_critical_m"]
+        if args.tip_friction is not None:
+            extra["H_arm_m"] = np.multiply(res.H_arm_over_R, R)
+            show.insert(1, "H_arm_m")
         show += ["first_motion"] + (["state"] if Q is not None else [])
         if args.length is not None:
             L = args.length
@@ -201,3 +259,27 @@ def _cmd_push(args: argparse.Namespace) -> int:
     )
     emit(args, table)
     return finish(table, ("rest", "roll", "slide", "roll+slide"))
+
+
+def _works_to_ranges(args: argparse.Namespace) -> None:
+    """The receding and advancing works of adhesion as sigma0, h2 and h1 (one sigma0)."""
+    w1, w2 = args.work_of_adhesion_receding, args.work_of_adhesion_advancing
+    if w1 is None or w2 is None or args.z0 is None:
+        raise ValueError(
+            "give --work-of-adhesion-receding, --work-of-adhesion-advancing and --z0 together"
+        )
+    if any(v is not None for v in (args.sigma0, args.h, args.h1, args.work_of_adhesion)):
+        raise ValueError(
+            "give adhesion either as the two works of adhesion with --z0, or as --sigma0, "
+            "--h2 and --h1, not both"
+        )
+    for flag, v in (("--work-of-adhesion-receding", w1), ("--work-of-adhesion-advancing", w2)):
+        if not (np.isfinite(v) and v > 0):
+            raise ValueError(f"{flag} must be a finite number > 0, got {v!r}")
+    if w2 > w1:
+        raise ValueError(
+            f"--work-of-adhesion-advancing must be <= --work-of-adhesion-receding (the "
+            f"hysteresis is not negative), got {w2!r} > {w1!r}"
+        )
+    s0, h1 = adhesion_from_work(w1, args.z0)
+    args.sigma0, args.h, args.h1, args.z0 = s0, w2 / s0, h1, None
