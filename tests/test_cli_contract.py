@@ -140,6 +140,37 @@ CASES = {
         ],
         2,
     ),
+    ("push", "nd"): (
+        ["push", "--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.04"]
+        + ["--tau0-over-E", "0.002", "--F-over-Eh2", "0.5", "--H-over-R", "0.5", "1.5"],
+        [
+            "H_over_R",
+            "a_rest_over_R",
+            "a_slide_over_R",
+            "Q_roll_over_Eh2",
+            "Q_slide_over_Eh2",
+            "H_critical_over_R",
+            "first_motion",
+        ],
+        2,
+    ),
+    ("push", "si"): (
+        ["push", "--radius", "50e-9", "--modulus", "48e9", "--sigma0", "1e8", "--h2", "0.3e-9"]
+        + ["--h1", "0.6e-9", "--tau0", "1e6", "--height", "25e-9", "50e-9", "--push", "0.03"]
+        + ["--length", "5e-6"],
+        [
+            "H_over_R",
+            "first_motion",
+            "state",
+            "H_m",
+            "a_slide_m",
+            "Q_roll_N_per_m",
+            "Q_slide_N_per_m",
+            "H_critical_m",
+            "Q_roll_total_N",
+        ],
+        2,
+    ),
 }
 IDS = [f"{c}-{m}" for c, m in CASES]
 
