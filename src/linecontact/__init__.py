@@ -19,6 +19,7 @@ length over ``E h``, stresses over ``E``; compressive load positive):
 from ._version import __version__
 from .cylinder import (
     Cylinder,
+    cylinder_push,
     cylinder_sliding_initiation,
     cylinder_steady_rolling,
 )
@@ -72,6 +73,7 @@ __all__ = [
     "compliance_constants",
     "composite_modulus",
     "contact_for_load",
+    "cylinder_push",
     "cylinder_sliding_initiation",
     "cylinder_steady_rolling",
     "dundurs_beta",

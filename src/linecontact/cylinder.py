@@ -19,6 +19,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from . import domain as _domain
 from . import normal as _normal
+from . import push as _push
 from . import reference as _ref
 from ._validation import broadcast, check_array, non_negative, positive, scalar
 from .errors import CouplingWarning, ModelValidityWarning, NoEquilibriumError
@@ -33,6 +34,8 @@ from .tangential.initiation import _CATTANEO_MINDLIN, _INITIATION
 from .tangential.rolling import _CARTER, _ROLLING
 
 __all__ = [
+    "CylinderPush",
+    "cylinder_push",
     "PLAUSIBLE",
     "Cylinder",
     "CylinderContact",
@@ -638,4 +641,192 @@ def cylinder_steady_rolling(
         tangential_load,
         method,
         on_sliding,
+    )
+
+
+# --------------------------------------------------------------------------------------------
+# the pushed fibre in SI units
+
+
+@dataclass(frozen=True)
+class CylinderPush:
+    """A pushed :class:`~linecontact.cylinder.Cylinder` (``docs/push.md``), in SI units.
+
+    Attributes
+    ----------
+    height : ndarray or float
+        ``H`` [m] of the push (or of the tip's contact).
+    moment_arm : ndarray or float
+        ``H``, or the tip's ``H_eff`` [m].
+    rest_half_width, slide_half_width : ndarray or float
+        ``a_rest`` and ``a_slide`` [m].
+    rolling_resistance, sliding_resistance, slip_onset : ndarray or float
+        ``Q_roll = R dw / H``, ``Q_slide = 2 a_slide tau0 + dw`` and ``2 a_rest tau0``
+        [N/m] (horizontal pushes).
+    critical_height : ndarray or float
+        ``H* = R dw / Q_slide`` [m].
+    first_motion : ndarray of str or str
+        ``"roll"``, ``"slide"``, ``"roll+slide"`` or ``"lift-off"``.
+    creep_ratio : ndarray or float
+        ``(V - omega R)/V`` while rolling.
+    state : ndarray of str or str
+        Under the push given (``""`` without one).
+    length : float or None
+        The fibre's length [m] for the totals ``*_total`` [N] (None: per unit length).
+    nondimensional : Push
+        The underlying result with its diagnostics.
+    """
+
+    height: NDArray | float
+    moment_arm: NDArray | float
+    rest_half_width: NDArray | float
+    slide_half_width: NDArray | float
+    rolling_resistance: NDArray | float
+    sliding_resistance: NDArray | float
+    slip_onset: NDArray | float
+    critical_height: NDArray | float
+    first_motion: NDArray | str
+    creep_ratio: NDArray | float
+    state: NDArray | str
+    length: float | None
+    nondimensional: object = field(repr=False)
+
+    @property
+    def rolling_resistance_total(self) -> NDArray | float:
+        """``Q_roll L`` [N] (needs ``length``)."""
+        return self._total(self.rolling_resistance)
+
+    @property
+    def sliding_resistance_total(self) -> NDArray | float:
+        """``Q_slide L`` [N] (needs ``length``)."""
+        return self._total(self.sliding_resistance)
+
+    def _total(self, v):
+        if self.length is None:
+            raise ValueError("give length= to cylinder_push for totals in N")
+        return v * self.length
+
+
+def cylinder_push(
+    cylinder,
+    *,
+    friction_stress: float,
+    height: ArrayLike,
+    receding_range: float | None = None,
+    receding_work_of_adhesion: float | None = None,
+    normal_load: ArrayLike = 0.0,
+    push: ArrayLike | None = None,
+    tip_friction: ArrayLike | None = None,
+    length: float | None = None,
+) -> CylinderPush:
+    """Will a pushed :class:`~linecontact.cylinder.Cylinder` stay, roll or slide (SI units).
+
+    The cylinder's adhesion is the advancing one (its ``cohesive_stress`` and
+    ``adhesion_range`` ``h2``, e.g. from the advancing work of adhesion); the receding edge
+    has the same ``sigma0`` and the range ``h1``, given as ``receding_range`` [m] or as
+    ``receding_work_of_adhesion`` [J/m^2] (``h1 = w1 / sigma0``), ``h1 >= h2``.
+
+    Parameters
+    ----------
+    cylinder : Cylinder
+        Geometry, materials, advancing adhesion.
+    friction_stress : float
+        ``tau0`` [Pa].
+    height : array_like
+        ``H`` [m] of the push, in ``[0, 2R]`` (of the tip's contact, in ``(0, 2R)``).
+    receding_range, receding_work_of_adhesion : float
+        Exactly one.
+    normal_load : array_like
+        ``F`` [N/m] (default 0).
+    push : array_like, optional
+        A horizontal push [N/m] whose state is wanted.
+    tip_friction : array_like, optional
+        A tip at ``height`` with this friction coefficient (:func:`linecontact.push`).
+    length : float, optional
+        The fibre's length [m], for the totals.
+
+    Returns
+    -------
+    CylinderPush
+
+    Examples
+    --------
+    >>> from linecontact import Cylinder, adhesion_from_work
+    >>> s0, h1 = adhesion_from_work(0.05, 0.3e-9)        # receding work of adhesion
+    >>> cyl = Cylinder.from_modulus(50e-9, 48.4e9, cohesive_stress=s0, adhesion_range=0.025 / s0)
+    >>> p = cylinder_push(cyl, friction_stress=1e6, height=[25e-9, 50e-9], receding_range=h1)
+    >>> [str(m) for m in p.first_motion]
+    ['slide', 'roll']
+    """
+    if (receding_range is None) == (receding_work_of_adhesion is None):
+        raise ValueError("give exactly one of receding_range [m] or receding_work_of_adhesion")
+    s0, h2, R, E = (
+        cylinder.cohesive_stress,
+        cylinder.adhesion_range,
+        cylinder.radius,
+        cylinder.modulus,
+    )
+    if receding_range is not None:
+        # h1 >= h2 (the hysteresis is not negative), as push's h1/h2 in [1, 1000]
+        h1 = scalar(
+            "receding_range",
+            receding_range,
+            low=h2,
+            low_inclusive=True,
+            high=1e3 * h2,
+            high_inclusive=True,
+        )
+    elif receding_work_of_adhesion is not None:
+        w1 = scalar("receding_work_of_adhesion", receding_work_of_adhesion)
+        if not (np.isfinite(w1) and w1 > 0 and s0 > 0):
+            raise ValueError(
+                "receding_work_of_adhesion must be a finite number > 0, with a cylinder that "
+                f"has adhesion (cohesive_stress > 0), got {w1!r}"
+            )
+        scalar(
+            "receding_work_of_adhesion",
+            w1,
+            low=s0 * h2,
+            low_inclusive=True,
+            high=1e3 * s0 * h2,
+            high_inclusive=True,
+        )
+        h1 = w1 / s0
+    tau = scalar("friction_stress", friction_stress)
+    _domain.check_si("friction_stress", tau, E, "tau0_over_E", "Pa")
+    H = check_array("height", height, low=0.0, low_inclusive=True, high=2 * R, high_inclusive=True)
+    Eh = E * h2
+    F = np.asarray(normal_load, float) / Eh
+    Q = None if push is None else np.asarray(push, float) / Eh
+    if length is not None:
+        positive("length", length)
+    p = _push.push(
+        R / h2,
+        h1 / h2,
+        cylinder.sigma0_over_E,
+        tau / E,
+        F,
+        np.asarray(H, float) / R,
+        Q,
+        tip_friction=tip_friction,
+    )
+
+    def si(v, unit):
+        out = np.multiply(v, unit)
+        return out.item() if np.ndim(out) == 0 else out
+
+    return CylinderPush(
+        height=si(p.H_over_R, R),
+        moment_arm=si(p.H_arm_over_R, R),
+        rest_half_width=si(p.a_rest_over_R, R),
+        slide_half_width=si(p.a_slide_over_R, R),
+        rolling_resistance=si(p.Q_roll_over_Eh2, Eh),
+        sliding_resistance=si(p.Q_slide_over_Eh2, Eh),
+        slip_onset=si(p.Q_onset_over_Eh2, Eh),
+        critical_height=si(p.H_critical_over_R, R),
+        first_motion=p.first_motion,
+        creep_ratio=p.creep_over_V,
+        state=p.state,
+        length=length,
+        nondimensional=p,
     )
