@@ -318,9 +318,11 @@ def push(
         a_roll, _, _ = slide_at(F + k * np.where(np.isfinite(Q_roll), Q_roll, 0.0), True)
     # a tip that lifts (k < 0) pulls the fibre off at rest when F + k Q falls to the pull-off
     # force of the contact at rest; a threshold beyond that push is not reached (NaN -> inf)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        F_po = np.asarray(pull_off(one(rho), one(s)).F_pulloff_over_Eh, float)
-        Q_lift = np.where(k < 0, (F - F_po) / np.where(k < 0, -k, 1.0), np.inf)
+    Q_lift = np.full(F.shape, np.inf)
+    if np.any(k < 0):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            F_po = flat(pull_off(one(rho), one(s)).F_pulloff_over_Eh)
+            Q_lift = np.where(k < 0, (F - F_po) / np.where(k < 0, -k, 1.0), np.inf)
     Q_slide = np.where(np.isnan(Q_slide), np.inf, Q_slide)
     Q_roll = np.where(np.isnan(a_roll) & np.isfinite(Q_roll), np.inf, Q_roll)
     H_crit = dw / Q_slide
