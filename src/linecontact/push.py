@@ -265,6 +265,10 @@ def push(
         The load given raises below the pull-off force of steady sliding; where the load a
         tip adds takes it beyond (``report``), NaN: the fibre lifts off first.
         """
+        # (a tip's load beyond the domain's ends is held there: far beyond any pull-off
+        # force, or a contact far wider than the domain of widths, which the inverse says)
+        lo, _, hi, _ = _domain.DOMAIN["F_over_Eh2"]
+        load = np.clip(load, lo, hi)
         res = sliding_contact_for_load(
             one(load),
             one(rho),
@@ -276,6 +280,8 @@ def push(
         return flat(res.a_over_R), flat(res.F_over_Eh2), np.reshape(np.asarray(res.converged), -1)
 
     def rest_at(load):
+        lo, _, hi, _ = _domain.DOMAIN["F_over_Eh"]
+        load = np.clip(load, lo, hi)
         res = contact_for_load(one(load), one(rho), one(s), on_no_equilibrium="report")
         return flat(res.a_over_R), np.reshape(np.asarray(res.converged), -1)
 
@@ -287,6 +293,7 @@ def push(
     a_rest, conv_rest = rest_at(F)
     Q_slide = 2.0 * a_slide * rho * tau + dw
     Q_onset = 2.0 * a_rest * rho * tau
+    settled = np.ones(F.shape, bool)  # the fixed points of a tip converged
     if tip and np.any(k != 0):
         for _ in range(60):
             a_slide, F_slide, conv = slide_at(F + k * Q_slide, report=True)
@@ -295,6 +302,8 @@ def push(
             Q_slide = Q_new
             if np.all(step <= 1e-14 * np.nan_to_num(Q_new, nan=1.0)):
                 break
+        settled &= step <= 1e-14 * np.nan_to_num(Q_slide, nan=1.0)
+        conv |= ~np.isfinite(a_slide)  # a lifted fibre is a state, not a failure
         F_slide = np.where(np.isfinite(a_slide), F_slide - k * Q_slide, F)  # the load given
         for _ in range(60):
             a_new, conv_rest = rest_at(F + k * np.nan_to_num(Q_onset))  # NaN: lifted
@@ -303,8 +312,9 @@ def push(
             a_rest, Q_onset = a_new, Q_new
             if np.all(step <= 1e-14 * np.nan_to_num(Q_new, nan=1.0)):
                 break
+        settled &= step <= 1e-14 * np.nan_to_num(Q_onset, nan=1.0)
     capacity = Q_slide - dw  # 2 a_slide tau0: full slip of the steady contact
-    conv = conv & (conv_rest | ~np.isfinite(a_rest))
+    conv = conv & (conv_rest | ~np.isfinite(a_rest)) & settled
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         # Q_roll = M_axis / H: 0 without hysteresis (H > 0); inf for a push at the contact
         # line (H = 0, or so close to it that M_axis / H overflows)
