@@ -200,11 +200,20 @@ def _cmd_paper(args) -> int:
         _mpl()
         gc.freeze()
 
+    _draw_and_list(paper_figures, args, formats, size)
+    if exiting:
+        gc.freeze()
+    return 0
+
+
+def _draw_and_list(draw, args, formats, size) -> None:
+    """Run a figure function into ``--outdir`` (progress on stderr) and list the files."""
+
     def progress(msg: str) -> None:
         print(msg, file=sys.stderr)
 
     try:
-        paths = paper_figures(args.outdir, formats=formats, size=size, progress=progress)
+        paths = draw(args.outdir, formats=formats, size=size, progress=progress)
     except OSError as exc:
         raise ValueError(
             f"cannot write the figures to --outdir {args.outdir!r}: {exc.strerror or exc}"
@@ -212,9 +221,6 @@ def _cmd_paper(args) -> int:
     print(f"wrote {len(paths)} files to {args.outdir}/:")
     for p in paths:
         print(f"  {p}")
-    if exiting:
-        gc.freeze()
-    return 0
 
 
 def _cmd_figures(args) -> int:
@@ -222,18 +228,7 @@ def _cmd_figures(args) -> int:
     size = _size_arg(args.size)
     from ..figures import push_figures
 
-    def progress(msg: str) -> None:
-        print(msg, file=sys.stderr)
-
-    try:
-        paths = push_figures(args.outdir, formats=formats, size=size, progress=progress)
-    except OSError as exc:
-        raise ValueError(
-            f"cannot write the figures to --outdir {args.outdir!r}: {exc.strerror or exc}"
-        ) from None
-    print(f"wrote {len(paths)} files to {args.outdir}/:")
-    for p in paths:
-        print(f"  {p}")
+    _draw_and_list(push_figures, args, formats, size)
     return 0
 
 
