@@ -32,6 +32,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from . import domain as _domain
 from ._validation import broadcast, check_array, scalar_or_array
+from .errors import ConvergenceError
 from .normal import contact_for_load, pull_off
 from .results import Result, as_output
 from .sliding import sliding_contact_for_load
@@ -99,7 +100,7 @@ class Push(Result):
     residual_load : ndarray or float
         Relative residual of the two load inversions (the contacts carry ``F``).
     converged : ndarray or bool
-        Every sub-solution converged.
+        Every sub-solution converged (always True in a result: push raises otherwise).
     """
 
     inputs: ClassVar[tuple[str, ...]] = (
@@ -186,8 +187,10 @@ def push(
     ValueError
         For inputs outside their domain, naming the parameter and its range.
     NoEquilibriumError
-        For a load below the pull-off force of steady sliding (the fibre has pulled off),
-        or a tip that lifts the fibre off before it moves.
+        For a load below the pull-off force of steady sliding (the fibre has pulled off).
+    ConvergenceError
+        Where a contact, or the load a tip adds at its threshold, is not solved to
+        round-off (naming the point).
 
     Examples
     --------
@@ -295,14 +298,24 @@ def push(
     Q_onset = 2.0 * a_rest * rho * tau
     settled = np.ones(F.shape, bool)  # the fixed points of a tip converged
     if tip and np.any(k != 0):
-        for _ in range(60):
+        # Q = g(Q) = 2 a(F + k Q) tau0 + dw by secant steps on g(Q) - Q (plain iteration
+        # converges only linearly where the contact is wide: a ~ sqrt(load))
+        Q_prev, f_prev = Q_slide, np.zeros(F.shape)
+        for it in range(60):
             a_slide, F_slide, conv = slide_at(F + k * Q_slide, report=True)
-            Q_new = 2.0 * a_slide * rho * tau + dw  # NaN: the tip lifts the fibre first
-            step = np.abs(np.nan_to_num(Q_new - Q_slide))
-            Q_slide = Q_new
-            if np.all(step <= 1e-14 * np.nan_to_num(Q_new, nan=1.0)):
+            g = 2.0 * a_slide * rho * tau + dw  # NaN: the tip lifts the fibre first
+            f = g - Q_slide
+            with np.errstate(divide="ignore", invalid="ignore"):
+                secant = Q_slide - f * (Q_slide - Q_prev) / (f - f_prev)
+            usable = (it > 0) & np.isfinite(secant) & (secant > 0)
+            Q_next = np.where(usable, secant, g)
+            done = np.abs(np.nan_to_num(f)) <= 1e-14 * np.nan_to_num(np.abs(g), nan=1.0)
+            Q_prev, f_prev = Q_slide, f
+            if np.all(done):
+                Q_slide = g
                 break
-        settled &= step <= 1e-14 * np.nan_to_num(Q_slide, nan=1.0)
+            Q_slide = np.where(done, g, Q_next)
+        settled &= done
         conv |= ~np.isfinite(a_slide)  # a lifted fibre is a state, not a failure
         F_slide = np.where(np.isfinite(a_slide), F_slide - k * Q_slide, F)  # the load given
         for _ in range(60):
@@ -377,6 +390,15 @@ def push(
         # the load's scale: the Hertz load of the contact (its adhesive part is of that order)
         scale = np.abs(F) + (np.pi / 4) * rho * a_slide * a_slide + 1e-300
         res = np.abs(F_slide - F) / scale
+    if not np.all(conv):
+        i = int(np.flatnonzero(~conv)[0])
+        raise ConvergenceError(
+            f"push did not converge at R_over_h2={float(rho[i])!r}, h1_over_h2="
+            f"{float(r[i])!r}, sigma0_over_E={float(s[i])!r}, tau0_over_E={float(tau[i])!r}, "
+            f"F_over_Eh2={float(F[i])!r}, H_over_R={float(H[i])!r}"
+            + ("" if not tip else f", tip_friction={float(mu[i])!r}")
+            + ": a contact or the tip's load could not be solved to round-off"
+        )
     vals = dict(
         H_over_R=H,
         H_arm_over_R=arm,
