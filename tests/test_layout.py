@@ -28,6 +28,7 @@ FLOORS = {
         "linecontact.sliding",
         "linecontact.tangential",
         "linecontact.push",
+        "linecontact.lennard_jones",
     ],
     "si": ["linecontact.cylinder"],
     "shells": ["linecontact.output", "linecontact.cli", "linecontact.figures"],
