@@ -60,6 +60,13 @@ def test_receding_work_of_adhesion_is_the_range_times_sigma0(cyl):
         ({"receding_range": H1, "receding_work_of_adhesion": 0.05}, r"exactly one"),
         ({"receding_range": H1, "height": 2e-7}, r"^height must be in \[0, 1e-07\]"),
         ({"receding_range": H1, "friction_stress": -1.0}, r"^friction_stress must be in"),
+        ({"receding_range": H1, "normal_load": float("nan")}, r"^normal_load must be a finite"),
+        ({"receding_range": H1, "push": -1.0}, r"^push must be in \[0, inf\), got -1.0$"),
+        ({"receding_range": H1, "normal_load": 1e14}, r"^normal_load must be in \[.*\] N/m"),
+        (
+            {"receding_range": H1, "normal_load": 1e9},
+            r"^normal_load=1000000000.0 N/m needs a contact of half-width .* radii: beyond",
+        ),
     ],
 )
 def test_bad_si_input(cyl, kw, message):

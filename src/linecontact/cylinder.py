@@ -796,20 +796,32 @@ def cylinder_push(
     _domain.check_si("friction_stress", tau, E, "tau0_over_E", "Pa")
     H = check_array("height", height, low=0.0, low_inclusive=True, high=2 * R, high_inclusive=True)
     Eh = E * h2
-    F = np.asarray(normal_load, float) / Eh
-    Q = None if push is None else np.asarray(push, float) / Eh
+    # the SI inputs are checked (and named) here, not as the groups they form
+    load = check_array("normal_load", normal_load, low=-np.inf, high=np.inf)
+    _domain.check_si("normal_load", load, Eh, "F_over_Eh2", "N/m")
+    F = load / Eh
+    Q = None
+    if push is not None:
+        Q = check_array("push", push, low=0.0, low_inclusive=True) / Eh
     if length is not None:
         positive("length", length)
-    p = _push.push(
-        R / h2,
-        h1 / h2,
-        cylinder.sigma0_over_E,
-        tau / E,
-        F,
-        np.asarray(H, float) / R,
-        Q,
-        tip_friction=tip_friction,
-    )
+    try:
+        p = _push.push(
+            R / h2,
+            h1 / h2,
+            cylinder.sigma0_over_E,
+            tau / E,
+            F,
+            np.asarray(H, float) / R,
+            Q,
+            tip_friction=tip_friction,
+        )
+    except _domain.TooWideError as e:
+        raise ValueError(
+            f"normal_load={float(np.reshape(np.broadcast_to(load, np.shape(F)), -1)[e.index])!r}"
+            f" N/m needs a contact of half-width {e.a_over_R * R:.6g} m, {e.a_over_R:.6g} "
+            f"radii: {e.limit}"
+        ) from None
 
     def si(v, unit):
         out = np.multiply(v, unit)

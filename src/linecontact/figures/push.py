@@ -129,27 +129,13 @@ def _lateral_force(run: Run):
     q_roll = np.concatenate([hyst / H_roll, [hyst[-1] / H_roll]])
     ax.plot(xs, q_slide, color=c_slide, lw=2, label=f"$H$ = {H_slide:g} R: slides")
     ax.plot(xs, q_roll, color=c_roll, lw=2, label=f"$H$ = {H_roll:g} R: rolls")
-    ax.axhline(
-        float(np.asarray(steady.Q_slide_over_Eh2)[0]),
-        color=c_slide,
-        lw=0.8,
-        ls="--",
-        label=r"$Q_{slide}$",
-    )
-    ax.axhline(
-        float(np.asarray(steady.Q_roll_over_Eh2)[1]),
-        color=c_roll,
-        lw=0.8,
-        ls="--",
-        label=r"$Q_{roll}$",
-    )
-    ax.axhline(
-        float(np.asarray(steady.Q_onset_over_Eh2)[0]),
-        color="0.4",
-        lw=0.8,
-        ls=":",
-        label=r"$Q_{onset} = 2 a_{rest} \tau_0$",
-    )
+    for value, color, ls, label in (
+        (steady.Q_slide_over_Eh2, c_slide, "--", r"$Q_{slide}$"),
+        (steady.Q_roll_over_Eh2, c_roll, "--", r"$Q_{roll}$"),
+        (steady.Q_onset_over_Eh2, "0.4", ":", r"$Q_{onset} = 2 a_{rest} \tau_0$"),
+    ):
+        i_case = 1 if label == r"$Q_{roll}$" else 0  # the rolling case is the second point
+        ax.axhline(float(np.asarray(value)[i_case]), color=color, lw=0.8, ls=ls, label=label)
     ax.set_xlim(0, 1.5)
     ax.set_ylim(0, 1.1 * float(q_slide.max()))
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=9, frameon=False)
