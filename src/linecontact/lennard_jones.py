@@ -1,4 +1,4 @@
-r"""The Lennard-Jones law of Eq. 1 solved self-consistently for line contact (in progress).
+r"""The Lennard-Jones law of Eq. 1 solved self-consistently for line contact.
 
 A cylinder of radius ``R`` on an elastic half-plane (composite plane-strain modulus ``E``),
 the surface traction the Lennard-Jones law (Eq. 1) at the local gap everywhere -- no
@@ -7,50 +7,98 @@ state is controlled by the gap at the centre ``g0``; the gap elsewhere is
 
 .. math::
 
-    z(x) = g_0 + \frac{x^2}{2R} + \frac{2}{\pi E}\int p(s)\,\bigl(\ln|x - s| - \ln|s|\bigr)\,ds,
+    z(x) = g_0 + \frac{x^2}{2R} - \frac{2}{\pi E}\int p(s)\,\bigl(\ln|x - s| - \ln|s|\bigr)\,ds,
 
-the pressure ``p`` (compressive positive) pushing the surfaces together where it acts.
+the pressure ``p`` (compressive positive) pressing the surface in most under the centre.
 With ``x = sqrt(R z0) xi``, ``z = z0 zeta`` and ``p = (w/z0) P(zeta)``,
 ``P(zeta) = -(8/3)(zeta^-3 - zeta^-9)``, the gap is
 
 .. math::
 
     \zeta(\xi) = \zeta_0 + \frac{\xi^2}{2}
-        + \frac{2\mu}{\pi}\int_0^\infty P(\zeta(\eta))\,\ln\frac{|\xi^2 - \eta^2|}{\eta^2}\,d\eta,
+        - \frac{2\mu}{\pi}\int_0^\infty P(\zeta(\eta))\,\ln\frac{|\xi^2 - \eta^2|}{\eta^2}\,d\eta,
     \qquad \mu = \frac{w\sqrt{R/z_0}}{E z_0},
 
 and the load is ``F/(w sqrt(R/z0)) = 2 int_0^inf P d eta``. ``mu`` is the one group of the
 problem (a Tabor parameter for cylinders): ``mu -> 0`` is the rigid limit
-(:func:`linecontact.reference.lennard_jones_rigid_load`). Derivation:
-``docs/lennard-jones.md``.
+(:func:`linecontact.reference.lennard_jones_rigid_load`). With the Maugis matching of the
+Dugdale step (``sigma0 = 16 w/(9 sqrt(3) z0)``, ``h = w/sigma0``) the Maugis parameter of
+line contact (:func:`linecontact.maugis_parameter`) is a function of ``mu`` alone
+(:func:`maugis_parameter_of_mu`). Derivation and mesh study: ``docs/lennard-jones.md``.
 
-Discretisation: ``P`` piecewise linear on a graded mesh of ``[0, L]`` (fine near the
-centre, geometric to ``L = 1000``, where the attraction has decayed like ``xi^-6``), the
-logarithmic kernel integrated exactly on each element (product integration), collocation
-at the nodes, Newton on the gaps.
+Discretisation: ``P`` piecewise linear on a mesh uniform on ``[0, X]`` (the contact and its
+edge zones; ``X`` follows the widest contact asked for) and geometric beyond, to
+``L = 2000`` where the attraction has decayed like ``xi^-6``; the logarithmic kernel is
+integrated exactly on each element (product integration); collocation at the nodes; a
+Newton (chord) iteration on the gaps. Every state is solved on that mesh and on the meshes
+with every second and every fourth node (their kernels follow from the fine one exactly);
+the load returned is the Richardson extrapolation of the two finer loads, and its error
+estimate the change of that extrapolation from the coarser pair.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+import functools
+import math
+from dataclasses import dataclass, field
+from typing import ClassVar
 
 import numpy as np
+import scipy.linalg
 from numpy.typing import NDArray
 
-__all__ = ["LJState", "lj_state"]
+from .errors import ConvergenceError, NoEquilibriumError
+from .results import Result
+
+__all__ = [
+    "LJCurve",
+    "LJPullOff",
+    "LJState",
+    "MAUGIS_MATCH_H_OVER_Z0",
+    "MAUGIS_MATCH_SIGMA0",
+    "lj_contact_for_load",
+    "lj_curve",
+    "lj_pull_off",
+    "lj_state",
+    "maugis_parameter_of_mu",
+    "mu_of_dugdale",
+]
+
+#: Peak tension of the law over ``w/z0``: the Maugis matching of the Dugdale stress.
+MAUGIS_MATCH_SIGMA0 = 16.0 / (9.0 * math.sqrt(3.0))
+#: ``h/z0 = w/(sigma0 z0)`` of the matched Dugdale step (0.974).
+MAUGIS_MATCH_H_OVER_Z0 = 1.0 / MAUGIS_MATCH_SIGMA0
+
+_FAR = 2000.0  # end of the mesh (the attraction there is ~1e-19 of its peak)
+_RATIO = 1.2  # growth of the elements beyond the uniform core
+_M = 320  # elements of the uniform core on the finest mesh (a multiple of 4)
+_START = 6.0  # central gap where a curve starts (the load ~2% of the rigid pull-off)
+_TOL = 1e-11  # Newton: largest residual of the gap equation relative to the gap
 
 
-def _mesh(n: int, core: float = 6.0, far: float = 1000.0) -> NDArray:
-    """Nodes on [0, far]: ``n`` uniform on [0, core], then geometric to ``far``."""
-    inner = np.linspace(0.0, core, n + 1)
-    h = inner[1] - inner[0]
-    ratio = 1.0 + 3.0 / n  # geometric beyond the core, refined with n (tail ~ xi^-6)
-    outer = [core]
-    while outer[-1] < far:
-        step = max(h, (outer[-1] - outer[-2]) * ratio if len(outer) > 1 else h * ratio)
-        outer.append(outer[-1] + step)
-    outer[-1] = far
-    return np.concatenate([inner, np.asarray(outer[1:])])
+def mu_of_dugdale(R_over_h, sigma0_over_E):
+    """The group ``mu`` of the Lennard-Jones law matched to a Dugdale step ``(sigma0, h)``.
+
+    Same work of adhesion ``w = sigma0 h`` and same peak tension: ``z0 = h sigma0_match``.
+    Returns ``(mu, R_over_z0)``.
+    """
+    R_over_z0 = np.asarray(R_over_h, float) / MAUGIS_MATCH_SIGMA0
+    w_over_Ez0 = np.asarray(sigma0_over_E, float) * MAUGIS_MATCH_SIGMA0  # sigma0 h/(E z0)
+    return w_over_Ez0 * np.sqrt(R_over_z0), R_over_z0
+
+
+def maugis_parameter_of_mu(mu):
+    """The Maugis parameter of the matched Dugdale step, as :func:`linecontact.maugis_parameter`.
+
+    That parameter is ``(4/pi^(2/3)) (sigma0/E)^(2/3) (R/h)^(1/3)``; with the matching,
+    ``(sigma0/E)^(2/3) (R/h)^(1/3) = mu^(2/3) / MAUGIS_MATCH_SIGMA0^(1/3)``.
+    """
+    mu = np.asarray(mu, float)
+    return 4.0 / np.pi ** (2.0 / 3.0) * mu ** (2.0 / 3.0) / MAUGIS_MATCH_SIGMA0 ** (1.0 / 3.0)
+
+
+# ---------------------------------------------------------------------------------------
+# the discrete operators
 
 
 def _log_antiderivatives(t: NDArray, c: NDArray) -> tuple[NDArray, NDArray]:
@@ -69,20 +117,75 @@ def _kernel(nodes: NDArray) -> NDArray:
     ``phi_j`` the hat functions of ``nodes``; the kernel is ``ln|xi - eta| + ln|xi + eta| -
     2 ln|eta|``, each term integrated exactly against the linear pieces.
     """
-    xi = nodes[:, None, None]
-    a, b = nodes[:-1][None, :, None], nodes[1:][None, :, None]
+    xi = nodes[:, None]
+    a, b = nodes[None, :-1], nodes[None, 1:]
+    h = b - a
     K = np.zeros((nodes.size, nodes.size))
-    for c, weight in ((xi, 1.0), (-xi, 1.0), (0.0 * xi, -2.0)):
+    for c, weight in ((xi, 1.0), (-xi, 1.0), (np.zeros_like(xi), -2.0)):
         A0b, A1b = _log_antiderivatives(b, c)
         A0a, A1a = _log_antiderivatives(a, c)
-        i0, i1 = (A0b - A0a)[..., 0], (A1b - A1a)[..., 0]  # (nodes, elements)
-        h = (b - a)[..., 0]
-        # phi_left = (b - t)/h, phi_right = (t - a)/h on each element
-        left = (b[..., 0] * i0 - i1) / h
-        right = (i1 - a[..., 0] * i0) / h
-        K[:, :-1] += weight * left
-        K[:, 1:] += weight * right
+        i0, i1 = A0b - A0a, A1b - A1a  # (nodes, elements)
+        K[:, :-1] += weight * (b * i0 - i1) / h  # phi_left = (b - t)/h
+        K[:, 1:] += weight * (i1 - a * i0) / h  # phi_right = (t - a)/h
     return K
+
+
+def _trapezoid(nodes: NDArray) -> NDArray:
+    h = np.diff(nodes)
+    w = np.zeros(nodes.size)
+    w[:-1] += 0.5 * h
+    w[1:] += 0.5 * h
+    return w
+
+
+def _coarsen(nodes: NDArray, K: NDArray) -> tuple[NDArray, NDArray]:
+    """The mesh of every second node and its kernel, exactly, from the fine one.
+
+    A coarse hat function is the fine one at its node plus half its two neighbours, so the
+    coarse kernel is ``K[::2] @ T``; no logarithm is evaluated again.
+    """
+    m = (nodes.size - 1) // 2
+    T = np.zeros((nodes.size, m + 1))
+    j = np.arange(m + 1)
+    T[2 * j, j] = 1.0
+    T[2 * j[1:] - 1, j[1:]] = 0.5
+    T[2 * j[:-1] + 1, j[:-1]] = 0.5
+    return nodes[::2], K[::2] @ T
+
+
+@dataclass(frozen=True)
+class _Mesh:
+    nodes: NDArray
+    K: NDArray
+    w: NDArray
+    core: float
+
+
+@functools.lru_cache(maxsize=8)
+def _meshes(core: float, m: int) -> tuple[_Mesh, _Mesh, _Mesh]:
+    """The fine, middle and coarse meshes for a uniform core ``[0, core]`` (cached).
+
+    The coarse mesh: ``m/4`` equal elements on the core, growing by ``_RATIO`` beyond, to
+    ``_FAR``; the others bisect it once and twice.
+    """
+    hc = 4.0 * core / m
+    inner = np.linspace(0.0, core, m // 4 + 1)
+    outer = [inner[-1]]
+    step = hc
+    while outer[-1] < _FAR:
+        step *= _RATIO
+        outer.append(outer[-1] + step)
+    coarse = np.concatenate([inner, outer[1:]])
+    fine = coarse
+    for _ in range(2):
+        fine = np.sort(np.concatenate([fine, 0.5 * (fine[1:] + fine[:-1])]))
+    K = _kernel(fine)
+    out = [_Mesh(fine, K, _trapezoid(fine), float(inner[-1]))]
+    nodes = fine
+    for _ in range(2):
+        nodes, K = _coarsen(nodes, K)
+        out.append(_Mesh(nodes, K, _trapezoid(nodes), float(inner[-1])))
+    return out[0], out[1], out[2]
 
 
 def _law(zeta: NDArray) -> tuple[NDArray, NDArray]:
@@ -92,109 +195,573 @@ def _law(zeta: NDArray) -> tuple[NDArray, NDArray]:
     return -(8.0 / 3.0) * (z3 - z9), (8.0 / 3.0) * (3.0 * z3 - 9.0 * z9) / zeta
 
 
+#: The last factorised Jacobian per mesh: a chord Newton reuses it from one state to the next
+#: (it only speeds convergence; the residual decides it, so a stale one is never wrong).
+_LU: dict[int, tuple] = {}
+
+
+def _newton(
+    zeta0: float, mu: float, mesh: _Mesh, guess: NDArray, tol: float = _TOL
+) -> tuple[NDArray, float, bool]:
+    """Gaps at the nodes solving the discrete gap equation (chord Newton, refactored).
+
+    The Jacobian is factorised again only when the residual falls by less than a factor 4
+    per step. Returns the gaps, the largest residual relative to the gap and whether it met
+    ``tol``.
+    """
+    nodes, K = mesh.nodes, mesh.K
+    rigid = zeta0 + 0.5 * nodes * nodes
+    zeta = guess.copy()
+    c = 2.0 * mu / math.pi
+    key = id(mesh)
+    cached = _LU.get(key)
+    lu = cached[1] if cached is not None and cached[0] == mu else None
+    res, fresh = math.inf, False
+    for _ in range(60):
+        P, dP = _law(zeta)
+        r = zeta - rigid + c * (K @ P)
+        res_new = float(np.max(np.abs(r) / zeta))
+        if res_new <= tol:
+            return zeta, res_new, True
+        if not np.isfinite(res_new):
+            return zeta, math.inf, False
+        ratio = res_new / res
+        if lu is None or ratio > 0.25:
+            if fresh and ratio >= 1.0:  # a fresh Jacobian did not help: Newton is failing
+                return zeta, res_new, False
+            J = c * K * dP[None, :]
+            J[np.diag_indices_from(J)] += 1.0
+            lu = scipy.linalg.lu_factor(J, check_finite=False)
+            _LU[key] = (mu, lu)
+            fresh = True
+        else:
+            fresh = False
+        res = res_new
+        step = scipy.linalg.lu_solve(lu, r, check_finite=False)
+        lam = 1.0  # the law is singular at contact: keep the gaps positive
+        while np.any(zeta - lam * step <= 0.05 * zeta) and lam > 1e-6:
+            lam *= 0.5
+        zeta = zeta - lam * step
+    return zeta, res, False
+
+
+def _half_width(nodes: NDArray, zeta: NDArray) -> float:
+    """Half-width of the repulsive region: the outermost ``xi`` where the gap crosses ``z0``."""
+    inside = np.nonzero(zeta < 1.0)[0]
+    if inside.size == 0:
+        return 0.0
+    i = int(inside[-1])
+    if i + 1 >= nodes.size:
+        return float(nodes[-1])
+    t = (1.0 - zeta[i]) / (zeta[i + 1] - zeta[i])
+    return float(nodes[i] + t * (nodes[i + 1] - nodes[i]))
+
+
 @dataclass(frozen=True)
-class LJState:
+class _Solved:
+    zeta0: float
+    F: float  # Richardson extrapolation of the two finer loads
+    error: float
+    F_fine: float
+    half_width: float
+    residual: float
+    zeta: NDArray  # on the fine mesh
+    mesh: _Mesh
+
+
+def _solve(
+    zeta0: float, mu: float, grid: tuple[float, int], guess: NDArray | None
+) -> _Solved | None:
+    """One state on the three meshes of ``grid``; ``None`` where Newton fails."""
+    meshes = _meshes(*grid)
+    fine = meshes[0]
+    g = zeta0 + 0.5 * fine.nodes**2 if guess is None else guess
+    zeta, res, ok = _newton(zeta0, mu, fine, g)
+    if not ok:
+        return None
+    return _finish(zeta0, mu, meshes, zeta)
+
+
+def _grid_for(mu: float, F_max: float, m: int | None) -> tuple[float, int]:
+    """The uniform core and its number of fine elements.
+
+    The core holds the contact at ``F_max`` (twice the Hertz half-width plus the edge zones,
+    at least ``[0, 8]``); ``m`` (default :data:`_M`) elements per 8 units of it.
+    """
+    m = _M if m is None else _check_m(m)
+    core = max(8.0, 4.0 + 2.0 * math.sqrt(4.0 * mu * max(F_max, 0.0) / math.pi))
+    return round(core, 6), 4 * math.ceil(m * core / 32.0)
+
+
+# ---------------------------------------------------------------------------------------
+# results
+
+
+@dataclass(frozen=True)
+class LJState(Result):
     """One equilibrium state under the Lennard-Jones law (nondimensional).
+
+    Lengths along the surface over ``sqrt(R z0)``, gaps over ``z0``, pressure over ``w/z0``,
+    the load per unit length over ``w sqrt(R/z0)`` (compressive positive).
 
     Attributes
     ----------
     central_gap_over_z0, mu : float
         The control ``zeta0 = g0/z0`` and the group ``mu``.
-    F_over_w_sqrt_R_over_z0 : float
-        The load per unit length, compressive positive.
-    xi, gap_over_z0, pressure : ndarray
-        The nodes ``x/sqrt(R z0)`` (half line), the gap over ``z0`` and ``p z0/w`` there.
+    F : float
+        The load (Richardson extrapolation of the two finer meshes).
+    error_estimate : float
+        Estimated absolute error of ``F`` (its change from the coarser pair of meshes).
+    half_width : float
+        Half-width of the repulsive region (the gap below ``z0``), 0 where there is none.
     residual : float
         Largest residual of the gap equation at the nodes, relative to the gap there.
     n : int
-        Number of nodes.
+        Nodes of the finest mesh.
     converged : bool
+        Always ``True`` (a state that does not converge raises ``ConvergenceError``).
+    xi, gap_over_z0, pressure : ndarray
+        The nodes (half line), the gap and ``p z0/w`` there (finest mesh).
     """
+
+    inputs: ClassVar[tuple[str, ...]] = ("central_gap_over_z0", "mu")
 
     central_gap_over_z0: float
     mu: float
-    F_over_w_sqrt_R_over_z0: float
-    xi: NDArray
-    gap_over_z0: NDArray
-    pressure: NDArray
+    F: float
+    error_estimate: float
+    half_width: float
     residual: float
+    n: int
+    converged: bool
+    xi: NDArray = field(default_factory=lambda: np.zeros(0), repr=False)
+    gap_over_z0: NDArray = field(default_factory=lambda: np.zeros(0), repr=False)
+    pressure: NDArray = field(default_factory=lambda: np.zeros(0), repr=False)
+
+
+def _state_of(s: _Solved, mu: float) -> LJState:
+    return LJState(
+        central_gap_over_z0=s.zeta0,
+        mu=mu,
+        F=s.F,
+        error_estimate=s.error,
+        half_width=s.half_width,
+        residual=s.residual,
+        n=int(s.mesh.nodes.size),
+        converged=True,
+        xi=s.mesh.nodes,
+        gap_over_z0=s.zeta,
+        pressure=_law(s.zeta)[0],
+    )
+
+
+# ---------------------------------------------------------------------------------------
+# the curve F(g0): continuation in the central gap
+
+
+def _check_mu(mu) -> float:
+    from . import domain as _domain
+
+    return float(_domain.scalar("mu", mu, key="lj_mu"))
+
+
+def _fail(what: str, mu: float, zeta0: float) -> ConvergenceError:
+    return ConvergenceError(
+        f"Lennard-Jones {what} did not converge at mu={mu!r}, central_gap_over_z0={zeta0!r}"
+    )
+
+
+def _first(mu: float, grid: tuple[float, int]) -> _Solved:
+    """The state at ``_START``: Newton from the rigid profile, continued in ``mu`` if need be."""
+    s = _solve(_START, mu, grid, None)
+    if s is not None:
+        return s
+    done, step, guess = 0.0, mu / 8, None
+    while done < mu:
+        nxt = min(mu, done + step)
+        t = _solve(_START, nxt, grid, guess)
+        if t is None:
+            step *= 0.5
+            if step < 1e-9 * mu:
+                raise _fail("curve", mu, _START)
+            continue
+        done, guess, s, step = nxt, t.zeta, t, 2 * step
+    assert s is not None
+    return s
+
+
+def _arc_newton(mu, mesh, zeta, zeta0, anchor, tangent, ds, scales, tol=_TOL):
+    """Corrector of pseudo-arclength continuation in the plane of the central gap and load.
+
+    Unknowns: the gaps and ``zeta0``. Equations: the gap equation and ``tz (zeta0 - z_a)/sz
+    + tF (F - F_a)/sF = ds``, with ``(tz, tF)`` the unit tangent in the scaled plane. The
+    bordered system is solved by block elimination with the (chord) factorisation of the
+    gap equation's Jacobian. Returns ``(zeta, zeta0, ok)``.
+    """
+    nodes, K, w = mesh.nodes, mesh.K, mesh.w
+    z_a, F_a = anchor
+    tz, tF = tangent
+    sz, sF = scales
+    c = 2.0 * mu / math.pi
+    half = 0.5 * nodes * nodes
+    ones = np.ones(nodes.size)
+    key = id(mesh)
+    cached = _LU.get(key)
+    lu = cached[1] if cached is not None and cached[0] == mu else None
+    res, fresh = math.inf, False
+    for _ in range(40):
+        P, dP = _law(zeta)
+        r = zeta - zeta0 - half + c * (K @ P)
+        F = 2.0 * float(w @ P)
+        q = tz * (zeta0 - z_a) / sz + tF * (F - F_a) / sF - ds
+        res_new = max(float(np.max(np.abs(r) / zeta)), abs(q) * 1e-3)
+        if res_new <= tol:
+            return zeta, zeta0, True
+        if not np.isfinite(res_new):
+            return zeta, zeta0, False
+        ratio = res_new / res
+        if lu is None or ratio > 0.25:
+            if fresh and ratio >= 1.0:
+                return zeta, zeta0, False
+            J = c * K * dP[None, :]
+            J[np.diag_indices_from(J)] += 1.0
+            lu = scipy.linalg.lu_factor(J, check_finite=False)
+            _LU[key] = (mu, lu)
+            fresh = True
+        else:
+            fresh = False
+        res = res_new
+        # J dz - dzeta0 = -r ; a.dz + b dzeta0 = -q
+        y1 = scipy.linalg.lu_solve(lu, -r, check_finite=False)
+        y2 = scipy.linalg.lu_solve(lu, ones, check_finite=False)
+        a = (tF / sF) * 2.0 * (w * dP)
+        b = tz / sz
+        d0 = (-q - a @ y1) / (a @ y2 + b)
+        dz = y1 + d0 * y2
+        lam = 1.0
+        while np.any(zeta + lam * dz <= 0.05 * zeta) and lam > 1e-6:
+            lam *= 0.5
+        zeta = zeta + lam * dz
+        zeta0 = zeta0 + lam * d0
+        if zeta0 <= 0.0:
+            return zeta, zeta0, False
+    return zeta, zeta0, False
+
+
+def _march(mu: float, F_stop: float, grid: tuple[float, int]) -> list[_Solved]:
+    """States from ``_START`` along the curve until the load passes ``F_stop`` (> 0).
+
+    Pseudo-arclength continuation in the plane of the central gap (scale 0.1) and the load
+    (scale: the larger of 0.1, the load and the most tensile load met so far), so the curve
+    is followed through turning points in either. A secant predictor; a failed step is
+    halved, and below 1e-9 of the scale it raises ``ConvergenceError``.
+    """
+    meshes = _meshes(*grid)
+    fine = meshes[0]
+    s = _first(mu, grid)
+    out = [s]
+    ds, sz = 0.5, 0.1
+    tangent = (-1.0, 0.0)
+    while not (s.F >= F_stop and s.half_width > 0):
+        sF = max(0.1, abs(s.F), -min(p.F for p in out))
+        if len(out) > 1:
+            prev = out[-2]
+            dzs, dFs = (s.zeta0 - prev.zeta0) / sz, (s.F_fine - prev.F_fine) / sF
+            norm = math.hypot(dzs, dFs)
+            tangent = (dzs / norm, dFs / norm)
+            guess = s.zeta + (s.zeta - prev.zeta) * (ds / norm)
+            g0 = s.zeta0 + (s.zeta0 - prev.zeta0) * (ds / norm)
+            if np.any(guess <= 0.1 * s.zeta) or g0 <= 0.0:
+                guess, g0 = s.zeta, s.zeta0 + tangent[0] * sz * ds
+        else:
+            guess, g0 = s.zeta - sz * ds, s.zeta0 - sz * ds
+        zeta, zeta0, ok = _arc_newton(
+            mu, fine, guess, g0, (s.zeta0, s.F_fine), tangent, ds, (sz, sF)
+        )
+        t = _finish(zeta0, mu, meshes, zeta) if ok else None
+        if t is None:
+            ds *= 0.5
+            if ds < 1e-9:
+                raise _fail("curve", mu, s.zeta0)
+            continue
+        out.append(t)
+        s = t
+        ds = min(0.5, 1.5 * ds)
+    return out
+
+
+def _finish(zeta0: float, mu: float, meshes, zeta: NDArray) -> _Solved | None:
+    """The state from its fine gaps: the two coarser meshes, Richardson and the estimate."""
+    fine = meshes[0]
+    loads = [2.0 * float(fine.w @ _law(zeta)[0])]
+    for k, mesh in enumerate(meshes[1:], start=1):
+        zk, _, okk = _newton(zeta0, mu, mesh, zeta[:: 2**k])
+        if not okk:
+            break
+        loads.append(2.0 * float(mesh.w @ _law(zk)[0]))
+    if len(loads) == 1:  # the middle mesh cannot hold the state: no estimate
+        return None
+    f, m = loads[:2]
+    r_fine = f + (f - m) / 3.0
+    if len(loads) == 3:
+        c = loads[2]
+        error = max(abs(r_fine - (m + (m - c) / 3.0)), 1e-15 * abs(r_fine))
+    else:  # the coarsest mesh cannot hold the state: the whole change of the load
+        error = abs(f - m)
+    P = _law(zeta)[0]
+    rigid = zeta0 + 0.5 * fine.nodes**2
+    res = float(np.max(np.abs(zeta - rigid + (2 * mu / math.pi) * (fine.K @ P)) / zeta))
+    return _Solved(zeta0, r_fine, error, f, _half_width(fine.nodes, zeta), res, zeta, fine)
+
+
+def _refine_extremum(mu, grid, states, i, sign) -> _Solved:
+    """The extremum of ``sign * F`` between states ``i - 1`` and ``i + 1`` (Brent)."""
+    import scipy.optimize
+
+    a, b = states[i + 1], states[i - 1]  # zeta0 decreases along the march
+    cache: dict[float, _Solved] = {}
+
+    def f(z: float) -> float:
+        t = (z - a.zeta0) / (b.zeta0 - a.zeta0)
+        s = _solve(z, mu, grid, a.zeta + t * (b.zeta - a.zeta))
+        if s is None:
+            raise _Unsolved
+        cache[z] = s
+        return sign * s.F
+
+    try:
+        scipy.optimize.minimize_scalar(
+            f, bounds=(a.zeta0, b.zeta0), method="bounded", options={"xatol": 1e-9}
+        )
+    except _Unsolved:  # a gap between the samples the meshes cannot hold: keep the samples
+        pass
+    best = min([states[i], *cache.values()], key=lambda s: sign * s.F)
+    return best
+
+
+class _Unsolved(Exception):
+    """A state between two samples of the curve that Newton did not solve."""
+
+
+@dataclass(frozen=True)
+class LJCurve(Result):
+    """The load curve ``F(g0)`` under the Lennard-Jones law (nondimensional, as :class:`LJState`).
+
+    Columns (one per point, the central gap decreasing): ``central_gap_over_z0``, ``F``,
+    ``error_estimate``, ``half_width``, ``stable`` (under load control: ``dF/dg0 < 0``) and
+    ``turning`` (the extrema of the load: pull-off and, where the curve is S-shaped, the
+    jump-in load and the local minimum before it). ``pull_off`` holds the pull-off point.
+    """
+
+    inputs: ClassVar[tuple[str, ...]] = ("mu",)
+
+    central_gap_over_z0: NDArray
+    F: NDArray
+    error_estimate: NDArray
+    half_width: NDArray
+    stable: NDArray
+    turning: NDArray
+    mu: float
+    pull_off: LJPullOff = field(repr=False)
+
+
+@dataclass(frozen=True)
+class LJPullOff(Result):
+    """Pull-off under the Lennard-Jones law (nondimensional, as :class:`LJState`).
+
+    Attributes
+    ----------
+    mu : float
+    F_pulloff, central_gap_at_pulloff, half_width_at_pulloff, error_estimate : float
+        The most tensile load of the curve (jump-out under load control), where it occurs,
+        and the estimated error of the load.
+    F_jump_in, central_gap_at_jump_in : float
+        The local maximum of the load where the curve is S-shaped (under load control a
+        loosely held fibre snaps into contact there); ``nan`` where the load has one minimum.
+    maugis_parameter : float
+        Of the Dugdale step with the Maugis matching (:func:`maugis_parameter_of_mu`).
+    n : int
+        Nodes of the finest mesh.
+    converged : bool
+    """
+
+    inputs: ClassVar[tuple[str, ...]] = ("mu",)
+
+    mu: float
+    F_pulloff: float
+    central_gap_at_pulloff: float
+    half_width_at_pulloff: float
+    error_estimate: float
+    F_jump_in: float
+    central_gap_at_jump_in: float
+    maugis_parameter: float
     n: int
     converged: bool
 
 
-_CACHE: dict[int, tuple[NDArray, NDArray, NDArray]] = {}
+def _extrema(mu, grid, states) -> tuple[_Solved, _Solved | None, list[int]]:
+    """Pull-off (global minimum) and jump-in (a local maximum, if any) of the marched curve."""
+    F = np.array([s.F for s in states])
+    idx_min = [i for i in range(1, F.size - 1) if F[i] <= F[i - 1] and F[i] < F[i + 1]]
+    idx_max = [i for i in range(1, F.size - 1) if F[i] >= F[i - 1] and F[i] > F[i + 1]]
+    if not idx_min:
+        raise _fail("pull-off search (no minimum of the load)", mu, states[-1].zeta0)
+    i_po = min(idx_min, key=lambda i: F[i])
+    po = _refine_extremum(mu, grid, states, i_po, 1.0)
+    jump = None
+    before = [i for i in idx_max if i < i_po]
+    if before:  # the last maximum before the pull-off branch: the snap into contact
+        jump = _refine_extremum(mu, grid, states, before[-1], -1.0)
+    return po, jump, sorted(idx_min + idx_max)
 
 
-def _operators(n: int) -> tuple[NDArray, NDArray, NDArray]:
-    """Nodes, kernel matrix and trapezoid weights for ``n`` core elements (cached)."""
-    if n not in _CACHE:
-        nodes = _mesh(n)
-        h = np.diff(nodes)
-        wts = np.zeros(nodes.size)
-        wts[:-1] += 0.5 * h
-        wts[1:] += 0.5 * h
-        _CACHE[n] = (nodes, _kernel(nodes), wts)
-    return _CACHE[n]
+def _pull_off_of(mu, grid, po, jump) -> LJPullOff:
+    return LJPullOff(
+        mu=mu,
+        F_pulloff=po.F,
+        central_gap_at_pulloff=po.zeta0,
+        half_width_at_pulloff=po.half_width,
+        error_estimate=po.error,
+        F_jump_in=math.nan if jump is None else jump.F,
+        central_gap_at_jump_in=math.nan if jump is None else jump.zeta0,
+        maugis_parameter=float(maugis_parameter_of_mu(mu)),
+        n=int(po.mesh.nodes.size),
+        converged=True,
+    )
 
 
-def lj_state(
-    central_gap_over_z0: float,
-    mu: float,
-    *,
-    n: int = 120,
-    guess: NDArray | None = None,
-    tol: float = 1e-12,
-) -> LJState:
-    """The equilibrium state at the central gap ``zeta0`` for the group ``mu``.
+#: Default end of a curve: three times the rigid cylinder's pull-off, compressive.
+F_MAX_DEFAULT = 7.5
 
-    Newton on the gaps at the nodes. Without ``guess`` (the gaps of a nearby state) it
-    starts from the rigid profile at ``mu = 0`` and continues in ``mu`` up to the value
-    asked (steps that double after a success and halve after a failure). Raises
-    ``ValueError`` for ``zeta0 <= 0`` or ``mu < 0``.
+
+def lj_curve(mu: float, *, F_max: float | None = None, m: int | None = None) -> LJCurve:
+    """The load curve ``F(g0)`` from far away through its turning points to ``F_max``.
+
+    Parameters
+    ----------
+    mu : float
+        ``w sqrt(R/z0)/(E z0)``, ``>= 0`` (0: rigid).
+    F_max : float, optional
+        Compressive load where the curve ends (over ``w sqrt(R/z0)``), default
+        :data:`F_MAX_DEFAULT`.
+    m : int
+        Elements of the uniform core on the finest mesh (multiple of 4).
     """
-    if not (np.isfinite(central_gap_over_z0) and central_gap_over_z0 > 0):
-        raise ValueError(f"central_gap_over_z0 must be > 0, got {central_gap_over_z0!r}")
-    if not (np.isfinite(mu) and mu >= 0):
-        raise ValueError(f"mu must be a finite number >= 0, got {mu!r}")
-    if guess is not None:
-        return _newton(central_gap_over_z0, mu, n, np.asarray(guess, float), tol)
-    state = _newton(central_gap_over_z0, 0.0, n, None, tol)
-    done, step = 0.0, min(mu, 0.1)
-    while done < mu and step > 1e-6 * max(mu, 1.0):
-        nxt = min(mu, done + step)
-        trial = _newton(central_gap_over_z0, nxt, n, state.gap_over_z0, tol)
-        if trial.converged:
-            state, done, step = trial, nxt, 2.0 * step
-        else:
-            step *= 0.5
-    return state
+    mu = _check_mu(mu)
+    F_max = F_MAX_DEFAULT if F_max is None else float(F_max)
+    if not (np.isfinite(F_max) and F_max > 0):
+        raise ValueError(f"F_max must be a finite load > 0, got {F_max!r}")
+    grid = _grid_for(mu, F_max, m)
+    states = _march(mu, F_max, grid)
+    po, jump, turns = _extrema(mu, grid, states)
+    z = np.array([s.zeta0 for s in states])
+    F = np.array([s.F for s in states])
+    dF = np.gradient(F, z)
+    turning = np.zeros(z.size, bool)
+    turning[turns] = True
+    return LJCurve(
+        central_gap_over_z0=z,
+        F=F,
+        error_estimate=np.array([s.error for s in states]),
+        half_width=np.array([s.half_width for s in states]),
+        stable=dF < 0,
+        turning=turning,
+        mu=mu,
+        pull_off=_pull_off_of(mu, grid, po, jump),
+    )
 
 
-def _newton(
-    central_gap_over_z0: float, mu: float, n: int, guess: NDArray | None, tol: float
-) -> LJState:
-    max_iter = 40
-    nodes, K, wts = _operators(n)
-    rigid = central_gap_over_z0 + 0.5 * nodes * nodes
-    zeta = rigid.copy() if guess is None else np.asarray(guess, float).copy()
-    c = 2.0 * mu / np.pi
-    eye = np.eye(nodes.size)
-    res = np.inf
-    ok = False
-    for _ in range(max_iter):
-        P, dP = _law(zeta)
-        r = zeta - rigid - c * (K @ P)
-        res = float(np.max(np.abs(r) / zeta))  # relative: far out the gap is ~xi^2/2
-        if res <= tol:
-            ok = True
-            break
-        J = eye - c * K * dP[None, :]
-        step = np.linalg.solve(J, r)
-        # keep the gaps positive (the law is singular at contact): damp a step that would not
-        lam = 1.0
-        while np.any(zeta - lam * step <= 0.05 * zeta) and lam > 1e-6:
-            lam *= 0.5
-        zeta = zeta - lam * step
-    P, _ = _law(zeta)
-    F = 2.0 * float(wts @ P)
-    return LJState(central_gap_over_z0, mu, F, nodes, zeta, P, res, nodes.size, ok)
+def _check_m(m) -> int:
+    if not isinstance(m, (int, np.integer)) or m < 16 or m % 4:
+        raise ValueError(f"m must be an integer >= 16 and a multiple of 4, got {m!r}")
+    return int(m)
+
+
+def lj_pull_off(mu: float, *, m: int | None = None) -> LJPullOff:
+    """The pull-off force (the most tensile load of :func:`lj_curve`) and the jump-in load."""
+    mu = _check_mu(mu)
+    grid = _grid_for(mu, 0.0, m)
+    states = _march(mu, 1e-3, grid)
+    po, jump, _ = _extrema(mu, grid, states)
+    return _pull_off_of(mu, grid, po, jump)
+
+
+def lj_state(central_gap_over_z0: float, mu: float, *, m: int | None = None) -> LJState:
+    """The equilibrium state at the central gap ``zeta0`` (continued from far away)."""
+    from . import domain as _domain
+
+    z = float(_domain.scalar("central_gap_over_z0", central_gap_over_z0))
+    mu = _check_mu(mu)
+    grid = _grid_for(mu, 0.0, m)
+    s = _first(mu, grid)
+    if z >= _START:
+        t = _solve(z, mu, grid, s.zeta)
+        if t is None:
+            raise _fail("state", mu, z)
+        return _state_of(t, mu)
+    return _state_of(_march_to(mu, grid, s, z), mu)
+
+
+def _march_to(mu, grid, s: _Solved, z: float) -> _Solved:
+    """Continue from ``s`` down to the central gap ``z`` (steps as in :func:`_march`)."""
+    dz = 0.1
+    prev = None
+    while s.zeta0 > z:
+        step = min(dz, s.zeta0 - z)
+        guess = s.zeta
+        if prev is not None:
+            guess = s.zeta + (s.zeta - prev.zeta) * (step / (prev.zeta0 - s.zeta0))
+            if np.any(guess <= 0.1 * s.zeta):
+                guess = s.zeta
+        t = _solve(s.zeta0 - step if step < s.zeta0 - z else z, mu, grid, guess)
+        if t is None or abs(t.F - s.F) > 0.2 * max(abs(s.F), 0.1):
+            dz = 0.5 * step
+            if dz < 1e-12:
+                raise _fail("state", mu, s.zeta0)
+            continue
+        prev, s = s, t
+        dz = min(0.1, 2 * step)
+    return s
+
+
+def lj_contact_for_load(F: float, mu: float, *, m: int | None = None) -> LJState:
+    """The state on the stable contact branch (beyond the pull-off) carrying the load ``F``.
+
+    Raises :class:`~linecontact.errors.NoEquilibriumError` for a load below the pull-off.
+    """
+    import scipy.optimize
+
+    F = float(F)
+    if not np.isfinite(F):
+        raise ValueError(f"F must be finite, got {F!r}")
+    mu = _check_mu(mu)
+    grid = _grid_for(mu, max(F, 0.0), m)
+    states = _march(mu, max(F, 1e-3), grid)
+    po, _, _ = _extrema(mu, grid, states)
+    if F < po.F:
+        raise NoEquilibriumError(
+            f"no equilibrium: the load F={F!r} is below the pull-off force {po.F!r} "
+            f"(mu={mu!r}); the contact has already pulled off"
+        )
+    branch = [s for s in states if s.zeta0 < po.zeta0]
+    branch.insert(0, po)
+    k = next(i for i in range(1, len(branch)) if branch[i].F >= F)
+    a, b = branch[k], branch[k - 1]
+    if F == a.F:
+        return _state_of(a, mu)
+    cache: dict[float, _Solved] = {}
+
+    def g(z: float) -> float:
+        t = (z - a.zeta0) / (b.zeta0 - a.zeta0)
+        s = _solve(z, mu, grid, a.zeta + t * (b.zeta - a.zeta))
+        if s is None:  # the samples are far apart: continue from the upper one
+            s = _march_to(mu, grid, b, z)
+        cache[z] = s
+        return s.F - F
+
+    if F == b.F:
+        return _state_of(b, mu)
+    z = scipy.optimize.brentq(g, a.zeta0, b.zeta0, xtol=1e-14, rtol=1e-13)
+    if z not in cache:
+        g(z)
+    return _state_of(cache[z], mu)
