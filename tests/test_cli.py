@@ -441,3 +441,54 @@ def test_length_needs_si_inputs(capsys, argv):
     code, out, err = run(capsys, *argv, "--length", "5e-6")
     assert code == 2 and out == "" and err.count("\n") == 1
     assert "--length [m] gives the totals of SI forces" in err
+
+
+def test_pulloff_law_lennard_jones_si_json():
+    import json
+    import subprocess
+    import sys
+
+    out = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "linecontact",
+            "pulloff",
+            "--radius",
+            "50e-9",
+            "--modulus",
+            "10e9",
+            "--work-of-adhesion",
+            "0.05",
+            "--z0",
+            "0.3e-9",
+            "--law",
+            "lennard-jones",
+            "--json",
+        ],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    doc = json.loads(out.stdout)
+    (rec,) = doc["results"]
+    assert doc["parameters"]["law"] == "lennard-jones"
+    assert rec["F_pulloff_N_per_m"] < 0 and rec["error_estimate_over_Eh"] > 0
+    bad = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "linecontact",
+            "pulloff",
+            "--R-over-h",
+            "100",
+            "--sigma0-over-E",
+            "0.5",
+            "--law",
+            "lennard-jones",
+        ],
+        capture_output=True,
+        text=True,
+    )
+    assert bad.returncode == 2 and bad.stderr.count("error:") == 1
+    assert "Traceback" not in bad.stderr and "mu" in bad.stderr

@@ -106,7 +106,7 @@ def test_contact_for_load_round_trip(curve_1):
 def test_pull_off_between_jkr_and_dugdale():
     # JKR line contact: F = -(3/4)(pi/mu)^(1/3) w sqrt(R/z0), which diverges as mu -> 0
     # (at mu = 0.1 it is already more tensile than the rigid limit); at mu = 0.3 and 1
-    # (Maugis parameter 0.62 and 1.39) the full law pulls harder than JKR: the JKR limit
+    # (Maugis parameter 0.83 and 1.85) the full law pulls harder than JKR: the JKR limit
     # lies at larger mu, beyond the validated domain so far
     for mu in (0.1, 0.3, 1.0):
         po = lj_pull_off(mu)
@@ -154,3 +154,27 @@ def test_convergence_error_names_the_point(monkeypatch):
     monkeypatch.setattr(lj, "_arc_newton", lambda *a, **k: (a[2], a[3], False))
     with pytest.raises(ConvergenceError, match=r"mu=0\.5"):
         lj_pull_off(0.5)
+
+
+def test_pull_off_law_lennard_jones_in_dugdale_groups():
+    from linecontact.lennard_jones import LennardJonesPullOff
+
+    R_over_h, s = 100.0, 0.05
+    p = pull_off(R_over_h, s, law="lennard-jones")
+    assert isinstance(p, LennardJonesPullOff) and p.law == "lennard-jones"
+    mu, R_over_z0 = mu_of_dugdale(R_over_h, s)
+    native = lj_pull_off(float(mu))
+    assert p.F_pulloff_over_Eh == pytest.approx(native.F_pulloff * s * math.sqrt(R_over_z0))
+    assert p.central_gap_over_h_at_pulloff == pytest.approx(
+        native.central_gap_at_pulloff * MAUGIS_MATCH_SIGMA0
+    )
+    # Dugdale with the same w and peak tension pulls harder
+    assert pull_off(R_over_h, s).F_pulloff_over_Eh < p.F_pulloff_over_Eh < 0
+    arr = pull_off([R_over_h, 1000.0], s / 3, law="lennard-jones")
+    assert arr.F_pulloff_over_Eh.shape == (2,)
+    with pytest.raises(ValueError, match="mu"):
+        pull_off(100.0, 0.5, law="lennard-jones")
+    with pytest.raises(ValueError, match="sigma0_over_E must be > 0"):
+        pull_off(100.0, 0.0, law="lennard-jones")
+    with pytest.raises(ValueError, match="law must be"):
+        pull_off(100.0, 0.01, law="lj")

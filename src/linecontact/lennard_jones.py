@@ -52,6 +52,7 @@ from .results import Result
 
 __all__ = [
     "LJCurve",
+    "LennardJonesPullOff",
     "LJPullOff",
     "LJState",
     "MAUGIS_MATCH_H_OVER_Z0",
@@ -62,6 +63,7 @@ __all__ = [
     "lj_state",
     "maugis_parameter_of_mu",
     "mu_of_dugdale",
+    "pull_off_in_dugdale_groups",
 ]
 
 #: Peak tension of the law over ``w/z0``: the Maugis matching of the Dugdale stress.
@@ -765,3 +767,109 @@ def lj_contact_for_load(F: float, mu: float, *, m: int | None = None) -> LJState
     if z not in cache:
         g(z)
     return _state_of(cache[z], mu)
+
+
+# ---------------------------------------------------------------------------------------
+# in the groups of the Dugdale problem (the law="lennard-jones" of linecontact.pull_off)
+
+
+@dataclass(frozen=True)
+class LennardJonesPullOff(Result):
+    """Pull-off under the Lennard-Jones law, in the groups of the Maugis-Dugdale problem.
+
+    The law has the work of adhesion ``w = sigma0 h`` of the Dugdale step and its peak
+    tension ``sigma0`` (the Maugis matching: ``z0 = h / 0.974``). Loads over ``E h``, widths
+    over ``R``, gaps over ``h``: the same units as :class:`linecontact.PullOff`.
+
+    Attributes
+    ----------
+    F_pulloff_over_Eh, error_estimate_over_Eh : float or ndarray
+        The pull-off force (the most tensile load) and its estimated error.
+    a_over_R_at_pulloff : float or ndarray
+        Half-width of the repulsive region there (0: the pull-off precedes it).
+    central_gap_over_h_at_pulloff : float or ndarray
+    F_jump_in_over_Eh : float or ndarray
+        The jump-in load where the curve is S-shaped, else ``nan``.
+    mu, maugis_parameter : float or ndarray
+        The group ``w sqrt(R/z0)/(E z0)`` and the Maugis parameter of the step.
+    law : str
+        ``"lennard-jones"``.
+    n : int
+        Nodes of the finest mesh.
+    converged : bool or ndarray
+    """
+
+    inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E")
+
+    F_pulloff_over_Eh: NDArray | float
+    a_over_R_at_pulloff: NDArray | float
+    central_gap_over_h_at_pulloff: NDArray | float
+    F_jump_in_over_Eh: NDArray | float
+    error_estimate_over_Eh: NDArray | float
+    mu: NDArray | float
+    maugis_parameter: NDArray | float
+    R_over_h: NDArray | float
+    sigma0_over_E: NDArray | float
+    law: str
+    n: NDArray | int
+    converged: NDArray | bool
+
+
+def pull_off_in_dugdale_groups(R_over_h, sigma0_over_E) -> LennardJonesPullOff:
+    """:func:`lj_pull_off` at Dugdale groups (validated arrays of one shape, or scalars)."""
+    from .results import as_output
+
+    rho = np.asarray(R_over_h, float)
+    s = np.asarray(sigma0_over_E, float)
+    scalar = rho.ndim == 0 and s.ndim == 0
+    rho, s = np.broadcast_arrays(rho, s)
+    if np.any(s <= 0):
+        raise ValueError(
+            "sigma0_over_E must be > 0 for the Lennard-Jones law (it sets the work of "
+            f"adhesion w = sigma0 h), got {float(s[s <= 0].flat[0])!r}"
+        )
+    mu, R_over_z0 = mu_of_dugdale(rho, s)
+    hi = _DOMAIN_MU_HIGH()
+    if np.any(mu > hi):
+        k = int(np.argmax(mu > hi))
+        raise ValueError(
+            f"the Lennard-Jones law is solved for mu = (sigma0/E) sqrt(R/h) * "
+            f"{MAUGIS_MATCH_SIGMA0**0.5:.4f} in [0, {hi:g}] (Maugis parameter up to "
+            f"{float(maugis_parameter_of_mu(hi)):.3g}); R_over_h={float(rho.flat[k])!r}, "
+            f"sigma0_over_E={float(s.flat[k])!r} give mu={float(mu.flat[k]):.6g}"
+        )
+    out = {k: np.empty(rho.shape) for k in ("F", "a", "g", "J", "e")}
+    n = np.empty(rho.shape, int)
+    for i in np.ndindex(rho.shape):
+        po = lj_pull_off(float(mu[i]))
+        scale = s[i] * math.sqrt(R_over_z0[i])  # w sqrt(R/z0)/(E h)
+        out["F"][i] = po.F_pulloff * scale
+        out["e"][i] = po.error_estimate * scale
+        out["J"][i] = po.F_jump_in * scale
+        out["a"][i] = po.half_width_at_pulloff / math.sqrt(R_over_z0[i])
+        out["g"][i] = po.central_gap_at_pulloff * MAUGIS_MATCH_SIGMA0  # z0/h
+        n[i] = po.n
+
+    def o(v):
+        return as_output(v, scalar)
+
+    return LennardJonesPullOff(
+        F_pulloff_over_Eh=o(out["F"]),
+        a_over_R_at_pulloff=o(out["a"]),
+        central_gap_over_h_at_pulloff=o(out["g"]),
+        F_jump_in_over_Eh=o(out["J"]),
+        error_estimate_over_Eh=o(out["e"]),
+        mu=o(mu),
+        maugis_parameter=o(maugis_parameter_of_mu(mu)),
+        R_over_h=o(rho),
+        sigma0_over_E=o(s),
+        law="lennard-jones",
+        n=o(n),
+        converged=o(np.ones(rho.shape, bool)),
+    )
+
+
+def _DOMAIN_MU_HIGH() -> float:  # noqa: N802
+    from .domain import DOMAIN
+
+    return DOMAIN["lj_mu"][2]

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 import functools
 from dataclasses import dataclass, field
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -620,7 +620,7 @@ def _pulloff_flat(rho: NDArray, s: NDArray):
     )
 
 
-def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
+def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugdale") -> Any:
     r"""Pull-off force under load control, vectorised over parameter points.
 
     The load along the contact branch has exactly one stationary point, a minimum, for every
@@ -639,10 +639,15 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
         ``> 0``.
     sigma0_over_E : array_like
         ``>= 0`` (0: Hertz, pull-off force 0 at zero width).
+    law : {"dugdale", "lennard-jones"}
+        The Dugdale step (default), or the Lennard-Jones law of Eq. (1) with the same work
+        of adhesion ``sigma0 h`` and peak tension ``sigma0``, solved self-consistently
+        (:mod:`linecontact.lennard_jones`; ``sigma0_over_E > 0``, and ``mu = 0.974^(-1/2)
+        (sigma0/E) sqrt(R/h)`` at most 1).
 
     Returns
     -------
-    PullOff
+    PullOff or linecontact.lennard_jones.LennardJonesPullOff
 
     Examples
     --------
@@ -655,10 +660,18 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     >>> po.mechanism, round(po.a_over_R_at_pulloff, 4)
     ('snap-off', 0.0869)
     """
+    if law not in ("dugdale", "lennard-jones"):
+        raise ValueError(f"law must be 'dugdale' or 'lennard-jones', got {law!r}")
     rho = _domain.check("R_over_h", R_over_h)
     s = _domain.check("sigma0_over_E", sigma0_over_E)
     scalar = scalar_or_array(rho, s)
     rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
+    if law == "lennard-jones":
+        from .lennard_jones import pull_off_in_dugdale_groups
+
+        return pull_off_in_dugdale_groups(
+            rho.reshape(()) if scalar else rho, s.reshape(()) if scalar else s
+        )
     _ref._check_kappa(rho, s)
     d = _pulloff_arrays(rho, s, scalar)
     del d["us"], d["phi_min"]

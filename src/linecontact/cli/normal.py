@@ -154,8 +154,47 @@ def _normal_table(args, r: NormalContact, rho, s, cyl, state, reason, given) -> 
 # pulloff
 
 
+def _cmd_pulloff_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinder | None) -> int:
+    p = pull_off(rho, s, law="lennard-jones")
+    params = _parameters(args, rho, s, cyl)
+    params.pop("kappa")
+    params["law"] = "lennard-jones"
+    extra: dict[str, Any] = {}
+    show = [
+        "F_pulloff_over_Eh",
+        "error_estimate_over_Eh",
+        "central_gap_over_h_at_pulloff",
+        "F_jump_in_over_Eh",
+        "mu",
+    ]
+    if cyl is not None:
+        Eh = cyl.modulus * cyl.adhesion_range
+        extra.update(
+            F_pulloff_N_per_m=p.F_pulloff_over_Eh * Eh,
+            a_at_pulloff_m=p.a_over_R_at_pulloff * cyl.radius,
+            central_gap_at_pulloff_m=p.central_gap_over_h_at_pulloff * cyl.adhesion_range,
+        )
+        show += ["F_pulloff_N_per_m"]
+        if args.length is not None:
+            extra["F_pulloff_total_N"] = p.F_pulloff_over_Eh * Eh * args.length
+            show.append("F_pulloff_total_N")
+    table = table_from_result(
+        p,
+        columns=extra,
+        parameters=params,
+        command=command_line(args),
+        title="pull-off under the Lennard-Jones law (matched to the Dugdale step: same w, "
+        "same peak tension)",
+        show=show,
+    )
+    emit(args, table)
+    return 0
+
+
 def _cmd_pulloff(args: argparse.Namespace) -> int:
     rho, s, cyl = groups(args)
+    if args.law == "lennard-jones":
+        return _cmd_pulloff_lj(args, rho, s, cyl)
     p = pull_off(rho, s)
     params = _parameters(args, rho, s, cyl)
     params.pop("kappa")
@@ -289,9 +328,19 @@ def register(sub: Any) -> None:
             "linecontact pulloff --R-over-h 100 --sigma0-over-E 0.01",
             "linecontact pulloff --radius 50e-9 --E1 70e9 --nu1 0.17 --E2 160e9 --nu2 0.22 "
             "--work-of-adhesion 0.1 --z0 0.3e-9 --length 5e-6 --json",
+            "linecontact pulloff --radius 50e-9 --modulus 10e9 --work-of-adhesion 0.05 "
+            "--z0 0.3e-9 --law lennard-jones --json",
         ],
     )
     add_groups(po)
+    po.add_argument(
+        "--law",
+        choices=("dugdale", "lennard-jones"),
+        default="dugdale",
+        help="surface law: the Dugdale step (default) or the Lennard-Jones law of Eq 1 with "
+        "the same work of adhesion and peak tension, solved self-consistently "
+        "(mu = (sigma0/E) sqrt(R/h)/0.974^0.5 at most 1)",
+    )
     add_output_options(po)
     po.set_defaults(func=_cmd_pulloff)
 
