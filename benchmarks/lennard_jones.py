@@ -11,8 +11,9 @@ Prints (loads over ``w sqrt(R/z0)``, compressive positive)
    against the finest mesh, the nodes and the time;
 3. the rigid limit mu = 0 against the closed forms of ``linecontact.reference``;
 4. the pull-off against Maugis-Dugdale with the Maugis matching (same work of adhesion and
-   peak tension), for mu = 0.01 ... 3, with the JKR line-contact value for reference, and
-   whether the ratio depends on R/h.
+   peak tension) and against the JKR line-contact pull-off -(3/4)(4 pi/mu)^(1/3) (the limit
+   of large mu), for mu = 0.01 ... 10 (to 3 with ``--quick``), and whether the Dugdale
+   ratio depends on R/h.
 """
 
 from __future__ import annotations
@@ -102,39 +103,40 @@ def rigid() -> None:
 def md_pull_off(mu: float, R_over_h: float) -> tuple[float, float, str]:
     """The matched Maugis-Dugdale pull-off over ``w sqrt(R/z0)``, the recovered ``mu`` and
     the mechanism."""
-    s = mu / (MAUGIS_MATCH_SIGMA0 * math.sqrt(R_over_h / MAUGIS_MATCH_SIGMA0))
+    s = mu * MAUGIS_MATCH_SIGMA0**1.5 / math.sqrt(R_over_h)
     mu_back, R_over_z0 = mu_of_dugdale(R_over_h, s)
     po = lc.pull_off(R_over_h, s)
     F = float(po.F_pulloff_over_Eh / (s * np.sqrt(R_over_z0)))
     return F, float(mu_back), str(po.mechanism)
 
 
-def maugis_dugdale() -> None:
+def maugis_dugdale(quick: bool) -> None:
     R_over_h = 1e4
     print(f"4. pull-off against Maugis-Dugdale, Maugis matching, R/h = {R_over_h:g}")
-    print("   (F_jkr = -0.75 (pi/mu)^(1/3): the JKR line-contact pull-off, for reference)")
+    print("   (F_jkr = -0.75 (4 pi/mu)^(1/3): the JKR line-contact pull-off)")
     print(
         f"  {'mu':>5} {'lambda':>7} {'F_lj':>10} {'err est':>9} {'F_md':>10} "
-        f"{'F_md/F_lj-1':>11} {'F_jkr':>10} {'mu back - mu':>12} {'MD mechanism':>12} {'s':>5}"
+        f"{'F_md/F_lj-1':>11} {'F_jkr':>10} {'F_lj/F_jkr-1':>12} {'mu back - mu':>12} "
+        f"{'MD mechanism':>12} {'s':>5}"
     )
     F_lj = {}
-    for mu in (0.01, 0.1, 0.3, 1.0, 3.0):
+    for mu in (0.01, 0.1, 0.3, 1.0, 3.0) + (() if quick else (10.0,)):
         F_md, mu_back, mech = md_pull_off(mu, R_over_h)
-        jkr = -0.75 * (math.pi / mu) ** (1 / 3)
+        jkr = -0.75 * (4 * math.pi / mu) ** (1 / 3)
         lam = float(maugis_parameter_of_mu(mu))
         try:
             t, p = timed(lambda mu=mu: lj_pull_off(mu))
         except ValueError as e:  # mu outside the solver's domain
             print(
-                f"  {mu:5.2f} {lam:7.4f} {'-':>10} {'-':>9} {F_md:10.6f} {'-':>11} {jkr:10.6f} "
-                f"{mu_back - mu:12.1e} {mech:>12}   ({e})"
+                f"  {mu:5.2f} {lam:7.4f} {'-':>10} {'-':>9} {F_md:10.6f} {'-':>11} "
+                f"{jkr:10.6f} {'-':>12} {mu_back - mu:12.1e} {mech:>12}   ({e})"
             )
             continue
         F_lj[mu] = p.F_pulloff
         print(
             f"  {mu:5.2f} {lam:7.4f} {p.F_pulloff:10.6f} {p.error_estimate:9.2e} {F_md:10.6f} "
-            f"{F_md / p.F_pulloff - 1:11.4%} {jkr:10.6f} {mu_back - mu:12.1e} {mech:>12} "
-            f"{t:5.1f}"
+            f"{F_md / p.F_pulloff - 1:11.4%} {jkr:10.6f} {p.F_pulloff / jkr - 1:12.4%} "
+            f"{mu_back - mu:12.1e} {mech:>12} {t:5.1f}"
         )
     mu = 0.3
     F_ref = md_pull_off(mu, R_over_h)[0]
@@ -158,7 +160,7 @@ def main() -> None:
     curves()
     refinement(args.quick)
     rigid()
-    maugis_dugdale()
+    maugis_dugdale(args.quick)
     print(f"total {time.perf_counter() - t0:.1f} s")
 
 

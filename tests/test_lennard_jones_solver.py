@@ -103,23 +103,59 @@ def test_contact_for_load_round_trip(curve_1):
         lj_contact_for_load(-2.0, 1.0)
 
 
+def _jkr(mu: float) -> float:
+    # JKR line contact F = pi E a^2/(4R) - sqrt(2 pi E w a): its minimum over a is
+    # -(3/4) pi^(1/3) (E R)^(1/3) (2w)^(2/3) = -(3/4)(4 pi/mu)^(1/3) w sqrt(R/z0)
+    return -0.75 * (4 * math.pi / mu) ** (1 / 3)
+
+
+def _md(mu: float, R_over_h: float = 1e4) -> float:
+    """The matched Maugis-Dugdale pull-off over w sqrt(R/z0) (the Dugdale solver)."""
+    s = mu * MAUGIS_MATCH_SIGMA0**1.5 / math.sqrt(R_over_h)
+    m, R_over_z0 = mu_of_dugdale(R_over_h, s)
+    assert m == pytest.approx(mu, rel=1e-12)
+    return float(pull_off(R_over_h, s).F_pulloff_over_Eh / (s * math.sqrt(R_over_z0)))
+
+
+def test_mu_of_dugdale_from_the_matching():
+    # w = sigma0 h and sigma0 = S w/z0 (the law's peak tension): z0 = S h, and
+    # mu = w sqrt(R/z0)/(E z0) = (sigma0/E) sqrt(R/h) S^(-3/2), written out here
+    S = 16 / (9 * math.sqrt(3))
+    for R_over_h, s in ((1e4, 0.003), (10.0, 0.2), (1e6, 1e-5)):
+        w_over_Eh, z0_over_h = s, S
+        mu = w_over_Eh / z0_over_h * math.sqrt(R_over_h / z0_over_h)
+        m, R_over_z0 = mu_of_dugdale(R_over_h, s)
+        assert m == pytest.approx(mu, rel=1e-13)
+        assert R_over_z0 == pytest.approx(R_over_h / z0_over_h, rel=1e-13)
+
+
+def test_matched_dugdale_reaches_jkr():
+    # independent of the Lennard-Jones solver: the Dugdale solver, mapped to the native
+    # groups by the matching, tends to the JKR pull-off at large mu (a check of the map)
+    errs = [abs(_md(mu, 1e6) / _jkr(mu) - 1) for mu in (1.0, 10.0, 100.0)]
+    assert errs[0] > errs[1] > errs[2] and errs[2] < 1e-6
+
+
 def test_pull_off_between_jkr_and_dugdale():
-    # JKR line contact: F = -(3/4)(pi/mu)^(1/3) w sqrt(R/z0), which diverges as mu -> 0
-    # (at mu = 0.1 it is already more tensile than the rigid limit); at mu = 0.3 and 1
-    # (Maugis parameter 0.83 and 1.85) the full law pulls harder than JKR: the JKR limit
-    # lies at larger mu, beyond the validated domain so far
+    # for mu <= 1 (Maugis parameter <= 1.96) JKR pulls hardest, the matched Dugdale step
+    # next, the full law least (16 % below Dugdale in the rigid limit)
     for mu in (0.1, 0.3, 1.0):
         po = lj_pull_off(mu)
-        jkr = -0.75 * (math.pi / mu) ** (1 / 3)
-        if mu > 0.1:
-            assert po.F_pulloff < jkr
-        # Maugis-Dugdale with the Maugis matching pulls harder (16% in the rigid limit)
-        R_over_h = 1e4
-        s = mu / (MAUGIS_MATCH_SIGMA0 * math.sqrt(R_over_h / MAUGIS_MATCH_SIGMA0))
-        m, R_over_z0 = mu_of_dugdale(R_over_h, s)
-        assert m == pytest.approx(mu, rel=1e-12)
-        md = pull_off(R_over_h, s).F_pulloff_over_Eh / (s * math.sqrt(R_over_z0))
-        assert md < po.F_pulloff
+        assert _jkr(mu) < _md(mu) < po.F_pulloff < 0
+
+
+@pytest.mark.slow
+def test_jkr_limit():
+    # the full law tends to JKR as mu grows (the edge zone ~1/mu shrinks against the contact
+    # ~mu^(1/3)): the relative difference falls by more than 3 for each factor 3 in mu
+    # (0.19, 0.060, 0.017 at mu = 0.3, 1, 3; 0.0041 at mu = 10, docs/lennard-jones.md)
+    errs = []
+    for mu in (0.3, 1.0, 3.0):
+        po = lj_pull_off(mu)
+        errs.append(abs(po.F_pulloff / _jkr(mu) - 1))
+        assert po.error_estimate < 1e-5 * abs(po.F_pulloff)
+    assert errs[0] > 3 * errs[1] > 9 * errs[2]
+    assert errs[2] < 0.02
 
 
 def test_maugis_parameter_of_mu():
@@ -136,7 +172,7 @@ def test_maugis_parameter_of_mu():
         (lambda: lj_state(0.0, 1.0), "central_gap_over_z0"),
         (lambda: lj_state(float("nan"), 1.0), "central_gap_over_z0"),
         (lambda: lj_state(1.0, -1.0), "mu"),
-        (lambda: lj_state(1.0, 1.5), "mu"),
+        (lambda: lj_state(1.0, 11.0), "mu"),
         (lambda: lj_pull_off(float("inf")), "mu"),
         (lambda: lj_curve(1.0, F_max=-1.0), "F_max"),
         (lambda: lj_curve(1.0, m=30), "m must be"),
@@ -173,7 +209,7 @@ def test_pull_off_law_lennard_jones_in_dugdale_groups():
     arr = pull_off([R_over_h, 1000.0], s / 3, law="lennard-jones")
     assert arr.F_pulloff_over_Eh.shape == (2,)
     with pytest.raises(ValueError, match="mu"):
-        pull_off(100.0, 0.5, law="lennard-jones")
+        pull_off(100.0, 2.0, law="lennard-jones")
     with pytest.raises(ValueError, match="sigma0_over_E must be > 0"):
         pull_off(100.0, 0.0, law="lennard-jones")
     with pytest.raises(ValueError, match="law must be"):

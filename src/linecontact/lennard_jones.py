@@ -72,31 +72,36 @@ MAUGIS_MATCH_SIGMA0 = 16.0 / (9.0 * math.sqrt(3.0))
 MAUGIS_MATCH_H_OVER_Z0 = 1.0 / MAUGIS_MATCH_SIGMA0
 
 _FAR = 2000.0  # end of the mesh (the attraction there is ~1e-19 of its peak)
-_RATIO = 1.2  # growth of the elements beyond the uniform core
-_M = 320  # elements of the uniform core on the finest mesh (a multiple of 4)
+_RATIO = 1.2  # growth of the coarse elements beyond the uniform band
+_M = 320  # fine elements per 8 edge lengths in the band (a multiple of 4)
+_BAND = 8.0  # half-width of the uniform band about the edge, in edge lengths
+_EDGE_GAP = 1.5  # the gap over z0 that marks the edge the band follows
+_HMAX = 0.1  # largest coarse element inside the contact at m = _M (scales with 1/m)
 _START = 6.0  # central gap where a curve starts (the load ~2% of the rigid pull-off)
 _TOL = 1e-11  # Newton: largest residual of the gap equation relative to the gap
+_CHORD = 0.25  # a chord step is kept while the residual falls at least by this factor
 
 
 def mu_of_dugdale(R_over_h, sigma0_over_E):
     """The group ``mu`` of the Lennard-Jones law matched to a Dugdale step ``(sigma0, h)``.
 
-    Same work of adhesion ``w = sigma0 h`` and same peak tension: ``z0 = h sigma0_match``.
-    Returns ``(mu, R_over_z0)``.
+    Same work of adhesion ``w = sigma0 h`` and same peak tension ``sigma0 = S w/z0``
+    (``S`` = :data:`MAUGIS_MATCH_SIGMA0`), so ``z0 = S h`` and ``w/(E z0) = (sigma0/E)/S``:
+    ``mu = (sigma0/E) sqrt(R/h) S^(-3/2)``. Returns ``(mu, R_over_z0)``.
     """
     R_over_z0 = np.asarray(R_over_h, float) / MAUGIS_MATCH_SIGMA0
-    w_over_Ez0 = np.asarray(sigma0_over_E, float) * MAUGIS_MATCH_SIGMA0  # sigma0 h/(E z0)
+    w_over_Ez0 = np.asarray(sigma0_over_E, float) / MAUGIS_MATCH_SIGMA0  # sigma0 h/(E z0)
     return w_over_Ez0 * np.sqrt(R_over_z0), R_over_z0
 
 
 def maugis_parameter_of_mu(mu):
     """The Maugis parameter of the matched Dugdale step, as :func:`linecontact.maugis_parameter`.
 
-    That parameter is ``(4/pi^(2/3)) (sigma0/E)^(2/3) (R/h)^(1/3)``; with the matching,
-    ``(sigma0/E)^(2/3) (R/h)^(1/3) = mu^(2/3) / MAUGIS_MATCH_SIGMA0^(1/3)``.
+    That parameter is ``(4/pi^(2/3)) (sigma0/E)^(2/3) (R/h)^(1/3)``; with the matching
+    (:func:`mu_of_dugdale`), ``(sigma0/E)^(2/3) (R/h)^(1/3) = S mu^(2/3)``.
     """
     mu = np.asarray(mu, float)
-    return 4.0 / np.pi ** (2.0 / 3.0) * mu ** (2.0 / 3.0) / MAUGIS_MATCH_SIGMA0 ** (1.0 / 3.0)
+    return 4.0 / np.pi ** (2.0 / 3.0) * MAUGIS_MATCH_SIGMA0 * mu ** (2.0 / 3.0)
 
 
 # ---------------------------------------------------------------------------------------
@@ -155,39 +160,88 @@ def _coarsen(nodes: NDArray, K: NDArray) -> tuple[NDArray, NDArray]:
     return nodes[::2], K[::2] @ T
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class _Mesh:
     nodes: NDArray
     K: NDArray
     w: NDArray
-    core: float
+    spec: tuple[float, float, float, float]
+    #: the last factorised Jacobian ``(mu, lu)``: a chord Newton reuses it from one state
+    #: to the next (it only speeds convergence; the residual decides, so a stale one is
+    #: never wrong)
+    lu: dict = field(default_factory=dict, repr=False)
 
 
-@functools.lru_cache(maxsize=8)
-def _meshes(core: float, m: int) -> tuple[_Mesh, _Mesh, _Mesh]:
-    """The fine, middle and coarse meshes for a uniform core ``[0, core]`` (cached).
+def _graded_nodes(lo: float, hi: float, hb: float, hmax: float) -> NDArray:
+    """The coarse mesh: uniform elements ``hb`` on ``[lo, hi]``, graded on both sides.
 
-    The coarse mesh: ``m/4`` equal elements on the core, growing by ``_RATIO`` beyond, to
-    ``_FAR``; the others bisect it once and twice.
+    Towards the centre the elements grow by :data:`_RATIO` up to ``hmax`` and are scaled to
+    end at 0; beyond ``hi`` they grow by :data:`_RATIO` to :data:`_FAR`.
     """
-    hc = 4.0 * core / m
-    inner = np.linspace(0.0, core, m // 4 + 1)
-    outer = [inner[-1]]
-    step = hc
+    band = np.linspace(lo, hi, max(1, round((hi - lo) / hb)) + 1)
+    parts = []
+    if lo > 0.0:
+        sizes, d, s = [], 0.0, hb
+        while d < lo:
+            s = min(s * _RATIO, max(hmax, hb))
+            sizes.append(s)
+            d += s
+        inner = lo - np.cumsum(np.array(sizes) * (lo / d))
+        inner[-1] = 0.0
+        parts.append(inner[::-1])
+    outer = [hi]
+    step = hb
     while outer[-1] < _FAR:
         step *= _RATIO
         outer.append(outer[-1] + step)
-    coarse = np.concatenate([inner, outer[1:]])
-    fine = coarse
+    parts += [band, np.array(outer[1:])]
+    return np.concatenate(parts)
+
+
+@functools.lru_cache(maxsize=4)
+def _meshes(spec: tuple[float, float, float, float]) -> tuple[_Mesh, _Mesh, _Mesh]:
+    """The fine, middle and coarse meshes of ``spec = (lo, hi, hb, hmax)`` (cached).
+
+    The coarse mesh is :func:`_graded_nodes`; the others bisect it once and twice. The
+    kernel is computed on the fine mesh and derived exactly for the coarser ones.
+    """
+    fine = _graded_nodes(*spec)
     for _ in range(2):
         fine = np.sort(np.concatenate([fine, 0.5 * (fine[1:] + fine[:-1])]))
     K = _kernel(fine)
-    out = [_Mesh(fine, K, _trapezoid(fine), float(inner[-1]))]
+    out = [_Mesh(fine, K, _trapezoid(fine), spec)]
     nodes = fine
     for _ in range(2):
         nodes, K = _coarsen(nodes, K)
-        out.append(_Mesh(nodes, K, _trapezoid(nodes), float(inner[-1])))
+        out.append(_Mesh(nodes, K, _trapezoid(nodes), spec))
     return out[0], out[1], out[2]
+
+
+@dataclass(frozen=True)
+class _Grid:
+    """The family of meshes of one solve: the band follows the edge of the contact.
+
+    ``ell`` is the length of the edge zone (``1`` for ``mu <= 1``, ``1/mu`` beyond: the
+    gap rises from ``z0`` to a few ``z0`` over about ``1/mu`` outside a JKR-like edge);
+    the band is ``[e - 8 ell, e + 8 ell]`` about the edge ``e`` (from 0 while ``e`` is
+    small) with coarse elements ``hb``; a state whose edge comes within ``4 ell`` of the
+    band's end is solved again on a band about it.
+    """
+
+    ell: float
+    hb: float
+    hmax: float
+
+    def spec(self, e: float) -> tuple[float, float, float, float]:
+        c = self.ell * round(e / self.ell)
+        lo = c - _BAND * self.ell
+        lo = 0.0 if lo < 2.0 * self.ell else lo
+        return (round(lo, 12), round(c + _BAND * self.ell, 12), self.hb, self.hmax)
+
+    def holds(self, spec: tuple[float, ...], e: float) -> bool:
+        lo, hi = spec[0], spec[1]
+        half = 0.5 * _BAND * self.ell
+        return (lo == 0.0 or e - half >= lo) and e + half <= hi
 
 
 def _law(zeta: NDArray) -> tuple[NDArray, NDArray]:
@@ -197,11 +251,6 @@ def _law(zeta: NDArray) -> tuple[NDArray, NDArray]:
     return -(8.0 / 3.0) * (z3 - z9), (8.0 / 3.0) * (3.0 * z3 - 9.0 * z9) / zeta
 
 
-#: The last factorised Jacobian per mesh: a chord Newton reuses it from one state to the next
-#: (it only speeds convergence; the residual decides it, so a stale one is never wrong).
-_LU: dict[int, tuple] = {}
-
-
 def _chord(lu, fresh: bool, ratio: float, mu: float, mesh: _Mesh, dP: NDArray):
     """The chord step's factorisation: kept while the residual falls by 4 per step.
 
@@ -209,14 +258,15 @@ def _chord(lu, fresh: bool, ratio: float, mu: float, mesh: _Mesh, dP: NDArray):
     Returns ``(lu, fresh, failing)``; failing when a fresh Jacobian did not lower the
     residual.
     """
-    if lu is not None and ratio <= 0.25:
+    if lu is not None and ratio <= _CHORD:
         return lu, False, False
     if fresh and ratio >= 1.0:
         return lu, fresh, True
     J = (2.0 * mu / math.pi) * mesh.K * dP[None, :]
     J[np.diag_indices_from(J)] += 1.0
     lu = scipy.linalg.lu_factor(J, check_finite=False)
-    _LU[id(mesh)] = (mu, lu)
+    mesh.lu.clear()
+    mesh.lu[mu] = lu
     return lu, True, False
 
 
@@ -233,9 +283,7 @@ def _newton(
     rigid = zeta0 + 0.5 * nodes * nodes
     zeta = guess.copy()
     c = 2.0 * mu / math.pi
-    key = id(mesh)
-    cached = _LU.get(key)
-    lu = cached[1] if cached is not None and cached[0] == mu else None
+    lu = mesh.lu.get(mu)
     res, fresh = math.inf, False
     for _ in range(60):
         P, dP = _law(zeta)
@@ -257,15 +305,18 @@ def _newton(
     return zeta, res, False
 
 
-def _half_width(nodes: NDArray, zeta: NDArray) -> float:
-    """Half-width of the repulsive region: the outermost ``xi`` where the gap crosses ``z0``."""
-    inside = np.nonzero(zeta < 1.0)[0]
+def _half_width(nodes: NDArray, zeta: NDArray, level: float = 1.0) -> float:
+    """Half-width of the repulsive region: the outermost ``xi`` where the gap crosses ``z0``.
+
+    (Or where it crosses ``level z0``: the edge the meshes follow, :func:`_follow`.)
+    """
+    inside = np.nonzero(zeta < level)[0]
     if inside.size == 0:
         return 0.0
     i = int(inside[-1])
     if i + 1 >= nodes.size:
         return float(nodes[-1])
-    t = (1.0 - zeta[i]) / (zeta[i + 1] - zeta[i])
+    t = (level - zeta[i]) / (zeta[i + 1] - zeta[i])
     return float(nodes[i] + t * (nodes[i + 1] - nodes[i]))
 
 
@@ -282,10 +333,10 @@ class _Solved:
 
 
 def _solve(
-    zeta0: float, mu: float, grid: tuple[float, int], guess: NDArray | None
+    zeta0: float, mu: float, spec: tuple[float, float, float, float], guess: NDArray | None
 ) -> _Solved | None:
-    """One state on the three meshes of ``grid``; ``None`` where Newton fails."""
-    meshes = _meshes(*grid)
+    """One state on the three meshes of ``spec``; ``None`` where Newton fails."""
+    meshes = _meshes(spec)
     fine = meshes[0]
     g = zeta0 + 0.5 * fine.nodes**2 if guess is None else guess
     zeta, res, ok = _newton(zeta0, mu, fine, g)
@@ -294,15 +345,37 @@ def _solve(
     return _finish(zeta0, mu, meshes, zeta)
 
 
-def _grid_for(mu: float, F_max: float, m: int | None) -> tuple[float, int]:
-    """The uniform core and its number of fine elements.
+def _grid_for(mu: float, m: int | None) -> _Grid:
+    """The meshes of a solve at ``mu``.
 
-    The core holds the contact at ``F_max`` (twice the Hertz half-width plus the edge zones,
-    at least ``[0, 8]``); ``m`` (default :data:`_M`) elements per 8 units of it.
+    ``m`` (default :data:`_M`) fine elements per 8 edge lengths in the band; the coarse
+    elements inside the contact at most ``_HMAX _M/m``.
     """
     m = _M if m is None else _check_m(m)
-    core = max(8.0, 4.0 + 2.0 * math.sqrt(4.0 * mu * max(F_max, 0.0) / math.pi))
-    return round(core, 6), 4 * math.ceil(m * core / 32.0)
+    ell = 1.0 if mu <= 1.0 else 1.0 / mu
+    return _Grid(ell, 32.0 * ell / m, _HMAX * _M / m)
+
+
+def _on(s: _Solved, mesh: _Mesh) -> NDArray:
+    """The gaps of ``s`` at the nodes of ``mesh`` (interpolated where the meshes differ)."""
+    if s.mesh is mesh:
+        return s.zeta
+    return np.interp(mesh.nodes, s.mesh.nodes, s.zeta)
+
+
+def _follow(mu: float, grid: _Grid, s: _Solved) -> _Solved:
+    """``s``, solved again on a band about its edge where it has left its own band.
+
+    The edge: where the gap crosses :data:`_EDGE_GAP` ``z0`` (it rises from ``z0`` to there
+    within a few edge lengths outside a contact, and it follows the flat zone that forms
+    before one).
+    """
+    e = _half_width(s.mesh.nodes, s.zeta, _EDGE_GAP)
+    if grid.holds(s.mesh.spec, e):
+        return s
+    spec = grid.spec(e)
+    t = _solve(s.zeta0, mu, spec, _on(s, _meshes(spec)[0]))
+    return s if t is None else t
 
 
 # ---------------------------------------------------------------------------------------
@@ -383,15 +456,16 @@ def _fail(what: str, mu: float, zeta0: float) -> ConvergenceError:
     )
 
 
-def _first(mu: float, grid: tuple[float, int]) -> _Solved:
+def _first(mu: float, grid: _Grid) -> _Solved:
     """The state at ``_START``: Newton from the rigid profile, continued in ``mu`` if need be."""
-    s = _solve(_START, mu, grid, None)
+    spec = grid.spec(0.0)
+    s = _solve(_START, mu, spec, None)
     if s is not None:
         return s
     done, step, guess = 0.0, mu / 8, None
     while done < mu:
         nxt = min(mu, done + step)
-        t = _solve(_START, nxt, grid, guess)
+        t = _solve(_START, nxt, spec, guess)
         if t is None:
             step *= 0.5
             if step < 1e-9 * mu:
@@ -402,30 +476,30 @@ def _first(mu: float, grid: tuple[float, int]) -> _Solved:
     return s
 
 
-def _arc_newton(mu, mesh, zeta, zeta0, anchor, tangent, ds, scales, tol=_TOL):
-    """Corrector of pseudo-arclength continuation in the plane of the central gap and load.
+def _arc_newton(mu, mesh, zeta, zeta0, anchor, tangent, ds, scales, v, tol=_TOL):
+    """Corrector of pseudo-arclength continuation in the central gap, the load and the profile.
 
     Unknowns: the gaps and ``zeta0``. Equations: the gap equation and ``tz (zeta0 - z_a)/sz
-    + tF (F - F_a)/sF = ds``, with ``(tz, tF)`` the unit tangent in the scaled plane. The
-    bordered system is solved by block elimination with the (chord) factorisation of the
-    gap equation's Jacobian. Returns ``(zeta, zeta0, ok)``.
+    + tF (F - F_a)/sF + sum_i v_i tv_i (ln zeta_i - ln zeta_a,i) = ds``, with ``(tz, tF,
+    tv)`` the unit tangent in that metric (weights ``v``). The bordered system is solved by
+    block elimination with the (chord) factorisation of the gap equation's Jacobian.
+    Returns ``(zeta, zeta0, ok)``.
     """
     nodes, K, w = mesh.nodes, mesh.K, mesh.w
-    z_a, F_a = anchor
-    tz, tF = tangent
+    z_a, F_a, l_a = anchor
+    tz, tF, tv = tangent
     sz, sF = scales
+    vt = v * tv
     c = 2.0 * mu / math.pi
     half = 0.5 * nodes * nodes
     ones = np.ones(nodes.size)
-    key = id(mesh)
-    cached = _LU.get(key)
-    lu = cached[1] if cached is not None and cached[0] == mu else None
+    lu = mesh.lu.get(mu)
     res, fresh = math.inf, False
     for _ in range(40):
         P, dP = _law(zeta)
         r = zeta - zeta0 - half + c * (K @ P)
         F = 2.0 * float(w @ P)
-        q = tz * (zeta0 - z_a) / sz + tF * (F - F_a) / sF - ds
+        q = tz * (zeta0 - z_a) / sz + tF * (F - F_a) / sF + vt @ (np.log(zeta) - l_a) - ds
         res_new = max(float(np.max(np.abs(r) / zeta)), abs(q) * 1e-3)
         if res_new <= tol:
             return zeta, zeta0, True
@@ -438,7 +512,7 @@ def _arc_newton(mu, mesh, zeta, zeta0, anchor, tangent, ds, scales, tol=_TOL):
         # J dz - dzeta0 = -r ; a.dz + b dzeta0 = -q
         y1 = scipy.linalg.lu_solve(lu, -r, check_finite=False)
         y2 = scipy.linalg.lu_solve(lu, ones, check_finite=False)
-        a = (tF / sF) * 2.0 * (w * dP)
+        a = (tF / sF) * 2.0 * (w * dP) + vt / zeta
         b = tz / sz
         d0 = (-q - a @ y1) / (a @ y2 + b)
         dz = y1 + d0 * y2
@@ -452,42 +526,50 @@ def _arc_newton(mu, mesh, zeta, zeta0, anchor, tangent, ds, scales, tol=_TOL):
     return zeta, zeta0, False
 
 
-def _march(mu: float, F_stop: float, grid: tuple[float, int]) -> list[_Solved]:
+def _march(mu: float, F_stop: float, grid: _Grid) -> list[_Solved]:
     """States from ``_START`` along the curve until the load passes ``F_stop`` (> 0).
 
-    Pseudo-arclength continuation in the plane of the central gap (scale 0.1) and the load
-    (scale: the larger of 0.1, the load and the most tensile load met so far), so the curve
-    is followed through turning points in either. A secant predictor; a failed step is
-    halved, and below 1e-9 of the scale it raises ``ConvergenceError``.
+    Pseudo-arclength continuation in the central gap (scale 0.1), the load (scale: the
+    larger of 0.1, the load and the most tensile load met so far) and the profile (``ln
+    zeta`` in the L2 norm over the edge length, so a step moves the edge by about half an
+    edge length at most: near the pull-off of a compliant contact the edge travels far
+    while the load and the central gap hardly change). The curve is followed through
+    turning points in either. A secant predictor; a failed step is halved, and below 1e-9
+    it raises ``ConvergenceError``. The band of the meshes follows the edge
+    (:func:`_follow`).
     """
-    meshes = _meshes(*grid)
-    fine = meshes[0]
     s = _first(mu, grid)
     out = [s]
     ds, sz = 0.5, 0.1
-    tangent = (-1.0, 0.0)
     while not (s.F >= F_stop and s.half_width > 0):
         sF = max(0.1, abs(s.F), -min(p.F for p in out))
+        fine = s.mesh
+        v = fine.w / grid.ell
+        ls = np.log(s.zeta)
         if len(out) > 1:
             prev = out[-2]
+            zp = _on(prev, fine)
             dzs, dFs = (s.zeta0 - prev.zeta0) / sz, (s.F_fine - prev.F_fine) / sF
-            norm = math.hypot(dzs, dFs)
-            tangent = (dzs / norm, dFs / norm)
-            guess = s.zeta + (s.zeta - prev.zeta) * (ds / norm)
+            dls = ls - np.log(zp)
+            norm = math.sqrt(dzs * dzs + dFs * dFs + float(v @ (dls * dls)))
+            tangent = (dzs / norm, dFs / norm, dls / norm)
+            guess = s.zeta + (s.zeta - zp) * (ds / norm)
             g0 = s.zeta0 + (s.zeta0 - prev.zeta0) * (ds / norm)
             if np.any(guess <= 0.1 * s.zeta) or g0 <= 0.0:
                 guess, g0 = s.zeta, s.zeta0 + tangent[0] * sz * ds
         else:
+            tangent = (-1.0, 0.0, np.zeros(fine.nodes.size))
             guess, g0 = s.zeta - sz * ds, s.zeta0 - sz * ds
         zeta, zeta0, ok = _arc_newton(
-            mu, fine, guess, g0, (s.zeta0, s.F_fine), tangent, ds, (sz, sF)
+            mu, fine, guess, g0, (s.zeta0, s.F_fine, ls), tangent, ds, (sz, sF), v
         )
-        t = _finish(zeta0, mu, meshes, zeta) if ok else None
+        t = _finish(zeta0, mu, _meshes(fine.spec), zeta) if ok else None
         if t is None:
             ds *= 0.5
             if ds < 1e-9:
                 raise _fail("curve", mu, s.zeta0)
             continue
+        t = _follow(mu, grid, t)
         out.append(t)
         s = t
         ds = min(0.5, 1.5 * ds)
@@ -519,28 +601,38 @@ def _finish(zeta0: float, mu: float, meshes, zeta: NDArray) -> _Solved | None:
 
 
 def _refine_extremum(mu, grid, states, i, sign) -> _Solved:
-    """The extremum of ``sign * F`` between states ``i - 1`` and ``i + 1`` (Brent)."""
+    """The extremum of ``sign * F`` between states ``i - 1`` and ``i + 1`` (Brent).
+
+    Each trial state is continued from the nearest state solved so far (Newton, or where
+    that fails steps in the central gap, :func:`_march_to`).
+    """
     import scipy.optimize
 
     a, b = states[i + 1], states[i - 1]  # zeta0 decreases along the march
-    cache: dict[float, _Solved] = {}
+    known = [a, states[i], b]
+    cache: list[_Solved] = []
 
     def f(z: float) -> float:
-        t = (z - a.zeta0) / (b.zeta0 - a.zeta0)
-        s = _solve(z, mu, grid, a.zeta + t * (b.zeta - a.zeta))
+        near = min(known, key=lambda s: abs(s.zeta0 - z))
+        s = _solve(z, mu, near.mesh.spec, near.zeta)
         if s is None:
-            raise _Unsolved
-        cache[z] = s
+            try:
+                s = _march_to(mu, grid, near, z) if near.zeta0 > z else None
+            except ConvergenceError:
+                s = None
+            if s is None or s.zeta0 != z:
+                raise _Unsolved
+        known.append(s)
+        cache.append(s)
         return sign * s.F
 
     try:
         scipy.optimize.minimize_scalar(
             f, bounds=(a.zeta0, b.zeta0), method="bounded", options={"xatol": 1e-9}
         )
-    except _Unsolved:  # a gap between the samples the meshes cannot hold: keep the samples
+    except _Unsolved:  # a state between the samples the meshes cannot hold: keep the best
         pass
-    best = min([states[i], *cache.values()], key=lambda s: sign * s.F)
-    return best
+    return min([states[i], *cache], key=lambda s: sign * s.F)
 
 
 class _Unsolved(Exception):
@@ -619,7 +711,7 @@ def _extrema(mu, grid, states) -> tuple[_Solved, _Solved | None, list[int]]:
     return po, jump, sorted(idx_min + idx_max)
 
 
-def _pull_off_of(mu, grid, po, jump) -> LJPullOff:
+def _pull_off_of(mu, po, jump) -> LJPullOff:
     return LJPullOff(
         mu=mu,
         F_pulloff=po.F,
@@ -655,7 +747,7 @@ def lj_curve(mu: float, *, F_max: float | None = None, m: int | None = None) -> 
     F_max = F_MAX_DEFAULT if F_max is None else float(F_max)
     if not (np.isfinite(F_max) and F_max > 0):
         raise ValueError(f"F_max must be a finite load > 0, got {F_max!r}")
-    grid = _grid_for(mu, F_max, m)
+    grid = _grid_for(mu, m)
     states = _march(mu, F_max, grid)
     po, jump, turns = _extrema(mu, grid, states)
     z = np.array([s.zeta0 for s in states])
@@ -671,7 +763,7 @@ def lj_curve(mu: float, *, F_max: float | None = None, m: int | None = None) -> 
         stable=dF < 0,
         turning=turning,
         mu=mu,
-        pull_off=_pull_off_of(mu, grid, po, jump),
+        pull_off=_pull_off_of(mu, po, jump),
     )
 
 
@@ -684,10 +776,10 @@ def _check_m(m) -> int:
 def lj_pull_off(mu: float, *, m: int | None = None) -> LJPullOff:
     """The pull-off force (the most tensile load of :func:`lj_curve`) and the jump-in load."""
     mu = _check_mu(mu)
-    grid = _grid_for(mu, 0.0, m)
+    grid = _grid_for(mu, m)
     states = _march(mu, 1e-3, grid)
     po, jump, _ = _extrema(mu, grid, states)
-    return _pull_off_of(mu, grid, po, jump)
+    return _pull_off_of(mu, po, jump)
 
 
 def lj_state(central_gap_over_z0: float, mu: float, *, m: int | None = None) -> LJState:
@@ -696,17 +788,17 @@ def lj_state(central_gap_over_z0: float, mu: float, *, m: int | None = None) -> 
 
     z = float(_domain.scalar("central_gap_over_z0", central_gap_over_z0))
     mu = _check_mu(mu)
-    grid = _grid_for(mu, 0.0, m)
+    grid = _grid_for(mu, m)
     s = _first(mu, grid)
     if z >= _START:
-        t = _solve(z, mu, grid, s.zeta)
+        t = _solve(z, mu, s.mesh.spec, s.zeta)
         if t is None:
             raise _fail("state", mu, z)
         return _state_of(t, mu)
     return _state_of(_march_to(mu, grid, s, z), mu)
 
 
-def _march_to(mu, grid, s: _Solved, z: float) -> _Solved:
+def _march_to(mu, grid: _Grid, s: _Solved, z: float) -> _Solved:
     """Continue from ``s`` down to the central gap ``z`` (steps as in :func:`_march`)."""
     dz = 0.1
     prev = None
@@ -714,16 +806,16 @@ def _march_to(mu, grid, s: _Solved, z: float) -> _Solved:
         step = min(dz, s.zeta0 - z)
         guess = s.zeta
         if prev is not None:
-            guess = s.zeta + (s.zeta - prev.zeta) * (step / (prev.zeta0 - s.zeta0))
+            guess = s.zeta + (s.zeta - _on(prev, s.mesh)) * (step / (prev.zeta0 - s.zeta0))
             if np.any(guess <= 0.1 * s.zeta):
                 guess = s.zeta
-        t = _solve(s.zeta0 - step if step < s.zeta0 - z else z, mu, grid, guess)
+        t = _solve(s.zeta0 - step if step < s.zeta0 - z else z, mu, s.mesh.spec, guess)
         if t is None or abs(t.F - s.F) > 0.2 * max(abs(s.F), 0.1):
             dz = 0.5 * step
             if dz < 1e-12:
                 raise _fail("state", mu, s.zeta0)
             continue
-        prev, s = s, t
+        prev, s = s, _follow(mu, grid, t)
         dz = min(0.1, 2 * step)
     return s
 
@@ -739,7 +831,7 @@ def lj_contact_for_load(F: float, mu: float, *, m: int | None = None) -> LJState
     if not np.isfinite(F):
         raise ValueError(f"F must be finite, got {F!r}")
     mu = _check_mu(mu)
-    grid = _grid_for(mu, max(F, 0.0), m)
+    grid = _grid_for(mu, m)
     states = _march(mu, max(F, 1e-3), grid)
     po, _, _ = _extrema(mu, grid, states)
     if F < po.F:
@@ -757,7 +849,7 @@ def lj_contact_for_load(F: float, mu: float, *, m: int | None = None) -> LJState
 
     def g(z: float) -> float:
         t = (z - a.zeta0) / (b.zeta0 - a.zeta0)
-        s = _solve(z, mu, grid, a.zeta + t * (b.zeta - a.zeta))
+        s = _solve(z, mu, b.mesh.spec, _on(a, b.mesh) + t * (b.zeta - _on(a, b.mesh)))
         if s is None:  # the samples are far apart: continue from the upper one
             s = _march_to(mu, grid, b, z)
         cache[z] = s
@@ -836,7 +928,7 @@ def pull_off_in_dugdale_groups(R_over_h, sigma0_over_E) -> LennardJonesPullOff:
         k = int(np.argmax(mu > hi))
         raise ValueError(
             f"the Lennard-Jones law is solved for mu = (sigma0/E) sqrt(R/h) * "
-            f"{MAUGIS_MATCH_SIGMA0**0.5:.4f} in [0, {hi:g}] (Maugis parameter up to "
+            f"{MAUGIS_MATCH_SIGMA0**-1.5:.4f} in [0, {hi:g}] (Maugis parameter up to "
             f"{float(maugis_parameter_of_mu(hi)):.3g}); R_over_h={float(rho.flat[k])!r}, "
             f"sigma0_over_E={float(s.flat[k])!r} give mu={float(mu.flat[k]):.6g}"
         )
