@@ -634,3 +634,44 @@ def test_cli_random_argv_exits_0_1_or_2_without_traceback(data):
     if code == 2:
         lines = [ln for ln in err.splitlines() if ln.startswith("linecontact")]
         assert len(lines) == 1 and "error:" in lines[0], (argv, err)
+
+
+# --------------------------------------------------------------------------------------------
+# the Lennard-Jones law (each example solves a whole branch: a few examples per run)
+
+LJ = settings(FUZZ, max_examples=max(EXAMPLES // 20, 2))
+
+
+def _lj_mu() -> st.SearchStrategy[float]:
+    return st.one_of(st.just(0.0), _log_uniform(1e-4, DOMAIN["lj_mu"][2]))
+
+
+@LJ
+@given(_lj_mu())
+def test_lennard_jones_pull_off_inside(mu):
+    from linecontact.lennard_jones import MAUGIS_MATCH_SIGMA0, lj_pull_off
+    from linecontact.reference import lennard_jones_rigid_pull_off
+
+    p = lj_pull_off(mu)
+    assert p.converged and _finite(p.F_pulloff, p.central_gap_at_pulloff, p.error_estimate)
+    assert p.error_estimate < 1e-4 * abs(p.F_pulloff)
+    # the rigid cylinder pulls hardest under the law; elasticity only lowers the pull-off
+    assert lennard_jones_rigid_pull_off()[0] - 1e-9 <= p.F_pulloff < 0
+    if mu > 0:  # the matched Dugdale step pulls harder (16 % in the rigid limit)
+        R_over_h = 1e6
+        s = mu * MAUGIS_MATCH_SIGMA0**1.5 / math.sqrt(R_over_h)
+        md = lc.pull_off(R_over_h, s).F_pulloff_over_Eh / (
+            s * math.sqrt(R_over_h / MAUGIS_MATCH_SIGMA0)
+        )
+        assert md < p.F_pulloff
+
+
+@LJ
+@given(_lj_mu(), st.floats(0.9, 8.0))
+def test_lennard_jones_state_inside(mu, g0):
+    from linecontact.lennard_jones import lj_state
+
+    s = lj_state(g0, mu)
+    assert s.converged and s.residual <= 1e-10
+    assert _finite(s.F, s.error_estimate, s.half_width)
+    assert s.error_estimate < 1e-4 * max(abs(s.F), 0.1)
