@@ -214,3 +214,12 @@ def test_pull_off_law_lennard_jones_in_dugdale_groups():
         pull_off(100.0, 0.0, law="lennard-jones")
     with pytest.raises(ValueError, match="law must be"):
         pull_off(100.0, 0.01, law="lj")
+
+
+def test_contact_for_a_load_the_curve_passed_through():
+    # a load equal to a state of the march: the bracket's end, solved again, may land on
+    # the other side of the load by round-off (brentq refused the bracket before)
+    mu = 0.0961667
+    F = float(lj_curve(mu).F[-1])
+    s = lj_contact_for_load(F, mu)
+    assert s.F == pytest.approx(F, abs=10 * s.error_estimate)

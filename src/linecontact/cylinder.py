@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import warnings
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any, Literal, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -33,12 +33,17 @@ from .tangential import (
 from .tangential.initiation import _CATTANEO_MINDLIN, _INITIATION
 from .tangential.rolling import _CARTER, _ROLLING
 
+if TYPE_CHECKING:  # imported where used: the Lennard-Jones solver needs scipy
+    from .lennard_jones_groups import LennardJonesContact
+
 __all__ = [
     "CylinderPush",
     "cylinder_push",
     "PLAUSIBLE",
     "Cylinder",
     "CylinderContact",
+    "CylinderLennardJonesContact",
+    "CylinderLennardJonesPullOff",
     "CylinderPullOff",
     "CylinderTangential",
     "cylinder_sliding_initiation",
@@ -122,6 +127,65 @@ class CylinderPullOff:
     mechanism: NDArray | str
     zero_width_force: NDArray | float
     nondimensional: _normal.PullOff = field(repr=False)
+
+
+@dataclass(frozen=True)
+class CylinderLennardJonesContact:
+    """A contact state under the Lennard-Jones law in SI units, with its nondimensional result.
+
+    Attributes
+    ----------
+    contact_half_width : ndarray or float
+        Half-width of the repulsive region (the gap below ``z0``) [m]; 0 where there is none.
+    central_gap : ndarray or float
+        The gap at the centre [m].
+    load : ndarray or float
+        ``F`` [N/m], compressive positive: the load asked for.
+    error_estimate : ndarray or float
+        Estimated discretisation error of the state's load [N/m].
+    stable : ndarray or bool
+        Stable under load control (the branch beyond the pull-off).
+    state : ndarray of str or str
+        ``"contact"``, or ``"no-equilibrium"`` for a load below the pull-off force (reported
+        with ``on_no_equilibrium="report"``; its values are NaN).
+    nondimensional : LennardJonesContact
+        The underlying result (Dugdale groups) with its diagnostics.
+    """
+
+    contact_half_width: NDArray | float
+    central_gap: NDArray | float
+    load: NDArray | float
+    error_estimate: NDArray | float
+    stable: NDArray | bool
+    state: NDArray | str
+    nondimensional: LennardJonesContact = field(repr=False)
+
+
+@dataclass(frozen=True)
+class CylinderLennardJonesPullOff:
+    """Pull-off under the Lennard-Jones law in SI units.
+
+    Attributes
+    ----------
+    pull_off_force : float
+        [N/m], negative: the most tensile load of the curve.
+    error_estimate : float
+        Its estimated discretisation error [N/m].
+    contact_half_width_at_pull_off : float
+        Half-width of the repulsive region there [m] (0: the pull-off precedes it).
+    central_gap_at_pull_off : float
+        [m].
+    jump_in_force : float
+        The jump-in load where the curve is S-shaped [N/m], else ``nan``.
+    nondimensional : LennardJonesPullOff
+    """
+
+    pull_off_force: float
+    error_estimate: float
+    contact_half_width_at_pull_off: float
+    central_gap_at_pull_off: float
+    jump_in_force: float
+    nondimensional: Any = field(repr=False)
 
 
 @dataclass(frozen=True)
@@ -296,6 +360,7 @@ class Cylinder:
             si(r.a_over_R, R), si(r.c_over_R, R), si(r.F_over_Eh, Eh), r.stable, r.state, r
         )
 
+    @overload
     def contact(
         self,
         *,
@@ -304,16 +369,65 @@ class Cylinder:
         method: str = "closed-form",
         branch: str = "stable",
         on_no_equilibrium: str = "raise",
-    ) -> CylinderContact:
+        law: Literal["dugdale"] = "dugdale",
+    ) -> CylinderContact: ...
+
+    @overload
+    def contact(
+        self,
+        *,
+        contact_half_width: ArrayLike | None = None,
+        load: ArrayLike | None = None,
+        method: str = "closed-form",
+        branch: str = "stable",
+        on_no_equilibrium: str = "raise",
+        law: str,
+    ) -> CylinderContact | CylinderLennardJonesContact: ...
+
+    def contact(
+        self,
+        *,
+        contact_half_width: ArrayLike | None = None,
+        load: ArrayLike | None = None,
+        method: str = "closed-form",
+        branch: str = "stable",
+        on_no_equilibrium: str = "raise",
+        law: str = "dugdale",
+    ) -> CylinderContact | CylinderLennardJonesContact:
         """The contact at given half-widths ``a`` [m] or loads ``F`` [N/m] (exactly one).
 
         For a load, ``branch`` selects the stable (default) or the unstable contact state;
         a load that no contact of the branch carries (below the pull-off force) raises
         :class:`~linecontact.errors.NoEquilibriumError`, or with
         ``on_no_equilibrium="report"`` gives ``state == "no-equilibrium"`` and NaN values.
+
+        ``law="lennard-jones"``: the Lennard-Jones law of Eq. (1) solved self-consistently
+        (:func:`linecontact.contact_for_load`), for given loads only (the stable branch),
+        with the cylinder's work of adhesion ``w = sigma0 h`` and ``z0 = 16 h/(9 sqrt 3)``
+        (for a cylinder built from ``(w, z0)`` these are the ``w`` and ``z0`` given, as the
+        Maugis conversion of :func:`~linecontact.adhesion_from_work` is undone); returns a
+        :class:`CylinderLennardJonesContact`.
         """
+        if law not in ("dugdale", "lennard-jones"):
+            raise ValueError(f"law must be 'dugdale' or 'lennard-jones', got {law!r}")
         if (contact_half_width is None) == (load is None):
             raise ValueError("give exactly one of contact_half_width or load")
+        if law == "lennard-jones":
+            if load is None:
+                raise ValueError(
+                    "under the Lennard-Jones law the contact is found for a given load only: "
+                    "give load [N/m], not contact_half_width"
+                )
+            if method != "closed-form" or branch != "stable":
+                raise ValueError(
+                    "method and branch apply to law='dugdale': under the Lennard-Jones law the "
+                    "contact for a load is the stable state beyond the pull-off"
+                )
+            if on_no_equilibrium not in ("raise", "report"):
+                raise ValueError(
+                    f"on_no_equilibrium must be 'raise' or 'report', got {on_no_equilibrium!r}"
+                )
+            return self._for_load_lj("load", load, on_no_equilibrium)
         if method not in ("closed-form", "collocation"):
             raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
         if branch not in ("stable", "unstable"):
@@ -383,9 +497,80 @@ class Cylinder:
             r,
         )
 
-    def pull_off(self) -> CylinderPullOff:
-        """Pull-off force under load control [N/m]."""
-        p = _normal.pull_off(self.R_over_h, self.sigma0_over_E)
+    def _for_load_lj(
+        self, name: str, load: ArrayLike, on_no_equilibrium: str = "raise"
+    ) -> CylinderLennardJonesContact:
+        """The contact carrying ``load`` [N/m] under the Lennard-Jones law (SI messages)."""
+        from . import lennard_jones_groups as _ljg
+
+        F = check_array(name, load, low=-np.inf, low_inclusive=True)
+        Eh = self.modulus * self.adhesion_range
+        _domain.check_si(name, F, Eh, "F_over_Eh", "N/m")
+        F_max = float(_ljg.load_max_over_Eh(self.R_over_h, self.sigma0_over_E)) * Eh
+        if np.any(F > F_max):
+            raise ValueError(
+                f"{name}={float(F[F > F_max].flat[0])!r} N/m is beyond the loads the "
+                f"Lennard-Jones solver is asked for, up to {F_max:.6g} N/m here (ten times the "
+                "rigid cylinder's pull-off); at such loads both laws approach Hertz, and the "
+                "Dugdale law (the default) gives the contact"
+            )
+        try:
+            r = _normal.contact_for_load(
+                F / Eh,
+                self.R_over_h,
+                self.sigma0_over_E,
+                on_no_equilibrium=on_no_equilibrium,
+                law="lennard-jones",
+            )
+        except _ljg.BelowPullOffError as e:
+            Fi = float(np.reshape(F, -1)[e.index])
+            raise NoEquilibriumError(
+                f"no contact carries {name}={Fi!r} N/m under the Lennard-Jones law: it is "
+                f"below the pull-off force {e.F_pulloff_over_Eh * Eh!r} N/m (error estimate "
+                f"{e.error_estimate_over_Eh * Eh:.2g} N/m); the cylinder has pulled off"
+            ) from None
+
+        def si(v, unit):
+            v = np.multiply(v, unit)
+            return v.item() if np.ndim(v) == 0 else v
+
+        load_given = (
+            F.item() if np.ndim(r.F_over_Eh) == 0 else np.broadcast_to(F, np.shape(r.F_over_Eh))
+        )
+        return CylinderLennardJonesContact(
+            si(r.a_over_R, self.radius),
+            si(r.central_gap_over_h, self.adhesion_range),
+            load_given,
+            si(r.error_estimate_over_Eh, Eh),
+            r.stable,
+            r.state,
+            r,
+        )
+
+    @overload
+    def pull_off(self, *, law: Literal["dugdale"] = "dugdale") -> CylinderPullOff: ...
+
+    @overload
+    def pull_off(self, *, law: str) -> CylinderPullOff | CylinderLennardJonesPullOff: ...
+
+    def pull_off(self, *, law: str = "dugdale") -> CylinderPullOff | CylinderLennardJonesPullOff:
+        """Pull-off force under load control [N/m].
+
+        ``law="lennard-jones"``: under the Lennard-Jones law of Eq. (1) with the cylinder's
+        ``w`` and ``z0`` (as in :meth:`contact`), a :class:`CylinderLennardJonesPullOff`.
+        """
+        if law == "lennard-jones":
+            q = _normal.pull_off(self.R_over_h, self.sigma0_over_E, law=law)
+            Eh = self.modulus * self.adhesion_range
+            return CylinderLennardJonesPullOff(
+                q.F_pulloff_over_Eh * Eh,
+                q.error_estimate_over_Eh * Eh,
+                q.a_over_R_at_pulloff * self.radius,
+                q.central_gap_over_h_at_pulloff * self.adhesion_range,
+                q.F_jump_in_over_Eh * Eh,
+                q,
+            )
+        p = _normal.pull_off(self.R_over_h, self.sigma0_over_E, law=law)
         Eh = self.modulus * self.adhesion_range
         return CylinderPullOff(
             p.F_pulloff_over_Eh * Eh,

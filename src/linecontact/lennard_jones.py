@@ -847,7 +847,12 @@ def lj_contact_for_load(F: float, mu: float, *, m: int | None = None) -> LJState
         return _state_of(a, mu)
     cache: dict[float, _Solved] = {}
 
+    cache[a.zeta0], cache[b.zeta0] = a, b  # the bracket's ends keep their own loads (a
+    # state solved again may land on the other side of F by its round-off)
+
     def g(z: float) -> float:
+        if z in cache:
+            return cache[z].F - F
         t = (z - a.zeta0) / (b.zeta0 - a.zeta0)
         s = _solve(z, mu, b.mesh.spec, _on(a, b.mesh) + t * (b.zeta - _on(a, b.mesh)))
         if s is None:  # the samples are far apart: continue from the upper one

@@ -642,8 +642,8 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugda
     law : {"dugdale", "lennard-jones"}
         The Dugdale step (default), or the Lennard-Jones law of Eq. (1) with the same work
         of adhesion ``sigma0 h`` and peak tension ``sigma0``, solved self-consistently
-        (:mod:`linecontact.lennard_jones`; ``sigma0_over_E > 0``, and ``mu = 0.974^(-1/2)
-        (sigma0/E) sqrt(R/h)`` at most 1).
+        (:mod:`linecontact.lennard_jones`; ``sigma0_over_E > 0``, and ``mu = 0.974^(3/2)
+        (sigma0/E) sqrt(R/h)`` within ``domain.DOMAIN["lj_mu"]``).
 
     Returns
     -------
@@ -770,7 +770,8 @@ def contact_for_load(
     *,
     branch: str = "stable",
     on_no_equilibrium: str = "raise",
-) -> NormalContact:
+    law: str = "dugdale",
+) -> Any:
     r"""The contact state(s) carrying a given load (closed form).
 
     Parameters
@@ -787,12 +788,21 @@ def contact_for_load(
         For a load that no contact of the branch carries: raise (default), or report the
         point with ``state == "no-equilibrium"``, NaN widths (the load kept), ``converged`` and
         ``stable`` False (the other points are solved as usual).
+    law : {"dugdale", "lennard-jones"}
+        The Dugdale step (default), or the Lennard-Jones law of Eq. (1) with the same work
+        of adhesion and peak tension, solved self-consistently
+        (:mod:`linecontact.lennard_jones_groups`; ``sigma0_over_E > 0``, ``mu`` within its
+        domain as in :func:`pull_off`, loads up to
+        :data:`~linecontact.lennard_jones_groups.LJ_LOAD_MAX` ``w sqrt(R/z0)``, the stable
+        branch only). Each point costs a continuation of the curve: seconds at ``mu <= 0.3``,
+        minutes at ``mu = 3``.
 
     Returns
     -------
-    NormalContact
+    NormalContact or linecontact.lennard_jones_groups.LennardJonesContact
         ``F_over_Eh`` is the load asked for (the state carries it to within
-        ``error_estimate``, relative to the larger of the load, Eq. 14 and the Hertz term);
+        ``error_estimate``, relative to the larger of the load, Eq. 14 and the Hertz term;
+        under the Lennard-Jones law its discretisation error is ``error_estimate_over_Eh``);
         ``state`` is ``"contact"``, or ``"no-equilibrium"`` for the points reported.
 
     Raises
@@ -800,6 +810,8 @@ def contact_for_load(
     NoEquilibriumError
         If no contact of the requested branch carries the load, naming the pull-off force.
     """
+    if law not in ("dugdale", "lennard-jones"):
+        raise ValueError(f"law must be 'dugdale' or 'lennard-jones', got {law!r}")
     F = _domain.check("F_over_Eh", F_over_Eh)
     rho = _domain.check("R_over_h", R_over_h)
     s = _domain.check("sigma0_over_E", sigma0_over_E)
@@ -808,6 +820,19 @@ def contact_for_load(
     if on_no_equilibrium not in ("raise", "report"):
         raise ValueError(
             f"on_no_equilibrium must be 'raise' or 'report', got {on_no_equilibrium!r}"
+        )
+    if law == "lennard-jones":
+        if branch != "stable":
+            raise ValueError(
+                "branch='unstable' applies to law='dugdale': under the Lennard-Jones law the "
+                "contact for a load is the stable state beyond the pull-off"
+            )
+        from .lennard_jones_groups import contact_for_load_in_dugdale_groups
+
+        scalar = scalar_or_array(F, rho, s)
+        F, rho, s = broadcast(F_over_Eh=F, R_over_h=rho, sigma0_over_E=s)
+        return contact_for_load_in_dugdale_groups(
+            F, rho, s, scalar=scalar, on_no_equilibrium=on_no_equilibrium
         )
     report = on_no_equilibrium == "report"
     scalar = scalar_or_array(F, rho, s)
@@ -1049,7 +1074,9 @@ def load_curve(
     a_max_over_R: float | None = None,
     num: int = 200,
     num_noncontact: int = 40,
-) -> LoadCurve:
+    law: str = "dugdale",
+    F_max_over_Eh: float | None = None,
+) -> Any:
     """Sample the load curve (scalar parameters), pull-off and turning point included.
 
     Parameters
@@ -1064,9 +1091,38 @@ def load_curve(
         end of the domain (where the pull-off is wider still, the curve stops short of it).
     num, num_noncontact : int
         Points on the contact and the non-contact branches (>= 2 each).
+    law : {"dugdale", "lennard-jones"}
+        The Dugdale step (default), or the Lennard-Jones law of Eq. (1) with the same work of
+        adhesion and peak tension (as in :func:`pull_off`): the states of the solver's
+        continuation in the central gap, from far away through the pull-off to
+        ``F_max_over_Eh`` (``a_max_over_R``, ``num`` and ``num_noncontact`` are the Dugdale
+        law's; seconds at ``mu <= 0.3``, minutes at ``mu = 3``).
+    F_max_over_Eh : float, optional
+        Under the Lennard-Jones law, the compressive load where the curve ends (default:
+        7.5 ``w sqrt(R/z0)``, three times the rigid cylinder's pull-off).
+
+    Returns
+    -------
+    LoadCurve or linecontact.lennard_jones_groups.LennardJonesLoadCurve
     """
+    if law not in ("dugdale", "lennard-jones"):
+        raise ValueError(f"law must be 'dugdale' or 'lennard-jones', got {law!r}")
     rho = _domain.scalar("R_over_h", R_over_h)
     s = _domain.scalar("sigma0_over_E", sigma0_over_E)
+    if law == "lennard-jones":
+        if a_max_over_R is not None or num != 200 or num_noncontact != 40:
+            raise ValueError(
+                "a_max_over_R, num and num_noncontact apply to law='dugdale': the "
+                "Lennard-Jones curve has the states of its continuation; give F_max_over_Eh "
+                "for its end"
+            )
+        from .lennard_jones_groups import load_curve_in_dugdale_groups
+
+        return load_curve_in_dugdale_groups(rho, s, F_max_over_Eh)
+    if F_max_over_Eh is not None:
+        raise ValueError(
+            "F_max_over_Eh applies to law='lennard-jones': the Dugdale curve ends at a_max_over_R"
+        )
     for name, v in (("num", num), ("num_noncontact", num_noncontact)):
         if not isinstance(v, (int, np.integer)) or v < 2:
             raise ValueError(f"{name} must be an integer >= 2, got {v!r}")

@@ -48,6 +48,8 @@ def _parameters(args, rho: float, s: float, cyl: Cylinder | None) -> dict[str, A
 def _cmd_normal(args: argparse.Namespace) -> int:
     rho, s, cyl = groups(args)
     A = half_widths(args, cyl, "F_over_Eh")
+    if args.law == "lennard-jones":
+        return _cmd_normal_lj(args, A, rho, s, cyl)
     if A is not None:
         if args.branch != "stable":
             raise ValueError(
@@ -80,6 +82,69 @@ def _cmd_normal(args: argparse.Namespace) -> int:
         reason = _load_reasons(F.reshape(-1), state, rho, s, args.branch, cyl)
         given = "F_over_Eh"
     table = _normal_table(args, r, rho, s, cyl, state, reason, given)
+    emit(args, table)
+    return finish(table, "contact")
+
+
+def _cmd_normal_lj(args: argparse.Namespace, A, rho: float, s: float, cyl: Cylinder | None) -> int:
+    if A is not None:
+        raise ValueError(
+            "--law lennard-jones finds the contact for given loads (--F-over-Eh or --load): "
+            "give loads, not contact half-widths"
+        )
+    if args.branch != "stable" or args.method != "closed-form":
+        raise ValueError(
+            "--branch and --method apply to --law dugdale: under the Lennard-Jones law the "
+            "contact for a load is the stable state beyond the pull-off"
+        )
+    if cyl is None:
+        F = np.asarray(args.F_over_Eh, float)
+        r = contact_for_load(F, rho, s, on_no_equilibrium="report", law="lennard-jones")
+    else:
+        c = cyl.contact(load=args.load, on_no_equilibrium="report", law="lennard-jones")
+        r = c.nondimensional
+        F = np.asarray(r.F_over_Eh, float)
+    state = np.asarray(r.state).reshape(-1)
+    reason = np.full(state.shape, None, dtype=object)
+    if np.any(state != "contact"):
+        po = pull_off(rho, s, law="lennard-jones")
+        unit, scale = ("N/m", cyl.modulus * cyl.adhesion_range) if cyl else ("E h", 1.0)
+        reason[state != "contact"] = (
+            f"no contact carries this load: it is below the pull-off force "
+            f"{po.F_pulloff_over_Eh * scale:.6g} {unit} under the Lennard-Jones law (the "
+            "contact has pulled off)"
+        )
+    params = _parameters(args, rho, s, cyl)
+    params.pop("kappa")
+    params["law"] = "lennard-jones"
+    extra: dict[str, Any] = {}
+    show = ["a_over_R", "central_gap_over_h", "F_over_Eh", "error_estimate_over_Eh"]
+    if cyl is not None:
+        R, h, Eh = cyl.radius, cyl.adhesion_range, cyl.modulus * cyl.adhesion_range
+        extra.update(
+            a_m=np.multiply(r.a_over_R, R),
+            central_gap_m=np.multiply(r.central_gap_over_h, h),
+            F_N_per_m=np.multiply(r.F_over_Eh, Eh),
+            error_estimate_N_per_m=np.multiply(r.error_estimate_over_Eh, Eh),
+        )
+        show += ["a_m", "F_N_per_m"]
+        if args.length is not None:
+            extra["F_total_N"] = np.multiply(r.F_over_Eh, Eh * args.length)
+            show.append("F_total_N")
+    extra.update(state=state, reason=reason)
+    if np.any(state != "contact"):
+        show.append("state")
+    table = table_from_result(
+        r,
+        columns=extra,
+        drop=("state",),
+        parameters=params,
+        command=command_line(args),
+        title="contact for a load under the Lennard-Jones law (matched to the Dugdale step: "
+        "same w, same peak tension), compressive load positive",
+        show=show,
+    )
+    table = null_missing(table, state != "contact", keep=("F_over_Eh", "state", "reason"))
     emit(args, table)
     return finish(table, "contact")
 
@@ -228,8 +293,99 @@ def _cmd_pulloff(args: argparse.Namespace) -> int:
 # curve
 
 
+def _cmd_curve_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinder | None) -> int:
+    given = [
+        flag
+        for flag, v in (
+            ("--a-max-over-R", args.a_max_over_R),
+            ("--a-max", args.a_max),
+            ("--num", args.num),
+            ("--num-noncontact", args.num_noncontact),
+        )
+        if v is not None
+    ]
+    if given:
+        raise ValueError(
+            f"{', '.join(given)} {'applies' if len(given) == 1 else 'apply'} to --law dugdale: "
+            "the Lennard-Jones curve has the states of its continuation; give --F-max-over-Eh "
+            "(or --F-max [N/m]) for its end"
+        )
+    F_max = args.F_max_over_Eh
+    if args.F_max is not None:
+        if cyl is None:
+            raise ValueError("--F-max [N/m] is an SI input: give --radius and the materials too")
+        if args.F_max_over_Eh is not None:
+            raise ValueError("give either --F-max-over-Eh or --F-max [N/m], not both")
+        Eh = cyl.modulus * cyl.adhesion_range
+        if not (np.isfinite(args.F_max) and args.F_max > 0):
+            raise ValueError(f"--F-max must be a finite load > 0 [N/m], got {args.F_max!r}")
+        from ..lennard_jones_groups import load_max_over_Eh
+
+        limit = float(load_max_over_Eh(rho, s)) * Eh
+        if args.F_max > limit:
+            raise ValueError(
+                f"--F-max={args.F_max!r} N/m is beyond the loads the Lennard-Jones solver is "
+                f"asked for, up to {limit:.6g} N/m here (ten times the rigid cylinder's "
+                "pull-off); at such loads both laws approach Hertz: use --law dugdale"
+            )
+        F_max = args.F_max / Eh
+    elif cyl is not None and F_max is not None:
+        raise ValueError("--F-max-over-Eh is nondimensional: with SI inputs give --F-max [N/m]")
+    c = load_curve(rho, s, law="lennard-jones", F_max_over_Eh=F_max)
+    po = c.pulloff
+    is_po = np.zeros(c.F_over_Eh.shape, bool)
+    is_po[int(np.argmin(c.F_over_Eh))] = True  # the sample nearest the refined pull-off
+    params = _parameters(args, rho, s, cyl)
+    params.pop("kappa")
+    params["law"] = "lennard-jones"
+    extra: dict[str, Any] = {"pulloff": is_po}
+    show = [
+        "central_gap_over_h",
+        "a_over_R",
+        "F_over_Eh",
+        "error_estimate_over_Eh",
+        "stable",
+    ]
+    if cyl is not None:
+        R, h, Eh = cyl.radius, cyl.adhesion_range, cyl.modulus * cyl.adhesion_range
+        extra.update(
+            central_gap_m=c.central_gap_over_h * h,
+            a_m=c.a_over_R * R,
+            F_N_per_m=c.F_over_Eh * Eh,
+            error_estimate_N_per_m=c.error_estimate_over_Eh * Eh,
+        )
+        show += ["a_m", "F_N_per_m"]
+        if args.length is not None:
+            extra["F_total_N"] = c.F_over_Eh * Eh * args.length
+            show.append("F_total_N")
+    show.append("pulloff")
+    table = table_from_result(
+        c,
+        columns=extra,
+        parameters=params,
+        command=command_line(args),
+        title=(
+            "load curve under the Lennard-Jones law (matched to the Dugdale step: same w, same "
+            "peak tension), the central gap decreasing; pull-off "
+            f"{po.F_pulloff_over_Eh:.6g} (error estimate {po.error_estimate_over_Eh:.2g})"
+        ),
+        show=show,
+    )
+    emit(args, table)
+    return 0
+
+
 def _cmd_curve(args: argparse.Namespace) -> int:
     rho, s, cyl = groups(args)
+    if args.law == "lennard-jones":
+        return _cmd_curve_lj(args, rho, s, cyl)
+    if args.F_max_over_Eh is not None or args.F_max is not None:
+        raise ValueError(
+            "--F-max-over-Eh and --F-max apply to --law lennard-jones: the Dugdale curve ends "
+            "at --a-max-over-R (or --a-max [m])"
+        )
+    args.num = 200 if args.num is None else args.num
+    args.num_noncontact = 40 if args.num_noncontact is None else args.num_noncontact
     for flag, v in (("--num", args.num), ("--num-noncontact", args.num_noncontact)):
         if not 2 <= v <= MAX_POINTS:
             raise ValueError(f"{flag} must be an integer in [2, {MAX_POINTS}], got {v!r}")
@@ -282,6 +438,17 @@ def _cmd_curve(args: argparse.Namespace) -> int:
 # registration
 
 
+def _add_law(p: argparse.ArgumentParser, what: str = "") -> None:
+    p.add_argument(
+        "--law",
+        choices=("dugdale", "lennard-jones"),
+        default="dugdale",
+        help="surface law: the Dugdale step or the Lennard-Jones law of Eq 1 with "
+        "the same work of adhesion and peak tension, solved self-consistently "
+        f"(mu = 0.974^1.5 (sigma0/E) sqrt(R/h) within its validated domain){what}",
+    )
+
+
 def register(sub: Any) -> None:
     """Add ``normal``, ``pulloff`` and ``curve`` to the subparsers ``sub``."""
     n = add_command(
@@ -297,6 +464,8 @@ def register(sub: Any) -> None:
             "linecontact normal --R-over-h 100 --sigma0-over-E 0.2 --F-over-Eh -1 0 1 --json",
             "linecontact normal --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 "
             "--load 0 1 --length 5e-6",
+            "linecontact normal --R-over-h 100 --sigma0-over-E 0.01 --F-over-Eh 0 1 "
+            "--law lennard-jones --json",
         ],
     )
     add_groups(n)
@@ -313,6 +482,11 @@ def register(sub: Any) -> None:
         choices=("closed-form", "collocation"),
         default="closed-form",
         help="solver for given half-widths: the closed form or the paper's collocation",
+    )
+    _add_law(
+        n,
+        "; lennard-jones: for given loads, the stable branch; seconds a load at mu <= 0.3, "
+        "minutes at mu = 3",
     )
     add_output_options(n)
     n.set_defaults(func=_cmd_normal)
@@ -333,14 +507,7 @@ def register(sub: Any) -> None:
         ],
     )
     add_groups(po)
-    po.add_argument(
-        "--law",
-        choices=("dugdale", "lennard-jones"),
-        default="dugdale",
-        help="surface law: the Dugdale step (default) or the Lennard-Jones law of Eq 1 with "
-        "the same work of adhesion and peak tension, solved self-consistently "
-        "(mu = (sigma0/E) sqrt(R/h)/0.974^0.5 at most 1)",
-    )
+    _add_law(po)
     add_output_options(po)
     po.set_defaults(func=_cmd_pulloff)
 
@@ -354,9 +521,16 @@ def register(sub: Any) -> None:
         [
             "linecontact curve --R-over-h 100 --sigma0-over-E 0.05 --format csv -o curve.csv",
             "linecontact curve --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 --json",
+            "linecontact curve --radius 50e-9 --modulus 10e9 --work-of-adhesion 0.05 "
+            "--z0 0.3e-9 --law lennard-jones --json",
         ],
     )
     add_groups(cu)
+    _add_law(
+        cu,
+        "; lennard-jones: the states of the solver's continuation; seconds at mu <= 0.3, "
+        "minutes at mu = 3",
+    )
     c = cu.add_argument_group("sampling")
     c.add_argument(
         "--a-max-over-R",
@@ -366,9 +540,23 @@ def register(sub: Any) -> None:
         "least the Hertz width at ten times the pull-off force and 0.02, at most 0.2)",
     )
     c.add_argument("--a-max", type=float, metavar="A", help="largest half-width a [m] (SI)")
-    c.add_argument("--num", type=int, default=200, help="points on the contact branch")
     c.add_argument(
-        "--num-noncontact", type=int, default=40, help="points on the non-contact branch"
+        "--num", type=int, help="points on the contact branch (default: 200; --law dugdale)"
+    )
+    c.add_argument(
+        "--num-noncontact",
+        type=int,
+        help="points on the non-contact branch (default: 40; --law dugdale)",
+    )
+    c.add_argument(
+        "--F-max-over-Eh",
+        type=float,
+        metavar="F",
+        help="--law lennard-jones: the compressive load F/(E h) where the curve ends (default: "
+        "7.5 w sqrt(R/z0), three times the rigid cylinder's pull-off)",
+    )
+    c.add_argument(
+        "--F-max", type=float, metavar="F", help="--law lennard-jones: the end load F [N/m] (SI)"
     )
     add_output_options(cu)
     cu.set_defaults(func=_cmd_curve)
