@@ -398,6 +398,7 @@ def test_every_option_is_documented_and_every_command_has_examples(capsys):
         "push",
         "paper",
         "figures",
+        "map",
         "cite",
     }
     for name, p in sub.choices.items():
@@ -483,7 +484,7 @@ def test_pulloff_law_lennard_jones_si_json():
             "--R-over-h",
             "100",
             "--sigma0-over-E",
-            "0.5",
+            "2.0",
             "--law",
             "lennard-jones",
         ],

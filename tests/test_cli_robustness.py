@@ -39,7 +39,7 @@ def strict_json(text):
         (
             [],
             r"give a command: normal, pulloff, curve, slide-init, roll, slide, push, paper, "
-            r"figures or cite",
+            r"figures, map or cite",
         ),
         (
             ["curve", *G, "-o", "/nonexistent-dir/curve.csv"],

@@ -29,6 +29,8 @@ FLOORS = {
         "linecontact.tangential",
         "linecontact.push",
         "linecontact.lennard_jones",
+        "linecontact.lennard_jones_groups",
+        "linecontact.adhesion_map",
     ],
     "si": ["linecontact.cylinder"],
     "shells": ["linecontact.output", "linecontact.cli", "linecontact.figures"],

@@ -14,6 +14,7 @@ pytest.importorskip("matplotlib")
 import linecontact as lc  # noqa: E402
 import linecontact.figures as figs  # noqa: E402
 from linecontact.cli import main  # noqa: E402
+from linecontact.figures import adhesion_map as map_figs  # noqa: E402
 from linecontact.figures import push as push_figs  # noqa: E402
 from linecontact.figures._style import Run  # noqa: E402
 
@@ -83,8 +84,14 @@ def test_lateral_force_rises_from_onset_to_the_steady_resistances(built):
     assert np.all(np.diff(qs) >= 0) and np.all(np.diff(qr) >= 0)
 
 
-def test_the_figures_command_writes_the_three_files(tmp_path, capsys):
+def test_the_figures_command_writes_the_three_files_and_the_map(tmp_path, capsys, monkeypatch):
+    # the adhesion map on a grid smaller still than its coarse one (its own tests are in
+    # test_adhesion_map.py)
+    tiny = {"n_mu": 2, "mu_min": 0.01, "mu_max": 0.02, "n_y": 5, "y_max": 1.0}
+    monkeypatch.setattr(map_figs, "COARSE", tiny)
     assert main(["figures", "--outdir", str(tmp_path)]) == 0
-    assert sorted(p.name for p in tmp_path.iterdir()) == [f"{s}.png" for s in STEMS]
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
+        [f"{s}.png" for s in STEMS] + ["adhesion_map.png"]
+    )
     assert main(["figures", "--outdir", str(tmp_path), "--format", "gif"]) == 2
     assert "error:" in capsys.readouterr().err

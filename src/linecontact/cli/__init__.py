@@ -2,11 +2,11 @@
 
 One module per family of subcommands (:mod:`~linecontact.cli.normal`,
 :mod:`~linecontact.cli.tangential`, :mod:`~linecontact.cli.sliding`,
-:mod:`~linecontact.cli.paper`), the shared options and output in
-:mod:`~linecontact.cli._options`. Every subcommand takes the paper's nondimensional groups or
-SI inputs, prints a readable table, or with ``--json`` machine-readable JSON. Bad input: one
-``error:`` line on stderr and exit status 2. A solver that misses its tolerance: exit
-status 1.
+:mod:`~linecontact.cli.paper`, :mod:`~linecontact.cli.adhesion_map`), the shared options and
+output in :mod:`~linecontact.cli._options`. Every subcommand takes the paper's
+nondimensional groups or SI inputs, prints a readable table, or with ``--json``
+machine-readable JSON. Bad input: one ``error:`` line on stderr and exit status 2. A solver
+that misses its tolerance: exit status 1.
 """
 
 from __future__ import annotations
@@ -20,6 +20,7 @@ from collections.abc import Sequence
 
 from .._version import __version__
 from ..errors import ConvergenceError
+from . import adhesion_map as _adhesion_map
 from . import normal as _normal
 from . import paper as _paper
 from . import push as _push
@@ -29,7 +30,7 @@ from ._options import NoPointError, Parser, flag_message, record_flags
 
 __all__ = ["build_parser", "main"]
 
-_COMMANDS = "normal, pulloff, curve, slide-init, roll, slide, push, paper, figures or cite"
+_COMMANDS = "normal, pulloff, curve, slide-init, roll, slide, push, paper, figures, map or cite"
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -64,6 +65,7 @@ def build_parser() -> argparse.ArgumentParser:
     _sliding.register(sub)
     _push.register(sub)
     _paper.register(sub)
+    _adhesion_map.register(sub)
     for sp in sub.choices.values():
         sp.allow_abbrev = False
     p.set_defaults(_subparsers=sub)

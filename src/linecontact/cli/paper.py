@@ -226,9 +226,9 @@ def _draw_and_list(draw, args, formats, size) -> None:
 def _cmd_figures(args) -> int:
     formats = _formats_arg(args.format)
     size = _size_arg(args.size)
-    from ..figures import push_figures
+    from ..figures import extra_figures
 
-    _draw_and_list(push_figures, args, formats, size)
+    _draw_and_list(extra_figures, args, formats, size)
     return 0
 
 
@@ -267,10 +267,13 @@ def register(sub) -> None:
 
     fi = sub.add_parser(
         "figures",
-        help="draw the figures beyond the paper: the pushed fibre's motion maps and force",
+        help="draw the figures beyond the paper: the pushed fibre's motion maps and force, "
+        "the adhesion map",
         description="Draw the figures of the pushed fibre (docs/push.md): the first motion "
         "over the push height and the hysteresis or the friction stress, with the boundary "
-        "H*, and the lateral force against the push's progress (push01_*.png, ...).",
+        "H*, and the lateral force against the push's progress (push01_*.png, ...); and the "
+        "adhesion map of line contact on a coarse grid (adhesion_map.png; about 10 s: "
+        "`linecontact map` draws it on a finer grid, with its data).",
         epilog="examples:\n  linecontact figures\n"
         "  linecontact figures --outdir figs --format png,pdf",
     )

@@ -3,8 +3,10 @@
 One module per family of figures, each with the parameters it draws and why:
 :mod:`linecontact.figures.normal` (Figs. 2--6), :mod:`linecontact.figures.tangential`
 (Figs. 7, 13, 14), :mod:`linecontact.figures.sliding` (Figs. 8--12), and beyond the paper
-:mod:`linecontact.figures.push` (the pushed fibre, :func:`push_figures`); the shared plumbing in
-:mod:`linecontact.figures._style`. matplotlib is imported only when a figure is drawn.
+:mod:`linecontact.figures.push` (the pushed fibre, :func:`push_figures`) and
+:mod:`linecontact.figures.adhesion_map` (the adhesion map of line contact; with the pushed
+fibre's, :func:`extra_figures`); the shared plumbing in :mod:`linecontact.figures._style`.
+matplotlib is imported only when a figure is drawn.
 """
 
 from __future__ import annotations
@@ -15,6 +17,7 @@ import sys
 import warnings
 from collections.abc import Callable, Iterable, Sequence
 
+from . import adhesion_map as _adhesion_map
 from . import normal as _normal
 from . import push as _push
 from . import sliding as _sliding
@@ -39,6 +42,7 @@ __all__ = [
     "FORMATS",
     "MAX_SIZE",
     "MIN_SIZE",
+    "extra_figures",
     "paper_figures",
     "push_figures",
 ]
@@ -299,6 +303,39 @@ def push_figures(
     out = pathlib.Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
     jobs = _push.jobs()
+    done = _draw(jobs, out, fmts, wh, say)
+    written = [p for job in jobs for p in done[job.stem]]
+    say(f"wrote {len(written)} files to {out}")
+    return written
+
+
+def extra_figures(
+    outdir: str | os.PathLike = "figures",
+    *,
+    formats: str | Iterable[str] = ("png",),
+    size: Sequence[float] = DEFAULT_SIZE,
+    progress: Callable[[str], object] | None = None,
+) -> list[pathlib.Path]:
+    """The figures beyond the paper (``linecontact figures``) into ``outdir``.
+
+    Those of the pushed fibre (:func:`push_figures`), then the adhesion map of line contact
+    on its coarse grid (:mod:`linecontact.figures.adhesion_map`, ``adhesion_map.png``; its
+    Lennard-Jones curves take most of the time, about 10 s). ``formats``,
+    ``size``, ``progress``, the errors and the atomic writes are those of
+    :func:`paper_figures`; one process draws.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written, figure by figure, each in the order of ``formats``.
+    """
+    _mpl()
+    fmts = check_formats(formats)
+    wh = check_size(size)
+    say = progress if progress is not None else (lambda msg: None)
+    out = pathlib.Path(outdir)
+    out.mkdir(parents=True, exist_ok=True)
+    jobs = _push.jobs() + _adhesion_map.jobs()
     done = _draw(jobs, out, fmts, wh, say)
     written = [p for job in jobs for p in done[job.stem]]
     say(f"wrote {len(written)} files to {out}")

@@ -1,0 +1,278 @@
+"""The ``map`` subcommand: the adhesion map of line contact, drawn, with its data file.
+
+A thin shell over :func:`linecontact.adhesion_map.adhesion_map` and
+:mod:`linecontact.figures.adhesion_map`. It writes ``adhesion_map.<format>`` (each format)
+and ``adhesion_map.csv`` (one row per cell, the provenance block in its header) into
+``--outdir``; it prints the files and a summary per ``mu``, or with ``--json`` the
+provenance block and the cells.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import pathlib
+import sys
+from typing import Any
+
+import numpy as np
+
+from ..adhesion_map import MODELS, MU_MIN, N_Y, Y_RANGE, AdhesionMap
+from ..output import Table, table_from_result, write
+from ._options import add_command, command_line
+
+__all__ = ["register"]
+
+_DESCRIPTION = (
+    "The adhesion map of line contact (a cylinder on an elastic half-plane): over the "
+    "Maugis parameter and the load above pull-off, where Hertz, the rigid cylinder, JKR and "
+    "Maugis-Dugdale (matched: same work of adhesion and peak tension) give the half-width of "
+    "the contact of the full Lennard-Jones law within --tol, and the contours of each "
+    "model's error. One Lennard-Jones load curve per value of mu, the dearer the larger mu: "
+    "the default grid (to the end of the domain, mu = 3 when this was written) took about 3 "
+    "minutes on an idle machine, --quick (4 values to mu = 1) about 10 seconds. Units of the "
+    "law: loads over w sqrt(R/z0), widths over sqrt(R z0)."
+)
+
+#: The CSV columns: the result's field -> the column's name (the name states the unit).
+_COLUMNS = {
+    "mu": "mu",
+    "maugis_parameter": "maugis_parameter",
+    "y": "load_above_pulloff_over_abs_pulloff",
+    "F": "F_over_w_sqrt_R_over_z0",
+    "F_pulloff": "F_pulloff_over_w_sqrt_R_over_z0",
+    "y_onset": "onset_load_above_pulloff_over_abs_pulloff",
+    "repulsive": "lj_repulsive",
+    "half_width_lj": "half_width_lj_over_sqrt_R_z0",
+    **{f"half_width_{m}": f"half_width_{m}_over_sqrt_R_z0" for m in MODELS},
+    **{f"error_{m}": f"relative_error_{m}" for m in MODELS},
+    **{f"agrees_{m}": f"agrees_{m}" for m in MODELS},
+    "lj_error_estimate": "lj_error_estimate_over_w_sqrt_R_over_z0",
+    "interpolation_error": "lj_interpolation_error_relative",
+    "n_states": "lj_states",
+}
+
+
+def register(sub: Any) -> None:
+    """Add the ``map`` subcommand to the subparsers ``sub``."""
+    p = add_command(
+        sub,
+        "map",
+        "the adhesion map of line contact: where Hertz, rigid, JKR, Maugis-Dugdale hold",
+        _DESCRIPTION,
+        [
+            "linecontact map --quick",
+            "linecontact map --outdir maps --format png,pdf --tol 0.02",
+            "linecontact map --mu-min 0.05 --mu-max 0.5 --n-mu 6 --y-max 10 --json > map.json",
+        ],
+    )
+    p.add_argument(
+        "--outdir",
+        default="figures",
+        metavar="DIR",
+        help="directory to write the figure and adhesion_map.csv into, created if missing; "
+        "files of the same names are replaced (default: %(default)s)",
+    )
+    p.add_argument(
+        "--format",
+        default="png",
+        metavar="LIST",
+        help="comma-separated file formats of the figure, any of png, svg, pdf; PNG at 150 "
+        "dpi (default: %(default)s)",
+    )
+    p.add_argument(
+        "--size",
+        default="9.6x5.4",
+        metavar="WxH",
+        help="width x height of the figure in inches, from 9.5x5.2 to 30x20 (default: %(default)s)",
+    )
+    p.add_argument(
+        "--tol",
+        type=float,
+        default=0.05,
+        metavar="TOL",
+        help="a model holds where the relative error of its half-width is at most TOL, in "
+        "(0, 1) (default: %(default)s)",
+    )
+    p.add_argument(
+        "--mu-min",
+        type=float,
+        metavar="MU",
+        help=f"smallest mu = w sqrt(R/z0)/(E z0), > 0 (default: {MU_MIN:g})",
+    )
+    p.add_argument(
+        "--mu-max",
+        type=float,
+        metavar="MU",
+        help="largest mu, at most the end of the Lennard-Jones solver's domain (default: that "
+        "end; --quick: 1)",
+    )
+    p.add_argument(
+        "--n-mu",
+        type=int,
+        metavar="N",
+        help="values of mu, geometric, 2 to 64 (default: five per decade and one, 10 to 16; "
+        "--quick: 4)",
+    )
+    p.add_argument(
+        "--y-max",
+        type=float,
+        metavar="Y",
+        help=f"largest load above pull-off, in pull-offs, > 0.01 (default: {Y_RANGE[1]:g}; "
+        "--quick: 10)",
+    )
+    p.add_argument(
+        "--n-y",
+        type=int,
+        metavar="N",
+        help="loads, geometric from 0.01 pull-offs above pull-off, 2 to 1000 (default: 81; "
+        "--quick: 41)",
+    )
+    p.add_argument(
+        "--quick",
+        action="store_true",
+        help="a coarse grid: 4 values of mu to 1 (or --mu-max: the curves beyond mu = 1 are "
+        "the dearest), 41 loads from 0.01 to 10 pull-offs (the map of `linecontact figures`)",
+    )
+    p.add_argument(
+        "--json",
+        action="store_true",
+        help="print the provenance block and one record per cell as JSON instead of the summary",
+    )
+    p.set_defaults(func=_cmd_map)
+
+
+def _grid(args: argparse.Namespace) -> tuple[np.ndarray, np.ndarray]:
+    """The values of mu and of y the flags ask for (ValueError naming the flag)."""
+    from ..adhesion_map import default_mu, default_y, domain_mu_max
+    from ..figures.adhesion_map import COARSE
+
+    hi = domain_mu_max()
+    if not (0.0 < args.tol < 1.0):  # also refuses nan
+        raise ValueError(f"--tol must be a number in (0, 1), got {args.tol!r}")
+    lo = MU_MIN if args.mu_min is None else args.mu_min
+    top = hi if args.mu_max is None else args.mu_max
+    if args.quick and args.mu_max is None:
+        top = min(COARSE["mu_max"], hi)
+    for flag, v in (("--mu-min", lo), ("--mu-max", top)):
+        if not (math.isfinite(v) and 0.0 < v <= hi):
+            raise ValueError(
+                f"{flag} must be a finite number in (0, {hi:g}] (the domain of the "
+                f"Lennard-Jones solver), got {v!r}"
+            )
+    if not lo < top:
+        raise ValueError(f"--mu-min must be below --mu-max, got {lo!r} >= {top!r}")
+    for flag, v in (("--n-mu", args.n_mu), ("--n-y", args.n_y)):
+        if args.quick and v is not None:
+            raise ValueError(f"give either --quick or {flag}, not both")
+    n = args.n_mu
+    if n is not None and not 2 <= n <= 64:
+        raise ValueError(f"--n-mu must be an integer in [2, 64], got {n!r}")
+    if args.n_y is not None and not 2 <= args.n_y <= 1000:
+        raise ValueError(f"--n-y must be an integer in [2, 1000], got {args.n_y!r}")
+    y_max = args.y_max
+    if y_max is not None and not (math.isfinite(y_max) and Y_RANGE[0] < y_max <= 1e3):
+        raise ValueError(
+            f"--y-max must be a finite number in ({Y_RANGE[0]:g}, 1000] (pull-offs above "
+            f"pull-off), got {y_max!r}"
+        )
+    if args.quick:
+        return (
+            default_mu(COARSE["n_mu"], lo, top),  # the flags' ends, the coarse count
+            default_y(COARSE["n_y"], COARSE["y_max"] if y_max is None else y_max),
+        )
+    return (
+        default_mu(n, lo, top),
+        default_y(N_Y if args.n_y is None else args.n_y, Y_RANGE[1] if y_max is None else y_max),
+    )
+
+
+def _table(m: AdhesionMap, args: argparse.Namespace, files: list[str]) -> Table:
+    t = table_from_result(
+        m,
+        parameters={"files": files},
+        command=command_line(args),
+        title="the adhesion map of line contact (units of the Lennard-Jones law)",
+    )
+    cols = {_COLUMNS.get(k, k): v for k, v in t.columns.items()}
+    params = {_COLUMNS.get(k, k): v for k, v in t.parameters.items()}
+    return Table(cols, params, {}, t.command, t.title)
+
+
+def _ranges(y: np.ndarray, ok: np.ndarray) -> str:
+    """The runs of ``ok`` along ``y`` as ``lo-hi`` ranges (``-`` for none)."""
+    runs = []
+    i = 0
+    while i < ok.size:
+        if ok[i]:
+            j = i
+            while j + 1 < ok.size and ok[j + 1]:
+                j += 1
+            runs.append(f"{y[i]:.3g}-{y[j]:.3g}" if j > i else f"{y[i]:.3g}")
+            i = j + 1
+        else:
+            i += 1
+    return ", ".join(runs) if runs else "-"
+
+
+def _summary(m: AdhesionMap) -> Table:
+    """One row per mu: the pull-off, the onset of repulsion, each model's range of y."""
+    mu = np.asarray(m.mu).ravel()
+    y = np.asarray(m.y)
+    cols: dict[str, np.ndarray] = {
+        "mu": mu,
+        "maugis_parameter": np.asarray(m.maugis_parameter).ravel(),
+        "F_pulloff": np.asarray(m.F_pulloff).ravel(),
+        "y_onset": np.asarray(m.y_onset).ravel(),
+    }
+    for name in MODELS:
+        ok = m.agrees(name)
+        cols[f"{name}_holds_at_y"] = np.array([_ranges(y, row) for row in ok], dtype=object)
+    return Table(
+        cols,
+        {"tol": m.tol},
+        title=f"the adhesion map: loads above pull-off over |F_pulloff| where each model is "
+        f"within {100 * m.tol:g} % of the full law",
+    )
+
+
+def _cmd_map(args: argparse.Namespace) -> int:
+    from .paper import _formats_arg, _size_arg
+
+    formats = _formats_arg(args.format)
+    size = _size_arg(args.size)
+    mu, y = _grid(args)
+    from ..adhesion_map import adhesion_map
+    from ..figures._style import _mpl
+    from ..figures.adhesion_map import draw
+
+    _mpl()  # matplotlib is there, and the directory, before minutes of computing
+    out = pathlib.Path(args.outdir)
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise ValueError(
+            f"cannot write the map to --outdir {args.outdir!r}: {exc.strerror or exc}"
+        ) from None
+
+    def progress(msg: str) -> None:
+        print(f"computing {msg}", file=sys.stderr)
+
+    m = adhesion_map(mu, y, tol=args.tol, progress=progress)
+    try:
+        paths = draw(m, out, formats, size)
+        data = out / "adhesion_map.csv"
+        files = [str(p) for p in (*paths, data)]
+        write(_table(m, args, files), "csv", data)
+    except OSError as exc:
+        raise ValueError(
+            f"cannot write the map to --outdir {args.outdir!r}: {exc.strerror or exc}"
+        ) from None
+    if args.json:
+        write(_table(m, args, files), "json")
+        return 0
+    print(f"wrote {len(files)} files to {out}/:")
+    for f in files:
+        print(f"  {f}")
+    write(_summary(m), "table")
+    return 0
