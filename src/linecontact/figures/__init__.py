@@ -296,17 +296,7 @@ def push_figures(
     list of pathlib.Path
         The files written, figure by figure, each in the order of ``formats``.
     """
-    _mpl()
-    fmts = check_formats(formats)
-    wh = check_size(size)
-    say = progress if progress is not None else (lambda msg: None)
-    out = pathlib.Path(outdir)
-    out.mkdir(parents=True, exist_ok=True)
-    jobs = _push.jobs()
-    done = _draw(jobs, out, fmts, wh, say)
-    written = [p for job in jobs for p in done[job.stem]]
-    say(f"wrote {len(written)} files to {out}")
-    return written
+    return _draw_in_one(_push.jobs, outdir, formats, size, progress)
 
 
 def extra_figures(
@@ -329,13 +319,26 @@ def extra_figures(
     list of pathlib.Path
         The files written, figure by figure, each in the order of ``formats``.
     """
+    return _draw_in_one(
+        lambda: _push.jobs() + _adhesion_map.jobs(), outdir, formats, size, progress
+    )
+
+
+def _draw_in_one(
+    make_jobs: Callable[[], list[Job]],
+    outdir: str | os.PathLike,
+    formats: str | Iterable[str],
+    size: Sequence[float],
+    progress: Callable[[str], object] | None,
+) -> list[pathlib.Path]:
+    """Check the options, then draw ``make_jobs()`` in this process into ``outdir``."""
     _mpl()
     fmts = check_formats(formats)
     wh = check_size(size)
     say = progress if progress is not None else (lambda msg: None)
     out = pathlib.Path(outdir)
     out.mkdir(parents=True, exist_ok=True)
-    jobs = _push.jobs() + _adhesion_map.jobs()
+    jobs = make_jobs()
     done = _draw(jobs, out, fmts, wh, say)
     written = [p for job in jobs for p in done[job.stem]]
     say(f"wrote {len(written)} files to {out}")
