@@ -7,7 +7,8 @@ length over ``E h``, stresses over ``E``; compressive load positive):
   :func:`pull_off`, :func:`load_curve` -- normal loading with Maugis--Dugdale adhesion;
 - :func:`sliding_initiation`, :func:`steady_rolling` (and their ``_coulomb`` counterparts)
   -- tangential loading with a constant friction stress (:mod:`linecontact.tangential`;
-  forces over ``E a``);
+  forces over ``E a``); :func:`tangential_history`, :func:`cyclic_loss` (and their
+  ``_coulomb`` counterparts) -- load histories with memory and the loss per cycle;
 - :func:`sliding_contact`, :func:`sliding_contact_for_load`, :func:`sliding_pull_off` --
   steady sliding with different trailing and leading adhesion (:mod:`linecontact.sliding`);
 - :mod:`linecontact.reference` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14);
@@ -19,9 +20,11 @@ length over ``E h``, stresses over ``E``; compressive load positive):
 from ._version import __version__
 from .cylinder import (
     Cylinder,
+    cylinder_cyclic_loss,
     cylinder_push,
     cylinder_sliding_initiation,
     cylinder_steady_rolling,
+    cylinder_tangential_history,
 )
 from .errors import ConvergenceError, CouplingWarning, ModelValidityWarning, NoEquilibriumError
 from .materials import (
@@ -50,10 +53,14 @@ from .sliding import (
     sliding_pull_off,
 )
 from .tangential import (
+    cyclic_loss,
+    cyclic_loss_coulomb,
     sliding_initiation,
     sliding_initiation_coulomb,
     steady_rolling,
     steady_rolling_coulomb,
+    tangential_history,
+    tangential_history_coulomb,
 )
 
 __all__ = [
@@ -73,9 +80,13 @@ __all__ = [
     "compliance_constants",
     "composite_modulus",
     "contact_for_load",
+    "cyclic_loss",
+    "cyclic_loss_coulomb",
+    "cylinder_cyclic_loss",
     "cylinder_push",
     "cylinder_sliding_initiation",
     "cylinder_steady_rolling",
+    "cylinder_tangential_history",
     "dundurs_beta",
     "equilibria",
     "hertz_load",
@@ -94,6 +105,8 @@ __all__ = [
     "sliding_pull_off",
     "steady_rolling",
     "steady_rolling_coulomb",
+    "tangential_history",
+    "tangential_history_coulomb",
     "tip_push",
     "zero_width_load",
 ]

@@ -45,8 +45,12 @@ __all__ = [
     "CylinderLennardJonesContact",
     "CylinderLennardJonesPullOff",
     "CylinderPullOff",
+    "CylinderCyclicLoss",
     "CylinderTangential",
+    "CylinderTangentialHistory",
+    "cylinder_cyclic_loss",
     "cylinder_sliding_initiation",
+    "cylinder_tangential_history",
     "cylinder_steady_rolling",
 ]
 
@@ -1026,4 +1030,233 @@ def cylinder_push(
         state=p.state,
         length=length,
         nondimensional=p,
+    )
+
+
+# --------------------------------------------------------------------------------------------
+# tangential load histories and cyclic loading in SI units
+
+
+def _history_contact(cylinder, normal_load, friction_stress, friction_coefficient):
+    """(F, a [m], friction scale, coulomb?) for the SI history functions, every input checked."""
+    if not isinstance(cylinder, Cylinder):
+        raise ValueError(
+            f"cylinder must be a linecontact.Cylinder (Cylinder.from_modulus or "
+            f"Cylinder.from_materials), got {cylinder!r}"
+        )
+    if (friction_stress is None) == (friction_coefficient is None):
+        raise ValueError(
+            "give exactly one of friction_stress (constant tau0 [Pa]) or "
+            "friction_coefficient (Coulomb mu)"
+        )
+    coulomb = friction_coefficient is not None
+    if coulomb:
+        F = scalar("normal_load", normal_load)
+        fr = _domain.scalar("friction_coefficient", friction_coefficient, "mu")
+        if cylinder.cohesive_stress != 0:
+            raise ValueError(
+                "Coulomb friction is the macro-scale counterpart for the non-adhesive Hertz "
+                "contact: use a Cylinder without adhesion (cohesive_stress = 0), or give "
+                "friction_stress"
+            )
+    else:
+        F = scalar("normal_load", normal_load, low=-np.inf)
+        fr = scalar("friction_stress", friction_stress)
+        _domain.check_si("friction_stress", fr, cylinder.modulus, "tau0_over_E", "Pa")
+    contact = cylinder._for_load("normal_load", F)
+    a = float(contact.contact_half_width)
+    return F, a, fr, coulomb, contact
+
+
+@dataclass(frozen=True)
+class CylinderTangentialHistory:
+    """A tangential load history of a :class:`~linecontact.cylinder.Cylinder`, in SI units.
+
+    Attributes
+    ----------
+    friction : str
+        ``"constant"`` or ``"coulomb"``.
+    normal_load : float
+        ``F`` [N/m].
+    contact_half_width : float
+        ``a`` [m] (fixed along the history).
+    full_slip_load : float
+        ``2 a tau0`` or ``mu F`` [N/m].
+    tangential_load : ndarray
+        ``T`` [N/m] at the end of each step.
+    stick_zone_half_width : ndarray
+        ``c`` [m] (``nan`` when sliding).
+    displacement : ndarray
+        ``D`` [m], datum at depth ``a`` (see :mod:`linecontact.tangential.history`).
+    dissipation : ndarray
+        Energy dissipated in each step per unit length [J/m] (``nan`` for a sliding step).
+    state : ndarray of str
+    nondimensional : TangentialHistory or CoulombTangentialHistory
+        With the diagnostics, and ``traction``, ``slip`` and ``zones``.
+    """
+
+    friction: str
+    normal_load: float
+    contact_half_width: float
+    full_slip_load: float
+    tangential_load: NDArray
+    stick_zone_half_width: NDArray
+    displacement: NDArray
+    dissipation: NDArray
+    state: NDArray
+    nondimensional: Any = field(repr=False)
+
+
+def cylinder_tangential_history(
+    cylinder,
+    normal_load: float,
+    tangential_load: ArrayLike,
+    *,
+    friction_stress: float | None = None,
+    friction_coefficient: float | None = None,
+    method: str = "closed-form",
+) -> CylinderTangentialHistory:
+    """The states of a :class:`~linecontact.cylinder.Cylinder` along a tangential history.
+
+    Parameters
+    ----------
+    cylinder : Cylinder
+    normal_load : float
+        ``F`` [N/m], fixed; ``a`` is that of the stable normal contact.
+    tangential_load : array_like, 1-D
+        ``T`` [N/m] at the end of each step, either sign, starting from 0.
+    friction_stress, friction_coefficient : float
+        Exactly one: ``tau0`` [Pa] (constant friction stress) or ``mu`` (Coulomb, Hertz).
+    method : {"closed-form", "incremental"}
+        As in :func:`linecontact.tangential_history`.
+
+    Returns
+    -------
+    CylinderTangentialHistory
+
+    Examples
+    --------
+    >>> from linecontact import Cylinder
+    >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
+    >>> h = cylinder_tangential_history(cyl, 1.0, [1.0, -1.0, 1.0], friction_stress=1e9)
+    >>> h.state.tolist()
+    ['stick-slip', 'stick-slip', 'stick-slip']
+    >>> bool(h.dissipation[1] > 0)
+    True
+    """
+    from .tangential.history import tangential_history, tangential_history_coulomb
+
+    F, a, fr, coulomb, _ = _history_contact(
+        cylinder, normal_load, friction_stress, friction_coefficient
+    )
+    E = cylinder.modulus
+    T = check_array("tangential_load", tangential_load, low=-np.inf)
+    if coulomb:
+        h: Any = tangential_history_coulomb(fr, a / cylinder.radius, T / (fr * F), method=method)
+        full = fr * F
+    else:
+        h = tangential_history(fr / E, T / (E * a), method=method)
+        full = 2 * a * fr
+    return CylinderTangentialHistory(
+        "coulomb" if coulomb else "constant",
+        F,
+        a,
+        full,
+        np.asarray(h.T_over_Ea) * E * a,
+        np.asarray(h.c_over_a) * a,
+        np.asarray(h.displacement_over_a) * a,
+        np.asarray(h.dissipation_over_Ea2) * E * a * a,
+        h.state,
+        h,
+    )
+
+
+@dataclass(frozen=True)
+class CylinderCyclicLoss:
+    """Cyclic tangential loading of a :class:`~linecontact.cylinder.Cylinder`, in SI units.
+
+    Attributes
+    ----------
+    friction : str
+    normal_load, contact_half_width, full_slip_load : float
+        ``F`` [N/m], ``a`` [m], ``2 a tau0`` or ``mu F`` [N/m].
+    amplitude : ndarray or float
+        ``T*`` [N/m].
+    energy_per_cycle : ndarray or float
+        Energy dissipated per cycle per unit length [J/m] (``nan`` when sliding).
+    stick_zone_half_width : ndarray or float
+        ``c`` [m] at the peaks (``nan`` when sliding).
+    state : ndarray of str or str
+    nondimensional : CyclicLoss or CoulombCyclicLoss
+    """
+
+    friction: str
+    normal_load: float
+    contact_half_width: float
+    full_slip_load: float
+    amplitude: NDArray | float
+    energy_per_cycle: NDArray | float
+    stick_zone_half_width: NDArray | float
+    state: NDArray | str
+    nondimensional: Any = field(repr=False)
+
+
+def cylinder_cyclic_loss(
+    cylinder,
+    normal_load: float,
+    amplitude: ArrayLike,
+    *,
+    friction_stress: float | None = None,
+    friction_coefficient: float | None = None,
+    method: str = "closed-form",
+) -> CylinderCyclicLoss:
+    """Energy dissipated per cycle between ``-T*`` and ``+T*`` (SI units).
+
+    Parameters
+    ----------
+    cylinder : Cylinder
+    normal_load : float
+        ``F`` [N/m], fixed.
+    amplitude : array_like
+        ``T*`` [N/m], ``> 0``; at or above full slip the state is ``"sliding"``.
+    friction_stress, friction_coefficient : float
+        Exactly one: ``tau0`` [Pa] or Coulomb ``mu``.
+    method : {"closed-form", "incremental"}
+        As in :func:`linecontact.cyclic_loss`.
+
+    Returns
+    -------
+    CylinderCyclicLoss
+
+    Examples
+    --------
+    >>> from linecontact import Cylinder
+    >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
+    >>> w = cylinder_cyclic_loss(cyl, 1.0, [0.5, 1.0], friction_stress=1e9)
+    >>> bool(w.energy_per_cycle[1] > w.energy_per_cycle[0] > 0)
+    True
+    """
+    from .tangential.history import cyclic_loss, cyclic_loss_coulomb
+
+    F, a, fr, coulomb, _ = _history_contact(
+        cylinder, normal_load, friction_stress, friction_coefficient
+    )
+    E = cylinder.modulus
+    A = check_array("amplitude", amplitude, low=0.0, low_inclusive=False)
+    if coulomb:
+        w: Any = cyclic_loss_coulomb(fr, a / cylinder.radius, A / (fr * F), method=method)
+        full = fr * F
+    else:
+        w = cyclic_loss(fr / E, A / (E * a), method=method)
+        full = 2 * a * fr
+    return CylinderCyclicLoss(
+        "coulomb" if coulomb else "constant",
+        F,
+        a,
+        full,
+        _scalar(np.multiply(w.T_amplitude_over_Ea, E * a)),
+        _scalar(np.multiply(w.W_over_Ea2, E * a * a)),
+        _scalar(np.multiply(w.c_over_a, a)),
+        w.state,
+        w,
     )

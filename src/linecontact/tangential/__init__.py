@@ -1,4 +1,7 @@
-r"""Tangential loading of the line contact: initiation of sliding and steady rolling.
+r"""Tangential loading of the line contact: initiation of sliding, steady rolling, histories.
+
+Load histories with memory (reversals, hysteresis loops, the energy dissipated per cycle)
+are in :mod:`linecontact.tangential.history` (``docs/load-histories.md``).
 
 Paper Eqs (15)--(17) (initiation of sliding, Mindlin-type) and Eqs (23)--(29) (steady
 rolling, Carter-type), in the uncoupled case ``B = 0`` (Eq 7): the shear tractions do not
@@ -85,6 +88,16 @@ K. L. Johnson, *Contact Mechanics*, Cambridge University Press (1985), Ch. 7
 """
 
 from ._core import N_COULOMB, SIZES
+from .history import (
+    CoulombCyclicLoss,
+    CoulombTangentialHistory,
+    CyclicLoss,
+    TangentialHistory,
+    cyclic_loss,
+    cyclic_loss_coulomb,
+    tangential_history,
+    tangential_history_coulomb,
+)
 from .initiation import (
     CoulombSlidingInitiation,
     SlidingInitiation,
@@ -96,6 +109,14 @@ from .rolling import CoulombRolling, SteadyRolling, steady_rolling, steady_rolli
 __all__ = [
     "N_COULOMB",
     "SIZES",
+    "CoulombCyclicLoss",
+    "CoulombTangentialHistory",
+    "CyclicLoss",
+    "TangentialHistory",
+    "cyclic_loss",
+    "cyclic_loss_coulomb",
+    "tangential_history",
+    "tangential_history_coulomb",
     "CoulombRolling",
     "CoulombSlidingInitiation",
     "SlidingInitiation",
