@@ -5,6 +5,7 @@ records; the contracted keys are there; every number has a unit; a file written 
 is the text printed on stdout and nothing else is left in its directory.
 """
 
+import csv
 import json
 import math
 
@@ -17,6 +18,38 @@ SI = ["--radius", "50e-9", "--modulus", "100e9", "--sigma0", "1e9", "--h", "0.5e
 SI2 = ["--radius", "50e-9", "--modulus", "100e9", "--sigma0", "1e9", "--h2", "0.5e-9"]
 
 CASES = {
+    ("cycle", "nd"): (
+        ["cycle", "--tau0-over-E", "0.01", "--T-amplitude-over-Ea", "0.005", "0.015", "0.03"],
+        ["T_amplitude_over_Ea", "W_over_Ea2", "c_over_a", "state"],
+        3,
+    ),
+    ("cycle", "si"): (
+        [
+            "cycle",
+            *SI,
+            "--load",
+            "1",
+            "--tau0",
+            "1e9",
+            "--tangential-amplitude",
+            "0.5",
+            "2",
+            "--length",
+            "5e-6",
+        ],
+        ["T_amplitude_over_Ea", "W_over_Ea2", "c_over_a", "W_J_per_m", "c_m", "W_total_J"],
+        2,
+    ),
+    ("history", "nd"): (
+        ["history", "--tau0-over-E", "0.01", "--T-over-Ea", "0.016", "-0.008", "0.004"],
+        ["step", "T_over_Ea", "state", "c_over_a", "slip_direction", "memory", "zones"],
+        3,
+    ),
+    ("history", "si"): (
+        ["history", *SI, "--load", "1", "--tau0", "1e9", "--tangential-load", "1", "-1", "1"],
+        ["step", "T_N_per_m", "c_m", "displacement_m", "dissipation_J_per_m", "zones"],
+        3,
+    ),
     ("normal", "nd"): (
         ["normal", "--R-over-h", "100", "--sigma0-over-E", "0.01", "--a-over-R", "0.01", "0.05"],
         ["a_over_R", "c_over_R", "F_over_Eh", "c_over_a", "stable", "state"],
@@ -199,6 +232,8 @@ def _csv_value(s):
         return None
     if s in ("true", "false"):
         return s == "true"
+    if s.startswith("["):  # a list (the zones of a history) as its JSON text
+        return json.loads(s)
     try:
         v = float(s)
     except ValueError:
@@ -213,10 +248,9 @@ def parse_csv(text):
         key, value = lines.pop(0)[2:].split(": ", 1)
         head[key] = json.loads(value)
     assert list(head) == ["linecontact", "command", "parameters", "units"]
-    keys = lines[0].split(",")
-    return head, [
-        dict(zip(keys, map(_csv_value, row.split(",")), strict=True)) for row in lines[1:]
-    ]
+    rows = list(csv.reader(lines))
+    keys = rows[0]
+    return head, [dict(zip(keys, map(_csv_value, row), strict=True)) for row in rows[1:]]
 
 
 def same(a, b):

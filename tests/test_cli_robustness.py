@@ -38,8 +38,8 @@ def strict_json(text):
     [
         (
             [],
-            r"give a command: normal, pulloff, curve, slide-init, roll, slide, push, paper, "
-            r"figures, map or cite",
+            r"give a command: normal, pulloff, curve, slide-init, roll, cycle, history, slide, "
+            r"push, paper, figures, map or cite",
         ),
         (
             ["curve", *G, "-o", "/nonexistent-dir/curve.csv"],

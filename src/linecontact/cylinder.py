@@ -1162,7 +1162,7 @@ def cylinder_tangential_history(
         F,
         a,
         full,
-        np.asarray(h.T_over_Ea) * E * a,
+        T.reshape(-1),  # as given (not back from T/(E a))
         np.asarray(h.c_over_a) * a,
         np.asarray(h.displacement_over_a) * a,
         np.asarray(h.dissipation_over_Ea2) * E * a * a,
@@ -1254,7 +1254,7 @@ def cylinder_cyclic_loss(
         F,
         a,
         full,
-        _scalar(np.multiply(w.T_amplitude_over_Ea, E * a)),
+        _scalar(A + 0 * np.asarray(w.W_over_Ea2)),  # as given, in the result's shape
         _scalar(np.multiply(w.W_over_Ea2, E * a * a)),
         _scalar(np.multiply(w.c_over_a, a)),
         w.state,

@@ -120,10 +120,12 @@ class Table:
 #: Unit suffixes of the SI names, longest first (``F_N_per_m``, ``M_total_N_m``, ``a_m``).
 UNIT_SUFFIXES = (
     ("_J_per_m2", "J/m^2"),
+    ("_J_per_m", "J/m"),
     ("_N_per_m", "N/m"),
     ("_N_m", "N m"),
     ("_Pa", "Pa"),
     ("_N", "N"),
+    ("_J", "J"),
     ("_m", "m"),
 )
 
@@ -215,11 +217,12 @@ def _jsonable(value: Any) -> Any:
 # column encoders: one list of strings per column, built with whole-array operations
 
 
-def _encode(v: NDArray[Any], missing: str, text: Any) -> list[str]:
+def _encode(v: NDArray[Any], missing: str, text: Any, as_list: Any) -> list[str]:
     """One column as strings, for the JSON and the CSV writers.
 
     Booleans ``true``/``false``, numbers in full precision (the shortest ``repr`` that
-    round-trips), non-finite numbers as ``missing``, strings and None by ``text``.
+    round-trips), non-finite numbers as ``missing``, strings and None by ``text``, lists
+    (a column of per-point lists, such as the zones of a history) by ``as_list``.
     """
     kind = v.dtype.kind
     if kind == "b":
@@ -232,20 +235,27 @@ def _encode(v: NDArray[Any], missing: str, text: Any) -> list[str]:
         for i in np.flatnonzero(~np.isfinite(vals)):
             out[i] = missing
         return out
-    return _by_value(v, text)
+    vals = v.tolist()
+    if any(isinstance(x, (list, tuple)) for x in vals):
+        return [
+            as_list(json.dumps(_jsonable(x))) if isinstance(x, (list, tuple)) else text(x)
+            for x in vals
+        ]
+    return _by_value(vals, text)
 
 
 def _json_column(v: NDArray[Any]) -> list[str]:
-    return _encode(v, "null", lambda x: "null" if x is None else json.dumps(str(x)))
+    # a list is written as a JSON array
+    return _encode(v, "null", lambda x: "null" if x is None else json.dumps(str(x)), str)
 
 
 def _csv_column(v: NDArray[Any]) -> list[str]:
-    return _encode(v, "", lambda x: "" if x is None else _csv_quote(str(x)))
+    # a list is written as its JSON text, quoted
+    return _encode(v, "", lambda x: "" if x is None else _csv_quote(str(x)), _csv_quote)
 
 
-def _by_value(v: NDArray[Any], encode: Any) -> list[str]:
+def _by_value(vals: list[Any], encode: Any) -> list[str]:
     """Strings (and None) encoded once per distinct value: such columns have few of them."""
-    vals = v.tolist()
     cache = {x: encode(x) for x in set(vals)}
     return [cache[x] for x in vals]
 

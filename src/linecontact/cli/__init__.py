@@ -1,7 +1,8 @@
 """Command-line interface: a thin shell over the public API.
 
 One module per family of subcommands (:mod:`~linecontact.cli.normal`,
-:mod:`~linecontact.cli.tangential`, :mod:`~linecontact.cli.sliding`,
+:mod:`~linecontact.cli.tangential`, :mod:`~linecontact.cli.history`,
+:mod:`~linecontact.cli.sliding`,
 :mod:`~linecontact.cli.paper`, :mod:`~linecontact.cli.adhesion_map`), the shared options and
 output in :mod:`~linecontact.cli._options`. Every subcommand takes the paper's
 nondimensional groups or SI inputs, prints a readable table, or with ``--json``
@@ -21,6 +22,7 @@ from collections.abc import Sequence
 from .._version import __version__
 from ..errors import ConvergenceError
 from . import adhesion_map as _adhesion_map
+from . import history as _history
 from . import normal as _normal
 from . import paper as _paper
 from . import push as _push
@@ -30,7 +32,10 @@ from ._options import NoPointError, Parser, flag_message, record_flags
 
 __all__ = ["build_parser", "main"]
 
-_COMMANDS = "normal, pulloff, curve, slide-init, roll, slide, push, paper, figures, map or cite"
+_COMMANDS = (
+    "normal, pulloff, curve, slide-init, roll, cycle, history, slide, push, paper, figures, "
+    "map or cite"
+)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -62,6 +67,7 @@ def build_parser() -> argparse.ArgumentParser:
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
     _normal.register(sub)
     _tangential.register(sub)
+    _history.register(sub)
     _sliding.register(sub)
     _push.register(sub)
     _paper.register(sub)

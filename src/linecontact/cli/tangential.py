@@ -193,7 +193,13 @@ def _normal_contact(args: argparse.Namespace, coulomb: bool):
     return args.a_over_R, None, None
 
 
-def _check_friction(args: argparse.Namespace, coulomb: bool) -> None:
+def _check_friction(
+    args: argparse.Namespace,
+    coulomb: bool,
+    coulomb_load: str = "T_over_muF",
+    load: str = "T_over_Ea",
+) -> None:
+    """The friction flags against the law; ``coulomb_load`` is the Coulomb-only load flag."""
     if coulomb:
         if _given(args, "tau0_over_E", "tau0"):
             raise ValueError(
@@ -204,8 +210,9 @@ def _check_friction(args: argparse.Namespace, coulomb: bool) -> None:
     else:
         if args.mu is not None:
             raise ValueError("--mu is the Coulomb friction coefficient: add --friction coulomb")
-        if args.T_over_muF is not None:
-            raise ValueError("--T-over-muF is for --friction coulomb; use --T-over-Ea")
+        if getattr(args, coulomb_load) is not None:
+            flag, other = (f"--{k.replace('_', '-')}" for k in (coulomb_load, load))
+            raise ValueError(f"{flag} is for --friction coulomb; use {other}")
 
 
 def _run(args: argparse.Namespace, rolling: bool) -> int:

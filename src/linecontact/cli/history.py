@@ -1,0 +1,326 @@
+"""The subcommands of tangential load histories: ``cycle`` and ``history``.
+
+A thin shell over :mod:`linecontact.tangential.history` and the SI functions of
+:mod:`linecontact.cylinder`. ``cycle`` prints one record per amplitude (``W_over_Ea2``, the
+energy dissipated per cycle per unit length over ``E a^2``, and ``c_over_a``, the stick zone
+at the peaks; ``state`` ``"sliding"`` at or above full slip, with the loss null);
+``history`` one record per step (the stick zone, the slip direction, the turning points
+held, the displacement, the energy dissipated in the step and the ``zones``). The friction
+law and the contact are in ``parameters``.
+"""
+
+from __future__ import annotations
+
+import argparse
+from typing import Any
+
+import numpy as np
+
+from .. import tangential as tg
+from ..cylinder import Cylinder, cylinder_cyclic_loss, cylinder_tangential_history
+from ..output import table_from_result
+from ._options import add_command, add_groups, add_output_options, command_line, emit, si_parameters
+from .tangential import _check_friction, _given, _normal_contact
+
+__all__ = ["register"]
+
+_DESCRIPTION = {
+    "cycle": (
+        "Cyclic tangential loading between -T* and +T* at a fixed normal load: the energy "
+        "dissipated per cycle per unit length (W_over_Ea2 = W/(E a^2)) and the stick zone at "
+        "the peaks (c_over_a). Constant friction stress tau0 (W ~ T*^4 at small amplitude) or "
+        "Coulomb friction on the Hertz contact (--friction coulomb, W ~ T*^3). An amplitude "
+        "at or above full slip (2 a tau0, mu F) is state sliding, its loss not computed."
+    ),
+    "history": (
+        "An arbitrary tangential load history from rest (one load per step, the load moving "
+        "monotonically between them): per step the stick zone, the slip direction, the "
+        "turning points held in memory (Masing rules), the displacement, the energy "
+        "dissipated and the zones (stick, locked slip, slipping) of 0 <= x/a <= 1."
+    ),
+}
+_EXAMPLES = {
+    "cycle": [
+        "linecontact cycle --tau0-over-E 0.01 --T-amplitude-over-Ea 0.005 0.015",
+        "linecontact cycle --friction coulomb --mu 0.3 --a-over-R 0.01 "
+        "--T-amplitude-over-muF 0.1 0.5 --json",
+        "linecontact cycle --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 --load 1 "
+        "--tau0 1e9 --tangential-amplitude 0.5 2 --length 5e-6",
+    ],
+    "history": [
+        "linecontact history --tau0-over-E 0.01 --T-over-Ea 0.016 -0.008 0.004 0.018",
+        "linecontact history --friction coulomb --mu 0.3 --a-over-R 0.01 "
+        "--T-over-muF 0.5 -0.2 0.3 --json",
+        "linecontact history --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 --load 1 "
+        "--tau0 1e9 --tangential-load 1 -1 1",
+    ],
+}
+
+
+def register(sub: Any) -> None:
+    """Add ``cycle`` and ``history`` to the subparsers ``sub`` of ``linecontact``."""
+    for name, summary in (
+        ("cycle", "cyclic tangential loading: energy dissipated per cycle, stick zone"),
+        ("history", "a tangential load history with memory: zones, slip, energy per step"),
+    ):
+        p = add_command(sub, name, summary, _DESCRIPTION[name], _EXAMPLES[name])
+        fr = p.add_argument_group("friction")
+        fr.add_argument(
+            "--friction",
+            choices=("constant", "coulomb"),
+            default="constant",
+            help="constant friction stress tau0 (the nano-scale law) or Coulomb friction mu on "
+            "the non-adhesive Hertz contact",
+        )
+        fr.add_argument(
+            "--tau0-over-E", type=float, metavar="T", help="friction stress over E, > 0"
+        )
+        fr.add_argument("--tau0", type=float, help="friction stress tau0 [Pa] (SI inputs)")
+        fr.add_argument("--mu", type=float, help="friction coefficient, > 0 (--friction coulomb)")
+        ld = p.add_argument_group("tangential loads (exactly one)")
+        if name == "cycle":
+            ld.add_argument(
+                "--T-amplitude-over-Ea",
+                type=float,
+                nargs="+",
+                metavar="A",
+                help="amplitude T*/(E a), > 0",
+            )
+            ld.add_argument(
+                "--T-amplitude-over-muF",
+                type=float,
+                nargs="+",
+                metavar="Q",
+                help="amplitude T*/(mu F), > 0 (Coulomb)",
+            )
+            ld.add_argument(
+                "--tangential-amplitude",
+                type=float,
+                nargs="+",
+                metavar="T",
+                help="amplitude T* [N/m] (SI inputs)",
+            )
+        else:
+            ld.add_argument(
+                "--T-over-Ea",
+                type=float,
+                nargs="+",
+                metavar="T",
+                help="the loads T/(E a) at the ends of the steps, either sign",
+            )
+            ld.add_argument(
+                "--T-over-muF",
+                type=float,
+                nargs="+",
+                metavar="T",
+                help="the loads T/(mu F), either sign (Coulomb)",
+            )
+            ld.add_argument(
+                "--tangential-load",
+                type=float,
+                nargs="+",
+                metavar="T",
+                help="the loads T [N/m] (SI inputs)",
+            )
+        add_groups(p)
+        nc = p.add_argument_group("normal contact (the contact half-width a)")
+        nc.add_argument("--load", type=float, help="normal load per unit length F [N/m] (SI)")
+        nc.add_argument(
+            "--F-over-Eh",
+            type=float,
+            metavar="F",
+            help="normal load over E h (with --R-over-h and --sigma0-over-E)",
+        )
+        nc.add_argument(
+            "--a-over-R",
+            type=float,
+            metavar="A",
+            help="contact half-width over R (Coulomb: the Hertz half-width)",
+        )
+        p.add_argument(
+            "--method",
+            choices=("closed-form", "incremental"),
+            default="closed-form",
+            help="the Masing rules in closed form, or the stick condition solved step by step "
+            "by collocation (a check: slower)",
+        )
+        add_output_options(p)
+        p.set_defaults(func=_cmd_cycle if name == "cycle" else _cmd_history)
+
+
+def _inputs(args: argparse.Namespace, nd: str, coulomb_nd: str, si: str):
+    """(law, state flag, values, a_over_R, F_over_Eh, Cylinder or None), every flag checked."""
+    coulomb = args.friction == "coulomb"
+    _check_friction(args, coulomb, coulomb_nd, nd)
+    given = _given(args, nd, coulomb_nd, si)
+    flags = "--" + nd.replace("_", "-"), "--" + coulomb_nd.replace("_", "-")
+    si_flag = "--" + si.replace("_", "-")
+    if len(given) != 1:
+        raise ValueError(f"give exactly one of {flags[0]}, {flags[1]} (Coulomb) or {si_flag} [N/m]")
+    (state,) = given
+    A, F_over_Eh, cyl = _normal_contact(args, coulomb)
+    if cyl is None and state == si:
+        raise ValueError(
+            f"{si_flag} [N/m] is an SI input: give --radius, the materials and --load too, or "
+            f"use {flags[0]}"
+        )
+    values = np.asarray(getattr(args, state), float)
+    return coulomb, state, values, A, F_over_Eh, cyl
+
+
+def _friction_nd(args: argparse.Namespace, coulomb: bool, A) -> dict[str, Any]:
+    if coulomb:
+        if A is None:
+            raise ValueError(
+                "Coulomb friction needs the Hertz half-width: give --a-over-R (or --R-over-h "
+                "--sigma0-over-E 0 --F-over-Eh, or SI inputs)"
+            )
+        return {}
+    if args.tau0 is not None:
+        raise ValueError(
+            "--tau0 [Pa] is an SI input: give --radius, the materials and --load too, or use "
+            "--tau0-over-E"
+        )
+    if args.tau0_over_E is None:
+        raise ValueError("give the friction stress --tau0-over-E (or --friction coulomb --mu)")
+    return {}
+
+
+def _params(args, coulomb: bool, A, F_over_Eh) -> dict[str, Any]:
+    params: dict[str, Any] = {"friction": "coulomb" if coulomb else "constant"}
+    if A is not None:
+        params["a_over_R"] = float(A)
+    if F_over_Eh is not None:
+        params.update(R_over_h=args.R_over_h, sigma0_over_E=args.sigma0_over_E, F_over_Eh=F_over_Eh)
+    return params
+
+
+def _si_friction(args: argparse.Namespace, coulomb: bool, cyl: Cylinder) -> dict[str, Any]:
+    if coulomb:
+        return dict(friction_coefficient=args.mu)
+    if len(_given(args, "tau0", "tau0_over_E")) != 1:
+        raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
+    return dict(
+        friction_stress=args.tau0 if args.tau0 is not None else args.tau0_over_E * cyl.modulus
+    )
+
+
+def _si_params(args, cyl, res, fr) -> dict[str, Any]:
+    params: dict[str, Any] = {"friction": res.friction}
+    params.update(si_parameters(args, cyl))
+    params.update(
+        F_N_per_m=args.load,
+        a_m=res.contact_half_width,
+        a_over_R=res.contact_half_width / cyl.radius,
+        T_full_slip_N_per_m=res.full_slip_load,
+    )
+    if "friction_coefficient" in fr:
+        params["mu"] = fr["friction_coefficient"]
+    else:
+        params["tau0_Pa"] = fr["friction_stress"]
+    if args.length is not None:
+        params["F_total_N"] = args.load * args.length
+    return params
+
+
+def _cmd_cycle(args: argparse.Namespace) -> int:
+    coulomb, state, values, A, F_over_Eh, cyl = _inputs(
+        args, "T_amplitude_over_Ea", "T_amplitude_over_muF", "tangential_amplitude"
+    )
+    if cyl is not None:
+        fr = _si_friction(args, coulomb, cyl)
+        E = cyl.modulus
+        a = cyl.contact(load=args.load).contact_half_width
+        if state == "T_amplitude_over_Ea":
+            amp = values * E * a
+        elif state == "T_amplitude_over_muF":
+            amp = values * args.mu * args.load
+        else:
+            amp = values
+        res = cylinder_cyclic_loss(cyl, args.load, amp, **fr, method=args.method)
+        extra: dict[str, Any] = {
+            "T_amplitude_N_per_m": res.amplitude,
+            "W_J_per_m": res.energy_per_cycle,
+            "c_m": res.stick_zone_half_width,
+        }
+        if args.length is not None:
+            extra["W_total_J"] = np.multiply(res.energy_per_cycle, args.length)
+        table = _cycle_table(args, res.nondimensional, _si_params(args, cyl, res, fr), extra)
+        emit(args, table)
+        return 0
+    _friction_nd(args, coulomb, A)
+    if coulomb:
+        Q = values if state == "T_amplitude_over_muF" else values / ((np.pi / 4) * args.mu * A)
+        r: Any = tg.cyclic_loss_coulomb(args.mu, A, Q, method=args.method)
+    else:
+        r = tg.cyclic_loss(args.tau0_over_E, values, method=args.method)
+    emit(args, _cycle_table(args, r, _params(args, coulomb, A, F_over_Eh), {}))
+    return 0
+
+
+def _cycle_table(args, r, params, extra):
+    show = ["T_amplitude_over_Ea", "T_amplitude_over_T_full_slip", "W_over_Ea2", "c_over_a"]
+    show += ["state", *extra]
+    law = "Coulomb friction" if params["friction"] == "coulomb" else "constant friction stress"
+    return table_from_result(
+        r,
+        columns=extra,
+        parameters=params,
+        command=command_line(args),
+        title=f"cyclic tangential loading, {law} ({r.method}): energy dissipated per cycle",
+        show=show,
+    )
+
+
+def _cmd_history(args: argparse.Namespace) -> int:
+    coulomb, state, values, A, F_over_Eh, cyl = _inputs(
+        args, "T_over_Ea", "T_over_muF", "tangential_load"
+    )
+    if cyl is not None:
+        fr = _si_friction(args, coulomb, cyl)
+        E = cyl.modulus
+        a = cyl.contact(load=args.load).contact_half_width
+        if state == "T_over_Ea":
+            T = values * E * a
+        elif state == "T_over_muF":
+            T = values * args.mu * args.load
+        else:
+            T = values
+        res = cylinder_tangential_history(cyl, args.load, T, **fr, method=args.method)
+        extra: dict[str, Any] = {
+            "T_N_per_m": res.tangential_load,
+            "c_m": res.stick_zone_half_width,
+            "displacement_m": res.displacement,
+            "dissipation_J_per_m": res.dissipation,
+        }
+        if args.length is not None:
+            extra["dissipation_total_J"] = res.dissipation * args.length
+        h = res.nondimensional
+        table = _history_table(args, h, _si_params(args, cyl, res, fr), extra)
+        emit(args, table)
+        return 0
+    _friction_nd(args, coulomb, A)
+    if coulomb:
+        Q = values if state == "T_over_muF" else values / ((np.pi / 4) * args.mu * A)
+        h = tg.tangential_history_coulomb(args.mu, A, Q, method=args.method)
+    else:
+        h = tg.tangential_history(args.tau0_over_E, values, method=args.method)
+    emit(args, _history_table(args, h, _params(args, coulomb, A, F_over_Eh), {}))
+    return 0
+
+
+def _history_table(args, h, params, extra):
+    zones = np.empty(h.step.size, dtype=object)
+    zones[:] = [[list(z) for z in zs] for zs in h.zones()]
+    cols = {**extra, "zones": zones}
+    show = ["step", "T_over_Ea", "T_over_T_full_slip", "state", "c_over_a", "slip_direction"]
+    show += ["memory", "displacement_over_a", "dissipation_over_Ea2", *extra]
+    law = "Coulomb friction" if params["friction"] == "coulomb" else "constant friction stress"
+    return table_from_result(
+        h,
+        columns=cols,
+        parameters=params,
+        command=command_line(args),
+        title=f"tangential load history, {law} ({h.method})",
+        show=show,
+    )
