@@ -15,6 +15,7 @@ import linecontact as lc  # noqa: E402
 import linecontact.figures as figs  # noqa: E402
 from linecontact.cli import main  # noqa: E402
 from linecontact.figures import adhesion_map as map_figs  # noqa: E402
+from linecontact.figures import history as history_figs  # noqa: E402
 from linecontact.figures import push as push_figs  # noqa: E402
 from linecontact.figures._style import Run  # noqa: E402
 
@@ -84,14 +85,16 @@ def test_lateral_force_rises_from_onset_to_the_steady_resistances(built):
     assert np.all(np.diff(qs) >= 0) and np.all(np.diff(qr) >= 0)
 
 
-def test_the_figures_command_writes_the_three_files_and_the_map(tmp_path, capsys, monkeypatch):
+def test_the_figures_command_writes_the_push_history_and_map_files(tmp_path, capsys, monkeypatch):
     # the adhesion map on a grid smaller still than its coarse one (its own tests are in
     # test_adhesion_map.py)
     tiny = {"n_mu": 2, "mu_min": 0.01, "mu_max": 0.02, "n_y": 5, "y_max": 1.0}
     monkeypatch.setattr(map_figs, "COARSE", tiny)
     assert main(["figures", "--outdir", str(tmp_path)]) == 0
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
-        [f"{s}.png" for s in STEMS] + ["adhesion_map.png"]
+        [f"{s}.png" for s in STEMS]
+        + [f"{j.stem}.png" for j in history_figs.jobs()]
+        + ["adhesion_map.png"]
     )
     assert main(["figures", "--outdir", str(tmp_path), "--format", "gif"]) == 2
     assert "error:" in capsys.readouterr().err

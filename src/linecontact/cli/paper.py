@@ -268,12 +268,15 @@ def register(sub) -> None:
     fi = sub.add_parser(
         "figures",
         help="draw the figures beyond the paper: the pushed fibre's motion maps and force, "
-        "the adhesion map",
+        "load-history loops and loss, the adhesion map",
         description="Draw the figures of the pushed fibre (docs/push.md): the first motion "
         "over the push height and the hysteresis or the friction stress, with the boundary "
-        "H*, and the lateral force against the push's progress (push01_*.png, ...); and the "
-        "adhesion map of line contact on a coarse grid (adhesion_map.png; about 10 s: "
-        "`linecontact map` draws it on a finer grid, with its data).",
+        "H*, and the lateral force against the push's progress (push01_*.png, ...); of "
+        "tangential load histories (docs/load-histories.md): the hysteresis loops, the loss "
+        "per cycle against the amplitude for both friction laws, the traction and the slip "
+        "after reversals (history01_*.png, ...); and the adhesion map of line contact on a "
+        "coarse grid (adhesion_map.png; about 10 s: `linecontact map` draws it on a finer "
+        "grid, with its data).",
         epilog="examples:\n  linecontact figures\n"
         "  linecontact figures --outdir figs --format png,pdf",
     )

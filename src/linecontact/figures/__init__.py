@@ -3,9 +3,11 @@
 One module per family of figures, each with the parameters it draws and why:
 :mod:`linecontact.figures.normal` (Figs. 2--6), :mod:`linecontact.figures.tangential`
 (Figs. 7, 13, 14), :mod:`linecontact.figures.sliding` (Figs. 8--12), and beyond the paper
-:mod:`linecontact.figures.push` (the pushed fibre, :func:`push_figures`) and
+:mod:`linecontact.figures.push` (the pushed fibre, :func:`push_figures`),
+:mod:`linecontact.figures.history` (load histories) and
 :mod:`linecontact.figures.adhesion_map` (the adhesion map of line contact; with the pushed
-fibre's, :func:`extra_figures`); the shared plumbing in :mod:`linecontact.figures._style`.
+fibre's and the histories', :func:`extra_figures`); the shared plumbing in
+:mod:`linecontact.figures._style`.
 matplotlib is imported only when a figure is drawn.
 """
 
@@ -18,6 +20,7 @@ import warnings
 from collections.abc import Callable, Iterable, Sequence
 
 from . import adhesion_map as _adhesion_map
+from . import history as _history
 from . import normal as _normal
 from . import push as _push
 from . import sliding as _sliding
@@ -308,7 +311,9 @@ def extra_figures(
 ) -> list[pathlib.Path]:
     """The figures beyond the paper (``linecontact figures``) into ``outdir``.
 
-    Those of the pushed fibre (:func:`push_figures`), then the adhesion map of line contact
+    Those of the pushed fibre (:func:`push_figures`), the load histories
+    (:mod:`linecontact.figures.history`: loops, loss per cycle, traction and slip after
+    reversals), then the adhesion map of line contact
     on its coarse grid (:mod:`linecontact.figures.adhesion_map`, ``adhesion_map.png``; its
     Lennard-Jones curves take most of the time, about 10 s). ``formats``,
     ``size``, ``progress``, the errors and the atomic writes are those of
@@ -320,7 +325,11 @@ def extra_figures(
         The files written, figure by figure, each in the order of ``formats``.
     """
     return _draw_in_one(
-        lambda: _push.jobs() + _adhesion_map.jobs(), outdir, formats, size, progress
+        lambda: _push.jobs() + _history.jobs() + _adhesion_map.jobs(),
+        outdir,
+        formats,
+        size,
+        progress,
     )
 
 

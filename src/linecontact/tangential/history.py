@@ -404,9 +404,20 @@ def _psi(b: NDArray, c: float, x: NDArray) -> NDArray:
 
 
 def _h_psi(b: NDArray, c: float, x: NDArray) -> NDArray:
-    """(1/pi) PV int psi(xi)/(xi - x) dxi = -sum_j b_j e_{j+1}(x/c), inside and outside."""
-    _, e = chebyshev_log_expansion(x / c, b.size)
-    return -(e[..., 1:] @ b)
+    """(1/pi) PV int psi(xi)/(xi - x) dxi = -sum_j b_j e_{j+1}(x/c), inside and outside.
+
+    ``e_k = T_k(y)`` inside (Clenshaw), ``e_k = rho^k`` with
+    ``rho = sign(y)/(|y| + sqrt(y^2 - 1))`` outside (Horner): O(n) vector operations.
+    """
+    y = np.asarray(x, float) / c
+    inside = np.abs(y) <= 1.0
+    coef = np.concatenate([[0.0], b])
+    out = np.empty_like(y)
+    out[inside] = -np.polynomial.chebyshev.chebval(y[inside], coef)
+    yo = y[~inside]
+    rho = np.sign(yo) / (np.abs(yo) + np.sqrt((np.abs(yo) - 1) * (np.abs(yo) + 1)))
+    out[~inside] = -np.polynomial.polynomial.polyval(rho, coef)
+    return out
 
 
 def _el(law: _Law, s: float, parts, x: NDArray) -> NDArray:
@@ -435,6 +446,24 @@ def _graded(cut: list[float]) -> list[tuple[float, float]]:
     return out
 
 
+def _root(force, nn: int, guess: float) -> float:
+    """The stick-zone half-width where ``force(c, nn)`` vanishes, in ``(0, 1]``.
+
+    Bracketed near ``guess`` (the root at a coarser size: ``1 - c`` changes by a small
+    factor between sizes) when it brackets, else on the whole interval.
+    """
+    from scipy.optimize import brentq
+
+    kw = dict(args=(nn,), xtol=1e-16, rtol=1e-15, maxiter=300)
+    if 0 < guess < 1:
+        u = 1.0 - guess
+        lo, hi = max(1.0 - 4 * u, 1e-300), 1.0 - u / 4
+        f_lo, f_hi = force(lo, nn), force(hi, nn)
+        if f_lo * f_hi < 0:
+            return float(brentq(force, lo, hi, **kw))
+    return float(brentq(force, 1e-300, 1.0, **kw))
+
+
 def _incremental(law: _Law, loads: NDArray, n: int) -> dict[str, Any]:
     """Solve the stick condition at each step from the previous state (no memory rule).
 
@@ -446,8 +475,6 @@ def _incremental(law: _Law, loads: NDArray, n: int) -> dict[str, Any]:
     (smooth: each replaced part is evaluated inside its own interval), bounded at ``+-c``.
     ``c`` is the root of the force balance.
     """
-    from scipy.optimize import brentq
-
     check_t = np.cos(np.pi * (np.arange(16) + 0.25) / 16)
     gl_x, gl_w = np.polynomial.legendre.leggauss(_N_GAUSS)
     steps = loads.size
@@ -509,8 +536,9 @@ def _incremental(law: _Law, loads: NDArray, n: int) -> dict[str, Any]:
         if slid:
             cj, parts = 0.0, ()
         else:
-            for nn in sizes:
-                cj = brentq(force, 1e-300, 1.0, args=(nn,), xtol=1e-16, rtol=1e-15, maxiter=300)
+            nn, cj = sizes[0], math.nan
+            while True:
+                cj = _root(force, nn, cj)
                 # at a loop's closure the force is flat between the older branch's stick
                 # zone and this one's: take the largest root (not slipped in this step)
                 above = [p[0] for p in parts_prev if cj < p[0] < 1.0]
@@ -518,8 +546,13 @@ def _incremental(law: _Law, loads: NDArray, n: int) -> dict[str, Any]:
                     cj = min(above)
                 bj = solve(cj, s, nn)
                 tail[j] = float(np.max(np.abs(bj[-3:])) / max(np.max(np.abs(bj)), 1.0))
-                if tail[j] <= 1e-15:
+                if tail[j] <= 1e-15 or nn >= sizes[-1]:
                     break
+                # the log sources of a reversal sit at x = +-a, t = +-a/c: the coefficients
+                # fall like exp(-arccosh(1/c) k); go straight to the size that resolves them
+                rate = math.acosh(1.0 / cj) if 0 < cj < 1 else 1.0
+                need = 40.0 / max(rate, 1e-300)
+                nn = next((m for m in sizes if m >= max(2 * nn, need)), sizes[-1])
             n_used[j] = nn
             keep, _ = split(cj)
             parts = (*keep, (cj, bj))
