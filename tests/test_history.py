@@ -38,6 +38,9 @@ HISTORIES = [
     [0.5, 0.9, -0.3, 0.4, 0.1, 0.35, -0.6],  # nested memory
     [0.7, 1.2, 0.3, -0.5, 0.6],  # a slide, then stick-slip from full slip
     [-0.3, 0.3, -0.3, 0.3],  # cycles from the first loading
+    # a small inner loop closed exactly at the old extreme: the force is flat between the
+    # two stick zones there (the incremental solver once took a root inside that interval)
+    [-0.852, -0.97, -0.8669, -0.97, -0.5],
 ]
 
 

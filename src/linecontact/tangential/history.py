@@ -446,6 +446,17 @@ def _graded(cut: list[float]) -> list[tuple[float, float]]:
     return out
 
 
+def _size_for(c: float, nn: int, sizes: list[int], at_least: int = 0) -> int:
+    """The next size for a stick zone ``|x| < c``: at least twice ``nn``, or ``at_least``.
+
+    A reversal's log sources sit at ``x = +-a``, ``t = +-a/c``: the coefficients fall like
+    ``exp(-arccosh(1/c) k)``, so about ``40/arccosh(1/c)`` of them reach round-off.
+    """
+    rate = math.acosh(1.0 / c) if 0 < c < 1 else 1.0
+    need = max(40.0 / max(rate, 1e-300), at_least or 2 * nn)
+    return next((m for m in sizes if m >= need), sizes[-1])
+
+
 def _root(force, nn: int, guess: float) -> float:
     """The stick-zone half-width where ``force(c, nn)`` vanishes, in ``(0, 1]``.
 
@@ -539,20 +550,21 @@ def _incremental(law: _Law, loads: NDArray, n: int) -> dict[str, Any]:
             nn, cj = sizes[0], math.nan
             while True:
                 cj = _root(force, nn, cj)
-                # at a loop's closure the force is flat between the older branch's stick
-                # zone and this one's: take the largest root (not slipped in this step)
-                above = [p[0] for p in parts_prev if cj < p[0] < 1.0]
-                if above and abs(force(min(above), nn)) <= 1e-13 * Tf:
-                    cj = min(above)
                 bj = solve(cj, s, nn)
                 tail[j] = float(np.max(np.abs(bj[-3:])) / max(np.max(np.abs(bj)), 1.0))
                 if tail[j] <= 1e-15 or nn >= sizes[-1]:
                     break
-                # the log sources of a reversal sit at x = +-a, t = +-a/c: the coefficients
-                # fall like exp(-arccosh(1/c) k); go straight to the size that resolves them
-                rate = math.acosh(1.0 / cj) if 0 < cj < 1 else 1.0
-                need = 40.0 / max(rate, 1e-300)
-                nn = next((m for m in sizes if m >= max(2 * nn, need)), sizes[-1])
+                nn = _size_for(cj, nn, sizes)
+            # at the closure of a loop the force is flat between the older branch's stick
+            # zone and this one's: take the largest root (not slipped in this step). Each
+            # edge is tried at the size its own closeness to the contact edge needs.
+            for edge in sorted(p[0] for p in parts_prev if cj < p[0] < 1.0):
+                n_edge = _size_for(edge, nn, sizes, at_least=nn)
+                if abs(force(edge, n_edge)) > 1e-13 * Tf:
+                    break
+                cj, nn = edge, n_edge
+                bj = solve(cj, s, nn)
+                tail[j] = float(np.max(np.abs(bj[-3:])) / max(np.max(np.abs(bj)), 1.0))
             n_used[j] = nn
             keep, _ = split(cj)
             parts = (*keep, (cj, bj))
