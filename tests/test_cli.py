@@ -394,6 +394,8 @@ def test_every_option_is_documented_and_every_command_has_examples(capsys):
         "curve",
         "slide-init",
         "roll",
+        "cycle",
+        "history",
         "slide",
         "push",
         "paper",

@@ -387,3 +387,53 @@ def test_si_layer_converts_units():
 def test_bad_input_names_the_parameter(call, name):
     with pytest.raises(ValueError, match=name):
         call()
+
+
+# --------------------------------------------------------------------------------------------
+# found by fuzzing (each failed on the first version)
+
+
+def test_returning_to_full_slip_slides():
+    """A loop closed at a full-slip turning point slides again, as the incremental solver says."""
+    for loads in ([0.02, 0.0, 0.02], [0.02, -0.02]):
+        for method in ("closed-form", "incremental"):
+            h = tangential_history(T0, loads, method=method)
+            assert h.state[-1] == "sliding", (loads, method)
+            assert np.isnan(h.c_over_a[-1]) and np.isnan(h.dissipation_over_Ea2[-1])
+    # and no jump between just below and exactly at the old extreme
+    h = tangential_history(T0, [0.019999999, 0.0, 0.02])
+    assert h.state[-1] == "sliding"
+
+
+def test_a_load_held_at_full_slip_keeps_sliding_with_an_undetermined_loss():
+    for method in ("closed-form", "incremental"):
+        h = tangential_history(T0, [0.02, 0.02], method=method)
+        assert h.state.tolist() == ["sliding", "sliding"]
+        assert np.all(np.isnan(h.dissipation_over_Ea2))
+
+
+def test_zones_stay_ordered_under_round_off():
+    h = tangential_history(0.5, [3, 0.9999999999999997, 0.9999999999999999])
+    for zs in h.zones():
+        ends = [(lo, hi) for lo, hi, _ in zs]
+        assert ends[0][0] == 0.0 and ends[-1][1] == 1.0
+        assert all(b[0] == a[1] for a, b in zip(ends, ends[1:], strict=False))
+        assert all(hi > lo for lo, hi in ends)
+
+
+def test_round_off_gives_no_negative_energy_and_slip_outside_is_nan():
+    h = tangential_history(0.5, [-0.4673388790854809, -0.46733887908548094])
+    assert np.all(h.dissipation_over_Ea2 >= 0)
+    assert np.isnan(tangential_history(T0, [0.0]).slip([2.0])[0, 0])
+    with np.errstate(all="raise"):  # far points: no overflow warning
+        assert tangential_history(T0, [0.01]).traction([1e300])[0, 0] == 0.0
+
+
+def test_the_domain_ends_are_inclusive_and_tol_is_checked():
+    assert tangential_history(T0, [1e12]).state[0] == "sliding"
+    assert cyclic_loss(1e-12, 1e12).state == "sliding"
+    for tol in ("x", float("nan"), -1.0):
+        with pytest.raises(ValueError, match="tol"):
+            tangential_history(T0, [0.01], method="incremental", tol=tol)
+        with pytest.raises(ValueError, match="tol"):
+            cyclic_loss(T0, 0.01, method="incremental", tol=tol)

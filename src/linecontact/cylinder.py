@@ -1068,6 +1068,23 @@ def _history_contact(cylinder, normal_load, friction_stress, friction_coefficien
     return F, a, fr, coulomb, contact
 
 
+def _history_solve(cylinder, normal_load, stress, coefficient, loads, constant, coulomb, method):
+    """``(F, a, full-slip load, result, law)``: ``loads`` [N/m] through the nondimensional call.
+
+    ``constant(tau0/E, loads/(E a))`` or ``coulomb(mu, a/R, loads/(mu F))``; ``law`` is
+    ``"constant"`` or ``"coulomb"``.
+    """
+    F, a, fr, is_coulomb, _ = _history_contact(cylinder, normal_load, stress, coefficient)
+    if is_coulomb:
+        r = coulomb(fr, a / cylinder.radius, loads / (fr * F), method=method)
+        full = fr * F
+    else:
+        E = cylinder.modulus
+        r = constant(fr / E, loads / (E * a), method=method)
+        full = 2 * a * fr
+    return F, a, full, r, "coulomb" if is_coulomb else "constant"
+
+
 @dataclass(frozen=True)
 class CylinderTangentialHistory:
     """A tangential load history of a :class:`~linecontact.cylinder.Cylinder`, in SI units.
@@ -1146,19 +1163,20 @@ def cylinder_tangential_history(
     """
     from .tangential.history import tangential_history, tangential_history_coulomb
 
-    F, a, fr, coulomb, _ = _history_contact(
-        cylinder, normal_load, friction_stress, friction_coefficient
+    T = check_array("tangential_load", tangential_load, low=-np.inf)
+    F, a, full, h, law = _history_solve(
+        cylinder,
+        normal_load,
+        friction_stress,
+        friction_coefficient,
+        T,
+        tangential_history,
+        tangential_history_coulomb,
+        method,
     )
     E = cylinder.modulus
-    T = check_array("tangential_load", tangential_load, low=-np.inf)
-    if coulomb:
-        h: Any = tangential_history_coulomb(fr, a / cylinder.radius, T / (fr * F), method=method)
-        full = fr * F
-    else:
-        h = tangential_history(fr / E, T / (E * a), method=method)
-        full = 2 * a * fr
     return CylinderTangentialHistory(
-        "coulomb" if coulomb else "constant",
+        law,
         F,
         a,
         full,
@@ -1238,19 +1256,20 @@ def cylinder_cyclic_loss(
     """
     from .tangential.history import cyclic_loss, cyclic_loss_coulomb
 
-    F, a, fr, coulomb, _ = _history_contact(
-        cylinder, normal_load, friction_stress, friction_coefficient
+    A = check_array("amplitude", amplitude, low=0.0, low_inclusive=False)
+    F, a, full, w, law = _history_solve(
+        cylinder,
+        normal_load,
+        friction_stress,
+        friction_coefficient,
+        A,
+        cyclic_loss,
+        cyclic_loss_coulomb,
+        method,
     )
     E = cylinder.modulus
-    A = check_array("amplitude", amplitude, low=0.0, low_inclusive=False)
-    if coulomb:
-        w: Any = cyclic_loss_coulomb(fr, a / cylinder.radius, A / (fr * F), method=method)
-        full = fr * F
-    else:
-        w = cyclic_loss(fr / E, A / (E * a), method=method)
-        full = 2 * a * fr
     return CylinderCyclicLoss(
-        "coulomb" if coulomb else "constant",
+        law,
         F,
         a,
         full,

@@ -17,10 +17,18 @@ from typing import Any
 import numpy as np
 
 from .. import tangential as tg
+from .._validation import check_array
 from ..cylinder import Cylinder, cylinder_cyclic_loss, cylinder_tangential_history
 from ..output import table_from_result
-from ._options import add_command, add_groups, add_output_options, command_line, emit, si_parameters
-from .tangential import _check_friction, _given, _normal_contact
+from ..tangential.history import _T_LIMIT
+from ._options import add_command, add_output_options, command_line, emit, si_parameters
+from .tangential import (
+    _check_friction,
+    _given,
+    _normal_contact,
+    add_friction_options,
+    add_normal_contact_options,
+)
 
 __all__ = ["register"]
 
@@ -64,19 +72,7 @@ def register(sub: Any) -> None:
         ("history", "a tangential load history with memory: zones, slip, energy per step"),
     ):
         p = add_command(sub, name, summary, _DESCRIPTION[name], _EXAMPLES[name])
-        fr = p.add_argument_group("friction")
-        fr.add_argument(
-            "--friction",
-            choices=("constant", "coulomb"),
-            default="constant",
-            help="constant friction stress tau0 (the nano-scale law) or Coulomb friction mu on "
-            "the non-adhesive Hertz contact",
-        )
-        fr.add_argument(
-            "--tau0-over-E", type=float, metavar="T", help="friction stress over E, > 0"
-        )
-        fr.add_argument("--tau0", type=float, help="friction stress tau0 [Pa] (SI inputs)")
-        fr.add_argument("--mu", type=float, help="friction coefficient, > 0 (--friction coulomb)")
+        add_friction_options(p)
         ld = p.add_argument_group("tangential loads (exactly one)")
         if name == "cycle":
             ld.add_argument(
@@ -122,21 +118,7 @@ def register(sub: Any) -> None:
                 metavar="T",
                 help="the loads T [N/m] (SI inputs)",
             )
-        add_groups(p)
-        nc = p.add_argument_group("normal contact (the contact half-width a)")
-        nc.add_argument("--load", type=float, help="normal load per unit length F [N/m] (SI)")
-        nc.add_argument(
-            "--F-over-Eh",
-            type=float,
-            metavar="F",
-            help="normal load over E h (with --R-over-h and --sigma0-over-E)",
-        )
-        nc.add_argument(
-            "--a-over-R",
-            type=float,
-            metavar="A",
-            help="contact half-width over R (Coulomb: the Hertz half-width)",
-        )
+        add_normal_contact_options(p)
         p.add_argument(
             "--method",
             choices=("closed-form", "incremental"),
@@ -164,7 +146,17 @@ def _inputs(args: argparse.Namespace, nd: str, coulomb_nd: str, si: str):
             f"{si_flag} [N/m] is an SI input: give --radius, the materials and --load too, or "
             f"use {flags[0]}"
         )
-    values = np.asarray(getattr(args, state), float)
+    # checked as given, before any conversion, so that a message names the flag typed
+    if state in (nd, coulomb_nd) or state == "tangential_amplitude" or state == si:
+        amplitude = state.startswith("T_amplitude") or state == "tangential_amplitude"
+        values = check_array(
+            state,
+            getattr(args, state),
+            low=0.0 if amplitude else -_T_LIMIT,
+            low_inclusive=not amplitude,
+            high=np.inf if state == si else _T_LIMIT,
+            high_inclusive=state != si,
+        )
     return coulomb, state, values, A, F_over_Eh, cyl
 
 
@@ -205,6 +197,28 @@ def _si_friction(args: argparse.Namespace, coulomb: bool, cyl: Cylinder) -> dict
     )
 
 
+def _si_loads(args: argparse.Namespace, cyl: Cylinder, state: str, values, coulomb) -> np.ndarray:
+    """Tangential loads [N/m] from the flag given: over E a, over mu F, or in N/m.
+
+    Loads in N/m beyond the solvers' domain (``|T|`` over ``E a`` or ``mu F`` above 1e12) are
+    refused naming the flag given.
+    """
+    Ea = cyl.modulus * cyl.contact(load=args.load).contact_half_width
+    if state.endswith("over_Ea"):
+        return values * Ea
+    if state.endswith("over_muF"):
+        return values * args.mu * args.load
+    unit, name = (args.mu * args.load, "mu F") if coulomb else (Ea, "E a")
+    big = np.abs(values) > _T_LIMIT * unit
+    if np.any(big):
+        v = float(values[np.flatnonzero(big)[0]])
+        raise ValueError(
+            f"{state} must be at most {_T_LIMIT:g} {name} = {_T_LIMIT * unit:.6g} N/m in "
+            f"magnitude, got {v!r}"
+        )
+    return values
+
+
 def _si_params(args, cyl, res, fr) -> dict[str, Any]:
     params: dict[str, Any] = {"friction": res.friction}
     params.update(si_parameters(args, cyl))
@@ -229,14 +243,7 @@ def _cmd_cycle(args: argparse.Namespace) -> int:
     )
     if cyl is not None:
         fr = _si_friction(args, coulomb, cyl)
-        E = cyl.modulus
-        a = cyl.contact(load=args.load).contact_half_width
-        if state == "T_amplitude_over_Ea":
-            amp = values * E * a
-        elif state == "T_amplitude_over_muF":
-            amp = values * args.mu * args.load
-        else:
-            amp = values
+        amp = _si_loads(args, cyl, state, values, coulomb)
         res = cylinder_cyclic_loss(cyl, args.load, amp, **fr, method=args.method)
         extra: dict[str, Any] = {
             "T_amplitude_N_per_m": res.amplitude,
@@ -278,14 +285,7 @@ def _cmd_history(args: argparse.Namespace) -> int:
     )
     if cyl is not None:
         fr = _si_friction(args, coulomb, cyl)
-        E = cyl.modulus
-        a = cyl.contact(load=args.load).contact_half_width
-        if state == "T_over_Ea":
-            T = values * E * a
-        elif state == "T_over_muF":
-            T = values * args.mu * args.load
-        else:
-            T = values
+        T = _si_loads(args, cyl, state, values, coulomb)
         res = cylinder_tangential_history(cyl, args.load, T, **fr, method=args.method)
         extra: dict[str, Any] = {
             "T_N_per_m": res.tangential_load,

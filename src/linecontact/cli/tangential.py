@@ -74,19 +74,7 @@ def register(sub: Any) -> None:
         ("roll", "steady rolling of a driving cylinder (stick zone, T/(Ea), creep)"),
     ):
         p = add_command(sub, name, summary, _DESCRIPTION[name], _EXAMPLES[name])
-        fr = p.add_argument_group("friction")
-        fr.add_argument(
-            "--friction",
-            choices=("constant", "coulomb"),
-            default="constant",
-            help="constant friction stress tau0 (the nano-scale law) or Coulomb friction mu on "
-            "the non-adhesive Hertz contact",
-        )
-        fr.add_argument(
-            "--tau0-over-E", type=float, metavar="T", help="friction stress over E, > 0"
-        )
-        fr.add_argument("--tau0", type=float, help="friction stress tau0 [Pa] (SI inputs)")
-        fr.add_argument("--mu", type=float, help="friction coefficient, > 0 (--friction coulomb)")
+        add_friction_options(p)
         st = p.add_argument_group("tangential state (exactly one)")
         lo = "[0, 1)" if name == "slide-init" else "(-1, 1)"
         st.add_argument(
@@ -117,21 +105,7 @@ def register(sub: Any) -> None:
             metavar="T",
             help="tangential force per unit length T [N/m] (SI inputs)",
         )
-        add_groups(p)
-        nc = p.add_argument_group("normal contact (the contact half-width a)")
-        nc.add_argument("--load", type=float, help="normal load per unit length F [N/m] (SI)")
-        nc.add_argument(
-            "--F-over-Eh",
-            type=float,
-            metavar="F",
-            help="normal load over E h (with --R-over-h and --sigma0-over-E)",
-        )
-        nc.add_argument(
-            "--a-over-R",
-            type=float,
-            metavar="A",
-            help="contact half-width over R (Coulomb: the Hertz half-width)",
-        )
+        add_normal_contact_options(p)
         p.add_argument(
             "--method",
             choices=("closed-form", "collocation"),
@@ -140,6 +114,40 @@ def register(sub: Any) -> None:
         )
         add_output_options(p)
         p.set_defaults(func=_cmd_slide_init if name == "slide-init" else _cmd_roll)
+
+
+def add_friction_options(p: argparse.ArgumentParser) -> None:
+    """``--friction``, ``--tau0-over-E``, ``--tau0`` and ``--mu`` (the tangential commands)."""
+    fr = p.add_argument_group("friction")
+    fr.add_argument(
+        "--friction",
+        choices=("constant", "coulomb"),
+        default="constant",
+        help="constant friction stress tau0 (the nano-scale law) or Coulomb friction mu on "
+        "the non-adhesive Hertz contact",
+    )
+    fr.add_argument("--tau0-over-E", type=float, metavar="T", help="friction stress over E, > 0")
+    fr.add_argument("--tau0", type=float, help="friction stress tau0 [Pa] (SI inputs)")
+    fr.add_argument("--mu", type=float, help="friction coefficient, > 0 (--friction coulomb)")
+
+
+def add_normal_contact_options(p: argparse.ArgumentParser) -> None:
+    """The groups or SI inputs and the normal contact that gives the half-width ``a``."""
+    add_groups(p)
+    nc = p.add_argument_group("normal contact (the contact half-width a)")
+    nc.add_argument("--load", type=float, help="normal load per unit length F [N/m] (SI)")
+    nc.add_argument(
+        "--F-over-Eh",
+        type=float,
+        metavar="F",
+        help="normal load over E h (with --R-over-h and --sigma0-over-E)",
+    )
+    nc.add_argument(
+        "--a-over-R",
+        type=float,
+        metavar="A",
+        help="contact half-width over R (Coulomb: the Hertz half-width)",
+    )
 
 
 def _cmd_slide_init(args: argparse.Namespace) -> int:

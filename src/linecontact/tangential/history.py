@@ -47,7 +47,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import domain as _domain
-from .._validation import check_array
+from .._validation import check_array, check_solver_options
 from ..errors import ConvergenceError
 from ..results import Result, as_output
 from ..sie import _log_moment_vector as _log_moments
@@ -247,11 +247,22 @@ class _Masing:
 
     def traction(self, x: NDArray, steps: NDArray) -> NDArray:
         c, r = self.coef[steps][..., None], self.r[steps][..., None]
-        return np.sum(c * self.law.traction(x, r), axis=-2)
+        return np.sum(c * self.law.traction(np.clip(x, -2.0, 2.0), r), axis=-2)
 
     def slip(self, x: NDArray, steps: NDArray) -> NDArray:
         c, r = self.coef[steps][..., None], self.r[steps][..., None]
-        return np.sum(np.where(c != 0, c * self.law.slip(x, r), 0.0), axis=-2)
+        xc = np.clip(x, -2.0, 2.0)  # beyond the contact: nan; no overflow of x*x
+        s = np.sum(np.where(c != 0, c * self.law.slip(xc, r), 0.0), axis=-2)
+        return np.where(np.abs(x) > 1.0, np.nan, s)
+
+
+def _passes(t: float, turning_point: float, dirn: int) -> bool:
+    """Whether the load ``t``, moving in ``dirn``, closes the loop at ``turning_point``.
+
+    Passing it closes the loop; reaching it exactly does not (the state is the same, and the
+    stick zone reported is this branch's), except at full slip, where reaching it slides.
+    """
+    return (t - turning_point) * dirn > 0 or (t == turning_point and abs(t) >= 1.0)
 
 
 def _masing(law: _Law, loads: NDArray) -> dict[str, Any]:
@@ -274,8 +285,10 @@ def _masing(law: _Law, loads: NDArray) -> dict[str, Any]:
         # energy dissipated on the branch from the turning point ``start`` (None: virgin)
         # while the load moves from t0 to t1 (monotone)
         if start is None:
-            return float(Wv(abs(t1)) - Wv(abs(t0)))
-        return float(2 * (Wv(abs(t1 - start) / 2) - Wv(abs(t0 - start) / 2)))
+            w = float(Wv(abs(t1)) - Wv(abs(t0)))
+        else:
+            w = float(2 * (Wv(abs(t1 - start) / 2) - Wv(abs(t0 - start) / 2)))
+        return max(w, 0.0)  # a difference of two close values can round below zero
 
     # the terms of the turning points held: term k of turning point k (the first is the
     # virgin term, the others reversal terms), kept in step with the stack
@@ -306,14 +319,14 @@ def _masing(law: _Law, loads: NDArray) -> dict[str, Any]:
             direction = dirn
             pos = prev
             while True:
-                if len(stack) >= 2 and (t - stack[-2]) * dirn > 0:
+                if len(stack) >= 2 and _passes(t, stack[-2], dirn):
                     # the branch from stack[-1] reaches the turning point before it: the
                     # loop closes, both are erased, the path continues on the older branch
                     w += branch_loss(stack[-1], pos, stack[-2])
                     pos = stack[-2]
                     pop(2)
                     continue
-                if len(stack) == 1 and (t + stack[-1]) * dirn > 0:
+                if len(stack) == 1 and _passes(t, -stack[-1], dirn):
                     # the first reversal's branch reaches the mirror of the first extreme:
                     # the state is the virgin one there
                     w += branch_loss(stack[-1], pos, -stack[-1])
@@ -330,6 +343,8 @@ def _masing(law: _Law, loads: NDArray) -> dict[str, Any]:
             prev = t
         elif j > 0:
             slid = bool(sliding[j - 1])
+            if slid:
+                w = math.nan  # held at full slip: it slides on, by a distance not determined
         if stack:
             cur = (2.0 * direction, abs(prev - stack[-1]) / 2)
         else:
@@ -372,9 +387,11 @@ class _Incremental:
     def traction(self, x: NDArray, steps: NDArray) -> NDArray:
         law = self.law
 
+        xc = np.clip(x, -2.0, 2.0)  # zero beyond the contact; no overflow
+
         def one(s, parts):
-            q = s * np.where(np.abs(x) <= 1.0, law.B(np.clip(x, -1.0, 1.0)), 0.0)
-            return q + sum((_psi(b, c, x) for c, b in parts), np.zeros_like(x))
+            q = s * np.where(np.abs(xc) <= 1.0, law.B(np.clip(xc, -1.0, 1.0)), 0.0)
+            return q + sum((_psi(b, c, xc) for c, b in parts), np.zeros_like(xc))
 
         return self._each(steps, one)
 
@@ -382,8 +399,11 @@ class _Incremental:
         law = self.law
         x0 = np.zeros(1)
 
+        xc = np.clip(x, -2.0, 2.0)
+
         def one(s, parts):
-            return np.where(np.abs(x) > 1.0, np.nan, _el(law, s, parts, x) - _el(law, s, parts, x0))
+            el = _el(law, s, parts, xc) - _el(law, s, parts, x0)
+            return np.where(np.abs(x) > 1.0, np.nan, el)
 
         return self._each(steps, one)
 
@@ -529,6 +549,7 @@ def _incremental(law: _Law, loads: NDArray, n: int) -> dict[str, Any]:
             direction[j] = d_prev
             sliding[j] = sliding[j - 1] if j else False
             n_used[j] = n_used[j - 1] if j else 0
+            loss[j] = math.nan if sliding[j] else 0.0
             continue
         s = 1.0 if r > r_prev else -1.0
         target = r * Tf
@@ -687,7 +708,8 @@ class _History(Result):
                 coef, r = self._states.coef[j], self._states.r[j]
                 keep = coef != 0
                 coef, r = coef[keep], r[keep]
-                d = self._states.law.stick(r)
+                # the stick zones nest; round-off must not turn two equal ones round
+                d = np.minimum(np.maximum.accumulate(self._states.law.stick(r)), 1.0)
                 bounds = [0.0, *d.tolist(), 1.0]
                 kinds = [_STICK] + [("locked+" if c > 0 else "locked-") for c in coef[:-1]]
                 kinds.append("slip+" if coef[-1] > 0 else "slip-")
@@ -771,15 +793,18 @@ class CoulombTangentialHistory(_History):
     a_over_R: float = 0.0
 
 
-def _check_method(method: str, n: int) -> None:
+def _check_method(method: str, n: int, tol: float, raise_on_failure: bool = True) -> None:
     if method not in ("closed-form", "incremental"):
         raise ValueError(f"method must be 'closed-form' or 'incremental', got {method!r}")
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 4 <= n <= 4096:
         raise ValueError(f"n must be an integer in [4, 4096], got {n!r}")
+    check_solver_options(n, tol, raise_on_failure, n_max=N_MAX_INCREMENTAL)
 
 
 def _loads(name: str, value: ArrayLike) -> NDArray:
-    arr = check_array(name, value, low=-_T_LIMIT, high=_T_LIMIT)
+    arr = check_array(
+        name, value, low=-_T_LIMIT, low_inclusive=True, high=_T_LIMIT, high_inclusive=True
+    )
     if arr.ndim > 1:
         raise ValueError(f"{name} must be a sequence of loads (1-D), got shape {arr.shape}")
     arr = arr.reshape(-1)
@@ -832,11 +857,11 @@ def _history(
             j = int(np.flatnonzero(~conv)[0])
             raise ConvergenceError(
                 f"the incremental solver missed tol={tol:g} at step {j + 1} (T/T_full = "
-                f"{r[j]!r}: error estimate {m['error_estimate'][j]:.2e}, stick residual "
+                f"{float(r[j])!r}: error estimate {m['error_estimate'][j]:.2e}, stick residual "
                 f"{m['residual_stick'][j]:.2e}, friction-law violation "
-                f"{m['residual_admissible'][j]:.2e}, n={m['n_collocation'][j]}): a reversal "
-                "this small needs more nodes than the solver's limit; loosen tol, or pass "
-                "raise_on_failure=False"
+                f"{m['residual_admissible'][j]:.2e}, n={int(m['n_collocation'][j])}): a load "
+                "change this small (or this close to the previous turning point) needs more "
+                f"than {N_MAX_INCREMENTAL} nodes; use method='closed-form'"
             )
     sliding = m["sliding"]
     unloaded = (m["direction"] == 0) & ~sliding
@@ -913,7 +938,7 @@ def tangential_history(
     True
     """
     t0 = _domain.scalar("tau0_over_E", tau0_over_E)
-    _check_method(method, n)
+    _check_method(method, n, tol, raise_on_failure)
     T = _loads("T_over_Ea", T_over_Ea)
     r = T / (2 * t0)
     fields_ = _history(_LAWS["constant"], r, t0, method, n, tol, raise_on_failure)
@@ -958,7 +983,7 @@ def tangential_history_coulomb(
     """
     m = _domain.scalar("mu", mu)
     A = _domain.scalar("a_over_R", a_over_R)
-    _check_method(method, n)
+    _check_method(method, n, tol, raise_on_failure)
     Q = _loads("T_over_muF", T_over_muF)
     scale = m * A / 2  # mu p0 / E
     fields_ = _history(_LAWS["coulomb"], Q, scale, method, n, tol, raise_on_failure)
@@ -1079,10 +1104,12 @@ def _cyclic(law: _Law, r: NDArray, scale: NDArray, method: str, n: int, tol: flo
                 continue
             m = _incremental(law, np.array([ri, -ri, ri]), n)
             bad = max(m["error_estimate"].max(), m["residual_stick"].max())
-            if bad > tol:
+            if not bad <= tol:
                 raise ConvergenceError(
-                    f"the incremental solver missed tol={tol:g} at the amplitude {ri!r} of "
-                    f"the full-slip load (estimate {bad:.2e}, n={n}); raise n or loosen tol"
+                    f"the incremental solver missed tol={tol:g} at the amplitude "
+                    f"{float(ri)!r} of the full-slip load (estimate {bad:.2e}, "
+                    f"n={int(m['n_collocation'].max())}): an amplitude this small needs more "
+                    f"than {N_MAX_INCREMENTAL} nodes; use method='closed-form'"
                 )
             w[i] = m["loss"][1] + m["loss"][2]
     W = np.where(sliding, np.nan, scale * scale * w)
@@ -1140,10 +1167,15 @@ def cyclic_loss(
     >>> cyclic_loss(0.01, 0.02).state
     'sliding'
     """
-    _check_method(method, n)
+    _check_method(method, n, tol)
     t0 = _domain.check("tau0_over_E", tau0_over_E)
     A = check_array(
-        "T_amplitude_over_Ea", T_amplitude_over_Ea, low=0.0, low_inclusive=False, high=_T_LIMIT
+        "T_amplitude_over_Ea",
+        T_amplitude_over_Ea,
+        low=0.0,
+        low_inclusive=False,
+        high=_T_LIMIT,
+        high_inclusive=True,
     )
     t0, A = np.broadcast_arrays(t0, A)
     scalar = A.ndim == 0
@@ -1195,11 +1227,16 @@ def cyclic_loss_coulomb(
     >>> bool(7.99 < w.W_over_Ea2[1] / w.W_over_Ea2[0] < 8.01)   # ~ 2^3
     True
     """
-    _check_method(method, n)
+    _check_method(method, n, tol)
     m = _domain.check("mu", mu)
     A = _domain.check("a_over_R", a_over_R)
     Q = check_array(
-        "T_amplitude_over_muF", T_amplitude_over_muF, low=0.0, low_inclusive=False, high=_T_LIMIT
+        "T_amplitude_over_muF",
+        T_amplitude_over_muF,
+        low=0.0,
+        low_inclusive=False,
+        high=_T_LIMIT,
+        high_inclusive=True,
     )
     m, A, Q = np.broadcast_arrays(m, A, Q)
     scalar = Q.ndim == 0
