@@ -401,6 +401,7 @@ def test_every_option_is_documented_and_every_command_has_examples(capsys):
         "paper",
         "figures",
         "map",
+        "materials",
         "cite",
     }
     for name, p in sub.choices.items():

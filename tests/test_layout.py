@@ -22,7 +22,12 @@ FLOORS = {
         "linecontact.domain",
         "linecontact.results",
     ],
-    "core": ["linecontact.sie", "linecontact.reference", "linecontact.materials"],
+    "core": [
+        "linecontact.sie",
+        "linecontact.reference",
+        "linecontact.materials",
+        "linecontact.presets",
+    ],
     "problems": [
         "linecontact.normal",
         "linecontact.sliding",
@@ -32,7 +37,7 @@ FLOORS = {
         "linecontact.lennard_jones_groups",
         "linecontact.adhesion_map",
     ],
-    "si": ["linecontact.cylinder"],
+    "si": ["linecontact.cylinder", "linecontact.inverse"],
     "shells": ["linecontact.output", "linecontact.cli", "linecontact.figures"],
     "front": ["linecontact", "linecontact.__main__"],
 }

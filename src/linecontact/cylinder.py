@@ -35,6 +35,7 @@ from .tangential.rolling import _CARTER, _ROLLING
 
 if TYPE_CHECKING:  # imported where used: the Lennard-Jones solver needs scipy
     from .lennard_jones_groups import LennardJonesContact
+    from .presets import Material
 
 __all__ = [
     "CylinderPush",
@@ -325,6 +326,68 @@ class Cylinder:
             )
         s0, h = _adhesion(cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
         return cls(R, E, s0, h, beta)
+
+    @classmethod
+    def from_presets(
+        cls,
+        radius: float,
+        cylinder_material: str | Material,
+        substrate_material: str | Material,
+        *,
+        cohesive_stress: float | None = None,
+        adhesion_range: float | None = None,
+        work_of_adhesion: float | None = None,
+        equilibrium_spacing: float | None = None,
+    ) -> Cylinder:
+        """From material presets (:mod:`linecontact.presets`) of cylinder and substrate.
+
+        Parameters
+        ----------
+        radius : float
+            ``R`` [m].
+        cylinder_material, substrate_material : str or Material
+            A preset's name (case-insensitive: ``"ZnO"``, ``"SiO2"``, see
+            :func:`~linecontact.presets.material_names`) or a
+            :class:`~linecontact.presets.Material`.
+        cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing : float, optional
+            Adhesion as ``(sigma0, h)`` or ``(w, z0)``, as in :meth:`from_materials`.
+
+        Returns
+        -------
+        Cylinder
+            ``Cylinder.from_materials(radius, E1, nu1, E2, nu2, ...)`` with the presets'
+            ``E`` and ``nu``.
+
+        Examples
+        --------
+        >>> cyl = Cylinder.from_presets(
+        ...     50e-9, "ZnO", "Si", work_of_adhesion=0.1, equilibrium_spacing=0.3e-9
+        ... )
+        >>> round(cyl.modulus / 1e9, 1)
+        77.8
+        """
+        from .presets import Material
+
+        m1, m2 = (
+            m if isinstance(m, Material) else Material.from_name(m)
+            for m in (cylinder_material, substrate_material)
+        )
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            cyl = cls.from_materials(
+                radius,
+                m1.E,
+                m1.nu,
+                m2.E,
+                m2.nu,
+                cohesive_stress=cohesive_stress,
+                adhesion_range=adhesion_range,
+                work_of_adhesion=work_of_adhesion,
+                equilibrium_spacing=equilibrium_spacing,
+            )
+        for w in caught:  # said where from_presets was called, not in here
+            warnings.warn(w.message, stacklevel=2)
+        return cyl
 
     # groups ------------------------------------------------------------------------------
     @property

@@ -3,7 +3,8 @@
 One module per family of subcommands (:mod:`~linecontact.cli.normal`,
 :mod:`~linecontact.cli.tangential`, :mod:`~linecontact.cli.history`,
 :mod:`~linecontact.cli.sliding`,
-:mod:`~linecontact.cli.paper`, :mod:`~linecontact.cli.adhesion_map`), the shared options and
+:mod:`~linecontact.cli.paper`, :mod:`~linecontact.cli.adhesion_map`,
+:mod:`~linecontact.cli.materials`), the shared options and
 output in :mod:`~linecontact.cli._options`. Every subcommand takes the paper's
 nondimensional groups or SI inputs, prints a readable table, or with ``--json``
 machine-readable JSON. Bad input: one ``error:`` line on stderr and exit status 2. A solver
@@ -23,6 +24,7 @@ from .._version import __version__
 from ..errors import ConvergenceError
 from . import adhesion_map as _adhesion_map
 from . import history as _history
+from . import materials as _materials
 from . import normal as _normal
 from . import paper as _paper
 from . import push as _push
@@ -34,7 +36,7 @@ __all__ = ["build_parser", "main"]
 
 _COMMANDS = (
     "normal, pulloff, curve, slide-init, roll, cycle, history, slide, push, paper, figures, "
-    "map or cite"
+    "map, materials or cite"
 )
 
 
@@ -72,6 +74,7 @@ def build_parser() -> argparse.ArgumentParser:
     _push.register(sub)
     _paper.register(sub)
     _adhesion_map.register(sub)
+    _materials.register(sub)
     for sp in sub.choices.values():
         sp.allow_abbrev = False
     p.set_defaults(_subparsers=sub)

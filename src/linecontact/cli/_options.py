@@ -21,6 +21,7 @@ import numpy as np
 from ..cylinder import Cylinder
 from ..domain import TooWideError, check_si
 from ..output import FORMATS, Table, write
+from ..presets import Material, material_names
 
 #: Values that are numbers even though they start with "-": argparse (before Python 3.13)
 #: knows only -5 and -0.5, so "--load -1e-3" failed with "expected one argument".
@@ -48,7 +49,20 @@ API_FLAGS = {
 }
 
 #: The SI inputs of the materials and adhesion (their presence switches to SI mode).
-SI_KEYS = ("radius", "modulus", "E1", "nu1", "E2", "nu2", "sigma0", "h", "work_of_adhesion", "z0")
+SI_KEYS = (
+    "radius",
+    "modulus",
+    "E1",
+    "nu1",
+    "E2",
+    "nu2",
+    "cylinder_material",
+    "substrate_material",
+    "sigma0",
+    "h",
+    "work_of_adhesion",
+    "z0",
+)
 
 
 class HelpFormatter(argparse.RawDescriptionHelpFormatter):
@@ -226,6 +240,19 @@ def add_si_materials(p: argparse.ArgumentParser, range_flag: str = "--h") -> Any
     si.add_argument("--nu1", type=float, help="cylinder's Poisson ratio, in (-1, 0.5]")
     si.add_argument("--E2", type=float, help="substrate's Young's modulus [Pa]")
     si.add_argument("--nu2", type=float, help="substrate's Poisson ratio, in (-1, 0.5]")
+    names = ", ".join(material_names())
+    si.add_argument(
+        "--cylinder-material",
+        metavar="NAME",
+        help=f"cylinder's material preset, instead of --E1 --nu1 (one of: {names}; "
+        "case-insensitive; linecontact materials lists the values and sources)",
+    )
+    si.add_argument(
+        "--substrate-material",
+        metavar="NAME",
+        help="substrate's material preset, instead of --E2 --nu2 (names as for "
+        "--cylinder-material)",
+    )
     si.add_argument("--sigma0", type=float, help="adhesive (Dugdale) stress sigma0 [Pa]")
     name = "leading-edge adhesion range h2" if range_flag == "--h2" else "adhesion range h"
     si.add_argument(
@@ -291,23 +318,69 @@ def cylinder(args: argparse.Namespace, range_flag: str = "--h") -> Cylinder:
         equilibrium_spacing=args.z0,
     )
     mats = (args.E1, args.nu1, args.E2, args.nu2)
+    presets = _presets(args)
     if args.modulus is not None:
+        if any(m is not None for m in presets):
+            raise ValueError(
+                "give either --modulus or the materials (--cylinder-material, "
+                "--substrate-material), not both"
+            )
         if any(v is not None for v in mats):
             raise ValueError("give either --modulus or --E1 --nu1 --E2 --nu2, not both")
         return Cylinder.from_modulus(args.radius, args.modulus, **adh)
-    if any(v is None for v in mats):
-        raise ValueError("SI inputs need --modulus, or all of --E1 --nu1 --E2 --nu2")
-    return Cylinder.from_materials(args.radius, *mats, **adh)
+    for m, E, nu, flags, body in (
+        (presets[0], args.E1, args.nu1, "--E1 --nu1", "cylinder"),
+        (presets[1], args.E2, args.nu2, "--E2 --nu2", "substrate"),
+    ):
+        if m is not None and (E is not None or nu is not None):
+            raise ValueError(f"give the {body} either as --{body}-material or as {flags}, not both")
+    E1, nu1 = (args.E1, args.nu1) if presets[0] is None else (presets[0].E, presets[0].nu)
+    E2, nu2 = (args.E2, args.nu2) if presets[1] is None else (presets[1].E, presets[1].nu)
+    if any(v is None for v in (E1, nu1, E2, nu2)):
+        raise ValueError(
+            "SI inputs need --modulus, or the materials: --cylinder-material or --E1 --nu1, "
+            "and --substrate-material or --E2 --nu2"
+        )
+    return Cylinder.from_materials(args.radius, E1, nu1, E2, nu2, **adh)
+
+
+def _presets(args: argparse.Namespace) -> tuple[Material | None, Material | None]:
+    """The presets of ``--cylinder-material`` and ``--substrate-material`` (None: not given)."""
+    out: list[Material | None] = []
+    for key, flag in (
+        ("cylinder_material", "--cylinder-material"),
+        ("substrate_material", "--substrate-material"),
+    ):
+        name = getattr(args, key, None)
+        if name is None:
+            out.append(None)
+            continue
+        try:
+            out.append(Material.from_name(name))
+        except ValueError:
+            raise ValueError(
+                f"{flag} {name!r} is not a material preset: one of "
+                f"{', '.join(material_names())} (linecontact materials lists them)"
+            ) from None
+    return out[0], out[1]
 
 
 def si_parameters(args: argparse.Namespace, cyl: Cylinder) -> dict[str, Any]:
     """The SI inputs as given and as used, for the provenance block (units in the names)."""
     params: dict[str, Any] = {"radius_m": cyl.radius, "modulus_Pa": cyl.modulus}
+    m1, m2 = _presets(args)
+    for m, body, E, nu in ((m1, "cylinder", "E1", "nu1"), (m2, "substrate", "E2", "nu2")):
+        if m is not None:  # a preset never hides its numbers
+            params[f"{body}_material"] = m.name
+            params[f"{body}_source"] = m.source
+            params[f"{E}_Pa"] = m.E
+            params[nu] = m.nu
+        else:
+            for key, name in ((E, f"{E}_Pa"), (nu, nu)):
+                v = getattr(args, key, None)
+                if v is not None:
+                    params[name] = v
     for key, name in (
-        ("E1", "E1_Pa"),
-        ("nu1", "nu1"),
-        ("E2", "E2_Pa"),
-        ("nu2", "nu2"),
         ("work_of_adhesion", "work_of_adhesion_J_per_m2"),
         ("z0", "z0_m"),
     ):

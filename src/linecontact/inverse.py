@@ -1,0 +1,733 @@
+r"""From measurements to properties: work of adhesion, range and shear strength, with uncertainty.
+
+The inverse problems of the SI layer, each with the forward model it inverts:
+
+* :func:`work_of_adhesion_from_pull_off`: the Maugis--Dugdale pull-off force of a cylinder
+  (:func:`pull_off_force`, the closed form of :func:`linecontact.pull_off` in SI units, with
+  the adhesion given as ``(w, z0)``: ``sigma0 = 16 w/(9 sqrt(3) z0)``, ``h = w/sigma0``),
+  solved for ``w`` at a known radius, modulus and range;
+* :func:`fit_pull_off`: ``(w, z0)`` jointly, or ``w`` alone at a fixed ``z0``, from pull-off
+  forces at several radii, by weighted least squares (:func:`scipy.optimize.least_squares`)
+  with the covariance, the correlation and a parametric-bootstrap interval;
+* :func:`work_of_adhesion_from_width`: the contact half-width at a normal load
+  (:func:`linecontact.contact_for_load`) solved for ``w``;
+* :func:`shear_strength_from_friction`: ``tau0 = (f - dw) / (2 a)`` with ``a`` the
+  Maugis--Dugdale contact at the normal load (or the steady-sliding contact when an adhesion
+  hysteresis ``dw = w_receding - w_advancing`` is given), or JKR, DMT or Hertz when asked;
+* :func:`propagate`: the standard uncertainty and the 95 % interval of any of these by Monte
+  Carlo (seeded, vectorised through the solvers), with the linearised estimate beside it.
+
+Units: SI throughout (m, Pa, N/m, J/m^2). Pull-off forces are negative (tensile), as in
+the rest of the library. ``docs/inverse.md`` derives the models and their limits.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from . import normal as _normal
+from . import reference as _ref
+from ._validation import check_array
+
+__all__ = [
+    "AdhesionFit",
+    "Estimate",
+    "dmt_pull_off_force",
+    "fit_pull_off",
+    "jkr_pull_off_force",
+    "propagate",
+    "pull_off_force",
+    "shear_strength_from_friction",
+    "work_of_adhesion_from_pull_off",
+    "work_of_adhesion_from_width",
+]
+
+#: sigma0 = S w / z0 (Maugis: the strength of the Lennard-Jones law), h = z0 / S
+S_LJ = 16.0 / (9.0 * math.sqrt(3.0))
+#: the range of sigma0/E searched by the inversions (the solvers' domain is wider)
+_S_MIN, _S_MAX = 1e-14, 10.0
+_BISECTIONS = 200
+
+
+def _groups(radius, modulus, w, z0):
+    """R/h and sigma0/E of a cylinder with adhesion (w, z0)."""
+    h = z0 / S_LJ
+    return radius / h, S_LJ * w / (z0 * modulus), h
+
+
+def pull_off_force(
+    radius: ArrayLike,
+    modulus: ArrayLike,
+    work_of_adhesion: ArrayLike,
+    equilibrium_spacing: ArrayLike,
+) -> NDArray:
+    """Maugis--Dugdale pull-off force per unit length [N/m] (negative), vectorised.
+
+    The forward model of the pull-off inversions: :func:`linecontact.pull_off` at
+    ``R/h``, ``sigma0/E`` of the adhesion ``(w, z0)``, times ``E h``.
+
+    Examples
+    --------
+    >>> round(float(pull_off_force(50e-9, 50e9, 0.1, 0.3e-9)), 6)
+    -3.498523
+    """
+    R, E, w, z0 = np.broadcast_arrays(
+        *(np.asarray(v, float) for v in (radius, modulus, work_of_adhesion, equilibrium_spacing))
+    )
+    rho, s, h = _groups(R, E, w, z0)
+    return np.asarray(_normal.pull_off(rho, s).F_pulloff_over_Eh) * E * h
+
+
+def jkr_pull_off_force(radius: ArrayLike, modulus: ArrayLike, work_of_adhesion: ArrayLike):
+    """JKR pull-off of a line contact, ``-(3/4) (4 pi w^2 E R)^(1/3)`` [N/m] (no range)."""
+    R, E, w = (np.asarray(v, float) for v in (radius, modulus, work_of_adhesion))
+    return -0.75 * np.cbrt(4 * np.pi * w * w * E * R)
+
+
+def dmt_pull_off_force(
+    radius: ArrayLike, work_of_adhesion: ArrayLike, equilibrium_spacing: ArrayLike
+):
+    """Rigid-cylinder (DMT-like) pull-off of the Dugdale law, ``-2 sqrt(2) w sqrt(R/h)`` [N/m].
+
+    The small-Maugis-parameter limit: the adhesive zone ``|x| < sqrt(2 R h)`` around a rigid
+    cylinder touching at a point, ``h = 9 sqrt(3) z0/16``.
+    """
+    R, w, z0 = (np.asarray(v, float) for v in (radius, work_of_adhesion, equilibrium_spacing))
+    return -2 * math.sqrt(2) * w * np.sqrt(R * S_LJ / z0)
+
+
+def _bisect_log(
+    fun: Callable[[NDArray], NDArray], lo: NDArray, hi: NDArray, rtol: float = 1e-15
+) -> NDArray:
+    """Root of an increasing ``fun`` between ``lo`` and ``hi`` (> 0), bisected in log.
+
+    To ``rtol`` relative in the root (round-off at the default).
+    """
+    a, b = np.log(lo), np.log(hi)
+    for _ in range(_BISECTIONS):
+        m = 0.5 * (a + b)
+        up = fun(np.exp(m)) > 0
+        a, b = np.where(up, a, m), np.where(up, m, b)
+        if np.all(b - a <= np.maximum(rtol, 4e-16 * np.abs(m))):
+            break
+    return np.exp(0.5 * (a + b))
+
+
+def work_of_adhesion_from_pull_off(
+    pull_off_force: ArrayLike,
+    radius: ArrayLike,
+    modulus: ArrayLike,
+    equilibrium_spacing: ArrayLike,
+    *,
+    _rtol: float = 1e-15,
+) -> NDArray:
+    """The work of adhesion [J/m^2] whose Maugis--Dugdale pull-off is the one measured.
+
+    Parameters
+    ----------
+    pull_off_force : array_like
+        Measured pull-off force per unit length [N/m], negative (tensile).
+    radius, modulus, equilibrium_spacing : array_like
+        ``R`` [m], the composite plane-strain modulus ``E`` [Pa], the range ``z0`` [m].
+
+    Returns
+    -------
+    ndarray
+        ``w`` [J/m^2]; arrays broadcast together.
+
+    Raises
+    ------
+    ValueError
+        For a force no ``w`` can produce (not negative, or beyond the reachable range,
+        which the message states in N/m).
+
+    Examples
+    --------
+    >>> F = pull_off_force(50e-9, 50e9, 0.1, 0.3e-9)
+    >>> round(float(work_of_adhesion_from_pull_off(F, 50e-9, 50e9, 0.3e-9)), 12)
+    0.1
+    """
+    F = check_array("pull_off_force", pull_off_force, low=-np.inf)
+    R = check_array("radius", radius)
+    E = check_array("modulus", modulus)
+    z0 = check_array("equilibrium_spacing", equilibrium_spacing)
+    F, R, E, z0 = np.broadcast_arrays(F, R, E, z0)
+    w_lo = _S_MIN * E * z0 / S_LJ
+    w_hi = _S_MAX * E * z0 / S_LJ
+    F_lo = pull_off_force_at(R, E, w_hi, z0)
+    bad = ~((F < 0) & (F > F_lo))
+    if np.any(bad):
+        i = int(np.flatnonzero(bad.reshape(-1))[0])
+        raise ValueError(
+            f"pull_off_force={float(F.reshape(-1)[i])!r} N/m cannot be produced by any work of "
+            f"adhesion at radius={float(R.reshape(-1)[i])!r} m, modulus="
+            f"{float(E.reshape(-1)[i])!r} Pa, equilibrium_spacing={float(z0.reshape(-1)[i])!r}"
+            f" m: the reachable pull-off forces are ({float(F_lo.reshape(-1)[i]):.6g}, 0) N/m"
+        )
+    # the pull-off force falls (grows in magnitude) with w
+    return _bisect_log(lambda w: F - pull_off_force_at(R, E, w, z0), w_lo, w_hi, _rtol)
+
+
+def pull_off_force_at(R, E, w, z0):
+    """:func:`pull_off_force` without the broadcasting (arrays of one shape)."""
+    rho, s, h = _groups(R, E, w, z0)
+    return np.asarray(_normal.pull_off(rho, s).F_pulloff_over_Eh) * E * h
+
+
+def work_of_adhesion_from_width(
+    half_width: ArrayLike,
+    normal_load: ArrayLike,
+    radius: ArrayLike,
+    modulus: ArrayLike,
+    equilibrium_spacing: ArrayLike,
+) -> NDArray:
+    """The work of adhesion [J/m^2] whose stable contact at the load has the half-width measured.
+
+    Forward model: the stable Maugis--Dugdale contact carrying ``normal_load``
+    (:func:`linecontact.contact_for_load`); a wider contact needs more adhesion. A contact
+    narrower than Hertz's at that load needs none: it cannot be produced (``ValueError``).
+
+    Examples
+    --------
+    >>> import linecontact as lc
+    >>> cyl = lc.Cylinder.from_modulus(50e-9, 50e9, work_of_adhesion=0.1,
+    ...                                equilibrium_spacing=0.3e-9)
+    >>> a = cyl.contact(load=0.5).contact_half_width
+    >>> round(float(work_of_adhesion_from_width(a, 0.5, 50e-9, 50e9, 0.3e-9)), 10)
+    0.1
+    """
+    a = check_array("half_width", half_width)
+    F = check_array("normal_load", normal_load, low=-np.inf)
+    R = check_array("radius", radius)
+    E = check_array("modulus", modulus)
+    z0 = check_array("equilibrium_spacing", equilibrium_spacing)
+    a, F, R, E, z0 = np.broadcast_arrays(a, F, R, E, z0)
+    h = z0 / S_LJ
+
+    def width(w):
+        rho, s, _ = _groups(R, E, w, z0)
+        c = _normal.contact_for_load(F / (E * h), rho, s, on_no_equilibrium="report")
+        aw = np.asarray(c.a_over_R) * R
+        return np.where(np.isnan(aw), 0.0, aw)  # pulled off: more adhesion is needed
+
+    hertz = np.sqrt(np.clip(4 * R * F / (np.pi * E), 0.0, None))
+    w_lo = _S_MIN * E * z0 / S_LJ
+    w_hi = _S_MAX * E * z0 / S_LJ
+    a_hi = width(w_hi)
+    bad = ~((a > hertz) & (a < a_hi))
+    if np.any(bad):
+        i = int(np.flatnonzero(bad.reshape(-1))[0])
+        raise ValueError(
+            f"half_width={float(a.reshape(-1)[i])!r} m at normal_load="
+            f"{float(F.reshape(-1)[i])!r} N/m cannot be produced by any work of adhesion: the "
+            f"reachable half-widths are ({float(hertz.reshape(-1)[i]):.6g}, "
+            f"{float(a_hi.reshape(-1)[i]):.6g}) m (Hertz's, without adhesion, at the low end)"
+        )
+    return _bisect_log(lambda w: width(w) - a, w_lo, w_hi)
+
+
+def _hertz_width(F, R, E):
+    return np.sqrt(np.clip(4 * R * F / (np.pi * E), 0.0, None))
+
+
+def shear_strength_from_friction(
+    friction_force: ArrayLike,
+    normal_load: ArrayLike,
+    radius: ArrayLike,
+    modulus: ArrayLike,
+    work_of_adhesion: ArrayLike,
+    equilibrium_spacing: ArrayLike,
+    *,
+    contact: str = "maugis-dugdale",
+    receding_work_of_adhesion: ArrayLike | None = None,
+) -> NDArray:
+    r"""Interfacial shear strength ``tau0`` [Pa] from a sliding friction force per length.
+
+    ``tau0 = (f - dw) / (2 a)``: the friction stress times the contact width carries the
+    sliding force, less the adhesion hysteresis ``dw = w_receding - w_advancing`` (the work
+    of opening the trailing edge, ``docs/push.md``). ``a`` comes from the contact at the
+    normal load:
+
+    * ``"maugis-dugdale"`` (default): the stable Maugis--Dugdale contact
+      (:func:`linecontact.contact_for_load`), or with ``receding_work_of_adhesion`` the
+      steady-sliding contact with the receding range ``h1 = w_receding/sigma0``
+      (:func:`linecontact.sliding_contact_for_load`, ``work_of_adhesion`` the advancing one);
+    * ``"jkr"``, ``"dmt"``, ``"hertz"``: the simple models, only when asked (JKR's line
+      contact; Hertz at the load plus the rigid-cylinder adhesive force for DMT; Hertz).
+
+    Examples
+    --------
+    >>> tau = shear_strength_from_friction(0.2, 0.5, 50e-9, 50e9, 0.1, 0.3e-9)
+    >>> bool(1e7 < tau < 1e8)
+    True
+    """
+    f = check_array("friction_force", friction_force, low=0.0, low_inclusive=False)
+    F = check_array("normal_load", normal_load, low=-np.inf)
+    R = check_array("radius", radius)
+    E = check_array("modulus", modulus)
+    w = check_array("work_of_adhesion", work_of_adhesion)
+    z0 = check_array("equilibrium_spacing", equilibrium_spacing)
+    if contact not in ("maugis-dugdale", "jkr", "dmt", "hertz"):
+        raise ValueError(
+            f"contact must be 'maugis-dugdale', 'jkr', 'dmt' or 'hertz', got {contact!r}"
+        )
+    f, F, R, E, w, z0 = np.broadcast_arrays(f, F, R, E, w, z0)
+    rho, s, h = _groups(R, E, w, z0)
+    dw = np.zeros_like(f)
+    if receding_work_of_adhesion is not None:
+        if contact != "maugis-dugdale":
+            raise ValueError("receding_work_of_adhesion needs contact='maugis-dugdale'")
+        w1 = np.broadcast_to(
+            check_array("receding_work_of_adhesion", receding_work_of_adhesion), f.shape
+        )
+        if np.any(w1 < w):
+            raise ValueError(
+                "receding_work_of_adhesion must be at least work_of_adhesion (the advancing "
+                "one): the hysteresis is not negative"
+            )
+        from .sliding import sliding_contact_for_load
+
+        c = sliding_contact_for_load(F / (E * h), rho, w1 / w, s, method="closed-form")
+        a = np.asarray(c.a_over_R) * R
+        dw = w1 - w
+    elif contact == "maugis-dugdale":
+        c = _normal.contact_for_load(F / (E * h), rho, s, on_no_equilibrium="report")
+        a = np.asarray(c.a_over_R) * R
+    elif contact == "hertz":
+        a = _hertz_width(F, R, E)
+    elif contact == "dmt":
+        a = _hertz_width(F - dmt_pull_off_force(R, w, z0), R, E)
+    else:  # JKR: the stable (wider) root of F = pi E a^2/(4R) - sqrt(2 pi w E a)
+        a = _jkr_width(F, R, E, w)
+    bad = ~(np.isfinite(a) & (a > 0))
+    if np.any(bad):
+        i = int(np.flatnonzero(bad.reshape(-1))[0])
+        raise ValueError(
+            f"normal_load={float(F.reshape(-1)[i])!r} N/m has no contact ({contact}): it is "
+            "below the pull-off force, so there is no contact width to divide by"
+        )
+    tau = (f - dw) / (2 * a)
+    if np.any(tau <= 0):
+        i = int(np.flatnonzero((tau <= 0).reshape(-1))[0])
+        raise ValueError(
+            f"friction_force={float(f.reshape(-1)[i])!r} N/m does not exceed the adhesion "
+            f"hysteresis {float(dw.reshape(-1)[i]):.6g} J/m^2: no positive shear strength"
+        )
+    return tau
+
+
+def _jkr_width(F, R, E, w):
+    """Stable JKR line-contact half-width at the load F (nan below the pull-off)."""
+    # F(a) = pi E a^2/(4R) - sqrt(2 pi w E a); its minimum (the pull-off) at a_c
+    a_c = np.cbrt(2 * R * R * w / (np.pi * E))  # dF/da = 0
+    F_c = np.pi * E * a_c**2 / (4 * R) - np.sqrt(2 * np.pi * w * E * a_c)
+    hi = np.maximum(2 * a_c, 2 * np.sqrt(np.abs(4 * R * F / (np.pi * E))) + 4 * a_c)
+    lo = a_c
+    ok = F >= F_c
+    for _ in range(200):
+        m = 0.5 * (lo + hi)
+        up = np.pi * E * m**2 / (4 * R) - np.sqrt(2 * np.pi * w * E * m) > F
+        lo, hi = np.where(up, lo, m), np.where(up, m, hi)
+    return np.where(ok, 0.5 * (lo + hi), np.nan)
+
+
+# --------------------------------------------------------------------------------------------
+# uncertainty
+
+
+@dataclass(frozen=True)
+class Estimate:
+    """A derived quantity with its standard uncertainty and 95 % interval.
+
+    Attributes
+    ----------
+    value : float
+        At the inputs' values.
+    sd, ci95 : float, (float, float)
+        By Monte Carlo: the standard deviation and the 2.5 %/97.5 % percentiles of the
+        samples that have a solution.
+    sd_linear, ci95_linear : float, (float, float)
+        Linearised: ``sqrt(sum (df/dx_i sd_i)^2)`` by central differences, ``value +- 1.96 sd``.
+    n_samples, n_failed, seed : int
+        Samples drawn, samples without a solution (a pull-off no ``w`` reaches, a load below
+        pull-off), the seed.
+    """
+
+    value: float
+    sd: float
+    ci95: tuple[float, float]
+    sd_linear: float
+    ci95_linear: tuple[float, float]
+    n_samples: int
+    n_failed: int
+    seed: int
+
+
+def propagate(
+    fn: Callable[..., NDArray],
+    values: Mapping[str, float],
+    sds: Mapping[str, float],
+    *,
+    n_samples: int = 4000,
+    seed: int = 0,
+) -> Estimate:
+    """Propagate standard uncertainties of the inputs through ``fn`` (Monte Carlo and linear).
+
+    ``fn(**inputs)`` must accept arrays (every function of this module does). Inputs with a
+    standard uncertainty are drawn from normal distributions (samples of a positive input
+    that fall at or below zero are redrawn: the distribution is truncated); a sample for
+    which ``fn`` raises or returns a non-finite value counts in ``n_failed``.
+
+    Examples
+    --------
+    >>> F = float(pull_off_force(50e-9, 50e9, 0.1, 0.3e-9))
+    >>> x = dict(pull_off_force=F, radius=50e-9, modulus=50e9, equilibrium_spacing=0.3e-9)
+    >>> e = propagate(work_of_adhesion_from_pull_off, x, dict(radius=2e-9), n_samples=2000)
+    >>> round(e.value, 10), bool(0.001 < e.sd < 0.01), bool(abs(e.sd / e.sd_linear - 1) < 0.1)
+    (0.1, True, True)
+    """
+    if (
+        not isinstance(n_samples, (int, np.integer))
+        or isinstance(n_samples, bool)
+        or not (10 <= n_samples <= 10_000_000)
+    ):
+        raise ValueError(f"n_samples must be an integer in [10, 1e7], got {n_samples!r}")
+    for k, v in sds.items():
+        if k not in values:
+            raise ValueError(f"an uncertainty is given for {k!r}, which is not an input")
+        if not (np.isfinite(v) and v >= 0):
+            raise ValueError(f"the standard uncertainty of {k} must be finite and >= 0, got {v!r}")
+    x0 = {k: float(v) for k, v in values.items()}
+    value = float(np.asarray(fn(**x0)))
+    rng = np.random.default_rng(seed)
+    samples: dict[str, Any] = dict(x0)
+    for k, sd in sds.items():
+        if sd == 0:
+            continue
+        draw = rng.normal(x0[k], sd, n_samples)
+        if x0[k] > 0:  # a positive quantity: truncate at zero
+            for _ in range(100):
+                bad = draw <= 0
+                if not bad.any():
+                    break
+                draw[bad] = rng.normal(x0[k], sd, int(bad.sum()))
+        samples[k] = draw
+    out = _robust(fn, samples, n_samples)
+    ok = np.isfinite(out)
+    n_failed = int(n_samples - ok.sum())
+    good = out[ok]
+    if good.size >= 2:
+        sd_mc = float(np.std(good, ddof=1))
+        lo, hi = (float(v) for v in np.percentile(good, [2.5, 97.5]))
+    else:
+        sd_mc, lo, hi = math.nan, math.nan, math.nan
+    var = 0.0
+    for k, sd in sds.items():
+        if sd == 0:
+            continue
+        step = 1e-6 * max(abs(x0[k]), sd)
+        up, dn = dict(x0), dict(x0)
+        up[k], dn[k] = x0[k] + step, x0[k] - step
+        try:
+            g = (float(np.asarray(fn(**up))) - float(np.asarray(fn(**dn)))) / (2 * step)
+        except ValueError:
+            g = math.nan
+        var += (g * sd) ** 2
+    sd_lin = math.sqrt(var)
+    return Estimate(
+        value,
+        sd_mc,
+        (lo, hi),
+        sd_lin,
+        (value - 1.96 * sd_lin, value + 1.96 * sd_lin),
+        int(n_samples),
+        n_failed,
+        int(seed),
+    )
+
+
+def _robust(fn, samples: dict[str, Any], n: int) -> NDArray:
+    """``fn`` on the samples; where a batch raises, point by point (nan where it fails)."""
+    try:
+        out = np.asarray(fn(**samples), float)
+        return np.broadcast_to(out, (n,)).copy()
+    except ValueError:
+        pass
+    res = np.full(n, np.nan)
+    for i in range(n):
+        one = {k: (v[i] if np.ndim(v) else v) for k, v in samples.items()}
+        try:
+            res[i] = float(np.asarray(fn(**one)))
+        except ValueError:
+            pass
+    return res
+
+
+# --------------------------------------------------------------------------------------------
+# joint fit of (w, z0) to pull-off forces at several radii
+
+
+@dataclass(frozen=True)
+class AdhesionFit:
+    """``(w, z0)`` (or ``w`` at a fixed ``z0``) fitted to pull-off forces at several radii.
+
+    Attributes
+    ----------
+    work_of_adhesion, equilibrium_spacing : float
+        The fit [J/m^2], [m] (``equilibrium_spacing`` as given when it was fixed).
+    work_of_adhesion_sd, equilibrium_spacing_sd : float
+        Standard uncertainties from the covariance (``0`` for a fixed ``z0``).
+    work_of_adhesion_ci95, equilibrium_spacing_ci95 : (float, float)
+        95 % intervals by parametric bootstrap (refits to the model plus noise of the
+        data's standard deviations); ``*_ci95_linear`` from the covariance in the log
+        parameters.
+    covariance : ndarray, shape (2, 2)
+        Of ``(w, z0)`` [J/m^2, m] (linearised at the fit; zero row and column for a fixed
+        ``z0``).
+    correlation : float
+        Between ``w`` and ``z0`` (nan for a fixed ``z0``).
+    residuals : ndarray
+        ``F_model - F_measured`` [N/m] at the data points.
+    model : ndarray
+        The fitted pull-off forces at the data's radii [N/m].
+    chi2 : float
+        Sum of squared weighted residuals; ``dof`` the degrees of freedom.
+    identifiable : bool
+        Whether the data determine ``z0`` (its relative uncertainty below 50 % and the
+        correlation below 0.999 in magnitude); ``note`` says why not.
+    """
+
+    work_of_adhesion: float
+    equilibrium_spacing: float
+    work_of_adhesion_sd: float
+    equilibrium_spacing_sd: float
+    work_of_adhesion_ci95: tuple[float, float]
+    equilibrium_spacing_ci95: tuple[float, float]
+    work_of_adhesion_ci95_linear: tuple[float, float]
+    equilibrium_spacing_ci95_linear: tuple[float, float]
+    covariance: NDArray
+    correlation: float
+    residuals: NDArray
+    model: NDArray
+    chi2: float
+    dof: int
+    fixed_spacing: bool
+    identifiable: bool
+    note: str
+    radius: NDArray = field(repr=False)
+    pull_off_force: NDArray = field(repr=False)
+    sd: NDArray = field(repr=False)
+    modulus: float = field(repr=False, default=math.nan)
+
+
+def fit_pull_off(
+    radius: ArrayLike,
+    pull_off_force: ArrayLike,
+    modulus: float,
+    *,
+    sd: ArrayLike | None = None,
+    equilibrium_spacing: float | None = None,
+    bootstrap: int | str = "auto",
+    seed: int = 0,
+) -> AdhesionFit:
+    r"""Fit the work of adhesion (and the range) to pull-off forces at several radii.
+
+    Weighted least squares on the Maugis--Dugdale pull-off (:func:`pull_off_force`) in the
+    parameters ``ln w`` and ``ln z0``. The radius dependence separates them in the
+    transition regime: ``F ~ w sqrt(R/z0)`` for a rigid-like contact (small Maugis
+    parameter), ``F ~ (w^2 E R)^(1/3)``, independent of ``z0``, in the JKR limit; data all in
+    the JKR regime do not determine ``z0`` (``identifiable`` is False and ``note`` says so:
+    fix ``equilibrium_spacing``).
+
+    Parameters
+    ----------
+    radius, pull_off_force : array_like, 1-D
+        The data [m], [N/m] (negative).
+    modulus : float
+        Composite plane-strain modulus ``E`` [Pa].
+    sd : array_like, optional
+        Standard uncertainties of the forces [N/m]; without them the weights are equal and
+        the scatter of the residuals sets the uncertainty.
+    equilibrium_spacing : float, optional
+        Fix ``z0`` [m] and fit ``w`` alone (one point suffices).
+    bootstrap : int or "auto"
+        Parametric-bootstrap refits for the 95 % intervals (0: none, the linear ones are
+        copied; ``"auto"``: 100 where the linear interval is poor, a relative standard
+        uncertainty of a parameter above 10 %, else none).
+    seed : int
+        Of the bootstrap.
+
+    Returns
+    -------
+    AdhesionFit
+
+    Examples
+    --------
+    >>> R = np.array([20e-9, 50e-9, 100e-9, 200e-9, 500e-9])
+    >>> F = pull_off_force(R, 50e9, 0.1, 0.3e-9)
+    >>> fit = fit_pull_off(R, F, 50e9, bootstrap=0)
+    >>> round(fit.work_of_adhesion, 8), round(fit.equilibrium_spacing * 1e9, 6)
+    (0.1, 0.3)
+    """
+    from scipy.optimize import least_squares
+
+    R = check_array("radius", radius).reshape(-1)
+    F = check_array("pull_off_force", pull_off_force, low=-np.inf, high=0.0).reshape(-1)
+    if R.size != F.size:
+        raise ValueError(
+            f"radius and pull_off_force must have one length, got {R.size} and {F.size}"
+        )
+    E = float(check_array("modulus", modulus))
+    fixed = equilibrium_spacing is not None
+    n_par = 1 if fixed else 2
+    if R.size < n_par + (0 if fixed else 1):
+        raise ValueError(
+            f"a joint fit of (w, z0) needs at least 3 data points, got {R.size}: give more "
+            "radii, or fix equilibrium_spacing"
+            if not fixed
+            else "give at least one data point"
+        )
+    if sd is None:
+        sig = np.ones_like(F)
+        have_sd = False
+    else:
+        sig = check_array("sd", sd).reshape(-1)
+        if sig.size != F.size:
+            raise ValueError(f"sd must have one value per data point ({F.size}), got {sig.size}")
+        have_sd = True
+    if bootstrap != "auto" and (
+        isinstance(bootstrap, bool)
+        or not isinstance(bootstrap, (int, np.integer))
+        or not 0 <= bootstrap <= 100_000
+    ):
+        raise ValueError(f"bootstrap must be 'auto' or an integer in [0, 1e5], got {bootstrap!r}")
+    z_fixed = (
+        float(check_array("equilibrium_spacing", equilibrium_spacing))
+        if equilibrium_spacing is not None
+        else 0.0
+    )
+
+    def model(p, R=R):
+        w = math.exp(p[0])
+        z0 = z_fixed if fixed else math.exp(p[1])
+        return pull_off_force_at(R, np.full(R.shape, E), np.full(R.shape, w), np.full(R.shape, z0))
+
+    # ln w in [ln 1e-8, ln 1e3] J/m^2, ln z0 in [ln 1e-12, ln 1e-7] m
+    lo = np.log([1e-8, 1e-12])[:n_par]
+    hi = np.log([1e3, 1e-7])[:n_par]
+
+    def solve(Fd, start):
+        return least_squares(
+            lambda p: (model(p) - Fd) / sig,
+            np.clip(start, lo + 1e-9, hi - 1e-9),
+            bounds=(lo, hi),
+            method="trf",
+            x_scale=1.0,
+            xtol=1e-15,
+            ftol=1e-15,
+            gtol=1e-15,
+            max_nfev=2000,
+        )
+
+    # start: per point w at trial ranges, the best median
+    best = None
+    for z_try in [z_fixed] if fixed else [0.15e-9, 0.4e-9, 1.5e-9]:
+        try:
+            w_pts = work_of_adhesion_from_pull_off(F, R, E, z_try, _rtol=1e-4)
+        except ValueError:
+            continue
+        p0 = np.log([float(np.median(w_pts))] + ([] if fixed else [z_try]))
+        cost = float(np.sum(((model(p0) - F) / sig) ** 2))
+        if best is None or cost < best[0]:
+            best = (cost, p0)
+    if best is None:
+        raise ValueError(
+            "no work of adhesion reproduces these pull-off forces at any trial range: check "
+            "their sign (tensile pull-off forces are negative) and units (N/m)"
+        )
+    res = solve(F, best[1])
+    p = res.x
+    J = res.jac
+    resid = model(p) - F
+    chi2 = float(np.sum((resid / sig) ** 2))
+    dof = F.size - n_par
+    scale = 1.0 if have_sd else (chi2 / dof if dof > 0 else math.nan)
+    with np.errstate(all="ignore"):
+        try:
+            cov_log = np.linalg.inv(J.T @ J) * scale
+        except np.linalg.LinAlgError:
+            cov_log = np.full((n_par, n_par), np.inf)
+    w = math.exp(p[0])
+    z0 = z_fixed if fixed else math.exp(p[1])
+    D = np.array([w, z0])[:n_par]
+    cov = np.zeros((2, 2))
+    cov[:n_par, :n_par] = cov_log * np.outer(D, D)
+    sd_log = np.sqrt(np.clip(np.diag(cov_log), 0, None))
+    w_sd = float(np.sqrt(cov[0, 0]))
+    z_sd = float(np.sqrt(cov[1, 1]))
+    with np.errstate(over="ignore"):  # a parameter the data do not determine: inf
+        ci_lin_w = (float(w * np.exp(-1.96 * sd_log[0])), float(w * np.exp(1.96 * sd_log[0])))
+        ci_lin_z = (
+            (z0, z0)
+            if fixed
+            else (float(z0 * np.exp(-1.96 * sd_log[1])), float(z0 * np.exp(1.96 * sd_log[1])))
+        )
+    corr = math.nan if fixed else float(cov[0, 1] / math.sqrt(cov[0, 0] * cov[1, 1]))
+    ci_w, ci_z = ci_lin_w, ci_lin_z
+    n_boot = (0 if np.all(sd_log <= 0.1) else 100) if bootstrap == "auto" else int(bootstrap)
+    if n_boot > 0 and np.isfinite(scale):
+        rng = np.random.default_rng(seed)
+        noise = sig * (1.0 if have_sd else math.sqrt(scale))
+        fitted = model(p)
+        ws, zs = [], []
+        for _ in range(n_boot):
+            Fb = fitted + noise * rng.standard_normal(F.size)
+            if np.any(Fb >= 0):
+                continue
+            rb = solve(Fb, p)
+            ws.append(math.exp(rb.x[0]))
+            zs.append(z0 if fixed else math.exp(rb.x[1]))
+        if len(ws) >= 20:
+            ci_w = tuple(float(v) for v in np.percentile(ws, [2.5, 97.5]))  # type: ignore[assignment]
+            ci_z = tuple(float(v) for v in np.percentile(zs, [2.5, 97.5]))  # type: ignore[assignment]
+    identifiable = True
+    note = ""
+    if not fixed:
+        lam = _ref.maugis_parameter(R / (z0 / S_LJ), S_LJ * w / (z0 * E))
+        if not (z_sd / z0 < 0.5 and abs(corr) < 0.999):
+            identifiable = False
+            note = (
+                f"the data do not determine z0 (relative uncertainty {z_sd / z0:.2g}, "
+                f"correlation with w {corr:.4f}): Maugis parameter {float(np.min(lam)):.3g} to "
+                f"{float(np.max(lam)):.3g}; in the JKR regime the pull-off does not depend on "
+                "z0. Fix equilibrium_spacing, or add radii where the parameter is below ~1"
+            )
+    return AdhesionFit(
+        w,
+        z0,
+        w_sd,
+        0.0 if fixed else z_sd,
+        ci_w,
+        ci_z,
+        ci_lin_w,
+        ci_lin_z,
+        cov,
+        corr,
+        resid,
+        model(p),
+        chi2,
+        dof,
+        fixed,
+        identifiable,
+        note,
+        R,
+        F,
+        sig if have_sd else np.full(F.shape, math.nan),
+        E,
+    )

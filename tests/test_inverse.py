@@ -1,0 +1,228 @@
+"""Inverse problems (linecontact.inverse): recovery, consistency with the forward solvers,
+coverage of the intervals, and bad input."""
+
+import math
+
+import numpy as np
+import pytest
+
+import linecontact as lc
+from linecontact import inverse as inv
+
+E_SILICA_SILICON = float(lc.composite_modulus(72e9, 0.17, 163e9, 0.22))
+W, Z0 = 0.1, 0.3e-9
+RADII = np.array([10e-9, 40e-9, 160e-9, 640e-9, 2560e-9])  # Maugis parameter 0.21 to 1.4
+
+
+def test_forward_model_is_the_cylinder_pull_off():
+    cyl = lc.Cylinder.from_modulus(50e-9, 50e9, work_of_adhesion=W, equilibrium_spacing=Z0)
+    F = float(inv.pull_off_force(50e-9, 50e9, W, Z0))
+    assert F == pytest.approx(cyl.pull_off().pull_off_force, rel=1e-14)
+
+
+def test_the_limits_of_the_forward_model_are_jkr_and_dmt():
+    E = E_SILICA_SILICON
+    small = float(inv.pull_off_force(1e-9, E, 0.001, Z0))  # Maugis parameter ~0.02
+    assert small / float(inv.dmt_pull_off_force(1e-9, 0.001, Z0)) == pytest.approx(1, abs=2e-3)
+    big = float(inv.pull_off_force(1e-4, E, 1.0, Z0))  # Maugis parameter ~ 100
+    assert big / float(inv.jkr_pull_off_force(1e-4, E, 1.0)) == pytest.approx(1, abs=1e-3)
+
+
+def test_jkr_width_carries_the_load():
+    R, E, w = 50e-9, 50e9, 0.1
+    a = inv._jkr_width(np.array([0.0, 0.5, 3.0]), R, E, w)
+    F = np.pi * E * a**2 / (4 * R) - np.sqrt(2 * np.pi * w * E * a)
+    assert np.allclose(F, [0.0, 0.5, 3.0], atol=1e-9)
+
+
+@pytest.mark.parametrize("w", [1e-3, 0.05, 1.0, 5.0])
+def test_work_of_adhesion_from_pull_off_recovers_w(w):
+    F = inv.pull_off_force(RADII, E_SILICA_SILICON, w, Z0)
+    got = inv.work_of_adhesion_from_pull_off(F, RADII, E_SILICA_SILICON, Z0)
+    assert np.allclose(got, w, rtol=1e-12)
+
+
+def test_work_of_adhesion_from_width_recovers_w():
+    cyl = lc.Cylinder.from_modulus(
+        80e-9, E_SILICA_SILICON, work_of_adhesion=W, equilibrium_spacing=Z0
+    )
+    loads = np.array([-0.5, 0.0, 2.0])
+    a = cyl.contact(load=loads).contact_half_width
+    got = inv.work_of_adhesion_from_width(a, loads, 80e-9, E_SILICA_SILICON, Z0)
+    assert np.allclose(got, W, rtol=1e-9)
+
+
+def test_shear_strength_inverts_the_pushed_fibre_and_the_sliding_contact():
+    """tau0 from Q_slide of the forward push (with hysteresis) and from 2 a tau0 (without)."""
+    R, E, w2, w1, tau = 50e-9, 50e9, 0.05, 0.1, 2e7
+    s0, h2 = lc.adhesion_from_work(w2, Z0)
+    F = 0.3
+    p = lc.push(R / h2, w1 / w2, s0 / E, tau / E, F / (E * h2), 1.0)
+    Q = float(p.Q_slide_over_Eh2) * E * h2
+    got = inv.shear_strength_from_friction(Q, F, R, E, w2, Z0, receding_work_of_adhesion=w1)
+    assert float(got) == pytest.approx(tau, rel=1e-9)
+    cyl = lc.Cylinder.from_modulus(R, E, work_of_adhesion=w2, equilibrium_spacing=Z0)
+    a = cyl.contact(load=F).contact_half_width
+    got = inv.shear_strength_from_friction(2 * a * tau, F, R, E, w2, Z0)
+    assert float(got) == pytest.approx(tau, rel=1e-12)
+
+
+def test_the_simple_models_differ_from_maugis_dugdale_in_the_transition():
+    args = (0.2, 0.5, 50e-9, E_SILICA_SILICON, W, Z0)
+    md = float(inv.shear_strength_from_friction(*args))
+    for contact in ("jkr", "dmt", "hertz"):
+        other = float(inv.shear_strength_from_friction(*args, contact=contact))
+        assert other != pytest.approx(md, rel=0.01), contact
+
+
+# --------------------------------------------------------------------------------------------
+# the joint fit
+
+
+def test_noise_free_joint_fit_recovers_both_to_1e_6():
+    F = inv.pull_off_force(RADII, E_SILICA_SILICON, W, Z0)
+    fit = inv.fit_pull_off(RADII, F, E_SILICA_SILICON, bootstrap=0)
+    assert fit.work_of_adhesion == pytest.approx(W, rel=1e-6)
+    assert fit.equilibrium_spacing == pytest.approx(Z0, rel=1e-6)
+    assert fit.identifiable
+    assert np.max(np.abs(fit.residuals)) < 1e-9 * np.max(np.abs(F))
+
+
+def test_fixed_range_fits_w_alone_from_one_point():
+    F = inv.pull_off_force(RADII[:1], E_SILICA_SILICON, W, Z0)
+    fit = inv.fit_pull_off(RADII[:1], F, E_SILICA_SILICON, equilibrium_spacing=Z0)
+    assert fit.work_of_adhesion == pytest.approx(W, rel=1e-9)
+    assert fit.fixed_spacing and fit.equilibrium_spacing == Z0 and math.isnan(fit.correlation)
+
+
+def test_jkr_data_do_not_determine_the_range_and_say_so():
+    R = np.array([2e-6, 4e-6, 8e-6])
+    F = inv.pull_off_force(R, E_SILICA_SILICON, 1.0, Z0)
+    rng = np.random.default_rng(3)
+    fit = inv.fit_pull_off(
+        R, F * (1 + 0.02 * rng.standard_normal(3)), E_SILICA_SILICON, bootstrap=0
+    )
+    assert not fit.identifiable
+    assert "do not determine z0" in fit.note and "JKR" in fit.note
+
+
+def test_covariance_matches_the_scatter_of_repeated_fits():
+    rng = np.random.default_rng(7)
+    F = inv.pull_off_force(RADII, E_SILICA_SILICON, W, Z0)
+    sd = 0.02 * np.abs(F)
+    ws = [
+        inv.fit_pull_off(
+            RADII, F + sd * rng.standard_normal(F.size), E_SILICA_SILICON, sd=sd, bootstrap=0
+        ).work_of_adhesion
+        for _ in range(40)
+    ]
+    fit = inv.fit_pull_off(RADII, F, E_SILICA_SILICON, sd=sd, bootstrap=0)
+    assert np.std(ws, ddof=1) == pytest.approx(fit.work_of_adhesion_sd, rel=0.35)
+
+
+@pytest.mark.slow
+def test_the_95_interval_of_the_joint_fit_covers_the_truth_95_percent():
+    rng = np.random.default_rng(2026)
+    F = inv.pull_off_force(RADII, E_SILICA_SILICON, W, Z0)
+    sd = 0.02 * np.abs(F)
+    trials, hits_w, hits_z = 200, 0, 0
+    for _ in range(trials):
+        fit = inv.fit_pull_off(
+            RADII, F + sd * rng.standard_normal(F.size), E_SILICA_SILICON, sd=sd, bootstrap=0
+        )
+        lo, hi = fit.work_of_adhesion_ci95
+        hits_w += lo <= W <= hi
+        lo, hi = fit.equilibrium_spacing_ci95
+        hits_z += lo <= Z0 <= hi
+    # binomial(200, 0.95): sd 1.5 %, so 0.90..0.99 is a 3-sigma band
+    assert 0.90 <= hits_w / trials <= 0.99
+    assert 0.90 <= hits_z / trials <= 0.99
+
+
+@pytest.mark.slow
+def test_the_monte_carlo_interval_covers_the_truth_95_percent():
+    """Inputs measured with noise; the interval from their uncertainties covers the truth."""
+    rng = np.random.default_rng(11)
+    R_true, E, sd_R, sd_F = 50e-9, E_SILICA_SILICON, 3e-9, 0.05
+    F_true = float(inv.pull_off_force(R_true, E, W, Z0))
+    hits, trials = 0, 200
+    for _ in range(trials):
+        R_meas = R_true + sd_R * rng.standard_normal()
+        F_meas = F_true + sd_F * rng.standard_normal()
+        est = inv.propagate(
+            inv.work_of_adhesion_from_pull_off,
+            dict(pull_off_force=F_meas, radius=R_meas, modulus=E, equilibrium_spacing=Z0),
+            dict(pull_off_force=sd_F, radius=sd_R),
+            n_samples=400,
+            seed=int(rng.integers(1 << 30)),
+        )
+        hits += est.ci95[0] <= W <= est.ci95[1]
+    assert 0.90 <= hits / trials <= 0.99
+
+
+def test_propagate_monte_carlo_and_linear_agree_for_small_uncertainties():
+    F = float(inv.pull_off_force(50e-9, E_SILICA_SILICON, W, Z0))
+    est = inv.propagate(
+        inv.work_of_adhesion_from_pull_off,
+        dict(pull_off_force=F, radius=50e-9, modulus=E_SILICA_SILICON, equilibrium_spacing=Z0),
+        dict(radius=0.5e-9, modulus=0.5e9, pull_off_force=0.005 * abs(F)),
+        n_samples=4000,
+        seed=1,
+    )
+    assert est.value == pytest.approx(W, rel=1e-12)
+    assert est.sd == pytest.approx(est.sd_linear, rel=0.05)
+    assert est.ci95[0] < W < est.ci95[1] and est.n_failed == 0
+    # seeded: the same numbers again
+    again = inv.propagate(
+        inv.work_of_adhesion_from_pull_off,
+        dict(pull_off_force=F, radius=50e-9, modulus=E_SILICA_SILICON, equilibrium_spacing=Z0),
+        dict(radius=0.5e-9, modulus=0.5e9, pull_off_force=0.005 * abs(F)),
+        n_samples=4000,
+        seed=1,
+    )
+    assert again == est
+
+
+# --------------------------------------------------------------------------------------------
+# bad input
+
+
+def test_an_unreachable_pull_off_says_which_forces_are_reachable():
+    with pytest.raises(ValueError, match=r"reachable pull-off forces are \(.*, 0\) N/m"):
+        inv.work_of_adhesion_from_pull_off(0.1, 50e-9, 50e9, Z0)
+    with pytest.raises(ValueError, match="reachable half-widths"):
+        inv.work_of_adhesion_from_width(1e-10, 1.0, 50e-9, 50e9, Z0)
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (lambda: inv.fit_pull_off(RADII[:2], [-1.0, -2.0], 50e9), "at least 3 data points"),
+        (lambda: inv.fit_pull_off(RADII, [-1.0] * 4, 50e9), "one length"),
+        (lambda: inv.fit_pull_off(RADII, [-1.0] * 5, 50e9, sd=[-1] * 5), "sd"),
+        (lambda: inv.fit_pull_off(RADII, [1.0] * 5, 50e9), "pull_off_force"),
+        (lambda: inv.fit_pull_off(RADII, [-1.0] * 5, 50e9, bootstrap=-1), "bootstrap"),
+        (
+            lambda: inv.propagate(inv.pull_off_force, dict(radius=1.0), dict(radius=-1.0)),
+            "uncertainty of radius",
+        ),
+        (lambda: inv.propagate(inv.pull_off_force, dict(radius=1.0), dict(z=1.0)), "'z'"),
+        (
+            lambda: inv.shear_strength_from_friction(0.1, -10.0, 50e-9, 50e9, W, Z0),
+            "below the pull-off",
+        ),
+        (
+            lambda: inv.shear_strength_from_friction(0.1, 1.0, 50e-9, 50e9, W, Z0, contact="x"),
+            "contact",
+        ),
+        (
+            lambda: inv.shear_strength_from_friction(
+                1e-6, 1.0, 50e-9, 50e9, 0.1, Z0, receding_work_of_adhesion=0.2
+            ),
+            "hysteresis",
+        ),
+    ],
+)
+def test_bad_input_is_a_clear_error(call, message):
+    with pytest.raises(ValueError, match=message):
+        call()
