@@ -402,6 +402,8 @@ def test_every_option_is_documented_and_every_command_has_examples(capsys):
         "figures",
         "map",
         "materials",
+        "fit-adhesion",
+        "fit-friction",
         "cite",
     }
     for name, p in sub.choices.items():

@@ -37,6 +37,7 @@ from ._validation import check_array
 
 __all__ = [
     "AdhesionFit",
+    "simple_model_work_of_adhesion",
     "Estimate",
     "dmt_pull_off_force",
     "fit_pull_off",
@@ -100,6 +101,39 @@ def dmt_pull_off_force(
     """
     R, w, z0 = (np.asarray(v, float) for v in (radius, work_of_adhesion, equilibrium_spacing))
     return -2 * math.sqrt(2) * w * np.sqrt(R * S_LJ / z0)
+
+
+def simple_model_work_of_adhesion(
+    radius: ArrayLike,
+    pull_off_force: ArrayLike,
+    modulus: float,
+    equilibrium_spacing: float,
+    sd: ArrayLike | None = None,
+) -> dict[str, float]:
+    """The work of adhesion JKR and DMT alone would give, by weighted least squares.
+
+    ``F = -c_i w^(2/3)`` (JKR, ``c_i = (3/4)(4 pi E R_i)^(1/3)``) and ``F = -d_i w`` (the
+    rigid/DMT limit, ``d_i = 2 sqrt(2) sqrt(R_i/h)`` at the range given) are linear in
+    ``w^(2/3)`` and ``w``: closed-form weighted least squares. Returns
+    ``{"jkr": w_JKR, "dmt": w_DMT}`` [J/m^2] — what the simple models would have reported.
+
+    Examples
+    --------
+    >>> R = np.array([1e-4, 2e-4])
+    >>> F = jkr_pull_off_force(R, 50e9, 0.2)
+    >>> round(simple_model_work_of_adhesion(R, F, 50e9, 0.3e-9)["jkr"], 12)
+    0.2
+    """
+    R = check_array("radius", radius).reshape(-1)
+    F = check_array("pull_off_force", pull_off_force, low=-np.inf, high=0.0).reshape(-1)
+    E = float(check_array("modulus", modulus))
+    z0 = float(check_array("equilibrium_spacing", equilibrium_spacing))
+    wt = np.ones_like(F) if sd is None else 1.0 / check_array("sd", sd).reshape(-1) ** 2
+    c = 0.75 * np.cbrt(4 * np.pi * E * R)
+    u = float(np.sum(wt * c * -F) / np.sum(wt * c * c))
+    d = 2 * math.sqrt(2) * np.sqrt(R * S_LJ / z0)
+    w_dmt = float(np.sum(wt * d * -F) / np.sum(wt * d * d))
+    return {"jkr": u**1.5, "dmt": w_dmt}
 
 
 def _bisect_log(

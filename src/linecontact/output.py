@@ -107,7 +107,10 @@ class Table:
             if isinstance(v, (int, float, np.number)) and not isinstance(v, (bool, np.bool_)):
                 units[k] = self.units.get(k) or unit_of(k)
         for k, v in self.columns.items():
-            if v.dtype.kind in "fiu":
+            # numbers, and lists of numbers whose unit is given or stated by the name
+            if v.dtype.kind in "fiu" or (
+                v.dtype.kind == "O" and (k in self.units or unit_of(k) != "1")
+            ):
                 units[k] = self.units.get(k) or unit_of(k)
         return {
             "linecontact": {"version": __version__},

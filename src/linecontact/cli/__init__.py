@@ -23,6 +23,7 @@ from collections.abc import Sequence
 from .._version import __version__
 from ..errors import ConvergenceError
 from . import adhesion_map as _adhesion_map
+from . import fit as _fit
 from . import history as _history
 from . import materials as _materials
 from . import normal as _normal
@@ -35,8 +36,8 @@ from ._options import NoPointError, Parser, flag_message, record_flags
 __all__ = ["build_parser", "main"]
 
 _COMMANDS = (
-    "normal, pulloff, curve, slide-init, roll, cycle, history, slide, push, paper, figures, "
-    "map, materials or cite"
+    "normal, pulloff, curve, slide-init, roll, cycle, history, slide, push, fit-adhesion, "
+    "fit-friction, paper, figures, map, materials or cite"
 )
 
 
@@ -70,6 +71,7 @@ def build_parser() -> argparse.ArgumentParser:
     _normal.register(sub)
     _tangential.register(sub)
     _history.register(sub)
+    _fit.register(sub)
     _sliding.register(sub)
     _push.register(sub)
     _paper.register(sub)

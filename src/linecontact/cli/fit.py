@@ -1,0 +1,615 @@
+"""The subcommands of the inverse problems: ``fit-adhesion`` and ``fit-friction``.
+
+A thin shell over :mod:`linecontact.inverse`. Data come from a CSV file (``--data``) whose
+header names the columns with their units (``radius_m``, ``pull_off_force_N_per_m``, ...;
+lines starting with ``#`` are comments), or as one measurement on the command line, each
+value with an optional standard uncertainty (``--radius 50e-9 --radius-sd 3e-9`` or
+``--radius-sd 6%``). The output is one record: the fitted values, their standard
+uncertainties, 95 % intervals (two-element lists), the covariance, and per data point
+(lists) the residuals and the forward model; what JKR and DMT alone would have given is
+beside them.
+"""
+
+from __future__ import annotations
+
+import argparse
+import csv
+import math
+import os
+from typing import Any
+
+import numpy as np
+
+from .. import inverse as inv
+from ..output import Table
+from ._options import add_command, add_output_options, command_line, emit
+from ._options import cylinder as _cylinder
+
+__all__ = ["register"]
+
+#: quantity -> (unit suffix -> factor to SI); "_N" and "_nN" are totals over --length
+_UNITS: dict[str, dict[str, float]] = {
+    "radius": {"m": 1.0, "nm": 1e-9, "um": 1e-6},
+    "force": {"N_per_m": 1.0, "nN_per_um": 1e-3, "uN_per_m": 1e-6, "N": 1.0, "nN": 1e-9},
+}
+_TOTAL = ("N", "nN")
+
+_DESCRIPTION = {
+    "fit-adhesion": (
+        "Work of adhesion w (and the range z0) from measured pull-off forces, with the "
+        "Maugis-Dugdale line contact as the forward model. With --data FILE (columns "
+        "radius_m, pull_off_force_N_per_m and optionally pull_off_force_sd_N_per_m): (w, z0) "
+        "jointly by weighted least squares, or w alone with --z0 fixed. With one "
+        "measurement (--radius --pull-off-force --z0, each with an optional -sd): w with a "
+        "Monte Carlo 95 %% interval and the linearised one. Pull-off forces are negative "
+        "(tensile)."
+    ),
+    "fit-friction": (
+        "Interfacial shear strength tau0 = (f - dw)/(2a) from sliding friction forces f at "
+        "normal loads F, with a from the Maugis-Dugdale contact of the cylinder (SI inputs: "
+        "--radius, materials, adhesion), or from the steady-sliding contact when "
+        "--receding-work-of-adhesion gives the hysteresis dw; JKR, DMT or Hertz widths only "
+        "with --contact. --data FILE (columns normal_load_N_per_m, friction_force_N_per_m, "
+        "optionally friction_force_sd_N_per_m) or one measurement (--normal-load "
+        "--friction-force, with optional -sd)."
+    ),
+}
+_EXAMPLES = {
+    "fit-adhesion": [
+        "linecontact fit-adhesion --data pulloff.csv --E1 72e9 --nu1 0.17 --E2 163e9 --nu2 0.22",
+        "linecontact fit-adhesion --data pulloff.csv --cylinder-material SiO2 "
+        "--substrate-material Si --z0 0.3e-9 --json",
+        "linecontact fit-adhesion --radius 50e-9 --radius-sd 3e-9 --pull-off-force -3.1 "
+        "--pull-off-force-sd 5%% --modulus 51.7e9 --z0 0.3e-9",
+    ],
+    "fit-friction": [
+        "linecontact fit-friction --data friction.csv --radius 50e-9 --modulus 51.7e9 "
+        "--work-of-adhesion 0.1 --z0 0.3e-9",
+        "linecontact fit-friction --normal-load 0.5 --friction-force 0.2 --friction-force-sd "
+        "10%% --radius 50e-9 --modulus 51.7e9 --work-of-adhesion 0.1 --z0 0.3e-9 --json",
+    ],
+}
+
+
+def _sd(text: str) -> tuple[float, bool]:
+    """A standard uncertainty: a number, or a percentage of the value (``5%``)."""
+    rel = text.strip().endswith("%")
+    v = float(text.strip().rstrip("%"))
+    return (v / 100 if rel else v), rel
+
+
+def register(sub: Any) -> None:
+    """Add ``fit-adhesion`` and ``fit-friction`` to the subparsers ``sub``."""
+    for name, summary in (
+        ("fit-adhesion", "work of adhesion (and range) from pull-off forces, with uncertainty"),
+        ("fit-friction", "interfacial shear strength from friction forces, with uncertainty"),
+    ):
+        p = add_command(sub, name, summary, _DESCRIPTION[name], _EXAMPLES[name])
+        d = p.add_argument_group("data")
+        d.add_argument(
+            "--data",
+            metavar="FILE",
+            help="CSV file: a header naming the columns with their units, '#' comments",
+        )
+        si = p.add_argument_group("the cylinder and the materials (SI)")
+        si.add_argument("--radius", type=float, metavar="R", help="radius [m]")
+        si.add_argument("--radius-sd", metavar="SD", help="its standard uncertainty [m] or N%%")
+        si.add_argument("--modulus", type=float, metavar="E", help="composite modulus [Pa]")
+        si.add_argument("--modulus-sd", metavar="SD", help="its standard uncertainty [Pa] or N%%")
+        si.add_argument("--E1", type=float, help="cylinder's Young's modulus [Pa]")
+        si.add_argument("--nu1", type=float, help="cylinder's Poisson ratio")
+        si.add_argument("--E2", type=float, help="substrate's Young's modulus [Pa]")
+        si.add_argument("--nu2", type=float, help="substrate's Poisson ratio")
+        si.add_argument(
+            "--cylinder-material", metavar="NAME", help="a preset (linecontact materials)"
+        )
+        si.add_argument(
+            "--substrate-material", metavar="NAME", help="a preset (linecontact materials)"
+        )
+        si.add_argument("--z0", type=float, help="range of adhesion z0 [m] (fixed if given)")
+        si.add_argument("--z0-sd", metavar="SD", help="its standard uncertainty [m] or N%%")
+        si.add_argument(
+            "--length", type=float, metavar="L", help="fibre length [m], for forces given in N"
+        )
+        if name == "fit-adhesion":
+            one = p.add_argument_group("one measurement (instead of --data)")
+            one.add_argument(
+                "--pull-off-force", type=float, metavar="F", help="pull-off force [N/m], < 0"
+            )
+            one.add_argument("--pull-off-force-sd", metavar="SD", help="[N/m] or N%%")
+            p.add_argument(
+                "--bootstrap",
+                default="auto",
+                metavar="N",
+                help="parametric-bootstrap refits for the intervals of a joint fit, or auto "
+                "(100 where the linear interval is poor) (default: %(default)s)",
+            )
+        else:
+            si.add_argument("--work-of-adhesion", type=float, metavar="W", help="w [J/m^2]")
+            si.add_argument("--work-of-adhesion-sd", metavar="SD", help="[J/m^2] or N%%")
+            si.add_argument(
+                "--receding-work-of-adhesion",
+                type=float,
+                metavar="W1",
+                help="receding w [J/m^2]: the steady-sliding contact and dw = w1 - w",
+            )
+            one = p.add_argument_group("one measurement (instead of --data)")
+            one.add_argument("--normal-load", type=float, metavar="F", help="normal load [N/m]")
+            one.add_argument("--friction-force", type=float, metavar="f", help="[N/m], > 0")
+            one.add_argument("--friction-force-sd", metavar="SD", help="[N/m] or N%%")
+            p.add_argument(
+                "--contact",
+                choices=("maugis-dugdale", "jkr", "dmt", "hertz"),
+                default="maugis-dugdale",
+                help="the contact whose width divides the force (default: %(default)s)",
+            )
+        p.add_argument(
+            "--samples", type=int, default=4000, help="Monte Carlo samples (default: %(default)s)"
+        )
+        p.add_argument(
+            "--seed", type=int, default=0, help="seed of the random draws (default: %(default)s)"
+        )
+        p.add_argument("--plot", metavar="FILE", help="draw the fit into FILE (.png, .svg, .pdf)")
+        add_output_options(p)
+        p.set_defaults(func=_cmd_adhesion if name == "fit-adhesion" else _cmd_friction)
+
+
+# --------------------------------------------------------------------------------------------
+# reading data
+
+
+def read_columns(path: str, wanted: dict[str, tuple[str, bool]], length: float | None):
+    """Columns of a CSV file, in SI units per unit length.
+
+    ``wanted`` maps a name prefix (``"radius"``) to ``(kind, required)`` with ``kind`` a key
+    of the unit table. Returns ``{prefix: array}`` and the number of rows. Errors name the
+    file, the row (counting the header as row 1, comment lines included) and the column.
+    """
+    try:
+        with open(path, newline="", encoding="utf-8") as fh:
+            lines = list(enumerate(fh.read().splitlines(), start=1))
+    except OSError as exc:
+        raise ValueError(f"--data {path!r}: cannot read it ({exc.strerror or exc})") from None
+    body = [(n, line) for n, line in lines if line.strip() and not line.lstrip().startswith("#")]
+    if not body:
+        raise ValueError(f"--data {path!r}: no header and no rows (only comments or empty)")
+    rows = list(csv.reader(line for _, line in body))
+    header = [h.strip() for h in rows[0]]
+    out: dict[str, np.ndarray] = {}
+    # each column belongs to the longest wanted prefix it starts with ("pull_off_force_sd_..."
+    # to "pull_off_force_sd", not "pull_off_force"); columns of no wanted prefix are ignored
+    owner: dict[int, str] = {}
+    for j, col in enumerate(header):
+        hits = [p for p in wanted if col.startswith(p + "_")]
+        if hits:
+            owner[j] = max(hits, key=len)
+    for prefix, (kind, required) in wanted.items():
+        found = []
+        for j, col in enumerate(header):
+            if owner.get(j) == prefix:
+                unit = col[len(prefix) + 1 :]
+                if unit.startswith("sd_"):
+                    continue  # the uncertainty of a quantity whose uncertainty is not read
+                found.append((j, col, unit))
+        if not found:
+            if required:
+                units = ", ".join(f"{prefix}_{u}" for u in _UNITS[kind])
+                raise ValueError(
+                    f"--data {path!r}: no column for {prefix.replace('_', ' ')}: expected one "
+                    f"of {units}; the header is {','.join(header)!r}"
+                )
+            continue
+        if len(found) > 1:
+            raise ValueError(
+                f"--data {path!r}: {len(found)} columns for {prefix.replace('_', ' ')} "
+                f"({', '.join(c for _, c, _ in found)}): keep one"
+            )
+        j, col, unit = found[0]
+        if unit not in _UNITS[kind]:
+            raise ValueError(
+                f"--data {path!r}, column {col!r}: the unit {unit!r} is not one the reader "
+                f"knows ({', '.join(_UNITS[kind])})"
+            )
+        if unit in _TOTAL and length is None:
+            raise ValueError(
+                f"--data {path!r}, column {col!r}: forces in {unit} are totals: give the "
+                "fibre's --length [m] to turn them into forces per length"
+            )
+        per = length if (unit in _TOTAL and length is not None) else 1.0
+        factor = _UNITS[kind][unit] / per
+        vals = np.empty(len(rows) - 1)
+        for i, row in enumerate(rows[1:]):
+            line_no = body[i + 1][0]
+            if len(row) != len(header):
+                raise ValueError(
+                    f"--data {path!r}, row {line_no}: {len(row)} fields, the header has "
+                    f"{len(header)}"
+                )
+            try:
+                v = float(row[j])
+            except ValueError:
+                raise ValueError(
+                    f"--data {path!r}, row {line_no}, column {col!r}: {row[j]!r} is not a number"
+                ) from None
+            if not math.isfinite(v):
+                raise ValueError(
+                    f"--data {path!r}, row {line_no}, column {col!r}: {row[j]!r} is not finite"
+                )
+            if "_sd_" in col + "_" and v < 0:
+                raise ValueError(
+                    f"--data {path!r}, row {line_no}, column {col!r}: a standard uncertainty "
+                    f"must be >= 0, got {v!r}"
+                )
+            vals[i] = v * factor
+        out[prefix] = vals
+    return out, len(rows) - 1
+
+
+# --------------------------------------------------------------------------------------------
+# the modulus
+
+
+def _modulus(args: argparse.Namespace) -> tuple[float, dict[str, Any]]:
+    """The composite modulus [Pa] from --modulus, the moduli or the presets, and its record."""
+    if args.modulus is not None:
+        if any(getattr(args, k) is not None for k in ("E1", "nu1", "E2", "nu2")) or (
+            args.cylinder_material or args.substrate_material
+        ):
+            raise ValueError(
+                "give either --modulus or the materials (--E1 ... or presets), not both"
+            )
+        if not (math.isfinite(args.modulus) and args.modulus > 0):
+            raise ValueError(f"--modulus must be a finite number > 0, got {args.modulus!r}")
+        return args.modulus, {"modulus_Pa": args.modulus}
+    # the SI layer's reader of the materials and presets (a unit radius and range: unused)
+    ns = argparse.Namespace(**vars(args))
+    ns.radius = args.radius if args.radius is not None else 1e-7
+    ns.h, ns.sigma0, ns.work_of_adhesion, ns.z0, ns.length = 1e-9, None, None, None, None
+    cyl = _cylinder(ns)
+    rec: dict[str, Any] = {"modulus_Pa": cyl.modulus}
+    for k in ("E1", "nu1", "E2", "nu2"):
+        if getattr(args, k) is not None:
+            rec[k + ("_Pa" if k.startswith("E") else "")] = getattr(args, k)
+    for k in ("cylinder_material", "substrate_material"):
+        if getattr(args, k):
+            rec[k] = getattr(args, k)
+    return cyl.modulus, rec
+
+
+def _one_sd(args, name: str, value: float | None) -> float:
+    text = getattr(args, name + "_sd", None)
+    if text is None:
+        return 0.0
+    flag = "--" + name.replace("_", "-") + "-sd"
+    try:
+        v, rel = _sd(text)
+    except ValueError:
+        raise ValueError(f"{flag} must be a number or a percentage (5%), got {text!r}") from None
+    if not (math.isfinite(v) and v >= 0):
+        raise ValueError(f"{flag} must be finite and >= 0, got {text!r}")
+    if value is None:
+        raise ValueError(f"{flag} needs --{name.replace('_', '-')}")
+    return abs(value) * v if rel else v
+
+
+def _table(args, record: dict[str, Any], params: dict[str, Any], title: str, units) -> Table:
+    cols = {}
+    for k, v in record.items():
+        if isinstance(v, (list, tuple, np.ndarray)):
+            arr = np.empty(1, dtype=object)
+            arr[0] = [
+                None if (isinstance(x, float) and not math.isfinite(x)) else x
+                for x in np.asarray(v, dtype=object).tolist()
+            ]
+            cols[k] = arr
+        else:
+            cols[k] = np.asarray([v])
+    show = tuple(k for k, v in record.items() if not isinstance(v, (list, tuple, np.ndarray)))
+    return Table(cols, params, units, command_line(args), title, show=show)
+
+
+# --------------------------------------------------------------------------------------------
+# fit-adhesion
+
+
+def _cmd_adhesion(args: argparse.Namespace) -> int:
+    E, mat = _modulus(args)
+    params: dict[str, Any] = dict(mat)
+    if args.length is not None and not (math.isfinite(args.length) and args.length > 0):
+        raise ValueError(f"--length must be a finite number > 0, got {args.length!r}")
+    if args.data is not None:
+        if args.pull_off_force is not None or args.radius is not None:
+            raise ValueError(
+                "give either --data FILE or one measurement (--radius, --pull-off-force)"
+            )
+        cols, n = read_columns(
+            args.data,
+            {
+                "radius": ("radius", True),
+                "pull_off_force": ("force", True),
+                "pull_off_force_sd": ("force", False),
+            },
+            args.length,
+        )
+        R, F = cols["radius"], cols["pull_off_force"]
+        sd = cols.get("pull_off_force_sd")
+        if np.any(R <= 0):
+            i = int(np.flatnonzero(R <= 0)[0])
+            raise ValueError(f"--data {args.data!r}: the radius of data point {i + 1} is not > 0")
+        if np.any(F >= 0):
+            i = int(np.flatnonzero(F >= 0)[0])
+            raise ValueError(
+                f"--data {args.data!r}: the pull-off force of data point {i + 1} is "
+                f"{float(F[i])!r} N/m: pull-off forces are tensile, negative"
+            )
+        if sd is not None and np.any(sd == 0):
+            raise ValueError(f"--data {args.data!r}: a standard uncertainty of 0 gives no weight")
+        boot: Any = args.bootstrap
+        if boot != "auto":
+            try:
+                boot = int(boot)
+            except ValueError:
+                raise ValueError(
+                    f"--bootstrap must be 'auto' or an integer, got {boot!r}"
+                ) from None
+        fit = inv.fit_pull_off(
+            R, F, E, sd=sd, equilibrium_spacing=args.z0, bootstrap=boot, seed=args.seed
+        )
+        z_ref = fit.equilibrium_spacing
+        simple = inv.simple_model_work_of_adhesion(R, F, E, z_ref, sd)
+        rec: dict[str, Any] = {
+            "work_of_adhesion": fit.work_of_adhesion,
+            "work_of_adhesion_sd": fit.work_of_adhesion_sd,
+            "work_of_adhesion_ci95": list(fit.work_of_adhesion_ci95),
+            "work_of_adhesion_ci95_linear": list(fit.work_of_adhesion_ci95_linear),
+            "z0": fit.equilibrium_spacing,
+            "z0_sd": fit.equilibrium_spacing_sd,
+            "z0_ci95": list(fit.equilibrium_spacing_ci95),
+            "z0_ci95_linear": list(fit.equilibrium_spacing_ci95_linear),
+            "correlation": fit.correlation,
+            "covariance": fit.covariance.tolist(),
+            "identifiable": fit.identifiable,
+            "note": fit.note,
+            "chi2": fit.chi2,
+            "dof": fit.dof,
+            "work_of_adhesion_jkr": simple["jkr"],
+            "work_of_adhesion_dmt": simple["dmt"],
+            "radius_m": R.tolist(),
+            "pull_off_force_N_per_m": F.tolist(),
+            "model_N_per_m": fit.model.tolist(),
+            "residuals_N_per_m": fit.residuals.tolist(),
+        }
+        params.update(
+            data=os.fspath(args.data),
+            n_points=n,
+            z0_fixed=args.z0 is not None,
+            seed=args.seed,
+            model="maugis-dugdale",
+        )
+        title = f"fit of w{'' if args.z0 is not None else ' and z0'} to {n} pull-off forces"
+        if args.plot:
+            from ..figures.fit import draw_adhesion_fit
+
+            draw_adhesion_fit(fit, args.plot)
+    else:
+        if args.pull_off_force is None or args.radius is None or args.z0 is None:
+            raise ValueError(
+                "give --data FILE, or one measurement: --radius, --pull-off-force and --z0"
+            )
+        if args.plot:
+            raise ValueError("--plot draws a fit to --data")
+        values = dict(
+            pull_off_force=args.pull_off_force,
+            radius=args.radius,
+            modulus=E,
+            equilibrium_spacing=args.z0,
+        )
+        sds = {
+            "pull_off_force": _one_sd(args, "pull_off_force", args.pull_off_force),
+            "radius": _one_sd(args, "radius", args.radius),
+            "modulus": _one_sd(args, "modulus", E),
+            "equilibrium_spacing": _one_sd(args, "z0", args.z0),
+        }
+        inv.work_of_adhesion_from_pull_off(**values)  # a clear error for an unreachable force
+        est = inv.propagate(
+            inv.work_of_adhesion_from_pull_off, values, sds, n_samples=args.samples, seed=args.seed
+        )
+        simple = inv.simple_model_work_of_adhesion(args.radius, args.pull_off_force, E, args.z0)
+        rec = {
+            "work_of_adhesion": est.value,
+            "work_of_adhesion_sd": est.sd,
+            "work_of_adhesion_ci95": list(est.ci95),
+            "work_of_adhesion_sd_linear": est.sd_linear,
+            "work_of_adhesion_ci95_linear": list(est.ci95_linear),
+            "z0": args.z0,
+            "work_of_adhesion_jkr": simple["jkr"],
+            "work_of_adhesion_dmt": simple["dmt"],
+            "samples_failed": est.n_failed,
+        }
+        params.update(
+            radius_m=args.radius,
+            pull_off_force_N_per_m=args.pull_off_force,
+            z0_m=args.z0,
+            samples=args.samples,
+            seed=args.seed,
+            model="maugis-dugdale",
+            **{f"{k}_sd": v for k, v in sds.items() if v},
+        )
+        title = "work of adhesion from one pull-off force (Monte Carlo)"
+    units = {
+        "work_of_adhesion": "J/m^2",
+        "work_of_adhesion_sd": "J/m^2",
+        "work_of_adhesion_sd_linear": "J/m^2",
+        "work_of_adhesion_jkr": "J/m^2",
+        "work_of_adhesion_dmt": "J/m^2",
+        "z0": "m",
+        "z0_sd": "m",
+        "chi2": "1",
+        "pull_off_force_sd": "N/m",
+        "radius_sd": "m",
+        "modulus_sd": "Pa",
+        "equilibrium_spacing_sd": "m",
+        "work_of_adhesion_ci95": "J/m^2",
+        "work_of_adhesion_ci95_linear": "J/m^2",
+        "z0_ci95": "m",
+        "z0_ci95_linear": "m",
+        "covariance": "J/m^2 and m: [[w w, w z0], [z0 w, z0 z0]]",
+    }
+    emit(args, _table(args, rec, params, title, units))
+    return 0
+
+
+# --------------------------------------------------------------------------------------------
+# fit-friction
+
+
+def _cmd_friction(args: argparse.Namespace) -> int:
+    E, mat = _modulus(args)
+    params: dict[str, Any] = dict(mat)
+    if args.radius is None or args.work_of_adhesion is None or args.z0 is None:
+        raise ValueError(
+            "the contact width needs the cylinder: give --radius, --work-of-adhesion and --z0 "
+            "(with the modulus or the materials)"
+        )
+    if args.length is not None and not (math.isfinite(args.length) and args.length > 0):
+        raise ValueError(f"--length must be a finite number > 0, got {args.length!r}")
+    if args.data is not None:
+        if args.friction_force is not None or args.normal_load is not None:
+            raise ValueError("give either --data FILE or one measurement (--normal-load, ...)")
+        cols, n = read_columns(
+            args.data,
+            {
+                "normal_load": ("force", True),
+                "friction_force": ("force", True),
+                "friction_force_sd": ("force", False),
+            },
+            args.length,
+        )
+        F, f = cols["normal_load"], cols["friction_force"]
+        f_sd = cols.get("friction_force_sd", np.zeros_like(f))
+        if np.any(f <= 0):
+            i = int(np.flatnonzero(f <= 0)[0])
+            raise ValueError(
+                f"--data {args.data!r}: the friction force of point {i + 1} is not > 0"
+            )
+    else:
+        if args.friction_force is None or args.normal_load is None:
+            raise ValueError(
+                "give --data FILE, or one measurement: --normal-load and --friction-force"
+            )
+        F, f = np.array([args.normal_load]), np.array([args.friction_force])
+        f_sd = np.array([_one_sd(args, "friction_force", args.friction_force)])
+        n = 1
+    w_sd = _one_sd(args, "work_of_adhesion", args.work_of_adhesion)
+    R_sd = _one_sd(args, "radius", args.radius)
+    E_sd = _one_sd(args, "modulus", E)
+    z_sd = _one_sd(args, "z0", args.z0)
+    common = dict(
+        radius=args.radius,
+        modulus=E,
+        work_of_adhesion=args.work_of_adhesion,
+        equilibrium_spacing=args.z0,
+    )
+
+    def tau_fn(contact, **kw):
+        def fn(friction_force, normal_load, radius, modulus, work_of_adhesion, equilibrium_spacing):
+            return inv.shear_strength_from_friction(
+                friction_force,
+                normal_load,
+                radius,
+                modulus,
+                work_of_adhesion,
+                equilibrium_spacing,
+                contact=contact,
+                **kw,
+            )
+
+        return fn
+
+    kw = {}
+    if args.receding_work_of_adhesion is not None:
+        kw["receding_work_of_adhesion"] = args.receding_work_of_adhesion
+    fn = tau_fn(args.contact, **kw)
+    tau = np.asarray(fn(f, F, **common), float)
+    ests = [
+        inv.propagate(
+            fn,
+            dict(friction_force=f[i], normal_load=F[i], **common),
+            dict(
+                friction_force=f_sd[i],
+                radius=R_sd,
+                modulus=E_sd,
+                work_of_adhesion=w_sd,
+                equilibrium_spacing=z_sd,
+            ),
+            n_samples=args.samples,
+            seed=args.seed + i,
+        )
+        for i in range(n)
+    ]
+    sd = np.array([e.sd for e in ests])
+    if np.all(sd > 0):  # inverse-variance mean; the shared inputs make it optimistic
+        wt = 1 / sd**2
+        tau_all = float(np.sum(wt * tau) / np.sum(wt))
+        tau_all_sd = float(math.sqrt(1 / np.sum(wt)))
+    else:
+        tau_all = float(np.mean(tau))
+        tau_all_sd = float(np.std(tau, ddof=1) / math.sqrt(n)) if n > 1 else 0.0
+    others: dict[str, list[float]] = {}
+    for c in ("jkr", "dmt", "hertz"):  # point by point: a model may have no contact at one
+        others[c] = []
+        for i in range(n):
+            try:
+                others[c].append(float(tau_fn(c)(f[i], F[i], **common)))
+            except ValueError:
+                others[c].append(math.nan)
+    rec: dict[str, Any] = {
+        "tau0_Pa": tau_all,
+        "tau0_sd_Pa": tau_all_sd,
+        "tau0_ci95_Pa": [tau_all - 1.96 * tau_all_sd, tau_all + 1.96 * tau_all_sd],
+        "n_points": n,
+        "normal_load_N_per_m": F.tolist(),
+        "friction_force_N_per_m": f.tolist(),
+        "tau0_per_point_Pa": tau.tolist(),
+        "tau0_per_point_sd_Pa": sd.tolist(),
+        "tau0_per_point_ci95_Pa": [list(e.ci95) for e in ests],
+        "tau0_jkr_Pa": others["jkr"],
+        "tau0_dmt_Pa": others["dmt"],
+        "tau0_hertz_Pa": others["hertz"],
+    }
+    params.update(
+        radius_m=args.radius,
+        work_of_adhesion_J_per_m2=args.work_of_adhesion,
+        z0_m=args.z0,
+        contact=args.contact,
+        samples=args.samples,
+        seed=args.seed,
+    )
+    if args.data is not None:
+        params["data"] = os.fspath(args.data)
+    if args.receding_work_of_adhesion is not None:
+        params["receding_work_of_adhesion_J_per_m2"] = args.receding_work_of_adhesion
+    if args.plot:
+        from ..figures.fit import draw_friction_fit
+
+        draw_friction_fit(
+            F,
+            f,
+            np.full(n, tau_all),
+            (tau_all - 1.96 * tau_all_sd, tau_all + 1.96 * tau_all_sd),
+            {k.upper() if k != "hertz" else "Hertz": np.asarray(v) for k, v in others.items()},
+            args.plot,
+            friction_sd=f_sd,
+        )
+    units = {"n_points": "1", "tau0_per_point_ci95_Pa": "Pa"}
+    emit(
+        args,
+        _table(
+            args,
+            rec,
+            params,
+            f"interfacial shear strength from {n} friction force(s) ({args.contact} contact)",
+            units,
+        ),
+    )
+    return 0

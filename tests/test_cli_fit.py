@@ -1,0 +1,242 @@
+"""CLI fit-adhesion and fit-friction: the data reader, the records, the errors."""
+
+import json
+
+import numpy as np
+import pytest
+
+import linecontact as lc
+from linecontact import inverse as inv
+from linecontact.cli import main
+
+E = float(lc.composite_modulus(72e9, 0.17, 163e9, 0.22))
+MATS = ["--E1", "72e9", "--nu1", "0.17", "--E2", "163e9", "--nu2", "0.22", "--quiet"]
+R = np.array([10e-9, 40e-9, 160e-9, 640e-9, 2560e-9])
+W, Z0 = 0.1, 0.3e-9
+
+
+def run(capsys, *argv):
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def record(text):
+    doc = json.loads(text)
+    assert set(doc) == {"linecontact", "command", "parameters", "units", "results"}
+    (rec,) = doc["results"]
+    return doc["parameters"], rec, doc["units"]
+
+
+def write(path, header, rows, comment="# synthetic pull-off data"):
+    lines = [comment, ",".join(header)] + [",".join(repr(float(v)) for v in r) for r in rows]
+    path.write_text("\n".join(lines) + "\n")
+    return path
+
+
+@pytest.fixture
+def pulloff_csv(tmp_path):
+    F = inv.pull_off_force(R, E, W, Z0)
+    return write(
+        tmp_path / "pulloff.csv",
+        ["radius_m", "pull_off_force_N_per_m", "pull_off_force_sd_N_per_m"],
+        zip(R, F, 0.03 * np.abs(F), strict=True),
+    )
+
+
+def test_fit_adhesion_recovers_noise_free_data_and_prints_the_contract(capsys, pulloff_csv):
+    code, out, err = run(capsys, "fit-adhesion", "--data", pulloff_csv, *MATS, "--json")
+    assert code == 0, err
+    params, rec, units = record(out)
+    assert rec["work_of_adhesion"] == pytest.approx(W, rel=1e-6)
+    assert rec["z0"] == pytest.approx(Z0, rel=1e-6)
+    for key in ("work_of_adhesion", "z0"):
+        assert rec[key + "_sd"] > 0
+        lo, hi = rec[key + "_ci95"]
+        assert lo < rec[key] < hi
+    assert np.shape(rec["covariance"]) == (2, 2)
+    assert len(rec["residuals_N_per_m"]) == len(rec["model_N_per_m"]) == 5
+    assert rec["identifiable"] is True
+    assert params["n_points"] == 5 and params["modulus_Pa"] == pytest.approx(E, rel=1e-15)
+    assert units["work_of_adhesion"] == "J/m^2" and units["z0_ci95"] == "m"
+    # what the simple models would have said, beside it
+    assert abs(rec["work_of_adhesion_jkr"] / W - 1) > 0.05
+    assert abs(rec["work_of_adhesion_dmt"] / W - 1) > 0.05
+
+
+def test_fit_adhesion_with_a_fixed_range_and_other_units(capsys, tmp_path):
+    F = inv.pull_off_force(R[:2], E, W, Z0)
+    path = write(
+        tmp_path / "p.csv",
+        ["radius_nm", "pull_off_force_nN_per_um"],
+        zip(R[:2] * 1e9, F * 1e3, strict=True),
+    )
+    code, out, err = run(capsys, "fit-adhesion", "--data", path, *MATS, "--z0", Z0, "--json")
+    assert code == 0, err
+    params, rec, _ = record(out)
+    assert rec["work_of_adhesion"] == pytest.approx(W, rel=1e-9)
+    assert rec["z0"] == Z0 and params["z0_fixed"] is True
+
+
+def test_fit_adhesion_totals_need_the_length(capsys, tmp_path):
+    F = inv.pull_off_force(R, E, W, Z0)
+    path = write(
+        tmp_path / "t.csv", ["radius_m", "pull_off_force_N"], zip(R, F * 5e-6, strict=True)
+    )
+    code, _, err = run(capsys, "fit-adhesion", "--data", path, *MATS)
+    assert code == 2 and "--length" in err
+    code, out, err = run(capsys, "fit-adhesion", "--data", path, *MATS, "--length", 5e-6, "--json")
+    assert code == 0, err
+    assert record(out)[1]["work_of_adhesion"] == pytest.approx(W, rel=1e-6)
+
+
+def test_one_measurement_monte_carlo(capsys):
+    F = float(inv.pull_off_force(50e-9, E, W, Z0))
+    code, out, err = run(
+        capsys,
+        "fit-adhesion",
+        "--radius",
+        50e-9,
+        "--radius-sd",
+        3e-9,
+        "--pull-off-force",
+        F,
+        "--pull-off-force-sd",
+        "5%",
+        "--z0",
+        Z0,
+        *MATS,
+        "--json",
+    )
+    assert code == 0, err
+    params, rec, _ = record(out)
+    assert rec["work_of_adhesion"] == pytest.approx(W, rel=1e-12)
+    assert rec["work_of_adhesion_sd"] == pytest.approx(rec["work_of_adhesion_sd_linear"], rel=0.1)
+    assert params["pull_off_force_sd"] == pytest.approx(0.05 * abs(F))
+    assert params["radius_sd"] == 3e-9
+
+
+def test_fit_friction_agrees_with_the_api(capsys, tmp_path):
+    cyl = lc.Cylinder.from_modulus(50e-9, E, work_of_adhesion=W, equilibrium_spacing=Z0)
+    loads = np.array([0.0, 0.5, 2.0])
+    tau = 3e7
+    f = 2 * np.asarray(cyl.contact(load=loads).contact_half_width) * tau
+    path = write(
+        tmp_path / "f.csv",
+        ["normal_load_N_per_m", "friction_force_N_per_m", "friction_force_sd_N_per_m"],
+        zip(loads, f, 0.05 * f, strict=True),
+    )
+    args = [
+        "fit-friction",
+        "--data",
+        path,
+        "--radius",
+        50e-9,
+        "--modulus",
+        E,
+        "--work-of-adhesion",
+        W,
+        "--z0",
+        Z0,
+        "--json",
+    ]
+    code, out, err = run(capsys, *args)
+    assert code == 0, err
+    params, rec, _ = record(out)
+    assert np.allclose(rec["tau0_per_point_Pa"], tau, rtol=1e-9)
+    assert rec["tau0_Pa"] == pytest.approx(tau, rel=1e-9)
+    assert len(rec["tau0_per_point_ci95_Pa"]) == 3
+    assert rec["tau0_hertz_Pa"][0] is None and rec["tau0_hertz_Pa"][2] > 0  # no Hertz width at 0
+    assert params["contact"] == "maugis-dugdale"
+
+
+@pytest.mark.parametrize(
+    ("header", "rows", "extra", "message"),
+    [
+        (["r_m", "pull_off_force_N_per_m"], [[1e-8, -1.0]], [], "no column for radius"),
+        (
+            ["radius_ft", "pull_off_force_N_per_m"],
+            [[1e-8, -1.0]],
+            [],
+            "column 'radius_ft': the unit 'ft'",
+        ),
+        (
+            ["radius_m", "pull_off_force_N_per_m"],
+            [[1e-8, -1.0], [2e-8, "x"]],
+            [],
+            "row 4, column 'pull_off_force_N_per_m': 'x' is not a number",
+        ),
+        (
+            ["radius_m", "pull_off_force_N_per_m", "pull_off_force_sd_N_per_m"],
+            [[1e-8, -1.0, -0.1], [2e-8, -1.2, 0.1], [4e-8, -1.5, 0.1]],
+            [],
+            "row 3, column 'pull_off_force_sd_N_per_m': a standard uncertainty must be >= 0",
+        ),
+        (
+            ["radius_m", "pull_off_force_N_per_m"],
+            [[1e-8, -1.0], [2e-8, -1.2]],
+            [],
+            "at least 3 data points",
+        ),
+        (
+            ["radius_m", "pull_off_force_N_per_m"],
+            [[1e-8, 1.0], [2e-8, -1.2], [3e-8, -1.3]],
+            [],
+            "data point 1 is 1.0 N/m: pull-off forces are tensile, negative",
+        ),
+    ],
+)
+def test_bad_data_names_the_file_row_and_column(capsys, tmp_path, header, rows, extra, message):
+    path = tmp_path / "bad.csv"
+    path.write_text(
+        "# c\n" + ",".join(header) + "\n" + "\n".join(",".join(map(str, r)) for r in rows)
+    )
+    code, out, err = run(capsys, "fit-adhesion", "--data", path, *MATS, *extra)
+    assert code == 2, err
+    assert err.count("\n") == 1 and "error:" in err and message in err, err
+    assert "Traceback" not in err
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        (["--data", "/nonexistent/p.csv", *MATS], "cannot read it"),
+        (
+            ["--radius", "50e-9", "--pull-off-force", "0.5", "--z0", "3e-10", *MATS],
+            "reachable pull-off forces",
+        ),
+        (["--radius", "50e-9", "--pull-off-force", "-1", *MATS], "--z0"),
+        (
+            [
+                "--radius",
+                "50e-9",
+                "--pull-off-force",
+                "-1",
+                "--z0",
+                "3e-10",
+                "--radius-sd",
+                "-1",
+                *MATS,
+            ],
+            "--radius-sd must be finite and >= 0",
+        ),
+        (
+            [
+                "--radius",
+                "50e-9",
+                "--pull-off-force",
+                "-1",
+                "--z0",
+                "3e-10",
+                "--modulus",
+                "5e10",
+                *MATS,
+            ],
+            "either --modulus or the materials",
+        ),
+    ],
+)
+def test_bad_input_exit_2(capsys, argv, message):
+    code, out, err = run(capsys, "fit-adhesion", *argv)
+    assert code == 2
+    assert err.count("\n") == 1 and message in err, err
