@@ -240,3 +240,25 @@ def test_bad_input_exit_2(capsys, argv, message):
     code, out, err = run(capsys, "fit-adhesion", *argv)
     assert code == 2
     assert err.count("\n") == 1 and message in err, err
+
+
+def test_the_modulus_uncertainty_is_propagated_into_a_joint_fit(capsys, pulloff_csv):
+    code, out, err = run(
+        capsys,
+        "fit-adhesion",
+        "--data",
+        pulloff_csv,
+        "--modulus",
+        E,
+        "--modulus-sd",
+        "10%",
+        "--quiet",
+        "--json",
+    )
+    assert code == 0, err
+    _, rec, units = record(out)
+    assert rec["work_of_adhesion_sd_inputs"] > 0
+    assert rec["work_of_adhesion_sd_total"] > rec["work_of_adhesion_sd"]
+    assert units["work_of_adhesion_sd_total"] == "J/m^2"
+    code, _, err = run(capsys, "fit-adhesion", "--data", pulloff_csv, *MATS, "--radius-sd", "1e-9")
+    assert code == 2 and "--radius-sd is for one measurement" in err

@@ -357,6 +357,38 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
         )
         z_ref = fit.equilibrium_spacing
         simple = inv.simple_model_work_of_adhesion(R, F, E, z_ref, sd)
+        if args.radius_sd is not None:
+            raise ValueError("--radius-sd is for one measurement; with --data the radii are exact")
+        E_sd = _one_sd(args, "modulus", E)
+        z_sd = _one_sd(args, "z0", args.z0) if args.z0 is not None else 0.0
+        if args.z0 is None and args.z0_sd is not None:
+            raise ValueError("--z0-sd needs a fixed --z0 (a joint fit estimates z0)")
+        extra_sd: dict[str, float] = {}
+        if E_sd or z_sd:
+            # the inputs' uncertainties: refits with the modulus (and a fixed z0) drawn
+            rng = np.random.default_rng(args.seed + 1)
+            ws, zs = [], []
+            for _ in range(100):
+                Ei = E + E_sd * rng.standard_normal()
+                zi = (args.z0 + z_sd * rng.standard_normal()) if args.z0 is not None else None
+                if Ei <= 0 or (zi is not None and zi <= 0):
+                    continue
+                try:
+                    fi = inv.fit_pull_off(R, F, Ei, sd=sd, equilibrium_spacing=zi, bootstrap=0)
+                except ValueError:
+                    continue
+                ws.append(fi.work_of_adhesion)
+                zs.append(fi.equilibrium_spacing)
+            extra_sd = {
+                "work_of_adhesion_sd_inputs": float(np.std(ws, ddof=1)),
+                "z0_sd_inputs": float(np.std(zs, ddof=1)) if args.z0 is None else z_sd,
+            }
+            extra_sd["work_of_adhesion_sd_total"] = math.hypot(
+                fit.work_of_adhesion_sd, extra_sd["work_of_adhesion_sd_inputs"]
+            )
+            extra_sd["z0_sd_total"] = math.hypot(
+                fit.equilibrium_spacing_sd, extra_sd["z0_sd_inputs"]
+            )
         rec: dict[str, Any] = {
             "work_of_adhesion": fit.work_of_adhesion,
             "work_of_adhesion_sd": fit.work_of_adhesion_sd,
@@ -374,6 +406,7 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
             "dof": fit.dof,
             "work_of_adhesion_jkr": simple["jkr"],
             "work_of_adhesion_dmt": simple["dmt"],
+            **extra_sd,
             "radius_m": R.tolist(),
             "pull_off_force_N_per_m": F.tolist(),
             "model_N_per_m": fit.model.tolist(),
@@ -449,6 +482,10 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
         "radius_sd": "m",
         "modulus_sd": "Pa",
         "equilibrium_spacing_sd": "m",
+        "work_of_adhesion_sd_inputs": "J/m^2",
+        "work_of_adhesion_sd_total": "J/m^2",
+        "z0_sd_inputs": "m",
+        "z0_sd_total": "m",
         "work_of_adhesion_ci95": "J/m^2",
         "work_of_adhesion_ci95_linear": "J/m^2",
         "z0_ci95": "m",
