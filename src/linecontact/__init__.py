@@ -13,6 +13,9 @@ length over ``E h``, stresses over ``E``; compressive load positive):
   steady sliding with different trailing and leading adhesion (:mod:`linecontact.sliding`);
 - :mod:`linecontact.reference` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14);
 - :mod:`linecontact.sie` -- the Gauss--Chebyshev singular-integral core;
+- :func:`fit_pull_off`, :func:`work_of_adhesion_from_pull_off`,
+  :func:`shear_strength_from_friction`, :func:`propagate` -- from measurements to properties
+  with uncertainty (:mod:`linecontact.inverse`); :class:`Material` -- presets with sources;
 - :class:`Cylinder` -- the SI layer (materials, adhesion as (sigma0, h) or (w, z0));
 - :mod:`linecontact.output` -- results to JSON, JSON Lines, CSV or tables, with provenance.
 """
@@ -27,6 +30,13 @@ from .cylinder import (
     cylinder_tangential_history,
 )
 from .errors import ConvergenceError, CouplingWarning, ModelValidityWarning, NoEquilibriumError
+from .inverse import (
+    fit_pull_off,
+    propagate,
+    shear_strength_from_friction,
+    work_of_adhesion_from_pull_off,
+    work_of_adhesion_from_width,
+)
 from .materials import (
     adhesion_from_work,
     compliance_constants,
@@ -43,6 +53,7 @@ from .normal import (
     normal_contact,
     pull_off,
 )
+from .presets import Material
 from .push import Push, TipPush, push, tip_push
 from .reference import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
 from .sliding import (
@@ -65,6 +76,7 @@ from .tangential import (
 
 __all__ = [
     "ConvergenceError",
+    "Material",
     "CouplingWarning",
     "Cylinder",
     "ModelValidityWarning",
@@ -89,6 +101,7 @@ __all__ = [
     "cylinder_tangential_history",
     "dundurs_beta",
     "equilibria",
+    "fit_pull_off",
     "hertz_load",
     "jkr_load",
     "kappa",
@@ -97,16 +110,20 @@ __all__ = [
     "non_contact",
     "normal_contact",
     "pull_off",
+    "propagate",
     "push",
     "sliding_contact",
     "sliding_contact_for_load",
     "sliding_initiation",
     "sliding_initiation_coulomb",
+    "shear_strength_from_friction",
     "sliding_pull_off",
     "steady_rolling",
     "steady_rolling_coulomb",
     "tangential_history",
     "tangential_history_coulomb",
     "tip_push",
+    "work_of_adhesion_from_pull_off",
+    "work_of_adhesion_from_width",
     "zero_width_load",
 ]
