@@ -500,6 +500,41 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
 # fit-friction
 
 
+def _combined(fn, f, F, f_sd, common, shared_sd, n_samples: int, seed: int):
+    """One tau0 for all points: the mean weighted by the friction forces' uncertainties.
+
+    Its uncertainty by Monte Carlo over everything at once: the friction forces
+    independently, the cylinder's inputs (shared by every point, so not averaged away)
+    once per sample. Returns ``(tau0, sd, (lo, hi))``.
+    """
+    wt = 1 / f_sd**2 if np.all(f_sd > 0) else np.ones_like(f)
+    tau = np.asarray(fn(f, F, **common), float)
+    value = float(np.sum(wt * tau) / np.sum(wt))
+    if not (np.any(f_sd > 0) or any(shared_sd.values())):
+        return value, 0.0, (value, value)
+    rng = np.random.default_rng(seed + 7919)
+    draw = {}
+    for k, v in common.items():
+        s = shared_sd.get(k, 0.0)
+        x = v + s * rng.standard_normal((n_samples, 1)) if s else np.full((n_samples, 1), v)
+        draw[k] = np.where(x > 0, x, v)  # a positive input: no non-physical draw
+    ff = f + f_sd * rng.standard_normal((n_samples, f.size))
+    ok = np.all(ff > 0, axis=1)
+    taus = np.full((n_samples, f.size), np.nan)
+    try:
+        taus[ok] = fn(
+            ff[ok], np.broadcast_to(F, ff[ok].shape), **{k: v[ok] for k, v in draw.items()}
+        )
+    except ValueError:
+        pass
+    comb = np.sum(wt * taus, axis=1) / np.sum(wt)
+    comb = comb[np.isfinite(comb)]
+    if comb.size < 2:
+        return value, math.nan, (math.nan, math.nan)
+    lo, hi = np.percentile(comb, [2.5, 97.5])
+    return value, float(np.std(comb, ddof=1)), (float(lo), float(hi))
+
+
 def _cmd_friction(args: argparse.Namespace) -> int:
     E, mat = _modulus(args)
     params: dict[str, Any] = dict(mat)
@@ -585,13 +620,16 @@ def _cmd_friction(args: argparse.Namespace) -> int:
         for i in range(n)
     ]
     sd = np.array([e.sd for e in ests])
-    if np.all(sd > 0):  # inverse-variance mean; the shared inputs make it optimistic
-        wt = 1 / sd**2
-        tau_all = float(np.sum(wt * tau) / np.sum(wt))
-        tau_all_sd = float(math.sqrt(1 / np.sum(wt)))
-    else:
-        tau_all = float(np.mean(tau))
-        tau_all_sd = float(np.std(tau, ddof=1) / math.sqrt(n)) if n > 1 else 0.0
+    tau_all, tau_all_sd, tau_all_ci = _combined(
+        fn,
+        f,
+        F,
+        f_sd,
+        common,
+        dict(radius=R_sd, modulus=E_sd, work_of_adhesion=w_sd, equilibrium_spacing=z_sd),
+        args.samples,
+        args.seed,
+    )
     others: dict[str, list[float]] = {}
     for c in ("jkr", "dmt", "hertz"):  # point by point: a model may have no contact at one
         others[c] = []
@@ -603,7 +641,7 @@ def _cmd_friction(args: argparse.Namespace) -> int:
     rec: dict[str, Any] = {
         "tau0_Pa": tau_all,
         "tau0_sd_Pa": tau_all_sd,
-        "tau0_ci95_Pa": [tau_all - 1.96 * tau_all_sd, tau_all + 1.96 * tau_all_sd],
+        "tau0_ci95_Pa": list(tau_all_ci),
         "n_points": n,
         "normal_load_N_per_m": F.tolist(),
         "friction_force_N_per_m": f.tolist(),
