@@ -262,3 +262,26 @@ def test_the_modulus_uncertainty_is_propagated_into_a_joint_fit(capsys, pulloff_
     assert units["work_of_adhesion_sd_total"] == "J/m^2"
     code, _, err = run(capsys, "fit-adhesion", "--data", pulloff_csv, *MATS, "--radius-sd", "1e-9")
     assert code == 2 and "--radius-sd is for one measurement" in err
+
+
+def test_friction_points_that_disagree_widen_the_combined_interval(capsys, tmp_path):
+    cyl = lc.Cylinder.from_modulus(50e-9, E, work_of_adhesion=W, equilibrium_spacing=Z0)
+    loads = np.array([0.0, 0.5, 2.0])
+    a = np.asarray(cyl.contact(load=loads).contact_half_width)
+    common = ["--radius", 50e-9, "--modulus", E, "--work-of-adhesion", W, "--z0", Z0, "--json"]
+    recs = []
+    for taus in ([3e7, 3e7, 3e7], [2e7, 3e7, 4.5e7]):
+        f = 2 * a * np.array(taus)
+        path = write(
+            tmp_path / "f.csv",
+            ["normal_load_N_per_m", "friction_force_N_per_m", "friction_force_sd_N_per_m"],
+            zip(loads, f, 0.03 * f, strict=True),
+        )
+        code, out, err = run(capsys, "fit-friction", "--data", path, *common)
+        assert code == 0, err
+        recs.append(record(out)[1])
+    agree, disagree = recs
+    assert agree["birge_ratio"] < 1e-20
+    assert disagree["birge_ratio"] > 10
+    width = lambda r: r["tau0_ci95_Pa"][1] - r["tau0_ci95_Pa"][0]  # noqa: E731
+    assert width(disagree) > 3 * width(agree)

@@ -44,3 +44,18 @@ def test_rolling_creep(tmp_path):
     assert len(creep) == 8 and all(c < 0 for c in creep)
     # the stick zone grows with the load at a fixed tractive force: the creep falls
     assert all(abs(b) < abs(a) for a, b in zip(creep, creep[1:], strict=False))
+
+
+def test_fit_pull_off(tmp_path):
+    pytest.importorskip("matplotlib")
+    out = run(tmp_path, "fit_pull_off.py", "fit.png")
+    assert "synthetic" in out and "95 %" in out and "correlation" in out
+    w = float(next(r for r in out.splitlines() if r.strip().startswith("w  =")).split()[2])
+    assert abs(w / 0.1 - 1) < 0.10
+    assert "JKR" in out and "DMT" in out
+    lines = (tmp_path / "pulloff.csv").read_text(encoding="utf-8").splitlines()
+    assert lines[0].startswith("# synthetic:")
+    assert lines[1] == "radius_m,pull_off_force_N_per_m,pull_off_force_sd_N_per_m"
+    rows = [[float(v) for v in r.split(",")] for r in lines[2:]]
+    assert len(rows) == 5 and all(F < 0 < sd for _, F, sd in rows)
+    assert (tmp_path / "fit.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

@@ -505,13 +505,15 @@ def _combined(fn, f, F, f_sd, common, shared_sd, n_samples: int, seed: int):
 
     Its uncertainty by Monte Carlo over everything at once: the friction forces
     independently, the cylinder's inputs (shared by every point, so not averaged away)
-    once per sample. Returns ``(tau0, sd, (lo, hi))``.
+    once per sample; widened by the square root of the Birge ratio (the points' chi^2 per
+    degree of freedom about the mean) when they scatter more than their uncertainties say.
+    Returns ``(tau0, sd, (lo, hi), birge ratio)``.
     """
     wt = 1 / f_sd**2 if np.all(f_sd > 0) else np.ones_like(f)
     tau = np.asarray(fn(f, F, **common), float)
     value = float(np.sum(wt * tau) / np.sum(wt))
     if not (np.any(f_sd > 0) or any(shared_sd.values())):
-        return value, 0.0, (value, value)
+        return value, 0.0, (value, value), math.nan
     rng = np.random.default_rng(seed + 7919)
     draw = {}
     for k, v in common.items():
@@ -530,9 +532,19 @@ def _combined(fn, f, F, f_sd, common, shared_sd, n_samples: int, seed: int):
     comb = np.sum(wt * taus, axis=1) / np.sum(wt)
     comb = comb[np.isfinite(comb)]
     if comb.size < 2:
-        return value, math.nan, (math.nan, math.nan)
-    lo, hi = np.percentile(comb, [2.5, 97.5])
-    return value, float(np.std(comb, ddof=1)), (float(lo), float(hi))
+        return value, math.nan, (math.nan, math.nan), math.nan
+    lo, hi = (float(v) for v in np.percentile(comb, [2.5, 97.5]))
+    sd = float(np.std(comb, ddof=1))
+    # the points' scatter about the mean against their measurement uncertainty (tau0 is
+    # proportional to f): a Birge ratio above 1 widens the interval by its square root
+    birge = math.nan
+    if f.size > 1 and np.all(f_sd > 0):
+        sd_i = tau * f_sd / f
+        birge = float(np.sum(((tau - value) / sd_i) ** 2) / (f.size - 1))
+        if birge > 1:
+            k = math.sqrt(birge)
+            sd, lo, hi = sd * k, value - k * (value - lo), value + k * (hi - value)
+    return value, sd, (lo, hi), birge
 
 
 def _cmd_friction(args: argparse.Namespace) -> int:
@@ -620,7 +632,7 @@ def _cmd_friction(args: argparse.Namespace) -> int:
         for i in range(n)
     ]
     sd = np.array([e.sd for e in ests])
-    tau_all, tau_all_sd, tau_all_ci = _combined(
+    tau_all, tau_all_sd, tau_all_ci, birge = _combined(
         fn,
         f,
         F,
@@ -642,6 +654,7 @@ def _cmd_friction(args: argparse.Namespace) -> int:
         "tau0_Pa": tau_all,
         "tau0_sd_Pa": tau_all_sd,
         "tau0_ci95_Pa": list(tau_all_ci),
+        "birge_ratio": birge,
         "n_points": n,
         "normal_load_N_per_m": F.tolist(),
         "friction_force_N_per_m": f.tolist(),
@@ -670,13 +683,14 @@ def _cmd_friction(args: argparse.Namespace) -> int:
         draw_friction_fit(
             F,
             f,
-            np.full(n, tau_all),
-            (tau_all - 1.96 * tau_all_sd, tau_all + 1.96 * tau_all_sd),
+            tau,
+            np.array([e.ci95 for e in ests]),
             {k.upper() if k != "hertz" else "Hertz": np.asarray(v) for k, v in others.items()},
             args.plot,
             friction_sd=f_sd,
+            combined=(tau_all, tau_all_ci),
         )
-    units = {"n_points": "1", "tau0_per_point_ci95_Pa": "Pa"}
+    units = {"n_points": "1", "birge_ratio": "1", "tau0_per_point_ci95_Pa": "Pa"}
     emit(
         args,
         _table(

@@ -4,7 +4,8 @@ One module per family of figures, each with the parameters it draws and why:
 :mod:`linecontact.figures.normal` (Figs. 2--6), :mod:`linecontact.figures.tangential`
 (Figs. 7, 13, 14), :mod:`linecontact.figures.sliding` (Figs. 8--12), and beyond the paper
 :mod:`linecontact.figures.push` (the pushed fibre, :func:`push_figures`),
-:mod:`linecontact.figures.history` (load histories) and
+:mod:`linecontact.figures.history` (load histories), :mod:`linecontact.figures.fit` (the
+fits of ``linecontact fit-adhesion/fit-friction --plot``) and
 :mod:`linecontact.figures.adhesion_map` (the adhesion map of line contact; with the pushed
 fibre's and the histories', :func:`extra_figures`); the shared plumbing in
 :mod:`linecontact.figures._style`.
