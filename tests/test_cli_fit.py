@@ -285,3 +285,61 @@ def test_friction_points_that_disagree_widen_the_combined_interval(capsys, tmp_p
     assert disagree["birge_ratio"] > 10
     width = lambda r: r["tau0_ci95_Pa"][1] - r["tau0_ci95_Pa"][0]  # noqa: E731
     assert width(disagree) > 3 * width(agree)
+
+
+def test_one_total_force_and_one_width(capsys):
+    F = float(inv.pull_off_force(50e-9, E, W, Z0))
+    base = ["fit-adhesion", "--radius", 50e-9, "--z0", Z0, *MATS, "--json"]
+    code, out, err = run(capsys, *base, "--pull-off-force-total", F * 5e-6, "--length", 5e-6)
+    assert code == 0, err
+    assert record(out)[1]["work_of_adhesion"] == pytest.approx(W, rel=1e-9)
+    code, _, err = run(capsys, *base, "--pull-off-force-total", F * 5e-6)
+    assert code == 2 and "--length" in err
+    cyl = lc.Cylinder.from_modulus(50e-9, E, work_of_adhesion=W, equilibrium_spacing=Z0)
+    a = float(cyl.contact(load=0.5).contact_half_width)
+    code, out, err = run(
+        capsys, *base, "--half-width", a, "--normal-load", 0.5, "--half-width-sd", "2%"
+    )
+    assert code == 0, err
+    rec = record(out)[1]
+    assert rec["work_of_adhesion"] == pytest.approx(W, rel=1e-8)
+    assert rec["work_of_adhesion_sd"] > 0
+
+
+def test_presets_show_their_numbers_and_sources_in_a_fit(capsys, pulloff_csv):
+    code, out, err = run(
+        capsys,
+        "fit-adhesion",
+        "--data",
+        pulloff_csv,
+        "--cylinder-material",
+        "SiO2",
+        "--substrate-material",
+        "Si",
+        "--quiet",
+        "--json",
+    )
+    assert code == 0, err
+    params = record(out)[0]
+    assert params["cylinder_material"] == "SiO2" and "Petersen" in params["cylinder_source"]
+    assert params["E1_Pa"] == 72e9 and params["nu2"] == 0.22
+
+
+def test_friction_from_a_measured_width(capsys):
+    code, out, err = run(
+        capsys,
+        "fit-friction",
+        "--friction-force",
+        0.2,
+        "--half-width",
+        5e-9,
+        "--half-width-sd",
+        "10%",
+        "--json",
+    )
+    assert code == 0, err
+    rec = record(out)[1]
+    assert rec["tau0_Pa"] == pytest.approx(0.2 / (2 * 5e-9), rel=1e-12)
+    assert rec["tau0_sd_Pa"] == pytest.approx(rec["tau0_sd_linear_Pa"], rel=0.15)
+    code, _, err = run(capsys, "fit-friction", "--half-width", 5e-9)
+    assert code == 2 and "--friction-force" in err

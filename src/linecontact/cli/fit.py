@@ -22,7 +22,7 @@ import numpy as np
 
 from .. import inverse as inv
 from ..output import Table
-from ._options import add_command, add_output_options, command_line, emit
+from ._options import add_command, add_output_options, command_line, emit, si_parameters
 from ._options import cylinder as _cylinder
 
 __all__ = ["register"]
@@ -117,6 +117,24 @@ def register(sub: Any) -> None:
                 "--pull-off-force", type=float, metavar="F", help="pull-off force [N/m], < 0"
             )
             one.add_argument("--pull-off-force-sd", metavar="SD", help="[N/m] or N%%")
+            one.add_argument(
+                "--pull-off-force-total",
+                type=float,
+                metavar="F",
+                help="pull-off force of the whole fibre [N], < 0, with --length",
+            )
+            one.add_argument("--pull-off-force-total-sd", metavar="SD", help="[N] or N%%")
+            one.add_argument(
+                "--half-width",
+                type=float,
+                metavar="A",
+                help="a measured contact half-width [m] at --normal-load (instead of a "
+                "pull-off force): w from the width",
+            )
+            one.add_argument("--half-width-sd", metavar="SD", help="[m] or N%%")
+            one.add_argument(
+                "--normal-load", type=float, metavar="F", help="normal load [N/m] of --half-width"
+            )
             p.add_argument(
                 "--bootstrap",
                 default="auto",
@@ -137,6 +155,13 @@ def register(sub: Any) -> None:
             one.add_argument("--normal-load", type=float, metavar="F", help="normal load [N/m]")
             one.add_argument("--friction-force", type=float, metavar="f", help="[N/m], > 0")
             one.add_argument("--friction-force-sd", metavar="SD", help="[N/m] or N%%")
+            one.add_argument(
+                "--half-width",
+                type=float,
+                metavar="A",
+                help="a measured contact half-width [m]: tau0 = (f - dw)/(2 A), no contact model",
+            )
+            one.add_argument("--half-width-sd", metavar="SD", help="[m] or N%%")
             p.add_argument(
                 "--contact",
                 choices=("maugis-dugdale", "jkr", "dmt", "hertz"),
@@ -266,13 +291,13 @@ def _modulus(args: argparse.Namespace) -> tuple[float, dict[str, Any]]:
     ns.radius = args.radius if args.radius is not None else 1e-7
     ns.h, ns.sigma0, ns.work_of_adhesion, ns.z0, ns.length = 1e-9, None, None, None, None
     cyl = _cylinder(ns)
-    rec: dict[str, Any] = {"modulus_Pa": cyl.modulus}
-    for k in ("E1", "nu1", "E2", "nu2"):
-        if getattr(args, k) is not None:
-            rec[k + ("_Pa" if k.startswith("E") else "")] = getattr(args, k)
-    for k in ("cylinder_material", "substrate_material"):
-        if getattr(args, k):
-            rec[k] = getattr(args, k)
+    # the moduli as used, with the presets' names and sources (a preset never hides them)
+    keep = ("modulus_Pa", "E1_Pa", "nu1", "E2_Pa", "nu2", "dundurs_beta")
+    rec = {
+        k: v
+        for k, v in si_parameters(ns, cyl).items()
+        if k in keep or k.endswith(("_material", "_source"))
+    }
     return cyl.modulus, rec
 
 
@@ -425,50 +450,7 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
 
             draw_adhesion_fit(fit, args.plot)
     else:
-        if args.pull_off_force is None or args.radius is None or args.z0 is None:
-            raise ValueError(
-                "give --data FILE, or one measurement: --radius, --pull-off-force and --z0"
-            )
-        if args.plot:
-            raise ValueError("--plot draws a fit to --data")
-        values = dict(
-            pull_off_force=args.pull_off_force,
-            radius=args.radius,
-            modulus=E,
-            equilibrium_spacing=args.z0,
-        )
-        sds = {
-            "pull_off_force": _one_sd(args, "pull_off_force", args.pull_off_force),
-            "radius": _one_sd(args, "radius", args.radius),
-            "modulus": _one_sd(args, "modulus", E),
-            "equilibrium_spacing": _one_sd(args, "z0", args.z0),
-        }
-        inv.work_of_adhesion_from_pull_off(**values)  # a clear error for an unreachable force
-        est = inv.propagate(
-            inv.work_of_adhesion_from_pull_off, values, sds, n_samples=args.samples, seed=args.seed
-        )
-        simple = inv.simple_model_work_of_adhesion(args.radius, args.pull_off_force, E, args.z0)
-        rec = {
-            "work_of_adhesion": est.value,
-            "work_of_adhesion_sd": est.sd,
-            "work_of_adhesion_ci95": list(est.ci95),
-            "work_of_adhesion_sd_linear": est.sd_linear,
-            "work_of_adhesion_ci95_linear": list(est.ci95_linear),
-            "z0": args.z0,
-            "work_of_adhesion_jkr": simple["jkr"],
-            "work_of_adhesion_dmt": simple["dmt"],
-            "samples_failed": est.n_failed,
-        }
-        params.update(
-            radius_m=args.radius,
-            pull_off_force_N_per_m=args.pull_off_force,
-            z0_m=args.z0,
-            samples=args.samples,
-            seed=args.seed,
-            model="maugis-dugdale",
-            **{f"{k}_sd": v for k, v in sds.items() if v},
-        )
-        title = "work of adhesion from one pull-off force (Monte Carlo)"
+        rec, title = _adhesion_one(args, E, params)
     units = {
         "work_of_adhesion": "J/m^2",
         "work_of_adhesion_sd": "J/m^2",
@@ -494,6 +476,83 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
     }
     emit(args, _table(args, rec, params, title, units))
     return 0
+
+
+def _adhesion_one(args, E: float, params: dict[str, Any]):
+    """The work of adhesion from one pull-off force (per length or total) or one width."""
+    if args.plot:
+        raise ValueError("--plot draws a fit to --data")
+    if args.radius is None or args.z0 is None:
+        raise ValueError(
+            "give --data FILE, or one measurement: --radius, --z0 and --pull-off-force (or "
+            "--pull-off-force-total with --length, or --half-width with --normal-load)"
+        )
+    given = [
+        k
+        for k in ("pull_off_force", "pull_off_force_total", "half_width")
+        if getattr(args, k) is not None
+    ]
+    if len(given) != 1:
+        raise ValueError(
+            "give one of --pull-off-force [N/m], --pull-off-force-total [N] (with --length) "
+            "or --half-width [m] (with --normal-load)"
+        )
+    common = {"radius": args.radius, "modulus": E, "equilibrium_spacing": args.z0}
+    sds = {
+        "radius": _one_sd(args, "radius", args.radius),
+        "modulus": _one_sd(args, "modulus", E),
+        "equilibrium_spacing": _one_sd(args, "z0", args.z0),
+    }
+    if given == ["half_width"]:
+        if args.normal_load is None:
+            raise ValueError("--half-width needs the normal load it was measured at: --normal-load")
+        fn: Any = inv.work_of_adhesion_from_width
+        values = dict(half_width=args.half_width, normal_load=args.normal_load, **common)
+        sds["half_width"] = _one_sd(args, "half_width", args.half_width)
+        params.update(half_width_m=args.half_width, normal_load_N_per_m=args.normal_load)
+        what = "one contact width"
+    else:
+        if args.normal_load is not None:
+            raise ValueError("--normal-load goes with --half-width, not with a pull-off force")
+        if given == ["pull_off_force_total"]:
+            if args.length is None:
+                raise ValueError("--pull-off-force-total [N] needs the fibre's --length [m]")
+            F = args.pull_off_force_total / args.length
+            F_sd = _one_sd(args, "pull_off_force_total", args.pull_off_force_total) / args.length
+            params.update(pull_off_force_total_N=args.pull_off_force_total, length_m=args.length)
+        else:
+            F = args.pull_off_force
+            F_sd = _one_sd(args, "pull_off_force", args.pull_off_force)
+        fn = inv.work_of_adhesion_from_pull_off
+        values = dict(pull_off_force=F, **common)
+        sds["pull_off_force"] = F_sd
+        params["pull_off_force_N_per_m"] = F
+        what = "one pull-off force"
+    fn(**values)  # a clear error for a measurement no w can produce
+    est = inv.propagate(fn, values, sds, n_samples=args.samples, seed=args.seed)
+    rec: dict[str, Any] = {
+        "work_of_adhesion": est.value,
+        "work_of_adhesion_sd": est.sd,
+        "work_of_adhesion_ci95": list(est.ci95),
+        "work_of_adhesion_sd_linear": est.sd_linear,
+        "work_of_adhesion_ci95_linear": list(est.ci95_linear),
+        "z0": args.z0,
+    }
+    if "pull_off_force" in values:
+        simple = inv.simple_model_work_of_adhesion(
+            args.radius, values["pull_off_force"], E, args.z0
+        )
+        rec.update(work_of_adhesion_jkr=simple["jkr"], work_of_adhesion_dmt=simple["dmt"])
+    rec["samples_failed"] = est.n_failed
+    params.update(
+        radius_m=args.radius,
+        z0_m=args.z0,
+        samples=args.samples,
+        seed=args.seed,
+        model="maugis-dugdale",
+        **{f"{k}_sd": v for k, v in sds.items() if v},
+    )
+    return rec, f"work of adhesion from {what} (Monte Carlo)"
 
 
 # --------------------------------------------------------------------------------------------
@@ -547,7 +606,64 @@ def _combined(fn, f, F, f_sd, common, shared_sd, n_samples: int, seed: int):
     return value, sd, (lo, hi), birge
 
 
+def _friction_from_width(args: argparse.Namespace) -> int:
+    """tau0 = (f - dw)/(2 a) from one friction force and one measured half-width (no model)."""
+    if args.data is not None:
+        raise ValueError("--half-width is one measured width: give it without --data")
+    if args.friction_force is None:
+        raise ValueError("--half-width needs the friction force measured with it: --friction-force")
+    if not (math.isfinite(args.friction_force) and args.friction_force > 0):
+        raise ValueError(
+            f"--friction-force must be a finite number > 0, got {args.friction_force!r}"
+        )
+    if not (math.isfinite(args.half_width) and args.half_width > 0):
+        raise ValueError(f"--half-width must be a finite number > 0, got {args.half_width!r}")
+    if args.receding_work_of_adhesion is not None and args.work_of_adhesion is None:
+        raise ValueError("--receding-work-of-adhesion needs the advancing --work-of-adhesion")
+    dw = (
+        args.receding_work_of_adhesion - args.work_of_adhesion
+        if args.receding_work_of_adhesion is not None
+        else 0.0
+    )
+    values = dict(friction_force=args.friction_force, half_width=args.half_width)
+    est = inv.propagate(
+        lambda friction_force, half_width: (friction_force - dw) / (2 * half_width),
+        values,
+        dict(
+            friction_force=_one_sd(args, "friction_force", args.friction_force),
+            half_width=_one_sd(args, "half_width", args.half_width),
+        ),
+        n_samples=args.samples,
+        seed=args.seed,
+    )
+    if est.value <= 0:
+        raise ValueError(
+            f"--friction-force {args.friction_force!r} N/m does not exceed the adhesion "
+            f"hysteresis {dw:.6g} J/m^2: no positive shear strength"
+        )
+    rec = {
+        "tau0_Pa": est.value,
+        "tau0_sd_Pa": est.sd,
+        "tau0_ci95_Pa": list(est.ci95),
+        "tau0_sd_linear_Pa": est.sd_linear,
+        "half_width_m": args.half_width,
+    }
+    params: dict[str, Any] = dict(
+        friction_force_N_per_m=args.friction_force,
+        half_width_m=args.half_width,
+        hysteresis_J_per_m2=dw,
+        contact="measured width",
+        samples=args.samples,
+        seed=args.seed,
+    )
+    title = "interfacial shear strength from a measured contact width"
+    emit(args, _table(args, rec, params, title, {"tau0_ci95_Pa": "Pa"}))
+    return 0
+
+
 def _cmd_friction(args: argparse.Namespace) -> int:
+    if args.half_width is not None:
+        return _friction_from_width(args)
     E, mat = _modulus(args)
     params: dict[str, Any] = dict(mat)
     if args.radius is None or args.work_of_adhesion is None or args.z0 is None:
