@@ -343,3 +343,11 @@ def test_friction_from_a_measured_width(capsys):
     assert rec["tau0_sd_Pa"] == pytest.approx(rec["tau0_sd_linear_Pa"], rel=0.15)
     code, _, err = run(capsys, "fit-friction", "--half-width", 5e-9)
     assert code == 2 and "--friction-force" in err
+
+
+@pytest.mark.parametrize("command", ["fit-adhesion", "fit-friction"])
+def test_help_shows_percent_signs_once(capsys, command):
+    with pytest.raises(SystemExit):
+        main([command, "--help"])
+    out = capsys.readouterr().out
+    assert "%%" not in out and "N%" in out

@@ -41,7 +41,7 @@ _DESCRIPTION = {
         "radius_m, pull_off_force_N_per_m and optionally pull_off_force_sd_N_per_m): (w, z0) "
         "jointly by weighted least squares, or w alone with --z0 fixed. With one "
         "measurement (--radius --pull-off-force --z0, each with an optional -sd): w with a "
-        "Monte Carlo 95 %% interval and the linearised one. Pull-off forces are negative "
+        "Monte Carlo 95 % interval and the linearised one. Pull-off forces are negative "
         "(tensile)."
     ),
     "fit-friction": (
@@ -60,13 +60,13 @@ _EXAMPLES = {
         "linecontact fit-adhesion --data pulloff.csv --cylinder-material SiO2 "
         "--substrate-material Si --z0 0.3e-9 --json",
         "linecontact fit-adhesion --radius 50e-9 --radius-sd 3e-9 --pull-off-force -3.1 "
-        "--pull-off-force-sd 5%% --modulus 51.7e9 --z0 0.3e-9",
+        "--pull-off-force-sd 5% --modulus 51.7e9 --z0 0.3e-9",
     ],
     "fit-friction": [
         "linecontact fit-friction --data friction.csv --radius 50e-9 --modulus 51.7e9 "
         "--work-of-adhesion 0.1 --z0 0.3e-9",
         "linecontact fit-friction --normal-load 0.5 --friction-force 0.2 --friction-force-sd "
-        "10%% --radius 50e-9 --modulus 51.7e9 --work-of-adhesion 0.1 --z0 0.3e-9 --json",
+        "10% --radius 50e-9 --modulus 51.7e9 --work-of-adhesion 0.1 --z0 0.3e-9 --json",
     ],
 }
 
