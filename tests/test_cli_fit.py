@@ -182,7 +182,7 @@ def test_fit_friction_agrees_with_the_api(capsys, tmp_path):
             ["radius_m", "pull_off_force_N_per_m"],
             [[1e-8, 1.0], [2e-8, -1.2], [3e-8, -1.3]],
             [],
-            "data point 1 is 1.0 N/m: pull-off forces are tensile, negative",
+            "row 3: the pull-off force is 1.0 N/m: pull-off forces are tensile, negative",
         ),
     ],
 )
@@ -351,3 +351,91 @@ def test_help_shows_percent_signs_once(capsys, command):
         main([command, "--help"])
     out = capsys.readouterr().out
     assert "%%" not in out and "N%" in out
+
+
+@pytest.mark.parametrize(
+    ("content", "extra", "message"),
+    [
+        ("\ufeffradius_m,pull_off_force_N_per_m\n1e-8,-1.6\n4e-8,-3.2\n1.6e-7,-6.0\n", [], None),
+        ("radius_m,pull_off_force_N_per_m\n", [], "a header and no data rows"),
+        (
+            "radius_m,pull_off_force_N_per_m\n1e-8,-1.6\n2_0e-9,-3.2\n4e-8,-4\n",
+            [],
+            "row 3, column 'radius_m'",
+        ),
+        (
+            "radius_m,pull_off_force_N_per_m,pull_off_force_sd_N_per_m\n1e-8,-1.6,1e-300\n"
+            "4e-8,-3.2,0.1\n1.6e-7,-6.0,0.1\n",
+            [],
+            "row 2: the standard uncertainty",
+        ),
+        (
+            "radius_m,pull_off_force_N_per_m\n1e-8,-1.6\n4e-8,-3.2\n1.6e-7,-6.0\n",
+            ["--plot", "/nonexistent-dir/fit.png"],
+            "--plot",
+        ),
+        (
+            "radius_m,pull_off_force_N_per_m\n1e-8,-1.6\n4e-8,-3.2\n1.6e-7,-6.0\n",
+            ["--seed", "-1"],
+            "--seed must be",
+        ),
+        (
+            "radius_m,pull_off_force_N_per_m\n1e-8,-1.6\n4e-8,-3.2\n1.6e-7,-6.0\n",
+            ["--samples", "10000000"],
+            "--samples must be",
+        ),
+    ],
+)
+def test_fuzz_findings_in_the_data_reader(capsys, tmp_path, content, extra, message):
+    path = tmp_path / "d.csv"
+    path.write_text(content, encoding="utf-8")
+    code, out, err = run(capsys, "fit-adhesion", "--data", path, "--modulus", E, "--quiet", *extra)
+    if message is None:
+        assert code == 0, err
+    else:
+        assert code == 2 and err.count("\n") == 1 and message in err, err
+
+
+def test_fuzz_findings_in_fit_friction(capsys, tmp_path):
+    path = tmp_path / "f.csv"
+    path.write_text("normal_load_N_per_m,friction_force_N_per_m\n0.5,0.2\n-100,0.2\n")
+    common = ["--radius", 50e-9, "--modulus", 50e9, "--work-of-adhesion", W, "--z0", Z0]
+    code, _, err = run(capsys, "fit-friction", "--data", path, *common)
+    assert code == 2 and "row 3" in err and "below the pull-off" in err
+    # a Monte Carlo draw below pull-off does not erase the interval
+    code, out, err = run(
+        capsys,
+        "fit-friction",
+        *common,
+        "--normal-load",
+        -3.4,
+        "--friction-force",
+        0.2,
+        "--friction-force-sd",
+        "10%",
+        "--work-of-adhesion-sd",
+        "10%",
+        "--quiet",
+        "--json",
+    )
+    assert code == 0, err
+    rec = record(out)[1]
+    assert rec["tau0_sd_Pa"] is not None and None not in rec["tau0_ci95_Pa"]
+    # a measured width with a negative hysteresis, or with model flags, is refused
+    code, _, err = run(
+        capsys,
+        "fit-friction",
+        "--half-width",
+        5e-9,
+        "--friction-force",
+        0.2,
+        "--work-of-adhesion",
+        0.1,
+        "--receding-work-of-adhesion",
+        0.05,
+    )
+    assert code == 2 and "at least --work-of-adhesion" in err
+    code, _, err = run(
+        capsys, "fit-friction", "--half-width", 5e-9, "--friction-force", 0.2, "--modulus", -5
+    )
+    assert code == 2 and "not used with --half-width" in err

@@ -188,7 +188,7 @@ def test_propagate_monte_carlo_and_linear_agree_for_small_uncertainties():
 
 
 def test_an_unreachable_pull_off_says_which_forces_are_reachable():
-    with pytest.raises(ValueError, match=r"reachable pull-off forces are \(.*, 0\) N/m"):
+    with pytest.raises(ValueError, match=r"reachable pull-off forces are \(.*, .*\) N/m"):
         inv.work_of_adhesion_from_pull_off(0.1, 50e-9, 50e9, Z0)
     with pytest.raises(ValueError, match="reachable half-widths"):
         inv.work_of_adhesion_from_width(1e-10, 1.0, 50e-9, 50e9, Z0)
@@ -224,5 +224,88 @@ def test_an_unreachable_pull_off_says_which_forces_are_reachable():
     ],
 )
 def test_bad_input_is_a_clear_error(call, message):
+    with pytest.raises(ValueError, match=message):
+        call()
+
+
+# --------------------------------------------------------------------------------------------
+# found by fuzzing (each failed on the first version)
+
+
+def test_soft_materials_are_inverted_too():
+    """sigma0/E far above 10 (a PDMS-like contact): the search covers the solvers' domain."""
+    F = inv.pull_off_force(1e-6, 2e6, 0.04, 0.3e-9)
+    assert float(inv.work_of_adhesion_from_pull_off(F, 1e-6, 2e6, 0.3e-9)) == pytest.approx(
+        0.04, rel=1e-10
+    )
+
+
+def test_forces_and_widths_below_the_weakest_adhesion_are_refused():
+    with pytest.raises(ValueError, match="reachable pull-off forces"):
+        inv.work_of_adhesion_from_pull_off(-1e-12, 50e-9, 50e9, Z0)
+    with pytest.raises(ValueError, match="narrowest stable contact"):
+        inv.work_of_adhesion_from_width(1e-300, -1.0, 50e-9, 50e9, Z0)
+
+
+def test_width_inversion_when_the_radius_is_below_the_range():
+    a, F, R, E, z0 = 3.2892e-13, -1.8729e-4, 2.7273e-10, 5.4535e10, 3.7898e-9
+    w = float(inv.work_of_adhesion_from_width(a, F, R, E, z0))
+    assert float(
+        inv._stable_width(np.array(F), np.array(R), np.array(E), np.array(w), np.array(z0))
+    ) == pytest.approx(a, rel=1e-6)
+
+
+def test_an_exact_fit_without_sds_is_not_called_unidentifiable():
+    E, w, z0 = 19784449390.735683, 0.06063137497754147, 3.510217223842954e-10
+    R = np.array([5.254e-9, 2.034e-8, 3.163e-8, 6.655e-8, 9.883e-8, 2.467e-6, 5.501e-6, 1.773e-5])
+    fit = inv.fit_pull_off(R, inv.pull_off_force(R, E, w, z0), E)
+    assert fit.identifiable and math.isfinite(fit.correlation)
+    assert "no scatter" in fit.note
+
+
+def test_the_monte_carlo_survives_failing_draws_quickly():
+    import time
+
+    F = float(inv.pull_off_force(50e-9, 50e9, W, Z0))
+    t = time.perf_counter()
+    est = inv.propagate(
+        inv.work_of_adhesion_from_pull_off,
+        dict(pull_off_force=F, radius=50e-9, modulus=50e9, equilibrium_spacing=Z0),
+        dict(pull_off_force=2 * abs(F)),
+        n_samples=2000,
+    )
+    assert est.n_failed > 100 and math.isfinite(est.sd)
+    assert time.perf_counter() - t < 20  # was minutes: one solve per sample
+
+
+@pytest.mark.parametrize(
+    ("call", "message"),
+    [
+        (lambda: inv.fit_pull_off([2e-8] * 3, [-1.0] * 3, 50e9), "3 distinct radii"),
+        (lambda: inv.fit_pull_off(RADII, [-1.0] * 5, [50e9, 50e9]), "single number"),
+        (lambda: inv.fit_pull_off(RADII, [-1.0] * 5, 50e9, seed=1.5), "seed"),
+        (lambda: inv.fit_pull_off(RADII, [-1.0] * 5, 50e9, sd=[1e-300] * 5), "between 1e-12"),
+        (
+            lambda: inv.propagate(inv.pull_off_force, dict(radius=1.0), dict(radius="1")),
+            "uncertainty of radius",
+        ),
+        (
+            lambda: inv.propagate(inv.work_of_adhesion_from_pull_off, dict(radius=1.0), {}),
+            "fn does not take",
+        ),
+        (
+            lambda: inv.shear_strength_from_friction(0.2, 1e8, 50e-9, 50e9, W, Z0),
+            "wider than the solvers. domain",
+        ),
+        (
+            lambda: inv.shear_strength_from_friction(
+                0.2, 0.5, 50e-9, 50e9, W, Z0, receding_work_of_adhesion=1000.0
+            ),
+            "1000 times",
+        ),
+        (lambda: inv.shear_strength_from_friction(1e300, 0.5, 50e-9, 50e9, W, Z0), "finite"),
+    ],
+)
+def test_fuzz_findings_are_clear_errors(call, message):
     with pytest.raises(ValueError, match=message):
         call()

@@ -54,7 +54,7 @@ __all__ = [
 #: sigma0 = S w / z0 (Maugis: the strength of the Lennard-Jones law), h = z0 / S
 S_LJ = 16.0 / (9.0 * math.sqrt(3.0))
 #: the range of sigma0/E searched by the inversions (the solvers' domain is wider)
-_S_MIN, _S_MAX = 1e-14, 10.0
+_S_MIN, _S_MAX = 1e-14, 0.999e6  # inside the solvers' domain of sigma0/E (to 1e6)
 _BISECTIONS = 200
 
 
@@ -162,6 +162,7 @@ def work_of_adhesion_from_pull_off(
     equilibrium_spacing: ArrayLike,
     *,
     _rtol: float = 1e-15,
+    _unreachable: str = "raise",
 ) -> NDArray:
     """The work of adhesion [J/m^2] whose Maugis--Dugdale pull-off is the one measured.
 
@@ -196,15 +197,21 @@ def work_of_adhesion_from_pull_off(
     F, R, E, z0 = np.broadcast_arrays(F, R, E, z0)
     w_lo = _S_MIN * E * z0 / S_LJ
     w_hi = _S_MAX * E * z0 / S_LJ
-    F_lo = pull_off_force_at(R, E, w_hi, z0)
-    bad = ~((F < 0) & (F > F_lo))
+    F_lo = pull_off_force_at(R, E, w_hi, z0)  # the strongest adhesion searched
+    F_hi = pull_off_force_at(R, E, w_lo, z0)  # the weakest
+    bad = ~((F < F_hi) & (F > F_lo))
+    if np.any(bad) and _unreachable == "nan":  # for propagate: nan where no w reaches
+        Fm = np.where(bad, 0.5 * (F_lo + F_hi), F)
+        w = _bisect_log(lambda w: Fm - pull_off_force_at(R, E, w, z0), w_lo, w_hi, _rtol)
+        return np.where(bad, np.nan, w)
     if np.any(bad):
         i = int(np.flatnonzero(bad.reshape(-1))[0])
         raise ValueError(
             f"pull_off_force={float(F.reshape(-1)[i])!r} N/m cannot be produced by any work of "
             f"adhesion at radius={float(R.reshape(-1)[i])!r} m, modulus="
             f"{float(E.reshape(-1)[i])!r} Pa, equilibrium_spacing={float(z0.reshape(-1)[i])!r}"
-            f" m: the reachable pull-off forces are ({float(F_lo.reshape(-1)[i]):.6g}, 0) N/m"
+            f" m: the reachable pull-off forces are ({float(F_lo.reshape(-1)[i]):.6g}, "
+            f"{float(F_hi.reshape(-1)[i]):.6g}) N/m (sigma0/E from {_S_MIN:g} to {_S_MAX:g})"
         )
     # the pull-off force falls (grows in magnitude) with w
     return _bisect_log(lambda w: F - pull_off_force_at(R, E, w, z0), w_lo, w_hi, _rtol)
@@ -222,6 +229,8 @@ def work_of_adhesion_from_width(
     radius: ArrayLike,
     modulus: ArrayLike,
     equilibrium_spacing: ArrayLike,
+    *,
+    _unreachable: str = "raise",
 ) -> NDArray:
     """The work of adhesion [J/m^2] whose stable contact at the load has the half-width measured.
 
@@ -244,30 +253,80 @@ def work_of_adhesion_from_width(
     E = check_array("modulus", modulus)
     z0 = check_array("equilibrium_spacing", equilibrium_spacing)
     a, F, R, E, z0 = np.broadcast_arrays(a, F, R, E, z0)
-    h = z0 / S_LJ
 
     def width(w):
-        rho, s, _ = _groups(R, E, w, z0)
-        c = _normal.contact_for_load(F / (E * h), rho, s, on_no_equilibrium="report")
-        aw = np.asarray(c.a_over_R) * R
-        return np.where(np.isnan(aw), 0.0, aw)  # pulled off: more adhesion is needed
+        # pulled off: 0 (more adhesion is needed); wider than the solvers' domain: inf
+        with warnings.catch_warnings():  # the contacts searched may be beyond small strain
+            warnings.simplefilter("ignore", ModelValidityWarning)
+            return _stable_width(F, R, E, w, z0, too_wide=np.inf, pulled_off=0.0)
 
-    hertz = np.sqrt(np.clip(4 * R * F / (np.pi * E), 0.0, None))
     w_lo = _S_MIN * E * z0 / S_LJ
     w_hi = _S_MAX * E * z0 / S_LJ
-    with warnings.catch_warnings():  # the widest contact searched is beyond small strain
-        warnings.simplefilter("ignore", ModelValidityWarning)
-        a_hi = width(w_hi)
-    bad = ~((a > hertz) & (a < a_hi))
-    if np.any(bad):
+    a_lo, a_hi = width(w_lo), width(w_hi)
+    bad = ~((a > a_lo) & (a < a_hi))
+    nan_mode = _unreachable == "nan"
+    if np.any(bad) and nan_mode:  # for propagate: nan where no w reaches
+        a = np.where(bad, np.where(np.isfinite(a_hi), 0.5 * (a_lo + a_hi), 2 * a_lo + 1e-300), a)
+    if np.any(bad) and not nan_mode:
         i = int(np.flatnonzero(bad.reshape(-1))[0])
         raise ValueError(
             f"half_width={float(a.reshape(-1)[i])!r} m at normal_load="
             f"{float(F.reshape(-1)[i])!r} N/m cannot be produced by any work of adhesion: the "
-            f"reachable half-widths are ({float(hertz.reshape(-1)[i]):.6g}, "
-            f"{float(a_hi.reshape(-1)[i]):.6g}) m (Hertz's, without adhesion, at the low end)"
+            f"reachable half-widths are ({float(a_lo.reshape(-1)[i]):.6g}, "
+            f"{float(a_hi.reshape(-1)[i]):.6g}) m (about Hertz's, without adhesion, at the "
+            "low end)"
         )
-    return _bisect_log(lambda w: width(w) - a, w_lo, w_hi)
+    w = _bisect_log(lambda w: width(w) - a, w_lo, w_hi)
+    # under a tension the width jumps from none (pulled off) to that at pull-off: a width
+    # inside the jump is reached by no w
+    got = width(w)
+    off = ~(np.abs(got - a) <= 1e-6 * a)
+    if nan_mode:
+        return np.where(bad | off, np.nan, w)
+    if np.any(off):
+        i = int(np.flatnonzero(off.reshape(-1))[0])
+        raise ValueError(
+            f"half_width={float(a.reshape(-1)[i])!r} m at normal_load="
+            f"{float(F.reshape(-1)[i])!r} N/m cannot be produced by any work of adhesion: the "
+            f"narrowest stable contact carrying this load is {float(got.reshape(-1)[i]):.6g} m "
+            "wide (at its pull-off)"
+        )
+    return w
+
+
+def _stable_width(F, R, E, w, z0, *, too_wide=None, pulled_off=np.nan):
+    """Half-width [m] of the stable Maugis--Dugdale contact at the load F (arrays of one shape).
+
+    A load below the pull-off gives ``pulled_off``. A contact wider than the solvers'
+    domain gives ``too_wide``, or (``None``) a ValueError naming ``normal_load``.
+    """
+    from .domain import TooWideError
+
+    h = z0 / S_LJ
+    rho, s = R / h, S_LJ * w / (z0 * E)
+
+    def one(F_, rho_, s_, E_, h_):
+        c = _normal.contact_for_load(F_ / (E_ * h_), rho_, s_, on_no_equilibrium="report")
+        return np.asarray(c.a_over_R, float)
+
+    try:
+        A = one(F, rho, s, E, h)
+    except TooWideError as e:
+        if too_wide is None:
+            i = e.index
+            raise ValueError(
+                f"normal_load={float(np.reshape(F, -1)[i])!r} N/m needs a contact wider than "
+                f"the solvers' domain ({e.limit}): a/R = {e.a_over_R:.6g} at radius="
+                f"{float(np.reshape(R, -1)[i])!r} m"
+            ) from None
+        A = np.empty(np.shape(F))
+        for i in np.ndindex(np.shape(F)):
+            try:
+                A[i] = one(F[i], rho[i], s[i], E[i], h[i])
+            except TooWideError:
+                A[i] = np.inf
+    aw = A * R
+    return np.where(np.isnan(aw), pulled_off, np.where(np.isinf(A), too_wide or 0.0, aw))
 
 
 def _hertz_width(F, R, E):
@@ -324,10 +383,12 @@ def shear_strength_from_friction(
         w1 = np.broadcast_to(
             check_array("receding_work_of_adhesion", receding_work_of_adhesion), f.shape
         )
-        if np.any(w1 < w):
+        if np.any(w1 < w) or np.any(w1 > 1e3 * w):
             raise ValueError(
-                "receding_work_of_adhesion must be at least work_of_adhesion (the advancing "
-                "one): the hysteresis is not negative"
+                "receding_work_of_adhesion must be from work_of_adhesion (the advancing one: "
+                "the hysteresis is not negative) to 1000 times it (the domain of steady "
+                f"sliding), got {float(np.reshape(w1, -1)[0])!r} for "
+                f"{float(np.reshape(w, -1)[0])!r}"
             )
         from .sliding import sliding_contact_for_load
 
@@ -335,8 +396,7 @@ def shear_strength_from_friction(
         a = np.asarray(c.a_over_R) * R
         dw = w1 - w
     elif contact == "maugis-dugdale":
-        c = _normal.contact_for_load(F / (E * h), rho, s, on_no_equilibrium="report")
-        a = np.asarray(c.a_over_R) * R
+        a = _stable_width(F, R, E, w, z0)
     elif contact == "hertz":
         a = _hertz_width(F, R, E)
     elif contact == "dmt":
@@ -350,7 +410,14 @@ def shear_strength_from_friction(
             f"normal_load={float(F.reshape(-1)[i])!r} N/m has no contact ({contact}): it is "
             "below the pull-off force, so there is no contact width to divide by"
         )
-    tau = (f - dw) / (2 * a)
+    with np.errstate(over="ignore"):  # an overflow is refused just below
+        tau = (f - dw) / (2 * a)
+    if not np.all(np.isfinite(tau)):
+        i = int(np.flatnonzero(~np.isfinite(tau).reshape(-1))[0])
+        raise ValueError(
+            f"friction_force={float(f.reshape(-1)[i])!r} N/m over a contact of half-width "
+            f"{float(a.reshape(-1)[i]):.6g} m gives no finite shear strength"
+        )
     if np.any(tau <= 0):
         i = int(np.flatnonzero((tau <= 0).reshape(-1))[0])
         raise ValueError(
@@ -435,14 +502,24 @@ def propagate(
         or isinstance(n_samples, bool)
         or not (10 <= n_samples <= 10_000_000)
     ):
-        raise ValueError(f"n_samples must be an integer in [10, 1e7], got {n_samples!r}")
+        raise ValueError(f"n_samples must be an integer in [10, 1e6], got {n_samples!r}")
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        raise ValueError(f"seed must be an integer >= 0, got {seed!r}")
     for k, v in sds.items():
         if k not in values:
             raise ValueError(f"an uncertainty is given for {k!r}, which is not an input")
-        if not (np.isfinite(v) and v >= 0):
+        if isinstance(v, (bool, str)) or not (
+            isinstance(v, (int, float, np.integer, np.floating)) and np.isfinite(v) and v >= 0
+        ):
             raise ValueError(f"the standard uncertainty of {k} must be finite and >= 0, got {v!r}")
-    x0 = {k: float(v) for k, v in values.items()}
-    value = float(np.asarray(fn(**x0)))
+    try:
+        x0 = {k: float(v) for k, v in values.items()}
+    except (TypeError, ValueError):
+        raise ValueError(f"values must be numbers, got {dict(values)!r}") from None
+    try:
+        value = float(np.asarray(fn(**x0)))
+    except TypeError as exc:
+        raise ValueError(f"fn does not take these inputs ({', '.join(x0)}): {exc}") from None
     rng = np.random.default_rng(seed)
     samples: dict[str, Any] = dict(x0)
     for k, sd in sds.items():
@@ -456,7 +533,16 @@ def propagate(
                     break
                 draw[bad] = rng.normal(x0[k], sd, int(bad.sum()))
         samples[k] = draw
-    out = _robust(fn, samples, n_samples)
+    import inspect
+
+    try:  # the inversions of this module can give nan where a draw is unreachable
+        if "_unreachable" in inspect.signature(fn).parameters:
+            samples["_unreachable"] = "nan"
+    except (TypeError, ValueError):
+        pass
+    with warnings.catch_warnings():  # a draw outside small strain: said once for the value
+        warnings.simplefilter("ignore", ModelValidityWarning)
+        out = _robust(fn, samples, np.arange(n_samples))
     ok = np.isfinite(out)
     n_failed = int(n_samples - ok.sum())
     good = out[ok]
@@ -469,7 +555,7 @@ def propagate(
     for k, sd in sds.items():
         if sd == 0:
             continue
-        step = 1e-6 * max(abs(x0[k]), sd)
+        step = 1e-6 * (abs(x0[k]) or sd)  # inside a positive input's range
         up, dn = dict(x0), dict(x0)
         up[k], dn[k] = x0[k] + step, x0[k] - step
         try:
@@ -490,21 +576,21 @@ def propagate(
     )
 
 
-def _robust(fn, samples: dict[str, Any], n: int) -> NDArray:
-    """``fn`` on the samples; where a batch raises, point by point (nan where it fails)."""
+def _robust(fn, samples: dict[str, Any], idx: NDArray) -> NDArray:
+    """``fn`` on the samples ``idx``, nan where a sample fails.
+
+    A batch that raises is split in halves, so a few failing draws cost a few calls, not one
+    per sample.
+    """
+    batch = {k: (v[idx] if np.ndim(v) else v) for k, v in samples.items()}
     try:
-        out = np.asarray(fn(**samples), float)
-        return np.broadcast_to(out, (n,)).copy()
+        out = np.asarray(fn(**batch), float)
+        return np.broadcast_to(out, idx.shape).copy()
     except ValueError:
-        pass
-    res = np.full(n, np.nan)
-    for i in range(n):
-        one = {k: (v[i] if np.ndim(v) else v) for k, v in samples.items()}
-        try:
-            res[i] = float(np.asarray(fn(**one)))
-        except ValueError:
-            pass
-    return res
+        if idx.size == 1:
+            return np.full(1, np.nan)
+    half = idx.size // 2
+    return np.concatenate([_robust(fn, samples, idx[:half]), _robust(fn, samples, idx[half:])])
 
 
 # --------------------------------------------------------------------------------------------
@@ -621,7 +707,14 @@ def fit_pull_off(
         raise ValueError(
             f"radius and pull_off_force must have one length, got {R.size} and {F.size}"
         )
-    E = float(check_array("modulus", modulus))
+    E_arr = check_array("modulus", modulus)
+    if E_arr.ndim != 0:
+        raise ValueError(
+            f"modulus must be a single number [Pa], got an array of shape {E_arr.shape}"
+        )
+    E = float(E_arr)
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        raise ValueError(f"seed must be an integer >= 0, got {seed!r}")
     fixed = equilibrium_spacing is not None
     n_par = 1 if fixed else 2
     if R.size < n_par + (0 if fixed else 1):
@@ -631,6 +724,11 @@ def fit_pull_off(
             if not fixed
             else "give at least one data point"
         )
+    if not fixed and np.unique(R).size < 3:
+        raise ValueError(
+            f"a joint fit of (w, z0) needs at least 3 distinct radii, got {np.unique(R).size}: "
+            "the radius dependence is what separates w from z0 (or fix equilibrium_spacing)"
+        )
     if sd is None:
         sig = np.ones_like(F)
         have_sd = False
@@ -638,6 +736,13 @@ def fit_pull_off(
         sig = check_array("sd", sd).reshape(-1)
         if sig.size != F.size:
             raise ValueError(f"sd must have one value per data point ({F.size}), got {sig.size}")
+        rel = sig / np.abs(F)
+        if np.any((rel < 1e-12) | (rel > 1e6)):
+            i = int(np.flatnonzero((rel < 1e-12) | (rel > 1e6))[0])
+            raise ValueError(
+                f"sd of data point {i + 1} is {float(sig[i])!r} for a force of {float(F[i])!r} "
+                "N/m: the weights need sd between 1e-12 and 1e6 times the force"
+            )
         have_sd = True
     if bootstrap != "auto" and (
         isinstance(bootstrap, bool)
@@ -645,11 +750,12 @@ def fit_pull_off(
         or not 0 <= bootstrap <= 100_000
     ):
         raise ValueError(f"bootstrap must be 'auto' or an integer in [0, 1e5], got {bootstrap!r}")
-    z_fixed = (
-        float(check_array("equilibrium_spacing", equilibrium_spacing))
-        if equilibrium_spacing is not None
-        else 0.0
-    )
+    z_fixed = 0.0
+    if equilibrium_spacing is not None:
+        z_arr = check_array("equilibrium_spacing", equilibrium_spacing)
+        if z_arr.ndim != 0:
+            raise ValueError("equilibrium_spacing must be a single number [m] (or None to fit it)")
+        z_fixed = float(z_arr)
 
     def model(p, R=R):
         w = math.exp(p[0])
@@ -716,7 +822,13 @@ def fit_pull_off(
             if fixed
             else (float(z0 * np.exp(-1.96 * sd_log[1])), float(z0 * np.exp(1.96 * sd_log[1])))
         )
-    corr = math.nan if fixed else float(cov[0, 1] / math.sqrt(cov[0, 0] * cov[1, 1]))
+    # the correlation does not depend on the scale (zero for an exact fit without sds)
+    with np.errstate(all="ignore"):
+        try:
+            unit = np.linalg.inv(J.T @ J)
+        except np.linalg.LinAlgError:
+            unit = np.full((n_par, n_par), np.nan)
+    corr = math.nan if fixed else float(unit[0, 1] / math.sqrt(unit[0, 0] * unit[1, 1]))
     ci_w, ci_z = ci_lin_w, ci_lin_z
     n_boot = (0 if np.all(sd_log <= 0.1) else 100) if bootstrap == "auto" else int(bootstrap)
     if n_boot > 0 and np.isfinite(scale):
@@ -736,9 +848,11 @@ def fit_pull_off(
             ci_z = tuple(float(v) for v in np.percentile(zs, [2.5, 97.5]))  # type: ignore[assignment]
     identifiable = True
     note = ""
+    exact = not have_sd and chi2 <= 1e-24 * float(np.sum(F * F))
     if not fixed:
         lam = _ref.maugis_parameter(R / (z0 / S_LJ), S_LJ * w / (z0 * E))
-        if not (z_sd / z0 < 0.5 and abs(corr) < 0.999):
+        loose = not exact and not z_sd / z0 < 0.5
+        if loose or not abs(corr) < 0.999:
             identifiable = False
             note = (
                 f"the data do not determine z0 (relative uncertainty {z_sd / z0:.2g}, "
@@ -746,6 +860,17 @@ def fit_pull_off(
                 f"{float(np.max(lam)):.3g}; in the JKR regime the pull-off does not depend on "
                 "z0. Fix equilibrium_spacing, or add radii where the parameter is below ~1"
             )
+    if exact:
+        note = (note + "; " if note else "") + (
+            "the model fits the data exactly and no sd was given: there is no scatter to "
+            "estimate an uncertainty from (give the forces' standard deviations)"
+        )
+    at_bound = np.isclose(p, lo, rtol=0, atol=1e-6) | np.isclose(p, hi, rtol=0, atol=1e-6)
+    if np.any(at_bound):
+        note = (note + "; " if note else "") + (
+            "the fit ended on the bounds of the search (w in [1e-8, 1e3] J/m^2, z0 in "
+            "[1e-12, 1e-7] m): these data may not be pull-offs of this model (check units)"
+        )
     return AdhesionFit(
         w,
         z0,

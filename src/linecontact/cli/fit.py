@@ -73,8 +73,12 @@ _EXAMPLES = {
 
 def _sd(text: str) -> tuple[float, bool]:
     """A standard uncertainty: a number, or a percentage of the value (``5%``)."""
-    rel = text.strip().endswith("%")
-    v = float(text.strip().rstrip("%"))
+    t = text.strip()
+    rel = t.endswith("%")
+    body = t[:-1] if rel else t
+    if "%" in body or "_" in body:
+        raise ValueError(text)
+    v = float(body)
     return (v / 100 if rel else v), rel
 
 
@@ -191,15 +195,21 @@ def read_columns(path: str, wanted: dict[str, tuple[str, bool]], length: float |
     file, the row (counting the header as row 1, comment lines included) and the column.
     """
     try:
-        with open(path, newline="", encoding="utf-8") as fh:
+        with open(path, newline="", encoding="utf-8-sig") as fh:  # a BOM is dropped
             lines = list(enumerate(fh.read().splitlines(), start=1))
     except OSError as exc:
         raise ValueError(f"--data {path!r}: cannot read it ({exc.strerror or exc})") from None
+    except UnicodeDecodeError as exc:
+        raise ValueError(
+            f"--data {path!r}: not UTF-8 text (byte {exc.start}): save the file as UTF-8 CSV"
+        ) from None
     body = [(n, line) for n, line in lines if line.strip() and not line.lstrip().startswith("#")]
     if not body:
         raise ValueError(f"--data {path!r}: no header and no rows (only comments or empty)")
     rows = list(csv.reader(line for _, line in body))
     header = [h.strip() for h in rows[0]]
+    if len(rows) < 2:
+        raise ValueError(f"--data {path!r}: a header and no data rows")
     out: dict[str, np.ndarray] = {}
     # each column belongs to the longest wanted prefix it starts with ("pull_off_force_sd_..."
     # to "pull_off_force_sd", not "pull_off_force"); columns of no wanted prefix are ignored
@@ -251,6 +261,8 @@ def read_columns(path: str, wanted: dict[str, tuple[str, bool]], length: float |
                     f"{len(header)}"
                 )
             try:
+                if "_" in row[j]:  # float() reads "2_0" as 20: not a plain number
+                    raise ValueError(row[j])
                 v = float(row[j])
             except ValueError:
                 raise ValueError(
@@ -267,11 +279,24 @@ def read_columns(path: str, wanted: dict[str, tuple[str, bool]], length: float |
                 )
             vals[i] = v * factor
         out[prefix] = vals
+    out["_line"] = np.array([body[i + 1][0] for i in range(len(rows) - 1)])
     return out, len(rows) - 1
 
 
 # --------------------------------------------------------------------------------------------
 # the modulus
+
+
+def _check_common(args: argparse.Namespace) -> None:
+    """--samples, --seed and --plot, before any work."""
+    if not 10 <= args.samples <= 1_000_000:
+        raise ValueError(f"--samples must be an integer in [10, 1000000], got {args.samples}")
+    if args.seed < 0:
+        raise ValueError(f"--seed must be an integer >= 0, got {args.seed}")
+    if args.plot:
+        parent = os.path.dirname(os.path.abspath(args.plot))
+        if not os.path.isdir(parent):
+            raise ValueError(f"--plot {args.plot!r}: the directory {parent!r} does not exist")
 
 
 def _modulus(args: argparse.Namespace) -> tuple[float, dict[str, Any]]:
@@ -338,6 +363,13 @@ def _table(args, record: dict[str, Any], params: dict[str, Any], title: str, uni
 
 
 def _cmd_adhesion(args: argparse.Namespace) -> int:
+    _check_common(args)
+    if args.data is None and args.bootstrap != "auto":
+        raise ValueError("--bootstrap is for a joint fit to --data")
+    if args.pull_off_force_total is not None and args.pull_off_force_sd is not None:
+        raise ValueError(
+            "with --pull-off-force-total give its uncertainty as --pull-off-force-total-sd"
+        )
     E, mat = _modulus(args)
     params: dict[str, Any] = dict(mat)
     if args.length is not None and not (math.isfinite(args.length) and args.length > 0):
@@ -358,17 +390,24 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
         )
         R, F = cols["radius"], cols["pull_off_force"]
         sd = cols.get("pull_off_force_sd")
+        rows = cols["_line"]
         if np.any(R <= 0):
             i = int(np.flatnonzero(R <= 0)[0])
-            raise ValueError(f"--data {args.data!r}: the radius of data point {i + 1} is not > 0")
+            raise ValueError(f"--data {args.data!r}, row {int(rows[i])}: the radius is not > 0")
         if np.any(F >= 0):
             i = int(np.flatnonzero(F >= 0)[0])
             raise ValueError(
-                f"--data {args.data!r}: the pull-off force of data point {i + 1} is "
+                f"--data {args.data!r}, row {int(rows[i])}: the pull-off force is "
                 f"{float(F[i])!r} N/m: pull-off forces are tensile, negative"
             )
-        if sd is not None and np.any(sd == 0):
-            raise ValueError(f"--data {args.data!r}: a standard uncertainty of 0 gives no weight")
+        if sd is not None:
+            weak = (sd < 1e-12 * np.abs(F)) | (sd > 1e6 * np.abs(F))
+            if np.any(weak):
+                i = int(np.flatnonzero(weak)[0])
+                raise ValueError(
+                    f"--data {args.data!r}, row {int(rows[i])}: the standard uncertainty "
+                    f"{float(sd[i])!r} must be between 1e-12 and 1e6 times the force (a weight)"
+                )
         boot: Any = args.bootstrap
         if boot != "auto":
             try:
@@ -582,12 +621,18 @@ def _combined(fn, f, F, f_sd, common, shared_sd, n_samples: int, seed: int):
     ff = f + f_sd * rng.standard_normal((n_samples, f.size))
     ok = np.all(ff > 0, axis=1)
     taus = np.full((n_samples, f.size), np.nan)
-    try:
-        taus[ok] = fn(
-            ff[ok], np.broadcast_to(F, ff[ok].shape), **{k: v[ok] for k, v in draw.items()}
-        )
-    except ValueError:
-        pass
+
+    def rows(idx):  # a batch that raises is split in halves: nan only where a draw fails
+        try:
+            taus[idx] = fn(
+                ff[idx], np.broadcast_to(F, ff[idx].shape), **{k: v[idx] for k, v in draw.items()}
+            )
+        except ValueError:
+            if idx.size > 1:
+                rows(idx[: idx.size // 2])
+                rows(idx[idx.size // 2 :])
+
+    rows(np.flatnonzero(ok))
     comb = np.sum(wt * taus, axis=1) / np.sum(wt)
     comb = comb[np.isfinite(comb)]
     if comb.size < 2:
@@ -620,6 +665,32 @@ def _friction_from_width(args: argparse.Namespace) -> int:
         raise ValueError(f"--half-width must be a finite number > 0, got {args.half_width!r}")
     if args.receding_work_of_adhesion is not None and args.work_of_adhesion is None:
         raise ValueError("--receding-work-of-adhesion needs the advancing --work-of-adhesion")
+    model = [
+        f
+        for f, v in (
+            ("--radius", args.radius),
+            ("--modulus", args.modulus),
+            ("--E1", args.E1),
+            ("--E2", args.E2),
+            ("--z0", args.z0),
+            ("--cylinder-material", args.cylinder_material),
+            ("--substrate-material", args.substrate_material),
+        )
+        if v is not None
+    ] + (["--contact"] if args.contact != "maugis-dugdale" else [])
+    if model:
+        raise ValueError(
+            f"{', '.join(model)}: not used with --half-width (a measured width needs no contact "
+            "model)"
+        )
+    if (
+        args.receding_work_of_adhesion is not None
+        and args.receding_work_of_adhesion < args.work_of_adhesion
+    ):
+        raise ValueError(
+            "--receding-work-of-adhesion must be at least --work-of-adhesion (the hysteresis "
+            "is not negative)"
+        )
     dw = (
         args.receding_work_of_adhesion - args.work_of_adhesion
         if args.receding_work_of_adhesion is not None
@@ -662,8 +733,14 @@ def _friction_from_width(args: argparse.Namespace) -> int:
 
 
 def _cmd_friction(args: argparse.Namespace) -> int:
+    _check_common(args)
     if args.half_width is not None:
         return _friction_from_width(args)
+    if args.data is not None and args.friction_force_sd is not None:
+        raise ValueError(
+            "--friction-force-sd is for one measurement: with --data give a "
+            "friction_force_sd_... column"
+        )
     E, mat = _modulus(args)
     params: dict[str, Any] = dict(mat)
     if args.radius is None or args.work_of_adhesion is None or args.z0 is None:
@@ -687,10 +764,11 @@ def _cmd_friction(args: argparse.Namespace) -> int:
         )
         F, f = cols["normal_load"], cols["friction_force"]
         f_sd = cols.get("friction_force_sd", np.zeros_like(f))
+        lines = cols["_line"]
         if np.any(f <= 0):
             i = int(np.flatnonzero(f <= 0)[0])
             raise ValueError(
-                f"--data {args.data!r}: the friction force of point {i + 1} is not > 0"
+                f"--data {args.data!r}, row {int(lines[i])}: the friction force is not > 0"
             )
     else:
         if args.friction_force is None or args.normal_load is None:
@@ -698,6 +776,7 @@ def _cmd_friction(args: argparse.Namespace) -> int:
                 "give --data FILE, or one measurement: --normal-load and --friction-force"
             )
         F, f = np.array([args.normal_load]), np.array([args.friction_force])
+        lines = np.array([0])
         f_sd = np.array([_one_sd(args, "friction_force", args.friction_force)])
         n = 1
     w_sd = _one_sd(args, "work_of_adhesion", args.work_of_adhesion)
@@ -730,7 +809,17 @@ def _cmd_friction(args: argparse.Namespace) -> int:
     if args.receding_work_of_adhesion is not None:
         kw["receding_work_of_adhesion"] = args.receding_work_of_adhesion
     fn = tau_fn(args.contact, **kw)
-    tau = np.asarray(fn(f, F, **common), float)
+    try:
+        tau = np.asarray(fn(f, F, **common), float)
+    except ValueError as exc:
+        if args.data is None:
+            raise
+        for i in range(n):  # name the row that fails
+            try:
+                fn(f[i], F[i], **common)
+            except ValueError as one:
+                raise ValueError(f"--data {args.data!r}, row {int(lines[i])}: {one}") from None
+        raise exc
     ests = [
         inv.propagate(
             fn,
