@@ -304,8 +304,29 @@ def test_the_monte_carlo_survives_failing_draws_quickly():
             "1000 times",
         ),
         (lambda: inv.shear_strength_from_friction(1e300, 0.5, 50e-9, 50e9, W, Z0), "finite"),
+        (lambda: inv.jkr_pull_off_force(-1.0, 50e9, W), "radius"),
+        (lambda: inv.dmt_pull_off_force(1e-8, -W, Z0), "work_of_adhesion"),
+        (
+            lambda: inv.shear_strength_from_friction(
+                [0.1, 0.2], [1.0, 2.0, 3.0], 50e-9, 50e9, W, Z0
+            ),
+            "friction_force has shape",
+        ),
+        (
+            lambda: lc.Cylinder.from_presets(
+                5e-8, "ZnO", "Unobtainium", work_of_adhesion=W, equilibrium_spacing=Z0
+            ),
+            "substrate_material",
+        ),
     ],
 )
 def test_fuzz_findings_are_clear_errors(call, message):
+    """Each was an unclear error, a wrong type of error, or no error at all."""
     with pytest.raises(ValueError, match=message):
         call()
+
+
+def test_one_point_without_sd_says_no_uncertainty_can_be_estimated():
+    F = inv.pull_off_force(RADII[:1], E_SILICA_SILICON, W, Z0)
+    fit = inv.fit_pull_off(RADII[:1], F, E_SILICA_SILICON, equilibrium_spacing=Z0)
+    assert "no uncertainty can be estimated" in fit.note

@@ -368,10 +368,14 @@ class Cylinder:
         """
         from .presets import Material
 
-        m1, m2 = (
-            m if isinstance(m, Material) else Material.from_name(m)
-            for m in (cylinder_material, substrate_material)
-        )
+        def preset(name: str, m) -> Material:
+            try:
+                return m if isinstance(m, Material) else Material.from_name(m)
+            except ValueError as exc:  # say which of the two
+                raise ValueError(f"{name}: {exc}") from None
+
+        m1 = preset("cylinder_material", cylinder_material)
+        m2 = preset("substrate_material", substrate_material)
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
             cyl = cls.from_materials(

@@ -34,7 +34,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from . import normal as _normal
 from . import reference as _ref
-from ._validation import check_array
+from ._validation import broadcast, check_array
 from .errors import ModelValidityWarning
 
 __all__ = [
@@ -80,8 +80,11 @@ def pull_off_force(
     >>> round(float(pull_off_force(50e-9, 50e9, 0.1, 0.3e-9)), 6)
     -3.498523
     """
-    R, E, w, z0 = np.broadcast_arrays(
-        *(np.asarray(v, float) for v in (radius, modulus, work_of_adhesion, equilibrium_spacing))
+    R, E, w, z0 = broadcast(
+        radius=check_array("radius", radius),
+        modulus=check_array("modulus", modulus),
+        work_of_adhesion=check_array("work_of_adhesion", work_of_adhesion),
+        equilibrium_spacing=check_array("equilibrium_spacing", equilibrium_spacing),
     )
     rho, s, h = _groups(R, E, w, z0)
     return np.asarray(_normal.pull_off(rho, s).F_pulloff_over_Eh) * E * h
@@ -89,7 +92,9 @@ def pull_off_force(
 
 def jkr_pull_off_force(radius: ArrayLike, modulus: ArrayLike, work_of_adhesion: ArrayLike):
     """JKR pull-off of a line contact, ``-(3/4) (4 pi w^2 E R)^(1/3)`` [N/m] (no range)."""
-    R, E, w = (np.asarray(v, float) for v in (radius, modulus, work_of_adhesion))
+    R = check_array("radius", radius)
+    E = check_array("modulus", modulus)
+    w = check_array("work_of_adhesion", work_of_adhesion)
     return -0.75 * np.cbrt(4 * np.pi * w * w * E * R)
 
 
@@ -101,7 +106,9 @@ def dmt_pull_off_force(
     The small-Maugis-parameter limit: the adhesive zone ``|x| < sqrt(2 R h)`` around a rigid
     cylinder touching at a point, ``h = 9 sqrt(3) z0/16``.
     """
-    R, w, z0 = (np.asarray(v, float) for v in (radius, work_of_adhesion, equilibrium_spacing))
+    R = check_array("radius", radius)
+    w = check_array("work_of_adhesion", work_of_adhesion)
+    z0 = check_array("equilibrium_spacing", equilibrium_spacing)
     return -2 * math.sqrt(2) * w * np.sqrt(R * S_LJ / z0)
 
 
@@ -194,7 +201,7 @@ def work_of_adhesion_from_pull_off(
     R = check_array("radius", radius)
     E = check_array("modulus", modulus)
     z0 = check_array("equilibrium_spacing", equilibrium_spacing)
-    F, R, E, z0 = np.broadcast_arrays(F, R, E, z0)
+    F, R, E, z0 = broadcast(pull_off_force=F, radius=R, modulus=E, equilibrium_spacing=z0)
     w_lo = _S_MIN * E * z0 / S_LJ
     w_hi = _S_MAX * E * z0 / S_LJ
     F_lo = pull_off_force_at(R, E, w_hi, z0)  # the strongest adhesion searched
@@ -252,7 +259,9 @@ def work_of_adhesion_from_width(
     R = check_array("radius", radius)
     E = check_array("modulus", modulus)
     z0 = check_array("equilibrium_spacing", equilibrium_spacing)
-    a, F, R, E, z0 = np.broadcast_arrays(a, F, R, E, z0)
+    a, F, R, E, z0 = broadcast(
+        half_width=a, normal_load=F, radius=R, modulus=E, equilibrium_spacing=z0
+    )
 
     def width(w):
         # pulled off: 0 (more adhesion is needed); wider than the solvers' domain: inf
@@ -374,7 +383,14 @@ def shear_strength_from_friction(
         raise ValueError(
             f"contact must be 'maugis-dugdale', 'jkr', 'dmt' or 'hertz', got {contact!r}"
         )
-    f, F, R, E, w, z0 = np.broadcast_arrays(f, F, R, E, w, z0)
+    f, F, R, E, w, z0 = broadcast(
+        friction_force=f,
+        normal_load=F,
+        radius=R,
+        modulus=E,
+        work_of_adhesion=w,
+        equilibrium_spacing=z0,
+    )
     rho, s, h = _groups(R, E, w, z0)
     dw = np.zeros_like(f)
     if receding_work_of_adhesion is not None:
@@ -860,7 +876,12 @@ def fit_pull_off(
                 f"{float(np.max(lam)):.3g}; in the JKR regime the pull-off does not depend on "
                 "z0. Fix equilibrium_spacing, or add radii where the parameter is below ~1"
             )
-    if exact:
+    if dof == 0 and not have_sd:
+        note = (note + "; " if note else "") + (
+            "as many parameters as data points and no sd: no uncertainty can be estimated "
+            "(give the forces' standard deviations, or more points)"
+        )
+    elif exact:
         note = (note + "; " if note else "") + (
             "the model fits the data exactly and no sd was given: there is no scatter to "
             "estimate an uncertainty from (give the forces' standard deviations)"
