@@ -214,3 +214,18 @@ def test_bad_input_one_error_line_exit_2(capsys, argv, message):
     assert out == ""
     assert err.count("\n") == 1 and "error:" in err and message in err, err
     assert "Traceback" not in err
+
+
+def test_a_large_negative_si_load_is_judged_in_si_units(capsys):
+    code, out, err = run(
+        capsys,
+        "history",
+        *SI,
+        "--load",
+        "1",
+        "--tau0",
+        "1e9",
+        "--tangential-load",
+        "-1e30",
+    )
+    assert code == 2 and "--tangential-load must be at most 1e+12 E a" in err, err

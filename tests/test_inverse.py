@@ -263,19 +263,26 @@ def test_an_exact_fit_without_sds_is_not_called_unidentifiable():
     assert "no scatter" in fit.note
 
 
-def test_the_monte_carlo_survives_failing_draws_quickly():
-    import time
+def test_the_monte_carlo_survives_failing_draws_in_a_few_calls():
+    """Unreachable draws are nan in one batch (it once solved every sample alone)."""
+    import functools
+
+    calls = []
+
+    @functools.wraps(inv.work_of_adhesion_from_pull_off)
+    def counted(*args, **kwargs):
+        calls.append(1)
+        return inv.work_of_adhesion_from_pull_off(*args, **kwargs)
 
     F = float(inv.pull_off_force(50e-9, 50e9, W, Z0))
-    t = time.perf_counter()
     est = inv.propagate(
-        inv.work_of_adhesion_from_pull_off,
+        counted,
         dict(pull_off_force=F, radius=50e-9, modulus=50e9, equilibrium_spacing=Z0),
         dict(pull_off_force=2 * abs(F)),
         n_samples=2000,
     )
     assert est.n_failed > 100 and math.isfinite(est.sd)
-    assert time.perf_counter() - t < 20  # was minutes: one solve per sample
+    assert len(calls) <= 4  # the value, the batch, two for the linear estimate
 
 
 @pytest.mark.parametrize(

@@ -152,8 +152,9 @@ def _inputs(args: argparse.Namespace, nd: str, coulomb_nd: str, si: str):
         values = check_array(
             state,
             getattr(args, state),
-            low=0.0 if amplitude else -_T_LIMIT,
-            low_inclusive=not amplitude,
+            # SI loads in N/m: their bound over E a or mu F is checked after conversion
+            low=0.0 if amplitude else (-np.inf if state == si else -_T_LIMIT),
+            low_inclusive=not amplitude and state != si,
             high=np.inf if state == si else _T_LIMIT,
             high_inclusive=state != si,
         )
