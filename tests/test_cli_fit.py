@@ -8,6 +8,7 @@ import pytest
 import linecontact as lc
 from linecontact import inverse as inv
 from linecontact.cli import main
+from linecontact.cli.fit import read_columns
 
 E = float(lc.composite_modulus(72e9, 0.17, 163e9, 0.22))
 MATS = ["--E1", "72e9", "--nu1", "0.17", "--E2", "163e9", "--nu2", "0.22", "--quiet"]
@@ -439,3 +440,221 @@ def test_fuzz_findings_in_fit_friction(capsys, tmp_path):
         capsys, "fit-friction", "--half-width", 5e-9, "--friction-force", 0.2, "--modulus", -5
     )
     assert code == 2 and "not used with --half-width" in err
+
+
+# --------------------------------------------------------------------------------------------
+# every column used or refused: the uncertainty columns
+
+
+REL = np.array([0.02, 0.2, 0.02, 0.2, 0.02])  # uneven uncertainties: the weights matter
+
+
+def noisy_pulloff(path, header, sd_scale=1e3):
+    """Pull-off forces with 2 % and 20 % noise, in nm and nN/um, and their sds (scaled)."""
+    F = inv.pull_off_force(R, E, W, Z0)
+    F = F * (1 + REL * np.random.default_rng(2026).standard_normal(R.size))
+    sd = REL * np.abs(F)
+    columns = {"radius_nm": R * 1e9, "pull_off_force_nN_per_um": F * 1e3}
+    rows = [[columns.get(h, sd * sd_scale)[i] for h in header] for i in range(R.size)]
+    return write(path, header, rows)
+
+
+def fit_record(capsys, path, *extra):
+    code, out, err = run(
+        capsys, "fit-adhesion", "--data", path, *MATS, "--bootstrap", 0, "--json", *extra
+    )
+    assert code == 0, err
+    return record(out)[1]
+
+
+@pytest.mark.parametrize(
+    ("header", "sd_scale"),
+    [
+        (["radius_nm", "pull_off_force_nN_per_um", "sd"], 1e3),
+        (["radius_nm", "pull_off_force_nN_per_um", "sd_nN_per_um"], 1e3),
+        (["radius_nm", "pull_off_force_nN_per_um", "sd_uN_per_m"], 1e6),
+        (["pull_off_force_nN_per_um", "sd", "radius_nm"], 1e3),
+        (["radius_nm", "pull_off_force_nN_per_um", "pull_off_force_sd"], 1e3),
+        (["pull_off_force_sd_N_per_m", "radius_nm", "pull_off_force_nN_per_um"], 1.0),
+    ],
+)
+def test_an_sd_column_weights_the_fit(capsys, tmp_path, header, sd_scale):
+    ref = fit_record(
+        capsys,
+        noisy_pulloff(
+            tmp_path / "ref.csv",
+            ["radius_nm", "pull_off_force_nN_per_um", "pull_off_force_sd_nN_per_um"],
+        ),
+    )
+    plain = fit_record(
+        capsys, noisy_pulloff(tmp_path / "plain.csv", ["radius_nm", "pull_off_force_nN_per_um"])
+    )
+    rec = fit_record(capsys, noisy_pulloff(tmp_path / "sd.csv", header, sd_scale))
+    for key in ("work_of_adhesion", "work_of_adhesion_sd", "z0", "z0_sd", "chi2"):
+        assert rec[key] == pytest.approx(ref[key], rel=1e-6), key
+    assert rec["work_of_adhesion_ci95"] == pytest.approx(ref["work_of_adhesion_ci95"], rel=1e-6)
+    # the weights change the answer: the unweighted fit is another one
+    assert abs(plain["work_of_adhesion_sd"] / rec["work_of_adhesion_sd"] - 1) > 0.5
+    assert abs(plain["work_of_adhesion"] / rec["work_of_adhesion"] - 1) > 0.01
+
+
+def test_an_sd_column_weights_the_friction_mean(capsys, tmp_path):
+    cyl = lc.Cylinder.from_modulus(50e-9, E, work_of_adhesion=W, equilibrium_spacing=Z0)
+    loads = np.array([0.0, 0.5, 2.0])
+    f = 2 * np.asarray(cyl.contact(load=loads).contact_half_width) * np.array([2e7, 3e7, 4e7])
+    common = ["--radius", 50e-9, "--modulus", E, "--work-of-adhesion", W, "--z0", Z0]
+    rows = np.column_stack([loads, f, [0.5, 0.02, 0.02] * f])
+    recs = []
+    for header in (
+        ["normal_load_N_per_m", "friction_force_N_per_m", "friction_force_sd_N_per_m"],
+        ["normal_load_N_per_m", "friction_force_N_per_m", "sd"],
+        ["normal_load_N_per_m", "friction_force_N_per_m"],
+    ):
+        path = write(tmp_path / "f.csv", header, rows[:, : len(header)])
+        code, out, err = run(capsys, "fit-friction", "--data", path, *common, "--json")
+        assert code == 0, err
+        recs.append(record(out)[1])
+    ref, rec, plain = recs
+    for key in ("tau0_Pa", "tau0_sd_Pa", "birge_ratio"):
+        assert rec[key] == pytest.approx(ref[key], rel=1e-9), key
+    assert plain["birge_ratio"] is None and plain["tau0_Pa"] != pytest.approx(rec["tau0_Pa"])
+
+
+def test_the_sd_column_takes_the_unit_of_its_value_column(tmp_path):
+    path = tmp_path / "t.csv"
+    path.write_text("radius_um,pull_off_force_nN,sd\n0.01,-8,0.5\n0.04,-12,1\n0.16,-20,2\n")
+    cols, n = read_columns(
+        str(path),
+        {"radius": ("length", True, False), "pull_off_force": ("force", True, True)},
+        2e-6,
+    )
+    assert n == 3 and sorted(cols) == ["_line", "pull_off_force", "pull_off_force_sd", "radius"]
+    assert cols["radius"] == pytest.approx([1e-8, 4e-8, 1.6e-7], rel=1e-15)
+    assert cols["pull_off_force"] == pytest.approx([-4e-3, -6e-3, -1e-2], rel=1e-15)
+    assert cols["pull_off_force_sd"] == pytest.approx([2.5e-4, 5e-4, 1e-3], rel=1e-15)
+    assert cols["_line"].tolist() == [2, 3, 4]
+
+
+ACCEPTED_ADHESION = (
+    "the accepted columns are radius_<unit>, pull_off_force_<unit> with its optional "
+    "uncertainty: sd or sd_<unit> right after it, or pull_off_force_sd_<unit> anywhere "
+    "(<unit>: m, nm, um for a length; N_per_m, nN_per_um, uN_per_m, N, nN for a force)"
+)
+
+
+@pytest.mark.parametrize(
+    ("command", "header", "message"),
+    [
+        (
+            "fit-adhesion",
+            "radius_nm,pull_off_force_nN_per_um,temperature_K",
+            f"column 'temperature_K' is not one the reader knows; {ACCEPTED_ADHESION}",
+        ),
+        (
+            "fit-adhesion",
+            "radius_nm,normal_load_N_per_m,pull_off_force_nN_per_um",
+            "column 'normal_load_N_per_m' is not one the reader knows; the accepted columns",
+        ),
+        (
+            "fit-adhesion",
+            "radius_nm,pull_off_force_nN_per_um,",
+            f"column 3 has no name; {ACCEPTED_ADHESION}",
+        ),
+        (
+            "fit-adhesion",
+            "sd,radius_nm,pull_off_force_nN_per_um",
+            "column 'sd': an sd column qualifies the value column right before it, and it is "
+            "the first column; an sd column may follow only pull_off_force_<unit>",
+        ),
+        (
+            "fit-adhesion",
+            "radius_nm,sd,pull_off_force_nN_per_um",
+            "column 'sd': the reader does not use an uncertainty of the radius (it is taken as "
+            "exact); an uncertainty column may qualify only pull_off_force_<unit>",
+        ),
+        (
+            "fit-adhesion",
+            "radius_nm,sd_nm,pull_off_force_nN_per_um",
+            "column 'sd_nm': the reader does not use an uncertainty of the radius",
+        ),
+        (
+            "fit-adhesion",
+            "radius_nm,pull_off_force_nN_per_um,radius_sd_nm",
+            "column 'radius_sd_nm': the reader does not use an uncertainty of the radius",
+        ),
+        (
+            "fit-adhesion",
+            "radius_nm,pull_off_force_nN_per_um,sd_nm",
+            "column 'sd_nm': the unit 'nm' is one of a length; the pull off force's "
+            "uncertainty takes N_per_m, nN_per_um, uN_per_m, N, nN",
+        ),
+        (
+            "fit-adhesion",
+            "radius_nm,pull_off_force_nN_per_um,pull_off_force_sd_um",
+            "column 'pull_off_force_sd_um': the unit 'um' is one of a length",
+        ),
+        (
+            "fit-adhesion",
+            "radius_nm,pull_off_force_nN_per_um,sd_kg",
+            "column 'sd_kg': the unit 'kg' is not one the reader knows",
+        ),
+        (
+            "fit-adhesion",
+            "radius_nm,pull_off_force_nN_per_um,sd,pull_off_force_sd_nN_per_um",
+            "2 uncertainty columns for pull off force (sd, pull_off_force_sd_nN_per_um): keep one",
+        ),
+        (
+            "fit-adhesion",
+            "radius_nm,pull_off_force_nN_per_um,sd,sd_nN_per_um",
+            "column 'sd_nN_per_um': an sd column qualifies the value column right before it, "
+            "and 'sd' is an uncertainty",
+        ),
+        (
+            "fit-adhesion",
+            "radius_nm,pull_off_force,sd",
+            "column 'pull_off_force': no unit: name it pull_off_force_<unit>",
+        ),
+        (
+            "fit-adhesion",
+            "radius_nm,sd_nN_per_um",
+            "column 'sd_nN_per_um': the reader does not use an uncertainty of the radius",
+        ),
+        (
+            "fit-friction",
+            "normal_load_N_per_m,sd,friction_force_N_per_m",
+            "column 'sd': the reader does not use an uncertainty of the normal load (it is "
+            "taken as exact); an uncertainty column may qualify only friction_force_<unit>",
+        ),
+        (
+            "fit-friction",
+            "normal_load_N_per_m,friction_force_N_per_m,normal_load_sd_N_per_m",
+            "column 'normal_load_sd_N_per_m': the reader does not use an uncertainty of the "
+            "normal load",
+        ),
+        (
+            "fit-friction",
+            "normal_load_N_per_m,friction_force_N_per_m,sd,temperature_K",
+            "column 'temperature_K' is not one the reader knows; the accepted columns are "
+            "normal_load_<unit>, friction_force_<unit> with its optional uncertainty: sd or "
+            "sd_<unit> right after it, or friction_force_sd_<unit> anywhere",
+        ),
+    ],
+)
+def test_a_column_the_reader_does_not_use_is_refused(capsys, tmp_path, command, header, message):
+    path = tmp_path / "cols.csv"
+    n = header.count(",") + 1
+    path.write_text(header + "\n" + "\n".join(",".join(["1"] * n) for _ in range(3)) + "\n")
+    friction = ["--radius", 50e-9, "--work-of-adhesion", W, "--z0", Z0]
+    common = friction if command == "fit-friction" else []
+    code, out, err = run(capsys, command, "--data", path, *MATS, *common)
+    assert code == 2, err
+    assert err.count("\n") == 1 and "error:" in err and "Traceback" not in err, err
+    assert f"--data {str(path)!r}" in err and message in err, err
+
+
+def test_one_measurement_uncertainties_are_refused_with_data(capsys, pulloff_csv):
+    code, _, err = run(
+        capsys, "fit-adhesion", "--data", pulloff_csv, *MATS, "--pull-off-force-sd", "5%"
+    )
+    assert code == 2 and err.count("\n") == 1
+    assert "--pull-off-force-sd: for one measurement, not with --data" in err, err

@@ -1,11 +1,18 @@
 """The fast paths give the results of the general ones.
 
 - A scalar call runs the vectorised kernels on NumPy scalars (``reference._where``): it must
-  give, bit for bit, the element of the same call on an array.
+  give the element of the same call on an array, to rounding.
 - The per-point iterations (``reference._iterate``) drop converged points: a batch with an
-  extreme or unconvergeable point returns the other points exactly as when each is alone.
+  extreme or unconvergeable point returns the other points as when each is alone.
 - The collocation solvers work on chunks of points (``sie._CHUNK_ELEMENTS``): any chunk size
-  gives the same results.
+  gives the same results, to rounding.
+
+"To rounding", never bit for bit (README, "Same answers on every machine"): NumPy's SIMD loops
+for ``exp``/``log`` on arrays round differently from its scalar code on some CPUs (AVX-512),
+and BLAS rounds with the number of rows in a batch. A quantity is compared to :data:`ULPS`
+units in its last place (:func:`_same`, :func:`_close`); a round-off quantity (a residual, an
+error estimate) holds little but rounding errors and is compared with an absolute bound
+(:data:`ROUNDOFF`); labels and flags exactly.
 - The input checks recognise valid input without building messages; invalid input still gets
   the detailed message.
 - ``import linecontact`` does not import SciPy (it is imported where it is used).
@@ -39,11 +46,40 @@ def _sample(n, rng):
     return A, rho, s
 
 
-def _same(scalar_result, array_result, i, fields):
+#: Units in the last place that two code paths may differ by (the iterations converge to the
+#: last bits of their inputs, which may themselves differ by an ulp between the paths).
+ULPS = 64
+#: Round-off quantities (residuals, error estimates) of the two paths may differ by this much
+#: (absolute: their scale is 1, that of the nondimensional equations they measure).
+ROUNDOFF = 1e-12
+_ROUNDOFF_FIELDS = ("residual", "error_estimate")
+
+
+def _agree(a, b, name: str, ulps: int = ULPS) -> bool:
+    """``a`` and ``b`` the same quantity from two code paths: equal to rounding."""
+    a, b = np.asarray(a), np.asarray(b)
+    if a.dtype.kind in "biuUSO" or b.dtype.kind in "biuUSO":
+        return bool(np.array_equal(a, b))
+    a, b = a.astype(float), b.astype(float)
+    same_nan = np.isnan(a) & np.isnan(b)
+    if name.startswith(_ROUNDOFF_FIELDS):
+        return bool(np.all(same_nan | (np.abs(a - b) <= ROUNDOFF)))
+    with np.errstate(invalid="ignore"):
+        tol = ulps * np.spacing(np.maximum(np.abs(a), np.abs(b)))
+        return bool(np.all(same_nan | (a == b) | (np.abs(a - b) <= tol)))
+
+
+#: The same for the inverse problems (the width for a load): near the pull-off the width is
+#: conditioned like 1/sqrt(F - F_pulloff), up to 1e4 at the loads drawn here (1e-8 above
+#: it); 46 ulp seen on an AVX-512 machine.
+INVERSE_ULPS = 4096
+
+
+def _same(scalar_result, array_result, i, fields, ulps=ULPS):
     for f in fields:
         a, b = getattr(scalar_result, f), getattr(array_result, f)
         b = np.asarray(b)[i]
-        assert a == b or (a != a and b != b), f"{f}: scalar {a!r} != array {b!r} (point {i})"
+        assert _agree(a, b, f, ulps), f"{f}: scalar {a!r} != array {b!r} (point {i})"
 
 
 # --------------------------------------------------------------------------------------------
@@ -86,7 +122,8 @@ def test_pull_off_and_contact_for_load_scalar_is_array_element():
     cl = lc.contact_for_load(F, rho, s)
     fields = ["a_over_R", "c_over_R", "F_over_Eh", "error_estimate", "stable"]
     for i in range(rho.size):
-        _same(lc.contact_for_load(float(F[i]), float(rho[i]), float(s[i])), cl, i, fields)
+        r = lc.contact_for_load(float(F[i]), float(rho[i]), float(s[i]))
+        _same(r, cl, i, fields, INVERSE_ULPS)
     # unstable branch, where it exists
     snap = (np.asarray(po.mechanism) == "snap-off") & (
         po.F_minimum_over_Eh < po.F_zero_width_over_Eh
@@ -98,7 +135,7 @@ def test_pull_off_and_contact_for_load_scalar_is_array_element():
     cu = lc.contact_for_load(Fu[idx], rho[idx], s[idx], branch="unstable")
     for k, i in enumerate(idx):
         r = lc.contact_for_load(float(Fu[i]), float(rho[i]), float(s[i]), branch="unstable")
-        _same(r, cu, k, fields)
+        _same(r, cu, k, fields, INVERSE_ULPS)
         assert not r.stable
 
 
@@ -146,7 +183,7 @@ def test_sliding_pull_off_and_inverse_scalar_is_array_element():
         r = lc.sliding_contact_for_load(
             float(F[i]), float(rho[i]), float(ratio[i]), float(s[i]), method="closed-form"
         )
-        _same(r, cl, i, ["a_over_R", *SLIDING_FIELDS])
+        _same(r, cl, i, ["a_over_R", *SLIDING_FIELDS], INVERSE_ULPS)
 
 
 def test_scalar_fast_path_keeps_the_result_types():
@@ -196,7 +233,8 @@ def test_u_of_abar_counts_iterations_per_point():
     u, res, it = reference._u_of_abar(ab, kap)
     for i in (0, 2):
         ui, ri, ki = reference._u_of_abar(ab[i], kap[i])
-        assert (u[i], res[i], it[i]) == (ui, ri, ki)
+        assert _agree(u[i], ui, "u") and _agree(res[i], ri, "residual")
+        assert abs(int(it[i]) - int(ki)) <= 1  # a last bit may cost or save a Newton step
     assert it.max() <= 8
     # the closed form over a broad sample needs a handful of Newton steps per point
     A, rho, s = _sample(20_000, np.random.default_rng(7))
@@ -215,7 +253,8 @@ def test_u_stationary_matches_bisection():
         above = reference._kappa_stationary(np.exp(mid)) > kap
         lo, hi = np.where(above, mid, lo), np.where(above, hi, mid)
     np.testing.assert_allclose(reference._u_stationary(kap), np.exp(0.5 * (lo + hi)), rtol=1e-14)
-    assert reference._u_stationary(np.float64(1.0)) == reference._u_stationary(np.array([1.0]))[0]
+    scalar = reference._u_stationary(np.float64(1.0))
+    assert _agree(scalar, reference._u_stationary(np.array([1.0]))[0], "u")
 
 
 def test_batch_with_an_unconvergeable_point_keeps_the_others():
@@ -262,10 +301,14 @@ def test_the_thin_zone_corner_converges():
 
 def _close(a, b, err_msg=""):
     """Equal to rounding: the collocation's matrix products (BLAS) round differently with the
-    number of rows in a batch, so a point's result can move by an ulp with its batch."""
+    number of rows in a batch, so a point's result can move in its last bits with its batch;
+    the collocation's Newton iterations stop at 1e-13, so the tolerance is that."""
     a, b = np.asarray(a), np.asarray(b)
-    if a.dtype.kind in "biuUS":
+    name = err_msg.rsplit(".", 1)[-1]
+    if a.dtype.kind in "biuUSO":
         assert_array_equal(a, b, err_msg=err_msg)
+    elif name.startswith(_ROUNDOFF_FIELDS):
+        assert _agree(a, b, name), f"{err_msg}: {a!r} and {b!r} differ by more than round-off"
     else:
         np.testing.assert_allclose(a, b, rtol=1e-13, atol=1e-15, err_msg=err_msg)
 

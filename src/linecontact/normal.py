@@ -50,6 +50,7 @@ __all__ = [
     "NormalContact",
     "PullOff",
     "SNAP_OFF_MIN_WIDTH_OVER_H",
+    "ZERO_WIDTH_LOAD_RTOL",
     "contact_for_load",
     "equilibria",
     "load_curve",
@@ -63,6 +64,12 @@ __all__ = [
 #: spacing); a contact that shrinks below that width before it lets go peels to zero width
 #: (docs/derivations.md, Sec. 4). The label only: the pull-off force is always the minimum.
 SNAP_OFF_MIN_WIDTH_OVER_H = 1.0
+
+#: ... and the pull-off is called a snap-off too when it lies more than this fraction of
+#: Eq. (14) below Eq. (14), however narrow the contact it lets go from: ``"zero-width"``
+#: promises a pull-off force that is Eq. (14) to within 1 % (at small ``R/h`` a contact
+#: narrower than ``h`` can let go far below it, e.g. 39 % at ``R/h = 1``, ``sigma0/E = 2``).
+ZERO_WIDTH_LOAD_RTOL = 1e-2
 
 #: Relative load residual (over the larger of |F|, |Eq. 14| and the Hertz term) that
 #: contact_for_load must meet; it reaches ~1e-15 wherever the solver's bracket holds the state.
@@ -547,8 +554,9 @@ class PullOff(Result):
         range).
     mechanism : ndarray of str or str
         ``"snap-off"``: the contact lets go from a half-width of at least the adhesion range
-        ``h`` (:data:`SNAP_OFF_MIN_WIDTH_OVER_H`); ``"zero-width"``: it first peels to a
-        width below ``h`` and lets go at a load within a small fraction of Eq. (14).
+        ``h`` (:data:`SNAP_OFF_MIN_WIDTH_OVER_H`), or at a load more than 1 % below Eq.
+        (14) (:data:`ZERO_WIDTH_LOAD_RTOL`); ``"zero-width"``: it first peels to a width
+        below ``h`` and lets go at a load within 1 % of Eq. (14).
     F_zero_width_over_Eh : ndarray or float
         Eq. (14), the load at vanishing contact width.
     F_minimum_over_Eh, a_over_R_at_minimum : ndarray or float
@@ -605,7 +613,9 @@ def _pulloff_flat(rho: NDArray, s: NDArray):
     # stability of every state is judged against it); the label says whether the contact
     # lets go from a width the continuum model resolves (at least the range h) or peels
     # below it
-    snap = (F_min < F0) & (A_min >= SNAP_OFF_MIN_WIDTH_OVER_H / rho)
+    snap = (F_min < F0) & (
+        (A_min >= SNAP_OFF_MIN_WIDTH_OVER_H / rho) | (F0 - F_min > ZERO_WIDTH_LOAD_RTOL * abs(F0))
+    )
     return dict(
         F_pulloff_over_Eh=F_min,
         a_over_R_at_pulloff=A_min,
@@ -628,10 +638,12 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugda
     function of :math:`u = \operatorname{arccosh}(c/a)`, so no grid can miss it. The
     pull-off force is that minimum. The mechanism is ``"snap-off"`` when the contact
     half-width there is at least the range ``h`` of the adhesive stress
-    (:data:`SNAP_OFF_MIN_WIDTH_OVER_H`), ``"zero-width"`` otherwise: the contact then peels
-    below the range of the surface forces and lets go at a load within a small fraction of
-    Eq. (14) (at most 2e-3 of it for ``R/h >= 100``, 2e-5 for ``R/h >= 1e4``; see
-    ``docs/derivations.md``).
+    (:data:`SNAP_OFF_MIN_WIDTH_OVER_H`) or the force more than 1 % below Eq. (14)
+    (:data:`ZERO_WIDTH_LOAD_RTOL`), ``"zero-width"`` otherwise: the contact then peels
+    below the range of the surface forces and lets go at a load within 1 % of Eq. (14)
+    (at most 2e-3 of it for ``R/h >= 100``, 2e-5 for ``R/h >= 1e4``; see
+    ``docs/derivations.md``). The pull-off state is the minimum in either case, and it is
+    the one the load curve marks (:func:`load_curve`, ``linecontact curve``).
 
     Parameters
     ----------
@@ -1005,24 +1017,41 @@ class Equilibrium:
     central_gap_over_h: float
 
 
+#: Below this a/R a contact root at the zero-width load (within round-off) is touch-down.
+_TOUCHDOWN_WIDTH = 1e-6
+
+
 def equilibria(F_over_Eh: float, R_over_h: float, sigma0_over_E: float) -> tuple[Equilibrium, ...]:
     """Every equilibrium state carrying the load ``F_over_Eh`` (scalar parameters).
 
     Stable contact (``F >= F_pulloff``), unstable narrow contact (between the load minimum and
     Eq. 14), and the non-contact state (between Eq. 14 and 0). Empty below the pull-off
-    force; the caller says so.
+    force; the caller says so. A contact has a positive width: at the zero-width load
+    (Eq. 14, within round-off) the narrow end of the contact branch is the touch-down
+    state, listed once, as the non-contact state (``a = 0``, gap 0).
     """
     F = _domain.scalar("F_over_Eh", F_over_Eh)
     rho = _domain.scalar("R_over_h", R_over_h)
     s = _domain.scalar("sigma0_over_E", sigma0_over_E)
     po = pull_off(rho, s)
     states: list[Equilibrium] = []
+    # At the zero-width load the contact branch ends at a = 0: the touch-down state, which
+    # the non-contact state at that load is (a = 0, gap 0). Within round-off of that load
+    # the branch's root is not resolved (F - F_zero_width ~ a^2: a falls to 0, or to 5e-299
+    # a ulp away); such a root is that state, not a contact, and is listed once, as it.
+    F_zw = float(po.F_zero_width_over_Eh)
+    at_touchdown = s > 0 and abs(F - F_zw) <= 8 * np.finfo(float).eps * abs(F_zw)
+
+    def contact(branch: str, stable: bool) -> None:
+        r = contact_for_load(F, rho, s, branch=branch)
+        a = float(r.a_over_R)
+        if a > 0 and not (at_touchdown and a < _TOUCHDOWN_WIDTH):
+            states.append(Equilibrium("contact", stable, F, a, float(r.c_over_R), 0.0))
+
     if F >= po.F_minimum_over_Eh:
-        r = contact_for_load(F, rho, s, branch="stable")
-        states.append(Equilibrium("contact", True, F, float(r.a_over_R), float(r.c_over_R), 0.0))
+        contact("stable", True)
     if po.F_minimum_over_Eh < F < po.F_zero_width_over_Eh:
-        r = contact_for_load(F, rho, s, branch="unstable")
-        states.append(Equilibrium("contact", False, F, float(r.a_over_R), float(r.c_over_R), 0.0))
+        contact("unstable", False)
     if s > 0 and po.F_zero_width_over_Eh <= F < 0:
         # invert F = -2 s rho C for C, then the gap
         C = -F / (2 * s * rho)
@@ -1030,6 +1059,10 @@ def equilibria(F_over_Eh: float, R_over_h: float, sigma0_over_E: float) -> tuple
         g = 1 - rho * (C * C / 2 + k * C)
         states.append(Equilibrium("non-contact", False, F, 0.0, C, float(np.clip(g, 0, 1))))
     return tuple(states)
+
+
+#: The most points :func:`load_curve` samples on either branch.
+NUM_MAX = 10**7
 
 
 @dataclass(frozen=True)
@@ -1090,7 +1123,9 @@ def load_curve(
         times the width at pull-off, if that is larger), and never beyond ``a/R = 10``, the
         end of the domain (where the pull-off is wider still, the curve stops short of it).
     num, num_noncontact : int
-        Points on the contact and the non-contact branches (>= 2 each).
+        Points on the contact and the non-contact branches, each in ``[2, NUM_MAX]``
+        (``NUM_MAX = 10**7``: a few hundred MB of samples; more is refused up front rather
+        than failing in NumPy's allocator).
     law : {"dugdale", "lennard-jones"}
         The Dugdale step (default), or the Lennard-Jones law of Eq. (1) with the same work of
         adhesion and peak tension (as in :func:`pull_off`): the states of the solver's
@@ -1124,8 +1159,8 @@ def load_curve(
             "F_max_over_Eh applies to law='lennard-jones': the Dugdale curve ends at a_max_over_R"
         )
     for name, v in (("num", num), ("num_noncontact", num_noncontact)):
-        if not isinstance(v, (int, np.integer)) or v < 2:
-            raise ValueError(f"{name} must be an integer >= 2, got {v!r}")
+        if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or not 2 <= v <= NUM_MAX:
+            raise ValueError(f"{name} must be an integer in [2, {NUM_MAX}], got {v!r}")
     po = pull_off(rho, s)
     if a_max_over_R is None:
         a_po = float(po.a_over_R_at_minimum)

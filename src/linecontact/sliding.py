@@ -119,6 +119,7 @@ from ._validation import (
     scalar_or_array,
 )
 from .errors import ConvergenceError, NoEquilibriumError
+from .normal import ZERO_WIDTH_LOAD_RTOL
 from .results import Result, as_output
 from .sie import SIZES, BoundedSolution, BoundedSolver, _chunks, log_end_moments
 
@@ -813,6 +814,30 @@ def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
     return d
 
 
+def _solve_split(A, rho, r, s, n, tol, closed, u_guess):
+    """Collocation at flat arrays, but the closed form at the points ``closed``.
+
+    The closed form's points keep ``n = 0`` (no collocation) in the result.
+    """
+    if not np.any(closed):
+        return _solve_flat(A, rho, r, s, "collocation", n, tol)
+    parts = []
+    for mask, method in ((closed, "closed-form"), (~closed, "collocation")):
+        idx = np.flatnonzero(mask)
+        if idx.size:
+            guess = (u_guess[0][idx], u_guess[1][idx]) if method == "closed-form" else None
+            d = _solve_flat(A[idx], rho[idx], r[idx], s[idx], method, n, tol, u_guess=guess)
+            parts.append((idx, d))
+    out = {}
+    for k in parts[0][1]:
+        vals = [np.asarray(d[k]) for _, d in parts]
+        arr = np.empty(A.shape, dtype=np.result_type(*vals))
+        for (idx, _), v in zip(parts, vals, strict=True):
+            arr[idx] = v
+        out[k] = arr
+    return out
+
+
 def _pack(
     d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure, where, missing=None, F_asked=None
 ):
@@ -1098,7 +1123,9 @@ def sliding_pull_off(
     adhesive zones ``-c1 < x < c2`` of the touching state carry
     ``F = -sigma0 (c1 + c2)``; the pull-off force is that minimum, and the rule for the
     label is that of :func:`linecontact.pull_off` (a snap-off lets go from a contact
-    half-width of at least the shorter adhesion range, :data:`SNAP_OFF_MIN_WIDTH_OVER_H`).
+    half-width of at least the shorter adhesion range, :data:`SNAP_OFF_MIN_WIDTH_OVER_H`,
+    or more than 1 % below the zero-width load,
+    :data:`linecontact.normal.ZERO_WIDTH_LOAD_RTOL`).
     At ``h1 = h2`` this is the pull-off of :func:`linecontact.pull_off`.
 
     Parameters
@@ -1130,8 +1157,12 @@ def sliding_pull_off(
         F0 = (np.pi / 2) * d["phi0"]
         Fmin = (np.pi / 2) * d["phi_min"]
         a_min = where(d["interior"], np.exp(d["lab_min"]) * sq, 0.0)
-        # a snap-off lets go from a width of at least the shorter adhesion range
-        snap = d["interior"] & (a_min >= SNAP_OFF_MIN_WIDTH_OVER_H * _ref._minimum(1.0, r) / rho)
+        # a snap-off lets go from a width of at least the shorter adhesion range, or more
+        # than 1 % below the zero-width load (as in normal.pull_off)
+        snap = d["interior"] & (
+            (a_min >= SNAP_OFF_MIN_WIDTH_OVER_H * _ref._minimum(1.0, r) / rho)
+            | (F0 - Fmin > ZERO_WIDTH_LOAD_RTOL * abs(F0))
+        )
     bad = ~((abs(F0) < np.inf) & (abs(Fmin) < np.inf) & (abs(a_min) < np.inf))
     if np.any(bad):
         i = int(np.flatnonzero(np.reshape(bad, -1))[0])
@@ -1276,7 +1307,10 @@ def sliding_contact_for_load(
     Solves ``F(a) = F`` for the contact half-width on the branch with ``dF/da > 0`` (stable
     under load control) with the closed form, then computes the state at that width with
     ``method``; with ``tau0_over_E`` the friction force ``2 a tau0`` is reported as
-    ``T_over_Eh2``.
+    ``T_over_Eh2``. A load within 1e-12 of the zero-width load, where the stable branch
+    starts at zero width, gives the zero-width state at the domain's end ``a/R = 1e-20``
+    (every narrower width carries it to round-off), by the closed form under either method
+    (``n_collocation`` 0; docs/sliding.md, "Loads at the zero-width end").
 
     Parameters
     ----------
@@ -1351,13 +1385,21 @@ def sliding_contact_for_load(
         )
         A = np.exp(lab) * np.sqrt(2 / rho)
         # narrower than the domain of sliding_contact: the load there is the zero-width one
-        # to round-off (kept at the domain's end), or the point is refused (A = 0 below)
+        # to round-off (kept at the domain's end), or the point is refused (A = 0 below).
+        # Where the stable branch starts at zero width (or at a minimum within 1e-12 of the
+        # zero-width load), a load that the domain's end already carries to 1e-12 is the
+        # zero-width state too: the load rises like a^2 from there, so the width that Newton
+        # finds for it (anywhere below ~1e-7 R) is set by the last bits of the load, which
+        # differ between machines, and the collocation cannot resolve such widths. The state
+        # at the domain's end is the answer on every machine (docs/sliding.md, "Loads at the
+        # zero-width end").
         a_min = _domain.DOMAIN["sliding_a_over_R"][0]
-        narrow = (A < a_min) & ~missing
+        ph_f, _, u1f, u2f = _phi_at(np.log(a_min * np.sqrt(rho / 2)), kap, r)
+        scale = _ref._maximum(abs(phi_t), abs(phi_lo))
+        ok = abs(ph_f - phi_t) <= 1e-12 * scale
+        zero_end = (s > 0) & (abs(ph_f - phi_lo) <= 1e-12 * scale)
+        narrow = ((A < a_min) | (ok & zero_end)) & ~missing
         if np.any(narrow):
-            ph_f, _, u1f, u2f = _phi_at(np.log(a_min * np.sqrt(rho / 2)), kap, r)
-            scale = _ref._maximum(abs(phi_t), abs(phi_lo))
-            ok = abs(ph_f - phi_t) <= 1e-12 * scale
             where = _ref._where
             # (without adhesion the width found is Hertz's and is said; else it is < a_min)
             A = where(narrow, where(ok, a_min, where(s == 0, A, 0.0)), A)
@@ -1371,9 +1413,12 @@ def sliding_contact_for_load(
     )
     _ref._warn_wide(np.where(missing, np.nan, A))
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # see sliding_contact
-        dd = _solve_flat(
-            A, rho, r, s, method, n, tol, u_guess=(u1, u2) if method == "closed-form" else None
-        )
+        if method == "closed-form":
+            dd = _solve_flat(A, rho, r, s, method, n, tol, u_guess=(u1, u2))
+        else:
+            # the zero-width states (A at the domain's end, above) are the closed form's:
+            # no collocation resolves a contact 1e20 times narrower than its adhesive zones
+            dd = _solve_split(A, rho, r, s, n, tol, (A <= a_min) & (s > 0), (u1, u2))
         return _pack(
             dd,
             A,

@@ -1,8 +1,9 @@
 """The subcommands of the inverse problems: ``fit-adhesion`` and ``fit-friction``.
 
 A thin shell over :mod:`linecontact.inverse`. Data come from a CSV file (``--data``) whose
-header names the columns with their units (``radius_m``, ``pull_off_force_N_per_m``, ...;
-lines starting with ``#`` are comments), or as one measurement on the command line, each
+header names the columns with their units (``radius_m``, ``pull_off_force_N_per_m``, ``sd``
+right after a value column for its uncertainty, ...; lines starting with ``#`` are comments;
+every column is used or refused), or as one measurement on the command line, each
 value with an optional standard uncertainty (``--radius 50e-9 --radius-sd 3e-9`` or
 ``--radius-sd 6%``). The output is one record: the fitted values, their standard
 uncertainties, 95 % intervals (two-element lists), the covariance, and per data point
@@ -27,9 +28,9 @@ from ._options import cylinder as _cylinder
 
 __all__ = ["register"]
 
-#: quantity -> (unit suffix -> factor to SI); "_N" and "_nN" are totals over --length
+#: kind of quantity -> (unit suffix -> factor to SI); "N" and "nN" are totals over --length
 _UNITS: dict[str, dict[str, float]] = {
-    "radius": {"m": 1.0, "nm": 1e-9, "um": 1e-6},
+    "length": {"m": 1.0, "nm": 1e-9, "um": 1e-6},
     "force": {"N_per_m": 1.0, "nN_per_um": 1e-3, "uN_per_m": 1e-6, "N": 1.0, "nN": 1e-9},
 }
 _TOTAL = ("N", "nN")
@@ -38,7 +39,9 @@ _DESCRIPTION = {
     "fit-adhesion": (
         "Work of adhesion w (and the range z0) from measured pull-off forces, with the "
         "Maugis-Dugdale line contact as the forward model. With --data FILE (columns "
-        "radius_m, pull_off_force_N_per_m and optionally pull_off_force_sd_N_per_m): (w, z0) "
+        "radius_m, pull_off_force_N_per_m and optionally their standard uncertainty: sd or "
+        "sd_N_per_m right after them, or pull_off_force_sd_N_per_m; any other column is an "
+        "error): (w, z0) "
         "jointly by weighted least squares, or w alone with --z0 fixed. With one "
         "measurement (--radius --pull-off-force --z0, each with an optional -sd): w with a "
         "Monte Carlo 95 % interval and the linearised one. Pull-off forces are negative "
@@ -50,7 +53,8 @@ _DESCRIPTION = {
         "--radius, materials, adhesion), or from the steady-sliding contact when "
         "--receding-work-of-adhesion gives the hysteresis dw; JKR, DMT or Hertz widths only "
         "with --contact. --data FILE (columns normal_load_N_per_m, friction_force_N_per_m, "
-        "optionally friction_force_sd_N_per_m) or one measurement (--normal-load "
+        "optionally sd right after it or friction_force_sd_N_per_m; any other column is an "
+        "error) or one measurement (--normal-load "
         "--friction-force, with optional -sd)."
     ),
 }
@@ -187,12 +191,56 @@ def register(sub: Any) -> None:
 # reading data
 
 
-def read_columns(path: str, wanted: dict[str, tuple[str, bool]], length: float | None):
-    """Columns of a CSV file, in SI units per unit length.
+def _accepted(wanted: dict[str, tuple[str, bool, bool]]) -> str:
+    """The accepted column names of ``wanted``, for an error message."""
+    cols = []
+    for prefix, (_, _, with_sd) in wanted.items():
+        cols.append(f"{prefix}_<unit>")
+        if with_sd:
+            cols[-1] += (
+                f" with its optional uncertainty: sd or sd_<unit> right after it, or "
+                f"{prefix}_sd_<unit> anywhere"
+            )
+    kinds = dict.fromkeys(kind for kind, _, _ in wanted.values())
+    units = "; ".join(f"{', '.join(_UNITS[k])} for a {k}" for k in kinds)
+    return f"{', '.join(cols)} (<unit>: {units})"
 
-    ``wanted`` maps a name prefix (``"radius"``) to ``(kind, required)`` with ``kind`` a key
-    of the unit table. Returns ``{prefix: array}`` and the number of rows. Errors name the
-    file, the row (counting the header as row 1, comment lines included) and the column.
+
+def read_columns(
+    path: str, wanted: dict[str, tuple[str, bool, bool]], length: float | None
+) -> tuple[dict[str, np.ndarray], int]:
+    """Columns of a CSV file, in SI units per unit length; every column used or refused.
+
+    Parameters
+    ----------
+    path : str
+        The CSV file: ``#`` comment lines, a header, then rows of numbers.
+    wanted : dict
+        Maps a quantity's name prefix (``"radius"``) to ``(kind, required, with_sd)``:
+        ``kind`` a key of the unit table, whether the file must have the column, and whether
+        the caller uses the quantity's standard uncertainty.
+    length : float or None
+        The fibre's length [m], to turn total forces (units ``N``, ``nN``) into forces per
+        length.
+
+    Returns
+    -------
+    columns : dict
+        ``{prefix: array}`` for each quantity found, ``{prefix + "_sd": array}`` for each
+        uncertainty found, and ``"_line"``: each row's line number in the file.
+    n : int
+        The number of rows.
+
+    Raises
+    ------
+    ValueError
+        For a column the reader does not use (it never drops one), naming it and the
+        accepted names: a quantity's value is ``<prefix>_<unit>``; its uncertainty, where
+        ``with_sd``, is ``sd`` or ``sd_<unit>`` right after the value column or
+        ``<prefix>_sd_<unit>`` anywhere (no unit: that of the value column); one of each
+        per quantity. Also for a missing column, a unit of the wrong kind, a field that is
+        not a finite number and a negative uncertainty; the message names the file, the row
+        (counting the header as row 1, comment lines included) and the column.
     """
     try:
         with open(path, newline="", encoding="utf-8-sig") as fh:  # a BOM is dropped
@@ -210,40 +258,109 @@ def read_columns(path: str, wanted: dict[str, tuple[str, bool]], length: float |
     header = [h.strip() for h in rows[0]]
     if len(rows) < 2:
         raise ValueError(f"--data {path!r}: a header and no data rows")
-    out: dict[str, np.ndarray] = {}
-    # each column belongs to the longest wanted prefix it starts with ("pull_off_force_sd_..."
-    # to "pull_off_force_sd", not "pull_off_force"); columns of no wanted prefix are ignored
-    owner: dict[int, str] = {}
+    accepted = _accepted(wanted)
+    with_sd = [p for p, (_, _, s) in wanted.items() if s]
+    may_carry = " or ".join(f"{p}_<unit>" for p in with_sd) or "no column of this file"
+
+    def unknown(j: int) -> ValueError:
+        known = f"column {header[j]!r} is not one the reader knows"
+        what = known if header[j] else f"column {j + 1} has no name"
+        return ValueError(f"--data {path!r}: {what}; the accepted columns are {accepted}")
+
+    def not_read(j: int, prefix: str) -> ValueError:
+        return ValueError(
+            f"--data {path!r}, column {header[j]!r}: the reader does not use an uncertainty "
+            f"of the {prefix.replace('_', ' ')} (it is taken as exact); an uncertainty column "
+            f"may qualify only {may_carry}"
+        )
+
+    # each column is a value ("value", prefix, unit), an uncertainty ("sd", prefix, unit;
+    # unit "" for that of the value column) or unknown ("?", "", "")
+    role: list[tuple[str, str, str]] = []
     for j, col in enumerate(header):
-        hits = [p for p in wanted if col.startswith(p + "_")]
-        if hits:
-            owner[j] = max(hits, key=len)
-    for prefix, (kind, required) in wanted.items():
-        found = []
-        for j, col in enumerate(header):
-            if owner.get(j) == prefix:
-                unit = col[len(prefix) + 1 :]
-                if unit.startswith("sd_"):
-                    continue  # the uncertainty of a quantity whose uncertainty is not read
-                found.append((j, col, unit))
-        if not found:
-            if required:
-                units = ", ".join(f"{prefix}_{u}" for u in _UNITS[kind])
+        if col == "sd" or col.startswith("sd_"):  # the uncertainty of the column before it
+            if j == 0:
                 raise ValueError(
-                    f"--data {path!r}: no column for {prefix.replace('_', ' ')}: expected one "
-                    f"of {units}; the header is {','.join(header)!r}"
+                    f"--data {path!r}, column {col!r}: an sd column qualifies the value column "
+                    f"right before it, and it is the first column; an sd column may follow "
+                    f"only {may_carry}"
                 )
+            what, prefix, _ = role[j - 1]
+            if what == "?":
+                raise unknown(j - 1)
+            if what == "sd":
+                raise ValueError(
+                    f"--data {path!r}, column {col!r}: an sd column qualifies the value column "
+                    f"right before it, and {header[j - 1]!r} is an uncertainty; an sd column "
+                    f"may follow only {may_carry}"
+                )
+            if prefix not in with_sd:
+                raise not_read(j, prefix)
+            role.append(("sd", prefix, col[3:]))
             continue
-        if len(found) > 1:
+        hits = [p for p in wanted if col == p or col.startswith(p + "_")]
+        if not hits:
+            role.append(("?", "", ""))
+            continue
+        prefix = max(hits, key=len)
+        rest = col[len(prefix) + 1 :]
+        if rest == "sd" or rest.startswith("sd_"):
+            if prefix not in with_sd:
+                raise not_read(j, prefix)
+            role.append(("sd", prefix, rest[3:]))
+        elif not rest:
             raise ValueError(
-                f"--data {path!r}: {len(found)} columns for {prefix.replace('_', ' ')} "
-                f"({', '.join(c for _, c, _ in found)}): keep one"
+                f"--data {path!r}, column {col!r}: no unit: name it {prefix}_<unit> with <unit> "
+                f"one of {', '.join(_UNITS[wanted[prefix][0]])}"
             )
-        j, col, unit = found[0]
-        if unit not in _UNITS[kind]:
+        else:
+            role.append(("value", prefix, rest))
+
+    found: dict[tuple[str, str], list[int]] = {}
+    for j, (what, prefix, _) in enumerate(role):
+        if what != "?":
+            found.setdefault((what, prefix), []).append(j)
+    for (what, prefix), js in found.items():
+        if len(js) > 1:
+            kind = "uncertainty columns" if what == "sd" else "columns"
             raise ValueError(
-                f"--data {path!r}, column {col!r}: the unit {unit!r} is not one the reader "
-                f"knows ({', '.join(_UNITS[kind])})"
+                f"--data {path!r}: {len(js)} {kind} for {prefix.replace('_', ' ')} "
+                f"({', '.join(header[j] for j in js)}): keep one"
+            )
+    for prefix, (kind, required, _) in wanted.items():
+        if required and ("value", prefix) not in found:
+            units = ", ".join(f"{prefix}_{u}" for u in _UNITS[kind])
+            raise ValueError(
+                f"--data {path!r}: no column for {prefix.replace('_', ' ')}: expected one "
+                f"of {units}; the header is {','.join(header)!r}"
+            )
+        if ("sd", prefix) in found and ("value", prefix) not in found:
+            raise ValueError(
+                f"--data {path!r}, column {header[found['sd', prefix][0]]!r}: an uncertainty "
+                f"and no column for the {prefix.replace('_', ' ')} itself"
+            )
+    if any(what == "?" for what, _, _ in role):
+        raise unknown(next(j for j, (what, _, _) in enumerate(role) if what == "?"))
+
+    for i, row in enumerate(rows[1:]):
+        if len(row) != len(header):
+            raise ValueError(
+                f"--data {path!r}, row {body[i + 1][0]}: {len(row)} fields, the header has "
+                f"{len(header)}"
+            )
+    out: dict[str, np.ndarray] = {}
+    for j, (what, prefix, unit) in enumerate(role):
+        col, kind = header[j], wanted[prefix][0]
+        if what == "sd" and not unit:
+            unit = role[found["value", prefix][0]][2]  # the unit of its value column
+        if unit not in _UNITS[kind]:
+            other = [k for k in _UNITS if k != kind and unit in _UNITS[k]]
+            raise ValueError(
+                f"--data {path!r}, column {col!r}: the unit {unit!r} is "
+                + (f"one of a {other[0]}" if other else "not one the reader knows")
+                + f"; the {prefix.replace('_', ' ')}"
+                + ("'s uncertainty" if what == "sd" else "")
+                + f" takes {', '.join(_UNITS[kind])}"
             )
         if unit in _TOTAL and length is None:
             raise ValueError(
@@ -255,11 +372,6 @@ def read_columns(path: str, wanted: dict[str, tuple[str, bool]], length: float |
         vals = np.empty(len(rows) - 1)
         for i, row in enumerate(rows[1:]):
             line_no = body[i + 1][0]
-            if len(row) != len(header):
-                raise ValueError(
-                    f"--data {path!r}, row {line_no}: {len(row)} fields, the header has "
-                    f"{len(header)}"
-                )
             try:
                 if "_" in row[j]:  # float() reads "2_0" as 20: not a plain number
                     raise ValueError(row[j])
@@ -272,13 +384,13 @@ def read_columns(path: str, wanted: dict[str, tuple[str, bool]], length: float |
                 raise ValueError(
                     f"--data {path!r}, row {line_no}, column {col!r}: {row[j]!r} is not finite"
                 )
-            if "_sd_" in col + "_" and v < 0:
+            if what == "sd" and v < 0:
                 raise ValueError(
                     f"--data {path!r}, row {line_no}, column {col!r}: a standard uncertainty "
                     f"must be >= 0, got {v!r}"
                 )
             vals[i] = v * factor
-        out[prefix] = vals
+        out[prefix + "_sd" if what == "sd" else prefix] = vals
     out["_line"] = np.array([body[i + 1][0] for i in range(len(rows) - 1)])
     return out, len(rows) - 1
 
@@ -379,12 +491,30 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
             raise ValueError(
                 "give either --data FILE or one measurement (--radius, --pull-off-force)"
             )
+        if args.radius_sd is not None:
+            raise ValueError("--radius-sd is for one measurement; with --data the radii are exact")
+        single = [
+            "--" + k.replace("_", "-")
+            for k in (
+                "pull_off_force_sd",
+                "pull_off_force_total",
+                "pull_off_force_total_sd",
+                "half_width",
+                "half_width_sd",
+                "normal_load",
+            )
+            if getattr(args, k) is not None
+        ]
+        if single:
+            raise ValueError(
+                f"{', '.join(single)}: for one measurement, not with --data (the uncertainties "
+                "of the pull-off forces go into the file: an sd column after them)"
+            )
         cols, n = read_columns(
             args.data,
             {
-                "radius": ("radius", True),
-                "pull_off_force": ("force", True),
-                "pull_off_force_sd": ("force", False),
+                "radius": ("length", True, False),
+                "pull_off_force": ("force", True, True),
             },
             args.length,
         )
@@ -421,8 +551,6 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
         )
         z_ref = fit.equilibrium_spacing
         simple = inv.simple_model_work_of_adhesion(R, F, E, z_ref, sd)
-        if args.radius_sd is not None:
-            raise ValueError("--radius-sd is for one measurement; with --data the radii are exact")
         E_sd = _one_sd(args, "modulus", E)
         z_sd = _one_sd(args, "z0", args.z0) if args.z0 is not None else 0.0
         if args.z0 is None and args.z0_sd is not None:
@@ -738,8 +866,8 @@ def _cmd_friction(args: argparse.Namespace) -> int:
         return _friction_from_width(args)
     if args.data is not None and args.friction_force_sd is not None:
         raise ValueError(
-            "--friction-force-sd is for one measurement: with --data give a "
-            "friction_force_sd_... column"
+            "--friction-force-sd is for one measurement: with --data give the uncertainties "
+            "in the file, an sd column right after the friction forces"
         )
     E, mat = _modulus(args)
     params: dict[str, Any] = dict(mat)
@@ -756,9 +884,8 @@ def _cmd_friction(args: argparse.Namespace) -> int:
         cols, n = read_columns(
             args.data,
             {
-                "normal_load": ("force", True),
-                "friction_force": ("force", True),
-                "friction_force_sd": ("force", False),
+                "normal_load": ("force", True, False),
+                "friction_force": ("force", True, True),
             },
             args.length,
         )

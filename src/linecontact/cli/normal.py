@@ -396,9 +396,11 @@ def _cmd_curve(args: argparse.Namespace) -> int:
         raise ValueError("--a-max [m] is an SI input: give --radius and the materials too")
     c = load_curve(rho, s, a_max_over_R=a_max, num=args.num, num_noncontact=args.num_noncontact)
     po = c.pulloff
-    # the pull-off state: the load minimum (snap-off) or the touching state (zero width)
+    # the pull-off state is the one `pulloff` reports, whatever its label: the load minimum
+    # (a point of the curve), or the touching state where the minimum is narrower than the
+    # domain of a/R (its load is Eq. 14 to round-off)
     is_po = np.zeros(c.a_over_R.shape, bool)
-    if po.mechanism == "snap-off":
+    if c.turning_point.any():
         is_po |= c.turning_point
     elif s > 0:
         touch = np.flatnonzero((c.branch == "non-contact") & (c.central_gap_over_h == 0))
