@@ -17,6 +17,7 @@ import linecontact
 FLOORS = {
     "base": [
         "linecontact._version",
+        "linecontact._interrupt",
         "linecontact.errors",
         "linecontact._validation",
         "linecontact.domain",

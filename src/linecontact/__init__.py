@@ -20,59 +20,64 @@ length over ``E h``, stresses over ``E``; compressive load positive):
 - :mod:`linecontact.output` -- results to JSON, JSON Lines, CSV or tables, with provenance.
 """
 
-from ._version import __version__
-from .cylinder import (
-    Cylinder,
-    cylinder_cyclic_loss,
-    cylinder_push,
-    cylinder_sliding_initiation,
-    cylinder_steady_rolling,
-    cylinder_tangential_history,
-)
-from .errors import ConvergenceError, CouplingWarning, ModelValidityWarning, NoEquilibriumError
-from .inverse import (
-    fit_pull_off,
-    propagate,
-    shear_strength_from_friction,
-    work_of_adhesion_from_pull_off,
-    work_of_adhesion_from_width,
-)
-from .materials import (
-    adhesion_from_work,
-    compliance_constants,
-    composite_modulus,
-    dundurs_beta,
-)
-from .normal import (
-    NormalContact,
-    PullOff,
-    contact_for_load,
-    equilibria,
-    load_curve,
-    non_contact,
-    normal_contact,
-    pull_off,
-)
-from .presets import Material
-from .push import Push, TipPush, push, tip_push
-from .reference import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
-from .sliding import (
-    SlidingContact,
-    SlidingPullOff,
-    sliding_contact,
-    sliding_contact_for_load,
-    sliding_pull_off,
-)
-from .tangential import (
-    cyclic_loss,
-    cyclic_loss_coulomb,
-    sliding_initiation,
-    sliding_initiation_coulomb,
-    steady_rolling,
-    steady_rolling_coulomb,
-    tangential_history,
-    tangential_history_coulomb,
-)
+# Ctrl-C during these imports (about a second) ends the command line with status 130 and
+# one line, no traceback (linecontact._interrupt); a library user gets KeyboardInterrupt
+from ._interrupt import imports_interruptible as _imports_interruptible
+
+with _imports_interruptible():
+    from ._version import __version__
+    from .cylinder import (
+        Cylinder,
+        cylinder_cyclic_loss,
+        cylinder_push,
+        cylinder_sliding_initiation,
+        cylinder_steady_rolling,
+        cylinder_tangential_history,
+    )
+    from .errors import ConvergenceError, CouplingWarning, ModelValidityWarning, NoEquilibriumError
+    from .inverse import (
+        fit_pull_off,
+        propagate,
+        shear_strength_from_friction,
+        work_of_adhesion_from_pull_off,
+        work_of_adhesion_from_width,
+    )
+    from .materials import (
+        adhesion_from_work,
+        compliance_constants,
+        composite_modulus,
+        dundurs_beta,
+    )
+    from .normal import (
+        NormalContact,
+        PullOff,
+        contact_for_load,
+        equilibria,
+        load_curve,
+        non_contact,
+        normal_contact,
+        pull_off,
+    )
+    from .presets import Material
+    from .push import Push, TipPush, push, tip_push
+    from .reference import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
+    from .sliding import (
+        SlidingContact,
+        SlidingPullOff,
+        sliding_contact,
+        sliding_contact_for_load,
+        sliding_pull_off,
+    )
+    from .tangential import (
+        cyclic_loss,
+        cyclic_loss_coulomb,
+        sliding_initiation,
+        sliding_initiation_coulomb,
+        steady_rolling,
+        steady_rolling_coulomb,
+        tangential_history,
+        tangential_history_coulomb,
+    )
 
 __all__ = [
     "ConvergenceError",

@@ -26,6 +26,11 @@ def _real_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
         return value
     if value is None or isinstance(value, (bool, np.bool_, str, bytes)):
         raise ValueError(_not_real(name, value))
+    if isinstance(value, np.ma.MaskedArray):  # np.asarray would drop the mask silently
+        raise ValueError(
+            f"{name} is a masked array: masked arrays are not supported: fill or compress "
+            "them first (numpy.ma.filled, numpy.ma.compressed)"
+        )
     try:
         raw = np.asarray(value)
     except (TypeError, ValueError):  # ragged nested sequences

@@ -32,6 +32,7 @@ from __future__ import annotations
 
 import json
 import os
+import stat
 import sys
 import tempfile
 from collections.abc import Iterable, Mapping, Sequence
@@ -402,6 +403,37 @@ def _format_table(table: Table) -> str:
 # writing
 
 
+def _umask() -> int:
+    """The process's umask, read without changing it where the system says it (Linux)."""
+    try:
+        with open("/proc/self/status", encoding="ascii") as fh:
+            for line in fh:
+                if line.startswith("Umask:"):
+                    return int(line.split()[1], 8)
+    except (OSError, ValueError, IndexError):
+        pass
+    mask = os.umask(0o022)  # elsewhere: set and restore (not thread-safe, but brief)
+    os.umask(mask)
+    return mask
+
+
+def new_file_mode(target: str | os.PathLike[str]) -> int:
+    """The permission bits an atomically written ``target`` gets: those of a plain ``open``.
+
+    A temporary file from :func:`tempfile.mkstemp` is ``0600`` whatever the umask; before it
+    is renamed over ``target`` it gets the mode a file created with ``open(target, "w")``
+    would have: ``0666`` less the umask for a new file (``0644`` under umask ``022``), the
+    mode of the file replaced for an existing regular file.
+    """
+    try:
+        st = os.stat(target)
+    except OSError:
+        st = None
+    if st is not None and stat.S_ISREG(st.st_mode):
+        return stat.S_IMODE(st.st_mode)
+    return 0o666 & ~_umask()
+
+
 def write(
     table: Table,
     fmt: str,
@@ -436,6 +468,7 @@ def write(
         with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
             for chunk in chunks:
                 fh.write(chunk)
+        os.chmod(tmp, new_file_mode(target))  # mkstemp made it 0600
         os.replace(tmp, target)
     except BaseException:
         try:

@@ -492,8 +492,11 @@ def tip_push(H_over_R: ArrayLike, tip_friction: ArrayLike = 0.0) -> TipPush:
     )
     scalar = scalar_or_array(H, mu)
     H, mu = (np.asarray(v, float) for v in broadcast(H_over_R=H, tip_friction=mu))
+    # 1 + sin(theta) = H and 1 - sin(theta) = 2 - H (exact for H >= 1, correctly rounded
+    # below): cos(theta) = sqrt(H (2 - H)) keeps its relative accuracy at both ends, where
+    # forming 1 -+ sin(theta) from sin(theta) = H - 1 cancels (H = 1e-15 came out 4e-4 off)
     sin = H - 1.0
-    cos = np.sqrt((1.0 - sin) * (1.0 + sin))
+    cos = np.sqrt(H * (2.0 - H))
     qx = cos - mu * sin
     if np.any(qx <= 0):
         i = int(np.flatnonzero(np.reshape(qx <= 0, -1))[0])
@@ -505,7 +508,7 @@ def tip_push(H_over_R: ArrayLike, tip_friction: ArrayLike = 0.0) -> TipPush:
     vals = dict(
         Q_per_P=qx,
         dF_per_P=sin + mu * cos,
-        H_effective_over_R=(cos - mu * (1.0 + sin)) / qx,
+        H_effective_over_R=(cos - mu * H) / qx,
         H_over_R=H,
         tip_friction=mu,
     )

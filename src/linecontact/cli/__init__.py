@@ -14,24 +14,28 @@ that misses its tolerance: exit status 1.
 from __future__ import annotations
 
 import argparse
+import errno
 import os
 import sys
 import textwrap
 import warnings
 from collections.abc import Sequence
 
-from .._version import __version__
-from ..errors import ConvergenceError
-from . import adhesion_map as _adhesion_map
-from . import fit as _fit
-from . import history as _history
-from . import materials as _materials
-from . import normal as _normal
-from . import paper as _paper
-from . import push as _push
-from . import sliding as _sliding
-from . import tangential as _tangential
-from ._options import NoPointError, Parser, flag_message, record_flags
+from .._interrupt import EXIT_INTERRUPTED, imports_interruptible
+
+with imports_interruptible():  # Ctrl-C here: status 130, one line (linecontact._interrupt)
+    from .._version import __version__
+    from ..errors import ConvergenceError
+    from . import adhesion_map as _adhesion_map
+    from . import fit as _fit
+    from . import history as _history
+    from . import materials as _materials
+    from . import normal as _normal
+    from . import paper as _paper
+    from . import push as _push
+    from . import sliding as _sliding
+    from . import tangential as _tangential
+    from ._options import NoPointError, Parser, flag_message, record_flags
 
 __all__ = ["build_parser", "main"]
 
@@ -93,18 +97,55 @@ def _silence_stdout() -> None:
         pass
 
 
+def _flush_stdout() -> None:
+    """Flush stdout (where it can be flushed): a failed write raises here, in :func:`main`."""
+    flush = getattr(sys.stdout, "flush", None)
+    if flush is not None:
+        flush()
+
+
+#: The errors of a write that could not be done (a full disk or quota, a file too large,
+#: an I/O error, a closed descriptor): with no file name, a write to stdout, the only file
+#: the commands write to without naming it (``-o`` names its file).
+_WRITE_ERRNOS = frozenset(
+    getattr(errno, name)
+    for name in ("ENOSPC", "EDQUOT", "EFBIG", "EIO", "EBADF", "EROFS")
+    if hasattr(errno, name)
+)
+
+
+def _stdout_broken(exc: OSError) -> bool:
+    """True when ``exc`` is a failed write to stdout."""
+    return exc.filename is None and exc.errno in _WRITE_ERRNOS
+
+
+def _stdout_failed(prefix: str, exc: OSError) -> int:
+    """Report a failed write to stdout on stderr; exit status 2."""
+    _silence_stdout()  # the interpreter's final flush must not fail again
+    reason = exc.strerror or str(exc)
+    print(f"{prefix}: error: cannot write to standard output: {reason}", file=sys.stderr)
+    return 2
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the CLI; returns the exit status (also usable in-process by tests).
 
     Exit status: 0 when the run produced its output (points without a state are records
     with ``state`` and ``reason``), 1 when no point could be computed or a solver failed,
     2 for bad input (one ``error:`` line on stderr naming the flag, no traceback), 130 when
-    interrupted (Ctrl-C: one line on stderr). Output piped into a reader that stops early
-    (``| head``) ends quietly with status 0. A file written with ``-o`` appears whole or
-    not at all.
+    interrupted (Ctrl-C: one line on stderr, also while the command line starts: see
+    :mod:`linecontact._interrupt`). Output piped into a reader that stops early (``| head``,
+    EPIPE) ends quietly with status 0, as ``cat`` and ``seq`` do under a shell that ignores
+    SIGPIPE; any other failed write to standard output (a full disk, ``> /dev/full``) is one
+    ``error: cannot write to standard output: ...`` line on stderr and status 2. A file
+    written with ``-o`` appears whole or not at all.
     """
-    parser = build_parser()
-    args = parser.parse_args(argv)
+    try:
+        parser = build_parser()
+        args = parser.parse_args(argv)
+    except KeyboardInterrupt:
+        print("linecontact: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
     args.argv = list(argv) if argv is not None else None
     if args.command is None:
         print(
@@ -129,7 +170,9 @@ def main(argv: Sequence[str] | None = None) -> int:
             else:
                 warnings.simplefilter("always")
                 warnings.showwarning = once
-            return int(args.func(args))
+            status = int(args.func(args))
+        _flush_stdout()  # a write error surfaces here, not in the interpreter's last flush
+        return status
     except BrokenPipeError:
         # the reader went away (``linecontact ... | head``): nothing more to say to it. Point
         # stdout at the null device so that the interpreter's final flush is quiet too.
@@ -137,7 +180,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 0
     except KeyboardInterrupt:
         print(f"{prefix}: interrupted", file=sys.stderr)
-        return 130
+        return EXIT_INTERRUPTED
     except NoPointError as exc:
         print(f"{prefix}: error: no point could be computed: {exc}", file=sys.stderr)
         return 1
@@ -150,6 +193,14 @@ def main(argv: Sequence[str] | None = None) -> int:
     except ImportError as exc:
         print(f"{prefix}: error: {exc}", file=sys.stderr)
         return 1
+    except OSError as exc:
+        if not _stdout_broken(exc):  # not a write to stdout: an internal error
+            print(
+                f"{prefix}: error: internal error ({type(exc).__name__}: {exc}); please report it",
+                file=sys.stderr,
+            )
+            return 1
+        return _stdout_failed(prefix, exc)
     except Exception as exc:  # noqa: BLE001 - the CLI never shows a traceback
         print(
             f"{prefix}: error: internal error ({type(exc).__name__}: {exc}); please report it",

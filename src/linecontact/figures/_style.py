@@ -23,6 +23,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .._version import __version__
+from ..output import new_file_mode
 
 _MISSING_MPL = "linecontact paper needs matplotlib: pip install 'linecontact[plot]'"
 _CITE = "Sari, Adams & Müftü"
@@ -225,9 +226,7 @@ def _atomic(path: pathlib.Path):
         with os.fdopen(fd, "wb") as fh:
             yield fh
         # mkstemp creates the file 0600; give it the permissions of a normal new file
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)
+        os.chmod(tmp, new_file_mode(path))
         os.replace(tmp, path)
     except BaseException:
         with contextlib.suppress(OSError):

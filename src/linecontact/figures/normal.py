@@ -282,10 +282,13 @@ def _zero_width_figure(run: Run):
         [
             ("Eq. 14 (zero contact width)", dict(color="0.2", lw=1.8)),
             (
-                "pull-off, peels to zero width\n(a < h: close to Eq. 14)",
+                "pull-off, peels to zero width\n(a < h, within 1 % of Eq. 14)",
                 dict(color="0.2", **_OPEN_KW),
             ),
-            ("pull-off, snap-off\n(a >= h: below Eq. 14)", dict(color="0.2", **_FILLED_KW)),
+            (
+                "pull-off, snap-off\n(a >= h, or > 1 % below Eq. 14)",
+                dict(color="0.2", **_FILLED_KW),
+            ),
             (
                 "Eq. 14 as $\\sigma_0/E\\to\\infty$:\n$-\\pi/(2\\ln 2)$, any $R/h$",
                 dict(color="0.5", ls=":", lw=1.0),

@@ -74,6 +74,10 @@ N_INCREMENTAL = 64
 #: logarithmic source then needs ``~ 70/r`` nodes (``docs/load-histories.md``).
 N_MAX_INCREMENTAL = 4096
 _N_GAUSS = 16  # Gauss-Legendre nodes per piece of the slip annulus (friction work)
+#: The friction work of the incremental solver differences displacements of order one over
+#: the slip annulus ``c < |x| < a`` at the peaks: its relative round-off grows like
+#: ``eps (1 - c/a)^(-3/2)`` (measured: 4e-7 at ``1 - c/a = 5e-7``, Coulomb friction).
+_EPS_LOSS = float(np.finfo(float).eps)
 _T_LIMIT = 1e12  # |T| over the scale: keeps every intermediate quantity finite
 
 _STICK = "stick"
@@ -595,16 +599,20 @@ def _incremental(law: _Law, loads: NDArray, n: int) -> dict[str, Any]:
         # the friction work in the slip annulus c_j < |x| < 1 (both sides: twice), split at
         # the ends of the parts, where the slips have their kinks
         cut = sorted({cj, 1.0} | {c for c, _ in (*parts_prev, *parts) if cj < c < 1.0})
+        # The work density is B |ds| (the slip runs along the friction, s ds >= 0): a slip
+        # against it is a violation of the friction law (measured in viol), not negative
+        # work, so the loss is never negative (round-off made it -5.6e-38 at 1e-12 of full
+        # slip, Coulomb friction)
         w = 0.0
         viol = 0.0
         x0 = np.zeros(1)
+        el_new0, el_old0 = _el(law, s, parts, x0), _el(law, s_prev, parts_prev, x0)
         for lo, hi in _graded(cut):
             xg = lo + (hi - lo) * (gl_x + 1) / 2
             wg = (hi - lo) / 2 * gl_w
-            new = _el(law, s, parts, xg) - _el(law, s, parts, x0)
-            old = _el(law, s_prev, parts_prev, xg) - _el(law, s_prev, parts_prev, x0)
-            ds = new - old
-            w += 2 * float(np.sum(wg * s * law.B(xg) * ds))
+            el_new, el_old = _el(law, s, parts, xg), _el(law, s_prev, parts_prev, xg)
+            ds = (el_new - el_new0) - (el_old - el_old0)
+            w += 2 * float(np.sum(wg * law.B(xg) * np.maximum(s * ds, 0.0)))
             viol = max(viol, float(np.max(-s * ds, initial=0.0)))
         if cj > 0:
             # the traction in the stick zone must not exceed the friction law
@@ -1090,6 +1098,27 @@ class CoulombCyclicLoss(_Cyclic):
         )[..., None]
 
 
+def _loss_roundoff(law: _Law, r: float) -> float:
+    """Relative round-off of the incremental solver's loss per cycle at the amplitude ``r``.
+
+    ``eps (1 - c/a)^(-3/2)`` with ``c`` the stick zone at the peaks (``_EPS_LOSS``): an upper
+    bound of the measured error (Coulomb: ``3e-16 Q^(-3/2)``; constant stress: lower).
+    """
+    # 1 - c/a without cancellation: 1 - c^2 = r^2 (constant stress) or r (Coulomb)
+    u = r * r if law.name == "constant" else r
+    gap = u / (1.0 + math.sqrt(max(1.0 - u, 0.0)))
+    return math.inf if gap <= 0 else _EPS_LOSS * gap**-1.5
+
+
+def _too_small(tol: float, r: float, estimate: float, n: int) -> str:
+    """The message of an amplitude too small for the incremental solver."""
+    return (
+        f"the incremental solver missed tol={tol:g} at the amplitude {r!r} of the full-slip "
+        f"load (estimate {estimate:.2e}, n={n}): an amplitude this small needs more than "
+        f"{N_MAX_INCREMENTAL} nodes; use method='closed-form'"
+    )
+
+
 def _cyclic(law: _Law, r: NDArray, scale: NDArray, method: str, n: int, tol: float):
     """W over E a^2, the stick zone and the state for amplitudes r over the full-slip load."""
     sliding = r >= 1.0
@@ -1098,6 +1127,14 @@ def _cyclic(law: _Law, r: NDArray, scale: NDArray, method: str, n: int, tol: flo
         w = 4 * law.virgin_loss(rr)
     else:
         w = np.empty(r.shape)
+        # refused at once: an amplitude whose slip annulus is too thin for the loss to be
+        # resolved to tol (the solver would spend seconds and miss tol, or lose the loss to
+        # round-off); the tolerance is checked before the solver is entered
+        for i, ri in np.ndenumerate(rr):
+            if not sliding[i]:
+                est = _loss_roundoff(law, float(ri))
+                if not est <= tol:
+                    raise ConvergenceError(_too_small(tol, float(ri), est, N_MAX_INCREMENTAL))
         for i, ri in np.ndenumerate(rr):
             if sliding[i]:
                 w[i] = np.nan
@@ -1106,10 +1143,7 @@ def _cyclic(law: _Law, r: NDArray, scale: NDArray, method: str, n: int, tol: flo
             bad = max(m["error_estimate"].max(), m["residual_stick"].max())
             if not bad <= tol:
                 raise ConvergenceError(
-                    f"the incremental solver missed tol={tol:g} at the amplitude "
-                    f"{float(ri)!r} of the full-slip load (estimate {bad:.2e}, "
-                    f"n={int(m['n_collocation'].max())}): an amplitude this small needs more "
-                    f"than {N_MAX_INCREMENTAL} nodes; use method='closed-form'"
+                    _too_small(tol, float(ri), bad, int(m["n_collocation"].max()))
                 )
             w[i] = m["loss"][1] + m["loss"][2]
     W = np.where(sliding, np.nan, scale * scale * w)

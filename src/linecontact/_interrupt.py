@@ -1,0 +1,55 @@
+"""Ctrl-C while the command line starts: one line and exit status 130, no traceback.
+
+The console script (``linecontact = "linecontact.cli:main"``) and ``python -m linecontact``
+import the package, NumPy and SciPy before :func:`linecontact.cli.main` runs: about a
+second in which a ``KeyboardInterrupt`` would end in a traceback. The package's and the
+CLI's imports run inside :func:`imports_interruptible`, which turns it into
+``SystemExit(130)`` after one line on stderr, when (and only when) the process is the
+command line; a library user's ``import linecontact`` keeps the plain ``KeyboardInterrupt``.
+Standard library only: it runs before anything heavy is imported.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import sys
+from collections.abc import Iterator
+
+#: The exit status of a run interrupted by Ctrl-C (128 + SIGINT), as shells report it.
+EXIT_INTERRUPTED = 130
+
+
+def launched_as_cli() -> bool:
+    """True when this process is the ``linecontact`` command line.
+
+    The console script runs as ``.../linecontact`` (``sys.argv[0]``); ``python -m
+    linecontact`` has ``-m linecontact`` in its original arguments (``sys.orig_argv``).
+    """
+    argv0 = os.path.basename(sys.argv[0]) if sys.argv else ""
+    if os.path.splitext(argv0)[0] in ("linecontact", "linecontact-script"):
+        return True
+    args = list(getattr(sys, "orig_argv", ()))[1:]  # after the interpreter
+    i = 0
+    while i < len(args):
+        arg = args[i]
+        if arg.startswith("-m"):
+            module = arg[2:] or (args[i + 1] if i + 1 < len(args) else "")
+            return module in ("linecontact", "linecontact.cli")
+        if arg == "-c" or arg == "-" or not arg.startswith("-"):  # a command or a script
+            return False
+        i += 2 if arg in ("-X", "-W", "--check-hash-based-pycs") else 1
+    return False
+
+
+@contextlib.contextmanager
+def imports_interruptible() -> Iterator[None]:
+    """Turn a ``KeyboardInterrupt`` in the block into exit status 130 on the command line."""
+    try:
+        yield
+    except KeyboardInterrupt:
+        if not launched_as_cli():
+            raise
+        with contextlib.suppress(OSError, ValueError):
+            print("linecontact: interrupted", file=sys.stderr)
+        raise SystemExit(EXIT_INTERRUPTED) from None
