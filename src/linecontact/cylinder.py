@@ -10,6 +10,8 @@ adhesion conventions: :mod:`linecontact.materials`.
 
 from __future__ import annotations
 
+import contextvars
+import math
 import warnings
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Literal, overload
@@ -68,14 +70,218 @@ PLAUSIBLE = {
 }
 
 
-def _plausible(name: str, value: float, stacklevel: int = 3) -> None:
-    lo, hi, unit, what = PLAUSIBLE[name]
-    if not lo <= value <= hi:
-        side = "above" if value > hi else "below"
-        bound = hi if value > hi else lo
+#: A likely slip of units per input: (factor, unit) of the value as it was probably meant,
+#: on the side of :data:`PLAUSIBLE` where that slip lands (nm given as m, GPa as Pa, ...).
+_UNIT_SLIP = {
+    "radius": ("above", 1e-9, "nm"),
+    "modulus": ("below", 1e9, "GPa"),
+    "work_of_adhesion": ("above", 1e-3, "mJ/m^2"),
+    "adhesion_range": ("above", 1e-9, "nm"),
+}
+
+#: The narrowest contact half-width [m] that is a width at all (a femtometre, the size of a
+#: nucleus): a result below it is round-off of zero width, or of inputs in the wrong units.
+WIDTH_MIN = 1e-15
+
+#: sigma0 = S w / z0 and h = z0 / S (the Maugis convention of :mod:`linecontact.materials`)
+_S_LJ = 16.0 / (9.0 * math.sqrt(3.0))
+
+#: Set while a factory of :class:`Cylinder` builds one: the factory has checked the SI
+#: inputs under the names its caller used (``work_of_adhesion``, ``equilibrium_spacing``).
+_CHECKED: contextvars.ContextVar[bool] = contextvars.ContextVar("_CHECKED", default=False)
+
+
+def _implausible(name: str, value: ArrayLike, key: str | None = None) -> str | None:
+    """The warning for the first value of ``name`` outside :data:`PLAUSIBLE` (None: none)."""
+    key = key or name
+    lo, hi, unit, what = PLAUSIBLE[key]
+    if name != key and not name.startswith("-"):  # as the caller named it (equilibrium_spacing)
+        what = name.replace("_", " ")
+    v = np.asarray(value, float).reshape(-1)
+    with np.errstate(invalid="ignore"):
+        out = np.isfinite(v) & ~((v >= lo) & (v <= hi))
+    if not np.any(out):
+        return None
+    x = float(v[np.flatnonzero(out)[0]])
+    side = "above" if x > hi else "below"
+    bound = hi if x > hi else lo
+    hint = ""
+    slip = _UNIT_SLIP.get(key)
+    if slip is not None and slip[0] == side and lo <= x * slip[1] <= hi:
+        hint = f"; {x:g} {slip[2]} is {x * slip[1]:g} {unit}"
+    return (
+        f"{name} = {x:g} {unit} is {side} {bound:g} {unit}: is the {what} in {unit}? "
+        f"(linecontact takes SI units{hint})"
+    )
+
+
+def _plausible(name: str, value: ArrayLike, stacklevel: int = 3, key: str | None = None) -> None:
+    """Warn (:class:`ModelValidityWarning`) for a value of ``name`` outside :data:`PLAUSIBLE`."""
+    message = _implausible(name, value, key)
+    if message is not None:
+        warnings.warn(message, ModelValidityWarning, stacklevel=stacklevel)
+
+
+def _first(bad: NDArray, *values: ArrayLike) -> list[float]:
+    """The values at the first point where ``bad`` (broadcast together), as floats."""
+    i = int(np.flatnonzero(np.reshape(bad, -1))[0])
+    return [float(np.reshape(np.broadcast_to(v, np.shape(bad)), -1)[i]) for v in values]
+
+
+def _which(default: str, *candidates: tuple[str, ArrayLike, str | None]) -> str:
+    """The input that most likely has the wrong units: the first one outside PLAUSIBLE."""
+    for name, value, key in candidates:
+        if key is not None and _implausible(name, value, key) is not None:
+            return name
+    return default
+
+
+def _check_cylinder_si(
+    radius: ArrayLike,
+    modulus: ArrayLike | None,
+    adhesion: dict[str, ArrayLike | None],
+    *,
+    modulus_name: str = "modulus",
+    stacklevel: int = 4,
+) -> None:
+    """Warn for implausible SI inputs, refuse those whose groups leave the solvers' domain.
+
+    ``adhesion`` is ``{"work_of_adhesion": w, "equilibrium_spacing": z0}`` (``w`` may be
+    None where it is unknown, as in an inversion), or ``{"cohesive_stress": sigma0,
+    "adhesion_range": h}``, as the caller gave them: the messages name these, the radius
+    and the modulus, and the ranges in SI units, never the nondimensional groups. Without
+    the modulus (None) only the radius and the range are checked.
+    """
+    R = np.asarray(radius, float)
+    E = np.asarray(np.nan if modulus is None else modulus, float)
+    by_work = "equilibrium_spacing" in adhesion
+    a_name, l_name = (
+        ("work_of_adhesion", "equilibrium_spacing")
+        if by_work
+        else ("cohesive_stress", "adhesion_range")
+    )
+    a_val, l_val = adhesion[a_name], adhesion[l_name]
+    length = np.asarray(l_val, float)
+    conv = _S_LJ if by_work else 1.0  # R/h = conv R / length
+    if a_val is None:
+        stress = None
+    elif by_work:
+        stress = _S_LJ * np.asarray(a_val, float) / length  # sigma0 of (w, z0)
+    else:
+        stress = np.asarray(a_val, float)
+    adhesive = stress is None or bool(np.any(stress > 0))
+    # the warnings first: a value in the wrong units is said before what it breaks
+    _plausible("radius", R, stacklevel)
+    if modulus_name == "modulus":
+        _plausible("modulus", E, stacklevel)
+    if adhesive:  # without adhesion the range only sets a length scale
+        _plausible(l_name, length, stacklevel, key="adhesion_range")
+        if by_work and a_val is not None:
+            _plausible("work_of_adhesion", a_val, stacklevel)
+        elif stress is not None and _implausible(l_name, length, "adhesion_range") is None:
+            # sigma0 h: said where the range is not already the suspect
+            _plausible("work_of_adhesion", stress * length, stacklevel)
+    unit = {"work_of_adhesion": "J/m^2", "cohesive_stress": "Pa"}[a_name]
+    cands_l = ((l_name, length, "adhesion_range"), ("radius", R, "radius"))
+    # the ratio of the radius to the range
+    lo, _, hi, _ = _domain.DOMAIN["R_over_h"]
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        ratio = conv * R / length
+    bad = ~((ratio >= lo) & (ratio <= hi))
+    if np.any(bad):
+        r, z = _first(bad, R, length)
+        guess = _which(l_name, *cands_l)
+        raise ValueError(
+            f"radius / {l_name} must be in [{lo / conv:.3g}, {hi / conv:.3g}] (the domain of "
+            f"the solvers), got radius={r!r} m, {l_name}={z!r} m; "
+            f"{_units_question(guess, modulus_name, 'm')}"
+        )
+    if stress is None or modulus is None or a_val is None:
+        return
+    a_val = np.asarray(a_val, float)
+    # the adhesive stress over the modulus
+    s_hi = _domain.DOMAIN["sigma0_over_E"][2]
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        s = stress / E
+    bad = ~(s <= s_hi)
+    m_key = "modulus" if modulus_name == "modulus" else None
+    cands_s = (
+        (modulus_name, E, m_key),
+        (a_name, a_val if by_work else stress, "work_of_adhesion" if by_work else None),
+        (l_name, length, "adhesion_range"),
+    )
+    if np.any(bad):
+        sv, ev, av, zv = _first(bad, stress, E, a_val, length)
+        guess = _which(modulus_name, *cands_s)
+        what = (
+            f"the adhesive stress 16 w/(9 sqrt(3) z0) = {sv:.3g} Pa of {a_name}={av!r} "
+            f"J/m^2 and {l_name}={zv!r} m"
+            if by_work
+            else f"{a_name}={av!r} Pa"
+        )
+        raise ValueError(
+            f"{what} must be at most {s_hi:g} times the {modulus_name.replace('_', ' ')}, "
+            f"{s_hi * ev:.3g} Pa here, got {modulus_name}={ev!r} Pa (the domain of the "
+            f"solvers); {_units_question(guess, modulus_name, unit)}"
+        )
+    # kappa = (4/pi) (sigma0/E) sqrt(2 R/h), the single group of the Maugis-Dugdale contact
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        kap = (4 / np.pi) * s * np.sqrt(2 * ratio)
+    bad = ~(kap <= _ref.KAPPA_MAX)
+    if np.any(bad):
+        k, r, ev, av, zv = _first(bad, kap, R, E, a_val, length)
+        guess = _which(modulus_name, *cands_s, ("radius", R, "radius"))
+        raise ValueError(
+            f"the adhesion of this cylinder is beyond the range of the solvers: kappa = "
+            f"(4/pi) sigma0 sqrt(2 R) / (E sqrt(h)) = {k:.3g} must be at most "
+            f"{_ref.KAPPA_MAX:g}, got radius={r!r} m, {modulus_name}={ev!r} Pa, {a_name}="
+            f"{av!r} {unit}, {l_name}={zv!r} m; {_units_question(guess, modulus_name, unit)}"
+        )
+
+
+def _units_question(guess: str, modulus_name: str, unit: str) -> str:
+    """``is <input> in <unit>?`` for the input that most likely has the wrong units."""
+    if guess == "composite modulus":
+        return "are E1 and E2 in Pa?"
+    the = "the " if "_" not in guess else ""  # a word (radius), or a parameter's name
+    if guess == "radius" or guess.endswith(("range", "spacing")):
+        return f"is {the}{guess} in metres?"
+    return f"is {the}{guess} in {'Pa' if guess == modulus_name else unit}?"
+
+
+#: Why a zero-width pull-off reports a width below :data:`WIDTH_MIN`.
+_ZERO_WIDTH = (
+    "the contact peels to zero width before it pulls off (mechanism 'zero-width'): read it as 0"
+)
+
+
+def _warn_widths(
+    a: ArrayLike,
+    radius: ArrayLike,
+    what: str = "the contact half-width",
+    why: str = "",
+    stacklevel=3,
+) -> None:
+    """Warn for contact half-widths [m] that are no physical width: below WIDTH_MIN or above R."""
+    v, Rv = (np.reshape(x, -1) for x in np.broadcast_arrays(np.asarray(a, float), radius))
+    with np.errstate(invalid="ignore"):
+        tiny = (v > 0) & (v < WIDTH_MIN)
+        wide = v > Rv
+    if np.any(tiny):
+        x = float(v[np.flatnonzero(tiny)[0]])
         warnings.warn(
-            f"{name} = {value:g} {unit} is {side} {bound:g} {unit}: is the {what} in {unit}? "
-            "(linecontact takes SI units)",
+            f"{what} {x:.3g} m is below {WIDTH_MIN:g} m, the size of a nucleus: it is no "
+            f"physical width ({why or 'round-off of a zero width'}, or an input in the wrong "
+            "units: linecontact takes SI units)",
+            ModelValidityWarning,
+            stacklevel=stacklevel,
+        )
+    if np.any(wide):
+        i = np.flatnonzero(wide)[0]
+        x = float(v[i])
+        warnings.warn(
+            f"{what} {x:.3g} m is above the radius {float(Rv[i]):g} m: the contact is wider than "
+            "the cylinder (an input in the wrong units? linecontact takes SI units)",
             ModelValidityWarning,
             stacklevel=stacklevel,
         )
@@ -251,23 +457,40 @@ class Cylinder:
                     f"{self.cohesive_stress!r}, adhesion_range="
                     f"{self.adhesion_range!r} are too far apart in scale"
                 )
-        for key, v, what in (
-            ("R_over_h", self.R_over_h, "radius over adhesion_range"),
-            ("sigma0_over_E", self.sigma0_over_E, "cohesive_stress over modulus"),
-        ):
-            low, _, high, _ = _domain.DOMAIN[key]
-            if not low <= v <= high:
-                raise ValueError(
-                    f"{key} = {v:.6g} ({what}) is outside the validated domain [{low:g}, "
-                    f"{high:g}]: radius={self.radius!r}, modulus={self.modulus!r}, "
-                    f"cohesive_stress={self.cohesive_stress!r}, adhesion_range="
-                    f"{self.adhesion_range!r}"
-                )
-        _plausible("radius", self.radius, 4)
-        _plausible("modulus", self.modulus, 4)
-        if self.cohesive_stress > 0:  # without adhesion the range only sets a length scale
-            _plausible("work_of_adhesion", self.work_of_adhesion, 4)
-            _plausible("adhesion_range", self.adhesion_range, 4)
+        if not _CHECKED.get():  # a factory checked them under its caller's names
+            _check_cylinder_si(
+                self.radius,
+                self.modulus,
+                {"cohesive_stress": self.cohesive_stress, "adhesion_range": self.adhesion_range},
+                stacklevel=5,
+            )
+
+    @classmethod
+    def _build(
+        cls,
+        R: float,
+        E: float,
+        beta: float,
+        adhesion: tuple[float | None, float | None, float | None, float | None],
+        modulus_name: str = "modulus",
+    ) -> Cylinder:
+        """The cylinder of a factory, its SI inputs checked under the names the caller gave."""
+        cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing = adhesion
+        s0, h = _adhesion(cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
+        given: dict[str, ArrayLike | None] = {"cohesive_stress": s0, "adhesion_range": h}
+        if work_of_adhesion is not None and equilibrium_spacing is not None:
+            given = {
+                "work_of_adhesion": float(work_of_adhesion),
+                "equilibrium_spacing": float(equilibrium_spacing),
+            }
+        _check_cylinder_si(R, E, given, modulus_name=modulus_name, stacklevel=5)
+        token = _CHECKED.set(True)
+        try:
+            cyl = cls(R, E, s0, h, beta)
+        finally:
+            _CHECKED.reset(token)
+        object.__setattr__(cyl, "_given", given)  # for the messages of the Lennard-Jones law
+        return cyl
 
     @classmethod
     def from_modulus(
@@ -283,8 +506,8 @@ class Cylinder:
         """From the composite modulus ``E`` [Pa]; adhesion as ``(sigma0, h)`` or ``(w, z0)``."""
         R = scalar("radius", radius)
         E = scalar("modulus", modulus)
-        s0, h = _adhesion(cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
-        return cls(R, E, s0, h, 0.0)
+        adhesion = (cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
+        return cls._build(R, E, 0.0, adhesion)
 
     @classmethod
     def from_materials(
@@ -324,8 +547,8 @@ class Cylinder:
                 CouplingWarning,
                 stacklevel=2,
             )
-        s0, h = _adhesion(cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
-        return cls(R, E, s0, h, beta)
+        adhesion = (cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
+        return cls._build(R, E, beta, adhesion, "composite modulus")
 
     @classmethod
     def from_presets(
@@ -419,6 +642,49 @@ class Cylinder:
         """The single group of the Maugis--Dugdale line contact."""
         return float(_ref.kappa(self.R_over_h, self.sigma0_over_E))
 
+    def _check_lennard_jones(self) -> None:
+        """Refuse, in SI terms, a cylinder outside the domain of the Lennard-Jones solver.
+
+        The solver's group is the Maugis (Tabor) parameter ``mu = w R^(1/2) / (E z0^(3/2))``
+        with ``w = sigma0 h`` and ``z0 = 16 h/(9 sqrt 3)``; the message gives its value for
+        this cylinder, the inputs as they were given, and what would bring it in.
+        """
+        hi = _domain.DOMAIN["lj_mu"][2]
+        R, E = self.radius, self.modulus
+        w, z0 = self.work_of_adhesion, _S_LJ * self.adhesion_range
+        given = getattr(self, "_given", {})
+        if self.cohesive_stress <= 0:
+            raise ValueError(
+                "the Lennard-Jones law needs adhesion: give the cylinder a work of adhesion "
+                "(work_of_adhesion and equilibrium_spacing, or cohesive_stress > 0)"
+            )
+        mu = w * math.sqrt(R / z0) / (E * z0)
+        if mu <= hi:
+            return
+        from .lennard_jones import maugis_parameter_of_mu
+
+        lam = float(maugis_parameter_of_mu(hi))
+        if "work_of_adhesion" in given:
+            w, z0 = float(given["work_of_adhesion"]), float(given["equilibrium_spacing"])
+            inputs = f"work_of_adhesion={w!r} J/m^2, equilibrium_spacing={z0!r} m"
+            more = (
+                f", a work of adhesion below {w * hi / mu:.3g} J/m^2 or an equilibrium spacing "
+                f"z0 above {z0 * (mu / hi) ** (2 / 3):.3g} m"
+            )
+        else:
+            inputs = (
+                f"cohesive_stress={self.cohesive_stress!r} Pa, adhesion_range="
+                f"{self.adhesion_range!r} m (w = {w:.3g} J/m^2, z0 = {z0:.3g} m)"
+            )
+            more = f" or a cohesive stress below {self.cohesive_stress * hi / mu:.3g} Pa"
+        raise ValueError(
+            f"under the Lennard-Jones law the Maugis parameter mu = w R^(1/2) / (E z0^(3/2)) "
+            f"of this cylinder is {mu:.4g} (radius={R!r} m, modulus={E!r} Pa, {inputs}): the "
+            f"Lennard-Jones solver takes mu in [0, {hi:g}] (Tabor-Maugis parameter up to "
+            f"{lam:.3g}). Use the Dugdale law (law='dugdale', any mu), or a radius below "
+            f"{R * (hi / mu) ** 2:.3g} m, a modulus above {E * mu / hi:.3g} Pa{more}"
+        )
+
     # problems ----------------------------------------------------------------------------
     def _wrap(self, r: _normal.NormalContact) -> CylinderContact:
         R, Eh = self.radius, self.modulus * self.adhesion_range
@@ -427,9 +693,9 @@ class Cylinder:
             v = np.multiply(v, unit)
             return v.item() if np.ndim(v) == 0 else v
 
-        return CylinderContact(
-            si(r.a_over_R, R), si(r.c_over_R, R), si(r.F_over_Eh, Eh), r.stable, r.state, r
-        )
+        a = si(r.a_over_R, R)
+        _warn_widths(a, R, stacklevel=4)
+        return CylinderContact(a, si(r.c_over_R, R), si(r.F_over_Eh, Eh), r.stable, r.state, r)
 
     @overload
     def contact(
@@ -498,6 +764,7 @@ class Cylinder:
                 raise ValueError(
                     f"on_no_equilibrium must be 'raise' or 'report', got {on_no_equilibrium!r}"
                 )
+            self._check_lennard_jones()
             return self._for_load_lj("load", load, on_no_equilibrium)
         if method not in ("closed-form", "collocation"):
             raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
@@ -608,6 +875,7 @@ class Cylinder:
         load_given = (
             F.item() if np.ndim(r.F_over_Eh) == 0 else np.broadcast_to(F, np.shape(r.F_over_Eh))
         )
+        _warn_widths(si(r.a_over_R, self.radius), self.radius, stacklevel=4)
         return CylinderLennardJonesContact(
             si(r.a_over_R, self.radius),
             si(r.central_gap_over_h, self.adhesion_range),
@@ -631,8 +899,16 @@ class Cylinder:
         ``w`` and ``z0`` (as in :meth:`contact`), a :class:`CylinderLennardJonesPullOff`.
         """
         if law == "lennard-jones":
+            self._check_lennard_jones()
             q = _normal.pull_off(self.R_over_h, self.sigma0_over_E, law=law)
             Eh = self.modulus * self.adhesion_range
+            _warn_widths(
+                q.a_over_R_at_pulloff * self.radius,
+                self.radius,
+                "the contact half-width at pull-off",
+                "the repulsive region vanishes before the pull-off",
+                stacklevel=3,
+            )
             return CylinderLennardJonesPullOff(
                 q.F_pulloff_over_Eh * Eh,
                 q.error_estimate_over_Eh * Eh,
@@ -643,6 +919,13 @@ class Cylinder:
             )
         p = _normal.pull_off(self.R_over_h, self.sigma0_over_E, law=law)
         Eh = self.modulus * self.adhesion_range
+        _warn_widths(
+            p.a_over_R_at_pulloff * self.radius,
+            self.radius,
+            "the contact half-width at pull-off",
+            _ZERO_WIDTH if p.mechanism == "zero-width" else "",
+            stacklevel=3,
+        )
         return CylinderPullOff(
             p.F_pulloff_over_Eh * Eh,
             p.a_over_R_at_pulloff * self.radius,
@@ -765,8 +1048,11 @@ def _cylinder_tangential(
             _domain.check_si("tangential_load", st, mu * F, "T_over_muF", "N/m")
         T = None if d is not None else st / (mu * F)
         coulomb_fn = steady_rolling_coulomb if rolling else sliding_initiation_coulomb
-        r: Any = coulomb_fn(mu, A, d, T_over_muF=T, method=method, on_sliding=on_sliding)
         full = mu * F
+        try:
+            r: Any = coulomb_fn(mu, A, d, T_over_muF=T, method=method, on_sliding=on_sliding)
+        except NoEquilibriumError:
+            raise _full_slip(st, full, "mu F") from None
         friction = "coulomb"
     else:
         contact = cylinder._for_load("normal_load", F)
@@ -777,8 +1063,11 @@ def _cylinder_tangential(
         T = None if d is not None else st / (E * a)
         fn = steady_rolling if rolling else sliding_initiation
         # broadcast with a so that every field has the shape of the points
-        r = fn(t0 / E + 0 * a, d, T_over_Ea=T, method=method, on_sliding=on_sliding)
         full = 2 * a * t0
+        try:
+            r = fn(t0 / E + 0 * a, d, T_over_Ea=T, method=method, on_sliding=on_sliding)
+        except NoEquilibriumError:
+            raise _full_slip(st, full, "2 a tau0") from None
         friction = "constant"
     a = np.asarray(contact.contact_half_width)
     Tn = np.multiply(r.T_over_Ea, E * a)
@@ -795,6 +1084,18 @@ def _cylinder_tangential(
         r.state,
         r,
         contact,
+    )
+
+
+def _full_slip(T: NDArray, full: ArrayLike, what: str) -> NoEquilibriumError:
+    """The error for a tangential load [N/m] at or above full slip, said in N/m."""
+    T, full = np.broadcast_arrays(np.asarray(T, float), np.asarray(full, float))
+    Ti, fi = (
+        _first(T >= full, T, full) if np.any(T >= full) else (float(T.flat[0]), float(full.flat[0]))
+    )
+    return NoEquilibriumError(
+        f"tangential_load={Ti!r} N/m is at or above the full-slip load {fi:.6g} N/m ({what}): "
+        "the whole contact slips (sliding), there is no stick zone"
     )
 
 
@@ -1048,6 +1349,9 @@ def cylinder_push(
             high_inclusive=True,
         )
         h1 = w1 / s0
+        _plausible("receding_work_of_adhesion", w1, key="work_of_adhesion")
+    if receding_range is not None:
+        _plausible("receding_range", h1, key="adhesion_range")
     tau = scalar("friction_stress", friction_stress)
     _domain.check_si("friction_stress", tau, E, "tau0_over_E", "Pa")
     H = check_array("height", height, low=0.0, low_inclusive=True, high=2 * R, high_inclusive=True)
@@ -1072,6 +1376,18 @@ def cylinder_push(
             Q,
             tip_friction=tip_friction,
         )
+    except NoEquilibriumError:
+        # below the pull-off force of steady sliding: said in N/m, for this cylinder
+        from .sliding import sliding_pull_off
+
+        F_po = float(sliding_pull_off(R / h2, h1 / h2, cylinder.sigma0_over_E).F_pulloff_over_Eh2)
+        F_po *= Eh
+        below = np.asarray(load < F_po)
+        Fi = float(load[below].flat[0]) if np.any(below) else float(np.min(load))
+        raise NoEquilibriumError(
+            f"normal_load={Fi!r} N/m is below the sliding pull-off force {F_po:.6g} N/m of "
+            f"this cylinder (receding range {h1:.6g} m): it has pulled off"
+        ) from None
     except _domain.TooWideError as e:
         raise ValueError(
             f"normal_load={float(np.reshape(np.broadcast_to(load, np.shape(F)), -1)[e.index])!r}"
@@ -1083,6 +1399,8 @@ def cylinder_push(
         out = np.multiply(v, unit)
         return out.item() if np.ndim(out) == 0 else out
 
+    _warn_widths(si(p.a_rest_over_R, R), R, "the contact half-width at rest")
+    _warn_widths(si(p.a_slide_over_R, R), R, "the contact half-width while sliding")
     return CylinderPush(
         height=si(p.H_over_R, R),
         moment_arm=si(p.H_arm_over_R, R),

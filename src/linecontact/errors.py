@@ -23,6 +23,8 @@ class ModelValidityWarning(UserWarning):
 
     Issued for a contact half-width beyond the small-strain (half-plane) range of the
     solvers (``a/R`` above :data:`linecontact.normal.A_OVER_R_SMALL_STRAIN`), and by the SI
-    layer for a radius, modulus, work of adhesion or adhesion range outside the ranges of
-    :data:`linecontact.cylinder.PLAUSIBLE`. The numbers are still computed.
+    layer for a radius, modulus, work of adhesion or adhesion range (``z0``) outside the
+    ranges of :data:`linecontact.cylinder.PLAUSIBLE`, and for an SI contact half-width that is
+    no physical width (below :data:`linecontact.cylinder.WIDTH_MIN`, 1e-15 m, or above the
+    radius). The numbers are still computed.
     """

@@ -35,6 +35,7 @@ from numpy.typing import ArrayLike, NDArray
 from . import normal as _normal
 from . import reference as _ref
 from ._validation import broadcast, check_array
+from .cylinder import _check_cylinder_si, _plausible, _warn_widths
 from .errors import ModelValidityWarning
 
 __all__ = [
@@ -86,6 +87,7 @@ def pull_off_force(
         work_of_adhesion=check_array("work_of_adhesion", work_of_adhesion),
         equilibrium_spacing=check_array("equilibrium_spacing", equilibrium_spacing),
     )
+    _check_cylinder_si(R, E, {"work_of_adhesion": w, "equilibrium_spacing": z0}, stacklevel=4)
     rho, s, h = _groups(R, E, w, z0)
     return np.asarray(_normal.pull_off(rho, s).F_pulloff_over_Eh) * E * h
 
@@ -95,6 +97,8 @@ def jkr_pull_off_force(radius: ArrayLike, modulus: ArrayLike, work_of_adhesion: 
     R = check_array("radius", radius)
     E = check_array("modulus", modulus)
     w = check_array("work_of_adhesion", work_of_adhesion)
+    for name, v in (("radius", R), ("modulus", E), ("work_of_adhesion", w)):
+        _plausible(name, v)
     return -0.75 * np.cbrt(4 * np.pi * w * w * E * R)
 
 
@@ -109,6 +113,9 @@ def dmt_pull_off_force(
     R = check_array("radius", radius)
     w = check_array("work_of_adhesion", work_of_adhesion)
     z0 = check_array("equilibrium_spacing", equilibrium_spacing)
+    for name, v in (("radius", R), ("work_of_adhesion", w)):
+        _plausible(name, v)
+    _plausible("equilibrium_spacing", z0, key="adhesion_range")
     return -2 * math.sqrt(2) * w * np.sqrt(R * S_LJ / z0)
 
 
@@ -138,6 +145,7 @@ def simple_model_work_of_adhesion(
     E = float(check_array("modulus", modulus))
     z0 = float(check_array("equilibrium_spacing", equilibrium_spacing))
     wt = np.ones_like(F) if sd is None else 1.0 / check_array("sd", sd).reshape(-1) ** 2
+    _check_cylinder_si(R, E, {"work_of_adhesion": None, "equilibrium_spacing": z0}, stacklevel=4)
     c = 0.75 * np.cbrt(4 * np.pi * E * R)
     u = float(np.sum(wt * c * -F) / np.sum(wt * c * c))
     d = 2 * math.sqrt(2) * np.sqrt(R * S_LJ / z0)
@@ -202,6 +210,7 @@ def work_of_adhesion_from_pull_off(
     E = check_array("modulus", modulus)
     z0 = check_array("equilibrium_spacing", equilibrium_spacing)
     F, R, E, z0 = broadcast(pull_off_force=F, radius=R, modulus=E, equilibrium_spacing=z0)
+    _check_cylinder_si(R, E, {"work_of_adhesion": None, "equilibrium_spacing": z0}, stacklevel=4)
     w_lo = _S_MIN * E * z0 / S_LJ
     w_hi = _S_MAX * E * z0 / S_LJ
     F_lo = pull_off_force_at(R, E, w_hi, z0)  # the strongest adhesion searched
@@ -262,6 +271,8 @@ def work_of_adhesion_from_width(
     a, F, R, E, z0 = broadcast(
         half_width=a, normal_load=F, radius=R, modulus=E, equilibrium_spacing=z0
     )
+    _check_cylinder_si(R, E, {"work_of_adhesion": None, "equilibrium_spacing": z0}, stacklevel=4)
+    _warn_widths(a, R, "the half_width measured")
 
     def width(w):
         # pulled off: 0 (more adhesion is needed); wider than the solvers' domain: inf
@@ -391,6 +402,7 @@ def shear_strength_from_friction(
         work_of_adhesion=w,
         equilibrium_spacing=z0,
     )
+    _check_cylinder_si(R, E, {"work_of_adhesion": w, "equilibrium_spacing": z0}, stacklevel=4)
     rho, s, h = _groups(R, E, w, z0)
     dw = np.zeros_like(f)
     if receding_work_of_adhesion is not None:
@@ -399,6 +411,7 @@ def shear_strength_from_friction(
         w1 = np.broadcast_to(
             check_array("receding_work_of_adhesion", receding_work_of_adhesion), f.shape
         )
+        _plausible("receding_work_of_adhesion", w1, key="work_of_adhesion")
         if np.any(w1 < w) or np.any(w1 > 1e3 * w):
             raise ValueError(
                 "receding_work_of_adhesion must be from work_of_adhesion (the advancing one: "
@@ -729,6 +742,8 @@ def fit_pull_off(
             f"modulus must be a single number [Pa], got an array of shape {E_arr.shape}"
         )
     E = float(E_arr)
+    _plausible("radius", R)
+    _plausible("modulus", E)
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
         raise ValueError(f"seed must be an integer >= 0, got {seed!r}")
     fixed = equilibrium_spacing is not None
@@ -772,6 +787,7 @@ def fit_pull_off(
         if z_arr.ndim != 0:
             raise ValueError("equilibrium_spacing must be a single number [m] (or None to fit it)")
         z_fixed = float(z_arr)
+        _check_cylinder_si(R, E, {"work_of_adhesion": None, "equilibrium_spacing": z_fixed})
 
     def model(p, R=R):
         w = math.exp(p[0])

@@ -18,7 +18,7 @@ from typing import Any
 
 import numpy as np
 
-from ..cylinder import Cylinder
+from ..cylinder import _ZERO_WIDTH, Cylinder, _warn_widths
 from ..domain import TooWideError, check_si
 from ..output import FORMATS, Table, write
 from ..presets import Material, material_names
@@ -133,6 +133,7 @@ def emit(args: argparse.Namespace, table: Table) -> None:
     """Write ``table`` as the arguments ask (stdout, or ``-o FILE``)."""
     if args.indent is not None and not 0 <= args.indent <= 16:
         raise ValueError(f"--indent must be an integer in [0, 16], got {args.indent}")
+    _check_widths(table)
     fmt = args.format
     if fmt is None:
         ext = "" if args.output is None else args.output.rsplit(".", 1)[-1].lower()
@@ -148,6 +149,30 @@ def emit(args: argparse.Namespace, table: Table) -> None:
         ) from None
     if not args.quiet:
         print(f"wrote {args.output}", file=sys.stderr)
+
+
+#: The SI contact half-width columns [m] whose values are checked by :func:`_check_widths`.
+_WIDTHS = {
+    "a_m": "the contact half-width",
+    "a_at_pulloff_m": "the contact half-width at pull-off",
+    "a_rest_m": "the contact half-width at rest",
+    "a_slide_m": "the contact half-width while sliding",
+}
+
+
+def _check_widths(table: Table) -> None:
+    """Warn for SI contact half-widths that are no physical width (below 1 fm, above R).
+
+    A load curve starts from zero width on purpose: its widths are not checked.
+    """
+    R = table.parameters.get("radius_m")
+    if R is None or "branch" in table.columns:
+        return
+    zero = "mechanism" in table.columns and np.any(table.columns["mechanism"] == "zero-width")
+    for name, what in _WIDTHS.items():
+        if name in table.columns:
+            why = _ZERO_WIDTH if zero and name == "a_at_pulloff_m" else ""
+            _warn_widths(table.columns[name], R, what, why)
 
 
 class NoPointError(Exception):
@@ -211,13 +236,14 @@ def flag_message(message: str, args: argparse.Namespace) -> str:
             continue
         # a name with an underscore is a parameter wherever it stands; a plain word (radius,
         # load) only where it is the subject of a check ("load must ...", "load=...") or the
-        # second term of a ratio ("cohesive_stress/modulus")
+        # a term of a ratio ("cohesive_stress/modulus", "radius / equilibrium_spacing")
         n = re.escape(name)
         if "_" in name:
             message = re.sub(rf"(?<![\w-]){n}(?![\w])", flag, message)
         else:
-            message = re.sub(rf"(?<![\w-]){n}(?= must| =|=)|(?<=/){n}(?![\w])", flag, message)
-    return message
+            message = re.sub(rf"(?<![\w-]){n}(?= must| =|=| ?/)|(?<=/){n}(?![\w])", flag, message)
+    # a choice as the API writes it (law='dugdale') as it is typed (--law dugdale)
+    return re.sub(r"(--[\w-]+)='([\w-]+)'", r"\1 \2", message)
 
 
 # --------------------------------------------------------------------------------------------
@@ -422,6 +448,8 @@ def groups(args: argparse.Namespace) -> tuple[float, float, Cylinder | None]:
             raise ValueError("give --R-over-h and --sigma0-over-E (or SI inputs with --radius)")
         return args.R_over_h, args.sigma0_over_E, None
     cyl = cylinder(args)
+    if getattr(args, "law", None) == "lennard-jones":
+        cyl._check_lennard_jones()  # its domain said for this cylinder, in SI units
     return cyl.R_over_h, cyl.sigma0_over_E, cyl
 
 

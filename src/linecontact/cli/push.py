@@ -8,11 +8,14 @@ A thin shell over :func:`linecontact.push.push`. The records carry at least ``H_
 from __future__ import annotations
 
 import argparse
+import warnings
 from typing import Any
 
 import numpy as np
 
+from ..cylinder import _check_cylinder_si, _plausible
 from ..domain import check_si
+from ..errors import ModelValidityWarning
 from ..materials import adhesion_from_work
 from ..output import table_from_result
 from ..push import push
@@ -171,7 +174,12 @@ def _cmd_push(args: argparse.Namespace) -> int:
             args.tip_friction = 0.0
         if args.tip_height is None and args.tip_friction is not None:
             raise ValueError("--tip-friction goes with --tip-height (a tip), not --height")
-        cyl = cylinder(args, range_flag="--h2")
+        with warnings.catch_warnings():
+            if any(w is not None for w in works):  # said for --z0 and the works already
+                warnings.filterwarnings(
+                    "ignore", "(adhesion_range|work_of_adhesion) = ", ModelValidityWarning
+                )
+            cyl = cylinder(args, range_flag="--h2")
         Eh = cyl.modulus * cyl.adhesion_range
         if args.h1 is not None:
             check_si("--h1", args.h1, cyl.adhesion_range, "h1_over_h2", "m")
@@ -280,6 +288,14 @@ def _works_to_ranges(args: argparse.Namespace) -> None:
         raise ValueError(
             f"--work-of-adhesion-advancing must be <= --work-of-adhesion-receding (the "
             f"hysteresis is not negative), got {w2!r} > {w1!r}"
+        )
+    # said for the flags typed (the cylinder is built from sigma0, h2 and h1)
+    _plausible("--work-of-adhesion-receding", w1, key="work_of_adhesion")
+    _plausible("--work-of-adhesion-advancing", w2, key="work_of_adhesion")
+    if args.radius is not None:  # sigma0 is that of the receding work of adhesion
+        args._api_flags = {**args._api_flags, "work_of_adhesion": "--work-of-adhesion-receding"}
+        _check_cylinder_si(
+            args.radius, args.modulus, {"work_of_adhesion": w1, "equilibrium_spacing": args.z0}
         )
     s0, h1 = adhesion_from_work(w1, args.z0)
     args.sigma0, args.h, args.h1, args.z0 = s0, w2 / s0, h1, None
