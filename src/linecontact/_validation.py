@@ -196,6 +196,43 @@ def broadcast(**named: NDArray) -> list[NDArray]:
         raise ValueError(f"the array arguments must broadcast together: {shapes}") from None
 
 
+def first_point(bad: ArrayLike, **named: ArrayLike) -> tuple[int, dict[str, float]]:
+    """The first point where ``bad`` holds, and the named inputs' values at it.
+
+    ``bad`` and the named inputs are broadcast to their common shape first, so that an
+    input that was broadcast (a scalar, a row, a column) gives its value at that point:
+    indexing each input with the flat index of ``bad`` would miss it, or raise
+    ``IndexError``, where an input has fewer elements than the points.
+
+    Parameters
+    ----------
+    bad : array_like of bool
+        Where the points fail; it must hold somewhere.
+    **named : array_like
+        The inputs to report, under the names the caller used.
+
+    Returns
+    -------
+    i : int
+        The flat (C-order) index of the first failing point in the common shape, for the
+        flat arrays of the points' diagnostics.
+    values : dict
+        ``name -> float`` at that point, in the order given.
+    """
+    b = np.asarray(bad, dtype=bool)
+    arrays = [np.asarray(v) for v in named.values()]
+    shape = np.broadcast_shapes(b.shape, *(a.shape for a in arrays))
+    i = int(np.argmax(np.broadcast_to(b, shape).reshape(-1)))
+    at = np.unravel_index(i, shape)
+    values = {k: float(np.broadcast_to(a, shape)[at]) for k, a in zip(named, arrays, strict=True)}
+    return i, values
+
+
+def point_text(values: dict[str, float]) -> str:
+    """``values`` of :func:`first_point` as ``"name=value, ..."`` (each value by ``repr``)."""
+    return ", ".join(f"{k}={v!r}" for k, v in values.items())
+
+
 def check_solver_options(n: object, tol: object, raise_on_failure: object, *, n_max: int) -> None:
     """The collocation options shared by the solvers: ``n``, ``tol`` and ``raise_on_failure``.
 

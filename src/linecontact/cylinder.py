@@ -1389,10 +1389,14 @@ def cylinder_push(
             f"this cylinder (receding range {h1:.6g} m): it has pulled off"
         ) from None
     except _domain.TooWideError as e:
+        # e.index counts the points of push, over the shape all its inputs broadcast to
+        points = np.broadcast_shapes(
+            *(np.shape(v) for v in (F, H, Q, tip_friction) if v is not None)
+        )
+        Fi = float(np.broadcast_to(load, points).reshape(-1)[e.index])
         raise ValueError(
-            f"normal_load={float(np.reshape(np.broadcast_to(load, np.shape(F)), -1)[e.index])!r}"
-            f" N/m needs a contact of half-width {e.a_over_R * R:.6g} m, {e.a_over_R:.6g} "
-            f"radii: {e.limit}"
+            f"normal_load={Fi!r} N/m needs a contact of half-width {e.a_over_R * R:.6g} m, "
+            f"{e.a_over_R:.6g} radii: {e.limit}"
         ) from None
 
     def si(v, unit):

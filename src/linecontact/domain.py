@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._validation import check_array
+from ._validation import check_array, first_point
 
 __all__ = ["DOMAIN", "TooWideError", "check", "check_si", "check_widths", "scalar"]
 
@@ -99,9 +99,8 @@ def check_widths(A, F, F_name: str, key: str = "a_over_R", narrow: bool = False)
         (under, f"below the domain of the solvers (a_over_R >= {a_min:g})"),
     ):
         if np.any(bad):
-            i = int(np.flatnonzero(bad.reshape(-1))[0])
-            Fi = float(np.reshape(np.broadcast_to(F, bad.shape), -1)[i])
-            Ai = float(np.reshape(A, -1)[i])
+            i, at = first_point(bad, F=F, A=A)
+            Fi, Ai = at["F"], at["A"]
             width = f"a_over_R = {Ai:.6g}" if Ai > 0 else f"a_over_R < {a_min:g}"
             raise TooWideError(
                 f"{F_name}={Fi!r} needs a contact of half-width {width}, {limit}",
@@ -124,11 +123,11 @@ def check_si(name: str, value: ArrayLike, unit_value: ArrayLike, key: str, unit:
         g = v / u
     bad = ~((g >= low if lo_inc else g > low) & (g <= high if hi_inc else g < high))
     if np.any(bad):
-        i = int(np.flatnonzero(bad.reshape(-1))[0])
-        ui = float(u.reshape(-1)[i])
+        _, at = first_point(bad, v=v, u=u)
+        ui = at["u"]
         lo_br, hi_br = "[" if lo_inc else "(", "]" if hi_inc else ")"
         group = key.removeprefix("sliding_").removeprefix("friction_")  # as the API names it
         raise ValueError(
             f"{name} must be in {lo_br}{low * ui:.6g}, {high * ui:.6g}{hi_br} {unit} ({group} in "
-            f"{lo_br}{low:g}, {high:g}{hi_br}), got {float(v.reshape(-1)[i])!r}"
+            f"{lo_br}{low:g}, {high:g}{hi_br}), got {at['v']!r}"
         )

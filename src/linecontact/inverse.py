@@ -34,7 +34,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from . import normal as _normal
 from . import reference as _ref
-from ._validation import broadcast, check_array
+from ._validation import broadcast, check_array, first_point
 from .cylinder import _check_cylinder_si, _plausible, _warn_widths
 from .errors import ModelValidityWarning
 
@@ -221,13 +221,13 @@ def work_of_adhesion_from_pull_off(
         w = _bisect_log(lambda w: Fm - pull_off_force_at(R, E, w, z0), w_lo, w_hi, _rtol)
         return np.where(bad, np.nan, w)
     if np.any(bad):
-        i = int(np.flatnonzero(bad.reshape(-1))[0])
+        _, at = first_point(bad, F=F, R=R, E=E, z0=z0, lo=F_lo, hi=F_hi)
         raise ValueError(
-            f"pull_off_force={float(F.reshape(-1)[i])!r} N/m cannot be produced by any work of "
-            f"adhesion at radius={float(R.reshape(-1)[i])!r} m, modulus="
-            f"{float(E.reshape(-1)[i])!r} Pa, equilibrium_spacing={float(z0.reshape(-1)[i])!r}"
-            f" m: the reachable pull-off forces are ({float(F_lo.reshape(-1)[i]):.6g}, "
-            f"{float(F_hi.reshape(-1)[i]):.6g}) N/m (sigma0/E from {_S_MIN:g} to {_S_MAX:g})"
+            f"pull_off_force={at['F']!r} N/m cannot be produced by any work of "
+            f"adhesion at radius={at['R']!r} m, modulus="
+            f"{at['E']!r} Pa, equilibrium_spacing={at['z0']!r}"
+            f" m: the reachable pull-off forces are ({at['lo']:.6g}, "
+            f"{at['hi']:.6g}) N/m (sigma0/E from {_S_MIN:g} to {_S_MAX:g})"
         )
     # the pull-off force falls (grows in magnitude) with w
     return _bisect_log(lambda w: F - pull_off_force_at(R, E, w, z0), w_lo, w_hi, _rtol)
@@ -288,12 +288,12 @@ def work_of_adhesion_from_width(
     if np.any(bad) and nan_mode:  # for propagate: nan where no w reaches
         a = np.where(bad, np.where(np.isfinite(a_hi), 0.5 * (a_lo + a_hi), 2 * a_lo + 1e-300), a)
     if np.any(bad) and not nan_mode:
-        i = int(np.flatnonzero(bad.reshape(-1))[0])
+        _, at = first_point(bad, a=a, F=F, lo=a_lo, hi=a_hi)
         raise ValueError(
-            f"half_width={float(a.reshape(-1)[i])!r} m at normal_load="
-            f"{float(F.reshape(-1)[i])!r} N/m cannot be produced by any work of adhesion: the "
-            f"reachable half-widths are ({float(a_lo.reshape(-1)[i]):.6g}, "
-            f"{float(a_hi.reshape(-1)[i]):.6g}) m (about Hertz's, without adhesion, at the "
+            f"half_width={at['a']!r} m at normal_load="
+            f"{at['F']!r} N/m cannot be produced by any work of adhesion: the "
+            f"reachable half-widths are ({at['lo']:.6g}, "
+            f"{at['hi']:.6g}) m (about Hertz's, without adhesion, at the "
             "low end)"
         )
     w = _bisect_log(lambda w: width(w) - a, w_lo, w_hi)
@@ -304,11 +304,11 @@ def work_of_adhesion_from_width(
     if nan_mode:
         return np.where(bad | off, np.nan, w)
     if np.any(off):
-        i = int(np.flatnonzero(off.reshape(-1))[0])
+        _, at = first_point(off, a=a, F=F, got=got)
         raise ValueError(
-            f"half_width={float(a.reshape(-1)[i])!r} m at normal_load="
-            f"{float(F.reshape(-1)[i])!r} N/m cannot be produced by any work of adhesion: the "
-            f"narrowest stable contact carrying this load is {float(got.reshape(-1)[i]):.6g} m "
+            f"half_width={at['a']!r} m at normal_load="
+            f"{at['F']!r} N/m cannot be produced by any work of adhesion: the "
+            f"narrowest stable contact carrying this load is {at['got']:.6g} m "
             "wide (at its pull-off)"
         )
     return w
@@ -394,13 +394,24 @@ def shear_strength_from_friction(
         raise ValueError(
             f"contact must be 'maugis-dugdale', 'jkr', 'dmt' or 'hertz', got {contact!r}"
         )
-    f, F, R, E, w, z0 = broadcast(
+    # the receding work of adhesion broadcasts with the others (it may set the points' shape)
+    receding = (
+        {}
+        if receding_work_of_adhesion is None
+        else {
+            "receding_work_of_adhesion": check_array(
+                "receding_work_of_adhesion", receding_work_of_adhesion
+            )
+        }
+    )
+    f, F, R, E, w, z0, *w1_given = broadcast(
         friction_force=f,
         normal_load=F,
         radius=R,
         modulus=E,
         work_of_adhesion=w,
         equilibrium_spacing=z0,
+        **receding,
     )
     _check_cylinder_si(R, E, {"work_of_adhesion": w, "equilibrium_spacing": z0}, stacklevel=4)
     rho, s, h = _groups(R, E, w, z0)
@@ -408,16 +419,14 @@ def shear_strength_from_friction(
     if receding_work_of_adhesion is not None:
         if contact != "maugis-dugdale":
             raise ValueError("receding_work_of_adhesion needs contact='maugis-dugdale'")
-        w1 = np.broadcast_to(
-            check_array("receding_work_of_adhesion", receding_work_of_adhesion), f.shape
-        )
+        w1 = w1_given[0]
         _plausible("receding_work_of_adhesion", w1, key="work_of_adhesion")
-        if np.any(w1 < w) or np.any(w1 > 1e3 * w):
+        if np.any((w1 < w) | (w1 > 1e3 * w)):
+            _, at = first_point((w1 < w) | (w1 > 1e3 * w), w1=w1, w=w)
             raise ValueError(
                 "receding_work_of_adhesion must be from work_of_adhesion (the advancing one: "
                 "the hysteresis is not negative) to 1000 times it (the domain of steady "
-                f"sliding), got {float(np.reshape(w1, -1)[0])!r} for "
-                f"{float(np.reshape(w, -1)[0])!r}"
+                f"sliding), got {at['w1']!r} for {at['w']!r}"
             )
         from .sliding import sliding_contact_for_load
 
@@ -434,24 +443,24 @@ def shear_strength_from_friction(
         a = _jkr_width(F, R, E, w)
     bad = ~(np.isfinite(a) & (a > 0))
     if np.any(bad):
-        i = int(np.flatnonzero(bad.reshape(-1))[0])
+        _, at = first_point(bad, F=F)
         raise ValueError(
-            f"normal_load={float(F.reshape(-1)[i])!r} N/m has no contact ({contact}): it is "
+            f"normal_load={at['F']!r} N/m has no contact ({contact}): it is "
             "below the pull-off force, so there is no contact width to divide by"
         )
     with np.errstate(over="ignore"):  # an overflow is refused just below
         tau = (f - dw) / (2 * a)
     if not np.all(np.isfinite(tau)):
-        i = int(np.flatnonzero(~np.isfinite(tau).reshape(-1))[0])
+        _, at = first_point(~np.isfinite(tau), f=f, a=a)
         raise ValueError(
-            f"friction_force={float(f.reshape(-1)[i])!r} N/m over a contact of half-width "
-            f"{float(a.reshape(-1)[i]):.6g} m gives no finite shear strength"
+            f"friction_force={at['f']!r} N/m over a contact of half-width "
+            f"{at['a']:.6g} m gives no finite shear strength"
         )
     if np.any(tau <= 0):
-        i = int(np.flatnonzero((tau <= 0).reshape(-1))[0])
+        _, at = first_point(tau <= 0, f=f, dw=dw)
         raise ValueError(
-            f"friction_force={float(f.reshape(-1)[i])!r} N/m does not exceed the adhesion "
-            f"hysteresis {float(dw.reshape(-1)[i]):.6g} J/m^2: no positive shear strength"
+            f"friction_force={at['f']!r} N/m does not exceed the adhesion "
+            f"hysteresis {at['dw']:.6g} J/m^2: no positive shear strength"
         )
     return tau
 

@@ -47,6 +47,7 @@ import numpy as np
 import scipy.linalg
 from numpy.typing import NDArray
 
+from ._validation import first_point
 from .errors import ConvergenceError, NoEquilibriumError
 from .results import Result
 
@@ -930,12 +931,12 @@ def pull_off_in_dugdale_groups(R_over_h, sigma0_over_E) -> LennardJonesPullOff:
     mu, R_over_z0 = mu_of_dugdale(rho, s)
     hi = _DOMAIN_MU_HIGH()
     if np.any(mu > hi):
-        k = int(np.argmax(mu > hi))
+        _, at = first_point(mu > hi, rho=rho, s=s, mu=mu)
         raise ValueError(
             f"the Lennard-Jones law is solved for mu = (sigma0/E) sqrt(R/h) * "
             f"{MAUGIS_MATCH_SIGMA0**-1.5:.4f} in [0, {hi:g}] (Maugis parameter up to "
-            f"{float(maugis_parameter_of_mu(hi)):.3g}); R_over_h={float(rho.flat[k])!r}, "
-            f"sigma0_over_E={float(s.flat[k])!r} give mu={float(mu.flat[k]):.6g}"
+            f"{float(maugis_parameter_of_mu(hi)):.3g}); R_over_h={at['rho']!r}, "
+            f"sigma0_over_E={at['s']!r} give mu={at['mu']:.6g}"
         )
     out = {k: np.empty(rho.shape) for k in ("F", "a", "g", "J", "e")}
     n = np.empty(rho.shape, int)

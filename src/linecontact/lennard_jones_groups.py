@@ -31,6 +31,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from . import reference as _ref
+from ._validation import first_point
 from .errors import ConvergenceError, NoEquilibriumError
 from .lennard_jones import (
     MAUGIS_MATCH_SIGMA0,
@@ -221,12 +222,12 @@ def lj_groups(R_over_h, sigma0_over_E) -> tuple[NDArray, NDArray, NDArray]:
     mu, R_over_z0 = mu_of_dugdale(rho, s)
     hi = DOMAIN["lj_mu"][2]
     if np.any(mu > hi):
-        k = int(np.argmax(np.reshape(mu > hi, -1)))
+        _, at = first_point(mu > hi, rho=rho, s=s, mu=mu)
         raise ValueError(
             f"the Lennard-Jones law is solved for mu = (sigma0/E) sqrt(R/h) * "
             f"{MAUGIS_MATCH_SIGMA0**-1.5:.4f} in [0, {hi:g}] (Maugis parameter up to "
-            f"{float(maugis_parameter_of_mu(hi)):.3g}); R_over_h={float(rho.flat[k])!r}, "
-            f"sigma0_over_E={float(s.flat[k])!r} give mu={float(np.reshape(mu, -1)[k]):.6g}"
+            f"{float(maugis_parameter_of_mu(hi)):.3g}); R_over_h={at['rho']!r}, "
+            f"sigma0_over_E={at['s']!r} give mu={at['mu']:.6g}"
         )
     root = np.sqrt(R_over_z0)
     return np.asarray(mu, float), root, s * root
@@ -241,9 +242,9 @@ def _check_load(F_native: NDArray, F_over_Eh: NDArray, name: str) -> None:
     """Refuse loads beyond :data:`LJ_LOAD_MAX` (in the units of the caller's ``name``)."""
     over = np.reshape(F_native > LJ_LOAD_MAX, -1)
     if np.any(over):
-        i = int(np.flatnonzero(over)[0])
-        Fi = float(np.reshape(F_over_Eh, -1)[i])
-        limit = Fi / float(np.reshape(F_native, -1)[i]) * LJ_LOAD_MAX
+        _, at = first_point(F_native > LJ_LOAD_MAX, F=F_over_Eh, Fn=F_native)
+        Fi = at["F"]
+        limit = Fi / at["Fn"] * LJ_LOAD_MAX
         raise ValueError(
             f"{name}={Fi!r} is beyond the loads the Lennard-Jones solver is asked for, up to "
             f"F_over_Eh = {limit:.6g} here ({LJ_LOAD_MAX:g} w sqrt(R/z0), ten times the rigid "

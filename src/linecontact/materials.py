@@ -34,7 +34,7 @@ from __future__ import annotations
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._validation import broadcast, check_array, scalar
+from ._validation import broadcast, check_array, first_point, scalar
 from .domain import DOMAIN, check
 
 __all__ = [
@@ -130,11 +130,11 @@ def adhesion_from_work(work_of_adhesion: ArrayLike, equilibrium_spacing: ArrayLi
         s0 = 16 * w / (9 * np.sqrt(3) * z0)
     bad = ~(np.isfinite(s0) & (s0 > 0))
     if np.any(bad):
-        i = int(np.flatnonzero(bad.reshape(-1))[0])
+        _, at = first_point(bad, w=w, z0=z0, s0=s0)
         raise ValueError(
-            f"work_of_adhesion={float(w.reshape(-1)[i])!r} and equilibrium_spacing="
-            f"{float(z0.reshape(-1)[i])!r} give sigma0 = 16 w/(9 sqrt(3) z0) = "
-            f"{float(s0.reshape(-1)[i])!r} [Pa], not a finite positive number"
+            f"work_of_adhesion={at['w']!r} and equilibrium_spacing="
+            f"{at['z0']!r} give sigma0 = 16 w/(9 sqrt(3) z0) = "
+            f"{at['s0']!r} [Pa], not a finite positive number"
         )
     h = w / s0
     return (s0.item(), h.item()) if s0.ndim == 0 else (s0, h)

@@ -36,6 +36,8 @@ from ._validation import (
     broadcast,
     check_array,
     check_solver_options,
+    first_point,
+    point_text,
     positions,
     scalar_or_array,
 )
@@ -496,7 +498,7 @@ def normal_contact(
             # residual R is scaled so that 1 <-> h; it is the separation residual over h
             stable = _stable_at(u, kap)
     if raise_on_failure and not (bool(converged) if scalar else converged.all()):
-        i = np.flatnonzero(~np.asarray(converged).reshape(-1))[0]
+        i, at = first_point(~np.asarray(converged, bool), a_over_R=A, R_over_h=rho, sigma0_over_E=s)
         nn = int(np.reshape(ncol, -1)[i])
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
             ca = np.reshape(C / A, -1)
@@ -507,9 +509,7 @@ def normal_contact(
         else:
             hint = f"n = {nn} nodes are too few for tol = {tol:g}; try n='auto'"
         raise ConvergenceError(
-            f"normal_contact ({method}) did not converge at a_over_R="
-            f"{float(A.reshape(-1)[i])!r}, R_over_h={float(rho.reshape(-1)[i])!r}, "
-            f"sigma0_over_E={float(s.reshape(-1)[i])!r} (separation residual "
+            f"normal_contact ({method}) did not converge at {point_text(at)} (separation residual "
             f"{float(np.reshape(res, -1)[i]):.3g}, error estimate "
             f"{float(np.reshape(err, -1)[i]):.3g}): {hint}"
         )
@@ -861,29 +861,29 @@ def contact_for_load(
         nonpos = (s == 0) & (F <= 0)
         bad = (F < Fmin) | nonpos
         if np.any(nonpos) and not report:
-            i = np.flatnonzero(np.reshape(nonpos, -1))[0]
+            _, at = first_point(nonpos, F_over_Eh=F, R_over_h=rho)
             raise NoEquilibriumError(
-                f"no contact carries F_over_Eh={float(F.reshape(-1)[i])!r} without adhesion "
-                f"(sigma0_over_E=0): the pull-off force is 0 and the load must be > 0"
+                f"no contact carries F_over_Eh={at['F_over_Eh']!r} without adhesion "
+                f"(sigma0_over_E=0, R_over_h={at['R_over_h']!r}): the pull-off force is 0 and "
+                "the load must be > 0"
             )
         if np.any(bad) and not report:
-            i = np.flatnonzero(np.reshape(bad, -1))[0]
+            _, at = first_point(bad, F_over_Eh=F, Fmin=Fmin, R_over_h=rho, sigma0_over_E=s)
             raise NoEquilibriumError(
-                f"no contact carries F_over_Eh={float(F.reshape(-1)[i])!r}: it is below the "
+                f"no contact carries F_over_Eh={at.pop('F_over_Eh')!r}: it is below the "
                 f"pull-off force, the minimum load on the contact branch F_minimum_over_Eh="
-                f"{float(np.reshape(Fmin, -1)[i])!r} (R_over_h={float(rho.reshape(-1)[i])!r}, "
-                f"sigma0_over_E={float(s.reshape(-1)[i])!r}); the cylinder has pulled off"
+                f"{at.pop('Fmin')!r} ({point_text(at)}); the cylinder has pulled off"
             )
         # a load that exists stands in for the ones reported (their values are NaN below)
         F = np.where(bad, Fmin, F)
     else:
         bad = ~((F > Fmin) & (F < F0))
         if np.any(bad) and not report:
-            i = np.flatnonzero(np.reshape(bad, -1))[0]
+            _, at = first_point(bad, F_over_Eh=F, Fmin=Fmin, F0=F0, R_over_h=rho, sigma0_over_E=s)
             raise NoEquilibriumError(
-                f"no unstable contact carries F_over_Eh={float(F.reshape(-1)[i])!r}: that "
-                f"branch exists only for F_minimum_over_Eh={float(np.reshape(Fmin, -1)[i])!r} < "
-                f"F_over_Eh < F_zero_width_over_Eh={float(np.reshape(F0, -1)[i])!r}"
+                f"no unstable contact carries F_over_Eh={at.pop('F_over_Eh')!r}: that "
+                f"branch exists only for F_minimum_over_Eh={at.pop('Fmin')!r} < "
+                f"F_over_Eh < F_zero_width_over_Eh={at.pop('F0')!r} ({point_text(at)})"
             )
         F = np.where(bad, 0.5 * (Fmin + F0), F)
     # no unstable branch (kappa = 0): any finite end stands in for the points reported
@@ -907,12 +907,13 @@ def contact_for_load(
     res = abs(Fc - Fv) / _ref._maximum(scale, 1e-300)
     converged = ((abs(Fc) < np.inf) & (res <= _LOAD_RTOL)) | bad
     if not (bool(converged) if scalar else converged.all()):
-        i = np.flatnonzero(~np.reshape(converged, -1))[0]
+        _, at = first_point(
+            ~np.asarray(converged, bool), F_over_Eh=F, R_over_h=rho, sigma0_over_E=s, Fc=Fc
+        )
+        Fci = at.pop("Fc")
         raise ConvergenceError(
-            f"contact_for_load did not converge at F_over_Eh={float(F.reshape(-1)[i])!r}, "
-            f"R_over_h={float(rho.reshape(-1)[i])!r}, sigma0_over_E="
-            f"{float(s.reshape(-1)[i])!r}: the closest contact carries F_over_Eh="
-            f"{float(np.reshape(Fc, -1)[i])!r} (the load is outside the range of the solver)"
+            f"contact_for_load did not converge at {point_text(at)}: the closest contact "
+            f"carries F_over_Eh={Fci!r} (the load is outside the range of the solver)"
         )
     _domain.check_widths(np.where(bad, np.nan, A), F_asked, "F_over_Eh")
     _ref._warn_wide(np.where(bad, np.nan, A))

@@ -31,7 +31,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import domain as _domain
-from ._validation import broadcast, check_array, scalar_or_array
+from ._validation import broadcast, check_array, first_point, point_text, scalar_or_array
 from .errors import ConvergenceError
 from .normal import contact_for_load, pull_off
 from .results import Result, as_output
@@ -391,12 +391,16 @@ def push(
         scale = np.abs(F) + (np.pi / 4) * rho * a_slide * a_slide + 1e-300
         res = np.abs(F_slide - F) / scale
     if not np.all(conv):
-        i = int(np.flatnonzero(~conv)[0])
+        named = dict(
+            R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau, F_over_Eh2=F, H_over_R=H
+        )
+        if Q_over_Eh2 is not None:
+            named["Q_over_Eh2"] = Q
+        if tip:
+            named["tip_friction"] = mu
+        _, at = first_point(~np.asarray(conv, bool), **named)
         raise ConvergenceError(
-            f"push did not converge at R_over_h2={float(rho[i])!r}, h1_over_h2="
-            f"{float(r[i])!r}, sigma0_over_E={float(s[i])!r}, tau0_over_E={float(tau[i])!r}, "
-            f"F_over_Eh2={float(F[i])!r}, H_over_R={float(H[i])!r}"
-            + ("" if not tip else f", tip_friction={float(mu[i])!r}")
+            f"push did not converge at {point_text(at)}"
             + ": a contact or the tip's load could not be solved to round-off"
         )
     vals = dict(
@@ -499,10 +503,10 @@ def tip_push(H_over_R: ArrayLike, tip_friction: ArrayLike = 0.0) -> TipPush:
     cos = np.sqrt(H * (2.0 - H))
     qx = cos - mu * sin
     if np.any(qx <= 0):
-        i = int(np.flatnonzero(np.reshape(qx <= 0, -1))[0])
+        _, at = first_point(qx <= 0, tip_friction=mu, H_over_R=H)
         raise ValueError(
-            f"tip_friction={float(np.reshape(mu, -1)[i])!r} at H_over_R="
-            f"{float(np.reshape(H, -1)[i])!r} turns the tip's force backwards or vertical "
+            f"tip_friction={at['tip_friction']!r} at H_over_R={at['H_over_R']!r} turns the "
+            "tip's force backwards or vertical "
             f"(cos(theta) <= tip_friction sin(theta)): the tip does not push the fibre"
         )
     vals = dict(

@@ -59,7 +59,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import domain as _domain
-from ._validation import broadcast, out, scalar_or_array
+from ._validation import broadcast, first_point, out, point_text, scalar_or_array
 from .errors import ModelValidityWarning
 
 __all__ = [
@@ -122,8 +122,7 @@ def _check_kappa(rho: NDArray, s: NDArray, rho_name: str = "R_over_h") -> None:
         kap = (4 / np.pi) * s * np.sqrt(2 * rho)
     bad = ~(kap <= KAPPA_MAX)
     if np.any(bad):
-        i = int(np.flatnonzero(np.reshape(bad, -1))[0])
-        pick = [float(np.reshape(v, -1)[i if np.size(v) > 1 else 0]) for v in (kap, rho, s)]
+        pick = list(first_point(bad, kap=kap, rho=rho, s=s)[1].values())
         raise ValueError(
             f"kappa = (4/pi) sigma0_over_E sqrt(2 {rho_name}) must be <= {KAPPA_MAX:g} (the "
             f"range of the solvers), got kappa={pick[0]:.3g} at {rho_name}={pick[1]!r}, "
@@ -134,12 +133,8 @@ def _check_kappa(rho: NDArray, s: NDArray, rho_name: str = "R_over_h") -> None:
 def _representable(what: str, value: NDArray, **params: NDArray) -> NDArray:
     """``value`` if it is finite everywhere; otherwise say which inputs overflow it."""
     if not np.all(np.isfinite(value)):
-        i = int(np.flatnonzero(~np.isfinite(np.reshape(value, -1)))[0])
-        at = ", ".join(
-            f"{k}={float(np.reshape(v, -1)[i if np.size(v) > 1 else 0])!r}"
-            for k, v in params.items()
-        )
-        raise ValueError(f"{what} is beyond the floating-point range at {at}")
+        _, at = first_point(~np.isfinite(value), **params)
+        raise ValueError(f"{what} is beyond the floating-point range at {point_text(at)}")
     return value
 
 

@@ -115,6 +115,8 @@ from . import reference as _ref
 from ._validation import (
     broadcast,
     check_solver_options,
+    first_point,
+    point_text,
     positions,
     scalar_or_array,
 )
@@ -848,13 +850,19 @@ def _pack(
     missing = np.zeros(A.shape, bool) if missing is None else missing
     conv = d["converged"] | missing
     if raise_on_failure and not np.all(conv):
-        i = np.flatnonzero(~np.reshape(conv, -1))[0]
-        A, rho, r, s = (np.reshape(v, -1) for v in (A, rho, r, s))
+        # the inputs at the first failing point, after broadcasting (and the load asked for)
+        asked = {} if F_asked is None else {"F_over_Eh2": F_asked}
+        i, at = first_point(
+            ~np.asarray(conv, bool),
+            **asked,
+            a_over_R=A,
+            R_over_h2=rho,
+            h1_over_h2=r,
+            sigma0_over_E=s,
+        )
         d = {k: np.reshape(v, -1) for k, v in d.items()}
         raise ConvergenceError(
-            f"{where} ({method}) did not converge at a_over_R={float(A[i])!r}, "
-            f"R_over_h2={float(rho[i])!r}, h1_over_h2={float(r[i])!r}, "
-            f"sigma0_over_E={float(s[i])!r} (separation residuals "
+            f"{where} ({method}) did not converge at {point_text(at)} (separation residuals "
             f"{d['res1'][i]:.3g}, {d['res2'][i]:.3g}, error estimate {d['tail'][i]:.3g}); an "
             f"adhesive zone is too thin for n <= {_SIZES[-1]} or the point is outside the "
             f"solver's range"
@@ -1165,11 +1173,9 @@ def sliding_pull_off(
         )
     bad = ~((abs(F0) < np.inf) & (abs(Fmin) < np.inf) & (abs(a_min) < np.inf))
     if np.any(bad):
-        i = int(np.flatnonzero(np.reshape(bad, -1))[0])
-        rho, r, s = (np.reshape(v, -1) for v in (rho, r, s))
+        _, at = first_point(bad, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s)
         raise ConvergenceError(
-            f"sliding_pull_off did not converge at R_over_h2={float(rho[i])!r}, h1_over_h2="
-            f"{float(r[i])!r}, sigma0_over_E={float(s[i])!r}: the point is outside the "
+            f"sliding_pull_off did not converge at {point_text(at)}: the point is outside the "
             f"solver's range"
         )
     vals = dict(
@@ -1227,22 +1233,26 @@ def _lower_end(F, rho, r, s, kap, phi_t, report: bool = False):
         # a load that a contact carries stands in (the values are NaN in the result)
         phi_t = _ref._where(below, phi_po, _ref._where(nonpos, 1.0, phi_t))
         return lab_lo, phi_t, missing, phi_po
-    bad = np.reshape(below, -1)
-    Ff, rhof, rf, sf, pf = (np.reshape(v, -1) for v in (F, rho, r, s, phi_po))
-    if bad.any():
-        g = np.flatnonzero(bad)[0]
-        raise NoEquilibriumError(
-            f"no steadily sliding contact carries F_over_Eh2={float(Ff[g])!r}: it is below "
-            f"the pull-off force F_pulloff_over_Eh2={float(np.pi / 2 * pf[g])!r} "
-            f"(R_over_h2={float(rhof[g])!r}, h1_over_h2={float(rf[g])!r}, "
-            f"sigma0_over_E={float(sf[g])!r}); the cylinder has pulled off"
+    if np.any(below):
+        _, at = first_point(
+            below,
+            F_over_Eh2=F,
+            F_po=np.pi / 2 * phi_po,
+            R_over_h2=rho,
+            h1_over_h2=r,
+            sigma0_over_E=s,
         )
-    nonpos = np.reshape(nonpos, -1)
-    if nonpos.any():
-        i = np.flatnonzero(nonpos)[0]
         raise NoEquilibriumError(
-            f"no contact carries F_over_Eh2={float(Ff[i])!r} without adhesion "
-            f"(sigma0_over_E=0): the pull-off force is 0 and the load must be > 0"
+            f"no steadily sliding contact carries F_over_Eh2={at.pop('F_over_Eh2')!r}: it is "
+            f"below the pull-off force F_pulloff_over_Eh2={at.pop('F_po')!r} "
+            f"({point_text(at)}); the cylinder has pulled off"
+        )
+    if np.any(nonpos):
+        _, at = first_point(nonpos, F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r)
+        raise NoEquilibriumError(
+            f"no contact carries F_over_Eh2={at.pop('F_over_Eh2')!r} without adhesion "
+            f"(sigma0_over_E=0, {point_text(at)}): the pull-off force is 0 and the load must "
+            "be > 0"
         )
     return lab_lo, phi_t, missing, phi_po
 

@@ -282,11 +282,11 @@ def _zero_width_figure(run: Run):
         [
             ("Eq. 14 (zero contact width)", dict(color="0.2", lw=1.8)),
             (
-                "pull-off, peels to zero width\n(a < h, within 1 % of Eq. 14)",
+                "pull-off, peels to zero width\n(a < h, Eq. 14 to 1 %)",
                 dict(color="0.2", **_OPEN_KW),
             ),
             (
-                "pull-off, snap-off\n(a >= h, or > 1 % below Eq. 14)",
+                "pull-off, snap-off\n(a >= h or > 1 % below)",
                 dict(color="0.2", **_FILLED_KW),
             ),
             (

@@ -22,6 +22,8 @@ from .._validation import (
     broadcast,
     check_array,
     check_solver_options,
+    first_point,
+    point_text,
     positions,
     scalar_or_array,
 )
@@ -238,11 +240,11 @@ def _solve_points(
 
 
 def _raise_unconverged(name, converged, labels: dict, out, n) -> None:
-    conv = np.asarray(converged).reshape(-1)
-    if conv.all():
+    if np.all(converged):
         return
-    i = int(np.flatnonzero(~conv)[0])
-    where = ", ".join(f"{k}={float(np.reshape(v, -1)[i])!r}" for k, v in labels.items())
+    # the inputs at the first failing point, after broadcasting (``out`` is flat over them)
+    i, at = first_point(~np.asarray(converged, bool), **labels)
+    where = point_text(at)
     raise ConvergenceError(
         f"{name} (collocation) did not converge at {where} (error estimate "
         f"{out['tail'][i]:.3g}, stick residual {out['stick'][i]:.3g}, force residual "
@@ -256,14 +258,25 @@ def _raise_unconverged(name, converged, labels: dict, out, n) -> None:
     )
 
 
-def _raise_sliding(name, sliding, T_name, T, T_full) -> None:
+def _raise_sliding(name, sliding, labels: dict, given: str, T_name, T, T_full) -> None:
+    """NoEquilibriumError at the first sliding point, naming the inputs there.
+
+    ``labels`` are the inputs under the caller's names (``given`` among them: the load or
+    ``d_over_a``), ``T`` the tangential load and ``T_full`` the full-slip load, both in the
+    unit of ``T_name``; all are broadcast to the points before the first is picked.
+    """
     if not np.any(sliding):
         return
-    i = int(np.flatnonzero(np.reshape(sliding, -1))[0])
+    _, at = first_point(sliding, **labels, _T=T, _T_full=T_full)
+    Ti, Tf = at.pop("_T"), at.pop("_T_full")
+    if given == T_name:
+        head = f"{T_name}={Ti!r} is at or above the full-slip load {Tf!r}"
+    else:  # d_over_a = 0: the load is the full-slip one
+        head = f"{given}={at[given]!r} is full slip ({T_name}={Ti!r}, the full-slip load)"
+    others = point_text({k: v for k, v in at.items() if k != given})
     raise NoEquilibriumError(
-        f"{name}: {T_name}={float(np.reshape(T, -1)[i])!r} is at or above the full-slip load "
-        f"{float(np.reshape(T_full, -1)[i])!r}: the whole contact slips (sliding), there is no "
-        f"stick zone"
+        f"{name}: {head}" + (f" at {others}" if others else "") + ": the whole contact slips "
+        "(sliding), there is no stick zone"
     )
 
 
@@ -433,11 +446,15 @@ def _run(
     else:
         creep = None
     if on_sliding == "raise":
+        labels = dict(zip(names, arrays, strict=True))
+        labels[given[0]] = g
         _raise_sliding(
             pb.name,
             sliding,
+            labels,
             given[0],
-            given[1] if d_over_a is None else T_unit,
+            load_name,
+            g if d_over_a is None else (arrays[0] * T_unit if pb.constant else T_unit),
             2 * arrays[0] if pb.constant else np.ones(shape),
         )
     converged = np.ones(shape, bool)
