@@ -142,6 +142,37 @@ def test_cite_to_dev_full_is_an_error_line_not_an_internal_error(args):
     )
 
 
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="needs /dev/full")
+@pytest.mark.parametrize("args", [["--help"], ["pulloff", "--help"], ["--version"]])
+def test_help_to_dev_full_is_an_error_line(args):
+    """argparse swallows a failed write of its help; the command line does not."""
+    with open("/dev/full", "w") as full:
+        proc = subprocess.run(
+            [sys.executable, "-m", "linecontact", *args],
+            stdout=full,
+            stderr=subprocess.PIPE,
+            text=True,
+            timeout=120,
+            env=ENV,
+        )
+    assert proc.returncode == 2
+    assert proc.stderr == (
+        "linecontact: error: cannot write to standard output: No space left on device\n"
+    )
+
+
+def test_help_into_a_closed_pipe_is_quiet():
+    proc = subprocess.run(
+        f"{sys.executable} -m linecontact pulloff --help | head -c 1",
+        shell=True,
+        capture_output=True,
+        text=True,
+        timeout=120,
+        env=ENV,
+    )
+    assert proc.returncode == 0 and proc.stdout == "u" and "Traceback" not in proc.stderr
+
+
 # --------------------------------------------------------------------------------------------
 # 7. Ctrl-C while the command line imports
 

@@ -42,13 +42,29 @@ def launched_as_cli() -> bool:
     return False
 
 
+def _interrupted(exc: BaseException) -> bool:
+    """True when ``exc`` is a ``KeyboardInterrupt`` or was raised while handling one.
+
+    Ctrl-C inside a C extension's initialisation (NumPy's ``_multiarray_umath``) surfaces
+    as an ``ImportError`` (or ``SystemError``) whose context is the ``KeyboardInterrupt``.
+    """
+    seen: set[int] = set()
+    e: BaseException | None = exc
+    while e is not None and id(e) not in seen:
+        if isinstance(e, KeyboardInterrupt):
+            return True
+        seen.add(id(e))
+        e = e.__cause__ or e.__context__
+    return False
+
+
 @contextlib.contextmanager
 def imports_interruptible() -> Iterator[None]:
     """Turn a ``KeyboardInterrupt`` in the block into exit status 130 on the command line."""
     try:
         yield
-    except KeyboardInterrupt:
-        if not launched_as_cli():
+    except BaseException as exc:
+        if not (_interrupted(exc) and launched_as_cli()):
             raise
         with contextlib.suppress(OSError, ValueError):
             print("linecontact: interrupted", file=sys.stderr)

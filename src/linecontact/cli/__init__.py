@@ -127,6 +127,16 @@ def _stdout_failed(prefix: str, exc: OSError) -> int:
     return 2
 
 
+def _help_not_written(err: OSError) -> int:
+    """``--help``/``--version`` output that could not be written: as :func:`main` says."""
+    if isinstance(err, BrokenPipeError):
+        _silence_stdout()
+        return 0
+    if _stdout_broken(err):
+        return _stdout_failed("linecontact", err)
+    raise err
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the CLI; returns the exit status (also usable in-process by tests).
 
@@ -146,6 +156,15 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("linecontact: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
+    except SystemExit as exc:  # --help, --version (0) or a usage error (2), already printed
+        if exc.code == 0:
+            try:
+                _flush_stdout()  # the help text to a full disk is an error, as any output
+            except OSError as err:
+                return _help_not_written(err)
+        raise
+    except OSError as err:  # the help text failed as it was written (Parser._print_message)
+        return _help_not_written(err)
     args.argv = list(argv) if argv is not None else None
     if args.command is None:
         print(

@@ -92,6 +92,12 @@ class Parser(argparse.ArgumentParser):
     def error(self, message: str):  # argparse's own errors: one line, exit 2
         self.exit(2, f"{self.prog}: error: {message}\n")
 
+    def _print_message(self, message: str, file: Any = None) -> None:
+        # argparse swallows a failed write; --help or --version to a full disk is an error
+        # (linecontact.cli.main reports it), as any other output is
+        if message:
+            (file or sys.stderr).write(message)
+
 
 def add_command(sub: Any, name: str, summary: str, description: str, examples: Sequence[str]):
     """A subcommand parser with a one-line summary, a description and examples in its help."""
