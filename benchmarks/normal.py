@@ -69,7 +69,7 @@ def main() -> None:
         f"  convergence at a/R={a0}, R/h={r0:g}, sigma0/E={s0} (c/a - 1 = {ref.c_over_a - 1:.2e}):"
     )
     for n in (32, 64, 128, 256, 512):
-        r = normal_contact(a0, r0, s0, method="collocation", n=n, raise_on_failure=False)
+        r = normal_contact(a0, r0, s0, method="collocation", n=n, on_failure="report")
         print(
             f"    n = {n:4d}: |dF/F| = {abs(r.F_over_Eh / ref.F_over_Eh - 1):.2e}, "
             f"error estimate {r.error_estimate:.1e}"

@@ -48,7 +48,7 @@ def main() -> None:
     A, rho, ratio, s = sample(args.points, rng)
     N = A.size
 
-    t_co, co = best_of(lambda: sliding_contact(A, rho, ratio, s), repeat=2)
+    t_co, co = best_of(lambda: sliding_contact(A, rho, ratio, s, method="collocation"), repeat=2)
     t_cf, cf = best_of(lambda: sliding_contact(A, rho, ratio, s, method="closed-form"))
     t_nc, _ = best_of(lambda: normal_contact(A, rho, s, method="collocation"), repeat=2)
 
@@ -93,7 +93,7 @@ def main() -> None:
     print(f"  M - e F = (sigma0/E)(h1/h2 - 1): worst relative deviation {np.max(hyst):.2e}")
 
     # the symmetric limit against the normal solution (closed form, independent code)
-    sym = sliding_contact(A, rho, 1.0, s)
+    sym = sliding_contact(A, rho, 1.0, s, method="collocation")
     ref = normal_contact(A, rho, s)
     rel_c = max(
         np.max(np.abs(sym.c1_over_R / ref.c_over_R - 1)),
@@ -122,7 +122,7 @@ def main() -> None:
         f"(c2/a - 1 = {cref.c2_over_a - 1:.2e}):"
     )
     for n in (32, 64, 128, 256, 512):
-        r = sliding_contact(a0, r0, q0, s0, n=n, raise_on_failure=False)
+        r = sliding_contact(a0, r0, q0, s0, method="collocation", n=n, on_failure="report")
         print(
             f"    n = {n:4d}: |dF/F| = {abs(r.F_over_Eh2 / cref.F_over_Eh2 - 1):.2e}, "
             f"|dc2/c2| = {abs(r.c2_over_R / cref.c2_over_R - 1):.2e}, "
@@ -136,7 +136,9 @@ def main() -> None:
     ps = 10 ** rng.uniform(-3, np.log10(0.3), m)
     t_po, po = best_of(lambda: sliding_pull_off(pr, pq, ps), repeat=1)
     F = np.abs(po.F_pulloff_over_Eh2) * rng.uniform(-0.9, 3.0, m)
-    t_inv, inv = best_of(lambda: sliding_contact_for_load(F, pr, pq, ps), repeat=1)
+    t_inv, inv = best_of(
+        lambda: sliding_contact_for_load(F, pr, pq, ps, method="collocation"), repeat=1
+    )
     snap = np.asarray(po.mechanism) == "snap-off"
     print(
         f"pull-off, {m} parameter triples: {t_po:.2f} s ({snap.sum()} snap-off, "

@@ -92,7 +92,7 @@ def convergence():
     print("  initiation, d/a -> 1 (full stick):")
     print("      d/a        n   rel. error of T   error estimate")
     for d in (0.9, 0.99, 0.999, 0.9999, 0.99999, 0.999999):
-        c = sliding_initiation(0.01, d, method="collocation", raise_on_failure=False)
+        c = sliding_initiation(0.01, d, method="collocation", on_failure="report")
         f = sliding_initiation(0.01, d)
         print(
             f"  {d:>9}  {c.n_collocation:>5}   {rel(c.T_over_Ea, f.T_over_Ea):.1e}"
@@ -101,7 +101,7 @@ def convergence():
     print("  rolling, d/a -> -1 (full stick), and d/a -> 1 (full slip):")
     print("      d/a        n   rel. error of T   rel. error of creep   error estimate")
     for d in (-0.9, -0.99, -0.999, -0.9999, -0.99999, -0.999999, 0.99, 0.99999, 1 - 1e-9):
-        c = steady_rolling(0.01, d, method="collocation", raise_on_failure=False)
+        c = steady_rolling(0.01, d, method="collocation", on_failure="report")
         f = steady_rolling(0.01, d)
         print(
             f"  {d:>9.9g}  {c.n_collocation:>5}   {rel(c.T_over_Ea, f.T_over_Ea):.1e}"
@@ -118,8 +118,8 @@ def convergence():
     f_r = steady_rolling(1.0, -0.999).creep_over_V
     f_0 = steady_rolling(1.0, 0.0).creep_over_V
     for n in (16, 64, 256, 1024, 4096):
-        ci = sliding_initiation(1.0, 0.999, method="collocation", n=n, raise_on_failure=False)
-        cr = steady_rolling(1.0, -0.999, method="collocation", n=n, raise_on_failure=False)
+        ci = sliding_initiation(1.0, 0.999, method="collocation", n=n, on_failure="report")
+        cr = steady_rolling(1.0, -0.999, method="collocation", n=n, on_failure="report")
         lin = -2 * _rolling._roll_solve(np.array([0.0]), n, "linear").extra[0]
         print(
             f"  {n:>7}   {rel(ci.T_over_Ea, f_i):.1e}      {rel(cr.creep_over_V, f_r):.1e}"

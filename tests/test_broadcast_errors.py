@@ -1,6 +1,6 @@
 """Error paths over every broadcast shape: the first failing point is named, never a crash.
 
-Each vectorised function that raises for a point (``on_sliding="raise"``,
+Each vectorised function that raises for a point (``on_failure="raise"``,
 ``raise_on_failure=True``, ``on_no_equilibrium="raise"``, the domain checks) is called with
 each argument in a drawn layout, a scalar, ``(n,)``, ``(1, n)`` or ``(m, 1)``, so that any
 argument may be the one that sets the points' shape, and with one failing value placed at a
@@ -76,7 +76,7 @@ _TAU = ("tau0_over_E", "T_over_Ea")
 _COUL = ("mu", "a_over_R", "T_over_muF")
 _NORMAL = ("F_over_Eh", "R_over_h", "sigma0_over_E")
 _SLIDING = ("F_over_Eh2", "R_over_h2", "h1_over_h2", "sigma0_over_E")
-_RAISE = {"on_sliding": "raise"}
+_RAISE = {"on_failure": "raise"}
 
 CASES: dict[str, Case] = {
     # beyond full slip: T >= 2 a tau0 (a load too large, or a shear strength too small)
@@ -277,39 +277,39 @@ def test_out_of_domain_names_the_argument(name):
 REPORTS: dict[str, tuple[str, dict, Callable[[object], tuple[np.ndarray, np.ndarray]]]] = {
     # case -> (the keyword that reports, its value, (marked, finite value) of a result)
     "steady_rolling": (
-        "on_sliding", {"on_sliding": "report"},
+        "on_failure", {"on_failure": "report"},
         lambda r: (np.asarray(r.state) == "sliding", np.asarray(r.d_over_a, float)),
     ),
     "sliding_initiation": (
-        "on_sliding", {"on_sliding": "report"},
+        "on_failure", {"on_failure": "report"},
         lambda r: (np.asarray(r.state) == "sliding", np.asarray(r.d_over_a, float)),
     ),
     "steady_rolling_coulomb": (
-        "on_sliding", {"on_sliding": "report"},
+        "on_failure", {"on_failure": "report"},
         lambda r: (np.asarray(r.state) == "sliding", np.asarray(r.d_over_a, float)),
     ),
     "sliding_initiation_coulomb": (
-        "on_sliding", {"on_sliding": "report"},
+        "on_failure", {"on_failure": "report"},
         lambda r: (np.asarray(r.state) == "sliding", np.asarray(r.d_over_a, float)),
     ),
     "contact_for_load": (
-        "on_no_equilibrium", {"on_no_equilibrium": "report"},
+        "on_failure", {"on_failure": "report"},
         lambda r: (np.asarray(r.state) == "no-equilibrium", np.asarray(r.a_over_R, float)),
     ),
     "sliding_contact_for_load": (
-        "on_no_equilibrium", {"method": "closed-form", "on_no_equilibrium": "report"},
+        "on_failure", {"method": "closed-form", "on_failure": "report"},
         lambda r: (np.asarray(r.state) == "no-equilibrium", np.asarray(r.a_over_R, float)),
     ),
     "normal_contact": (
-        "raise_on_failure", {"method": "collocation", "n": 4, "raise_on_failure": False},
+        "on_failure", {"method": "collocation", "n": 4, "on_failure": "report"},
         lambda r: (~np.asarray(r.converged, bool), np.asarray(r.F_over_Eh, float)),
     ),
     "sliding_contact": (
-        "raise_on_failure", {"method": "collocation", "n": 4, "raise_on_failure": False},
+        "on_failure", {"method": "collocation", "n": 4, "on_failure": "report"},
         lambda r: (~np.asarray(r.converged, bool), np.asarray(r.F_over_Eh2, float)),
     ),
     "steady_rolling_collocation": (
-        "raise_on_failure", {"method": "collocation", "raise_on_failure": False},
+        "on_failure", {"method": "collocation", "on_failure": "report"},
         lambda r: (~np.asarray(r.converged, bool), np.asarray(r.d_over_a, float)),
     ),
 }  # fmt: skip
@@ -345,7 +345,7 @@ def test_report_marks_the_failing_points(name):
 def test_regression_scalar_load_over_two_shear_strengths(fn):
     """The load broadcast over two points: the message builder indexed it at point 1."""
     with pytest.raises(NoEquilibriumError) as info:
-        fn([1.0, 0.5], T_over_Ea=1.5, on_sliding="raise")
+        fn([1.0, 0.5], T_over_Ea=1.5, on_failure="raise")
     msg = str(info.value)
     assert "T_over_Ea=1.5 is at or above the full-slip load 1.0" in msg
     assert "tau0_over_E=0.5" in msg
@@ -354,17 +354,17 @@ def test_regression_scalar_load_over_two_shear_strengths(fn):
 def test_regression_row_and_column():
     """A row of loads and a column of strengths: the first failing point is (0, 1)."""
     with pytest.raises(NoEquilibriumError, match=r"T_over_Ea=2\.5 .* tau0_over_E=0\.5\b"):
-        lc.steady_rolling([[0.5], [1.0]], T_over_Ea=[0.1, 2.5], on_sliding="raise")
+        lc.steady_rolling([[0.5], [1.0]], T_over_Ea=[0.1, 2.5], on_failure="raise")
     with pytest.raises(NoEquilibriumError, match=r"T_over_muF=1\.5 .* a_over_R=0\.02\b"):
         lc.sliding_initiation_coulomb(
-            0.3, [[0.02], [0.01]], T_over_muF=[0.5, 0.5, 1.5], on_sliding="raise"
+            0.3, [[0.02], [0.01]], T_over_muF=[0.5, 0.5, 1.5], on_failure="raise"
         )
 
 
 def test_d_over_a_at_full_slip_names_d():
     """Full slip given as d/a = 0 names d/a and the load it means, not d/a as the load."""
     with pytest.raises(NoEquilibriumError) as info:
-        lc.sliding_initiation([[1.0], [0.25]], [0.5, 0.0], on_sliding="raise")
+        lc.sliding_initiation([[1.0], [0.25]], [0.5, 0.0], on_failure="raise")
     msg = str(info.value)
     assert "d_over_a=0.0 is full slip (T_over_Ea=2.0, the full-slip load)" in msg
     assert "tau0_over_E=1.0" in msg
@@ -378,9 +378,9 @@ def test_kappa_limit_over_a_row_and_a_column():
 
 def test_lennard_jones_limit_and_pull_off_over_a_grid():
     with pytest.raises(ValueError, match=r"R_over_h=100\.0, sigma0_over_E=1000000\.0 give mu"):
-        lc.pull_off([[100.0], [1.0]], [0.1, 1e6], law="lennard-jones")
+        lc.laws.lennard_jones.pull_off([[100.0], [1.0]], [0.1, 1e6])
     with pytest.raises(NoEquilibriumError, match=r"F_over_Eh=-50\.0 .*R_over_h=50\.0"):
-        lc.contact_for_load([[0.5], [-50.0]], [50.0, 100.0], 0.2, law="lennard-jones")
+        lc.laws.lennard_jones.contact_for_load([[0.5], [-50.0]], [50.0, 100.0], 0.2)
 
 
 def test_cylinder_push_too_wide_over_a_grid():

@@ -31,7 +31,7 @@ def test_json_contract(capsys):
     assert code == 0, err
     recs = records(out)
     assert len(recs) == 2
-    ref = sliding_contact([0.01, 0.02], 100.0, 1.5, 0.01)
+    ref = sliding_contact([0.01, 0.02], 100.0, 1.5, 0.01, method="collocation")  # the CLI's
     for i, rec in enumerate(recs):
         assert CONTRACT_KEYS <= set(rec)
         for k in CONTRACT_KEYS:
@@ -81,7 +81,9 @@ def test_inverse_with_friction(capsys):
     )
     assert code == 0
     recs = records(out)
-    ref = sliding_contact_for_load([-0.5, 1.0], 100.0, 2.0, 0.04, tau0_over_E=0.01)
+    ref = sliding_contact_for_load(
+        [-0.5, 1.0], 100.0, 2.0, 0.04, tau0_over_E=0.01, method="collocation"
+    )
     np.testing.assert_allclose([r["a_over_R"] for r in recs], ref.a_over_R, rtol=1e-14)
     np.testing.assert_allclose([r["T_over_Eh2"] for r in recs], ref.T_over_Eh2, rtol=1e-14)
     assert all(r["stable"] for r in recs)
@@ -104,7 +106,7 @@ def test_si_mode_matches_groups(capsys):
     code, out, err = run(capsys, "slide", *si, "--a", "1e-9", "--tau0", "5e8", "--json")
     assert code == 0, err
     rec = records(out)[0]
-    ref = sliding_contact(0.02, 100.0, 1.5, 0.01, tau0_over_E=0.005)
+    ref = sliding_contact(0.02, 100.0, 1.5, 0.01, tau0_over_E=0.005, method="collocation")
     for k in ("c1_over_R", "c2_over_R", "e_over_R", "F_over_Eh2", "M_over_Eh2R"):
         assert math.isclose(rec[k], getattr(ref, k), rel_tol=1e-12), k
     Eh = 100e9 * 0.5e-9

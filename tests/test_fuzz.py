@@ -229,7 +229,7 @@ def _assert_load_at_width(a, F, rho, s):
 @FUZZ
 @given(inside("F_over_Eh"), inside("R_over_h"), inside("sigma0_over_E"))
 def test_unstable_branch_reports_or_round_trips(F, rho, s):
-    r = _quiet(lc.contact_for_load, F, rho, s, branch="unstable", on_no_equilibrium="report")
+    r = _quiet(lc.contact_for_load, F, rho, s, branch="unstable", on_failure="report")
     if r is None:
         return
     if r.state != "contact":
@@ -355,11 +355,14 @@ def test_sliding_pull_off_inside(rho, r, s):
 @FUZZ
 @given(inside("tau0_over_E"), st.floats(0.0, 1.0, exclude_max=True), inside("T_over_Ea"))
 def test_sliding_initiation_inside(t0, d, T):
-    r = lc.sliding_initiation(t0, d)
+    # full slip (d = 0, T >= 2 tau0) is reported here; by default it raises
+    r = lc.sliding_initiation(t0, d, on_failure="report")
     assert _finite(r.T_over_Ea) and 0 <= r.T_over_Ea <= 2 * t0 * (1 + 1e-15)
-    g = lc.sliding_initiation(t0, T_over_Ea=T)
+    g = lc.sliding_initiation(t0, T_over_Ea=T, on_failure="report")
     if T >= 2 * t0:
         assert g.state == "sliding"
+        with pytest.raises(NoEquilibriumError, match="full-slip load"):
+            lc.sliding_initiation(t0, T_over_Ea=T)
     else:
         # T/(2 tau0) ~ sqrt(2 (1 - d)): d/a is 1.0 below T ~ 2e-8 of full slip, and the
         # forward map from the d/a returned is good to T ~ 2 tau0 sqrt(2 ulp(1))
@@ -380,7 +383,7 @@ def test_steady_rolling_inside(t0, d, T):
     r = lc.steady_rolling(t0, d)
     assert _finite(r.T_over_Ea, r.creep_over_V) and r.creep_over_V <= 0
     assert r.T_over_Ea <= 2 * t0 * (1 + 1e-15)
-    g = lc.steady_rolling(t0, T_over_Ea=T)
+    g = lc.steady_rolling(t0, T_over_Ea=T, on_failure="report")
     if T >= 2 * t0:
         assert g.state == "sliding" and np.isnan(g.creep_over_V)
     else:
@@ -402,7 +405,7 @@ def test_rolling_collocation_agrees_or_says_it_did_not_converge(t0, d):
 @given(inside("mu"), inside("a_over_R"), inside("T_over_muF"), st.booleans())
 def test_coulomb_problems_inside(mu, a, T, rolling):
     fn = lc.steady_rolling_coulomb if rolling else lc.sliding_initiation_coulomb
-    r = _quiet(fn, mu, a, T_over_muF=T)
+    r = _quiet(fn, mu, a, T_over_muF=T, on_failure="report")
     assert r is not None
     if T >= 1:
         assert r.state == "sliding"

@@ -94,7 +94,7 @@ def test_cyclic_loss_coulomb_incremental_tiny_amplitude_is_never_negative():
         lc.cyclic_loss_coulomb(3.36, 0.01, 1.0e-12, method="incremental")
     # ... and the friction work of each step is B |ds| >= 0: never negative
     h = lc.tangential_history_coulomb(
-        3.36, 0.01, [1e-12, -1e-12, 1e-12], method="incremental", raise_on_failure=False
+        3.36, 0.01, [1e-12, -1e-12, 1e-12], method="incremental", on_failure="report"
     )
     assert np.all(h.dissipation_over_Ea2 >= 0)
     # where the loss is resolved it is the closed form (measured 4.4e-7 at Q = 1e-6)

@@ -36,6 +36,7 @@ FLOORS = {
         "linecontact.push",
         "linecontact.lennard_jones",
         "linecontact.lennard_jones_groups",
+        "linecontact.laws",
         "linecontact.adhesion_map",
     ],
     "si": ["linecontact.cylinder", "linecontact.inverse"],

@@ -1,10 +1,11 @@
-"""law="lennard-jones" on the load curve, the contact for a load, Cylinder and the CLI.
+"""The Lennard-Jones law: linecontact.laws.lennard_jones, Cylinder's methods and the CLI.
 
 The conversion to the Dugdale groups is checked against the native solver
 (:mod:`linecontact.lennard_jones`) with the groups derived here from the matching alone
 (``w = sigma0 h``, ``sigma0 = S w/z0``, ``S = 16/(9 sqrt 3)``), not with the library's
 ``mu_of_dugdale``; the contact for a load read off the curve against the curve; the Dugdale
-default against the explicit ``law="dugdale"``; bad input; the CLI's JSON and exit codes.
+default against the explicit ``law="dugdale"``; bad input; the CLI's JSON and exit codes; the
+deprecated ``law="lennard-jones"`` (it warns and gives the module's answer).
 Parameters are chosen for ``mu`` about 0.1 (a solve about a second).
 """
 
@@ -12,6 +13,7 @@ from __future__ import annotations
 
 import json
 import math
+import warnings
 
 import numpy as np
 import pytest
@@ -26,6 +28,7 @@ from linecontact.cylinder import (
     CylinderPullOff,
 )
 from linecontact.domain import DOMAIN
+from linecontact.laws import lennard_jones as lj_law
 from linecontact.lennard_jones import lj_contact_for_load, lj_curve, lj_pull_off, lj_state
 from linecontact.lennard_jones_groups import (
     LJ_LOAD_MAX,
@@ -71,7 +74,7 @@ def document(text):
 
 @pytest.fixture(scope="module")
 def curve():
-    return lc.load_curve(RHO, SIG, law=LJ)
+    return lj_law.load_curve(RHO, SIG)
 
 
 # --------------------------------------------------------------------------------------------
@@ -81,7 +84,7 @@ def curve():
 def test_contact_for_load_is_the_native_solver_in_dugdale_groups():
     mu, root, scale = native_groups(RHO, SIG)
     F = 0.05
-    r = lc.contact_for_load(F, RHO, SIG, law=LJ)
+    r = lj_law.contact_for_load(F, RHO, SIG)
     st = lj_contact_for_load(F / scale, mu)
     assert isinstance(r, LennardJonesContact) and r.law == LJ
     assert r.mu == pytest.approx(mu, rel=1e-14)
@@ -124,7 +127,7 @@ def test_curve_is_the_native_curve_in_dugdale_groups(curve):
     assert np.all(np.diff(curve.central_gap_over_h) < 0)
     assert curve.F_over_Eh[-1] >= 7.5 * scale and curve.a_over_R[-1] > 0
     # and it is the pull-off of pull_off(law="lennard-jones"), to the error estimates
-    ref = lc.pull_off(RHO, SIG, law=LJ)
+    ref = lj_law.pull_off(RHO, SIG)
     assert abs(ref.F_pulloff_over_Eh - po.F_pulloff_over_Eh) <= 10 * (
         ref.error_estimate_over_Eh + po.error_estimate_over_Eh
     )
@@ -139,7 +142,7 @@ def test_contact_for_loads_read_off_the_curve_give_them_back(curve):
     idx = pick[[0, -1]]  # just beyond the pull-off (tensile) and a compressive load
     F = curve.F_over_Eh[idx]
     assert F[0] < 0 < F[1]
-    r = lc.contact_for_load(F, RHO, SIG, law=LJ)  # arrays in, arrays out
+    r = lj_law.contact_for_load(F, RHO, SIG)  # arrays in, arrays out
     assert r.a_over_R.shape == (2,) and list(r.state) == ["contact", "contact"]
     np.testing.assert_array_equal(r.F_over_Eh, F)
     np.testing.assert_allclose(r.central_gap_over_h, curve.central_gap_over_h[idx], rtol=1e-8)
@@ -153,7 +156,7 @@ def test_contact_for_loads_read_off_the_curve_give_them_back(curve):
 
 def test_contact_for_load_broadcasts_and_solves_a_repeated_point_once():
     F = np.array([[0.0], [0.05]])
-    r = lc.contact_for_load(F, [RHO, RHO], SIG, law=LJ)
+    r = lj_law.contact_for_load(F, [RHO, RHO], SIG)
     assert r.a_over_R.shape == (2, 2) and r.n.shape == (2, 2)
     np.testing.assert_array_equal(r.a_over_R[:, 0], r.a_over_R[:, 1])
     assert np.all(r.a_over_R[1] > r.a_over_R[0])  # wider under the larger load
@@ -165,9 +168,9 @@ def test_contact_for_load_broadcasts_and_solves_a_repeated_point_once():
 
 
 def test_a_load_below_the_pull_off_raises_naming_the_first_such_point():
-    po = lc.pull_off(RHO, SIG, law=LJ).F_pulloff_over_Eh
+    po = lj_law.pull_off(RHO, SIG).F_pulloff_over_Eh
     with pytest.raises(NoEquilibriumError, match=r"F_over_Eh=-1\.0 .*pulled off"):
-        lc.contact_for_load([0.05, -1.0, -2.0], RHO, SIG, law=LJ)
+        lj_law.contact_for_load([0.05, -1.0, -2.0], RHO, SIG)
     # the Dugdale law refuses a load below its own pull-off the same way
     assert -1.0 < lc.pull_off(RHO, SIG).F_pulloff_over_Eh and -1.0 < po
     with pytest.raises(NoEquilibriumError, match="pulled off"):
@@ -175,7 +178,7 @@ def test_a_load_below_the_pull_off_raises_naming_the_first_such_point():
 
 
 def test_a_load_below_the_pull_off_is_reported_on_request():
-    r = lc.contact_for_load([-1.0, 0.05], RHO, SIG, law=LJ, on_no_equilibrium="report")
+    r = lj_law.contact_for_load([-1.0, 0.05], RHO, SIG, on_failure="report")
     assert list(r.state) == ["no-equilibrium", "contact"]
     assert math.isnan(r.a_over_R[0]) and r.a_over_R[1] > 0
     assert list(r.converged) == [False, True] and list(r.stable) == [False, True]
@@ -202,7 +205,7 @@ def fibre():
 def test_cylinder_contact_for_a_load_in_si(fibre):
     cyl, (R, w, z0, mu) = fibre
     unit = w * math.sqrt(R / z0)  # N/m
-    c = cyl.contact(load=0.2, law=LJ)
+    c = cyl.lennard_jones_contact(load=0.2)
     st = lj_contact_for_load(0.2 / unit, mu)
     assert isinstance(c, CylinderLennardJonesContact)
     assert c.load == 0.2 and c.state == "contact" and c.stable is True
@@ -215,7 +218,7 @@ def test_cylinder_contact_for_a_load_in_si(fibre):
 def test_cylinder_pull_off_in_si(fibre):
     cyl, (R, w, z0, mu) = fibre
     unit = w * math.sqrt(R / z0)
-    p = cyl.pull_off(law=LJ)
+    p = cyl.lennard_jones_pull_off()
     ref = lj_pull_off(mu)
     assert isinstance(p, CylinderLennardJonesPullOff)
     assert p.pull_off_force == pytest.approx(ref.F_pulloff * unit, rel=1e-8)
@@ -223,24 +226,20 @@ def test_cylinder_pull_off_in_si(fibre):
     assert p.central_gap_at_pull_off == pytest.approx(ref.central_gap_at_pulloff * z0, rel=1e-8)
     # below it no contact: said in N/m
     with pytest.raises(NoEquilibriumError, match=r"load=-5\.0 N/m .*pull-off force -\d.* N/m"):
-        cyl.contact(load=-5.0, law=LJ)
+        cyl.lennard_jones_contact(load=-5.0)
 
 
 def test_cylinder_refuses_what_the_law_does_not_do(fibre):
     cyl, _ = fibre
-    with pytest.raises(ValueError, match="given load only"):
-        cyl.contact(contact_half_width=1e-9, law=LJ)
-    with pytest.raises(ValueError, match="branch"):
-        cyl.contact(load=0.1, branch="unstable", law=LJ)
     with pytest.raises(ValueError, match="law must be"):
         cyl.contact(load=0.1, law="lj")
     with pytest.raises(ValueError, match="law must be"):
         cyl.pull_off(law="lj")
     with pytest.raises(ValueError, match=r"beyond the loads .* N/m"):
-        cyl.contact(load=1e3, law=LJ)
+        cyl.lennard_jones_contact(load=1e3)
     hertz = Cylinder.from_modulus(50e-9, 20e9, adhesion_range=0.3e-9)
     with pytest.raises(ValueError, match="the Lennard-Jones law needs adhesion"):
-        hertz.contact(load=0.1, law=LJ)
+        hertz.lennard_jones_contact(load=0.1)
 
 
 # --------------------------------------------------------------------------------------------
@@ -272,18 +271,15 @@ def test_the_dugdale_default_is_unchanged():
     [
         (lambda: lc.contact_for_load(0.0, RHO, SIG, law="lj"), "law must be"),
         (lambda: lc.load_curve(RHO, SIG, law="Lennard-Jones"), "law must be"),
-        (lambda: lc.contact_for_load(0.0, RHO, SIG_BAD, law=LJ), f"mu={MU_BAD:.6g}"),
-        (lambda: lc.load_curve(RHO, SIG_BAD, law=LJ), f"mu={MU_BAD:.6g}"),
-        (lambda: lc.contact_for_load(0.0, RHO, 0.0, law=LJ), "sigma0_over_E must be > 0"),
-        (lambda: lc.load_curve(RHO, 0.0, law=LJ), "sigma0_over_E must be > 0"),
-        (lambda: lc.contact_for_load([0.0, 0.1], [RHO, RHO], [SIG, 0.0], law=LJ), "> 0"),
-        (lambda: lc.contact_for_load(0.0, RHO, SIG, branch="unstable", law=LJ), "unstable"),
-        (lambda: lc.contact_for_load(math.nan, RHO, SIG, law=LJ), "F_over_Eh"),
-        (lambda: lc.contact_for_load(3.0, RHO, SIG, law=LJ), "beyond the loads"),
-        (lambda: lc.load_curve(RHO, SIG, law=LJ, F_max_over_Eh=3.0), "beyond the loads"),
-        (lambda: lc.load_curve(RHO, SIG, law=LJ, F_max_over_Eh=-1.0), "F_max_over_Eh"),
-        (lambda: lc.load_curve(RHO, SIG, law=LJ, num=10), "apply to law='dugdale'"),
-        (lambda: lc.load_curve(RHO, SIG, law=LJ, a_max_over_R=0.1), "apply to law='dugdale'"),
+        (lambda: lj_law.contact_for_load(0.0, RHO, SIG_BAD), f"mu={MU_BAD:.6g}"),
+        (lambda: lj_law.load_curve(RHO, SIG_BAD), f"mu={MU_BAD:.6g}"),
+        (lambda: lj_law.contact_for_load(0.0, RHO, 0.0), "sigma0_over_E must be > 0"),
+        (lambda: lj_law.load_curve(RHO, 0.0), "sigma0_over_E must be > 0"),
+        (lambda: lj_law.contact_for_load([0.0, 0.1], [RHO, RHO], [SIG, 0.0]), "> 0"),
+        (lambda: lj_law.contact_for_load(math.nan, RHO, SIG), "F_over_Eh"),
+        (lambda: lj_law.contact_for_load(3.0, RHO, SIG), "beyond the loads"),
+        (lambda: lj_law.load_curve(RHO, SIG, F_max_over_Eh=3.0), "beyond the loads"),
+        (lambda: lj_law.load_curve(RHO, SIG, F_max_over_Eh=-1.0), "F_max_over_Eh"),
         (lambda: lc.load_curve(RHO, SIG, F_max_over_Eh=1.0), "applies to law='lennard-jones'"),
     ],
 )
@@ -293,22 +289,93 @@ def test_bad_input_is_refused_before_any_solve(call, match):
     assert not isinstance(exc.value, NoEquilibriumError)
 
 
+# --------------------------------------------------------------------------------------------
+# a law is a module: the deprecated law="lennard-jones"
+
+
+def test_the_modules_share_names_and_argument_order():
+    import inspect
+
+    from linecontact.laws import dugdale
+
+    for name in ("pull_off", "contact_for_load", "load_curve"):
+        md, lj = (inspect.signature(getattr(m, name)) for m in (dugdale, lj_law))
+        positional = [p for p in lj.parameters.values() if p.kind is p.POSITIONAL_OR_KEYWORD]
+        assert [p.name for p in positional] == list(md.parameters)[: len(positional)]
+    assert dugdale.pull_off is lc.pull_off and lc.laws.lennard_jones is lj_law
+
+
+def test_the_default_and_law_dugdale_do_not_warn(fibre):
+    cyl, _ = fibre
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", DeprecationWarning)
+        lc.pull_off(RHO, SIG)
+        lc.pull_off(RHO, SIG, law="dugdale")
+        lc.contact_for_load(0.1, RHO, SIG, law="dugdale")
+        lc.load_curve(RHO, SIG, num=5, num_noncontact=2, law="dugdale")
+        cyl.pull_off(law="dugdale")
+        cyl.contact(load=0.1, law="dugdale")
+
+
+def test_the_deprecated_law_still_works_and_warns(curve, fibre):
+    cyl, _ = fibre
+    with pytest.warns(DeprecationWarning, match=r"linecontact\.laws\.lennard_jones\.pull_off"):
+        po = lc.pull_off(RHO, SIG, law=LJ)
+    assert po.F_pulloff_over_Eh == pytest.approx(lj_law.pull_off(RHO, SIG).F_pulloff_over_Eh)
+    with pytest.warns(DeprecationWarning, match="lennard_jones.contact_for_load") as rec:
+        r = lc.contact_for_load([-1.0, 0.05], RHO, SIG, law=LJ, on_failure="report")
+    assert rec[0].filename == __file__  # said at the caller's line
+    ref = lj_law.contact_for_load([-1.0, 0.05], RHO, SIG, on_failure="report")
+    assert isinstance(r, LennardJonesContact) and list(r.state) == list(ref.state)
+    np.testing.assert_allclose(r.a_over_R, ref.a_over_R, rtol=1e-8)
+    with pytest.warns(DeprecationWarning, match="lennard_jones.load_curve"):
+        c = lc.load_curve(RHO, SIG, law=LJ)
+    np.testing.assert_allclose(c.F_over_Eh, curve.F_over_Eh, rtol=1e-8, atol=1e-9)
+    with pytest.warns(DeprecationWarning, match=r"Cylinder\.lennard_jones_pull_off\(\)"):
+        p = cyl.pull_off(law=LJ)
+    assert isinstance(p, CylinderLennardJonesPullOff)
+    assert p.pull_off_force == pytest.approx(cyl.lennard_jones_pull_off().pull_off_force, rel=1e-8)
+    with pytest.warns(DeprecationWarning, match=r"Cylinder\.lennard_jones_contact"):
+        k = cyl.contact(load=0.2, law=LJ)
+    assert isinstance(k, CylinderLennardJonesContact)
+    assert k.contact_half_width == pytest.approx(
+        cyl.lennard_jones_contact(load=0.2).contact_half_width, rel=1e-8
+    )
+
+
+@pytest.mark.parametrize(
+    ("call", "match"),
+    [
+        (lambda c: lc.contact_for_load(0.0, RHO, SIG, branch="unstable", law=LJ), "unstable"),
+        (lambda c: lc.load_curve(RHO, SIG, law=LJ, num=10), "apply to law='dugdale'"),
+        (lambda c: lc.load_curve(RHO, SIG, law=LJ, a_max_over_R=0.1), "apply to law='dugdale'"),
+        (lambda c: c.contact(contact_half_width=1e-9, law=LJ), "given load only"),
+        (lambda c: c.contact(load=0.1, branch="unstable", law=LJ), "branch"),
+    ],
+)
+def test_the_deprecated_law_refuses_the_dugdale_options(fibre, call, match):
+    with pytest.warns(DeprecationWarning), pytest.raises(ValueError, match=match):
+        call(fibre[0])
+
+
 def test_the_load_limit_is_ten_rigid_pull_offs():
     _, _, scale = native_groups(RHO, SIG)
     assert LJ_LOAD_MAX == pytest.approx(-10 * lennard_jones_rigid_pull_off()[0], rel=0.02)
     with pytest.raises(ValueError, match=f"F_over_Eh = {LJ_LOAD_MAX * scale:.6g}"):
-        lc.contact_for_load(1.01 * LJ_LOAD_MAX * scale, RHO, SIG, law=LJ)
+        lj_law.contact_for_load(1.01 * LJ_LOAD_MAX * scale, RHO, SIG)
 
 
 # --------------------------------------------------------------------------------------------
 # the command line
 
 
+@pytest.mark.filterwarnings("error::DeprecationWarning")  # the CLI calls the module
 def test_cli_curve_lennard_jones_json(capsys, curve):
     code, out, err = run(
         capsys, "curve", "--R-over-h", "100", "--sigma0-over-E", "0.01", "--law", LJ, "--json"
     )
     assert code == 0, err
+    assert "deprecated" not in err
     doc = document(out)
     p = doc["parameters"]
     assert p["law"] == LJ and p["R_over_h"] == RHO and p["sigma0_over_E"] == SIG
@@ -333,6 +400,7 @@ def test_cli_curve_lennard_jones_json(capsys, curve):
     assert recs[i]["F_over_Eh"] == min(r["F_over_Eh"] for r in recs)
 
 
+@pytest.mark.filterwarnings("error::DeprecationWarning")  # the CLI calls the module
 def test_cli_curve_lennard_jones_si_json(capsys):
     argv = [
         "--radius",
@@ -346,6 +414,7 @@ def test_cli_curve_lennard_jones_si_json(capsys):
     ]
     code, out, err = run(capsys, "curve", *argv, "--law", LJ, "--length", "1e-6", "--json")
     assert code == 0, err
+    assert "deprecated" not in err
     doc = document(out)
     p = doc["parameters"]
     assert p["law"] == LJ and p["z0_m"] == 0.3e-9 and p["radius_m"] == 50e-9
@@ -362,6 +431,7 @@ def test_cli_curve_lennard_jones_si_json(capsys):
     assert doc["units"]["F_N_per_m"] == "N/m" and doc["units"]["central_gap_m"] == "m"
 
 
+@pytest.mark.filterwarnings("error::DeprecationWarning")  # the CLI calls the module
 def test_cli_normal_lennard_jones_reports_a_load_below_the_pull_off(capsys):
     code, out, err = run(
         capsys,
@@ -378,6 +448,7 @@ def test_cli_normal_lennard_jones_reports_a_load_below_the_pull_off(capsys):
         "--json",
     )
     assert code == 0, err
+    assert "deprecated" not in err
     doc = document(out)
     assert doc["parameters"]["law"] == LJ
     below, ok = doc["results"]

@@ -193,10 +193,11 @@ def test_convergence_error_names_the_point(monkeypatch):
 
 
 def test_pull_off_law_lennard_jones_in_dugdale_groups():
+    from linecontact.laws.lennard_jones import pull_off as lj_groups_pull_off
     from linecontact.lennard_jones import LennardJonesPullOff
 
     R_over_h, s = 100.0, 0.05
-    p = pull_off(R_over_h, s, law="lennard-jones")
+    p = lj_groups_pull_off(R_over_h, s)
     assert isinstance(p, LennardJonesPullOff) and p.law == "lennard-jones"
     mu, R_over_z0 = mu_of_dugdale(R_over_h, s)
     native = lj_pull_off(float(mu))
@@ -206,12 +207,12 @@ def test_pull_off_law_lennard_jones_in_dugdale_groups():
     )
     # Dugdale with the same w and peak tension pulls harder
     assert pull_off(R_over_h, s).F_pulloff_over_Eh < p.F_pulloff_over_Eh < 0
-    arr = pull_off([R_over_h, 1000.0], s / 3, law="lennard-jones")
+    arr = lj_groups_pull_off([R_over_h, 1000.0], s / 3)
     assert arr.F_pulloff_over_Eh.shape == (2,)
     with pytest.raises(ValueError, match="mu"):
-        pull_off(100.0, 2.0, law="lennard-jones")
+        lj_groups_pull_off(100.0, 2.0)
     with pytest.raises(ValueError, match="sigma0_over_E must be > 0"):
-        pull_off(100.0, 0.0, law="lennard-jones")
+        lj_groups_pull_off(100.0, 0.0)
     with pytest.raises(ValueError, match="law must be"):
         pull_off(100.0, 0.01, law="lj")
 

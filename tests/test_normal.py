@@ -284,9 +284,7 @@ def test_collocation_converges_geometrically():
     assert abs(m - 1.05) < 1e-3
     rate = m + np.sqrt(m * m - 1)  # Bernstein ellipse of the log source at x = c
     ns = [16, 32, 64, 128]
-    runs = [
-        normal_contact(A, rho, s, method="collocation", n=n, raise_on_failure=False) for n in ns
-    ]
+    runs = [normal_contact(A, rho, s, method="collocation", n=n, on_failure="report") for n in ns]
     errF = np.array([abs(r.F_over_Eh - cf.F_over_Eh) / abs(cf.F_over_Eh) for r in runs])
     errC = np.array([abs(r.c_over_R / cf.c_over_R - 1) for r in runs])
     for i in range(len(ns) - 1):
@@ -345,7 +343,7 @@ def test_convergence_error_names_the_point():
     ):
         normal_contact(0.1, 1e4, 0.3, method="collocation", n=16)
     assert issubclass(ConvergenceError, RuntimeError)
-    r = normal_contact(0.1, 1e4, 0.3, method="collocation", n=16, raise_on_failure=False)
+    r = normal_contact(0.1, 1e4, 0.3, method="collocation", n=16, on_failure="report")
     assert r.converged is False and r.n_collocation == 16 and r.error_estimate > 1e-11
     # the first failing point of an array is the one named
     with pytest.raises(ConvergenceError, match=r"a_over_R=.*0\.2"):

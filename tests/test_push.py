@@ -99,7 +99,7 @@ def test_contacts_agree_with_the_other_method(p):
     assert r.converged and r.residual_load < 1e-10
     s = lc.sliding_contact_for_load(F, *args[:3], method="collocation")
     assert r.a_slide_over_R == pytest.approx(s.a_over_R, rel=1e-9)
-    rest = lc.contact_for_load(F, p["R_over_h2"], p["sigma0_over_E"], on_no_equilibrium="report")
+    rest = lc.contact_for_load(F, p["R_over_h2"], p["sigma0_over_E"], on_failure="report")
     if rest.state != "contact":  # no contact at rest carries a load between the pull-offs
         assert math.isnan(r.a_rest_over_R) and math.isnan(r.Q_onset_over_Eh2)
     elif r.a_rest_over_R >= 1e-20:  # (narrower: zero width to round-off)

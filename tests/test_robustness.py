@@ -317,7 +317,7 @@ SOLVERS = [
     (lc.normal_contact, (0.01, 100.0, 0.01), {"method": "collocation"}),
     (lc.sliding_initiation, (0.01, 0.5), {"method": "collocation"}),
     (lc.steady_rolling_coulomb, (0.3, 0.01, 0.5), {"method": "collocation"}),
-    (lc.sliding_contact, (0.03, 100.0, 2.0, 0.01), {}),
+    (lc.sliding_contact, (0.03, 100.0, 2.0, 0.01), {"method": "collocation"}),
     (lc.sliding_contact_for_load, (0.5, 100.0, 2.0, 0.01), {"method": "closed-form"}),
 ]
 
@@ -325,8 +325,9 @@ SOLVERS = [
 @pytest.mark.parametrize(
     "option, value, message",
     [
-        ("raise_on_failure", "no", r"^raise_on_failure must be True or False, got 'no'$"),
-        ("raise_on_failure", None, r"^raise_on_failure must be True or False, got None$"),
+        ("on_failure", "no", r"^on_failure must be 'raise' or 'report', got 'no'$"),
+        ("on_failure", None, r"^on_failure must be 'raise' or 'report', got None$"),
+        ("on_failure", False, r"^on_failure must be 'raise' or 'report', got False$"),
         ("tol", True, r"^tol must be in \[1e-15, 1e-2\), got True$"),
         ("tol", np.nan, r"^tol must be in \[1e-15, 1e-2\), got nan$"),
         ("tol", "1e-10", r"^tol must be in \[1e-15, 1e-2\), got '1e-10'$"),
@@ -514,7 +515,7 @@ def test_tiny_widths_by_collocation():
     assert col.converged and col.c_over_R == pytest.approx(
         lc.normal_contact(1e-150, 100.0, 0.01).c_over_R, rel=1e-12
     )
-    col = lc.sliding_contact(1e-20, 100.0, 2.0, 0.01)
+    col = lc.sliding_contact(1e-20, 100.0, 2.0, 0.01, method="collocation")
     cf = lc.sliding_contact(1e-20, 100.0, 2.0, 0.01, method="closed-form")
     assert col.converged and cf.converged
     assert col.F_over_Eh2 == pytest.approx(cf.F_over_Eh2, rel=1e-12)
@@ -525,7 +526,7 @@ def test_thin_zones_beyond_the_collocation_say_so():
     args = (1.6596315985408394, 21153758.746772554, 7.749102910688328)
     with pytest.raises(ConvergenceError, match=r"the adhesive zone is too thin"):
         lc.normal_contact(*args, method="collocation")
-    assert not lc.normal_contact(*args, method="collocation", raise_on_failure=False).converged
+    assert not lc.normal_contact(*args, method="collocation", on_failure="report").converged
     assert lc.normal_contact(*args).converged  # the closed form is exact there
 
 
@@ -655,7 +656,7 @@ def test_sliding_at_the_edges_of_the_ratio_domain(ratio):
     F = lc.sliding_contact(a, 100.0, ratio, 0.01, method="closed-form").F_over_Eh2
     assert po.F_pulloff_over_Eh2 <= F.min() * (1 - 1e-12)
     assert F.min() - po.F_pulloff_over_Eh2 <= 1e-3 * abs(po.F_pulloff_over_Eh2)
-    col = lc.sliding_contact(0.05, 100.0, ratio, 0.01)
+    col = lc.sliding_contact(0.05, 100.0, ratio, 0.01, method="collocation")
     cf = lc.sliding_contact(0.05, 100.0, ratio, 0.01, method="closed-form")
     assert col.F_over_Eh2 == pytest.approx(cf.F_over_Eh2, rel=1e-9)
     assert col.c1_over_R == pytest.approx(cf.c1_over_R, rel=1e-9)

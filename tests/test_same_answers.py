@@ -43,7 +43,7 @@ def test_a_load_at_the_zero_width_end_is_the_zero_width_state(rho, r, s, rel):
         assert abs(c.F_over_Eh2 - F) <= 1e-12 * abs(F)
     # arrays: the same, point by point, in a batch with ordinary loads
     Fs = np.array([F, F + 0.5 * abs(F), F + 3 * abs(F)])
-    c = lc.sliding_contact_for_load(Fs, rho, r, s)
+    c = lc.sliding_contact_for_load(Fs, rho, r, s, method="collocation")
     assert c.a_over_R[0] == a_min and c.n_collocation[0] == 0
     assert np.all(c.a_over_R[1:] > 1e-6) and np.all(c.n_collocation[1:] > 0)
     assert np.all(c.converged)
@@ -55,7 +55,7 @@ def test_just_above_the_band_the_collocation_converges():
     po = lc.sliding_pull_off(rho, r, s)
     for rel in (2e-12, 1e-11, 1e-9):
         F = po.F_pulloff_over_Eh2 + rel * abs(po.F_pulloff_over_Eh2)
-        col = lc.sliding_contact_for_load(F, rho, r, s)
+        col = lc.sliding_contact_for_load(F, rho, r, s, method="collocation")
         cf = lc.sliding_contact_for_load(F, rho, r, s, method="closed-form")
         assert col.converged and col.n_collocation > 0 and col.a_over_R > 1e-9
         assert col.a_over_R == pytest.approx(cf.a_over_R, rel=1e-9)

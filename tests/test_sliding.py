@@ -239,21 +239,28 @@ def test_convergence_with_the_number_of_nodes():
     assert ref.c2_over_a - 1 < 0.05
     errs, ests = [], []
     for n in (16, 32, 64, 128, 256):
-        r = sl.sliding_contact(A, rho, ratio, s, n=n, raise_on_failure=False)
+        r = sl.sliding_contact(A, rho, ratio, s, method="collocation", n=n, on_failure="report")
         errs.append(abs(r.F_over_Eh2 / ref.F_over_Eh2 - 1) + abs(r.c2_over_R / ref.c2_over_R - 1))
         ests.append(r.error_estimate)
     assert all(b < a / 4 for a, b in zip(errs[:3], errs[1:4], strict=True)), errs
     assert errs[-1] < 1e-11 and ests[-1] < ests[0] / 1e6
-    auto = sl.sliding_contact(A, rho, ratio, s)
+    auto = sl.sliding_contact(A, rho, ratio, s, method="collocation")
     assert auto.n_collocation >= 64 and auto.converged
     assert abs(auto.F_over_Eh2 / ref.F_over_Eh2 - 1) < 1e-11
 
 
 def test_too_few_nodes_is_reported():
-    kw = dict(a_over_R=0.15, R_over_h2=2000.0, h1_over_h2=2.0, sigma0_over_E=0.2, n=8)
+    kw = dict(
+        a_over_R=0.15,
+        R_over_h2=2000.0,
+        h1_over_h2=2.0,
+        sigma0_over_E=0.2,
+        method="collocation",
+        n=8,
+    )
     with pytest.raises(ConvergenceError, match=r"did not converge at a_over_R=.*h1_over_h2"):
         sl.sliding_contact(**kw)
-    r = sl.sliding_contact(**kw, raise_on_failure=False)
+    r = sl.sliding_contact(**kw, on_failure="report")
     assert r.converged is False and r.error_estimate > 1e-12
 
 
@@ -290,7 +297,7 @@ def test_sweep_methods_agree_and_signs_follow_the_ranges(seed):
     rho = 10 ** rng.uniform(1, 4, n)
     ratio = 10 ** rng.uniform(-1, 1, n)
     s = 10 ** rng.uniform(-4, np.log10(0.3), n)
-    co = sl.sliding_contact(A, rho, ratio, s)
+    co = sl.sliding_contact(A, rho, ratio, s, method="collocation")
     cf = sl.sliding_contact(A, rho, ratio, s, method="closed-form")
     assert np.all(co.converged) and np.all(cf.converged)
     assert np.all(co.c1_over_R >= A) and np.all(co.c2_over_R >= A)
@@ -333,12 +340,14 @@ def test_sweep_inverse_round_trip(rho, ratio, s, load):
 
 
 def test_inverse_with_friction_and_collocation():
-    r = sl.sliding_contact_for_load([-0.5, 0.0, 1.0], 100.0, 2.0, 0.04, tau0_over_E=0.02)
+    r = sl.sliding_contact_for_load(
+        [-0.5, 0.0, 1.0], 100.0, 2.0, 0.04, tau0_over_E=0.02, method="collocation"
+    )
     assert r.method == "collocation" and np.all(r.stable) and np.all(r.converged)
     np.testing.assert_allclose(r.F_over_Eh2, [-0.5, 0.0, 1.0], rtol=1e-11, atol=1e-12)
     np.testing.assert_allclose(r.T_over_Eh2, 2 * r.a_over_R * 100 * 0.02, rtol=1e-15)
     np.testing.assert_allclose(r.T_over_Eh2, r.friction_force(0.02), rtol=1e-15)
-    direct = sl.sliding_contact(r.a_over_R, 100.0, 2.0, 0.04)
+    direct = sl.sliding_contact(r.a_over_R, 100.0, 2.0, 0.04, method="collocation")
     np.testing.assert_allclose(direct.F_over_Eh2, r.F_over_Eh2, rtol=1e-13, atol=1e-14)
     assert np.all(np.isnan(direct.T_over_Eh2))
 
@@ -390,7 +399,9 @@ def test_scalars_in_scalars_out_and_broadcasting():
     for name in ("c1_over_R", "c2_over_R", "e_over_R", "F_over_Eh2", "M_over_Eh2R"):
         assert isinstance(getattr(r, name), float), name
     assert isinstance(r.converged, bool) and isinstance(r.n_collocation, int)
-    b = sl.sliding_contact(np.array([[0.01], [0.02]]), 100.0, [1.0, 2.0, 3.0], 0.01)
+    b = sl.sliding_contact(
+        np.array([[0.01], [0.02]]), 100.0, [1.0, 2.0, 3.0], 0.01, method="collocation"
+    )
     assert b.c1_over_R.shape == (2, 3) and b.pressure(np.zeros(5)).shape == (2, 3, 5)
     recs = b.to_records()
     assert len(recs) == 6 and recs[0]["method"] == "collocation"
@@ -407,7 +418,7 @@ BAD = [
     (dict(h1_over_h2=np.inf), "h1_over_h2 must be a finite number in \\[0.001, 1000\\], got inf"),
     (dict(sigma0_over_E=-0.1), "sigma0_over_E must be in \\[0, 1e\\+06\\], got -0.1"),
     (dict(tau0_over_E=-1.0), "tau0_over_E must be in \\[0, 1\\], got -1.0"),
-    (dict(method="spline"), "method must be 'collocation' or 'closed-form'"),
+    (dict(method="spline"), "method must be 'closed-form' or 'collocation'"),
     (dict(n=1), "n must be 'auto' or an integer in \\[2, 8192\\]"),
     (dict(tol=0.5), "tol must be in \\[1e-15, 1e-2\\)"),
 ]

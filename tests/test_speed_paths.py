@@ -264,7 +264,7 @@ def test_batch_with_an_unconvergeable_point_keeps_the_others():
     A = np.array([0.02, 1.6596315985408394, 0.15])
     rho = np.array([100.0, 21153758.746772554, 100.0])
     s = np.array([0.01, 7.749102910688328, 0.01])
-    batch = lc.normal_contact(A, rho, s, method="collocation", raise_on_failure=False)
+    batch = lc.normal_contact(A, rho, s, method="collocation", on_failure="report")
     assert not batch.converged[1]
     for i in (0, 2):
         one = lc.normal_contact(float(A[i]), float(rho[i]), float(s[i]), method="collocation")
@@ -276,11 +276,12 @@ def test_batch_with_an_unconvergeable_point_keeps_the_others():
         np.array([100.0, 10.0, 100.0]),
         np.array([2.0, 0.5, 2.0]),
         np.array([0.01, 0.0078125, 0.01]),
-        raise_on_failure=False,
+        method="collocation",
+        on_failure="report",
     )
     assert not batch.converged[1]
     for i, a in ((0, 0.03), (2, 0.01)):
-        one = lc.sliding_contact(a, 100.0, 2.0, 0.01)
+        one = lc.sliding_contact(a, 100.0, 2.0, 0.01, method="collocation")
         for f in SLIDING_FIELDS:
             _close(getattr(one, f), np.asarray(getattr(batch, f))[i], f)
 
@@ -318,7 +319,7 @@ def test_collocation_batch_with_a_failing_point_keeps_the_others():
     A = np.array([0.01, 0.15, 0.02])
     rho = np.array([100.0, 5000.0, 100.0])
     s = np.array([0.01, 0.2, 0.01])
-    batch = lc.normal_contact(A, rho, s, method="collocation", n=24, raise_on_failure=False)
+    batch = lc.normal_contact(A, rho, s, method="collocation", n=24, on_failure="report")
     assert not batch.converged[1] and batch.converged[0] and batch.converged[2]
     fields = [*NORMAL_FIELDS, "error_estimate", "residual_consistency", "n_collocation"]
     for i in (0, 2):
@@ -341,7 +342,7 @@ def _collocation_results():
     d = np.linspace(0.05, 0.97, 8)
     return dict(
         normal=lc.normal_contact(A, rho, s, method="collocation"),
-        sliding=lc.sliding_contact(A[:6], rho[:6], ratio, s[:6]),
+        sliding=lc.sliding_contact(A[:6], rho[:6], ratio, s[:6], method="collocation"),
         initiation=lc.sliding_initiation(t0, d, method="collocation"),
         initiation_T=lc.sliding_initiation(t0, T_over_Ea=1.5 * t0 * d, method="collocation"),
         rolling=lc.steady_rolling(t0, 2 * d - 1, method="collocation"),
@@ -439,7 +440,7 @@ def test_inputs_are_not_modified():
     F = po.F_pulloff_over_Eh + 1.0
     keepF = F.copy()
     lc.contact_for_load(F, rho, s)
-    lc.sliding_contact(A, rho, ratio, s)
+    lc.sliding_contact(A, rho, ratio, s, method="collocation")
     lc.sliding_contact(A, rho, ratio, s, method="closed-form")
     lc.sliding_pull_off(rho[:3], ratio[:3], s[:3])
     d = np.linspace(0.1, 0.9, 20)

@@ -122,7 +122,7 @@ def test_coulomb_closed_forms_satisfy_their_stick_conditions():
 
 def test_initiation_closed_form_values():
     d = np.array([0.0, 0.6, 0.8])
-    r = sliding_initiation(0.01, d)
+    r = sliding_initiation(0.01, d, on_failure="report")  # d = 0: full slip, reported
     assert_allclose(r.T_over_Ea, 2 * 0.01 * np.sqrt(1 - d * d), rtol=1e-15)
     assert list(r.state) == ["sliding", "stick-slip", "stick-slip"]
     # traction: tau0 in the slip zones, (2 tau0/pi) arctan sqrt((a^2-d^2)/(d^2-x^2)) inside
@@ -147,7 +147,7 @@ def test_initiation_limits():
     assert (z.state, z.d_over_a, z.T_over_Ea) == ("stick", 1.0, 0.0)
     assert np.all(z.traction(np.linspace(-1, 1, 5)) == 0)
     # full slip: d = 0 at T = 2 a tau0, reported as sliding at and above it
-    f = sliding_initiation(0.01, T_over_Ea=[0.02, 0.05])
+    f = sliding_initiation(0.01, T_over_Ea=[0.02, 0.05], on_failure="report")
     assert list(f.state) == ["sliding", "sliding"]
     assert f.d_over_a[0] == 0 and np.isnan(f.d_over_a[1])
     assert_allclose(f.T_over_Ea, [0.02, 0.05])
@@ -204,7 +204,7 @@ def test_rolling_limits():
     r = steady_rolling(0.01, d)
     assert r.T_over_Ea == pytest.approx(0.02, rel=1e-9)
     assert r.creep_over_V == pytest.approx(-2 / np.pi * 0.01 * np.log(8 / eps), rel=1e-9)
-    f = steady_rolling(0.01, T_over_Ea=[0.02, 0.03])
+    f = steady_rolling(0.01, T_over_Ea=[0.02, 0.03], on_failure="report")
     assert list(f.state) == ["sliding", "sliding"] and np.all(np.isnan(f.creep_over_V))
     assert_allclose(f.traction(np.array([0.0, 0.99])), [[0.01, 0.01]] * 2)
 
@@ -218,7 +218,7 @@ def test_creep_grows_with_the_load_and_the_friction_stress():
 
 def test_cattaneo_mindlin_closed_form():
     d = np.array([0.0, 0.3, 0.9])
-    r = sliding_initiation_coulomb(0.3, 0.02, d)
+    r = sliding_initiation_coulomb(0.3, 0.02, d, on_failure="report")
     assert_allclose(r.T_over_muF, 1 - d * d, rtol=1e-15)
     # Hertz F = pi E a^2/(4R): T/(E a) = T/(mu F) mu (pi/4) a/R
     assert_allclose(r.T_over_Ea, r.T_over_muF * 0.3 * np.pi / 4 * 0.02, rtol=1e-15)
@@ -231,8 +231,10 @@ def test_cattaneo_mindlin_closed_form():
     assert sliding_initiation_coulomb(0.3, 0.02, 1 - 1e-12).T_over_muF == pytest.approx(
         2e-12, rel=1e-4
     )
-    assert sliding_initiation_coulomb(0.3, 0.02, 0.0).state == "sliding"
-    inv = sliding_initiation_coulomb(0.3, 0.02, T_over_muF=[0.0, 0.75, 1.0, 2.0])
+    assert sliding_initiation_coulomb(0.3, 0.02, 0.0, on_failure="report").state == "sliding"
+    inv = sliding_initiation_coulomb(
+        0.3, 0.02, T_over_muF=[0.0, 0.75, 1.0, 2.0], on_failure="report"
+    )
     assert_allclose(inv.d_over_a, [1.0, 0.5, 0.0, np.nan])
     assert list(inv.state) == ["stick", "stick-slip", "sliding", "sliding"]
 
@@ -327,7 +329,7 @@ def test_initiation_convergence_with_n():
     exact = sliding_initiation(1.0, d).T_over_Ea
     errs = [
         abs(
-            sliding_initiation(1.0, d, method="collocation", n=n, raise_on_failure=False).T_over_Ea
+            sliding_initiation(1.0, d, method="collocation", n=n, on_failure="report").T_over_Ea
             - exact
         )
         for n in (4, 8, 16, 32)
@@ -346,7 +348,7 @@ def test_rolling_convergence_with_n_and_the_papers_linear_split():
     exact = steady_rolling(1.0, d).creep_over_V
     errs = [
         abs(
-            steady_rolling(1.0, d, method="collocation", n=n, raise_on_failure=False).creep_over_V
+            steady_rolling(1.0, d, method="collocation", n=n, on_failure="report").creep_over_V
             - exact
         )
         for n in (4, 8, 16, 32)
@@ -378,21 +380,32 @@ def test_convergence_failure_is_named():
         r"d_over_a=0\.9999999",
     ):
         sliding_initiation(0.01, 0.9999999, method="collocation")
-    r = steady_rolling(0.01, [-0.9999999, 0.0], method="collocation", raise_on_failure=False)
+    r = steady_rolling(0.01, [-0.9999999, 0.0], method="collocation", on_failure="report")
     assert list(r.converged) == [False, True]
     assert r.n_collocation[0] == tg.SIZES[-1]
 
 
-def test_on_sliding_raise():
+def test_on_failure_raise_is_the_default_beyond_full_slip():
+    with pytest.raises(NoEquilibriumError, match=r"T_over_Ea=0\.03 is at or above"):
+        sliding_initiation(0.01, T_over_Ea=[0.01, 0.03])
+    with pytest.raises(NoEquilibriumError, match=r"T_over_muF=1\.0 is at or above"):
+        steady_rolling_coulomb(0.3, 0.01, T_over_muF=[0.5, 1.0])
+    with pytest.raises(NoEquilibriumError, match=r"d_over_a=0\.0 is full slip"):
+        sliding_initiation(0.01, [0.5, 0.0])
+    r = sliding_initiation(0.01, T_over_Ea=[0.01, 0.03], on_failure="report")
+    assert list(r.state) == ["stick-slip", "sliding"]
+
+
+def test_on_failure_raise():
     with pytest.raises(
         NoEquilibriumError,
         match=r"steady_rolling: T_over_Ea=0\.03 is at or "
         r"above the full-slip load 0\.02",
     ):
-        steady_rolling(0.01, T_over_Ea=[0.01, 0.03], on_sliding="raise")
+        steady_rolling(0.01, T_over_Ea=[0.01, 0.03], on_failure="raise")
     with pytest.raises(NoEquilibriumError, match=r"T_over_muF=1\.0 is at or above"):
-        sliding_initiation_coulomb(0.3, 0.01, T_over_muF=1.0, on_sliding="raise")
-    assert sliding_initiation(0.01, T_over_Ea=0.01, on_sliding="raise").state == "stick-slip"
+        sliding_initiation_coulomb(0.3, 0.01, T_over_muF=1.0, on_failure="raise")
+    assert sliding_initiation(0.01, T_over_Ea=0.01, on_failure="raise").state == "stick-slip"
 
 
 # --------------------------------------------------------------------------------------------
@@ -431,11 +444,12 @@ tau0s = st.floats(1e-4, 0.1)
 @settings(derandomize=True, max_examples=40, deadline=None)
 @given(tau0s, st.floats(0.0, 0.98))
 def test_sweep_initiation(t0, d):
-    c = sliding_initiation(t0, d, method="collocation")
-    f = sliding_initiation(t0, d)
+    # d = 0 is full slip: reported
+    c = sliding_initiation(t0, d, method="collocation", on_failure="report")
+    f = sliding_initiation(t0, d, on_failure="report")
     assert c.T_over_Ea == pytest.approx(f.T_over_Ea, rel=1e-12)
     # round trip through the load, and the bound |q| <= tau0
-    back = sliding_initiation(t0, T_over_Ea=f.T_over_Ea)
+    back = sliding_initiation(t0, T_over_Ea=f.T_over_Ea, on_failure="report")
     if d > 0:
         assert back.d_over_a == pytest.approx(d, abs=1e-9)
     q = f.traction(np.linspace(-1, 1, 51))
@@ -462,7 +476,7 @@ def test_sweep_coulomb(mu, A, d):
     assert r.T_over_muF == pytest.approx(1 - ((1 - d) / 2) ** 2, rel=1e-13)
     assert r.creep_over_V == pytest.approx(-mu * A * (1 + d) / 2, rel=1e-12)
     if d >= 0:
-        s = sliding_initiation_coulomb(mu, A, d, method="collocation")
+        s = sliding_initiation_coulomb(mu, A, d, method="collocation", on_failure="report")
         assert s.T_over_muF == pytest.approx(1 - d * d, rel=1e-12, abs=1e-15)
 
 
@@ -482,7 +496,9 @@ def test_si_layer_matches_nondimensional():
     assert_allclose(r.full_slip_load, 2 * a * 2e8, rtol=1e-14)
     assert_allclose(r.tangential_load, 0.5, rtol=1e-14)
     assert r.problem == "steady rolling" and r.friction == "constant"
-    s = cylinder_sliding_initiation(cyl, 1.0, friction_stress=2e8, d_over_a=[0.0, 0.5])
+    s = cylinder_sliding_initiation(
+        cyl, 1.0, friction_stress=2e8, d_over_a=[0.0, 0.5], on_failure="report"
+    )
     assert list(s.state) == ["sliding", "stick-slip"] and s.creep_ratio is None
 
 
@@ -558,8 +574,8 @@ BAD = [
     (
         sliding_initiation,
         (0.01, 0.5),
-        {"on_sliding": "ignore"},
-        r"on_sliding must be 'report' or 'raise', got 'ignore'",
+        {"on_failure": "ignore"},
+        r"on_failure must be 'raise' or 'report', got 'ignore'",
     ),
 ]
 
@@ -667,7 +683,7 @@ def test_small_tangential_loads_keep_their_relative_precision(r):
 def test_converged_means_accurate_near_full_stick(fn, args, ds):
     # A point the collocation reports converged agrees with the closed form to 10 tol; the
     # others say so (converged False) rather than return a wrong creep
-    c = fn(*args, ds, method="collocation", raise_on_failure=False)
+    c = fn(*args, ds, method="collocation", on_failure="report")
     f = fn(*args, ds)
     T = "T_over_muF" if fn is steady_rolling_coulomb else "T_over_Ea"
     errs = [np.abs(getattr(c, T) / getattr(f, T) - 1)]

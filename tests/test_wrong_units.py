@@ -92,11 +92,11 @@ ENTRIES: dict[str, tuple[set[str], Callable]] = {
     "Cylinder.pull_off": (set(GOOD), lambda v: _cyl(v).pull_off()),
     "Cylinder.pull_off(lennard-jones)": (
         set(GOOD),
-        lambda v: _cyl(v).pull_off(law="lennard-jones"),
+        lambda v: _cyl(v).lennard_jones_pull_off(),
     ),
     "Cylinder.contact(lennard-jones)": (
         set(GOOD),
-        lambda v: _cyl(v).contact(load=0.5, law="lennard-jones"),
+        lambda v: _cyl(v).lennard_jones_contact(load=0.5),
     ),
     "cylinder_sliding_initiation": (
         set(GOOD),
@@ -276,15 +276,15 @@ def test_a_tangential_load_beyond_full_slip_is_said_in_newtons_per_metre():
     cyl = lc.Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
     with pytest.raises(NoEquilibriumError, match=r"^tangential_load=100\.0 N/m is at or above"):
         lc.cylinder_sliding_initiation(
-            cyl, 1.0, friction_stress=1e9, tangential_load=[1.0, 100.0], on_sliding="raise"
+            cyl, 1.0, friction_stress=1e9, tangential_load=[1.0, 100.0], on_failure="raise"
         )
 
 
 def test_the_lennard_jones_domain_is_said_for_the_wire_given():
     cyl = lc.Cylinder.from_modulus(1e-6, 5.7e8, work_of_adhesion=0.1, equilibrium_spacing=3e-10)
     for call in (
-        lambda: cyl.pull_off(law="lennard-jones"),
-        lambda: cyl.contact(load=0.1, law="lennard-jones"),
+        lambda: cyl.lennard_jones_pull_off(),
+        lambda: cyl.lennard_jones_contact(load=0.1),
     ):
         with pytest.raises(ValueError) as exc:
             call()

@@ -11,6 +11,9 @@ length over ``E h``, stresses over ``E``; compressive load positive):
   ``_coulomb`` counterparts) -- load histories with memory and the loss per cycle;
 - :func:`sliding_contact`, :func:`sliding_contact_for_load`, :func:`sliding_pull_off` --
   steady sliding with different trailing and leading adhesion (:mod:`linecontact.sliding`);
+- :mod:`linecontact.laws` -- a law is a module: ``laws.dugdale`` and ``laws.lennard_jones``
+  have the same ``pull_off``, ``contact_for_load`` and ``load_curve`` (the Lennard-Jones law
+  of Eq. 1 in the paper's groups);
 - :mod:`linecontact.reference` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14);
 - :mod:`linecontact.sie` -- the Gauss--Chebyshev singular-integral core;
 - :func:`fit_pull_off`, :func:`work_of_adhesion_from_pull_off`,
@@ -25,6 +28,7 @@ length over ``E h``, stresses over ``E``; compressive load positive):
 from ._interrupt import imports_interruptible as _imports_interruptible
 
 with _imports_interruptible():
+    from . import laws
     from ._version import __version__
     from .cylinder import (
         Cylinder,
@@ -110,6 +114,7 @@ __all__ = [
     "hertz_load",
     "jkr_load",
     "kappa",
+    "laws",
     "load_curve",
     "maugis_parameter",
     "non_contact",

@@ -51,6 +51,7 @@ from typing import ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from . import reference as _ref
 from ._validation import check_array
 from .errors import ConvergenceError
 from .lennard_jones import (
@@ -121,49 +122,40 @@ def domain_mu_max() -> float:
 def hertz_half_width(F: ArrayLike, mu: ArrayLike) -> NDArray:
     """Hertz line contact: ``F = (pi/(4 mu)) xi^2``, so ``xi = sqrt(4 mu F/pi)``; 0 for ``F <= 0``.
 
-    ``F`` over ``w sqrt(R/z0)``, ``xi`` over ``sqrt(R z0)``, arrays broadcast.
+    ``F`` over ``w sqrt(R/z0)``, ``xi`` over ``sqrt(R z0)``, arrays broadcast. The closed
+    form of :mod:`linecontact.reference` in the paper's groups with ``h = z0``: ``R/h = 1``
+    (lengths over ``sqrt(R z0)``), ``sigma0/E = mu``, ``F/(E h) = mu F``.
     """
     F, mu = np.broadcast_arrays(np.asarray(F, float), np.asarray(mu, float))
-    return np.sqrt(4.0 * mu * np.maximum(F, 0.0) / np.pi)
+    return _ref._hertz_half_width(mu * F, 1.0)
 
 
 def jkr_load(xi: ArrayLike, mu: ArrayLike) -> NDArray:
     """JKR line contact in the full law's units: ``F = (pi/(4 mu)) xi^2 - sqrt(2 pi xi/mu)``.
 
     :func:`linecontact.reference.jkr_load`, ``F = pi E a^2/(4R) - sqrt(2 pi E w a)``, with
-    ``a = xi sqrt(R z0)`` and ``F`` over ``w sqrt(R/z0)``.
+    ``a = xi sqrt(R z0)`` and ``F`` over ``w sqrt(R/z0)`` (as :func:`hertz_half_width`).
     """
     xi = np.asarray(xi, float)
     mu = np.asarray(mu, float)
-    return np.pi / (4.0 * mu) * xi * xi - np.sqrt(2.0 * np.pi * xi / mu)
+    return _ref._jkr(xi, 1.0, mu) / mu
 
 
 def jkr_pull_off(mu: ArrayLike) -> tuple[NDArray, NDArray]:
     """The JKR pull-off ``-(3/4)(4 pi/mu)^(1/3)`` and its half-width ``(2 mu/pi)^(1/3)``."""
     mu = np.asarray(mu, float)
-    return -0.75 * np.cbrt(4.0 * np.pi / mu), np.cbrt(2.0 * mu / np.pi)
+    F, xi = _ref._jkr_pull_off(1.0, mu)
+    return F / mu, xi
 
 
 def jkr_half_width(F: ArrayLike, mu: ArrayLike) -> NDArray:
     """The JKR half-width on the stable branch (``xi`` above the pull-off width) at ``F``.
 
-    With ``u = sqrt(xi)`` the load is ``a u^4 - b u`` (``a = pi/(4 mu)``,
-    ``b = sqrt(2 pi/mu)``), convex and increasing beyond the pull-off: Newton from above
-    the root converges monotonically. NaN below the pull-off (no JKR contact).
+    :func:`linecontact.reference._jkr_half_width` (Newton in ``sqrt(xi)``) at ``mu F``.
+    NaN below the pull-off (no JKR contact).
     """
     F, mu = np.broadcast_arrays(np.asarray(F, float), np.asarray(mu, float))
-    a, b = np.pi / (4.0 * mu), np.sqrt(2.0 * np.pi / mu)
-    u_po = np.cbrt(b / (4.0 * a))  # the pull-off, where the load is least
-    # a start where a u^4 - b u - F >= 0 and beyond the pull-off
-    u = np.maximum(np.sqrt(np.sqrt(2.0 * np.maximum(F, 0.0) / a)), np.cbrt(2.0 * b / a))
-    F_po, _ = jkr_pull_off(mu)
-    ok = F >= F_po * (1.0 + 1e-12)  # the pull-off itself, give or take round-off
-    for _ in range(200):  # quadratic convergence; linear (halving) at the pull-off
-        step = np.where(ok, (a * u**4 - b * u - F) / (4.0 * a * u**3 - b), 0.0)
-        u = np.maximum(u - step, u_po)
-        if np.all(np.abs(step) <= 1e-15 * u):
-            break
-    return np.where(ok, u * u, np.nan)
+    return _ref._jkr_half_width(mu * F, 1.0, mu)
 
 
 def rigid_central_gap(F: ArrayLike) -> NDArray:
@@ -216,7 +208,7 @@ def md_half_width(F: ArrayLike, mu: ArrayLike, R_over_h: float = MD_R_OVER_H) ->
     """
     F, mu = np.broadcast_arrays(np.asarray(F, float), np.asarray(mu, float))
     s, root = md_groups(mu, R_over_h)
-    r = contact_for_load(F * s * root, R_over_h, s, on_no_equilibrium="report")
+    r = contact_for_load(F * s * root, R_over_h, s, on_failure="report")
     return np.asarray(r.a_over_R, float) * root
 
 

@@ -23,9 +23,25 @@ from . import domain as _domain
 from . import normal as _normal
 from . import push as _push
 from . import reference as _ref
-from ._validation import broadcast, check_array, non_negative, positive, scalar
+from ._validation import (
+    RAISE,
+    FailurePolicy,
+    broadcast,
+    check_array,
+    failure_policy,
+    non_negative,
+    positive,
+    scalar,
+)
 from .errors import CouplingWarning, ModelValidityWarning, NoEquilibriumError
-from .materials import BETA_WARN, _adhesion, _moduli, composite_modulus, dundurs_beta
+from .materials import (
+    BETA_WARN,
+    MAUGIS_STRENGTH,
+    _adhesion,
+    _moduli,
+    composite_modulus,
+    dundurs_beta,
+)
 from .tangential import (
     sliding_initiation,
     sliding_initiation_coulomb,
@@ -84,7 +100,7 @@ _UNIT_SLIP = {
 WIDTH_MIN = 1e-15
 
 #: sigma0 = S w / z0 and h = z0 / S (the Maugis convention of :mod:`linecontact.materials`)
-_S_LJ = 16.0 / (9.0 * math.sqrt(3.0))
+_S_LJ = MAUGIS_STRENGTH
 
 #: Set while a factory of :class:`Cylinder` builds one: the factory has checked the SI
 #: inputs under the names its caller used (``work_of_adhesion``, ``equilibrium_spacing``).
@@ -226,7 +242,7 @@ def _check_cylinder_si(
         )
     # kappa = (4/pi) (sigma0/E) sqrt(2 R/h), the single group of the Maugis-Dugdale contact
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        kap = (4 / np.pi) * s * np.sqrt(2 * ratio)
+        kap = _ref._kappa(ratio, s)
     bad = ~(kap <= _ref.KAPPA_MAX)
     if np.any(bad):
         k, r, ev, av, zv = _first(bad, kap, R, E, a_val, length)
@@ -303,7 +319,7 @@ class CylinderContact:
         Stable under load control.
     state : ndarray of str or str
         ``"contact"``, or ``"no-equilibrium"`` for a load no contact carries (reported with
-        ``on_no_equilibrium="report"``; its values are NaN).
+        ``on_failure="report"``; its values are NaN).
     nondimensional : NormalContact
         The underlying result with diagnostics.
     """
@@ -358,7 +374,7 @@ class CylinderLennardJonesContact:
         Stable under load control (the branch beyond the pull-off).
     state : ndarray of str or str
         ``"contact"``, or ``"no-equilibrium"`` for a load below the pull-off force (reported
-        with ``on_no_equilibrium="report"``; its values are NaN).
+        with ``on_failure="report"``; its values are NaN).
     nondimensional : LennardJonesContact
         The underlying result (Dugdale groups) with its diagnostics.
     """
@@ -705,8 +721,9 @@ class Cylinder:
         load: ArrayLike | None = None,
         method: str = "closed-form",
         branch: str = "stable",
-        on_no_equilibrium: str = "raise",
+        on_failure: FailurePolicy = RAISE,
         law: Literal["dugdale"] = "dugdale",
+        **deprecated: Any,
     ) -> CylinderContact: ...
 
     @overload
@@ -717,8 +734,9 @@ class Cylinder:
         load: ArrayLike | None = None,
         method: str = "closed-form",
         branch: str = "stable",
-        on_no_equilibrium: str = "raise",
+        on_failure: FailurePolicy = RAISE,
         law: str,
+        **deprecated: Any,
     ) -> CylinderContact | CylinderLennardJonesContact: ...
 
     def contact(
@@ -728,27 +746,31 @@ class Cylinder:
         load: ArrayLike | None = None,
         method: str = "closed-form",
         branch: str = "stable",
-        on_no_equilibrium: str = "raise",
+        on_failure: FailurePolicy = RAISE,
         law: str = "dugdale",
+        **deprecated: Any,
     ) -> CylinderContact | CylinderLennardJonesContact:
         """The contact at given half-widths ``a`` [m] or loads ``F`` [N/m] (exactly one).
 
         For a load, ``branch`` selects the stable (default) or the unstable contact state;
         a load that no contact of the branch carries (below the pull-off force) raises
-        :class:`~linecontact.errors.NoEquilibriumError`, or with
-        ``on_no_equilibrium="report"`` gives ``state == "no-equilibrium"`` and NaN values.
+        :class:`~linecontact.errors.NoEquilibriumError`, or with ``on_failure="report"``
+        gives ``state == "no-equilibrium"`` and NaN values; for a half-width, ``on_failure``
+        is that of :func:`~linecontact.normal_contact` (a collocation point that misses its
+        tolerance raises :class:`~linecontact.errors.ConvergenceError`, or is flagged in
+        ``nondimensional.converged``). README, "Conventions"; ``on_no_equilibrium`` is the
+        deprecated form of ``on_failure``.
 
-        ``law="lennard-jones"``: the Lennard-Jones law of Eq. (1) solved self-consistently
-        (:func:`linecontact.contact_for_load`), for given loads only (the stable branch),
-        with the cylinder's work of adhesion ``w = sigma0 h`` and ``z0 = 16 h/(9 sqrt 3)``
-        (for a cylinder built from ``(w, z0)`` these are the ``w`` and ``z0`` given, as the
-        Maugis conversion of :func:`~linecontact.adhesion_from_work` is undone); returns a
-        :class:`CylinderLennardJonesContact`.
+        ``law="lennard-jones"`` is deprecated (a ``DeprecationWarning``): use
+        :meth:`lennard_jones_contact`, which it calls. ``law="dugdale"`` (the default) is
+        accepted silently.
         """
-        if law not in ("dugdale", "lennard-jones"):
-            raise ValueError(f"law must be 'dugdale' or 'lennard-jones', got {law!r}")
+        _normal._check_law(law, "Cylinder.contact", "Cylinder.lennard_jones_contact(load=...)")
         if (contact_half_width is None) == (load is None):
             raise ValueError("give exactly one of contact_half_width or load")
+        policy = failure_policy(
+            on_failure, where="Cylinder.contact", accepts=("on_no_equilibrium",), **deprecated
+        )
         if law == "lennard-jones":
             if load is None:
                 raise ValueError(
@@ -760,12 +782,8 @@ class Cylinder:
                     "method and branch apply to law='dugdale': under the Lennard-Jones law the "
                     "contact for a load is the stable state beyond the pull-off"
                 )
-            if on_no_equilibrium not in ("raise", "report"):
-                raise ValueError(
-                    f"on_no_equilibrium must be 'raise' or 'report', got {on_no_equilibrium!r}"
-                )
             self._check_lennard_jones()
-            return self._for_load_lj("load", load, on_no_equilibrium)
+            return self._for_load_lj("load", load, policy)
         if method not in ("closed-form", "collocation"):
             raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
         if branch not in ("stable", "unstable"):
@@ -775,10 +793,6 @@ class Cylinder:
                 "the contact for a given load is found by the closed form: "
                 "method='collocation' applies to contact_half_width only"
             )
-        if on_no_equilibrium not in ("raise", "report"):
-            raise ValueError(
-                f"on_no_equilibrium must be 'raise' or 'report', got {on_no_equilibrium!r}"
-            )
         if contact_half_width is not None and branch != "stable":
             raise ValueError(
                 "branch applies to a given load only: a contact half-width fixes the state"
@@ -787,20 +801,20 @@ class Cylinder:
             a = positive("contact_half_width", contact_half_width)
             _domain.check_si("contact_half_width", a, self.radius, "a_over_R", "m")
             r = _normal.normal_contact(
-                a / self.radius, self.R_over_h, self.sigma0_over_E, method=method
+                a / self.radius, self.R_over_h, self.sigma0_over_E, method=method, on_failure=policy
             )
         else:
-            return self._for_load("load", load, branch, on_no_equilibrium)  # type: ignore[arg-type]
+            return self._for_load("load", load, branch, policy)  # type: ignore[arg-type]
         return self._wrap(r)
 
     def _for_load(
-        self, name: str, load: ArrayLike, branch: str = "stable", on_no_equilibrium: str = "raise"
+        self, name: str, load: ArrayLike, branch: str = "stable", policy: FailurePolicy = "raise"
     ) -> CylinderContact:
         """The contact carrying ``load`` [N/m]; messages name the caller's parameter."""
         F = check_array(name, load, low=-np.inf, low_inclusive=True)
         Eh = self.modulus * self.adhesion_range
         _domain.check_si(name, F, Eh, "F_over_Eh", "N/m")
-        if branch == "stable" and on_no_equilibrium == "raise":
+        if branch == "stable" and policy == "raise":
             # said in the units given ([N/m]), not only as F_over_Eh
             F_min = _normal.pull_off(self.R_over_h, self.sigma0_over_E).F_minimum_over_Eh * Eh
             if np.any(F < F_min):
@@ -815,7 +829,7 @@ class Cylinder:
                 self.R_over_h,
                 self.sigma0_over_E,
                 branch=branch,
-                on_no_equilibrium=on_no_equilibrium,
+                on_failure=policy,
             )
         except _domain.TooWideError as e:
             Fi = float(np.reshape(np.broadcast_to(F, np.shape(F)), -1)[e.index])
@@ -836,10 +850,11 @@ class Cylinder:
         )
 
     def _for_load_lj(
-        self, name: str, load: ArrayLike, on_no_equilibrium: str = "raise"
+        self, name: str, load: ArrayLike, policy: FailurePolicy = "raise"
     ) -> CylinderLennardJonesContact:
         """The contact carrying ``load`` [N/m] under the Lennard-Jones law (SI messages)."""
         from . import lennard_jones_groups as _ljg
+        from .laws import lennard_jones as _lj
 
         F = check_array(name, load, low=-np.inf, low_inclusive=True)
         Eh = self.modulus * self.adhesion_range
@@ -853,13 +868,7 @@ class Cylinder:
                 "Dugdale law (the default) gives the contact"
             )
         try:
-            r = _normal.contact_for_load(
-                F / Eh,
-                self.R_over_h,
-                self.sigma0_over_E,
-                on_no_equilibrium=on_no_equilibrium,
-                law="lennard-jones",
-            )
+            r = _lj.contact_for_load(F / Eh, self.R_over_h, self.sigma0_over_E, on_failure=policy)
         except _ljg.BelowPullOffError as e:
             Fi = float(np.reshape(F, -1)[e.index])
             raise NoEquilibriumError(
@@ -893,31 +902,16 @@ class Cylinder:
     def pull_off(self, *, law: str) -> CylinderPullOff | CylinderLennardJonesPullOff: ...
 
     def pull_off(self, *, law: str = "dugdale") -> CylinderPullOff | CylinderLennardJonesPullOff:
-        """Pull-off force under load control [N/m].
+        """Pull-off force under load control [N/m] (the Maugis--Dugdale law).
 
-        ``law="lennard-jones"``: under the Lennard-Jones law of Eq. (1) with the cylinder's
-        ``w`` and ``z0`` (as in :meth:`contact`), a :class:`CylinderLennardJonesPullOff`.
+        ``law="lennard-jones"`` is deprecated (a ``DeprecationWarning``): use
+        :meth:`lennard_jones_pull_off`, which it calls. ``law="dugdale"`` (the default) is
+        accepted silently.
         """
+        _normal._check_law(law, "Cylinder.pull_off", "Cylinder.lennard_jones_pull_off()")
         if law == "lennard-jones":
-            self._check_lennard_jones()
-            q = _normal.pull_off(self.R_over_h, self.sigma0_over_E, law=law)
-            Eh = self.modulus * self.adhesion_range
-            _warn_widths(
-                q.a_over_R_at_pulloff * self.radius,
-                self.radius,
-                "the contact half-width at pull-off",
-                "the repulsive region vanishes before the pull-off",
-                stacklevel=3,
-            )
-            return CylinderLennardJonesPullOff(
-                q.F_pulloff_over_Eh * Eh,
-                q.error_estimate_over_Eh * Eh,
-                q.a_over_R_at_pulloff * self.radius,
-                q.central_gap_over_h_at_pulloff * self.adhesion_range,
-                q.F_jump_in_over_Eh * Eh,
-                q,
-            )
-        p = _normal.pull_off(self.R_over_h, self.sigma0_over_E, law=law)
+            return self._pull_off_lj()
+        p = _normal.pull_off(self.R_over_h, self.sigma0_over_E)
         Eh = self.modulus * self.adhesion_range
         _warn_widths(
             p.a_over_R_at_pulloff * self.radius,
@@ -932,6 +926,55 @@ class Cylinder:
             p.mechanism,
             p.F_zero_width_over_Eh * Eh,
             p,
+        )
+
+    # the Lennard-Jones law (a law is a method here, as it is a module in linecontact.laws)
+    def lennard_jones_contact(
+        self, *, load: ArrayLike, on_failure: FailurePolicy = RAISE
+    ) -> CylinderLennardJonesContact:
+        """The contact carrying ``load`` [N/m] under the Lennard-Jones law of Eq. (1).
+
+        Solved self-consistently (:func:`linecontact.laws.lennard_jones.contact_for_load`),
+        the stable branch, with the cylinder's work of adhesion ``w = sigma0 h`` and
+        ``z0 = 16 h/(9 sqrt 3)`` (for a cylinder built from ``(w, z0)`` these are the ``w``
+        and ``z0`` given, as the Maugis conversion of :func:`~linecontact.adhesion_from_work`
+        is undone). A load below the pull-off force raises
+        :class:`~linecontact.errors.NoEquilibriumError`, or with ``on_failure="report"``
+        gives ``state == "no-equilibrium"`` and NaN values.
+        """
+        policy = failure_policy(on_failure, where="Cylinder.lennard_jones_contact", accepts=())
+        self._check_lennard_jones()
+        return self._for_load_lj("load", load, policy)
+
+    def lennard_jones_pull_off(self) -> CylinderLennardJonesPullOff:
+        """Pull-off force [N/m] under the Lennard-Jones law of Eq. (1).
+
+        With the cylinder's ``w`` and ``z0`` (as in :meth:`lennard_jones_contact`);
+        :func:`linecontact.laws.lennard_jones.pull_off` in SI units.
+        """
+        return self._pull_off_lj()
+
+    def _pull_off_lj(self) -> CylinderLennardJonesPullOff:
+        """:meth:`lennard_jones_pull_off` (its warnings point at the caller of the caller)."""
+        from .laws import lennard_jones as _lj
+
+        self._check_lennard_jones()
+        q = _lj.pull_off(self.R_over_h, self.sigma0_over_E)
+        Eh = self.modulus * self.adhesion_range
+        _warn_widths(
+            q.a_over_R_at_pulloff * self.radius,
+            self.radius,
+            "the contact half-width at pull-off",
+            "the repulsive region vanishes before the pull-off",
+            stacklevel=4,
+        )
+        return CylinderLennardJonesPullOff(
+            float(q.F_pulloff_over_Eh) * Eh,
+            float(q.error_estimate_over_Eh) * Eh,
+            float(q.a_over_R_at_pulloff) * self.radius,
+            float(q.central_gap_over_h_at_pulloff) * self.adhesion_range,
+            float(q.F_jump_in_over_Eh) * Eh,
+            q,
         )
 
 
@@ -992,7 +1035,7 @@ def _cylinder_tangential(
     d_over_a,
     tangential_load,
     method,
-    on_sliding,
+    policy,
 ) -> CylinderTangential:
     if not isinstance(cylinder, Cylinder):
         raise ValueError(
@@ -1050,9 +1093,9 @@ def _cylinder_tangential(
         coulomb_fn = steady_rolling_coulomb if rolling else sliding_initiation_coulomb
         full = mu * F
         try:
-            r: Any = coulomb_fn(mu, A, d, T_over_muF=T, method=method, on_sliding=on_sliding)
+            r: Any = coulomb_fn(mu, A, d, T_over_muF=T, method=method, on_failure=policy)
         except NoEquilibriumError:
-            raise _full_slip(st, full, "mu F") from None
+            raise _full_slip(st, full, "mu F", st_name) from None
         friction = "coulomb"
     else:
         contact = cylinder._for_load("normal_load", F)
@@ -1065,9 +1108,9 @@ def _cylinder_tangential(
         # broadcast with a so that every field has the shape of the points
         full = 2 * a * t0
         try:
-            r = fn(t0 / E + 0 * a, d, T_over_Ea=T, method=method, on_sliding=on_sliding)
+            r = fn(t0 / E + 0 * a, d, T_over_Ea=T, method=method, on_failure=policy)
         except NoEquilibriumError:
-            raise _full_slip(st, full, "2 a tau0") from None
+            raise _full_slip(st, full, "2 a tau0", st_name) from None
         friction = "constant"
     a = np.asarray(contact.contact_half_width)
     Tn = np.multiply(r.T_over_Ea, E * a)
@@ -1087,8 +1130,20 @@ def _cylinder_tangential(
     )
 
 
-def _full_slip(T: NDArray, full: ArrayLike, what: str) -> NoEquilibriumError:
-    """The error for a tangential load [N/m] at or above full slip, said in N/m."""
+def _full_slip(
+    T: NDArray, full: ArrayLike, what: str, given: str = "tangential_load"
+) -> NoEquilibriumError:
+    """The error for a tangential load [N/m] at or above full slip, said in N/m.
+
+    With ``given == "d_over_a"``, ``T`` is the stick zone given: full slip is ``d_over_a = 0``.
+    """
+    if given == "d_over_a":
+        d, full = np.broadcast_arrays(np.asarray(T, float), np.asarray(full, float))
+        di, fi = _first(d == 0, d, full) if np.any(d == 0) else (0.0, float(full.flat[0]))
+        return NoEquilibriumError(
+            f"d_over_a={di!r} is full slip (the tangential load is the full-slip load "
+            f"{fi:.6g} N/m, {what}): the whole contact slips (sliding), there is no stick zone"
+        )
     T, full = np.broadcast_arrays(np.asarray(T, float), np.asarray(full, float))
     Ti, fi = (
         _first(T >= full, T, full) if np.any(T >= full) else (float(T.flat[0]), float(full.flat[0]))
@@ -1113,7 +1168,8 @@ def cylinder_sliding_initiation(
     d_over_a: ArrayLike | None = None,
     tangential_load: ArrayLike | None = None,
     method: str = "closed-form",
-    on_sliding: str = "report",
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
 ) -> CylinderTangential:
     """Initiation of sliding of a :class:`~linecontact.cylinder.Cylinder` (SI units).
 
@@ -1135,8 +1191,14 @@ def cylinder_sliding_initiation(
         Stick-zone half-width over ``a`` in ``[0, 1)``.
     tangential_load : array_like, optional
         ``T`` [N/m], ``>= 0`` (exactly one of ``d_over_a`` and ``tangential_load``).
-    method, on_sliding : str
+    method : {"closed-form", "collocation"}
         As in :func:`sliding_initiation`.
+    on_failure : {"raise", "report"}
+        As in :func:`sliding_initiation`: a tangential load at or above full slip raises
+        :class:`~linecontact.errors.NoEquilibriumError` (``"raise"``, default), or gives
+        ``state == "sliding"`` (``"report"``); README, "Conventions". **Changed** after
+        0.2.0: the deprecated ``on_sliding`` defaulted to ``"report"``. A normal load below
+        the pull-off force raises either way.
 
     Returns
     -------
@@ -1150,6 +1212,9 @@ def cylinder_sliding_initiation(
     >>> s.state, s.stick_zone_end < s.contact_half_width
     ('stick-slip', True)
     """
+    policy = failure_policy(
+        on_failure, where="cylinder_sliding_initiation", accepts=("on_sliding",), **deprecated
+    )
     return _cylinder_tangential(
         "sliding initiation",
         cylinder,
@@ -1159,7 +1224,7 @@ def cylinder_sliding_initiation(
         d_over_a,
         tangential_load,
         method,
-        on_sliding,
+        policy,
     )
 
 
@@ -1172,7 +1237,8 @@ def cylinder_steady_rolling(
     d_over_a: ArrayLike | None = None,
     tangential_load: ArrayLike | None = None,
     method: str = "closed-form",
-    on_sliding: str = "report",
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
 ) -> CylinderTangential:
     """Steady rolling of a driving :class:`~linecontact.cylinder.Cylinder` (SI units).
 
@@ -1188,6 +1254,9 @@ def cylinder_steady_rolling(
     >>> r.creep_ratio < 0
     True
     """
+    policy = failure_policy(
+        on_failure, where="cylinder_steady_rolling", accepts=("on_sliding",), **deprecated
+    )
     return _cylinder_tangential(
         "steady rolling",
         cylinder,
@@ -1197,7 +1266,7 @@ def cylinder_steady_rolling(
         d_over_a,
         tangential_load,
         method,
-        on_sliding,
+        policy,
     )
 
 

@@ -23,11 +23,12 @@ the rest of the library. ``docs/inverse.md`` derives the models and their limits
 
 from __future__ import annotations
 
+import contextvars
 import math
 import warnings
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -37,6 +38,7 @@ from . import reference as _ref
 from ._validation import broadcast, check_array, first_point
 from .cylinder import _check_cylinder_si, _plausible, _warn_widths
 from .errors import ModelValidityWarning
+from .materials import MAUGIS_STRENGTH
 
 __all__ = [
     "AdhesionFit",
@@ -53,7 +55,7 @@ __all__ = [
 ]
 
 #: sigma0 = S w / z0 (Maugis: the strength of the Lennard-Jones law), h = z0 / S
-S_LJ = 16.0 / (9.0 * math.sqrt(3.0))
+S_LJ = MAUGIS_STRENGTH  # an alias of materials.MAUGIS_STRENGTH
 #: the range of sigma0/E searched by the inversions (the solvers' domain is wider)
 _S_MIN, _S_MAX = 1e-14, 0.999e6  # inside the solvers' domain of sigma0/E (to 1e6)
 _BISECTIONS = 200
@@ -99,7 +101,18 @@ def jkr_pull_off_force(radius: ArrayLike, modulus: ArrayLike, work_of_adhesion: 
     w = check_array("work_of_adhesion", work_of_adhesion)
     for name, v in (("radius", R), ("modulus", E), ("work_of_adhesion", w)):
         _plausible(name, v)
-    return -0.75 * np.cbrt(4 * np.pi * w * w * E * R)
+    return _jkr_pull_off_si(R, E, w)
+
+
+def _jkr_pull_off_si(R, E, w):
+    """:func:`linecontact.reference._jkr_pull_off` in SI units (``h = R``: no range in JKR)."""
+    return E * R * _ref._jkr_pull_off(1.0, w / (E * R))[0]
+
+
+def _dmt_pull_off_si(R, w, z0):
+    """:func:`linecontact.reference._rigid_pull_off` in SI units: ``E h`` times it (any E)."""
+    h = z0 / S_LJ
+    return h * _ref._rigid_pull_off(R / h, w / h)
 
 
 def dmt_pull_off_force(
@@ -116,7 +129,7 @@ def dmt_pull_off_force(
     for name, v in (("radius", R), ("work_of_adhesion", w)):
         _plausible(name, v)
     _plausible("equilibrium_spacing", z0, key="adhesion_range")
-    return -2 * math.sqrt(2) * w * np.sqrt(R * S_LJ / z0)
+    return _dmt_pull_off_si(R, w, z0)
 
 
 def simple_model_work_of_adhesion(
@@ -146,9 +159,9 @@ def simple_model_work_of_adhesion(
     z0 = float(check_array("equilibrium_spacing", equilibrium_spacing))
     wt = np.ones_like(F) if sd is None else 1.0 / check_array("sd", sd).reshape(-1) ** 2
     _check_cylinder_si(R, E, {"work_of_adhesion": None, "equilibrium_spacing": z0}, stacklevel=4)
-    c = 0.75 * np.cbrt(4 * np.pi * E * R)
+    c = -_jkr_pull_off_si(R, E, 1.0)  # the JKR pull-off is -c w^(2/3)
     u = float(np.sum(wt * c * -F) / np.sum(wt * c * c))
-    d = 2 * math.sqrt(2) * np.sqrt(R * S_LJ / z0)
+    d = -_dmt_pull_off_si(R, 1.0, z0)  # the rigid pull-off is -d w
     w_dmt = float(np.sum(wt * d * -F) / np.sum(wt * d * d))
     return {"jkr": u**1.5, "dmt": w_dmt}
 
@@ -175,9 +188,6 @@ def work_of_adhesion_from_pull_off(
     radius: ArrayLike,
     modulus: ArrayLike,
     equilibrium_spacing: ArrayLike,
-    *,
-    _rtol: float = 1e-15,
-    _unreachable: str = "raise",
 ) -> NDArray:
     """The work of adhesion [J/m^2] whose Maugis--Dugdale pull-off is the one measured.
 
@@ -205,20 +215,56 @@ def work_of_adhesion_from_pull_off(
     >>> round(float(work_of_adhesion_from_pull_off(F, 50e-9, 50e9, 0.3e-9)), 12)
     0.1
     """
+    return _work_from_pull_off(
+        pull_off_force,
+        radius,
+        modulus,
+        equilibrium_spacing,
+        unreachable=_UNREACHABLE.get(),
+        stacklevel=5,
+    )
+
+
+#: ``"nan"`` while :func:`propagate` draws its samples: the inversions then give nan where no
+#: ``w`` reaches a draw, instead of the ``ValueError`` (which would fail its whole batch).
+_UNREACHABLE: contextvars.ContextVar[Literal["raise", "nan"]] = contextvars.ContextVar(
+    "linecontact_inverse_unreachable", default="raise"
+)
+
+
+def _work_from_pull_off(
+    pull_off_force: ArrayLike,
+    radius: ArrayLike,
+    modulus: ArrayLike,
+    equilibrium_spacing: ArrayLike,
+    *,
+    rtol: float = 1e-15,
+    unreachable: Literal["raise", "nan"] = "raise",
+    stacklevel: int = 4,
+) -> NDArray:
+    """:func:`work_of_adhesion_from_pull_off` with the options of the module's own callers.
+
+    ``rtol``: of the bisection in ``w`` (a fit's starting point needs 1e-4 only);
+    ``unreachable="nan"``: nan where no ``w`` produces the force, instead of the
+    ``ValueError`` (for :func:`propagate`); ``stacklevel``: of the units warnings, for the
+    caller of the public function.
+    """
     F = check_array("pull_off_force", pull_off_force, low=-np.inf)
     R = check_array("radius", radius)
     E = check_array("modulus", modulus)
     z0 = check_array("equilibrium_spacing", equilibrium_spacing)
     F, R, E, z0 = broadcast(pull_off_force=F, radius=R, modulus=E, equilibrium_spacing=z0)
-    _check_cylinder_si(R, E, {"work_of_adhesion": None, "equilibrium_spacing": z0}, stacklevel=4)
+    _check_cylinder_si(
+        R, E, {"work_of_adhesion": None, "equilibrium_spacing": z0}, stacklevel=stacklevel
+    )
     w_lo = _S_MIN * E * z0 / S_LJ
     w_hi = _S_MAX * E * z0 / S_LJ
     F_lo = pull_off_force_at(R, E, w_hi, z0)  # the strongest adhesion searched
     F_hi = pull_off_force_at(R, E, w_lo, z0)  # the weakest
     bad = ~((F < F_hi) & (F > F_lo))
-    if np.any(bad) and _unreachable == "nan":  # for propagate: nan where no w reaches
+    if np.any(bad) and unreachable == "nan":  # for propagate: nan where no w reaches
         Fm = np.where(bad, 0.5 * (F_lo + F_hi), F)
-        w = _bisect_log(lambda w: Fm - pull_off_force_at(R, E, w, z0), w_lo, w_hi, _rtol)
+        w = _bisect_log(lambda w: Fm - pull_off_force_at(R, E, w, z0), w_lo, w_hi, rtol)
         return np.where(bad, np.nan, w)
     if np.any(bad):
         _, at = first_point(bad, F=F, R=R, E=E, z0=z0, lo=F_lo, hi=F_hi)
@@ -230,7 +276,7 @@ def work_of_adhesion_from_pull_off(
             f"{at['hi']:.6g}) N/m (sigma0/E from {_S_MIN:g} to {_S_MAX:g})"
         )
     # the pull-off force falls (grows in magnitude) with w
-    return _bisect_log(lambda w: F - pull_off_force_at(R, E, w, z0), w_lo, w_hi, _rtol)
+    return _bisect_log(lambda w: F - pull_off_force_at(R, E, w, z0), w_lo, w_hi, rtol)
 
 
 def pull_off_force_at(R, E, w, z0):
@@ -245,8 +291,6 @@ def work_of_adhesion_from_width(
     radius: ArrayLike,
     modulus: ArrayLike,
     equilibrium_spacing: ArrayLike,
-    *,
-    _unreachable: str = "raise",
 ) -> NDArray:
     """The work of adhesion [J/m^2] whose stable contact at the load has the half-width measured.
 
@@ -263,6 +307,28 @@ def work_of_adhesion_from_width(
     >>> round(float(work_of_adhesion_from_width(a, 0.5, 50e-9, 50e9, 0.3e-9)), 10)
     0.1
     """
+    return _work_from_width(
+        half_width,
+        normal_load,
+        radius,
+        modulus,
+        equilibrium_spacing,
+        unreachable=_UNREACHABLE.get(),
+        stacklevel=5,
+    )
+
+
+def _work_from_width(
+    half_width: ArrayLike,
+    normal_load: ArrayLike,
+    radius: ArrayLike,
+    modulus: ArrayLike,
+    equilibrium_spacing: ArrayLike,
+    *,
+    unreachable: Literal["raise", "nan"] = "raise",
+    stacklevel: int = 4,
+) -> NDArray:
+    """:func:`work_of_adhesion_from_width` with the options of :func:`_work_from_pull_off`."""
     a = check_array("half_width", half_width)
     F = check_array("normal_load", normal_load, low=-np.inf)
     R = check_array("radius", radius)
@@ -271,8 +337,10 @@ def work_of_adhesion_from_width(
     a, F, R, E, z0 = broadcast(
         half_width=a, normal_load=F, radius=R, modulus=E, equilibrium_spacing=z0
     )
-    _check_cylinder_si(R, E, {"work_of_adhesion": None, "equilibrium_spacing": z0}, stacklevel=4)
-    _warn_widths(a, R, "the half_width measured")
+    _check_cylinder_si(
+        R, E, {"work_of_adhesion": None, "equilibrium_spacing": z0}, stacklevel=stacklevel
+    )
+    _warn_widths(a, R, "the half_width measured", stacklevel=stacklevel - 1)
 
     def width(w):
         # pulled off: 0 (more adhesion is needed); wider than the solvers' domain: inf
@@ -284,7 +352,7 @@ def work_of_adhesion_from_width(
     w_hi = _S_MAX * E * z0 / S_LJ
     a_lo, a_hi = width(w_lo), width(w_hi)
     bad = ~((a > a_lo) & (a < a_hi))
-    nan_mode = _unreachable == "nan"
+    nan_mode = unreachable == "nan"
     if np.any(bad) and nan_mode:  # for propagate: nan where no w reaches
         a = np.where(bad, np.where(np.isfinite(a_hi), 0.5 * (a_lo + a_hi), 2 * a_lo + 1e-300), a)
     if np.any(bad) and not nan_mode:
@@ -326,7 +394,7 @@ def _stable_width(F, R, E, w, z0, *, too_wide=None, pulled_off=np.nan):
     rho, s = R / h, S_LJ * w / (z0 * E)
 
     def one(F_, rho_, s_, E_, h_):
-        c = _normal.contact_for_load(F_ / (E_ * h_), rho_, s_, on_no_equilibrium="report")
+        c = _normal.contact_for_load(F_ / (E_ * h_), rho_, s_, on_failure="report")
         return np.asarray(c.a_over_R, float)
 
     try:
@@ -350,7 +418,8 @@ def _stable_width(F, R, E, w, z0, *, too_wide=None, pulled_off=np.nan):
 
 
 def _hertz_width(F, R, E):
-    return np.sqrt(np.clip(4 * R * F / (np.pi * E), 0.0, None))
+    """Hertz half-width [m] at the load F [N/m]: the closed form of reference, ``h = R``."""
+    return R * _ref._hertz_half_width(F / (E * R), 1.0)
 
 
 def shear_strength_from_friction(
@@ -467,17 +536,7 @@ def shear_strength_from_friction(
 
 def _jkr_width(F, R, E, w):
     """Stable JKR line-contact half-width at the load F (nan below the pull-off)."""
-    # F(a) = pi E a^2/(4R) - sqrt(2 pi w E a); its minimum (the pull-off) at a_c
-    a_c = np.cbrt(2 * R * R * w / (np.pi * E))  # dF/da = 0
-    F_c = np.pi * E * a_c**2 / (4 * R) - np.sqrt(2 * np.pi * w * E * a_c)
-    hi = np.maximum(2 * a_c, 2 * np.sqrt(np.abs(4 * R * F / (np.pi * E))) + 4 * a_c)
-    lo = a_c
-    ok = F >= F_c
-    for _ in range(200):
-        m = 0.5 * (lo + hi)
-        up = np.pi * E * m**2 / (4 * R) - np.sqrt(2 * np.pi * w * E * m) > F
-        lo, hi = np.where(up, lo, m), np.where(up, m, hi)
-    return np.where(ok, 0.5 * (lo + hi), np.nan)
+    return R * _ref._jkr_half_width(F / (E * R), 1.0, w / (E * R))
 
 
 # --------------------------------------------------------------------------------------------
@@ -571,16 +630,15 @@ def propagate(
                     break
                 draw[bad] = rng.normal(x0[k], sd, int(bad.sum()))
         samples[k] = draw
-    import inspect
-
-    try:  # the inversions of this module can give nan where a draw is unreachable
-        if "_unreachable" in inspect.signature(fn).parameters:
-            samples["_unreachable"] = "nan"
-    except (TypeError, ValueError):
-        pass
-    with warnings.catch_warnings():  # a draw outside small strain: said once for the value
-        warnings.simplefilter("ignore", ModelValidityWarning)
-        out = _robust(fn, samples, np.arange(n_samples))
+    # the inversions of this module give nan where a draw is unreachable (not a ValueError
+    # that fails the whole batch it is in), also when fn wraps them
+    token = _UNREACHABLE.set("nan")
+    try:
+        with warnings.catch_warnings():  # a draw outside small strain: said once for the value
+            warnings.simplefilter("ignore", ModelValidityWarning)
+            out = _robust(fn, samples, np.arange(n_samples))
+    finally:
+        _UNREACHABLE.reset(token)
     ok = np.isfinite(out)
     n_failed = int(n_samples - ok.sum())
     good = out[ok]
@@ -824,7 +882,7 @@ def fit_pull_off(
     best = None
     for z_try in [z_fixed] if fixed else [0.15e-9, 0.4e-9, 1.5e-9]:
         try:
-            w_pts = work_of_adhesion_from_pull_off(F, R, E, z_try, _rtol=1e-4)
+            w_pts = _work_from_pull_off(F, R, E, z_try, rtol=1e-4)
         except ValueError:
             continue
         p0 = np.log([float(np.median(w_pts))] + ([] if fixed else [z_try]))

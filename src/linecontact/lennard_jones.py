@@ -44,11 +44,11 @@ from dataclasses import dataclass, field
 from typing import ClassVar
 
 import numpy as np
-import scipy.linalg
 from numpy.typing import NDArray
 
 from ._validation import first_point
 from .errors import ConvergenceError, NoEquilibriumError
+from .materials import MAUGIS_H_OVER_Z0, MAUGIS_STRENGTH
 from .results import Result
 
 __all__ = [
@@ -60,17 +60,21 @@ __all__ = [
     "MAUGIS_MATCH_SIGMA0",
     "lj_contact_for_load",
     "lj_curve",
+    "lj_groups",
     "lj_pull_off",
     "lj_state",
     "maugis_parameter_of_mu",
     "mu_of_dugdale",
     "pull_off_in_dugdale_groups",
+    "pull_off_of",
 ]
 
-#: Peak tension of the law over ``w/z0``: the Maugis matching of the Dugdale stress.
-MAUGIS_MATCH_SIGMA0 = 16.0 / (9.0 * math.sqrt(3.0))
-#: ``h/z0 = w/(sigma0 z0)`` of the matched Dugdale step (0.974).
-MAUGIS_MATCH_H_OVER_Z0 = 1.0 / MAUGIS_MATCH_SIGMA0
+#: Peak tension of the law over ``w/z0``: the Maugis matching of the Dugdale stress (an alias
+#: of :data:`linecontact.materials.MAUGIS_STRENGTH`).
+MAUGIS_MATCH_SIGMA0 = MAUGIS_STRENGTH
+#: ``h/z0 = w/(sigma0 z0)`` of the matched Dugdale step (0.974; an alias of
+#: :data:`linecontact.materials.MAUGIS_H_OVER_Z0`).
+MAUGIS_MATCH_H_OVER_Z0 = MAUGIS_H_OVER_Z0
 
 _FAR = 2000.0  # end of the mesh (the attraction there is ~1e-19 of its peak)
 _RATIO = 1.2  # growth of the coarse elements beyond the uniform band
@@ -263,6 +267,8 @@ def _chord(lu, fresh: bool, ratio: float, mu: float, mesh: _Mesh, dP: NDArray):
         return lu, False, False
     if fresh and ratio >= 1.0:
         return lu, fresh, True
+    import scipy.linalg  # here: ``import linecontact`` does not import scipy
+
     J = (2.0 * mu / math.pi) * mesh.K * dP[None, :]
     J[np.diag_indices_from(J)] += 1.0
     lu = scipy.linalg.lu_factor(J, check_finite=False)
@@ -280,6 +286,8 @@ def _newton(
     per step. Returns the gaps, the largest residual relative to the gap and whether it met
     ``tol``.
     """
+    import scipy.linalg
+
     nodes, K = mesh.nodes, mesh.K
     rigid = zeta0 + 0.5 * nodes * nodes
     zeta = guess.copy()
@@ -486,6 +494,8 @@ def _arc_newton(mu, mesh, zeta, zeta0, anchor, tangent, ds, scales, v, tol=_TOL)
     block elimination with the (chord) factorisation of the gap equation's Jacobian.
     Returns ``(zeta, zeta0, ok)``.
     """
+    import scipy.linalg
+
     nodes, K, w = mesh.nodes, mesh.K, mesh.w
     z_a, F_a, l_a = anchor
     tz, tF, tv = tangent
@@ -915,14 +925,15 @@ class LennardJonesPullOff(Result):
     converged: NDArray | bool
 
 
-def pull_off_in_dugdale_groups(R_over_h, sigma0_over_E) -> LennardJonesPullOff:
-    """:func:`lj_pull_off` at Dugdale groups (validated arrays of one shape, or scalars)."""
-    from .results import as_output
+def lj_groups(R_over_h, sigma0_over_E) -> tuple[NDArray, NDArray, NDArray]:
+    """``(mu, sqrt(R/z0), load scale w sqrt(R/z0)/(E h))`` at validated Dugdale groups.
 
+    Refuses ``sigma0_over_E = 0`` (no work of adhesion) and ``mu`` beyond the domain
+    ``DOMAIN["lj_mu"]``, naming the point. The one conversion of the Dugdale groups to the
+    law's own units (:mod:`linecontact.lennard_jones_groups` re-exports it).
+    """
     rho = np.asarray(R_over_h, float)
     s = np.asarray(sigma0_over_E, float)
-    scalar = rho.ndim == 0 and s.ndim == 0
-    rho, s = np.broadcast_arrays(rho, s)
     if np.any(s <= 0):
         raise ValueError(
             "sigma0_over_E must be > 0 for the Lennard-Jones law (it sets the work of "
@@ -938,33 +949,66 @@ def pull_off_in_dugdale_groups(R_over_h, sigma0_over_E) -> LennardJonesPullOff:
             f"{float(maugis_parameter_of_mu(hi)):.3g}); R_over_h={at['rho']!r}, "
             f"sigma0_over_E={at['s']!r} give mu={at['mu']:.6g}"
         )
-    out = {k: np.empty(rho.shape) for k in ("F", "a", "g", "J", "e")}
-    n = np.empty(rho.shape, int)
+    root = np.sqrt(R_over_z0)
+    return np.asarray(mu, float), root, s * root
+
+
+def pull_off_of(po: LJPullOff, R_over_h: float, sigma0_over_E: float) -> LennardJonesPullOff:
+    """The native pull-off ``po`` in the Dugdale groups (scalars): the one conversion."""
+    mu, root, scale = (float(v) for v in lj_groups(R_over_h, sigma0_over_E))
+    return LennardJonesPullOff(
+        F_pulloff_over_Eh=po.F_pulloff * scale,
+        a_over_R_at_pulloff=po.half_width_at_pulloff / root,
+        central_gap_over_h_at_pulloff=po.central_gap_at_pulloff * MAUGIS_MATCH_SIGMA0,
+        F_jump_in_over_Eh=po.F_jump_in * scale,
+        error_estimate_over_Eh=po.error_estimate * scale,
+        mu=po.mu,
+        maugis_parameter=po.maugis_parameter,
+        R_over_h=float(R_over_h),
+        sigma0_over_E=float(sigma0_over_E),
+        law="lennard-jones",
+        n=po.n,
+        converged=po.converged,
+    )
+
+
+def pull_off_in_dugdale_groups(R_over_h, sigma0_over_E) -> LennardJonesPullOff:
+    """:func:`lj_pull_off` at Dugdale groups (validated arrays of one shape, or scalars).
+
+    Each point is :func:`pull_off_of` its native pull-off; the public entry point is
+    :func:`linecontact.laws.lennard_jones.pull_off`.
+    """
+    from .results import as_output
+
+    rho = np.asarray(R_over_h, float)
+    s = np.asarray(sigma0_over_E, float)
+    scalar = rho.ndim == 0 and s.ndim == 0
+    rho, s = np.broadcast_arrays(rho, s)
+    mu = lj_groups(rho, s)[0]
+    fields = {
+        "F_pulloff_over_Eh": float,
+        "a_over_R_at_pulloff": float,
+        "central_gap_over_h_at_pulloff": float,
+        "F_jump_in_over_Eh": float,
+        "error_estimate_over_Eh": float,
+        "n": int,
+    }
+    vals: dict[str, NDArray] = {k: np.empty(rho.shape, dt) for k, dt in fields.items()}
     for i in np.ndindex(rho.shape):
-        po = lj_pull_off(float(mu[i]))
-        scale = s[i] * math.sqrt(R_over_z0[i])  # w sqrt(R/z0)/(E h)
-        out["F"][i] = po.F_pulloff * scale
-        out["e"][i] = po.error_estimate * scale
-        out["J"][i] = po.F_jump_in * scale
-        out["a"][i] = po.half_width_at_pulloff / math.sqrt(R_over_z0[i])
-        out["g"][i] = po.central_gap_at_pulloff * MAUGIS_MATCH_SIGMA0  # z0/h
-        n[i] = po.n
+        q = pull_off_of(lj_pull_off(float(mu[i])), float(rho[i]), float(s[i]))
+        for k in fields:
+            vals[k][i] = getattr(q, k)
 
     def o(v):
         return as_output(v, scalar)
 
     return LennardJonesPullOff(
-        F_pulloff_over_Eh=o(out["F"]),
-        a_over_R_at_pulloff=o(out["a"]),
-        central_gap_over_h_at_pulloff=o(out["g"]),
-        F_jump_in_over_Eh=o(out["J"]),
-        error_estimate_over_Eh=o(out["e"]),
+        **{k: o(v) for k, v in vals.items()},
         mu=o(mu),
         maugis_parameter=o(maugis_parameter_of_mu(mu)),
         R_over_h=o(rho),
         sigma0_over_E=o(s),
         law="lennard-jones",
-        n=o(n),
         converged=o(np.ones(rho.shape, bool)),
     )
 

@@ -25,24 +25,24 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 from numpy.typing import NDArray
 
 from . import reference as _ref
-from ._validation import first_point
+from ._validation import RAISE, FailurePolicy, failure_policy, first_point
 from .errors import ConvergenceError, NoEquilibriumError
-from .lennard_jones import (
+from .lennard_jones import (  # lj_groups, pull_off_of: defined there, re-exported here
     MAUGIS_MATCH_SIGMA0,
     LennardJonesPullOff,
-    LJPullOff,
     LJState,
     lj_contact_for_load,
     lj_curve,
+    lj_groups,
     lj_pull_off,
     maugis_parameter_of_mu,
-    mu_of_dugdale,
+    pull_off_of,
 )
 from .results import Result, as_output
 
@@ -151,7 +151,7 @@ class LennardJonesContact(Result):
         Stable under load control: always, on the branch beyond the pull-off.
     state : ndarray of str or str
         ``"contact"``; ``"no-equilibrium"`` for a load below the pull-off force, reported
-        with ``on_no_equilibrium="report"`` (its values are NaN).
+        with ``on_failure="report"`` (its values are NaN).
     """
 
     inputs: ClassVar[tuple[str, ...]] = (
@@ -204,35 +204,6 @@ class BelowPullOffError(NoEquilibriumError):
 # the groups
 
 
-def lj_groups(R_over_h, sigma0_over_E) -> tuple[NDArray, NDArray, NDArray]:
-    """``(mu, sqrt(R/z0), load scale w sqrt(R/z0)/(E h))`` at validated Dugdale groups.
-
-    Refuses ``sigma0_over_E = 0`` (no work of adhesion) and ``mu`` beyond the domain
-    ``DOMAIN["lj_mu"]``, naming the point, as ``pull_off(..., law="lennard-jones")``.
-    """
-    from .domain import DOMAIN
-
-    rho = np.asarray(R_over_h, float)
-    s = np.asarray(sigma0_over_E, float)
-    if np.any(s <= 0):
-        raise ValueError(
-            "sigma0_over_E must be > 0 for the Lennard-Jones law (it sets the work of "
-            f"adhesion w = sigma0 h), got {float(s[s <= 0].flat[0])!r}"
-        )
-    mu, R_over_z0 = mu_of_dugdale(rho, s)
-    hi = DOMAIN["lj_mu"][2]
-    if np.any(mu > hi):
-        _, at = first_point(mu > hi, rho=rho, s=s, mu=mu)
-        raise ValueError(
-            f"the Lennard-Jones law is solved for mu = (sigma0/E) sqrt(R/h) * "
-            f"{MAUGIS_MATCH_SIGMA0**-1.5:.4f} in [0, {hi:g}] (Maugis parameter up to "
-            f"{float(maugis_parameter_of_mu(hi)):.3g}); R_over_h={at['rho']!r}, "
-            f"sigma0_over_E={at['s']!r} give mu={at['mu']:.6g}"
-        )
-    root = np.sqrt(R_over_z0)
-    return np.asarray(mu, float), root, s * root
-
-
 def load_max_over_Eh(R_over_h, sigma0_over_E) -> NDArray:
     """:data:`LJ_LOAD_MAX` over ``E h`` at the Dugdale groups (validated as :func:`lj_groups`)."""
     return LJ_LOAD_MAX * lj_groups(R_over_h, sigma0_over_E)[2]
@@ -251,25 +222,6 @@ def _check_load(F_native: NDArray, F_over_Eh: NDArray, name: str) -> None:
             "cylinder's pull-off); at such loads both laws approach Hertz, and the Dugdale "
             "law (the default) gives the contact"
         )
-
-
-def pull_off_of(po: LJPullOff, R_over_h: float, sigma0_over_E: float) -> LennardJonesPullOff:
-    """The native pull-off ``po`` in the Dugdale groups (scalars)."""
-    mu, root, scale = (float(v) for v in lj_groups(R_over_h, sigma0_over_E))
-    return LennardJonesPullOff(
-        F_pulloff_over_Eh=po.F_pulloff * scale,
-        a_over_R_at_pulloff=po.half_width_at_pulloff / root,
-        central_gap_over_h_at_pulloff=po.central_gap_at_pulloff * MAUGIS_MATCH_SIGMA0,
-        F_jump_in_over_Eh=po.F_jump_in * scale,
-        error_estimate_over_Eh=po.error_estimate * scale,
-        mu=po.mu,
-        maugis_parameter=po.maugis_parameter,
-        R_over_h=float(R_over_h),
-        sigma0_over_E=float(sigma0_over_E),
-        law="lennard-jones",
-        n=po.n,
-        converged=po.converged,
-    )
 
 
 # --------------------------------------------------------------------------------------------
@@ -323,7 +275,8 @@ def contact_for_load_in_dugdale_groups(
     sigma0_over_E: NDArray,
     *,
     scalar: bool,
-    on_no_equilibrium: str = "raise",
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
 ) -> LennardJonesContact:
     """:func:`~linecontact.lennard_jones.lj_contact_for_load` at validated, broadcast groups.
 
@@ -331,7 +284,8 @@ def contact_for_load_in_dugdale_groups(
     increasing load within each ``mu``, so that a load below the pull-off is met first: it
     raises :class:`BelowPullOffError` (a :class:`~linecontact.errors.NoEquilibriumError`,
     naming the first such point) before any other point of its ``mu`` is solved, or with
-    ``on_no_equilibrium="report"`` gives ``state == "no-equilibrium"`` and NaN values.
+    ``on_failure="report"`` gives ``state == "no-equilibrium"`` and NaN values (README,
+    "Conventions"; ``on_no_equilibrium`` is its deprecated form).
     Points with the same load and ``mu`` are solved once. A failed search of the solver
     raises :class:`~linecontact.errors.ConvergenceError`.
     """
@@ -343,7 +297,15 @@ def contact_for_load_in_dugdale_groups(
     Ff = np.reshape(F, -1)
     Fn = Ff / scale  # over w sqrt(R/z0)
     _check_load(Fn, Ff, "F_over_Eh")
-    report = on_no_equilibrium == "report"
+    report = (
+        failure_policy(
+            on_failure,
+            where="contact_for_load_in_dugdale_groups",
+            accepts=("on_no_equilibrium",),
+            **deprecated,
+        )
+        == "report"
+    )
     P = Ff.size
     A, G, E = np.full(P, np.nan), np.full(P, np.nan), np.full(P, np.nan)
     res = np.full(P, np.nan)

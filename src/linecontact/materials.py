@@ -31,6 +31,8 @@ J. Dundurs, discussion, J. Appl. Mech. 36 (1969) 650--652. doi:10.1115/1.3564739
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
@@ -39,6 +41,8 @@ from .domain import DOMAIN, check
 
 __all__ = [
     "BETA_WARN",
+    "MAUGIS_H_OVER_Z0",
+    "MAUGIS_STRENGTH",
     "adhesion_from_work",
     "composite_modulus",
     "compliance_constants",
@@ -47,6 +51,14 @@ __all__ = [
 
 #: |beta| = |B/A| above which a CouplingWarning is issued.
 BETA_WARN = 0.05
+
+#: The Maugis strength ``S = 16/(9 sqrt 3)`` (1.0264): the peak tension of the Lennard-Jones
+#: law (Eq. 1) over ``w/z0``, the Dugdale stress of the Maugis convention ``sigma0 = S w/z0``.
+#: The one home of this constant (``lennard_jones.MAUGIS_MATCH_SIGMA0``, ``inverse.S_LJ``
+#: are aliases).
+MAUGIS_STRENGTH = 16.0 / (9.0 * math.sqrt(3.0))
+#: ``h/z0 = 1/S = 9 sqrt(3)/16`` (0.974): the Dugdale range of the Maugis convention.
+MAUGIS_H_OVER_Z0 = 1.0 / MAUGIS_STRENGTH
 
 
 def _modulus(name: str, value: ArrayLike) -> NDArray[np.float64]:
@@ -127,7 +139,7 @@ def adhesion_from_work(work_of_adhesion: ArrayLike, equilibrium_spacing: ArrayLi
     z0 = check("equilibrium_spacing", equilibrium_spacing)
     w, z0 = broadcast(work_of_adhesion=w, equilibrium_spacing=z0)
     with np.errstate(over="ignore", under="ignore"):
-        s0 = 16 * w / (9 * np.sqrt(3) * z0)
+        s0 = MAUGIS_STRENGTH * w / z0
     bad = ~(np.isfinite(s0) & (s0 > 0))
     if np.any(bad):
         _, at = first_point(bad, w=w, z0=z0, s0=s0)

@@ -24,6 +24,7 @@ constant, so no approach is reported: the load is controlled by ``F`` or by ``a`
 from __future__ import annotations
 
 import functools
+import warnings
 from dataclasses import dataclass, field
 from typing import Any, ClassVar
 
@@ -33,9 +34,12 @@ from numpy.typing import ArrayLike, NDArray
 from . import domain as _domain
 from . import reference as _ref
 from ._validation import (
+    RAISE,
+    FailurePolicy,
     broadcast,
     check_array,
     check_solver_options,
+    failure_policy,
     first_point,
     point_text,
     positions,
@@ -110,7 +114,7 @@ class NormalContact(Result):
         ``dF/da > 0``: the state is stable under load control.
     state : ndarray of str or str
         ``"contact"``; ``"no-equilibrium"`` for a load no contact carries, reported by
-        :func:`contact_for_load` with ``on_no_equilibrium="report"`` (its values are NaN).
+        :func:`contact_for_load` with ``on_failure="report"`` (its values are NaN).
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E", "method")
@@ -233,7 +237,7 @@ def _closed_form(A, rho, s):
 
     Called inside the ``np.errstate`` of :func:`normal_contact` (see ``_ref._solve_abar``).
     """
-    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    kap = _ref._kappa(rho, s)
     abar = A * np.sqrt(rho / 2)
     u, res, _, bp = _ref._solve_abar(abar, kap)
     # c >= a exactly (coth u >= 1), which the product's rounding can miss by an ulp or two
@@ -422,7 +426,8 @@ def normal_contact(
     method: str = "closed-form",
     n: int | str = "auto",
     tol: float = 1e-12,
-    raise_on_failure: bool = True,
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
 ) -> NormalContact:
     r"""Adhesive-zone width and load for given contact half-widths (Eqs. 9, 11, 12).
 
@@ -443,9 +448,11 @@ def normal_contact(
         Collocation nodes (``"auto"``: chosen per point for ``tol``).
     tol : float
         Target discretisation error of the collocation solver.
-    raise_on_failure : bool
-        Raise :class:`~linecontact.errors.ConvergenceError` when a point misses its
-        tolerance (default); otherwise flag it in ``converged``.
+    on_failure : {"raise", "report"}
+        A point that misses its tolerance raises
+        :class:`~linecontact.errors.ConvergenceError` (``"raise"``, default), or is
+        flagged in ``converged`` (``"report"``); README, "Conventions". Replaces the
+        deprecated ``raise_on_failure`` (``False`` is ``"report"``).
 
     Returns
     -------
@@ -466,7 +473,8 @@ def normal_contact(
     s = _domain.check("sigma0_over_E", sigma0_over_E)
     if method not in ("closed-form", "collocation"):
         raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
-    check_solver_options(n, tol, raise_on_failure, n_max=8192)
+    check_solver_options(n, tol, n_max=8192)
+    policy = failure_policy(on_failure, where="normal_contact", **deprecated)
     scalar = scalar_or_array(A, rho, s)
     A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
     _ref._check_kappa(rho, s)
@@ -490,14 +498,14 @@ def normal_contact(
                 err = np.zeros(shape)
             converged = (res < 1e-12) & (abs(C) < np.inf) & (abs(F) < np.inf)  # isfinite
         else:
-            kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+            kap = _ref._kappa(rho, s)
             r = _collocation(A, rho, s, n, tol)
             u, C, F = r["u"], r["C"], r["F"]
             res, cons, err, ncol = r["res"], r["cons"], r["tail"], r["n"]
             converged = r["converged"] & np.isfinite(C)
             # residual R is scaled so that 1 <-> h; it is the separation residual over h
             stable = _stable_at(u, kap)
-    if raise_on_failure and not (bool(converged) if scalar else converged.all()):
+    if policy == "raise" and not (bool(converged) if scalar else converged.all()):
         i, at = first_point(~np.asarray(converged, bool), a_over_R=A, R_over_h=rho, sigma0_over_E=s)
         nn = int(np.reshape(ncol, -1)[i])
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
@@ -595,7 +603,7 @@ def _pulloff_arrays(rho: NDArray, s: NDArray, scalar: bool = False):
 def _pulloff_flat(rho: NDArray, s: NDArray):
     """Pull-off at flat arrays or NumPy scalars (elementwise; see reference._where)."""
     where = _ref._where
-    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    kap = _ref._kappa(rho, s)
     F0 = _ref._zero_width(rho, s)
     us = _ustar(kap)
     fin = np.isfinite(us)
@@ -630,6 +638,26 @@ def _pulloff_flat(rho: NDArray, s: NDArray):
     )
 
 
+def _check_law(law: object, where: str, instead: str | None = None, stacklevel: int = 3) -> None:
+    """The deprecated ``law=`` of ``where``: a law is a module (:mod:`linecontact.laws`).
+
+    ``"dugdale"`` (the default) is accepted silently; ``"lennard-jones"`` gives a
+    ``DeprecationWarning`` naming ``instead`` (default
+    ``linecontact.laws.lennard_jones.<where>``); any other value is a ``ValueError``.
+    ``stacklevel`` 3 points at the caller of a public function that calls this one.
+    """
+    if law not in ("dugdale", "lennard-jones"):
+        raise ValueError(f"law must be 'dugdale' or 'lennard-jones', got {law!r}")
+    if law == "lennard-jones":
+        instead = instead or f"linecontact.laws.lennard_jones.{where}"
+        warnings.warn(
+            f"{where}(law='lennard-jones') is deprecated: use {instead} (a law is a module, "
+            "linecontact.laws)",
+            DeprecationWarning,
+            stacklevel=stacklevel,
+        )
+
+
 def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugdale") -> Any:
     r"""Pull-off force under load control, vectorised over parameter points.
 
@@ -652,7 +680,9 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugda
     sigma0_over_E : array_like
         ``>= 0`` (0: Hertz, pull-off force 0 at zero width).
     law : {"dugdale", "lennard-jones"}
-        The Dugdale step (default), or the Lennard-Jones law of Eq. (1) with the same work
+        Deprecated for ``"lennard-jones"`` (a ``DeprecationWarning``): use
+        :func:`linecontact.laws.lennard_jones.pull_off`. The Dugdale step (default; also
+        accepted explicitly, silently), or the Lennard-Jones law of Eq. (1) with the same work
         of adhesion ``sigma0 h`` and peak tension ``sigma0``, solved self-consistently
         (:mod:`linecontact.lennard_jones`; ``sigma0_over_E > 0``, and ``mu = 0.974^(3/2)
         (sigma0/E) sqrt(R/h)`` within ``domain.DOMAIN["lj_mu"]``).
@@ -672,8 +702,7 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugda
     >>> po.mechanism, round(po.a_over_R_at_pulloff, 4)
     ('snap-off', 0.0869)
     """
-    if law not in ("dugdale", "lennard-jones"):
-        raise ValueError(f"law must be 'dugdale' or 'lennard-jones', got {law!r}")
+    _check_law(law, "pull_off")
     rho = _domain.check("R_over_h", R_over_h)
     s = _domain.check("sigma0_over_E", sigma0_over_E)
     scalar = scalar_or_array(rho, s)
@@ -687,7 +716,7 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugda
     _ref._check_kappa(rho, s)
     d = _pulloff_arrays(rho, s, scalar)
     del d["us"], d["phi_min"]
-    lam = 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
+    lam = _ref._maugis_parameter(rho, s)
     vals = {k: as_output(v if scalar else np.asarray(v), scalar) for k, v in d.items()}
     return PullOff(
         R_over_h=as_output(rho, scalar),
@@ -781,8 +810,9 @@ def contact_for_load(
     sigma0_over_E: ArrayLike,
     *,
     branch: str = "stable",
-    on_no_equilibrium: str = "raise",
+    on_failure: FailurePolicy = RAISE,
     law: str = "dugdale",
+    **deprecated: Any,
 ) -> Any:
     r"""The contact state(s) carrying a given load (closed form).
 
@@ -796,13 +826,16 @@ def contact_for_load(
         ``"stable"``: the state with ``dF/da > 0`` (exists for ``F >= F_pulloff``);
         ``"unstable"``: the narrower state with ``dF/da < 0`` (exists only between the load
         minimum and Eq. 14).
-    on_no_equilibrium : {"raise", "report"}
-        For a load that no contact of the branch carries: raise (default), or report the
-        point with ``state == "no-equilibrium"``, NaN widths (the load kept), ``converged`` and
-        ``stable`` False (the other points are solved as usual).
+    on_failure : {"raise", "report"}
+        For a load that no contact of the branch carries: raise (``"raise"``, default), or
+        report the point with ``state == "no-equilibrium"``, NaN widths (the load kept),
+        ``converged`` and ``stable`` False (``"report"``; the other points are solved as
+        usual); README, "Conventions". Replaces the deprecated ``on_no_equilibrium``.
     law : {"dugdale", "lennard-jones"}
-        The Dugdale step (default), or the Lennard-Jones law of Eq. (1) with the same work
-        of adhesion and peak tension, solved self-consistently
+        Deprecated for ``"lennard-jones"`` (a ``DeprecationWarning``): use
+        :func:`linecontact.laws.lennard_jones.contact_for_load`. The Dugdale step (default;
+        also accepted explicitly, silently), or the Lennard-Jones law of Eq. (1) with the same
+        work of adhesion and peak tension, solved self-consistently
         (:mod:`linecontact.lennard_jones_groups`; ``sigma0_over_E > 0``, ``mu`` within its
         domain as in :func:`pull_off`, loads up to
         :data:`~linecontact.lennard_jones_groups.LJ_LOAD_MAX` ``w sqrt(R/z0)``, the stable
@@ -822,17 +855,15 @@ def contact_for_load(
     NoEquilibriumError
         If no contact of the requested branch carries the load, naming the pull-off force.
     """
-    if law not in ("dugdale", "lennard-jones"):
-        raise ValueError(f"law must be 'dugdale' or 'lennard-jones', got {law!r}")
+    _check_law(law, "contact_for_load")
     F = _domain.check("F_over_Eh", F_over_Eh)
     rho = _domain.check("R_over_h", R_over_h)
     s = _domain.check("sigma0_over_E", sigma0_over_E)
     if branch not in ("stable", "unstable"):
         raise ValueError(f"branch must be 'stable' or 'unstable', got {branch!r}")
-    if on_no_equilibrium not in ("raise", "report"):
-        raise ValueError(
-            f"on_no_equilibrium must be 'raise' or 'report', got {on_no_equilibrium!r}"
-        )
+    policy = failure_policy(
+        on_failure, where="contact_for_load", accepts=("on_no_equilibrium",), **deprecated
+    )
     if law == "lennard-jones":
         if branch != "stable":
             raise ValueError(
@@ -843,10 +874,8 @@ def contact_for_load(
 
         scalar = scalar_or_array(F, rho, s)
         F, rho, s = broadcast(F_over_Eh=F, R_over_h=rho, sigma0_over_E=s)
-        return contact_for_load_in_dugdale_groups(
-            F, rho, s, scalar=scalar, on_no_equilibrium=on_no_equilibrium
-        )
-    report = on_no_equilibrium == "report"
+        return contact_for_load_in_dugdale_groups(F, rho, s, scalar=scalar, on_failure=policy)
+    report = policy == "report"
     scalar = scalar_or_array(F, rho, s)
     F, rho, s = (
         np.asarray(v, float) for v in broadcast(F_over_Eh=F, R_over_h=rho, sigma0_over_E=s)
@@ -1128,8 +1157,10 @@ def load_curve(
         (``NUM_MAX = 10**7``: a few hundred MB of samples; more is refused up front rather
         than failing in NumPy's allocator).
     law : {"dugdale", "lennard-jones"}
-        The Dugdale step (default), or the Lennard-Jones law of Eq. (1) with the same work of
-        adhesion and peak tension (as in :func:`pull_off`): the states of the solver's
+        Deprecated for ``"lennard-jones"`` (a ``DeprecationWarning``): use
+        :func:`linecontact.laws.lennard_jones.load_curve`. The Dugdale step (default; also
+        accepted explicitly, silently), or the Lennard-Jones law of Eq. (1) with the same work
+        of adhesion and peak tension (as in :func:`pull_off`): the states of the solver's
         continuation in the central gap, from far away through the pull-off to
         ``F_max_over_Eh`` (``a_max_over_R``, ``num`` and ``num_noncontact`` are the Dugdale
         law's; seconds at ``mu <= 0.3``, minutes at ``mu = 3``).
@@ -1141,8 +1172,7 @@ def load_curve(
     -------
     LoadCurve or linecontact.lennard_jones_groups.LennardJonesLoadCurve
     """
-    if law not in ("dugdale", "lennard-jones"):
-        raise ValueError(f"law must be 'dugdale' or 'lennard-jones', got {law!r}")
+    _check_law(law, "load_curve")
     rho = _domain.scalar("R_over_h", R_over_h)
     s = _domain.scalar("sigma0_over_E", sigma0_over_E)
     if law == "lennard-jones":

@@ -369,6 +369,24 @@ def _table_column(v: NDArray[Any], scale: NDArray[Any] | None) -> list[str]:
     return ["-" if x is None else str(x) for x in v.tolist()]
 
 
+#: The width the parameter lines of a table are wrapped to (a longer item stays whole).
+TABLE_WIDTH = 100
+
+
+def _comment_lines(items: list[str]) -> list[str]:
+    """``items`` joined by ``, `` into ``# `` lines of at most :data:`TABLE_WIDTH`."""
+    lines: list[str] = []
+    line = ""
+    for item in items:
+        if line and len(line) + len(item) + 3 > TABLE_WIDTH:  # "# " before, "," after
+            lines.append(f"# {line},")
+            line = item
+        else:
+            line = f"{line}, {item}" if line else item
+    lines.append(f"# {line}")
+    return lines
+
+
 def _format_table(table: Table) -> str:
     lines = []
     units = table.provenance()["units"]
@@ -377,10 +395,12 @@ def _format_table(table: Table) -> str:
     if table.parameters:
         items = []
         for k, v in table.parameters.items():
+            if k.endswith("_source") and f"{k[: -len('_source')]}_material" in table.parameters:
+                continue  # a preset's citation: the material's name says it (JSON/CSV keep it)
             unit = units.get(k)
             txt = f"{v:.6g}" if isinstance(v, float) else str(v)
             items.append(f"{k} = {txt}" + (f" {unit}" if unit and unit != "1" else ""))
-        lines.append("# " + ", ".join(items))
+        lines.extend(_comment_lines(items))
     keys = [k for k in (table.show or tuple(table.columns)) if k != "reason"]
     if keys:
         cols = [_table_column(table.columns[k], table.scales.get(k)) for k in keys]

@@ -278,14 +278,14 @@ def push(
             one(r),
             one(s),
             method="closed-form",
-            on_no_equilibrium="report" if report else "raise",
+            on_failure="report" if report else "raise",
         )
         return flat(res.a_over_R), flat(res.F_over_Eh2), np.reshape(np.asarray(res.converged), -1)
 
     def rest_at(load):
         lo, _, hi, _ = _domain.DOMAIN["F_over_Eh"]
         load = np.clip(load, lo, hi)
-        res = contact_for_load(one(load), one(rho), one(s), on_no_equilibrium="report")
+        res = contact_for_load(one(load), one(rho), one(s), on_failure="report")
         return flat(res.a_over_R), np.reshape(np.asarray(res.converged), -1)
 
     dw = s * (r - 1.0)
@@ -357,7 +357,10 @@ def push(
     creep = np.full(rho.shape, np.nan)
     if np.any(holds):
         T = np.abs(S_roll[holds]) / (rho[holds] * a_roll[holds])  # T over E a_roll
-        roll = steady_rolling(tau[holds], T_over_Ea=np.minimum(T, 2 * tau[holds]))
+        # at full slip (T = 2 tau0): the sliding state, reported
+        roll = steady_rolling(
+            tau[holds], T_over_Ea=np.minimum(T, 2 * tau[holds]), on_failure="report"
+        )
         creep[holds] = np.sign(S_roll[holds]) * np.asarray(roll.creep_over_V, float)
         creep[holds] = np.where(S_roll[holds] == 0, 0.0, creep[holds])
 
@@ -381,7 +384,7 @@ def push(
         at_rest &= np.isfinite(a_here)
         if np.any(at_rest):
             T = Q[at_rest] / (rho[at_rest] * a_here[at_rest])
-            init = sliding_initiation(tau[at_rest], T_over_Ea=T)
+            init = sliding_initiation(tau[at_rest], T_over_Ea=T, on_failure="report")
             d_rest[at_rest] = np.where(
                 np.asarray(init.state) == "sliding", 0.0, np.asarray(init.d_over_a, float)
             )

@@ -116,10 +116,10 @@ def _check_kappa(rho: NDArray, s: NDArray, rho_name: str = "R_over_h") -> None:
     """Refuse parameter points beyond :data:`KAPPA_MAX`, naming both parameters."""
     if np.ndim(rho) == 0 and np.ndim(s) == 0:
         # the same operations on Python floats (sqrt is correctly rounded in both)
-        if (4 / np.pi) * float(s) * math.sqrt(2 * float(rho)) <= KAPPA_MAX:
+        if _kappa(float(rho), float(s)) <= KAPPA_MAX:
             return
     with np.errstate(over="ignore"):
-        kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+        kap = _kappa(rho, s)
     bad = ~(kap <= KAPPA_MAX)
     if np.any(bad):
         pick = list(first_point(bad, kap=kap, rho=rho, s=s)[1].values())
@@ -142,6 +142,20 @@ def _representable(what: str, value: NDArray, **params: NDArray) -> NDArray:
 # groups
 
 
+def _kappa(rho, s):
+    """:func:`kappa` of validated inputs: arrays, NumPy scalars or Python floats.
+
+    The one home of the formula: every solver forms ``kappa`` here. A Python float takes
+    ``math.sqrt`` (fast, and correctly rounded as ``np.sqrt``: the same bits).
+    """
+    return (4 / np.pi) * s * (math.sqrt(2 * rho) if type(rho) is float else np.sqrt(2 * rho))
+
+
+def _maugis_parameter(rho, s):
+    """:func:`maugis_parameter` of validated inputs (arrays or NumPy scalars)."""
+    return 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
+
+
 def kappa(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | float:
     r"""The single group of the Maugis--Dugdale line contact.
 
@@ -155,7 +169,7 @@ def kappa(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | float:
     s = _domain.check("sigma0_over_E", sigma0_over_E)
     rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     with np.errstate(over="ignore"):
-        val = (4 / np.pi) * s * np.sqrt(2 * rho)
+        val = _kappa(rho, s)
     val = _representable("kappa", val, R_over_h=rho, sigma0_over_E=s)
     return out(val, scalar_or_array(rho, s))
 
@@ -172,7 +186,7 @@ def maugis_parameter(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray |
     s = _domain.check("sigma0_over_E", sigma0_over_E)
     rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     with np.errstate(over="ignore"):
-        val = 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
+        val = _maugis_parameter(rho, s)
     val = _representable("the Maugis parameter", val, R_over_h=rho, sigma0_over_E=s)
     return out(val, scalar_or_array(rho, s))
 
@@ -187,7 +201,7 @@ def hertz_load(a_over_R: ArrayLike, R_over_h: ArrayLike) -> NDArray | float:
     rho = _domain.check("R_over_h", R_over_h)
     A, rho = broadcast(a_over_R=A, R_over_h=rho)
     with np.errstate(over="ignore"):
-        val = np.pi / 4 * A * A * rho
+        val = _hertz(A, rho)
     val = _representable("the Hertz load", val, a_over_R=A, R_over_h=rho)
     return out(val, scalar_or_array(A, rho))
 
@@ -204,7 +218,7 @@ def jkr_load(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike)
     s = _domain.check("sigma0_over_E", sigma0_over_E)
     A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
     with np.errstate(over="ignore", invalid="ignore"):
-        val = np.pi / 4 * A * A * rho - np.sqrt(2 * np.pi * s * rho * A)
+        val = _jkr(A, rho, s)
     val = _representable("the JKR load", val, a_over_R=A, R_over_h=rho, sigma0_over_E=s)
     return out(val, scalar_or_array(A, rho, s))
 
@@ -294,6 +308,67 @@ def lennard_jones_rigid_pull_off() -> tuple[float, float]:
     (-2.466056, 1.100925)
     """
     return float(_lj_rigid(_LJ_GAP_AT_PULL_OFF)), _LJ_GAP_AT_PULL_OFF
+
+
+# --------------------------------------------------------------------------------------------
+# the closed forms of Hertz, JKR and the rigid (DMT-like) cylinder, once, in the paper's groups
+#
+# ``A = a/R``, ``rho = R/h``, ``s = sigma0/E``, loads over ``E h``. Hertz and JKR have no range:
+# any length ``h`` and stress ``sigma0`` with ``w = sigma0 h`` give the same physics, so the
+# forms in SI units (:mod:`linecontact.inverse`, ``h = R``) and in the Lennard-Jones law's
+# units (:mod:`linecontact.adhesion_map`, ``h = z0``, ``rho = 1``, ``s = mu``) scale these.
+
+
+def _hertz(A, rho):
+    """Hertz line contact, Eq. (13): ``F/(Eh) = (pi/4) A^2 rho``."""
+    return np.pi / 4 * A * A * rho
+
+
+def _hertz_half_width(F, rho):
+    """The inverse of :func:`_hertz`: ``A = sqrt(4 F/(pi rho))``, 0 for ``F <= 0``."""
+    return np.sqrt(4.0 * np.maximum(F, 0.0) / (np.pi * rho))
+
+
+def _jkr(A, rho, s):
+    """JKR line contact: ``F/(Eh) = (pi/4) A^2 rho - sqrt(2 pi s rho A)``."""
+    return np.pi / 4 * A * A * rho - np.sqrt(2 * np.pi * s * rho * A)
+
+
+def _jkr_pull_off(rho, s):
+    """JKR pull-off ``F/(Eh) = -(3/4)(4 pi s^2 rho)^(1/3)`` and its ``A = (2 s/(pi rho))^(1/3)``."""
+    return -0.75 * np.cbrt(4 * np.pi * s * s * rho), np.cbrt(2 * s / (np.pi * rho))
+
+
+def _jkr_half_width(F, rho, s):
+    """The JKR half-width ``A`` on the stable branch at the load ``F/(Eh)`` (arrays broadcast).
+
+    With ``u = sqrt(A)`` the load is ``a u^4 - b u`` (``a = pi rho/4``, ``b = sqrt(2 pi s
+    rho)``), convex and increasing beyond the pull-off: Newton from above the root converges
+    monotonically. NaN below the pull-off (no JKR contact).
+    """
+    F, rho, s = np.broadcast_arrays(*(np.asarray(v, float) for v in (F, rho, s)))
+    a, b = np.pi * rho / 4, np.sqrt(2 * np.pi * s * rho)
+    u_po = np.cbrt(b / (4.0 * a))  # the pull-off, where the load is least
+    # a start where a u^4 - b u - F >= 0 and beyond the pull-off
+    u = np.maximum(np.sqrt(np.sqrt(2.0 * np.maximum(F, 0.0) / a)), np.cbrt(2.0 * b / a))
+    F_po, _ = _jkr_pull_off(rho, s)
+    ok = F >= F_po * (1.0 + 1e-12)  # the pull-off itself, give or take round-off
+    with np.errstate(divide="ignore", invalid="ignore"):  # no adhesion at zero load: nan
+        for _ in range(200):  # quadratic convergence; linear (halving) at the pull-off
+            step = np.where(ok, (a * u**4 - b * u - F) / (4.0 * a * u**3 - b), 0.0)
+            u = np.maximum(u - step, u_po)
+            if np.all(np.abs(step) <= 1e-15 * u):
+                break
+    return np.where(ok, u * u, np.nan)
+
+
+def _rigid_pull_off(rho, s):
+    """Pull-off of a rigid cylinder under the Dugdale step: ``F/(Eh) = -2 sqrt(2) s sqrt(rho)``.
+
+    The adhesive zone ``|x| < sqrt(2 R h)`` of a rigid cylinder touching at a point: the
+    DMT-like (small ``kappa``) limit.
+    """
+    return -2 * math.sqrt(2) * s * np.sqrt(rho)
 
 
 def _zero_width(rho: NDArray, s: NDArray) -> NDArray:

@@ -56,14 +56,14 @@ separation conditions are the gap ``h2`` at ``x = c2`` (Eq. 21) and ``h1`` at ``
 
 Two solvers give the same :class:`SlidingContact`:
 
-``method="collocation"`` (default)
+``method="collocation"``
     The paper's route: Eq. (20) by Gauss--Chebyshev collocation
     (:class:`linecontact.sie.BoundedSolver` with the eccentricity as the extra unknown of the
     consistency condition), Eqs. (21)--(22) by product integration of their logarithmic
     kernels (singular at the contact edges), Newton's method in
     :math:`u_i = \operatorname{arccosh}(c_i/a)`, an adaptive number of nodes with a
     Chebyshev-tail error estimate (as :func:`linecontact.normal.normal_contact`).
-``method="closed-form"``
+``method="closed-form"`` (default, as for every other problem)
     The asymmetric Maugis--Dugdale solution derived in ``docs/sliding.md``. With
     :math:`c_i = a\cosh u_i`, :math:`\sigma = (u_1+u_2)/2`, :math:`\delta = (u_1-u_2)/2`,
     :math:`t = x/a = \cos\theta`, :math:`q_i = e^{-u_i}`:
@@ -105,7 +105,7 @@ F. Erdogan, G. D. Gupta, T. S. Cook, "Numerical solution of singular integral eq
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import ClassVar, cast
+from typing import Any, ClassVar, Literal, cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -113,8 +113,11 @@ from numpy.typing import ArrayLike, NDArray
 from . import domain as _domain
 from . import reference as _ref
 from ._validation import (
+    RAISE,
+    FailurePolicy,
     broadcast,
     check_solver_options,
+    failure_policy,
     first_point,
     point_text,
     positions,
@@ -192,7 +195,7 @@ class SlidingContact(Result):
         ``dF/da > 0``: stable under load control.
     state : ndarray of str or str
         ``"contact"``; ``"no-equilibrium"`` for a load below the pull-off force reported by
-        :func:`sliding_contact_for_load` with ``on_no_equilibrium="report"`` (values NaN).
+        :func:`sliding_contact_for_load` with ``on_failure="report"`` (values NaN).
     """
 
     inputs: ClassVar[tuple[str, ...]] = (
@@ -540,7 +543,7 @@ def _newton2(evaluate, u1, u2, params, *, nextra=0, maxiter=60, tol=1e-15, floor
 def _closed_form(A, rho, r, s, u1=None, u2=None):
     """u1, u2 and residuals of the closed-form separation conditions, flat arrays."""
     ab = A * np.sqrt(rho / 2)
-    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    kap = _ref._kappa(rho, s)
     if u1 is None or u2 is None:
         u1, u2 = _initial_u(ab, kap, r)
     u1, u2, e1, e2, _ = _newton2(_cf_evaluate, u1, u2, (ab, kap, r))
@@ -555,7 +558,7 @@ def _cf_evaluate(u1, u2, ab, kap, r):
 def _cf_outputs(A, rho, r, s, u1, u2):
     """e, F, M, dF/da from u1, u2 (closed form; also used for the stability of any method)."""
     ab = A * np.sqrt(rho / 2)
-    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    kap = _ref._kappa(rho, s)
     ecc = (2 * s / np.pi) * (u1 - u2)
     sh1, sh2 = np.sinh(u1), np.sinh(u2)
     F = (np.pi / 2) * (ab * ab - kap * ab * 0.5 * (sh1 + sh2))
@@ -584,7 +587,7 @@ def _stable(A, rho, r, s, u1, u2, dphi):
     minimum, always next to a zero-width one. Flat arrays or NumPy scalars.
     """
     ab = A * np.sqrt(rho / 2)
-    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    kap = _ref._kappa(rho, s)
     with np.errstate(over="ignore", invalid="ignore"):
         c1, c2 = np.cosh(u1), np.cosh(u2)
         scale = 2 * ab + kap * (c1 + c2) + kap * ab * (c1 + c2)
@@ -706,7 +709,7 @@ def _collocation(A, rho, r, s, n, tol):
     """Flat arrays in, dict of flat arrays out."""
     sizes = np.asarray(_SIZES)
     ab = A * np.sqrt(rho / 2)
-    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    kap = _ref._kappa(rho, s)
     u1, u2 = _initial_u(ab, kap, r)  # each edge from the symmetric solution with its range
 
     def run(nn, idx, v1, v2):
@@ -779,10 +782,10 @@ def _check_common(R_over_h2, h1_over_h2, sigma0_over_E):
     return rho, r, s
 
 
-def _check_method(method, n, tol, raise_on_failure):
-    if method not in ("collocation", "closed-form"):
-        raise ValueError(f"method must be 'collocation' or 'closed-form', got {method!r}")
-    check_solver_options(n, tol, raise_on_failure, n_max=8192)
+def _check_method(method, n, tol):
+    if method not in ("closed-form", "collocation"):
+        raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
+    check_solver_options(n, tol, n_max=8192)
 
 
 def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
@@ -840,16 +843,14 @@ def _solve_split(A, rho, r, s, n, tol, closed, u_guess):
     return out
 
 
-def _pack(
-    d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure, where, missing=None, F_asked=None
-):
+def _pack(d, A, rho, r, s, tau, method, shape, scalar, policy, where, missing=None, F_asked=None):
     """Assemble the result; ``missing`` marks the points reported without a state.
 
     Their values are NaN but for the load ``F_asked`` that no contact carries.
     """
     missing = np.zeros(A.shape, bool) if missing is None else missing
     conv = d["converged"] | missing
-    if raise_on_failure and not np.all(conv):
+    if policy == "raise" and not np.all(conv):
         # the inputs at the first failing point, after broadcasting (and the load asked for)
         asked = {} if F_asked is None else {"F_over_Eh2": F_asked}
         i, at = first_point(
@@ -908,10 +909,11 @@ def sliding_contact(
     sigma0_over_E: ArrayLike,
     *,
     tau0_over_E: ArrayLike | None = None,
-    method: str = "collocation",
+    method: Literal["closed-form", "collocation"] = "closed-form",
     n: int | str = "auto",
     tol: float = 1e-12,
-    raise_on_failure: bool = True,
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
 ) -> SlidingContact:
     r"""Zones, eccentricity, load and moment of steady sliding at given ``a`` (Eqs. 20--22).
 
@@ -929,15 +931,19 @@ def sliding_contact(
     tau0_over_E : array_like, optional
         Shear strength of the interface over ``E``, ``>= 0``: adds the friction force
         ``2 a tau0`` (``T_over_Eh2``).
-    method : {"collocation", "closed-form"}
-        Solver (see the module docstring); both give the same state to about 1e-12.
+    method : {"closed-form", "collocation"}
+        Solver (see the module docstring); both give the same state to about 1e-12. The
+        default is the closed form, as for every other problem (up to 0.2.0 it was the
+        collocation: pass ``method="collocation"`` for the paper's route).
     n : int or "auto"
         Collocation nodes (``"auto"``: chosen per point for ``tol``).
     tol : float
         Target discretisation error of the collocation solver.
-    raise_on_failure : bool
-        Raise :class:`~linecontact.errors.ConvergenceError` when a point misses its
-        tolerance (default); otherwise flag it in ``converged``.
+    on_failure : {"raise", "report"}
+        A point that misses its tolerance raises
+        :class:`~linecontact.errors.ConvergenceError` (``"raise"``, default), or is
+        flagged in ``converged`` (``"report"``); README, "Conventions". Replaces the
+        deprecated ``raise_on_failure`` (``False`` is ``"report"``).
 
     Returns
     -------
@@ -961,7 +967,8 @@ def sliding_contact(
         if tau0_over_E is None
         else _domain.check("tau0_over_E", tau0_over_E, "friction_tau0_over_E")
     )
-    _check_method(method, n, tol, raise_on_failure)
+    _check_method(method, n, tol)
+    policy = failure_policy(on_failure, where="sliding_contact", **deprecated)
     scalar = scalar_or_array(A, rho, r, s, tau)
     A, rho, r, s, tau = broadcast(
         a_over_R=A, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau
@@ -979,9 +986,7 @@ def sliding_contact(
     # convergence check reports it
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         d = _solve_flat(A, rho, r, s, method, n, tol)
-        return _pack(
-            d, A, rho, r, s, tau, method, shape, scalar, raise_on_failure, "sliding_contact"
-        )
+        return _pack(d, A, rho, r, s, tau, method, shape, scalar, policy, "sliding_contact")
 
 
 # --------------------------------------------------------------------------------------------
@@ -1155,7 +1160,7 @@ def sliding_pull_off(
         rho, r, s = _ref._scalars(rho, r, s)
     else:
         rho, r, s = (np.ascontiguousarray(v, float).reshape(-1) for v in (rho, r, s))
-    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    kap = _ref._kappa(rho, s)
     where = _ref._where
     # h1/h2 far from 1 (1e-300, 1e12) overflows on the way to a finite answer; a result that
     # is not finite is reported below
@@ -1306,11 +1311,11 @@ def sliding_contact_for_load(
     sigma0_over_E: ArrayLike,
     *,
     tau0_over_E: ArrayLike | None = None,
-    method: str = "collocation",
+    method: Literal["closed-form", "collocation"] = "closed-form",
     n: int | str = "auto",
     tol: float = 1e-12,
-    raise_on_failure: bool = True,
-    on_no_equilibrium: str = "raise",
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
 ) -> SlidingContact:
     r"""The steadily sliding contact carrying a given normal load (stable branch).
 
@@ -1326,12 +1331,16 @@ def sliding_contact_for_load(
     ----------
     F_over_Eh2 : array_like
         Normal load per unit length over ``E h2``, compressive positive.
-    R_over_h2, h1_over_h2, sigma0_over_E, tau0_over_E, method, n, tol, raise_on_failure
-        As in :func:`sliding_contact`.
-    on_no_equilibrium : {"raise", "report"}
-        For a load below the pull-off force: raise (default), or report the point with
-        ``state == "no-equilibrium"``, NaN values (the load kept), ``converged`` and
-        ``stable`` False.
+    R_over_h2, h1_over_h2, sigma0_over_E, tau0_over_E, method, n, tol
+        As in :func:`sliding_contact` (the closed form by default).
+    on_failure : {"raise", "report"}
+        For a load below the pull-off force, or a state that misses its tolerance: raise
+        :class:`~linecontact.errors.NoEquilibriumError` or
+        :class:`~linecontact.errors.ConvergenceError` (``"raise"``, default), or report the
+        point (``"report"``: below the pull-off force ``state == "no-equilibrium"``, NaN
+        values (the load kept), ``converged`` and ``stable`` False; a miss flagged in
+        ``converged``); README, "Conventions". Replaces both deprecated keywords,
+        ``raise_on_failure`` (``False`` is ``"report"``) and ``on_no_equilibrium``.
 
     Returns
     -------
@@ -1356,12 +1365,14 @@ def sliding_contact_for_load(
         if tau0_over_E is None
         else _domain.check("tau0_over_E", tau0_over_E, "friction_tau0_over_E")
     )
-    _check_method(method, n, tol, raise_on_failure)
-    if on_no_equilibrium not in ("raise", "report"):
-        raise ValueError(
-            f"on_no_equilibrium must be 'raise' or 'report', got {on_no_equilibrium!r}"
-        )
-    report = on_no_equilibrium == "report"
+    _check_method(method, n, tol)
+    policy = failure_policy(
+        on_failure,
+        where="sliding_contact_for_load",
+        accepts=("raise_on_failure", "on_no_equilibrium"),
+        **deprecated,
+    )
+    report = policy == "report"
     scalar = scalar_or_array(F, rho, r, s, tau)
     F, rho, r, s, tau = broadcast(
         F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau
@@ -1374,7 +1385,7 @@ def sliding_contact_for_load(
         F, rho, r, s, tau = (
             np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (F, rho, r, s, tau)
         )
-    kap = (4 / np.pi) * s * np.sqrt(2 * rho)
+    kap = _ref._kappa(rho, s)
     phi_t = F * (2 / np.pi)
     # as in sliding_pull_off: far from h1 = h2 the search overflows on the way; the
     # convergence check of the state found reports a failure
@@ -1439,7 +1450,7 @@ def sliding_contact_for_load(
             method,
             shape,
             scalar,
-            raise_on_failure,
+            policy,
             "sliding_contact_for_load",
             missing,
             F,

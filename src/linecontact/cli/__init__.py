@@ -5,7 +5,8 @@ One module per family of subcommands (:mod:`~linecontact.cli.normal`,
 :mod:`~linecontact.cli.sliding`,
 :mod:`~linecontact.cli.paper`, :mod:`~linecontact.cli.adhesion_map`,
 :mod:`~linecontact.cli.materials`), the shared options and
-output in :mod:`~linecontact.cli._options`. Every subcommand takes the paper's
+output in :mod:`~linecontact.cli._options`. A module is imported only when one of its
+subcommands runs (:data:`COMMANDS`, :func:`build_parser`). Every subcommand takes the paper's
 nondimensional groups or SI inputs, prints a readable table, or with ``--json``
 machine-readable JSON. Bad input: one ``error:`` line on stderr and exit status 2. A solver
 that misses its tolerance: exit status 1.
@@ -15,6 +16,7 @@ from __future__ import annotations
 
 import argparse
 import errno
+import importlib
 import os
 import sys
 import textwrap
@@ -26,18 +28,64 @@ from .._interrupt import EXIT_INTERRUPTED, imports_interruptible
 with imports_interruptible():  # Ctrl-C here: status 130, one line (linecontact._interrupt)
     from .._version import __version__
     from ..errors import ConvergenceError
-    from . import adhesion_map as _adhesion_map
-    from . import fit as _fit
-    from . import history as _history
-    from . import materials as _materials
-    from . import normal as _normal
-    from . import paper as _paper
-    from . import push as _push
-    from . import sliding as _sliding
-    from . import tangential as _tangential
     from ._options import NoPointError, Parser, flag_message, record_flags
 
-__all__ = ["build_parser", "main"]
+__all__ = ["COMMANDS", "build_parser", "main"]
+
+#: Every subcommand, in the order of ``linecontact --help``: its module in this package
+#: (whose ``register(sub)`` adds it, with the module's other subcommands) and its one-line
+#: summary. A module is imported only when one of its subcommands runs or shows its help;
+#: the summary here is what ``linecontact --help`` shows (a test keeps it equal to the
+#: module's own).
+COMMANDS: dict[str, tuple[str, str]] = {
+    "normal": (
+        "normal",
+        "adhesive-zone width and load for given contact half-widths, or the contact for loads",
+    ),
+    "pulloff": ("normal", "pull-off force under load control and its mechanism"),
+    "curve": (
+        "normal",
+        "the whole load curve: non-contact branch, contact branch, turning point, pull-off",
+    ),
+    "slide-init": (
+        "tangential",
+        "initiation of sliding under a tangential force (stick zone, T/(Ea))",
+    ),
+    "roll": ("tangential", "steady rolling of a driving cylinder (stick zone, T/(Ea), creep)"),
+    "cycle": ("history", "cyclic tangential loading: energy dissipated per cycle, stick zone"),
+    "history": (
+        "history",
+        "a tangential load history with memory: zones, slip, energy per step",
+    ),
+    "fit-adhesion": (
+        "fit",
+        "work of adhesion (and range) from pull-off forces, with uncertainty",
+    ),
+    "fit-friction": (
+        "fit",
+        "interfacial shear strength from friction forces, with uncertainty",
+    ),
+    "slide": (
+        "sliding",
+        "steady sliding: adhesive zones, eccentricity, load and moment (trailing h1, leading h2)",
+    ),
+    "push": ("push", "a fibre pushed sideways: stay, roll or slide, and at what push"),
+    "paper": ("paper", "redraw the paper's Figs. 2-14 (PNG by default)"),
+    "figures": (
+        "paper",
+        "draw the figures beyond the paper: the pushed fibre's motion maps and force, "
+        "load-history loops and loss, the adhesion map",
+    ),
+    "cite": ("paper", "how to cite linecontact and the paper"),
+    "map": (
+        "adhesion_map",
+        "the adhesion map of line contact: where Hertz, rigid, JKR, Maugis-Dugdale hold",
+    ),
+    "materials": (
+        "materials",
+        "the material presets (E, nu, range, source) of --cylinder-material",
+    ),
+}
 
 _COMMANDS = (
     "normal, pulloff, curve, slide-init, roll, cycle, history, slide, push, fit-adhesion, "
@@ -45,8 +93,29 @@ _COMMANDS = (
 )
 
 
-def build_parser() -> argparse.ArgumentParser:
-    """The argparse parser of the ``linecontact`` command."""
+def _command_of(argv: Sequence[str]) -> str | None:
+    """The subcommand that ``argv`` names: its first word that is no option (None: none).
+
+    ``linecontact`` itself has no option that takes a value (``-h``, ``--version``), so the
+    first word that does not start with ``-`` is the subcommand (or the word after ``--``).
+    """
+    for i, arg in enumerate(argv):
+        if arg == "--":
+            return argv[i + 1] if i + 1 < len(argv) else None
+        if not arg.startswith("-"):
+            return arg
+    return None
+
+
+def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
+    """The argparse parser of the ``linecontact`` command.
+
+    Without ``argv``: every subcommand's full parser (every subcommand module imported).
+    With ``argv`` (the command line, as :func:`main` has it): only the subcommand it names
+    gets its full parser, from its module; the others are stubs that carry their summary
+    for ``linecontact --help`` (and the choices of an unknown command's error), so that a
+    run imports only the module of its own subcommand.
+    """
     p = Parser(
         prog="linecontact",
         description=textwrap.fill(
@@ -72,15 +141,15 @@ def build_parser() -> argparse.ArgumentParser:
         help="print the version and exit",
     )
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
-    _normal.register(sub)
-    _tangential.register(sub)
-    _history.register(sub)
-    _fit.register(sub)
-    _sliding.register(sub)
-    _push.register(sub)
-    _paper.register(sub)
-    _adhesion_map.register(sub)
-    _materials.register(sub)
+    wanted = None if argv is None else COMMANDS.get(_command_of(argv) or "", ("",))[0]
+    for name, (module, summary) in COMMANDS.items():
+        if name in sub.choices:  # added with an earlier subcommand of its module
+            continue
+        if argv is None or module == wanted:
+            with imports_interruptible():
+                importlib.import_module(f"{__name__}.{module}").register(sub)
+        else:
+            sub.add_parser(name, help=summary, add_help=False)
     for sp in sub.choices.values():
         sp.allow_abbrev = False
     p.set_defaults(_subparsers=sub)
@@ -151,8 +220,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     written with ``-o`` appears whole or not at all.
     """
     try:
-        parser = build_parser()
-        args = parser.parse_args(argv)
+        words = list(argv) if argv is not None else sys.argv[1:]
+        parser = build_parser(words)
+        args = parser.parse_args(words)
     except KeyboardInterrupt:
         print("linecontact: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED

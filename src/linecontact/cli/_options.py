@@ -66,7 +66,36 @@ SI_KEYS = (
 
 
 class HelpFormatter(argparse.RawDescriptionHelpFormatter):
-    """Keeps the line breaks of descriptions and examples; appends every real default."""
+    """Keeps the line breaks of descriptions and examples; appends every real default.
+
+    Options joined by :func:`show_together` share one entry (the first one's help), so that
+    a subcommand's help fits one screen.
+    """
+
+    def __init__(self, prog: str, **kwargs: Any) -> None:
+        kwargs.setdefault("max_help_position", 34)
+        super().__init__(prog, **kwargs)
+
+    def add_argument(self, action: argparse.Action) -> None:
+        if getattr(action, "shown_with", None) is None:  # else in its partner's entry
+            super().add_argument(action)
+
+    def _format_action(self, action: argparse.Action) -> str:
+        # an entry too long for the column: its help on the same line where it fits
+        help_position = min(self._action_max_length + 2, self._max_help_position)
+        invocation = self._format_action_invocation(action)
+        if action.help and len(invocation) > help_position - self._current_indent - 2:
+            text = " ".join(self._expand_help(action).split())
+            line = f"{' ' * self._current_indent}{invocation}  {text}"
+            if len(line) <= self._width:
+                return line + "\n"
+        return super()._format_action(action)
+
+    def _format_action_invocation(self, action: argparse.Action) -> str:
+        return ", ".join(
+            super(HelpFormatter, self)._format_action_invocation(a)
+            for a in (action, *getattr(action, "partners", ()))
+        )
 
     def _get_help_string(self, action: argparse.Action) -> str:
         text = action.help or ""
@@ -100,11 +129,32 @@ class Parser(argparse.ArgumentParser):
 
 
 def add_command(sub: Any, name: str, summary: str, description: str, examples: Sequence[str]):
-    """A subcommand parser with a one-line summary, a description and examples in its help."""
+    """A subcommand parser with a one-line summary, a description and examples in its help.
+
+    Its help fits one screen (under 40 lines at 100 columns, a test keeps it so): a short
+    description, two or three examples, a one-line usage; the details are in docs/cli.md.
+    """
     epilog = "examples:\n" + "\n".join(f"  {e}" for e in examples)
     return sub.add_parser(
-        name, help=summary, description=textwrap.fill(description, 88), epilog=epilog
+        name,
+        help=summary,
+        description=textwrap.fill(description, 88),
+        epilog=epilog,
+        usage="%(prog)s [options]",
     )
+
+
+def show_together(p: argparse.ArgumentParser, *flags: str, help: str) -> None:
+    """Show the options ``flags`` as one entry of ``p``'s help, with ``help``.
+
+    Each option keeps its own ``help`` (for the record); the first one's is replaced. The
+    entry stands where the first option stands.
+    """
+    first, *rest = (p._option_string_actions[f] for f in flags)
+    first.help = help
+    first.partners = tuple(rest)  # type: ignore[attr-defined]
+    for a in rest:
+        a.shown_with = first  # type: ignore[attr-defined]
 
 
 # --------------------------------------------------------------------------------------------
@@ -112,11 +162,12 @@ def add_command(sub: Any, name: str, summary: str, description: str, examples: S
 
 
 def add_output_options(p: argparse.ArgumentParser) -> None:
-    """``--format``, ``--json``, ``-o``, ``--indent`` and ``--quiet``."""
-    g = p.add_argument_group("output")
+    """``--format``, ``--json``, ``-o``, ``--indent`` and ``--quiet`` (with the command's own)."""
+    g = p
     g.add_argument(
         "--format",
         choices=FORMATS,
+        metavar="FORMAT",
         help="table (readable), json (one object: provenance and results), jsonl (provenance "
         "line, then one record per line) or csv (commented provenance header) (default: from "
         "the extension of -o FILE, else table)",
@@ -133,6 +184,15 @@ def add_output_options(p: argparse.ArgumentParser) -> None:
         "--indent", type=int, metavar="N", help="indent JSON by N spaces (compact without)"
     )
     g.add_argument("--quiet", action="store_true", help="do not print warnings")
+    show_together(
+        p,
+        "--format",
+        "--json",
+        help="table, json, jsonl, csv (default: -o's extension, else table)",
+    )
+    show_together(
+        p, "--indent", "--quiet", help="indent JSON by N spaces (else compact); print no warnings"
+    )
 
 
 def emit(args: argparse.Namespace, table: Table) -> None:
@@ -263,7 +323,7 @@ def _positive(flag: str, value: float | None) -> None:
 
 def add_si_materials(p: argparse.ArgumentParser, range_flag: str = "--h") -> Any:
     """The SI group: radius, moduli, adhesion (the caller may add more to it) and ``--length``."""
-    si = p.add_argument_group("SI inputs (instead of the nondimensional groups)")
+    si = p.add_argument_group("SI inputs (instead of the groups)")
     si.add_argument("--radius", type=float, metavar="R", help="cylinder radius R [m]")
     si.add_argument(
         "--modulus", type=float, metavar="E", help="composite plane-strain modulus E [Pa]"
@@ -272,12 +332,11 @@ def add_si_materials(p: argparse.ArgumentParser, range_flag: str = "--h") -> Any
     si.add_argument("--nu1", type=float, help="cylinder's Poisson ratio, in (-1, 0.5]")
     si.add_argument("--E2", type=float, help="substrate's Young's modulus [Pa]")
     si.add_argument("--nu2", type=float, help="substrate's Poisson ratio, in (-1, 0.5]")
-    names = ", ".join(material_names())
     si.add_argument(
         "--cylinder-material",
         metavar="NAME",
-        help=f"cylinder's material preset, instead of --E1 --nu1 (one of: {names}; "
-        "case-insensitive; linecontact materials lists the values and sources)",
+        help="cylinder's material preset, instead of --E1 --nu1 (case-insensitive; names: "
+        "`linecontact materials`)",
     )
     si.add_argument(
         "--substrate-material",
@@ -285,7 +344,9 @@ def add_si_materials(p: argparse.ArgumentParser, range_flag: str = "--h") -> Any
         help="substrate's material preset, instead of --E2 --nu2 (names as for "
         "--cylinder-material)",
     )
-    si.add_argument("--sigma0", type=float, help="adhesive (Dugdale) stress sigma0 [Pa]")
+    si.add_argument(
+        "--sigma0", type=float, metavar="S", help="adhesive (Dugdale) stress sigma0 [Pa]"
+    )
     name = "leading-edge adhesion range h2" if range_flag == "--h2" else "adhesion range h"
     si.add_argument(
         range_flag,
@@ -301,12 +362,46 @@ def add_si_materials(p: argparse.ArgumentParser, range_flag: str = "--h") -> Any
         help="work of adhesion w [J/m^2] (with --z0, instead of --sigma0 and "
         f"{range_flag}: sigma0 = 16 w/(9 sqrt(3) z0), {range_flag} = 0.974 z0)",
     )
-    si.add_argument("--z0", type=float, help="equilibrium spacing of the surfaces z0 [m]")
+    si.add_argument(
+        "--z0", type=float, metavar="Z", help="equilibrium spacing of the surfaces z0 [m]"
+    )
     si.add_argument(
         "--length",
         type=float,
         metavar="L",
         help="length of the fibre [m]: adds total forces [N] and moments [N m]",
+    )
+    rng = range_flag[2:]
+    show_together(
+        p,
+        "--radius",
+        "--length",
+        help="cylinder radius R [m]; fibre length [m] (adds totals [N], [N m])",
+    )
+    p._option_string_actions[
+        "--modulus"
+    ].help = "composite plane-strain modulus [Pa], or the materials:"
+    show_together(
+        p,
+        "--E1",
+        "--nu1",
+        "--E2",
+        "--nu2",
+        help="Young's moduli [Pa], Poisson ratios (1: cylinder)",
+    )
+    show_together(
+        p,
+        "--cylinder-material",
+        "--substrate-material",
+        help="or presets (names: `linecontact materials`)",
+    )
+    show_together(
+        p,
+        "--sigma0",
+        range_flag,
+        "--work-of-adhesion",
+        "--z0",
+        help=f"sigma0 [Pa], {rng} [m]; or w [J/m^2], z0 [m]",
     )
     return si
 
@@ -427,9 +522,12 @@ def si_parameters(args: argparse.Namespace, cyl: Cylinder) -> dict[str, Any]:
     return params
 
 
-def add_groups(p: argparse.ArgumentParser) -> None:
-    """The groups ``--R-over-h``, ``--sigma0-over-E`` and the SI inputs that replace them."""
-    g = p.add_argument_group("nondimensional groups (the paper's)")
+def add_groups(p: argparse.ArgumentParser, g: Any = None) -> None:
+    """The groups ``--R-over-h``, ``--sigma0-over-E`` and the SI inputs that replace them.
+
+    The groups go into the argument group ``g`` (default: a group of their own).
+    """
+    g = g or p.add_argument_group("nondimensional groups (the paper's)")
     g.add_argument("--R-over-h", type=float, metavar="R/h", help="radius over adhesion range, > 0")
     g.add_argument(
         "--sigma0-over-E",

@@ -13,48 +13,52 @@ import argparse
 import math
 import pathlib
 import sys
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..adhesion_map import MODELS, MU_MIN, N_Y, Y_RANGE, AdhesionMap
 from ..output import Table, table_from_result, write
 from ._options import add_command, command_line
+
+if TYPE_CHECKING:  # linecontact.adhesion_map imports SciPy's linalg: imported where used
+    from ..adhesion_map import AdhesionMap
 
 __all__ = ["register"]
 
 _DESCRIPTION = (
-    "The adhesion map of line contact (a cylinder on an elastic half-plane): over the "
-    "Maugis parameter and the load above pull-off, where Hertz, the rigid cylinder, JKR and "
-    "Maugis-Dugdale (matched: same work of adhesion and peak tension) give the half-width of "
-    "the contact of the full Lennard-Jones law within --tol, and the contours of each "
-    "model's error. One Lennard-Jones load curve per value of mu, the dearer the larger mu: "
-    "the default grid (to the end of the domain, mu = 3 when this was written) took about 3 "
-    "minutes on an idle machine, --quick (4 values to mu = 1) about 10 seconds. Units of the "
-    "law: loads over w sqrt(R/z0), widths over sqrt(R z0)."
+    "The adhesion map of line contact: over the Maugis parameter and the load above "
+    "pull-off, where Hertz, the rigid cylinder, JKR and Maugis-Dugdale give the half-width "
+    "of the full Lennard-Jones law within --tol. The default grid takes minutes, --quick "
+    "seconds (docs/cli.md)."
 )
 
-#: The CSV columns: the result's field -> the column's name (the name states the unit).
-_COLUMNS = {
-    "mu": "mu",
-    "maugis_parameter": "maugis_parameter",
-    "y": "load_above_pulloff_over_abs_pulloff",
-    "F": "F_over_w_sqrt_R_over_z0",
-    "F_pulloff": "F_pulloff_over_w_sqrt_R_over_z0",
-    "y_onset": "onset_load_above_pulloff_over_abs_pulloff",
-    "repulsive": "lj_repulsive",
-    "half_width_lj": "half_width_lj_over_sqrt_R_z0",
-    **{f"half_width_{m}": f"half_width_{m}_over_sqrt_R_z0" for m in MODELS},
-    **{f"error_{m}": f"relative_error_{m}" for m in MODELS},
-    **{f"agrees_{m}": f"agrees_{m}" for m in MODELS},
-    "lj_error_estimate": "lj_error_estimate_over_w_sqrt_R_over_z0",
-    "interpolation_error": "lj_interpolation_error_relative",
-    "n_states": "lj_states",
-}
+
+def _columns() -> dict[str, str]:
+    """The CSV columns: the result's field -> the column's name (the name states the unit)."""
+    from ..adhesion_map import MODELS
+
+    return {
+        "mu": "mu",
+        "maugis_parameter": "maugis_parameter",
+        "y": "load_above_pulloff_over_abs_pulloff",
+        "F": "F_over_w_sqrt_R_over_z0",
+        "F_pulloff": "F_pulloff_over_w_sqrt_R_over_z0",
+        "y_onset": "onset_load_above_pulloff_over_abs_pulloff",
+        "repulsive": "lj_repulsive",
+        "half_width_lj": "half_width_lj_over_sqrt_R_z0",
+        **{f"half_width_{m}": f"half_width_{m}_over_sqrt_R_z0" for m in MODELS},
+        **{f"error_{m}": f"relative_error_{m}" for m in MODELS},
+        **{f"agrees_{m}": f"agrees_{m}" for m in MODELS},
+        "lj_error_estimate": "lj_error_estimate_over_w_sqrt_R_over_z0",
+        "interpolation_error": "lj_interpolation_error_relative",
+        "n_states": "lj_states",
+    }
 
 
 def register(sub: Any) -> None:
     """Add the ``map`` subcommand to the subparsers ``sub``."""
+    from ..adhesion_map import MU_MIN, Y_RANGE
+
     p = add_command(
         sub,
         "map",
@@ -63,7 +67,6 @@ def register(sub: Any) -> None:
         [
             "linecontact map --quick",
             "linecontact map --outdir maps --format png,pdf --tol 0.02",
-            "linecontact map --mu-min 0.05 --mu-max 0.5 --n-mu 6 --y-max 10 --json > map.json",
         ],
     )
     p.add_argument(
@@ -144,7 +147,7 @@ def register(sub: Any) -> None:
 
 def _grid(args: argparse.Namespace) -> tuple[np.ndarray, np.ndarray]:
     """The values of mu and of y the flags ask for (ValueError naming the flag)."""
-    from ..adhesion_map import default_mu, default_y, domain_mu_max
+    from ..adhesion_map import MU_MIN, N_Y, Y_RANGE, default_mu, default_y, domain_mu_max
     from ..figures.adhesion_map import COARSE
 
     hi = domain_mu_max()
@@ -194,8 +197,9 @@ def _table(m: AdhesionMap, args: argparse.Namespace, files: list[str]) -> Table:
         command=command_line(args),
         title="the adhesion map of line contact (units of the Lennard-Jones law)",
     )
-    cols = {_COLUMNS.get(k, k): v for k, v in t.columns.items()}
-    params = {_COLUMNS.get(k, k): v for k, v in t.parameters.items()}
+    names = _columns()
+    cols = {names.get(k, k): v for k, v in t.columns.items()}
+    params = {names.get(k, k): v for k, v in t.parameters.items()}
     return Table(cols, params, {}, t.command, t.title)
 
 
@@ -217,6 +221,8 @@ def _ranges(y: np.ndarray, ok: np.ndarray) -> str:
 
 def _summary(m: AdhesionMap) -> Table:
     """One row per mu: the pull-off, the onset of repulsion, each model's range of y."""
+    from ..adhesion_map import MODELS
+
     mu = np.asarray(m.mu).ravel()
     y = np.asarray(m.y)
     cols: dict[str, np.ndarray] = {

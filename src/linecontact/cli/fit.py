@@ -23,7 +23,14 @@ import numpy as np
 
 from .. import inverse as inv
 from ..output import Table
-from ._options import add_command, add_output_options, command_line, emit, si_parameters
+from ._options import (
+    add_command,
+    add_output_options,
+    command_line,
+    emit,
+    show_together,
+    si_parameters,
+)
 from ._options import cylinder as _cylinder
 
 __all__ = ["register"]
@@ -37,32 +44,17 @@ _TOTAL = ("N", "nN")
 
 _DESCRIPTION = {
     "fit-adhesion": (
-        "Work of adhesion w (and the range z0) from measured pull-off forces, with the "
-        "Maugis-Dugdale line contact as the forward model. With --data FILE (columns "
-        "radius_m, pull_off_force_N_per_m and optionally their standard uncertainty: sd or "
-        "sd_N_per_m right after them, or pull_off_force_sd_N_per_m; any other column is an "
-        "error): (w, z0) "
-        "jointly by weighted least squares, or w alone with --z0 fixed. With one "
-        "measurement (--radius --pull-off-force --z0, each with an optional -sd): w with a "
-        "Monte Carlo 95 % interval and the linearised one. Pull-off forces are negative "
-        "(tensile)."
+        "Work of adhesion w (and the range z0) from measured pull-off forces (negative), "
+        "the Maugis-Dugdale line contact the forward model; columns of --data: docs/cli.md."
     ),
     "fit-friction": (
-        "Interfacial shear strength tau0 = (f - dw)/(2a) from sliding friction forces f at "
-        "normal loads F, with a from the Maugis-Dugdale contact of the cylinder (SI inputs: "
-        "--radius, materials, adhesion), or from the steady-sliding contact when "
-        "--receding-work-of-adhesion gives the hysteresis dw; JKR, DMT or Hertz widths only "
-        "with --contact. --data FILE (columns normal_load_N_per_m, friction_force_N_per_m, "
-        "optionally sd right after it or friction_force_sd_N_per_m; any other column is an "
-        "error) or one measurement (--normal-load "
-        "--friction-force, with optional -sd)."
+        "Interfacial shear strength tau0 = (f - dw)/(2a) from friction forces f at normal "
+        "loads F, a from the Maugis-Dugdale contact; columns of --data: docs/cli.md."
     ),
 }
 _EXAMPLES = {
     "fit-adhesion": [
         "linecontact fit-adhesion --data pulloff.csv --E1 72e9 --nu1 0.17 --E2 163e9 --nu2 0.22",
-        "linecontact fit-adhesion --data pulloff.csv --cylinder-material SiO2 "
-        "--substrate-material Si --z0 0.3e-9 --json",
         "linecontact fit-adhesion --radius 50e-9 --radius-sd 3e-9 --pull-off-force -3.1 "
         "--pull-off-force-sd 5% --modulus 51.7e9 --z0 0.3e-9",
     ],
@@ -70,7 +62,7 @@ _EXAMPLES = {
         "linecontact fit-friction --data friction.csv --radius 50e-9 --modulus 51.7e9 "
         "--work-of-adhesion 0.1 --z0 0.3e-9",
         "linecontact fit-friction --normal-load 0.5 --friction-force 0.2 --friction-force-sd "
-        "10% --radius 50e-9 --modulus 51.7e9 --work-of-adhesion 0.1 --z0 0.3e-9 --json",
+        "10% --radius 50e-9 --modulus 51.7e9 --work-of-adhesion 0.1 --z0 0.3e-9",
     ],
 }
 
@@ -93,11 +85,11 @@ def register(sub: Any) -> None:
         ("fit-friction", "interfacial shear strength from friction forces, with uncertainty"),
     ):
         p = add_command(sub, name, summary, _DESCRIPTION[name], _EXAMPLES[name])
-        d = p.add_argument_group("data")
-        d.add_argument(
+        one = p.add_argument_group("measurements: --data, or one (instead)")
+        one.add_argument(
             "--data",
             metavar="FILE",
-            help="CSV file: a header naming the columns with their units, '#' comments",
+            help="CSV file, a header of columns with units (docs/cli.md)",
         )
         si = p.add_argument_group("the cylinder and the materials (SI)")
         si.add_argument("--radius", type=float, metavar="R", help="radius [m]")
@@ -120,7 +112,6 @@ def register(sub: Any) -> None:
             "--length", type=float, metavar="L", help="fibre length [m], for forces given in N"
         )
         if name == "fit-adhesion":
-            one = p.add_argument_group("one measurement (instead of --data)")
             one.add_argument(
                 "--pull-off-force", type=float, metavar="F", help="pull-off force [N/m], < 0"
             )
@@ -147,8 +138,7 @@ def register(sub: Any) -> None:
                 "--bootstrap",
                 default="auto",
                 metavar="N",
-                help="parametric-bootstrap refits for the intervals of a joint fit, or auto "
-                "(100 where the linear interval is poor) (default: %(default)s)",
+                help="bootstrap refits of a joint fit, or auto (default: %(default)s)",
             )
         else:
             si.add_argument("--work-of-adhesion", type=float, metavar="W", help="w [J/m^2]")
@@ -159,7 +149,6 @@ def register(sub: Any) -> None:
                 metavar="W1",
                 help="receding w [J/m^2]: the steady-sliding contact and dw = w1 - w",
             )
-            one = p.add_argument_group("one measurement (instead of --data)")
             one.add_argument("--normal-load", type=float, metavar="F", help="normal load [N/m]")
             one.add_argument("--friction-force", type=float, metavar="f", help="[N/m], > 0")
             one.add_argument("--friction-force-sd", metavar="SD", help="[N/m] or N%%")
@@ -174,7 +163,7 @@ def register(sub: Any) -> None:
                 "--contact",
                 choices=("maugis-dugdale", "jkr", "dmt", "hertz"),
                 default="maugis-dugdale",
-                help="the contact whose width divides the force (default: %(default)s)",
+                help="contact model of the width (default: %(default)s)",
             )
         p.add_argument(
             "--samples", type=int, default=4000, help="Monte Carlo samples (default: %(default)s)"
@@ -184,7 +173,35 @@ def register(sub: Any) -> None:
         )
         p.add_argument("--plot", metavar="FILE", help="draw the fit into FILE (.png, .svg, .pdf)")
         add_output_options(p)
+        _show_pairs(p, name)
         p.set_defaults(func=_cmd_adhesion if name == "fit-adhesion" else _cmd_friction)
+
+
+def _show_pairs(p: argparse.ArgumentParser, name: str) -> None:
+    """Each value with its uncertainty (and the like) as one entry of the help."""
+    sd = " (sd: [{}] or N%%)"
+    for flag, unit, what in (
+        ("--radius", "m", "radius [m]"),
+        ("--modulus", "Pa", "composite modulus [Pa]"),
+        ("--z0", "m", "range of adhesion z0 [m], fixed if given"),
+        ("--pull-off-force", "N/m", "pull-off force [N/m], < 0"),
+        ("--pull-off-force-total", "N", "the whole fibre's [N], < 0, with --length"),
+        ("--half-width", "m", "a measured contact half-width [m]"),
+        ("--work-of-adhesion", "J/m^2", "w [J/m^2]"),
+        ("--friction-force", "N/m", "friction force [N/m], > 0"),
+    ):
+        if flag in p._option_string_actions:
+            show_together(p, flag, flag + "-sd", help=what + sd.format(unit))
+    show_together(p, "--E1", "--nu1", "--E2", "--nu2", help="Young's moduli [Pa], Poisson ratios")
+    show_together(
+        p, "--cylinder-material", "--substrate-material", help="presets (`linecontact materials`)"
+    )
+    show_together(
+        p,
+        "--samples",
+        "--seed",
+        help="Monte Carlo samples, seed of the draws (default: %(default)s, 0)",
+    )
 
 
 # --------------------------------------------------------------------------------------------

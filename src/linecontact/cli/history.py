@@ -35,16 +35,11 @@ __all__ = ["register"]
 _DESCRIPTION = {
     "cycle": (
         "Cyclic tangential loading between -T* and +T* at a fixed normal load: the energy "
-        "dissipated per cycle per unit length (W_over_Ea2 = W/(E a^2)) and the stick zone at "
-        "the peaks (c_over_a). Constant friction stress tau0 (W ~ T*^4 at small amplitude) or "
-        "Coulomb friction on the Hertz contact (--friction coulomb, W ~ T*^3). An amplitude "
-        "at or above full slip (2 a tau0, mu F) is state sliding, its loss not computed."
+        "dissipated per cycle W/(E a^2) and the stick zone at the peaks (docs/cli.md)."
     ),
     "history": (
-        "An arbitrary tangential load history from rest (one load per step, the load moving "
-        "monotonically between them): per step the stick zone, the slip direction, the "
-        "turning points held in memory (Masing rules), the displacement, the energy "
-        "dissipated and the zones (stick, locked slip, slipping) of 0 <= x/a <= 1."
+        "A tangential load history from rest, one load per step: per step the stick zone, "
+        "slip, turning points in memory (Masing), displacement and energy (docs/cli.md)."
     ),
 }
 _EXAMPLES = {
@@ -52,13 +47,9 @@ _EXAMPLES = {
         "linecontact cycle --tau0-over-E 0.01 --T-amplitude-over-Ea 0.005 0.015",
         "linecontact cycle --friction coulomb --mu 0.3 --a-over-R 0.01 "
         "--T-amplitude-over-muF 0.1 0.5 --json",
-        "linecontact cycle --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 --load 1 "
-        "--tau0 1e9 --tangential-amplitude 0.5 2 --length 5e-6",
     ],
     "history": [
         "linecontact history --tau0-over-E 0.01 --T-over-Ea 0.016 -0.008 0.004 0.018",
-        "linecontact history --friction coulomb --mu 0.3 --a-over-R 0.01 "
-        "--T-over-muF 0.5 -0.2 0.3 --json",
         "linecontact history --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 --load 1 "
         "--tau0 1e9 --tangential-load 1 -1 1",
     ],
@@ -123,8 +114,7 @@ def register(sub: Any) -> None:
             "--method",
             choices=("closed-form", "incremental"),
             default="closed-form",
-            help="the Masing rules in closed form, or the stick condition solved step by step "
-            "by collocation (a check: slower)",
+            help="Masing rules, or a stepwise check",
         )
         add_output_options(p)
         p.set_defaults(func=_cmd_cycle if name == "cycle" else _cmd_history)

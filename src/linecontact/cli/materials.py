@@ -70,20 +70,16 @@ def register(sub: Any) -> None:
         "materials",
         "the material presets (E, nu, range, source) of --cylinder-material",
         "The material presets of --cylinder-material and --substrate-material: Young's "
-        "modulus E [Pa] and Poisson's ratio nu, isotropic-equivalent values for a contact "
-        "normal to the surface (E/(1-nu^2) is the indentation modulus), the range E_low_Pa to "
-        "E_high_Pa where reported values scatter, the source, and whether the value was "
-        "confirmed against a source found by search. For mica and graphite use 'mica' and "
-        "'HOPG-basal' for a fibre lying on a cleaved sheet; the in-plane entries are not "
-        "contact moduli.",
+        "modulus E [Pa], Poisson's ratio nu, the range of reported E and the source "
+        "(docs/cli.md; a fibre on cleaved mica or graphite: 'mica', 'HOPG-basal').",
         [
             "linecontact materials",
             "linecontact materials ZnO SiO2 --long",
-            "linecontact materials --json --indent 2",
             "linecontact pulloff --radius 50e-9 --cylinder-material ZnO --substrate-material "
             "SiO2 --work-of-adhesion 0.1 --z0 0.3e-9",
         ],
     )
+    p.usage = "%(prog)s [options] [NAME ...]"
     p.add_argument(
         "names",
         nargs="*",

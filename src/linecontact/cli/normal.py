@@ -9,6 +9,7 @@ import numpy as np
 
 from ..cylinder import Cylinder
 from ..domain import TooWideError
+from ..laws import lennard_jones as _lj
 from ..normal import NormalContact, contact_for_load, load_curve, normal_contact, pull_off
 from ..output import Table, table_from_result
 from ..reference import kappa, maugis_parameter
@@ -24,6 +25,7 @@ from ._options import (
     groups,
     half_widths,
     null_missing,
+    show_together,
     si_loads,
     si_parameters,
     too_wide,
@@ -56,7 +58,7 @@ def _cmd_normal(args: argparse.Namespace) -> int:
                 "--branch applies to given loads (--F-over-Eh or --load): a contact half-width "
                 "fixes the state"
             )
-        r = normal_contact(A, rho, s, method=args.method, raise_on_failure=False)
+        r = normal_contact(A, rho, s, method=args.method, on_failure="report")
         ok = np.asarray(r.converged, bool).reshape(-1)
         state = np.where(ok, "contact", "not-converged")
         reason = np.full(ok.shape, None, dtype=object)
@@ -75,7 +77,7 @@ def _cmd_normal(args: argparse.Namespace) -> int:
             )
         F = np.asarray(args.F_over_Eh, float) if cyl is None else si_loads(args, cyl, "F_over_Eh")
         try:
-            r = contact_for_load(F, rho, s, branch=args.branch, on_no_equilibrium="report")
+            r = contact_for_load(F, rho, s, branch=args.branch, on_failure="report")
         except TooWideError as e:
             raise e if cyl is None else too_wide(e, args, cyl) from None
         state = np.asarray(r.state).reshape(-1)
@@ -99,15 +101,15 @@ def _cmd_normal_lj(args: argparse.Namespace, A, rho: float, s: float, cyl: Cylin
         )
     if cyl is None:
         F = np.asarray(args.F_over_Eh, float)
-        r = contact_for_load(F, rho, s, on_no_equilibrium="report", law="lennard-jones")
+        r = _lj.contact_for_load(F, rho, s, on_failure="report")
     else:
-        c = cyl.contact(load=args.load, on_no_equilibrium="report", law="lennard-jones")
+        c = cyl.lennard_jones_contact(load=args.load, on_failure="report")
         r = c.nondimensional
         F = np.asarray(r.F_over_Eh, float)
     state = np.asarray(r.state).reshape(-1)
     reason = np.full(state.shape, None, dtype=object)
     if np.any(state != "contact"):
-        po = pull_off(rho, s, law="lennard-jones")
+        po = _lj.pull_off(rho, s)
         unit, scale = ("N/m", cyl.modulus * cyl.adhesion_range) if cyl else ("E h", 1.0)
         reason[state != "contact"] = (
             f"no contact carries this load: it is below the pull-off force "
@@ -220,7 +222,7 @@ def _normal_table(args, r: NormalContact, rho, s, cyl, state, reason, given) -> 
 
 
 def _cmd_pulloff_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinder | None) -> int:
-    p = pull_off(rho, s, law="lennard-jones")
+    p = _lj.pull_off(rho, s)
     params = _parameters(args, rho, s, cyl)
     params.pop("kappa")
     params["law"] = "lennard-jones"
@@ -331,7 +333,7 @@ def _cmd_curve_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinder 
         F_max = args.F_max / Eh
     elif cyl is not None and F_max is not None:
         raise ValueError("--F-max-over-Eh is nondimensional: with SI inputs give --F-max [N/m]")
-    c = load_curve(rho, s, law="lennard-jones", F_max_over_Eh=F_max)
+    c = _lj.load_curve(rho, s, F_max_over_Eh=F_max)
     po = c.pulloff
     is_po = np.zeros(c.F_over_Eh.shape, bool)
     is_po[int(np.argmin(c.F_over_Eh))] = True  # the sample nearest the refined pull-off
@@ -440,14 +442,12 @@ def _cmd_curve(args: argparse.Namespace) -> int:
 # registration
 
 
-def _add_law(p: argparse.ArgumentParser, what: str = "") -> None:
+def _add_law(p: argparse.ArgumentParser) -> None:
     p.add_argument(
         "--law",
         choices=("dugdale", "lennard-jones"),
         default="dugdale",
-        help="surface law: the Dugdale step or the Lennard-Jones law of Eq 1 with "
-        "the same work of adhesion and peak tension, solved self-consistently "
-        f"(mu = 0.974^1.5 (sigma0/E) sqrt(R/h) within its validated domain){what}",
+        help="Dugdale step or the Lennard-Jones law (Eq 1)",
     )
 
 
@@ -457,17 +457,12 @@ def register(sub: Any) -> None:
         sub,
         "normal",
         "adhesive-zone width and load for given contact half-widths, or the contact for loads",
-        "Normal contact with Maugis-Dugdale adhesion (paper Eqs 5-14): for each contact "
-        "half-width a, the end c of the adhesive zone and the load F per unit length; or, for "
-        "each load, the contact that carries it (stable or unstable branch). Compressive load "
-        "positive; a load below the pull-off force has no contact (state no-equilibrium).",
+        "Maugis-Dugdale normal contact (paper Eqs 5-14): for each half-width a the end c of "
+        "the adhesive zone and the load F; or for each load its contact (docs/cli.md).",
         [
             "linecontact normal --R-over-h 100 --sigma0-over-E 0.01 --a-over-R 0.01 0.05",
             "linecontact normal --R-over-h 100 --sigma0-over-E 0.2 --F-over-Eh -1 0 1 --json",
-            "linecontact normal --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 "
-            "--load 0 1 --length 5e-6",
-            "linecontact normal --R-over-h 100 --sigma0-over-E 0.01 --F-over-Eh 0 1 "
-            "--law lennard-jones --json",
+            "linecontact normal --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 --load 0 1",
         ],
     )
     add_groups(n)
@@ -477,19 +472,15 @@ def register(sub: Any) -> None:
         "--branch",
         choices=("stable", "unstable"),
         default="stable",
-        help="for given loads: the stable contact or the narrower, unstable one",
+        help="stable or narrower unstable contact (loads)",
     )
     n.add_argument(
         "--method",
         choices=("closed-form", "collocation"),
         default="closed-form",
-        help="solver for given half-widths: the closed form or the paper's collocation",
+        help="closed form or collocation (widths)",
     )
-    _add_law(
-        n,
-        "; lennard-jones: for given loads, the stable branch; seconds a load at mu <= 0.3, "
-        "minutes at mu = 3",
-    )
+    _add_law(n)
     add_output_options(n)
     n.set_defaults(func=_cmd_normal)
 
@@ -497,15 +488,13 @@ def register(sub: Any) -> None:
         sub,
         "pulloff",
         "pull-off force under load control and its mechanism",
-        "The most tensile load a contact carries (paper Eq 14 and the snap-off): the "
-        "mechanism is zero-width (the contact peels to zero width at the load of Eq 14) or "
-        "snap-off (at a finite width, below Eq 14). One record.",
+        "The most tensile load a contact carries (paper Eq 14 and the snap-off) and its "
+        "mechanism, zero-width or snap-off. One record.",
         [
             "linecontact pulloff --R-over-h 100 --sigma0-over-E 0.01",
-            "linecontact pulloff --radius 50e-9 --E1 70e9 --nu1 0.17 --E2 160e9 --nu2 0.22 "
-            "--work-of-adhesion 0.1 --z0 0.3e-9 --length 5e-6 --json",
-            "linecontact pulloff --radius 50e-9 --modulus 10e9 --work-of-adhesion 0.05 "
-            "--z0 0.3e-9 --law lennard-jones --json",
+            "linecontact pulloff --radius 50e-9 --cylinder-material SiO2 --substrate-material Si "
+            "--work-of-adhesion 0.1 --z0 0.3e-9 --json",
+            "linecontact pulloff --R-over-h 100 --sigma0-over-E 0.01 --law lennard-jones",
         ],
     )
     add_groups(po)
@@ -517,22 +506,15 @@ def register(sub: Any) -> None:
         sub,
         "curve",
         "the whole load curve: non-contact branch, contact branch, turning point, pull-off",
-        "The load F against the state: first the non-contact branch (central gap g0 from h "
-        "to 0, only the adhesive zone), then the contact branch (a from 0 up), with the load "
-        "minimum (turning point) and the pull-off state marked.",
+        "The load F along the non-contact branch (central gap g0 from h to 0), then the "
+        "contact branch (a from 0 up), turning point and pull-off marked (docs/cli.md).",
         [
             "linecontact curve --R-over-h 100 --sigma0-over-E 0.05 --format csv -o curve.csv",
             "linecontact curve --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 --json",
-            "linecontact curve --radius 50e-9 --modulus 10e9 --work-of-adhesion 0.05 "
-            "--z0 0.3e-9 --law lennard-jones --json",
         ],
     )
     add_groups(cu)
-    _add_law(
-        cu,
-        "; lennard-jones: the states of the solver's continuation; seconds at mu <= 0.3, "
-        "minutes at mu = 3",
-    )
+    _add_law(cu)
     c = cu.add_argument_group("sampling")
     c.add_argument(
         "--a-max-over-R",
@@ -543,11 +525,15 @@ def register(sub: Any) -> None:
     )
     c.add_argument("--a-max", type=float, metavar="A", help="largest half-width a [m] (SI)")
     c.add_argument(
-        "--num", type=int, help="points on the contact branch (default: 200; --law dugdale)"
+        "--num",
+        type=int,
+        metavar="N",
+        help="points on the contact branch (default: 200; --law dugdale)",
     )
     c.add_argument(
         "--num-noncontact",
         type=int,
+        metavar="N",
         help="points on the non-contact branch (default: 40; --law dugdale)",
     )
     c.add_argument(
@@ -559,6 +545,21 @@ def register(sub: Any) -> None:
     )
     c.add_argument(
         "--F-max", type=float, metavar="F", help="--law lennard-jones: the end load F [N/m] (SI)"
+    )
+    show_together(
+        cu, "--a-max-over-R", "--a-max", help="largest half-width a/R, or a [m] (docs/cli.md)"
+    )
+    show_together(
+        cu,
+        "--num",
+        "--num-noncontact",
+        help="points on the contact, non-contact branch (default: 200, 40)",
+    )
+    show_together(
+        cu,
+        "--F-max-over-Eh",
+        "--F-max",
+        help="lennard-jones: end load F/(E h), or F [N/m] (docs/cli.md)",
     )
     add_output_options(cu)
     cu.set_defaults(func=_cmd_curve)

@@ -6,6 +6,7 @@ import gc
 import math
 import re
 import sys
+import textwrap
 from typing import Any
 
 from .._version import __version__
@@ -237,8 +238,11 @@ def register(sub) -> None:
     pa = sub.add_parser(
         "paper",
         help="redraw the paper's Figs. 2-14 (PNG by default)",
-        description="Redraw Figs. 2-14 of Sari, Adams & Müftü from the library's solvers, "
-        "one file per figure and format (fig02_load_R100.png, ...).",
+        description=textwrap.fill(
+            "Redraw Figs. 2-14 of Sari, Adams & Müftü from the library's solvers, one file per "
+            "figure and format (fig02_load_R100.png, ...).",
+            88,
+        ),
         epilog="examples:\n  linecontact paper\n"
         "  linecontact paper --outdir figs --format png,svg --size 12x6.75",
     )
@@ -269,14 +273,14 @@ def register(sub) -> None:
         "figures",
         help="draw the figures beyond the paper: the pushed fibre's motion maps and force, "
         "load-history loops and loss, the adhesion map",
-        description="Draw the figures of the pushed fibre (docs/push.md): the first motion "
-        "over the push height and the hysteresis or the friction stress, with the boundary "
-        "H*, and the lateral force against the push's progress (push01_*.png, ...); of "
-        "tangential load histories (docs/load-histories.md): the hysteresis loops, the loss "
-        "per cycle against the amplitude for both friction laws, the traction and the slip "
-        "after reversals (history01_*.png, ...); and the adhesion map of line contact on a "
-        "coarse grid (adhesion_map.png; about 10 s: `linecontact map` draws it on a finer "
-        "grid, with its data).",
+        description=textwrap.fill(
+            "Draw the figures beyond the paper: the pushed fibre's first motion and lateral "
+            "force (push01_*.png, ...; docs/push.md), the loops, loss, traction and slip of "
+            "tangential load histories (history01_*.png, ...; docs/load-histories.md) and the "
+            "adhesion map on a coarse grid (adhesion_map.png; `linecontact map` draws it "
+            "finer, with its data); details: docs/cli.md.",
+            88,
+        ),
         epilog="examples:\n  linecontact figures\n"
         "  linecontact figures --outdir figs --format png,pdf",
     )

@@ -27,6 +27,7 @@ from ._options import (
     cylinder,
     emit,
     finish,
+    show_together,
     si_given,
     si_parameters,
 )
@@ -34,12 +35,9 @@ from ._options import (
 __all__ = ["register"]
 
 _DESCRIPTION = (
-    "A fibre pushed sideways at height H above the substrate (docs/push.md): the contact of "
-    "steady motion is the steady sliding contact (trailing range h1 >= leading range h2, "
-    "adhesion hysteresis dw = sigma0 (h1 - h2)); rolling resists Q_roll = R dw / H "
-    "(Kendall), sliding Q_slide = 2 a_slide tau0 + dw; the lower one is the first motion "
-    "(rolling iff H > H* = R dw / Q_slide). With a push Q given, the state: rest, roll, "
-    "slide or roll+slide. Forces per unit length over E h2, compressive load positive."
+    "A fibre pushed sideways at height H above the substrate (docs/push.md): rolling resists "
+    "Q_roll = R dw / H, sliding Q_slide = 2 a_slide tau0 + dw; the lower one is the first "
+    "motion. With a push Q: the state (rest, roll, slide or roll+slide)."
 )
 
 
@@ -53,10 +51,8 @@ def register(sub: Any) -> None:
         [
             "linecontact push --R-over-h2 100 --h1-over-h2 2 --sigma0-over-E 0.01 "
             "--tau0-over-E 1e-3 --H-over-R 0.25 1 2",
-            "linecontact push --R-over-h2 100 --h1-over-h2 2 --sigma0-over-E 0.01 "
-            "--tau0-over-E 1e-3 --H-over-R 0.5 --Q-over-Eh2 0.015 --json",
             "linecontact push --radius 50e-9 --modulus 48e9 --sigma0 1e8 --h2 0.3e-9 "
-            "--h1 0.6e-9 --tau0 1e6 --height 25e-9 50e-9 100e-9 --length 5e-6",
+            "--h1 0.6e-9 --tau0 1e6 --height 25e-9 50e-9 100e-9",
         ],
     )
     g = p.add_argument_group("nondimensional groups (the paper's)")
@@ -79,7 +75,7 @@ def register(sub: Any) -> None:
         "--F-over-Eh2",
         type=float,
         metavar="F",
-        help="normal load over E h2 (default 0: adhesion alone holds the fibre)",
+        help="normal load over E h2 (default 0: adhesion alone)",
     )
     g.add_argument(
         "--H-over-R",
@@ -95,14 +91,15 @@ def register(sub: Any) -> None:
         "--tip-friction",
         type=float,
         metavar="MU",
-        help="the push comes from a tip touching the fibre at the height given (--H-over-R "
-        "or --tip-height), with this friction coefficient in [0, 10] (0: frictionless)",
+        help="a tip pushes at that height, friction coefficient in [0, 10]",
     )
     si = add_si_materials(p, range_flag="--h2")
     si.add_argument("--h1", type=float, help="receding (trailing-edge) adhesion range h1 [m]")
-    si.add_argument("--tau0", type=float, help="friction stress tau0 [Pa]")
-    si.add_argument("--load", type=float, help="normal load [N/m] (default 0)")
-    si.add_argument("--height", type=float, nargs="+", help="push heights H [m], in [0, 2R]")
+    si.add_argument("--tau0", type=float, metavar="T", help="friction stress tau0 [Pa]")
+    si.add_argument("--load", type=float, metavar="F", help="normal load [N/m] (default 0)")
+    si.add_argument(
+        "--height", type=float, nargs="+", metavar="H", help="push heights H [m], in [0, 2R]"
+    )
     si.add_argument(
         "--tip-height",
         type=float,
@@ -111,7 +108,7 @@ def register(sub: Any) -> None:
         help="heights [m] where a tip touches the fibre, in (0, 2R) (with --tip-friction, "
         "default 0), instead of --height",
     )
-    si.add_argument("--push", type=float, help="a push [N/m]: report the state")
+    si.add_argument("--push", type=float, metavar="Q", help="a push [N/m]: report the state")
     si.add_argument(
         "--work-of-adhesion-receding",
         type=float,
@@ -127,6 +124,18 @@ def register(sub: Any) -> None:
         help="advancing (approach) work of adhesion [J/m^2], <= W1",
     )
     add_output_options(p)
+    for flags, text in (
+        (("--R-over-h2", "--h1-over-h2"), "R/h2; h1/h2 (receding over advancing) in [1, 1000]"),
+        (("--sigma0-over-E", "--tau0-over-E"), "adhesive (>= 0), friction (> 0) stress over E"),
+        (("--h1", "--tau0"), "receding range h1 [m]; friction stress tau0 [Pa]"),
+        (("--load", "--push"), "normal load [N/m] (default 0); a push [N/m]: its state"),
+        (("--height", "--tip-height"), "push heights [m] in [0, 2R], or a tip's"),
+        (
+            ("--work-of-adhesion-receding", "--work-of-adhesion-advancing"),
+            "or W1 >= W2 [J/m^2], with --z0",
+        ),
+    ):
+        show_together(p, *flags, help=text)
     p.set_defaults(func=_cmd_push, _api_flags={"adhesion_range": "--h2"})
 
 

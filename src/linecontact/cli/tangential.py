@@ -29,6 +29,7 @@ from ._options import (
     cylinder,
     emit,
     finish,
+    show_together,
     si_given,
     si_parameters,
 )
@@ -40,29 +41,22 @@ _ADHESION_KEYS = ("sigma0", "h", "work_of_adhesion", "z0")
 _DESCRIPTION = {
     "slide-init": (
         "Initiation of sliding (paper Eqs 15-17): a tangential force T on a contact of "
-        "half-width a (from the normal problem); central stick zone |x| < d, slip zones "
-        "d < |x| < a with shear stress tau0 (or mu p for --friction coulomb, "
-        "Cattaneo-Mindlin). T >= 2 a tau0 (mu F) slides: state sliding."
+        "half-width a; stick zone |x| < d, slip zones d < |x| < a (docs/cli.md)."
     ),
     "roll": (
-        "Steady rolling of a driving cylinder (paper Eqs 23-29, Carter-type): rolling along "
-        "+x, stick zone d < x < a at the leading edge, slip zone -a < x < d; T is the "
-        "tractive force, creep_over_V = (V - omega R)/V (negative: the driving cylinder turns "
-        "faster than it rolls)."
+        "Steady rolling of a driving cylinder (paper Eqs 23-29): stick zone d < x < a at the "
+        "leading edge, tractive force T and creep (docs/cli.md)."
     ),
 }
 _EXAMPLES = {
     "slide-init": [
         "linecontact slide-init --tau0-over-E 0.01 --d-over-a 0.2 0.5",
         "linecontact slide-init --tau0-over-E 0.01 --T-over-Ea 0.01 0.03 --json",
-        "linecontact slide-init --friction coulomb --mu 0.3 --a-over-R 0.01 --T-over-muF 0.5",
     ],
     "roll": [
         "linecontact roll --tau0-over-E 0.01 --d-over-a -0.5 0.5 --method collocation",
-        "linecontact roll --R-over-h 100 --sigma0-over-E 0.01 --F-over-Eh 1 --tau0-over-E 0.01 "
-        "--d-over-a 0",
         "linecontact roll --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 --load 1 "
-        "--tau0 1e8 --tangential-load 0.3 --length 5e-6",
+        "--tau0 1e8 --tangential-load 0.3",
     ],
 }
 
@@ -82,7 +76,7 @@ def register(sub: Any) -> None:
             type=float,
             nargs="+",
             metavar="D",
-            help=f"stick-zone end d over a, in {lo}",
+            help=f"stick-zone end d/a, in {lo}",
         )
         st.add_argument(
             "--T-over-Ea",
@@ -110,7 +104,7 @@ def register(sub: Any) -> None:
             "--method",
             choices=("closed-form", "collocation"),
             default="closed-form",
-            help="the closed forms or the paper's collocation",
+            help="the closed forms or collocation",
         )
         add_output_options(p)
         p.set_defaults(func=_cmd_slide_init if name == "slide-init" else _cmd_roll)
@@ -118,23 +112,25 @@ def register(sub: Any) -> None:
 
 def add_friction_options(p: argparse.ArgumentParser) -> None:
     """``--friction``, ``--tau0-over-E``, ``--tau0`` and ``--mu`` (the tangential commands)."""
-    fr = p.add_argument_group("friction")
+    fr = p  # with the command's own options: its help fits one screen
     fr.add_argument(
         "--friction",
         choices=("constant", "coulomb"),
         default="constant",
-        help="constant friction stress tau0 (the nano-scale law) or Coulomb friction mu on "
-        "the non-adhesive Hertz contact",
+        help="constant stress tau0, or Coulomb mu on Hertz",
     )
     fr.add_argument("--tau0-over-E", type=float, metavar="T", help="friction stress over E, > 0")
-    fr.add_argument("--tau0", type=float, help="friction stress tau0 [Pa] (SI inputs)")
+    fr.add_argument("--tau0", type=float, metavar="T", help="friction stress tau0 [Pa] (SI inputs)")
     fr.add_argument("--mu", type=float, help="friction coefficient, > 0 (--friction coulomb)")
+    show_together(
+        p, "--tau0-over-E", "--tau0", help="friction stress tau0/E, > 0; or tau0 [Pa] (SI)"
+    )
 
 
 def add_normal_contact_options(p: argparse.ArgumentParser) -> None:
     """The groups or SI inputs and the normal contact that gives the half-width ``a``."""
-    add_groups(p)
     nc = p.add_argument_group("normal contact (the contact half-width a)")
+    add_groups(p, nc)
     nc.add_argument("--load", type=float, help="normal load per unit length F [N/m] (SI)")
     nc.add_argument(
         "--F-over-Eh",
@@ -148,6 +144,7 @@ def add_normal_contact_options(p: argparse.ArgumentParser) -> None:
         metavar="A",
         help="contact half-width over R (Coulomb: the Hertz half-width)",
     )
+    show_together(p, "--F-over-Eh", "--load", help="normal load F/(E h), or F [N/m] (SI)")
 
 
 def _cmd_slide_init(args: argparse.Namespace) -> int:
@@ -261,7 +258,8 @@ def _run(args: argparse.Namespace, rolling: bool) -> int:
         if state == "T_over_Ea":
             values = values / ((np.pi / 4) * args.mu * A)
         T = None if d is not None else values
-        r: Any = coulomb_fn(args.mu, A, d, T_over_muF=T, method=args.method)
+        # a load at or beyond full slip is a record with state "sliding", not an error
+        r: Any = coulomb_fn(args.mu, A, d, T_over_muF=T, method=args.method, on_failure="report")
     else:
         if args.tau0 is not None:
             raise ValueError(
@@ -271,7 +269,8 @@ def _run(args: argparse.Namespace, rolling: bool) -> int:
         if args.tau0_over_E is None:
             raise ValueError("give the friction stress --tau0-over-E (or --friction coulomb --mu)")
         fn = tg.steady_rolling if rolling else tg.sliding_initiation
-        r = fn(args.tau0_over_E, d, T_over_Ea=None if d is not None else values, method=args.method)
+        T_over_Ea = None if d is not None else values
+        r = fn(args.tau0_over_E, d, T_over_Ea=T_over_Ea, method=args.method, on_failure="report")
     params: dict[str, Any] = dict(law)
     if A is not None:
         params["a_over_R"] = float(A)
@@ -291,7 +290,7 @@ def _run_si(args, rolling, coulomb, cyl: Cylinder, state, values, d, law) -> int
             raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
         fr = dict(friction_stress=args.tau0 if args.tau0 is not None else args.tau0_over_E * E)
     fn = cylinder_steady_rolling if rolling else cylinder_sliding_initiation
-    contact = cyl.contact(load=args.load, on_no_equilibrium="report")
+    contact = cyl.contact(load=args.load, on_failure="report")
     params: dict[str, Any] = dict(law)
     params.update(si_parameters(args, cyl))
     params["F_N_per_m"] = args.load
@@ -301,11 +300,13 @@ def _run_si(args, rolling, coulomb, cyl: Cylinder, state, values, d, law) -> int
     a_m = contact.contact_half_width
     if state in ("T_over_Ea", "T_over_muF"):
         T = values * E * a_m if state == "T_over_Ea" else values * args.mu * args.load
-        res = fn(cyl, args.load, tangential_load=T, **fr, method=args.method)
+        res = fn(cyl, args.load, tangential_load=T, **fr, method=args.method, on_failure="report")
     elif state == "tangential_load":
-        res = fn(cyl, args.load, tangential_load=values, **fr, method=args.method)
+        res = fn(
+            cyl, args.load, tangential_load=values, **fr, method=args.method, on_failure="report"
+        )
     else:
-        res = fn(cyl, args.load, d_over_a=d, **fr, method=args.method)
+        res = fn(cyl, args.load, d_over_a=d, **fr, method=args.method, on_failure="report")
     params.update(
         a_over_R=a_m / cyl.radius,
         a_m=a_m,

@@ -120,7 +120,7 @@ def _curves(s: float, po) -> list[dict]:
     )
     cf = sliding_contact(base[None, :], R_OVER_H2, r[:, None], s, method="closed-form")
     a_col = np.linspace(A_MAX_OVER_R / N_COLLOCATION_MARKERS, A_MAX_OVER_R, N_COLLOCATION_MARKERS)
-    col = sliding_contact(a_col[None, :], R_OVER_H2, r[:, None], s)
+    col = sliding_contact(a_col[None, :], R_OVER_H2, r[:, None], s, method="collocation")
     # at the pull-off state itself: the load minimum at an interior width (a snap-off, or a
     # zero-width pull-off below the range h), or else the a -> 0 limit
     a_po = np.asarray(po.a_over_R_at_pulloff)
@@ -216,7 +216,7 @@ def _schematic(run: Run):
     """Fig. 8 drawn from a computed state: the gap (top) and the pressure (bottom)."""
     par = SCHEMATIC
     st: SlidingContact = sliding_contact(**par, method="closed-form")  # type: ignore[arg-type]
-    col = sliding_contact(**par)  # type: ignore[arg-type]
+    col = sliding_contact(**par, method="collocation")  # type: ignore[arg-type]
     a, c1, c2, e = st.a_over_R, st.c1_over_R, st.c2_over_R, st.e_over_R
     r, s = par["h1_over_h2"], par["sigma0_over_E"]
     lo, hi = -1.35 * c1, 1.35 * c2

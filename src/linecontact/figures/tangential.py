@@ -106,13 +106,13 @@ def _fig07(run: Run):
     for t0, col in zip(TAU0_OVER_E, colors, strict=True):
         ax.plot(
             np.append(d, 1.0),
-            np.append(sliding_initiation(t0, d).T_over_Ea, 0.0),
+            np.append(sliding_initiation(t0, d, on_failure="report").T_over_Ea, 0.0),
             color=col,
             lw=1.8,
         )
         c = sliding_initiation(t0, d_col, method="collocation")
         ax.plot(d_col, c.T_over_Ea, color=col, **_fig._COL_KW, zorder=5)
-        cm = sliding_initiation_coulomb(_coulomb_mu(t0), _A_OVER_R, d)
+        cm = sliding_initiation_coulomb(_coulomb_mu(t0), _A_OVER_R, d, on_failure="report")
         ax.plot(np.append(d, 1.0), np.append(cm.T_over_Ea, 0.0), color=col, lw=1.3, ls="--")
     ax.set_xlim(0, 1.0)
     ax.set_ylim(0, 2 * TAU0_OVER_E[-1] * 1.05)

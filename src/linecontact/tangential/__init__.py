@@ -51,6 +51,17 @@ the traction for the initiation and minus it for rolling.
   (:math:`\omega R > V`), as the paper says. A braking (driven) cylinder is the mirror image
   (all signs of ``T``, the traction and the creep reversed).
 
+Failures
+--------
+Every solver here takes ``on_failure`` (README, "Conventions"): a given load at or beyond
+full slip (``T >= 2 a tau0`` or ``mu F``; for the initiation also ``d_over_a = 0``) and a
+collocation point that misses its tolerance raise :class:`~linecontact.errors.NoEquilibriumError`
+and :class:`~linecontact.errors.ConvergenceError` by default (``"raise"``); with
+``on_failure="report"`` the point is returned with ``state == "sliding"`` or
+``converged == False``. (Up to 0.2.0 a load beyond full slip was reported by default,
+``on_sliding="report"``.) The load histories slide at full slip under either policy:
+there ``on_failure`` concerns the incremental solver's tolerance only.
+
 Solvers
 -------
 ``method="closed-form"`` (default) evaluates the closed forms derived in

@@ -64,12 +64,14 @@ def _xlogy(x, y):
 # input checks
 
 
-def _check_options(method, n, tol, raise_on_failure, on_sliding):
+def _check_options(method, n, tol):
     if method not in ("closed-form", "collocation"):
         raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
-    check_solver_options(n, tol, raise_on_failure, n_max=SIZES[-1])
-    if on_sliding not in ("report", "raise"):
-        raise ValueError(f"on_sliding must be 'report' or 'raise', got {on_sliding!r}")
+    check_solver_options(n, tol, n_max=SIZES[-1])
+
+
+#: The deprecated keywords that ``on_failure`` replaces in the tangential solvers.
+OLD_POLICY_KEYWORDS = ("raise_on_failure", "on_sliding")
 
 
 def _one_of(d_over_a, load, load_name: str) -> None:
@@ -369,8 +371,7 @@ def _run(
     method,
     n,
     tol,
-    raise_on_failure,
-    on_sliding,
+    policy,
     params: dict,
 ):
     """Validate the state variable and solve.
@@ -381,7 +382,7 @@ def _run(
     diagnostic fields and whether the call was scalar.
     """
     _one_of(d_over_a, load, load_name)
-    _check_options(method, n, tol, raise_on_failure, on_sliding)
+    _check_options(method, n, tol)
     names = list(params)
     arrays = list(params.values())
     if d_over_a is not None:
@@ -445,7 +446,7 @@ def _run(
         creep = np.where(stick, 0.0, creep)
     else:
         creep = None
-    if on_sliding == "raise":
+    if policy == "raise":
         labels = dict(zip(names, arrays, strict=True))
         labels[given[0]] = g
         _raise_sliding(
@@ -462,7 +463,7 @@ def _run(
         converged = (
             ((out["tail"] <= 10 * tol) & (out["force"] <= 1e-10) & np.isfinite(out["T"])) | ~act
         ).reshape(shape)
-        if raise_on_failure:
+        if policy == "raise":
             labels = dict(zip(names, arrays, strict=True))
             labels[given[0]] = g
             _raise_unconverged(pb.name, converged, labels, out, n)

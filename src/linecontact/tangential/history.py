@@ -47,7 +47,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import domain as _domain
-from .._validation import check_array, check_solver_options
+from .._validation import RAISE, FailurePolicy, check_array, check_solver_options, failure_policy
 from ..errors import ConvergenceError
 from ..results import Result, as_output
 from ..sie import _log_moment_vector as _log_moments
@@ -801,12 +801,12 @@ class CoulombTangentialHistory(_History):
     a_over_R: float = 0.0
 
 
-def _check_method(method: str, n: int, tol: float, raise_on_failure: bool = True) -> None:
+def _check_method(method: str, n: int, tol: float) -> None:
     if method not in ("closed-form", "incremental"):
         raise ValueError(f"method must be 'closed-form' or 'incremental', got {method!r}")
     if isinstance(n, bool) or not isinstance(n, (int, np.integer)) or not 4 <= n <= 4096:
         raise ValueError(f"n must be an integer in [4, 4096], got {n!r}")
-    check_solver_options(n, tol, raise_on_failure, n_max=N_MAX_INCREMENTAL)
+    check_solver_options(n, tol, n_max=N_MAX_INCREMENTAL)
 
 
 def _loads(name: str, value: ArrayLike) -> NDArray:
@@ -822,7 +822,7 @@ def _loads(name: str, value: ArrayLike) -> NDArray:
 
 
 def _history(
-    law: _Law, r: NDArray, scale: float, method: str, n: int, tol: float, raise_on_failure: bool
+    law: _Law, r: NDArray, scale: float, method: str, n: int, tol: float, policy: FailurePolicy
 ) -> dict[str, Any]:
     """The fields shared by both results, for loads r over the full-slip load."""
     steps = r.size
@@ -861,7 +861,7 @@ def _history(
             converged=conv,
         )
         depth = np.full(steps, -1)
-        if raise_on_failure and not conv.all():
+        if policy == "raise" and not conv.all():
             j = int(np.flatnonzero(~conv)[0])
             raise ConvergenceError(
                 f"the incremental solver missed tol={tol:g} at step {j + 1} (T/T_full = "
@@ -898,7 +898,8 @@ def tangential_history(
     method: str = "closed-form",
     n: int = N_INCREMENTAL,
     tol: float = 1e-6,
-    raise_on_failure: bool = True,
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
 ) -> TangentialHistory:
     r"""States of the contact along a tangential load history, constant friction stress ``tau0``.
 
@@ -920,9 +921,12 @@ def tangential_history(
         Collocation nodes of the incremental solver.
     tol : float
         Tolerance of the incremental solver on its error estimate and residuals.
-    raise_on_failure : bool
-        Raise :class:`~linecontact.errors.ConvergenceError` when an incremental step misses
-        ``tol`` (otherwise it is flagged in ``converged``).
+    on_failure : {"raise", "report"}
+        An incremental step that misses ``tol`` raises
+        :class:`~linecontact.errors.ConvergenceError` (``"raise"``, default), or is flagged
+        in ``converged`` (``"report"``); README, "Conventions". A load at or beyond full
+        slip is no failure here: the step slides (``state == "sliding"``) under either
+        policy. Replaces the deprecated ``raise_on_failure`` (``False`` is ``"report"``).
 
     Returns
     -------
@@ -946,10 +950,11 @@ def tangential_history(
     True
     """
     t0 = _domain.scalar("tau0_over_E", tau0_over_E)
-    _check_method(method, n, tol, raise_on_failure)
+    _check_method(method, n, tol)
+    policy = failure_policy(on_failure, where="tangential_history", **deprecated)
     T = _loads("T_over_Ea", T_over_Ea)
     r = T / (2 * t0)
-    fields_ = _history(_LAWS["constant"], r, t0, method, n, tol, raise_on_failure)
+    fields_ = _history(_LAWS["constant"], r, t0, method, n, tol, policy)
     return TangentialHistory(T_over_Ea=T, T_over_T_full_slip=r, tau0_over_E=t0, **fields_)
 
 
@@ -961,7 +966,8 @@ def tangential_history_coulomb(
     method: str = "closed-form",
     n: int = N_INCREMENTAL,
     tol: float = 1e-6,
-    raise_on_failure: bool = True,
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
 ) -> CoulombTangentialHistory:
     r"""States of a Hertz line contact with Coulomb friction along a tangential load history.
 
@@ -976,7 +982,7 @@ def tangential_history_coulomb(
         Hertz half-width over the radius (``p0 = E a/(2R)``, ``F = pi E a^2/(4R)``).
     T_over_muF : array_like, 1-D
         The loads over ``mu F``, either sign; ``|T| >= mu F`` slides.
-    method, n, tol, raise_on_failure
+    method, n, tol, on_failure
         As in :func:`tangential_history`.
 
     Returns
@@ -991,10 +997,11 @@ def tangential_history_coulomb(
     """
     m = _domain.scalar("mu", mu)
     A = _domain.scalar("a_over_R", a_over_R)
-    _check_method(method, n, tol, raise_on_failure)
+    _check_method(method, n, tol)
+    policy = failure_policy(on_failure, where="tangential_history_coulomb", **deprecated)
     Q = _loads("T_over_muF", T_over_muF)
     scale = m * A / 2  # mu p0 / E
-    fields_ = _history(_LAWS["coulomb"], Q, scale, method, n, tol, raise_on_failure)
+    fields_ = _history(_LAWS["coulomb"], Q, scale, method, n, tol, policy)
     return CoulombTangentialHistory(
         T_over_Ea=(np.pi / 4) * m * A * Q,
         T_over_T_full_slip=Q,

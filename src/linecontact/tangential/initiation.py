@@ -9,12 +9,13 @@ Units, sign conventions and references: :mod:`linecontact.tangential`.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import domain as _domain
+from .._validation import RAISE, FailurePolicy, failure_policy
 from ..sie import _log_moment_vector
 from ._core import (
     _CHECK_Y,
@@ -22,6 +23,7 @@ from ._core import (
     _STICK,
     _STICK_SLIP,
     N_COULOMB,
+    OLD_POLICY_KEYWORDS,
     _build,
     _cheb_u_series,
     _check_matrix,
@@ -330,8 +332,8 @@ def sliding_initiation(
     method: str = "closed-form",
     n: int | str = "auto",
     tol: float = 1e-12,
-    raise_on_failure: bool = True,
-    on_sliding: str = "report",
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
 ) -> SlidingInitiation:
     r"""Initiation of sliding with constant friction stress ``tau0`` (paper Eqs 15--17).
 
@@ -355,12 +357,16 @@ def sliding_initiation(
         Collocation nodes (``"auto"``: chosen per point for ``tol``).
     tol : float
         Target discretisation error of the collocation solution.
-    raise_on_failure : bool
-        Raise :class:`~linecontact.errors.ConvergenceError` when a collocation point misses
-        its tolerance (otherwise it is flagged in ``converged``).
-    on_sliding : {"report", "raise"}
-        For a given ``T`` at or above full slip: report ``state == "sliding"`` (default) or
-        raise :class:`~linecontact.errors.NoEquilibriumError`.
+    on_failure : {"raise", "report"}
+        For a given ``T`` at or above full slip, and a collocation point that misses its
+        tolerance: raise :class:`~linecontact.errors.NoEquilibriumError` and
+        :class:`~linecontact.errors.ConvergenceError` (``"raise"``, default), or report
+        the point, ``state == "sliding"`` (``d_over_a`` NaN, or 0 for ``d_over_a=0``) and
+        ``converged`` False for a miss (``"report"``); README, "Conventions". Replaces both
+        deprecated keywords, ``raise_on_failure`` (``False`` is ``"report"``) and
+        ``on_sliding``. **Changed** after 0.2.0: a load at or beyond full slip raises by
+        default (``on_sliding`` defaulted to ``"report"``); pass ``on_failure="report"``
+        for the sliding state.
 
     Returns
     -------
@@ -383,9 +389,12 @@ def sliding_initiation(
     >>> c = sliding_initiation(0.01, 0.6, method="collocation")
     >>> abs(c.T_over_Ea - r.T_over_Ea) < 1e-14
     True
-    >>> sliding_initiation(0.01, T_over_Ea=0.03).state
+    >>> sliding_initiation(0.01, T_over_Ea=0.03, on_failure="report").state
     'sliding'
     """
+    policy = failure_policy(
+        on_failure, where="sliding_initiation", accepts=OLD_POLICY_KEYWORDS, **deprecated
+    )
     arrays, load, _, diag, scalar = _run(
         _INITIATION,
         d_over_a,
@@ -394,8 +403,7 @@ def sliding_initiation(
         method,
         n,
         tol,
-        raise_on_failure,
-        on_sliding,
+        policy,
         {"tau0_over_E": _domain.check("tau0_over_E", tau0_over_E)},
     )
     (t0,) = arrays
@@ -411,8 +419,8 @@ def sliding_initiation_coulomb(
     method: str = "closed-form",
     n: int | str = "auto",
     tol: float = 1e-12,
-    raise_on_failure: bool = True,
-    on_sliding: str = "report",
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
 ) -> CoulombSlidingInitiation:
     r"""Cattaneo--Mindlin initiation of sliding of a Hertz line contact (Coulomb friction).
 
@@ -430,8 +438,9 @@ def sliding_initiation_coulomb(
         Stick-zone half-width over ``a``, in ``[0, 1)``.
     T_over_muF : array_like, optional
         Tangential force over ``mu F``, ``>= 0`` (exactly one of the two); ``>= 1`` slides.
-    method, n, tol, raise_on_failure, on_sliding
-        As in :func:`sliding_initiation`; the collocation solves
+    method, n, tol, on_failure
+        As in :func:`sliding_initiation` (a load at or beyond full slip raises by default);
+        the collocation solves
         :math:`\frac1\pi\int_{-d}^{d}\frac{\tau\,d\xi}{\xi-x} = \frac{\mu}{\pi}
         \int_{-a}^{a}\frac{p\,d\xi}{\xi-x} = -\mu p_0 x/a` for the correction ``tau`` with
         ``q = mu p - tau`` in the stick zone (``n`` defaults to :data:`N_COULOMB`).
@@ -446,6 +455,9 @@ def sliding_initiation_coulomb(
     >>> round(r.T_over_muF, 12)
     0.75
     """
+    policy = failure_policy(
+        on_failure, where="sliding_initiation_coulomb", accepts=OLD_POLICY_KEYWORDS, **deprecated
+    )
     arrays, load, _, diag, scalar = _run(
         _CATTANEO_MINDLIN,
         d_over_a,
@@ -454,8 +466,7 @@ def sliding_initiation_coulomb(
         method,
         n,
         tol,
-        raise_on_failure,
-        on_sliding,
+        policy,
         {"mu": _domain.check("mu", mu), "a_over_R": _wide(_domain.check("a_over_R", a_over_R))},
     )
     m, A = arrays

@@ -10,17 +10,19 @@ friction on the Hertz contact (Carter). Units, sign conventions and references:
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import ClassVar, cast
+from typing import Any, ClassVar, cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import domain as _domain
+from .._validation import RAISE, FailurePolicy, failure_policy
 from ._core import (
     _CHECK_Y,
     _STICK,
     _STICK_SLIP,
     N_COULOMB,
+    OLD_POLICY_KEYWORDS,
     _build,
     _cheb_u_series,
     _check_matrix,
@@ -289,8 +291,8 @@ def steady_rolling(
     method: str = "closed-form",
     n: int | str = "auto",
     tol: float = 1e-12,
-    raise_on_failure: bool = True,
-    on_sliding: str = "report",
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
 ) -> SteadyRolling:
     r"""Steady rolling of a driving cylinder with constant friction stress (Eqs 23--29).
 
@@ -307,10 +309,13 @@ def steady_rolling(
         slip).
     T_over_Ea : array_like, optional
         Tractive force per unit length over ``E a``, ``>= 0`` (exactly one of the two); at
-        or above ``2 tau0/E`` the contact slips entirely (``state == "sliding"``).
-    method, n, tol, raise_on_failure, on_sliding
-        As in :func:`sliding_initiation`; the collocation solves Eq 27 on ``(d, a)`` with
-        the creep as the extra unknown of the consistency equation.
+        or above ``2 tau0/E`` the contact slips entirely: a
+        :class:`~linecontact.errors.NoEquilibriumError`, or ``state == "sliding"`` with
+        ``on_failure="report"``.
+    method, n, tol, on_failure
+        As in :func:`sliding_initiation` (a load at or beyond full slip raises by default;
+        ``on_failure="report"`` gives ``state == "sliding"``); the collocation solves Eq 27
+        on ``(d, a)`` with the creep as the extra unknown of the consistency equation.
 
     Returns
     -------
@@ -337,6 +342,9 @@ def steady_rolling(
     >>> abs(steady_rolling(0.01, 0.0, method="collocation").creep_over_V - r.creep_over_V) < 1e-14
     True
     """
+    policy = failure_policy(
+        on_failure, where="steady_rolling", accepts=OLD_POLICY_KEYWORDS, **deprecated
+    )
     arrays, load, creep, diag, scalar = _run(
         _ROLLING,
         d_over_a,
@@ -345,8 +353,7 @@ def steady_rolling(
         method,
         n,
         tol,
-        raise_on_failure,
-        on_sliding,
+        policy,
         {"tau0_over_E": _domain.check("tau0_over_E", tau0_over_E)},
     )
     (t0,) = arrays
@@ -370,8 +377,8 @@ def steady_rolling_coulomb(
     method: str = "closed-form",
     n: int | str = "auto",
     tol: float = 1e-12,
-    raise_on_failure: bool = True,
-    on_sliding: str = "report",
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
 ) -> CoulombRolling:
     r"""Carter's steady rolling of a driving cylinder (Hertz pressure, Coulomb friction).
 
@@ -386,7 +393,7 @@ def steady_rolling_coulomb(
         Start of the stick zone over ``a``, in ``(-1, 1)``.
     T_over_muF : array_like, optional
         Tractive force over ``mu F``, ``>= 0`` (exactly one of the two); ``>= 1`` slides.
-    method, n, tol, raise_on_failure, on_sliding
+    method, n, tol, on_failure
         As in :func:`steady_rolling`; with ``q = -mu p + tau-bar`` on the stick zone the
         equation for ``tau-bar`` is
         :math:`\frac1\pi\int_d^a\frac{\bar\tau\,d\xi}{\xi - x} = -\mu p_0 x/a
@@ -402,6 +409,9 @@ def steady_rolling_coulomb(
     >>> round(r.T_over_muF, 12), round(r.creep_over_V / (0.3 * 0.01), 12)
     (0.75, -0.5)
     """
+    policy = failure_policy(
+        on_failure, where="steady_rolling_coulomb", accepts=OLD_POLICY_KEYWORDS, **deprecated
+    )
     arrays, load, creep, diag, scalar = _run(
         _CARTER,
         d_over_a,
@@ -410,8 +420,7 @@ def steady_rolling_coulomb(
         method,
         n,
         tol,
-        raise_on_failure,
-        on_sliding,
+        policy,
         {"mu": _domain.check("mu", mu), "a_over_R": _wide(_domain.check("a_over_R", a_over_R))},
     )
     m, A = arrays
