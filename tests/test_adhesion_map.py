@@ -316,7 +316,7 @@ def cli_run(tmp_path_factory):
     """One run of ``linecontact map --json`` on a cheap grid: (exit code, outdir, stdout)."""
     pytest.importorskip("matplotlib")
     out = tmp_path_factory.mktemp("map") / "maps"
-    argv = ["map", "--outdir", str(out), "--format", "png,svg", "--json", "--tol", "0.1"]
+    argv = ["map", "--outdir", str(out), "--image-format", "png,svg", "--json", "--tol", "0.1"]
     stdout, stderr = io.StringIO(), io.StringIO()
     with redirect_stdout(stdout), redirect_stderr(stderr):
         code = main([*argv, *CHEAP])

@@ -8,7 +8,7 @@ import pytest
 import linecontact as lc
 from linecontact import inverse as inv
 from linecontact.cli import main
-from linecontact.cli.fit import read_columns
+from linecontact.measurements import read_columns
 
 E = float(lc.composite_modulus(72e9, 0.17, 163e9, 0.22))
 MATS = ["--E1", "72e9", "--nu1", "0.17", "--E2", "163e9", "--nu2", "0.22", "--quiet"]
@@ -298,9 +298,7 @@ def test_one_total_force_and_one_width(capsys):
     assert code == 2 and "--length" in err
     cyl = lc.Cylinder.from_modulus(50e-9, E, work_of_adhesion=W, equilibrium_spacing=Z0)
     a = float(cyl.contact(load=0.5).contact_half_width)
-    code, out, err = run(
-        capsys, *base, "--half-width", a, "--normal-load", 0.5, "--half-width-sd", "2%"
-    )
+    code, out, err = run(capsys, *base, "--half-width", a, "--load", 0.5, "--half-width-sd", "2%")
     assert code == 0, err
     rec = record(out)[1]
     assert rec["work_of_adhesion"] == pytest.approx(W, rel=1e-8)
@@ -408,7 +406,7 @@ def test_fuzz_findings_in_fit_friction(capsys, tmp_path):
         capsys,
         "fit-friction",
         *common,
-        "--normal-load",
+        "--load",
         -3.4,
         "--friction-force",
         0.2,
@@ -432,7 +430,7 @@ def test_fuzz_findings_in_fit_friction(capsys, tmp_path):
         0.2,
         "--work-of-adhesion",
         0.1,
-        "--receding-work-of-adhesion",
+        "--work-of-adhesion-receding",
         0.05,
     )
     assert code == 2 and "at least --work-of-adhesion" in err

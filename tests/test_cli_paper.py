@@ -33,7 +33,7 @@ def few(monkeypatch):
 
 def test_cli_formats_and_size(capsys, tmp_path, few):
     code, out, err = run_cli(
-        capsys, "paper", "--outdir", str(tmp_path), "--format", "svg,png", "--size", "12x6"
+        capsys, "paper", "--outdir", str(tmp_path), "--image-format", "svg,png", "--size", "12x6"
     )
     assert code == 0, err
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
@@ -64,9 +64,9 @@ def test_cli_as_the_command_freezes_the_objects(capsys, tmp_path, few, monkeypat
 @pytest.mark.parametrize(
     "argv, option",
     [
-        (["--format", "png,jpg"], "--format"),
-        (["--format", ""], "--format"),
-        (["--format", "png,,svg"], "--format"),
+        (["--image-format", "png,jpg"], "--image-format"),
+        (["--image-format", ""], "--image-format"),
+        (["--image-format", "png,,svg"], "--image-format"),
         (["--size", "9.6"], "--size"),
         (["--size", "9.6x"], "--size"),
         (["--size", "axb"], "--size"),

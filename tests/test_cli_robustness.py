@@ -153,8 +153,9 @@ def strict_json(text):
         ),
         # the validated domain said in SI units and flags (E h = 50 N/m, R = 50 nm)
         (
-            ["normal", *SI0, "--h", "0.5e-9", "--a", "1e-3"],
-            r"--a must be in \[5e-158, 5e-07\] m \(a_over_R in \[1e-150, 10\]\), got 0\.001$",
+            ["normal", *SI0, "--h", "0.5e-9", "--half-width", "1e-3"],
+            r"--half-width must be in \[5e-158, 5e-07\] m \(a_over_R in \[1e-150, 10\]\), "
+            r"got 0\.001$",
         ),
         (
             ["normal", *SI0, "--h", "0.5e-9", "--load", "1e20"],
@@ -171,16 +172,27 @@ def strict_json(text):
             r"--radius=5e-08 m, --h=1e-21 m; is --h in metres\?",
         ),
         (
-            ["slide", *SI0, "--h2", "0.5e-9", "--h1", "1e-20", "--a", "1e-9"],
+            ["slide", *SI0, "--h2", "0.5e-9", "--h1", "1e-20", "--half-width", "1e-9"],
             r"--h1 must be in \[5e-13, 5e-07\] m \(h1_over_h2 in \[0\.001, 1000\]\)",
         ),
         (
-            ["slide", *SI0, "--h2", "0.5e-9", "--h1", "5e-10", "--tau0", "1e13", "--a", "1e-9"],
+            [
+                "slide",
+                *SI0,
+                "--h2",
+                "0.5e-9",
+                "--h1",
+                "5e-10",
+                "--tau0",
+                "1e13",
+                "--half-width",
+                "1e-9",
+            ],
             r"--tau0 must be in \[0, 1e\+11\] Pa \(tau0_over_E in \[0, 1\]\)",
         ),
         (
-            ["slide", *SI0, "--h2", "0.5e-9", "--h1", "5e-10", "--a", "1e-3"],
-            r"--a must be in \[5e-28, 5e-07\] m \(a_over_R in \[1e-20, 10\]\)",
+            ["slide", *SI0, "--h2", "0.5e-9", "--h1", "5e-10", "--half-width", "1e-3"],
+            r"--half-width must be in \[5e-28, 5e-07\] m \(a_over_R in \[1e-20, 10\]\)",
         ),
         (
             ["slide", *SI0, "--h2", "0.5e-9", "--h1", "5e-10", "--load", "1e7"],

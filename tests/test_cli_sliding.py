@@ -103,7 +103,7 @@ def test_si_mode_matches_groups(capsys):
         "--h1",
         "0.75e-9",
     ]
-    code, out, err = run(capsys, "slide", *si, "--a", "1e-9", "--tau0", "5e8", "--json")
+    code, out, err = run(capsys, "slide", *si, "--half-width", "1e-9", "--tau0", "5e8", "--json")
     assert code == 0, err
     rec = records(out)[0]
     ref = sliding_contact(0.02, 100.0, 1.5, 0.01, tau0_over_E=0.005, method="collocation")
@@ -183,8 +183,17 @@ BAD = [
         "not both",
     ),
     (
-        ["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.04", "--a", "1e-9"],
-        "--a and --load are SI inputs",
+        [
+            "--R-over-h2",
+            "100",
+            "--h1-over-h2",
+            "2",
+            "--sigma0-over-E",
+            "0.04",
+            "--half-width",
+            "1e-9",
+        ],
+        "--half-width and --load are SI inputs",
     ),
     (
         [
@@ -196,7 +205,7 @@ BAD = [
             "1e-9",
             "--h1-over-h2",
             "2",
-            "--a",
+            "--half-width",
             "1e-9",
         ],
         "SI inputs need --radius",

@@ -2,6 +2,7 @@
 coverage of the intervals, and bad input."""
 
 import math
+import re
 
 import numpy as np
 import pytest
@@ -337,3 +338,89 @@ def test_one_point_without_sd_says_no_uncertainty_can_be_estimated():
     F = inv.pull_off_force(RADII[:1], E_SILICA_SILICON, W, Z0)
     fit = inv.fit_pull_off(RADII[:1], F, E_SILICA_SILICON, equilibrium_spacing=Z0)
     assert "no uncertainty can be estimated" in fit.note
+
+
+def _refits_by_hand(R, F, E, sd, z0, E_sd, z_sd, seed, n):
+    """The command line's former loop (cli/fit.py before issue 21): the reference numbers."""
+    rng = np.random.default_rng(seed + 1)
+    ws, zs = [], []
+    for _ in range(n):
+        Ei = E + E_sd * rng.standard_normal()
+        zi = (z0 + z_sd * rng.standard_normal()) if z0 is not None else None
+        if Ei <= 0 or (zi is not None and zi <= 0):
+            continue
+        try:
+            fi = inv.fit_pull_off(R, F, Ei, sd=sd, equilibrium_spacing=zi, bootstrap=0)
+        except ValueError:
+            continue
+        ws.append(fi.work_of_adhesion)
+        zs.append(fi.equilibrium_spacing)
+    return float(np.std(ws, ddof=1)), (float(np.std(zs, ddof=1)) if z0 is None else z_sd)
+
+
+@pytest.mark.parametrize(
+    ("z0", "E_rel", "z_sd", "seed"),
+    [(None, 0.05, 0.0, 7), (Z0, 0.05, 0.1 * Z0, 0), (Z0, 0.0, 3e-11, 2)],
+)
+def test_the_inputs_uncertainties_propagate_by_refits(z0, E_rel, z_sd, seed):
+    rng = np.random.default_rng(3)
+    F = inv.pull_off_force(RADII, E_SILICA_SILICON, W, Z0)
+    F = F * (1 + 0.05 * rng.standard_normal(F.size))
+    sd = 0.05 * np.abs(F)
+    E_sd = E_rel * E_SILICA_SILICON
+    fit = inv.fit_pull_off(
+        RADII,
+        F,
+        E_SILICA_SILICON,
+        sd=sd,
+        equilibrium_spacing=z0,
+        bootstrap=0,
+        seed=seed,
+        modulus_sd=E_sd,
+        equilibrium_spacing_sd=z_sd,
+        samples=20,
+    )
+    w_in, z_in = _refits_by_hand(RADII, F, E_SILICA_SILICON, sd, z0, E_sd, z_sd, seed, 20)
+    assert fit.work_of_adhesion_sd_inputs == w_in  # the same draws, the same bits
+    assert fit.equilibrium_spacing_sd_inputs == z_in
+    assert fit.work_of_adhesion_sd_total == math.hypot(fit.work_of_adhesion_sd, w_in)
+    assert fit.equilibrium_spacing_sd_total == math.hypot(fit.equilibrium_spacing_sd, z_in)
+    plain = inv.fit_pull_off(
+        RADII, F, E_SILICA_SILICON, sd=sd, equilibrium_spacing=z0, bootstrap=0, seed=seed
+    )
+    assert plain.work_of_adhesion == fit.work_of_adhesion  # the fit itself is unchanged
+    assert plain.work_of_adhesion_sd_inputs == 0 == plain.equilibrium_spacing_sd_inputs
+    assert plain.work_of_adhesion_sd_total == plain.work_of_adhesion_sd
+
+
+def test_the_modulus_uncertainty_scales_w_as_expected():
+    # fixed z0, exact data: w from a pull-off scales with the modulus to a power between 0
+    # (rigid-like, DMT) and 1/2 (JKR: F ~ (w^2 E R)^(1/3)); the inputs' sd follows
+    F = inv.pull_off_force(RADII, E_SILICA_SILICON, W, Z0)
+    fit = inv.fit_pull_off(
+        RADII,
+        F,
+        E_SILICA_SILICON,
+        equilibrium_spacing=Z0,
+        bootstrap=0,
+        modulus_sd=0.01 * E_SILICA_SILICON,
+        samples=40,
+    )
+    assert 0.1 * 0.01 < fit.work_of_adhesion_sd_inputs / W < 0.5 * 0.01 * 1.2
+
+
+@pytest.mark.parametrize(
+    ("kwargs", "message"),
+    [
+        (dict(modulus_sd=-1.0), "modulus_sd must be a finite number >= 0"),
+        (dict(modulus_sd=math.nan), "modulus_sd must be a finite number >= 0"),
+        (dict(equilibrium_spacing_sd="1e-11"), "equilibrium_spacing_sd must be"),
+        (dict(equilibrium_spacing_sd=1e-11), "needs a fixed equilibrium_spacing"),
+        (dict(modulus_sd=1e9, samples=1), "samples must be an integer in [2, 1e5]"),
+        (dict(modulus_sd=1e9, samples=2.5), "samples must be an integer"),
+    ],
+)
+def test_bad_input_uncertainties(kwargs, message):
+    F = inv.pull_off_force(RADII, E_SILICA_SILICON, W, Z0)
+    with pytest.raises(ValueError, match=re.escape(message)):
+        inv.fit_pull_off(RADII, F, E_SILICA_SILICON, bootstrap=0, **kwargs)

@@ -21,7 +21,7 @@ import pytest
 import linecontact as lc
 from linecontact import ConvergenceError
 from linecontact.output import Table, write
-from linecontact.tangential import history as _history
+from linecontact.tangential.history import _loss as _history_loss
 
 ENV = {**os.environ, "PYTHONDONTWRITEBYTECODE": "1"}
 
@@ -108,7 +108,7 @@ def test_incremental_refuses_a_tiny_amplitude_up_front(monkeypatch):
     def not_entered(*args, **kwargs):
         raise AssertionError("the incremental solver was entered")
 
-    monkeypatch.setattr(_history, "_incremental", not_entered)
+    monkeypatch.setattr(_history_loss, "_incremental", not_entered)
     message = (
         r"^the incremental solver missed tol=1e-06 at the amplitude 1e-12 of the full-slip "
         r"load \(estimate .*, n=4096\): an amplitude this small needs more than 4096 nodes; "

@@ -185,7 +185,7 @@ def test_bad_input(call, match):
 
 
 def test_convergence_error_names_the_point(monkeypatch):
-    import linecontact.lennard_jones as lj
+    import linecontact.lennard_jones._curve as lj
 
     monkeypatch.setattr(lj, "_arc_newton", lambda *a, **k: (a[2], a[3], False))
     with pytest.raises(ConvergenceError, match=r"mu=0\.5"):

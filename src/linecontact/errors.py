@@ -28,3 +28,11 @@ class ModelValidityWarning(UserWarning):
     no physical width (below :data:`linecontact.cylinder.WIDTH_MIN`, 1e-15 m, or above the
     radius). The numbers are still computed.
     """
+
+
+class UnitsWarning(ModelValidityWarning):
+    """An input or a result that looks like a value in the wrong units ("is the ... in m?").
+
+    A :class:`ModelValidityWarning` (its catchers catch it too); the command line prints it
+    even with ``--quiet``, which silences the model notes (coupling, small strain) only.
+    """

@@ -15,7 +15,8 @@ The inverse problems of the SI layer, each with the forward model it inverts:
   Maugis--Dugdale contact at the normal load (or the steady-sliding contact when an adhesion
   hysteresis ``dw = w_receding - w_advancing`` is given), or JKR, DMT or Hertz when asked;
 * :func:`propagate`: the standard uncertainty and the 95 % interval of any of these by Monte
-  Carlo (seeded, vectorised through the solvers), with the linearised estimate beside it.
+  Carlo (seeded, vectorised through the solvers), with the linearised estimate beside it
+  (:mod:`linecontact.uncertainty`, re-exported here).
 
 Units: SI throughout (m, Pa, N/m, J/m^2). Pull-off forces are negative (tensile), as in
 the rest of the library. ``docs/inverse.md`` derives the models and their limits.
@@ -23,12 +24,11 @@ the rest of the library. ``docs/inverse.md`` derives the models and their limits
 
 from __future__ import annotations
 
-import contextvars
 import math
 import warnings
-from collections.abc import Callable, Mapping
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any, Literal
+from typing import Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -39,6 +39,7 @@ from ._validation import broadcast, check_array, first_point
 from .cylinder import _check_cylinder_si, _plausible, _warn_widths
 from .errors import ModelValidityWarning
 from .materials import MAUGIS_STRENGTH
+from .uncertainty import _UNREACHABLE, Estimate, propagate
 
 __all__ = [
     "AdhesionFit",
@@ -223,13 +224,6 @@ def work_of_adhesion_from_pull_off(
         unreachable=_UNREACHABLE.get(),
         stacklevel=5,
     )
-
-
-#: ``"nan"`` while :func:`propagate` draws its samples: the inversions then give nan where no
-#: ``w`` reaches a draw, instead of the ``ValueError`` (which would fail its whole batch).
-_UNREACHABLE: contextvars.ContextVar[Literal["raise", "nan"]] = contextvars.ContextVar(
-    "linecontact_inverse_unreachable", default="raise"
-)
 
 
 def _work_from_pull_off(
@@ -540,156 +534,6 @@ def _jkr_width(F, R, E, w):
 
 
 # --------------------------------------------------------------------------------------------
-# uncertainty
-
-
-@dataclass(frozen=True)
-class Estimate:
-    """A derived quantity with its standard uncertainty and 95 % interval.
-
-    Attributes
-    ----------
-    value : float
-        At the inputs' values.
-    sd, ci95 : float, (float, float)
-        By Monte Carlo: the standard deviation and the 2.5 %/97.5 % percentiles of the
-        samples that have a solution.
-    sd_linear, ci95_linear : float, (float, float)
-        Linearised: ``sqrt(sum (df/dx_i sd_i)^2)`` by central differences, ``value +- 1.96 sd``.
-    n_samples, n_failed, seed : int
-        Samples drawn, samples without a solution (a pull-off no ``w`` reaches, a load below
-        pull-off), the seed.
-    """
-
-    value: float
-    sd: float
-    ci95: tuple[float, float]
-    sd_linear: float
-    ci95_linear: tuple[float, float]
-    n_samples: int
-    n_failed: int
-    seed: int
-
-
-def propagate(
-    fn: Callable[..., NDArray],
-    values: Mapping[str, float],
-    sds: Mapping[str, float],
-    *,
-    n_samples: int = 4000,
-    seed: int = 0,
-) -> Estimate:
-    """Propagate standard uncertainties of the inputs through ``fn`` (Monte Carlo and linear).
-
-    ``fn(**inputs)`` must accept arrays (every function of this module does). Inputs with a
-    standard uncertainty are drawn from normal distributions (samples of a positive input
-    that fall at or below zero are redrawn: the distribution is truncated); a sample for
-    which ``fn`` raises or returns a non-finite value counts in ``n_failed``.
-
-    Examples
-    --------
-    >>> F = float(pull_off_force(50e-9, 50e9, 0.1, 0.3e-9))
-    >>> x = dict(pull_off_force=F, radius=50e-9, modulus=50e9, equilibrium_spacing=0.3e-9)
-    >>> e = propagate(work_of_adhesion_from_pull_off, x, dict(radius=2e-9), n_samples=2000)
-    >>> round(e.value, 10), bool(0.001 < e.sd < 0.01), bool(abs(e.sd / e.sd_linear - 1) < 0.1)
-    (0.1, True, True)
-    """
-    if (
-        not isinstance(n_samples, (int, np.integer))
-        or isinstance(n_samples, bool)
-        or not (10 <= n_samples <= 10_000_000)
-    ):
-        raise ValueError(f"n_samples must be an integer in [10, 1e6], got {n_samples!r}")
-    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
-        raise ValueError(f"seed must be an integer >= 0, got {seed!r}")
-    for k, v in sds.items():
-        if k not in values:
-            raise ValueError(f"an uncertainty is given for {k!r}, which is not an input")
-        if isinstance(v, (bool, str)) or not (
-            isinstance(v, (int, float, np.integer, np.floating)) and np.isfinite(v) and v >= 0
-        ):
-            raise ValueError(f"the standard uncertainty of {k} must be finite and >= 0, got {v!r}")
-    try:
-        x0 = {k: float(v) for k, v in values.items()}
-    except (TypeError, ValueError):
-        raise ValueError(f"values must be numbers, got {dict(values)!r}") from None
-    try:
-        value = float(np.asarray(fn(**x0)))
-    except TypeError as exc:
-        raise ValueError(f"fn does not take these inputs ({', '.join(x0)}): {exc}") from None
-    rng = np.random.default_rng(seed)
-    samples: dict[str, Any] = dict(x0)
-    for k, sd in sds.items():
-        if sd == 0:
-            continue
-        draw = rng.normal(x0[k], sd, n_samples)
-        if x0[k] > 0:  # a positive quantity: truncate at zero
-            for _ in range(100):
-                bad = draw <= 0
-                if not bad.any():
-                    break
-                draw[bad] = rng.normal(x0[k], sd, int(bad.sum()))
-        samples[k] = draw
-    # the inversions of this module give nan where a draw is unreachable (not a ValueError
-    # that fails the whole batch it is in), also when fn wraps them
-    token = _UNREACHABLE.set("nan")
-    try:
-        with warnings.catch_warnings():  # a draw outside small strain: said once for the value
-            warnings.simplefilter("ignore", ModelValidityWarning)
-            out = _robust(fn, samples, np.arange(n_samples))
-    finally:
-        _UNREACHABLE.reset(token)
-    ok = np.isfinite(out)
-    n_failed = int(n_samples - ok.sum())
-    good = out[ok]
-    if good.size >= 2:
-        sd_mc = float(np.std(good, ddof=1))
-        lo, hi = (float(v) for v in np.percentile(good, [2.5, 97.5]))
-    else:
-        sd_mc, lo, hi = math.nan, math.nan, math.nan
-    var = 0.0
-    for k, sd in sds.items():
-        if sd == 0:
-            continue
-        step = 1e-6 * (abs(x0[k]) or sd)  # inside a positive input's range
-        up, dn = dict(x0), dict(x0)
-        up[k], dn[k] = x0[k] + step, x0[k] - step
-        try:
-            g = (float(np.asarray(fn(**up))) - float(np.asarray(fn(**dn)))) / (2 * step)
-        except ValueError:
-            g = math.nan
-        var += (g * sd) ** 2
-    sd_lin = math.sqrt(var)
-    return Estimate(
-        value,
-        sd_mc,
-        (lo, hi),
-        sd_lin,
-        (value - 1.96 * sd_lin, value + 1.96 * sd_lin),
-        int(n_samples),
-        n_failed,
-        int(seed),
-    )
-
-
-def _robust(fn, samples: dict[str, Any], idx: NDArray) -> NDArray:
-    """``fn`` on the samples ``idx``, nan where a sample fails.
-
-    A batch that raises is split in halves, so a few failing draws cost a few calls, not one
-    per sample.
-    """
-    batch = {k: (v[idx] if np.ndim(v) else v) for k, v in samples.items()}
-    try:
-        out = np.asarray(fn(**batch), float)
-        return np.broadcast_to(out, idx.shape).copy()
-    except ValueError:
-        if idx.size == 1:
-            return np.full(1, np.nan)
-    half = idx.size // 2
-    return np.concatenate([_robust(fn, samples, idx[:half]), _robust(fn, samples, idx[half:])])
-
-
-# --------------------------------------------------------------------------------------------
 # joint fit of (w, z0) to pull-off forces at several radii
 
 
@@ -721,6 +565,11 @@ class AdhesionFit:
     identifiable : bool
         Whether the data determine ``z0`` (its relative uncertainty below 50 % and the
         correlation below 0.999 in magnitude); ``note`` says why not.
+    work_of_adhesion_sd_inputs, equilibrium_spacing_sd_inputs : float
+        The standard uncertainties that the inputs' uncertainties (``modulus_sd``, and
+        ``equilibrium_spacing_sd`` of a fixed ``z0``) add, by refits with the inputs drawn
+        (``0`` without them; for a fixed ``z0``, its own ``equilibrium_spacing_sd``);
+        ``*_sd_total`` (properties) combine them with the data's, in quadrature.
     """
 
     work_of_adhesion: float
@@ -744,6 +593,18 @@ class AdhesionFit:
     pull_off_force: NDArray = field(repr=False)
     sd: NDArray = field(repr=False)
     modulus: float = field(repr=False, default=math.nan)
+    work_of_adhesion_sd_inputs: float = 0.0
+    equilibrium_spacing_sd_inputs: float = 0.0
+
+    @property
+    def work_of_adhesion_sd_total(self) -> float:
+        """The standard uncertainty of ``w`` from the data and the inputs [J/m^2]."""
+        return math.hypot(self.work_of_adhesion_sd, self.work_of_adhesion_sd_inputs)
+
+    @property
+    def equilibrium_spacing_sd_total(self) -> float:
+        """The standard uncertainty of ``z0`` from the data and the inputs [m]."""
+        return math.hypot(self.equilibrium_spacing_sd, self.equilibrium_spacing_sd_inputs)
 
 
 def fit_pull_off(
@@ -755,6 +616,9 @@ def fit_pull_off(
     equilibrium_spacing: float | None = None,
     bootstrap: int | str = "auto",
     seed: int = 0,
+    modulus_sd: float = 0.0,
+    equilibrium_spacing_sd: float = 0.0,
+    samples: int = 100,
 ) -> AdhesionFit:
     r"""Fit the work of adhesion (and the range) to pull-off forces at several radii.
 
@@ -781,7 +645,16 @@ def fit_pull_off(
         copied; ``"auto"``: 100 where the linear interval is poor, a relative standard
         uncertainty of a parameter above 10 %, else none).
     seed : int
-        Of the bootstrap.
+        Of the bootstrap (``seed + 1``: of the inputs' draws).
+    modulus_sd : float
+        The standard uncertainty of ``modulus`` [Pa].
+    equilibrium_spacing_sd : float
+        The standard uncertainty of a fixed ``equilibrium_spacing`` [m].
+    samples : int
+        Refits with the modulus (and a fixed ``z0``) drawn from normal distributions, for
+        the uncertainty they add (``work_of_adhesion_sd_inputs``, ...; draws at or below
+        zero and refits without a solution are skipped). Only with ``modulus_sd`` or
+        ``equilibrium_spacing_sd``.
 
     Returns
     -------
@@ -794,6 +667,12 @@ def fit_pull_off(
     >>> fit = fit_pull_off(R, F, 50e9, bootstrap=0)
     >>> round(fit.work_of_adhesion, 8), round(fit.equilibrium_spacing * 1e9, 6)
     (0.1, 0.3)
+
+    A 5 % uncertainty of the modulus, propagated by refits:
+
+    >>> fit = fit_pull_off(R, F, 50e9, bootstrap=0, modulus_sd=2.5e9)
+    >>> bool(0 < fit.work_of_adhesion_sd_inputs < 0.01), fit.work_of_adhesion_sd_total > 0
+    (True, True)
     """
     from scipy.optimize import least_squares
 
@@ -814,6 +693,21 @@ def fit_pull_off(
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
         raise ValueError(f"seed must be an integer >= 0, got {seed!r}")
     fixed = equilibrium_spacing is not None
+    for name, v in (("modulus_sd", modulus_sd), ("equilibrium_spacing_sd", equilibrium_spacing_sd)):
+        if isinstance(v, (bool, str)) or not (
+            isinstance(v, (int, float, np.integer, np.floating)) and math.isfinite(v) and v >= 0
+        ):
+            raise ValueError(f"{name} must be a finite number >= 0, got {v!r}")
+    if equilibrium_spacing_sd and not fixed:
+        raise ValueError(
+            "equilibrium_spacing_sd needs a fixed equilibrium_spacing (a joint fit estimates z0)"
+        )
+    if (
+        isinstance(samples, bool)
+        or not isinstance(samples, (int, np.integer))
+        or not 2 <= samples <= 100_000
+    ):
+        raise ValueError(f"samples must be an integer in [2, 1e5], got {samples!r}")
     n_par = 1 if fixed else 2
     if R.size < n_par + (0 if fixed else 1):
         raise ValueError(
@@ -975,6 +869,19 @@ def fit_pull_off(
             "the fit ended on the bounds of the search (w in [1e-8, 1e3] J/m^2, z0 in "
             "[1e-12, 1e-7] m): these data may not be pull-offs of this model (check units)"
         )
+    w_sd_in, z_sd_in = 0.0, 0.0
+    if modulus_sd or equilibrium_spacing_sd:
+        w_sd_in, z_sd_in = _input_refits(
+            R,
+            F,
+            E,
+            sd,
+            z_fixed if fixed else None,
+            float(modulus_sd),
+            float(equilibrium_spacing_sd),
+            int(samples),
+            int(seed) + 1,
+        )
     return AdhesionFit(
         w,
         z0,
@@ -997,4 +904,42 @@ def fit_pull_off(
         F,
         sig if have_sd else np.full(F.shape, math.nan),
         E,
+        w_sd_in,
+        z_sd_in,
     )
+
+
+def _input_refits(
+    R: NDArray,
+    F: NDArray,
+    E: float,
+    sd: ArrayLike | None,
+    z0: float | None,
+    E_sd: float,
+    z0_sd: float,
+    samples: int,
+    seed: int,
+) -> tuple[float, float]:
+    """The standard uncertainties of ``(w, z0)`` from the modulus (and a fixed ``z0``) drawn.
+
+    ``samples`` refits without bootstrap, each with ``E`` (and a fixed ``z0``) drawn from
+    normal distributions; a draw at or below zero, or one no fit reproduces, is skipped. For
+    a fixed ``z0`` the second value is ``z0_sd`` itself.
+    """
+    rng = np.random.default_rng(seed)
+    ws, zs = [], []
+    for _ in range(samples):  # the draws in this order: E, then a fixed z0, per refit
+        Ei = E + E_sd * rng.standard_normal()
+        zi = (z0 + z0_sd * rng.standard_normal()) if z0 is not None else None
+        if Ei <= 0 or (zi is not None and zi <= 0):
+            continue
+        try:
+            fi = fit_pull_off(R, F, Ei, sd=sd, equilibrium_spacing=zi, bootstrap=0)
+        except ValueError:
+            continue
+        ws.append(fi.work_of_adhesion)
+        zs.append(fi.equilibrium_spacing)
+    if len(ws) < 2:
+        return math.nan, (z0_sd if z0 is not None else math.nan)
+    w_sd = float(np.std(ws, ddof=1))
+    return w_sd, (z0_sd if z0 is not None else float(np.std(zs, ddof=1)))

@@ -27,8 +27,15 @@ from .._interrupt import EXIT_INTERRUPTED, imports_interruptible
 
 with imports_interruptible():  # Ctrl-C here: status 130, one line (linecontact._interrupt)
     from .._version import __version__
-    from ..errors import ConvergenceError
-    from ._options import NoPointError, Parser, flag_message, record_flags
+    from ..errors import ConvergenceError, CouplingWarning
+    from ._options import (
+        NoPointError,
+        Parser,
+        coupling_effect,
+        flag_message,
+        is_units_warning,
+        record_flags,
+    )
 
 __all__ = ["COMMANDS", "build_parser", "main"]
 
@@ -244,21 +251,27 @@ def main(argv: Sequence[str] | None = None) -> int:
         return 2
     record_flags(args._subparsers.choices[args.command], args)
     prefix = f"linecontact {args.command}"
+    for note in getattr(args, "_deprecated", None) or ():  # old spellings: always said
+        print(f"{prefix}: warning: {note}", file=sys.stderr)
     seen: set[str] = set()
+    said: list[str] = []
+    quiet = bool(getattr(args, "quiet", False))
 
     def once(message, category, filename, lineno, file=None, line=None):
+        if quiet and not is_units_warning(message, category):  # --quiet: model notes only
+            return
         text = str(message)
         if text not in seen:  # a warning is printed once per run
             seen.add(text)
+            if issubclass(category, CouplingWarning) and not said:  # its effect: once
+                said.append(text)
+                text += coupling_effect(text)
             print(f"{prefix}: warning: {flag_message(text, args)}", file=sys.stderr)
 
     try:
         with warnings.catch_warnings():
-            if getattr(args, "quiet", False):
-                warnings.simplefilter("ignore")
-            else:
-                warnings.simplefilter("always")
-                warnings.showwarning = once
+            warnings.simplefilter("always")
+            warnings.showwarning = once
             status = int(args.func(args))
         _flush_stdout()  # a write error surfaces here, not in the interpreter's last flush
         return status

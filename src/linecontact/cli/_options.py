@@ -20,6 +20,7 @@ import numpy as np
 
 from ..cylinder import _ZERO_WIDTH, Cylinder, _warn_widths
 from ..domain import TooWideError, check_si
+from ..errors import ModelValidityWarning, UnitsWarning
 from ..output import FORMATS, Table, write
 from ..presets import Material, material_names
 
@@ -40,7 +41,7 @@ API_FLAGS = {
     "adhesion_range": "--h",
     "work_of_adhesion": "--work-of-adhesion",
     "equilibrium_spacing": "--z0",
-    "contact_half_width": "--a",
+    "contact_half_width": "--half-width",
     "load": "--load",
     "normal_load": "--load",
     "friction_stress": "--tau0",
@@ -128,6 +129,50 @@ class Parser(argparse.ArgumentParser):
             (file or sys.stderr).write(message)
 
 
+class _Deprecated(argparse.Action):
+    """An old spelling of an option: does what the new one does, and says the new name.
+
+    The note (one ``warning:`` line, :func:`linecontact.cli.main` prints it) is kept in the
+    namespace's ``_deprecated``; the value goes through the new option's own action.
+    """
+
+    def __init__(self, option_strings: Any, dest: str, target: argparse.Action, **kw: Any):
+        self.target = target
+        super().__init__(option_strings, dest, **kw)
+
+    def __call__(self, parser: Any, namespace: Any, values: Any, option_string: Any = None):
+        new = self.target.option_strings[-1]
+        notes = list(getattr(namespace, "_deprecated", None) or [])
+        note = f"{option_string} is deprecated: use {new} (same meaning)"
+        if note not in notes:
+            notes.append(note)
+        namespace._deprecated = notes
+        namespace._typed_as = {**(getattr(namespace, "_typed_as", None) or {}), new: option_string}
+        self.target(parser, namespace, values, new)
+
+
+def deprecated_alias(p: argparse.ArgumentParser, old: str, new: str, g: Any = None) -> None:
+    """Accept ``old`` as a hidden, deprecated spelling of the option ``new`` of ``p``.
+
+    It takes the same values (same type, count and choices) and stores them where ``new``
+    does; the run prints one ``warning:`` line that names ``new``. Not in the help.
+    """
+    target = p._option_string_actions[new]
+    kw: dict[str, Any] = {} if target.type is None else {"type": target.type}
+    (g or p).add_argument(
+        old,
+        action=_Deprecated,
+        target=target,
+        dest=target.dest,
+        nargs=target.nargs,
+        choices=target.choices,
+        **kw,
+        metavar=target.metavar,
+        default=argparse.SUPPRESS,
+        help=argparse.SUPPRESS,
+    )
+
+
 def add_command(sub: Any, name: str, summary: str, description: str, examples: Sequence[str]):
     """A subcommand parser with a one-line summary, a description and examples in its help.
 
@@ -161,12 +206,44 @@ def show_together(p: argparse.ArgumentParser, *flags: str, help: str) -> None:
 # output and warnings
 
 
-def add_output_options(p: argparse.ArgumentParser) -> None:
-    """``--format``, ``--json``, ``-o``, ``--indent`` and ``--quiet`` (with the command's own)."""
+class _DataOrImageFormat(argparse.Action):
+    """``--format`` of a command that also draws (``map``): a data format, or the figure's.
+
+    The figure's formats (deprecated here) now go to ``--image-format``.
+    """
+
+    def __call__(self, parser: Any, namespace: Any, values: Any, option_string: Any = None):
+        if values in FORMATS:
+            setattr(namespace, self.dest, values)
+            return
+        images = ("png", "svg", "pdf")  # linecontact.figures._style.FORMATS (no matplotlib)
+        names = [t.strip().lower().lstrip(".") for t in str(values).split(",")]
+        if not names or not all(n in images for n in names):
+            parser.error(
+                f"argument --format: invalid choice: {values!r} (choose from "
+                f"{', '.join(FORMATS)}; the figure's formats go to --image-format)"
+            )
+        notes = list(getattr(namespace, "_deprecated", None) or [])
+        notes.append(
+            f"--format {values} (image formats) is deprecated: use --image-format {values} "
+            "(--format is the format of the data)"
+        )
+        namespace._deprecated = notes
+        namespace.image_format = values
+
+
+def add_output_options(p: argparse.ArgumentParser, image_alias: bool = False) -> None:
+    """``--format``, ``--json``, ``-o``, ``--indent`` and ``--quiet`` (with the command's own).
+
+    ``image_alias``: ``--format`` also takes, deprecated, the image formats of
+    ``--image-format`` (which the command has), as it did before it took data formats.
+    """
     g = p
     g.add_argument(
         "--format",
-        choices=FORMATS,
+        **(
+            {"action": _DataOrImageFormat, "default": None} if image_alias else {"choices": FORMATS}
+        ),
         metavar="FORMAT",
         help="table (readable), json (one object: provenance and results), jsonl (provenance "
         "line, then one record per line) or csv (commented provenance header) (default: from "
@@ -183,7 +260,11 @@ def add_output_options(p: argparse.ArgumentParser) -> None:
     g.add_argument(
         "--indent", type=int, metavar="N", help="indent JSON by N spaces (compact without)"
     )
-    g.add_argument("--quiet", action="store_true", help="do not print warnings")
+    g.add_argument(
+        "--quiet",
+        action="store_true",
+        help="do not print the model notes (coupling, small strain); units warnings still print",
+    )
     show_together(
         p,
         "--format",
@@ -191,8 +272,38 @@ def add_output_options(p: argparse.ArgumentParser) -> None:
         help="table, json, jsonl, csv (default: -o's extension, else table)",
     )
     show_together(
-        p, "--indent", "--quiet", help="indent JSON by N spaces (else compact); print no warnings"
+        p, "--indent", "--quiet", help="indent JSON by N spaces (else compact); no model notes"
     )
+
+
+def is_units_warning(message: Warning | str, category: type[Warning]) -> bool:
+    """Whether a warning asks about units (never silenced by ``--quiet``).
+
+    :class:`~linecontact.errors.UnitsWarning`, or a
+    :class:`~linecontact.errors.ModelValidityWarning` that says "linecontact takes SI units"
+    (raised before that class existed). The other warnings are model notes (the coupling,
+    the small-strain range), which ``--quiet`` silences.
+    """
+    if issubclass(category, UnitsWarning):
+        return True
+    return issubclass(category, ModelValidityWarning) and "takes SI units" in str(message)
+
+
+#: What the coupling warning adds, once: the effect of beta, its sign and order, no number.
+COUPLING_EFFECT = (
+    "; its effect on the results is not computed. Without friction at the interface the "
+    "coupling does not change the normal contact (no shear tractions); with friction it "
+    "brings shear tractions that make the contact slightly narrower and the peak pressure "
+    "higher at a given load (Spence 1975, J. Elasticity 5:297; Johnson 1985, Contact "
+    "Mechanics, sec. 5.4). Exchanging the bodies changes the sign of beta and not the "
+    "contact, so the change of the width is even in beta (of order beta^2) and grows with "
+    "|beta| (at most 0.5); no figure for it is given"
+)
+
+
+def coupling_effect(text: str) -> str:
+    """What the coupling warning ``text`` adds (once per run): :data:`COUPLING_EFFECT`."""
+    return "" if COUPLING_EFFECT in text else COUPLING_EFFECT
 
 
 def emit(args: argparse.Namespace, table: Table) -> None:
@@ -297,7 +408,9 @@ def flag_message(message: str, args: argparse.Namespace) -> str:
         names[dest] = flag
     for name, flag in {**API_FLAGS, **getattr(args, "_api_flags", {})}.items():
         names[name] = flag
+    typed = getattr(args, "_typed_as", None) or {}  # an old spelling: named as typed
     for name, flag in sorted(names.items(), key=lambda kv: -len(kv[0])):
+        flag = typed.get(flag, flag)
         if flag not in given:
             continue
         # a name with an underscore is a parameter wherever it stands; a plain word (radius,
@@ -348,6 +461,7 @@ def add_si_materials(p: argparse.ArgumentParser, range_flag: str = "--h") -> Any
         "--sigma0", type=float, metavar="S", help="adhesive (Dugdale) stress sigma0 [Pa]"
     )
     name = "leading-edge adhesion range h2" if range_flag == "--h2" else "adhesion range h"
+    work = _work_flag(range_flag)
     si.add_argument(
         range_flag,
         dest="h",
@@ -356,10 +470,12 @@ def add_si_materials(p: argparse.ArgumentParser, range_flag: str = "--h") -> Any
         help=f"{name} [m] (sets R/h even without adhesion)",
     )
     si.add_argument(
-        "--work-of-adhesion",
+        work,
+        dest="work_of_adhesion",
         type=float,
         metavar="W",
-        help="work of adhesion w [J/m^2] (with --z0, instead of --sigma0 and "
+        help=f"{'advancing ' if work != '--work-of-adhesion' else ''}work of adhesion w "
+        f"[J/m^2] (with --z0, instead of --sigma0 and "
         f"{range_flag}: sigma0 = 16 w/(9 sqrt(3) z0), {range_flag} = 0.974 z0)",
     )
     si.add_argument(
@@ -399,11 +515,18 @@ def add_si_materials(p: argparse.ArgumentParser, range_flag: str = "--h") -> Any
         p,
         "--sigma0",
         range_flag,
-        "--work-of-adhesion",
+        work,
         "--z0",
         help=f"sigma0 [Pa], {rng} [m]; or w [J/m^2], z0 [m]",
     )
+    if work != "--work-of-adhesion":  # it was --work-of-adhesion, which meant this one
+        deprecated_alias(p, "--work-of-adhesion", work, si)
     return si
+
+
+def _work_flag(range_flag: str) -> str:
+    """The flag of the one work of adhesion (with ``--z0``): advancing where h2 is the range."""
+    return "--work-of-adhesion-advancing" if range_flag == "--h2" else "--work-of-adhesion"
 
 
 def si_given(args: argparse.Namespace, extra: Sequence[str] = ()) -> bool:
@@ -421,22 +544,22 @@ def si_given(args: argparse.Namespace, extra: Sequence[str] = ()) -> bool:
 
 def cylinder(args: argparse.Namespace, range_flag: str = "--h") -> Cylinder:
     """The :class:`Cylinder` of the SI inputs, with errors that name the flags."""
+    work = _work_flag(range_flag)
     if args.radius is None:
         raise ValueError("SI inputs need --radius [m]")
     if args.h is None and args.work_of_adhesion is None and args.z0 is None:
         raise ValueError(
             f"SI inputs need the adhesion range {range_flag} [m] (it sets R/h even without "
-            f"adhesion), or --work-of-adhesion with --z0"
+            f"adhesion), or {work} with --z0"
         )
     if (args.sigma0 is not None or args.h is not None) and (
         args.work_of_adhesion is not None or args.z0 is not None
     ):
         raise ValueError(
-            f"give adhesion either as --sigma0 and {range_flag}, or as --work-of-adhesion "
-            "and --z0, not both"
+            f"give adhesion either as --sigma0 and {range_flag}, or as {work} and --z0, not both"
         )
     if (args.work_of_adhesion is None) != (args.z0 is None):
-        raise ValueError("give both --work-of-adhesion and --z0")
+        raise ValueError(f"give both {work} and --z0")
     _positive("--length", args.length)
     adh = dict(
         cohesive_stress=args.sigma0,
@@ -574,14 +697,24 @@ def add_width_options(p: Any, load_flag: str, load_help: str) -> None:
         help="NUM linearly spaced contact half-widths a/R from START to STOP",
     )
     p.add_argument(load_flag, type=float, nargs="+", metavar="F", help=load_help)
-    p.add_argument("--a", type=float, nargs="+", help="contact half-widths a [m] (SI inputs)")
+    p.add_argument(
+        "--half-width",
+        dest="a",
+        type=float,
+        nargs="+",
+        metavar="A",
+        help="contact half-widths a [m] (SI inputs)",
+    )
     p.add_argument(
         "--load", type=float, nargs="+", help="normal loads per unit length F [N/m] (SI inputs)"
     )
+    deprecated_alias(p, "--a", "--half-width")
 
 
 def half_widths(args: argparse.Namespace, cyl: Cylinder | None, load_attr: str):
-    """Contact half-widths a/R from ``--a-over-R``, ``--a-over-R-range`` or ``--a``; None for loads.
+    """Contact half-widths a/R from ``--a-over-R``, ``--a-over-R-range``, ``--half-width``.
+
+    None for loads.
 
     Exactly one of those, ``--<load_attr>`` or ``--load`` [N/m] must be given.
     """
@@ -595,14 +728,17 @@ def half_widths(args: argparse.Namespace, cyl: Cylinder | None, load_attr: str):
     ]
     if sum(given) != 1:
         raise ValueError(
-            f"give exactly one of --a-over-R, --a-over-R-range, {flag}, --a [m] or --load [N/m]"
+            f"give exactly one of --a-over-R, --a-over-R-range, {flag}, --half-width [m] or "
+            "--load [N/m]"
         )
     if (args.a is not None or args.load is not None) and cyl is None:
-        raise ValueError("--a and --load are SI inputs: give --radius and the materials too")
+        raise ValueError(
+            "--half-width and --load are SI inputs: give --radius and the materials too"
+        )
     if cyl is not None and (given[0] or given[1] or given[2]):
         raise ValueError(
             f"--a-over-R, --a-over-R-range and {flag} are nondimensional: with SI inputs give "
-            "--a [m] or --load [N/m]"
+            "--half-width [m] or --load [N/m]"
         )
     if args.a_over_R_range is not None:
         start, stop, num = args.a_over_R_range
@@ -620,9 +756,9 @@ def half_widths(args: argparse.Namespace, cyl: Cylinder | None, load_attr: str):
         a = np.asarray(args.a, float)
         if not np.all(np.isfinite(a) & (a > 0)):
             bad = a[~(np.isfinite(a) & (a > 0))][0]
-            raise ValueError(f"--a must be a finite number > 0, got {bad!r}")
+            raise ValueError(f"--half-width must be a finite number > 0, got {bad!r}")
         key = "sliding_a_over_R" if load_attr == "F_over_Eh2" else "a_over_R"
-        check_si("--a", a, cyl.radius, key, "m")  # type: ignore[union-attr]
+        check_si("--half-width", a, cyl.radius, key, "m")  # type: ignore[union-attr]
         return a / cyl.radius  # type: ignore[union-attr]
     return None
 

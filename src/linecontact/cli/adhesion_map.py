@@ -3,8 +3,9 @@
 A thin shell over :func:`linecontact.adhesion_map.adhesion_map` and
 :mod:`linecontact.figures.adhesion_map`. It writes ``adhesion_map.<format>`` (each format)
 and ``adhesion_map.csv`` (one row per cell, the provenance block in its header) into
-``--outdir``; it prints the files and a summary per ``mu``, or with ``--json`` the
-provenance block and the cells.
+``--outdir``; it prints the files and a summary per ``mu``, or with ``--json`` (``--format
+json|jsonl|csv``, as the other commands) the provenance block and the cells; ``-o FILE``
+writes that output to FILE. The figure's formats are ``--image-format``.
 """
 
 from __future__ import annotations
@@ -17,8 +18,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ..output import Table, table_from_result, write
-from ._options import add_command, command_line
+from ..output import FORMATS, Table, table_from_result, write
+from ._options import add_command, add_output_options, command_line, emit
 
 if TYPE_CHECKING:  # linecontact.adhesion_map imports SciPy's linalg: imported where used
     from ..adhesion_map import AdhesionMap
@@ -66,7 +67,7 @@ def register(sub: Any) -> None:
         _DESCRIPTION,
         [
             "linecontact map --quick",
-            "linecontact map --outdir maps --format png,pdf --tol 0.02",
+            "linecontact map --outdir maps --image-format png,pdf --tol 0.02",
         ],
     )
     p.add_argument(
@@ -77,7 +78,7 @@ def register(sub: Any) -> None:
         "files of the same names are replaced (default: %(default)s)",
     )
     p.add_argument(
-        "--format",
+        "--image-format",
         default="png",
         metavar="LIST",
         help="comma-separated file formats of the figure, any of png, svg, pdf; PNG at 150 "
@@ -137,10 +138,10 @@ def register(sub: Any) -> None:
         help="a coarse grid: 4 values of mu to 1 (or --mu-max: the curves beyond mu = 1 are "
         "the dearest), 41 loads from 0.01 to 10 pull-offs (the map of `linecontact figures`)",
     )
-    p.add_argument(
-        "--json",
-        action="store_true",
-        help="print the provenance block and one record per cell as JSON instead of the summary",
+    add_output_options(p, image_alias=True)
+    p._option_string_actions["--format"].help = (
+        "the data: table (the summary per mu), json, jsonl, csv (the cells) (default: -o's "
+        "extension, else table)"
     )
     p.set_defaults(func=_cmd_map)
 
@@ -245,7 +246,7 @@ def _summary(m: AdhesionMap) -> Table:
 def _cmd_map(args: argparse.Namespace) -> int:
     from .paper import _formats_arg, _size_arg
 
-    formats = _formats_arg(args.format)
+    formats = _formats_arg(args.image_format)
     size = _size_arg(args.size)
     mu, y = _grid(args)
     from ..adhesion_map import adhesion_map
@@ -274,8 +275,12 @@ def _cmd_map(args: argparse.Namespace) -> int:
         raise ValueError(
             f"cannot write the map to --outdir {args.outdir!r}: {exc.strerror or exc}"
         ) from None
-    if args.json:
-        write(_table(m, args, files), "json")
+    fmt = args.format
+    if fmt is None and args.output is not None:
+        ext = args.output.rsplit(".", 1)[-1].lower()
+        fmt = ext if ext in FORMATS and ext != "table" else "table"
+    if fmt not in (None, "table") or args.output is not None:  # the data, as the others
+        emit(args, _summary(m) if fmt == "table" else _table(m, args, files))
         return 0
     print(f"wrote {len(files)} files to {out}/:")
     for f in files:

@@ -3,18 +3,17 @@
 A thin shell over :mod:`linecontact.inverse`. Data come from a CSV file (``--data``) whose
 header names the columns with their units (``radius_m``, ``pull_off_force_N_per_m``, ``sd``
 right after a value column for its uncertainty, ...; lines starting with ``#`` are comments;
-every column is used or refused), or as one measurement on the command line, each
-value with an optional standard uncertainty (``--radius 50e-9 --radius-sd 3e-9`` or
-``--radius-sd 6%``). The output is one record: the fitted values, their standard
-uncertainties, 95 % intervals (two-element lists), the covariance, and per data point
-(lists) the residuals and the forward model; what JKR and DMT alone would have given is
-beside them.
+every column is used or refused; read by :func:`linecontact.measurements.read_measurements`),
+or as one measurement on the command line, each value with an optional standard uncertainty
+(``--radius 50e-9 --radius-sd 3e-9`` or ``--radius-sd 6%``). The output is one record: the
+fitted values, their standard uncertainties, 95 % intervals (two-element lists), the
+covariance, and per data point (lists) the residuals and the forward model; what JKR and DMT
+alone would have given is beside them.
 """
 
 from __future__ import annotations
 
 import argparse
-import csv
 import math
 import os
 from typing import Any
@@ -22,11 +21,13 @@ from typing import Any
 import numpy as np
 
 from .. import inverse as inv
+from ..measurements import read_measurements
 from ..output import Table
 from ._options import (
     add_command,
     add_output_options,
     command_line,
+    deprecated_alias,
     emit,
     show_together,
     si_parameters,
@@ -34,13 +35,6 @@ from ._options import (
 from ._options import cylinder as _cylinder
 
 __all__ = ["register"]
-
-#: kind of quantity -> (unit suffix -> factor to SI); "N" and "nN" are totals over --length
-_UNITS: dict[str, dict[str, float]] = {
-    "length": {"m": 1.0, "nm": 1e-9, "um": 1e-6},
-    "force": {"N_per_m": 1.0, "nN_per_um": 1e-3, "uN_per_m": 1e-6, "N": 1.0, "nN": 1e-9},
-}
-_TOTAL = ("N", "nN")
 
 _DESCRIPTION = {
     "fit-adhesion": (
@@ -61,7 +55,7 @@ _EXAMPLES = {
     "fit-friction": [
         "linecontact fit-friction --data friction.csv --radius 50e-9 --modulus 51.7e9 "
         "--work-of-adhesion 0.1 --z0 0.3e-9",
-        "linecontact fit-friction --normal-load 0.5 --friction-force 0.2 --friction-force-sd "
+        "linecontact fit-friction --load 0.5 --friction-force 0.2 --friction-force-sd "
         "10% --radius 50e-9 --modulus 51.7e9 --work-of-adhesion 0.1 --z0 0.3e-9",
     ],
 }
@@ -127,12 +121,16 @@ def register(sub: Any) -> None:
                 "--half-width",
                 type=float,
                 metavar="A",
-                help="a measured contact half-width [m] at --normal-load (instead of a "
+                help="a measured contact half-width [m] at --load (instead of a "
                 "pull-off force): w from the width",
             )
             one.add_argument("--half-width-sd", metavar="SD", help="[m] or N%%")
             one.add_argument(
-                "--normal-load", type=float, metavar="F", help="normal load [N/m] of --half-width"
+                "--load",
+                dest="normal_load",
+                type=float,
+                metavar="F",
+                help="normal load [N/m] of --half-width",
             )
             p.add_argument(
                 "--bootstrap",
@@ -144,12 +142,15 @@ def register(sub: Any) -> None:
             si.add_argument("--work-of-adhesion", type=float, metavar="W", help="w [J/m^2]")
             si.add_argument("--work-of-adhesion-sd", metavar="SD", help="[J/m^2] or N%%")
             si.add_argument(
-                "--receding-work-of-adhesion",
+                "--work-of-adhesion-receding",
+                dest="receding_work_of_adhesion",
                 type=float,
                 metavar="W1",
                 help="receding w [J/m^2]: the steady-sliding contact and dw = w1 - w",
             )
-            one.add_argument("--normal-load", type=float, metavar="F", help="normal load [N/m]")
+            one.add_argument(
+                "--load", dest="normal_load", type=float, metavar="F", help="normal load [N/m]"
+            )
             one.add_argument("--friction-force", type=float, metavar="f", help="[N/m], > 0")
             one.add_argument("--friction-force-sd", metavar="SD", help="[N/m] or N%%")
             one.add_argument(
@@ -173,6 +174,9 @@ def register(sub: Any) -> None:
         )
         p.add_argument("--plot", metavar="FILE", help="draw the fit into FILE (.png, .svg, .pdf)")
         add_output_options(p)
+        deprecated_alias(p, "--normal-load", "--load", one)
+        if name == "fit-friction":
+            deprecated_alias(p, "--receding-work-of-adhesion", "--work-of-adhesion-receding", si)
         _show_pairs(p, name)
         p.set_defaults(func=_cmd_adhesion if name == "fit-adhesion" else _cmd_friction)
 
@@ -202,214 +206,6 @@ def _show_pairs(p: argparse.ArgumentParser, name: str) -> None:
         "--seed",
         help="Monte Carlo samples, seed of the draws (default: %(default)s, 0)",
     )
-
-
-# --------------------------------------------------------------------------------------------
-# reading data
-
-
-def _accepted(wanted: dict[str, tuple[str, bool, bool]]) -> str:
-    """The accepted column names of ``wanted``, for an error message."""
-    cols = []
-    for prefix, (_, _, with_sd) in wanted.items():
-        cols.append(f"{prefix}_<unit>")
-        if with_sd:
-            cols[-1] += (
-                f" with its optional uncertainty: sd or sd_<unit> right after it, or "
-                f"{prefix}_sd_<unit> anywhere"
-            )
-    kinds = dict.fromkeys(kind for kind, _, _ in wanted.values())
-    units = "; ".join(f"{', '.join(_UNITS[k])} for a {k}" for k in kinds)
-    return f"{', '.join(cols)} (<unit>: {units})"
-
-
-def read_columns(
-    path: str, wanted: dict[str, tuple[str, bool, bool]], length: float | None
-) -> tuple[dict[str, np.ndarray], int]:
-    """Columns of a CSV file, in SI units per unit length; every column used or refused.
-
-    Parameters
-    ----------
-    path : str
-        The CSV file: ``#`` comment lines, a header, then rows of numbers.
-    wanted : dict
-        Maps a quantity's name prefix (``"radius"``) to ``(kind, required, with_sd)``:
-        ``kind`` a key of the unit table, whether the file must have the column, and whether
-        the caller uses the quantity's standard uncertainty.
-    length : float or None
-        The fibre's length [m], to turn total forces (units ``N``, ``nN``) into forces per
-        length.
-
-    Returns
-    -------
-    columns : dict
-        ``{prefix: array}`` for each quantity found, ``{prefix + "_sd": array}`` for each
-        uncertainty found, and ``"_line"``: each row's line number in the file.
-    n : int
-        The number of rows.
-
-    Raises
-    ------
-    ValueError
-        For a column the reader does not use (it never drops one), naming it and the
-        accepted names: a quantity's value is ``<prefix>_<unit>``; its uncertainty, where
-        ``with_sd``, is ``sd`` or ``sd_<unit>`` right after the value column or
-        ``<prefix>_sd_<unit>`` anywhere (no unit: that of the value column); one of each
-        per quantity. Also for a missing column, a unit of the wrong kind, a field that is
-        not a finite number and a negative uncertainty; the message names the file, the row
-        (counting the header as row 1, comment lines included) and the column.
-    """
-    try:
-        with open(path, newline="", encoding="utf-8-sig") as fh:  # a BOM is dropped
-            lines = list(enumerate(fh.read().splitlines(), start=1))
-    except OSError as exc:
-        raise ValueError(f"--data {path!r}: cannot read it ({exc.strerror or exc})") from None
-    except UnicodeDecodeError as exc:
-        raise ValueError(
-            f"--data {path!r}: not UTF-8 text (byte {exc.start}): save the file as UTF-8 CSV"
-        ) from None
-    body = [(n, line) for n, line in lines if line.strip() and not line.lstrip().startswith("#")]
-    if not body:
-        raise ValueError(f"--data {path!r}: no header and no rows (only comments or empty)")
-    rows = list(csv.reader(line for _, line in body))
-    header = [h.strip() for h in rows[0]]
-    if len(rows) < 2:
-        raise ValueError(f"--data {path!r}: a header and no data rows")
-    accepted = _accepted(wanted)
-    with_sd = [p for p, (_, _, s) in wanted.items() if s]
-    may_carry = " or ".join(f"{p}_<unit>" for p in with_sd) or "no column of this file"
-
-    def unknown(j: int) -> ValueError:
-        known = f"column {header[j]!r} is not one the reader knows"
-        what = known if header[j] else f"column {j + 1} has no name"
-        return ValueError(f"--data {path!r}: {what}; the accepted columns are {accepted}")
-
-    def not_read(j: int, prefix: str) -> ValueError:
-        return ValueError(
-            f"--data {path!r}, column {header[j]!r}: the reader does not use an uncertainty "
-            f"of the {prefix.replace('_', ' ')} (it is taken as exact); an uncertainty column "
-            f"may qualify only {may_carry}"
-        )
-
-    # each column is a value ("value", prefix, unit), an uncertainty ("sd", prefix, unit;
-    # unit "" for that of the value column) or unknown ("?", "", "")
-    role: list[tuple[str, str, str]] = []
-    for j, col in enumerate(header):
-        if col == "sd" or col.startswith("sd_"):  # the uncertainty of the column before it
-            if j == 0:
-                raise ValueError(
-                    f"--data {path!r}, column {col!r}: an sd column qualifies the value column "
-                    f"right before it, and it is the first column; an sd column may follow "
-                    f"only {may_carry}"
-                )
-            what, prefix, _ = role[j - 1]
-            if what == "?":
-                raise unknown(j - 1)
-            if what == "sd":
-                raise ValueError(
-                    f"--data {path!r}, column {col!r}: an sd column qualifies the value column "
-                    f"right before it, and {header[j - 1]!r} is an uncertainty; an sd column "
-                    f"may follow only {may_carry}"
-                )
-            if prefix not in with_sd:
-                raise not_read(j, prefix)
-            role.append(("sd", prefix, col[3:]))
-            continue
-        hits = [p for p in wanted if col == p or col.startswith(p + "_")]
-        if not hits:
-            role.append(("?", "", ""))
-            continue
-        prefix = max(hits, key=len)
-        rest = col[len(prefix) + 1 :]
-        if rest == "sd" or rest.startswith("sd_"):
-            if prefix not in with_sd:
-                raise not_read(j, prefix)
-            role.append(("sd", prefix, rest[3:]))
-        elif not rest:
-            raise ValueError(
-                f"--data {path!r}, column {col!r}: no unit: name it {prefix}_<unit> with <unit> "
-                f"one of {', '.join(_UNITS[wanted[prefix][0]])}"
-            )
-        else:
-            role.append(("value", prefix, rest))
-
-    found: dict[tuple[str, str], list[int]] = {}
-    for j, (what, prefix, _) in enumerate(role):
-        if what != "?":
-            found.setdefault((what, prefix), []).append(j)
-    for (what, prefix), js in found.items():
-        if len(js) > 1:
-            kind = "uncertainty columns" if what == "sd" else "columns"
-            raise ValueError(
-                f"--data {path!r}: {len(js)} {kind} for {prefix.replace('_', ' ')} "
-                f"({', '.join(header[j] for j in js)}): keep one"
-            )
-    for prefix, (kind, required, _) in wanted.items():
-        if required and ("value", prefix) not in found:
-            units = ", ".join(f"{prefix}_{u}" for u in _UNITS[kind])
-            raise ValueError(
-                f"--data {path!r}: no column for {prefix.replace('_', ' ')}: expected one "
-                f"of {units}; the header is {','.join(header)!r}"
-            )
-        if ("sd", prefix) in found and ("value", prefix) not in found:
-            raise ValueError(
-                f"--data {path!r}, column {header[found['sd', prefix][0]]!r}: an uncertainty "
-                f"and no column for the {prefix.replace('_', ' ')} itself"
-            )
-    if any(what == "?" for what, _, _ in role):
-        raise unknown(next(j for j, (what, _, _) in enumerate(role) if what == "?"))
-
-    for i, row in enumerate(rows[1:]):
-        if len(row) != len(header):
-            raise ValueError(
-                f"--data {path!r}, row {body[i + 1][0]}: {len(row)} fields, the header has "
-                f"{len(header)}"
-            )
-    out: dict[str, np.ndarray] = {}
-    for j, (what, prefix, unit) in enumerate(role):
-        col, kind = header[j], wanted[prefix][0]
-        if what == "sd" and not unit:
-            unit = role[found["value", prefix][0]][2]  # the unit of its value column
-        if unit not in _UNITS[kind]:
-            other = [k for k in _UNITS if k != kind and unit in _UNITS[k]]
-            raise ValueError(
-                f"--data {path!r}, column {col!r}: the unit {unit!r} is "
-                + (f"one of a {other[0]}" if other else "not one the reader knows")
-                + f"; the {prefix.replace('_', ' ')}"
-                + ("'s uncertainty" if what == "sd" else "")
-                + f" takes {', '.join(_UNITS[kind])}"
-            )
-        if unit in _TOTAL and length is None:
-            raise ValueError(
-                f"--data {path!r}, column {col!r}: forces in {unit} are totals: give the "
-                "fibre's --length [m] to turn them into forces per length"
-            )
-        per = length if (unit in _TOTAL and length is not None) else 1.0
-        factor = _UNITS[kind][unit] / per
-        vals = np.empty(len(rows) - 1)
-        for i, row in enumerate(rows[1:]):
-            line_no = body[i + 1][0]
-            try:
-                if "_" in row[j]:  # float() reads "2_0" as 20: not a plain number
-                    raise ValueError(row[j])
-                v = float(row[j])
-            except ValueError:
-                raise ValueError(
-                    f"--data {path!r}, row {line_no}, column {col!r}: {row[j]!r} is not a number"
-                ) from None
-            if not math.isfinite(v):
-                raise ValueError(
-                    f"--data {path!r}, row {line_no}, column {col!r}: {row[j]!r} is not finite"
-                )
-            if what == "sd" and v < 0:
-                raise ValueError(
-                    f"--data {path!r}, row {line_no}, column {col!r}: a standard uncertainty "
-                    f"must be >= 0, got {v!r}"
-                )
-            vals[i] = v * factor
-        out[prefix + "_sd" if what == "sd" else prefix] = vals
-    out["_line"] = np.array([body[i + 1][0] for i in range(len(rows) - 1)])
-    return out, len(rows) - 1
 
 
 # --------------------------------------------------------------------------------------------
@@ -453,6 +249,13 @@ def _modulus(args: argparse.Namespace) -> tuple[float, dict[str, Any]]:
         if k in keep or k.endswith(("_material", "_source"))
     }
     return cyl.modulus, rec
+
+
+def _read(args: argparse.Namespace, kind: Any) -> dict[str, np.ndarray]:
+    """The measurements of ``--data`` (:func:`linecontact.measurements.read_measurements`)."""
+    return read_measurements(
+        args.data, kind, length=args.length, source=f"--data {args.data!r}", length_name="--length"
+    )
 
 
 def _one_sd(args, name: str, value: float | None) -> float:
@@ -527,26 +330,11 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
                 f"{', '.join(single)}: for one measurement, not with --data (the uncertainties "
                 "of the pull-off forces go into the file: an sd column after them)"
             )
-        cols, n = read_columns(
-            args.data,
-            {
-                "radius": ("length", True, False),
-                "pull_off_force": ("force", True, True),
-            },
-            args.length,
-        )
-        R, F = cols["radius"], cols["pull_off_force"]
-        sd = cols.get("pull_off_force_sd")
-        rows = cols["_line"]
-        if np.any(R <= 0):
-            i = int(np.flatnonzero(R <= 0)[0])
-            raise ValueError(f"--data {args.data!r}, row {int(rows[i])}: the radius is not > 0")
-        if np.any(F >= 0):
-            i = int(np.flatnonzero(F >= 0)[0])
-            raise ValueError(
-                f"--data {args.data!r}, row {int(rows[i])}: the pull-off force is "
-                f"{float(F[i])!r} N/m: pull-off forces are tensile, negative"
-            )
+        data = _read(args, "pull-off")
+        R, F = data["radius"], data["pull_off_force"]
+        sd = data.get("pull_off_force_sd")
+        rows = data["line"]
+        n = R.size
         if sd is not None:
             weak = (sd < 1e-12 * np.abs(F)) | (sd > 1e6 * np.abs(F))
             if np.any(weak):
@@ -563,41 +351,32 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
                 raise ValueError(
                     f"--bootstrap must be 'auto' or an integer, got {boot!r}"
                 ) from None
+        E_sd = _one_sd(args, "modulus", E)
+        if args.z0 is None and args.z0_sd is not None:
+            raise ValueError("--z0-sd needs a fixed --z0 (a joint fit estimates z0)")
+        z_sd = _one_sd(args, "z0", args.z0) if args.z0 is not None else 0.0
+        # the inputs' uncertainties propagate by refits with them drawn (100, seed + 1)
         fit = inv.fit_pull_off(
-            R, F, E, sd=sd, equilibrium_spacing=args.z0, bootstrap=boot, seed=args.seed
+            R,
+            F,
+            E,
+            sd=sd,
+            equilibrium_spacing=args.z0,
+            bootstrap=boot,
+            seed=args.seed,
+            modulus_sd=E_sd,
+            equilibrium_spacing_sd=z_sd,
         )
         z_ref = fit.equilibrium_spacing
         simple = inv.simple_model_work_of_adhesion(R, F, E, z_ref, sd)
-        E_sd = _one_sd(args, "modulus", E)
-        z_sd = _one_sd(args, "z0", args.z0) if args.z0 is not None else 0.0
-        if args.z0 is None and args.z0_sd is not None:
-            raise ValueError("--z0-sd needs a fixed --z0 (a joint fit estimates z0)")
         extra_sd: dict[str, float] = {}
         if E_sd or z_sd:
-            # the inputs' uncertainties: refits with the modulus (and a fixed z0) drawn
-            rng = np.random.default_rng(args.seed + 1)
-            ws, zs = [], []
-            for _ in range(100):
-                Ei = E + E_sd * rng.standard_normal()
-                zi = (args.z0 + z_sd * rng.standard_normal()) if args.z0 is not None else None
-                if Ei <= 0 or (zi is not None and zi <= 0):
-                    continue
-                try:
-                    fi = inv.fit_pull_off(R, F, Ei, sd=sd, equilibrium_spacing=zi, bootstrap=0)
-                except ValueError:
-                    continue
-                ws.append(fi.work_of_adhesion)
-                zs.append(fi.equilibrium_spacing)
             extra_sd = {
-                "work_of_adhesion_sd_inputs": float(np.std(ws, ddof=1)),
-                "z0_sd_inputs": float(np.std(zs, ddof=1)) if args.z0 is None else z_sd,
+                "work_of_adhesion_sd_inputs": fit.work_of_adhesion_sd_inputs,
+                "z0_sd_inputs": fit.equilibrium_spacing_sd_inputs,
+                "work_of_adhesion_sd_total": fit.work_of_adhesion_sd_total,
+                "z0_sd_total": fit.equilibrium_spacing_sd_total,
             }
-            extra_sd["work_of_adhesion_sd_total"] = math.hypot(
-                fit.work_of_adhesion_sd, extra_sd["work_of_adhesion_sd_inputs"]
-            )
-            extra_sd["z0_sd_total"] = math.hypot(
-                fit.equilibrium_spacing_sd, extra_sd["z0_sd_inputs"]
-            )
         rec: dict[str, Any] = {
             "work_of_adhesion": fit.work_of_adhesion,
             "work_of_adhesion_sd": fit.work_of_adhesion_sd,
@@ -669,7 +448,7 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
     if args.radius is None or args.z0 is None:
         raise ValueError(
             "give --data FILE, or one measurement: --radius, --z0 and --pull-off-force (or "
-            "--pull-off-force-total with --length, or --half-width with --normal-load)"
+            "--pull-off-force-total with --length, or --half-width with --load)"
         )
     given = [
         k
@@ -679,7 +458,7 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
     if len(given) != 1:
         raise ValueError(
             "give one of --pull-off-force [N/m], --pull-off-force-total [N] (with --length) "
-            "or --half-width [m] (with --normal-load)"
+            "or --half-width [m] (with --load)"
         )
     common = {"radius": args.radius, "modulus": E, "equilibrium_spacing": args.z0}
     sds = {
@@ -689,7 +468,7 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
     }
     if given == ["half_width"]:
         if args.normal_load is None:
-            raise ValueError("--half-width needs the normal load it was measured at: --normal-load")
+            raise ValueError("--half-width needs the normal load it was measured at: --load")
         fn: Any = inv.work_of_adhesion_from_width
         values = dict(half_width=args.half_width, normal_load=args.normal_load, **common)
         sds["half_width"] = _one_sd(args, "half_width", args.half_width)
@@ -697,7 +476,7 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
         what = "one contact width"
     else:
         if args.normal_load is not None:
-            raise ValueError("--normal-load goes with --half-width, not with a pull-off force")
+            raise ValueError("--load goes with --half-width, not with a pull-off force")
         if given == ["pull_off_force_total"]:
             if args.length is None:
                 raise ValueError("--pull-off-force-total [N] needs the fibre's --length [m]")
@@ -809,7 +588,7 @@ def _friction_from_width(args: argparse.Namespace) -> int:
     if not (math.isfinite(args.half_width) and args.half_width > 0):
         raise ValueError(f"--half-width must be a finite number > 0, got {args.half_width!r}")
     if args.receding_work_of_adhesion is not None and args.work_of_adhesion is None:
-        raise ValueError("--receding-work-of-adhesion needs the advancing --work-of-adhesion")
+        raise ValueError("--work-of-adhesion-receding needs the advancing --work-of-adhesion")
     model = [
         f
         for f, v in (
@@ -833,7 +612,7 @@ def _friction_from_width(args: argparse.Namespace) -> int:
         and args.receding_work_of_adhesion < args.work_of_adhesion
     ):
         raise ValueError(
-            "--receding-work-of-adhesion must be at least --work-of-adhesion (the hysteresis "
+            "--work-of-adhesion-receding must be at least --work-of-adhesion (the hysteresis "
             "is not negative)"
         )
     dw = (
@@ -897,28 +676,15 @@ def _cmd_friction(args: argparse.Namespace) -> int:
         raise ValueError(f"--length must be a finite number > 0, got {args.length!r}")
     if args.data is not None:
         if args.friction_force is not None or args.normal_load is not None:
-            raise ValueError("give either --data FILE or one measurement (--normal-load, ...)")
-        cols, n = read_columns(
-            args.data,
-            {
-                "normal_load": ("force", True, False),
-                "friction_force": ("force", True, True),
-            },
-            args.length,
-        )
-        F, f = cols["normal_load"], cols["friction_force"]
-        f_sd = cols.get("friction_force_sd", np.zeros_like(f))
-        lines = cols["_line"]
-        if np.any(f <= 0):
-            i = int(np.flatnonzero(f <= 0)[0])
-            raise ValueError(
-                f"--data {args.data!r}, row {int(lines[i])}: the friction force is not > 0"
-            )
+            raise ValueError("give either --data FILE or one measurement (--load, ...)")
+        data = _read(args, "friction")
+        F, f = data["normal_load"], data["friction_force"]
+        f_sd = data.get("friction_force_sd", np.zeros_like(f))
+        lines = data["line"]
+        n = F.size
     else:
         if args.friction_force is None or args.normal_load is None:
-            raise ValueError(
-                "give --data FILE, or one measurement: --normal-load and --friction-force"
-            )
+            raise ValueError("give --data FILE, or one measurement: --load and --friction-force")
         F, f = np.array([args.normal_load]), np.array([args.friction_force])
         lines = np.array([0])
         f_sd = np.array([_one_sd(args, "friction_force", args.friction_force)])

@@ -149,19 +149,19 @@ def _cmd_cite(args) -> int:
 
 
 def _formats_arg(text: str) -> tuple[str, ...]:
-    """``--format`` as a tuple of format names, checked (ValueError names the option)."""
+    """``--image-format`` as a tuple of format names, checked (ValueError names the option)."""
     from ..figures._style import FORMATS
 
     names = [t.strip().lower().lstrip(".") for t in text.split(",")]
     if not all(names):
         raise ValueError(
-            f"--format {text!r}: give a comma-separated list of {', '.join(FORMATS)} "
+            f"--image-format {text!r}: give a comma-separated list of {', '.join(FORMATS)} "
             "without empty entries"
         )
     bad = [n for n in names if n not in FORMATS]
     if bad:
         raise ValueError(
-            f"--format {text!r}: unknown format {bad[0]!r}; choose from {', '.join(FORMATS)}"
+            f"--image-format {text!r}: unknown format {bad[0]!r}; choose from {', '.join(FORMATS)}"
         )
     return tuple(dict.fromkeys(names))
 
@@ -187,7 +187,7 @@ def _size_arg(text: str) -> tuple[float, float]:
 
 def _cmd_paper(args) -> int:
     # the options are checked before anything is imported, created or drawn
-    formats = _formats_arg(args.format)
+    formats = _formats_arg(args.image_format)
     size = _size_arg(args.size)
     from ..figures import paper_figures
     from ..figures._style import _mpl
@@ -225,7 +225,7 @@ def _draw_and_list(draw, args, formats, size) -> None:
 
 
 def _cmd_figures(args) -> int:
-    formats = _formats_arg(args.format)
+    formats = _formats_arg(args.image_format)
     size = _size_arg(args.size)
     from ..figures import extra_figures
 
@@ -235,6 +235,8 @@ def _cmd_figures(args) -> int:
 
 def register(sub) -> None:
     """Add ``paper``, ``figures`` and ``cite`` to the subparsers ``sub``."""
+    from ._options import deprecated_alias
+
     pa = sub.add_parser(
         "paper",
         help="redraw the paper's Figs. 2-14 (PNG by default)",
@@ -244,7 +246,7 @@ def register(sub) -> None:
             88,
         ),
         epilog="examples:\n  linecontact paper\n"
-        "  linecontact paper --outdir figs --format png,svg --size 12x6.75",
+        "  linecontact paper --outdir figs --image-format png,svg --size 12x6.75",
     )
     pa.add_argument(
         "--outdir",
@@ -254,7 +256,7 @@ def register(sub) -> None:
         "replaced (default: %(default)s)",
     )
     pa.add_argument(
-        "--format",
+        "--image-format",
         default="png",
         metavar="LIST",
         help="comma-separated file formats, any of png, svg, pdf; PNG at 150 dpi "
@@ -267,6 +269,7 @@ def register(sub) -> None:
         help="width x height of the figures in inches, from 9.5x5.2 to 30x20 (fonts stay "
         "the same size); the two-panel Fig. 8 is a third taller (default: %(default)s)",
     )
+    deprecated_alias(pa, "--format", "--image-format")
     pa.set_defaults(func=_cmd_paper)
 
     fi = sub.add_parser(
@@ -282,7 +285,7 @@ def register(sub) -> None:
             88,
         ),
         epilog="examples:\n  linecontact figures\n"
-        "  linecontact figures --outdir figs --format png,pdf",
+        "  linecontact figures --outdir figs --image-format png,pdf",
     )
     fi.add_argument(
         "--outdir",
@@ -292,7 +295,7 @@ def register(sub) -> None:
         "replaced (default: %(default)s)",
     )
     fi.add_argument(
-        "--format",
+        "--image-format",
         default="png",
         metavar="LIST",
         help="comma-separated file formats, any of png, svg, pdf; PNG at 150 dpi "
@@ -305,6 +308,7 @@ def register(sub) -> None:
         help="width x height of the figures in inches, from 9.5x5.2 to 30x20 "
         "(default: %(default)s)",
     )
+    deprecated_alias(fi, "--format", "--image-format")
     fi.set_defaults(func=_cmd_figures)
 
     ci = sub.add_parser(

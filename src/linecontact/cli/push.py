@@ -113,15 +113,7 @@ def register(sub: Any) -> None:
         "--work-of-adhesion-receding",
         type=float,
         metavar="W1",
-        help="receding (separation) work of adhesion [J/m^2], with "
-        "--work-of-adhesion-advancing and --z0: sigma0 = 16 W1/(9 sqrt(3) z0), "
-        "h1 = W1/sigma0, h2 = W2/sigma0",
-    )
-    si.add_argument(
-        "--work-of-adhesion-advancing",
-        type=float,
-        metavar="W2",
-        help="advancing (approach) work of adhesion [J/m^2], <= W1",
+        help="receding W1 [J/m^2], with the advancing W2 <= W1: one sigma0, from W1",
     )
     add_output_options(p)
     for flags, text in (
@@ -130,16 +122,20 @@ def register(sub: Any) -> None:
         (("--h1", "--tau0"), "receding range h1 [m]; friction stress tau0 [Pa]"),
         (("--load", "--push"), "normal load [N/m] (default 0); a push [N/m]: its state"),
         (("--height", "--tip-height"), "push heights [m] in [0, 2R], or a tip's"),
-        (
-            ("--work-of-adhesion-receding", "--work-of-adhesion-advancing"),
-            "or W1 >= W2 [J/m^2], with --z0",
-        ),
     ):
         show_together(p, *flags, help=text)
-    p.set_defaults(func=_cmd_push, _api_flags={"adhesion_range": "--h2"})
+    p.set_defaults(
+        func=_cmd_push,
+        _api_flags={"adhesion_range": "--h2", "work_of_adhesion": "--work-of-adhesion-advancing"},
+    )
 
 
 def _cmd_push(args: argparse.Namespace) -> int:
+    # --work-of-adhesion-advancing (dest work_of_adhesion) alone: with --z0 and --h1, as
+    # --sigma0 --h2; with --work-of-adhesion-receding: the pair (one sigma0, from W1)
+    args.work_of_adhesion_advancing = None
+    if args.work_of_adhesion_receding is not None:
+        args.work_of_adhesion_advancing, args.work_of_adhesion = args.work_of_adhesion, None
     works = (args.work_of_adhesion_receding, args.work_of_adhesion_advancing)
     si = si_given(args, extra=("h1", "tau0", "load", "height", "tip_height", "push")) or any(
         w is not None for w in works
@@ -285,7 +281,7 @@ def _works_to_ranges(args: argparse.Namespace) -> None:
         raise ValueError(
             "give --work-of-adhesion-receding, --work-of-adhesion-advancing and --z0 together"
         )
-    if any(v is not None for v in (args.sigma0, args.h, args.h1, args.work_of_adhesion)):
+    if any(v is not None for v in (args.sigma0, args.h, args.h1)):
         raise ValueError(
             "give adhesion either as the two works of adhesion with --z0, or as --sigma0, "
             "--h2 and --h1, not both"

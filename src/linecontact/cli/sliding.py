@@ -99,7 +99,10 @@ def register(sub: Any) -> None:
         p, "--h1", "--tau0", help="trailing range h1 [m] (or --h1-over-h2); shear strength [Pa]"
     )
     add_output_options(p)
-    p.set_defaults(func=_cmd_slide, _api_flags={"adhesion_range": "--h2"})
+    p.set_defaults(
+        func=_cmd_slide,
+        _api_flags={"adhesion_range": "--h2", "work_of_adhesion": "--work-of-adhesion-advancing"},
+    )
 
 
 def _setup(args: argparse.Namespace):

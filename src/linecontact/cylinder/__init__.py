@@ -1,0 +1,77 @@
+r"""The dimensional (SI) layer: a cylinder on a substrate, and its problems in SI units.
+
+:class:`Cylinder` holds the radius, the composite modulus, the adhesion ``(sigma0, h)`` and
+Dundurs' ``beta``; its methods and the ``cylinder_*`` functions convert SI inputs to the
+paper's groups, call the nondimensional solvers (:mod:`linecontact.normal`,
+:mod:`linecontact.tangential`) and convert back. Units: lengths [m], stresses and moduli
+[Pa], forces per unit length of cylinder [N/m], work of adhesion [J/m^2]. Materials and
+adhesion conventions: :mod:`linecontact.materials`.
+
+The package's modules: ``_cylinder.py`` (:class:`Cylinder`), ``_problems.py`` (the tangential
+problems, the pushed fibre, the load histories), ``_results.py`` (the SI result classes),
+``_checks.py`` (the plausible ranges of the SI inputs and the checks of the widths). Import
+from ``linecontact.cylinder``: every name is here.
+"""
+
+# the names of the package's modules, the private ones that other modules and the tests
+# import included, are re-exported
+# ruff: noqa: F401
+
+from __future__ import annotations
+
+from ._checks import (
+    _CHECKED,
+    _S_LJ,
+    _UNIT_SLIP,
+    _ZERO_WIDTH,
+    PLAUSIBLE,
+    WIDTH_MIN,
+    _check_cylinder_si,
+    _first,
+    _implausible,
+    _plausible,
+    _units_question,
+    _warn_widths,
+    _which,
+)
+from ._cylinder import Cylinder
+from ._problems import (
+    _cylinder_tangential,
+    _full_slip,
+    _history_contact,
+    _history_solve,
+    _scalar,
+    cylinder_cyclic_loss,
+    cylinder_push,
+    cylinder_sliding_initiation,
+    cylinder_steady_rolling,
+    cylinder_tangential_history,
+)
+from ._results import (
+    CylinderContact,
+    CylinderCyclicLoss,
+    CylinderLennardJonesContact,
+    CylinderLennardJonesPullOff,
+    CylinderPullOff,
+    CylinderPush,
+    CylinderTangential,
+    CylinderTangentialHistory,
+)
+
+__all__ = [
+    "CylinderPush",
+    "cylinder_push",
+    "PLAUSIBLE",
+    "Cylinder",
+    "CylinderContact",
+    "CylinderLennardJonesContact",
+    "CylinderLennardJonesPullOff",
+    "CylinderPullOff",
+    "CylinderCyclicLoss",
+    "CylinderTangential",
+    "CylinderTangentialHistory",
+    "cylinder_cyclic_loss",
+    "cylinder_sliding_initiation",
+    "cylinder_tangential_history",
+    "cylinder_steady_rolling",
+]

@@ -1,0 +1,611 @@
+""":class:`Cylinder`: radius, modulus, adhesion, Dundurs' beta; normal contact and pull-off."""
+
+from __future__ import annotations
+
+import math
+import warnings
+from dataclasses import dataclass
+from typing import TYPE_CHECKING, Any, Literal, overload
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from .. import domain as _domain
+from .. import normal as _normal
+from .. import reference as _ref
+from .._validation import (
+    RAISE,
+    FailurePolicy,
+    check_array,
+    failure_policy,
+    positive,
+    scalar,
+)
+from ..errors import CouplingWarning, NoEquilibriumError, UnitsWarning
+from ..materials import (
+    BETA_WARN,
+    _adhesion,
+    _moduli,
+    composite_modulus,
+    dundurs_beta,
+)
+from ._checks import (
+    _CHECKED,
+    _S_LJ,
+    _ZERO_WIDTH,
+    PLAUSIBLE,
+    _check_cylinder_si,
+    _warn_widths,
+)
+from ._results import (
+    CylinderContact,
+    CylinderLennardJonesContact,
+    CylinderLennardJonesPullOff,
+    CylinderPullOff,
+)
+
+if TYPE_CHECKING:  # imported where used: the Lennard-Jones solver needs scipy
+    from ..presets import Material
+
+
+@dataclass(frozen=True)
+class Cylinder:
+    """A cylinder of radius ``R`` on a substrate, with Maugis--Dugdale adhesion.
+
+    Build it with :meth:`from_materials` or :meth:`from_modulus`.
+
+    Attributes
+    ----------
+    radius : float
+        ``R`` [m] (the equivalent radius for two cylinders).
+    modulus : float
+        Composite plane-strain modulus ``E`` [Pa].
+    cohesive_stress : float
+        ``sigma0`` [Pa] (0: no adhesion).
+    adhesion_range : float
+        ``h`` [m].
+    dundurs_beta : float
+        Dundurs' ``beta = -B/A`` (0 when only the composite modulus was given).
+
+    Examples
+    --------
+    >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
+    >>> round(cyl.R_over_h, 9), cyl.sigma0_over_E
+    (100.0, 0.01)
+    """
+
+    radius: float
+    modulus: float
+    cohesive_stress: float
+    adhesion_range: float
+    dundurs_beta: float = 0.0
+
+    def __post_init__(self) -> None:
+        # the fields as Python floats, checked (also when the class is built directly)
+        for name, limits in (
+            ("radius", {}),
+            ("modulus", {}),
+            ("cohesive_stress", {"low_inclusive": True}),
+            ("adhesion_range", {}),
+            ("dundurs_beta", {"low": -np.inf, "low_inclusive": True}),
+        ):
+            object.__setattr__(self, name, scalar(name, getattr(self, name), **limits))
+        # the units of the groups must be representable: R/h, sigma0/E and E h
+        for what, v in (
+            ("radius/adhesion_range (R/h)", self.radius / self.adhesion_range),
+            ("cohesive_stress/modulus (sigma0/E)", self.cohesive_stress / self.modulus),
+            (
+                "modulus*adhesion_range (E h, the unit of force per length)",
+                self.modulus * self.adhesion_range,
+            ),
+        ):
+            if not (np.isfinite(v) and (v > 0 or (v == 0 and what.startswith("cohesive")))):
+                raise ValueError(
+                    f"{what} = {v!r} is not a finite positive number: radius="
+                    f"{self.radius!r}, modulus={self.modulus!r}, cohesive_stress="
+                    f"{self.cohesive_stress!r}, adhesion_range="
+                    f"{self.adhesion_range!r} are too far apart in scale"
+                )
+        if not _CHECKED.get():  # a factory checked them under its caller's names
+            _check_cylinder_si(
+                self.radius,
+                self.modulus,
+                {"cohesive_stress": self.cohesive_stress, "adhesion_range": self.adhesion_range},
+                stacklevel=5,
+            )
+
+    @classmethod
+    def _build(
+        cls,
+        R: float,
+        E: float,
+        beta: float,
+        adhesion: tuple[float | None, float | None, float | None, float | None],
+        modulus_name: str = "modulus",
+    ) -> Cylinder:
+        """The cylinder of a factory, its SI inputs checked under the names the caller gave."""
+        cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing = adhesion
+        s0, h = _adhesion(cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
+        given: dict[str, ArrayLike | None] = {"cohesive_stress": s0, "adhesion_range": h}
+        if work_of_adhesion is not None and equilibrium_spacing is not None:
+            given = {
+                "work_of_adhesion": float(work_of_adhesion),
+                "equilibrium_spacing": float(equilibrium_spacing),
+            }
+        _check_cylinder_si(R, E, given, modulus_name=modulus_name, stacklevel=5)
+        token = _CHECKED.set(True)
+        try:
+            cyl = cls(R, E, s0, h, beta)
+        finally:
+            _CHECKED.reset(token)
+        object.__setattr__(cyl, "_given", given)  # for the messages of the Lennard-Jones law
+        return cyl
+
+    @classmethod
+    def from_modulus(
+        cls,
+        radius: float,
+        modulus: float,
+        *,
+        cohesive_stress: float | None = None,
+        adhesion_range: float | None = None,
+        work_of_adhesion: float | None = None,
+        equilibrium_spacing: float | None = None,
+    ) -> Cylinder:
+        """From the composite modulus ``E`` [Pa]; adhesion as ``(sigma0, h)`` or ``(w, z0)``."""
+        R = scalar("radius", radius)
+        E = scalar("modulus", modulus)
+        adhesion = (cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
+        return cls._build(R, E, 0.0, adhesion)
+
+    @classmethod
+    def from_materials(
+        cls,
+        radius: float,
+        E1: float,
+        nu1: float,
+        E2: float,
+        nu2: float,
+        *,
+        cohesive_stress: float | None = None,
+        adhesion_range: float | None = None,
+        work_of_adhesion: float | None = None,
+        equilibrium_spacing: float | None = None,
+    ) -> Cylinder:
+        """From the moduli [Pa] and Poisson ratios of cylinder (1) and substrate (2)."""
+        R = scalar("radius", radius)
+        for name, v in zip(("E1", "nu1", "E2", "nu2"), _moduli(E1, nu1, E2, nu2), strict=True):
+            if v.ndim != 0:
+                raise ValueError(f"{name} must be a single number, got an array of shape {v.shape}")
+        E = float(composite_modulus(E1, nu1, E2, nu2))
+        beta = float(dundurs_beta(E1, nu1, E2, nu2))
+        for name, mod in (("E1", E1), ("E2", E2)):
+            e = float(np.asarray(mod))  # a single number (checked above)
+            if np.isfinite(e) and not PLAUSIBLE["modulus"][0] <= e <= PLAUSIBLE["modulus"][1]:
+                warnings.warn(
+                    f"{name} = {e:g} Pa is outside 1 kPa to 2 TPa: is the modulus in Pa? "
+                    "(linecontact takes SI units)",
+                    UnitsWarning,
+                    stacklevel=2,
+                )
+        if abs(beta) > BETA_WARN:
+            warnings.warn(
+                f"Dundurs beta = -B/A = {beta:.3g} is not small (|beta| > {BETA_WARN}): "
+                "normal and tangential tractions are coupled, but linecontact "
+                "solves the uncoupled case B = 0",
+                CouplingWarning,
+                stacklevel=2,
+            )
+        adhesion = (cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
+        return cls._build(R, E, beta, adhesion, "composite modulus")
+
+    @classmethod
+    def from_presets(
+        cls,
+        radius: float,
+        cylinder_material: str | Material,
+        substrate_material: str | Material,
+        *,
+        cohesive_stress: float | None = None,
+        adhesion_range: float | None = None,
+        work_of_adhesion: float | None = None,
+        equilibrium_spacing: float | None = None,
+    ) -> Cylinder:
+        """From material presets (:mod:`linecontact.presets`) of cylinder and substrate.
+
+        Parameters
+        ----------
+        radius : float
+            ``R`` [m].
+        cylinder_material, substrate_material : str or Material
+            A preset's name (case-insensitive: ``"ZnO"``, ``"SiO2"``, see
+            :func:`~linecontact.presets.material_names`) or a
+            :class:`~linecontact.presets.Material`.
+        cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing : float, optional
+            Adhesion as ``(sigma0, h)`` or ``(w, z0)``, as in :meth:`from_materials`.
+
+        Returns
+        -------
+        Cylinder
+            ``Cylinder.from_materials(radius, E1, nu1, E2, nu2, ...)`` with the presets'
+            ``E`` and ``nu``.
+
+        Examples
+        --------
+        >>> cyl = Cylinder.from_presets(
+        ...     50e-9, "ZnO", "Si", work_of_adhesion=0.1, equilibrium_spacing=0.3e-9
+        ... )
+        >>> round(cyl.modulus / 1e9, 1)
+        77.8
+        """
+        from ..presets import Material
+
+        def preset(name: str, m) -> Material:
+            try:
+                return m if isinstance(m, Material) else Material.from_name(m)
+            except ValueError as exc:  # say which of the two
+                raise ValueError(f"{name}: {exc}") from None
+
+        m1 = preset("cylinder_material", cylinder_material)
+        m2 = preset("substrate_material", substrate_material)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            cyl = cls.from_materials(
+                radius,
+                m1.E,
+                m1.nu,
+                m2.E,
+                m2.nu,
+                cohesive_stress=cohesive_stress,
+                adhesion_range=adhesion_range,
+                work_of_adhesion=work_of_adhesion,
+                equilibrium_spacing=equilibrium_spacing,
+            )
+        for w in caught:  # said where from_presets was called, not in here
+            warnings.warn(w.message, stacklevel=2)
+        return cyl
+
+    # groups ------------------------------------------------------------------------------
+    @property
+    def R_over_h(self) -> float:
+        """``R/h``."""
+        return self.radius / self.adhesion_range
+
+    @property
+    def sigma0_over_E(self) -> float:
+        """``sigma0/E``."""
+        return self.cohesive_stress / self.modulus
+
+    @property
+    def work_of_adhesion(self) -> float:
+        """``w = sigma0 h`` [J/m^2]."""
+        return self.cohesive_stress * self.adhesion_range
+
+    @property
+    def maugis_parameter(self) -> float:
+        """Baney & Hui's line-contact Tabor-like parameter (DMT-like small, JKR-like large)."""
+        return float(_ref.maugis_parameter(self.R_over_h, self.sigma0_over_E))
+
+    @property
+    def kappa(self) -> float:
+        """The single group of the Maugis--Dugdale line contact."""
+        return float(_ref.kappa(self.R_over_h, self.sigma0_over_E))
+
+    def _check_lennard_jones(self) -> None:
+        """Refuse, in SI terms, a cylinder outside the domain of the Lennard-Jones solver.
+
+        The solver's group is the Maugis (Tabor) parameter ``mu = w R^(1/2) / (E z0^(3/2))``
+        with ``w = sigma0 h`` and ``z0 = 16 h/(9 sqrt 3)``; the message gives its value for
+        this cylinder, the inputs as they were given, and what would bring it in.
+        """
+        hi = _domain.DOMAIN["lj_mu"][2]
+        R, E = self.radius, self.modulus
+        w, z0 = self.work_of_adhesion, _S_LJ * self.adhesion_range
+        given = getattr(self, "_given", {})
+        if self.cohesive_stress <= 0:
+            raise ValueError(
+                "the Lennard-Jones law needs adhesion: give the cylinder a work of adhesion "
+                "(work_of_adhesion and equilibrium_spacing, or cohesive_stress > 0)"
+            )
+        mu = w * math.sqrt(R / z0) / (E * z0)
+        if mu <= hi:
+            return
+        from ..lennard_jones import maugis_parameter_of_mu
+
+        lam = float(maugis_parameter_of_mu(hi))
+        if "work_of_adhesion" in given:
+            w, z0 = float(given["work_of_adhesion"]), float(given["equilibrium_spacing"])
+            inputs = f"work_of_adhesion={w!r} J/m^2, equilibrium_spacing={z0!r} m"
+            more = (
+                f", a work of adhesion below {w * hi / mu:.3g} J/m^2 or an equilibrium spacing "
+                f"z0 above {z0 * (mu / hi) ** (2 / 3):.3g} m"
+            )
+        else:
+            inputs = (
+                f"cohesive_stress={self.cohesive_stress!r} Pa, adhesion_range="
+                f"{self.adhesion_range!r} m (w = {w:.3g} J/m^2, z0 = {z0:.3g} m)"
+            )
+            more = f" or a cohesive stress below {self.cohesive_stress * hi / mu:.3g} Pa"
+        raise ValueError(
+            f"under the Lennard-Jones law the Maugis parameter mu = w R^(1/2) / (E z0^(3/2)) "
+            f"of this cylinder is {mu:.4g} (radius={R!r} m, modulus={E!r} Pa, {inputs}): the "
+            f"Lennard-Jones solver takes mu in [0, {hi:g}] (Tabor-Maugis parameter up to "
+            f"{lam:.3g}). Use the Dugdale law (law='dugdale', any mu), or a radius below "
+            f"{R * (hi / mu) ** 2:.3g} m, a modulus above {E * mu / hi:.3g} Pa{more}"
+        )
+
+    # problems ----------------------------------------------------------------------------
+    def _wrap(self, r: _normal.NormalContact) -> CylinderContact:
+        R, Eh = self.radius, self.modulus * self.adhesion_range
+
+        def si(v, unit):
+            v = np.multiply(v, unit)
+            return v.item() if np.ndim(v) == 0 else v
+
+        a = si(r.a_over_R, R)
+        _warn_widths(a, R, stacklevel=4)
+        return CylinderContact(a, si(r.c_over_R, R), si(r.F_over_Eh, Eh), r.stable, r.state, r)
+
+    @overload
+    def contact(
+        self,
+        *,
+        contact_half_width: ArrayLike | None = None,
+        load: ArrayLike | None = None,
+        method: str = "closed-form",
+        branch: str = "stable",
+        on_failure: FailurePolicy = RAISE,
+        law: Literal["dugdale"] = "dugdale",
+        **deprecated: Any,
+    ) -> CylinderContact: ...
+
+    @overload
+    def contact(
+        self,
+        *,
+        contact_half_width: ArrayLike | None = None,
+        load: ArrayLike | None = None,
+        method: str = "closed-form",
+        branch: str = "stable",
+        on_failure: FailurePolicy = RAISE,
+        law: str,
+        **deprecated: Any,
+    ) -> CylinderContact | CylinderLennardJonesContact: ...
+
+    def contact(
+        self,
+        *,
+        contact_half_width: ArrayLike | None = None,
+        load: ArrayLike | None = None,
+        method: str = "closed-form",
+        branch: str = "stable",
+        on_failure: FailurePolicy = RAISE,
+        law: str = "dugdale",
+        **deprecated: Any,
+    ) -> CylinderContact | CylinderLennardJonesContact:
+        """The contact at given half-widths ``a`` [m] or loads ``F`` [N/m] (exactly one).
+
+        For a load, ``branch`` selects the stable (default) or the unstable contact state;
+        a load that no contact of the branch carries (below the pull-off force) raises
+        :class:`~linecontact.errors.NoEquilibriumError`, or with ``on_failure="report"``
+        gives ``state == "no-equilibrium"`` and NaN values; for a half-width, ``on_failure``
+        is that of :func:`~linecontact.normal_contact` (a collocation point that misses its
+        tolerance raises :class:`~linecontact.errors.ConvergenceError`, or is flagged in
+        ``nondimensional.converged``). README, "Conventions"; ``on_no_equilibrium`` is the
+        deprecated form of ``on_failure``.
+
+        ``law="lennard-jones"`` is deprecated (a ``DeprecationWarning``): use
+        :meth:`lennard_jones_contact`, which it calls. ``law="dugdale"`` (the default) is
+        accepted silently.
+        """
+        _normal._check_law(law, "Cylinder.contact", "Cylinder.lennard_jones_contact(load=...)")
+        if (contact_half_width is None) == (load is None):
+            raise ValueError("give exactly one of contact_half_width or load")
+        policy = failure_policy(
+            on_failure, where="Cylinder.contact", accepts=("on_no_equilibrium",), **deprecated
+        )
+        if law == "lennard-jones":
+            if load is None:
+                raise ValueError(
+                    "under the Lennard-Jones law the contact is found for a given load only: "
+                    "give load [N/m], not contact_half_width"
+                )
+            if method != "closed-form" or branch != "stable":
+                raise ValueError(
+                    "method and branch apply to law='dugdale': under the Lennard-Jones law the "
+                    "contact for a load is the stable state beyond the pull-off"
+                )
+            self._check_lennard_jones()
+            return self._for_load_lj("load", load, policy)
+        if method not in ("closed-form", "collocation"):
+            raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
+        if branch not in ("stable", "unstable"):
+            raise ValueError(f"branch must be 'stable' or 'unstable', got {branch!r}")
+        if load is not None and method != "closed-form":
+            raise ValueError(
+                "the contact for a given load is found by the closed form: "
+                "method='collocation' applies to contact_half_width only"
+            )
+        if contact_half_width is not None and branch != "stable":
+            raise ValueError(
+                "branch applies to a given load only: a contact half-width fixes the state"
+            )
+        if contact_half_width is not None:
+            a = positive("contact_half_width", contact_half_width)
+            _domain.check_si("contact_half_width", a, self.radius, "a_over_R", "m")
+            r = _normal.normal_contact(
+                a / self.radius, self.R_over_h, self.sigma0_over_E, method=method, on_failure=policy
+            )
+        else:
+            return self._for_load("load", load, branch, policy)  # type: ignore[arg-type]
+        return self._wrap(r)
+
+    def _for_load(
+        self, name: str, load: ArrayLike, branch: str = "stable", policy: FailurePolicy = "raise"
+    ) -> CylinderContact:
+        """The contact carrying ``load`` [N/m]; messages name the caller's parameter."""
+        F = check_array(name, load, low=-np.inf, low_inclusive=True)
+        Eh = self.modulus * self.adhesion_range
+        _domain.check_si(name, F, Eh, "F_over_Eh", "N/m")
+        if branch == "stable" and policy == "raise":
+            # said in the units given ([N/m]), not only as F_over_Eh
+            F_min = _normal.pull_off(self.R_over_h, self.sigma0_over_E).F_minimum_over_Eh * Eh
+            if np.any(F < F_min):
+                raise NoEquilibriumError(
+                    f"no contact carries {name}={float(F[F < F_min].flat[0])!r} N/m: it is "
+                    f"below the pull-off force, the minimum load on the contact branch "
+                    f"{F_min!r} N/m; the cylinder has pulled off"
+                )
+        try:
+            r = _normal.contact_for_load(
+                F / Eh,
+                self.R_over_h,
+                self.sigma0_over_E,
+                branch=branch,
+                on_failure=policy,
+            )
+        except _domain.TooWideError as e:
+            Fi = float(np.reshape(np.broadcast_to(F, np.shape(F)), -1)[e.index])
+            raise ValueError(
+                f"{name}={Fi!r} N/m needs a contact of half-width {e.a_over_R * self.radius:.6g}"
+                f" m, {e.a_over_R:.6g} radii: {e.limit}"
+            ) from None
+        # the load asked for, not F/(Eh) times E h (which need not give back F exactly)
+        c = self._wrap(r)
+        load_given = F.item() if np.ndim(c.load) == 0 else np.broadcast_to(F, np.shape(c.load))
+        return CylinderContact(
+            c.contact_half_width,
+            c.adhesive_zone_half_width,
+            load_given,
+            c.stable,
+            c.state,
+            r,
+        )
+
+    def _for_load_lj(
+        self, name: str, load: ArrayLike, policy: FailurePolicy = "raise"
+    ) -> CylinderLennardJonesContact:
+        """The contact carrying ``load`` [N/m] under the Lennard-Jones law (SI messages)."""
+        from .. import lennard_jones_groups as _ljg
+        from ..laws import lennard_jones as _lj
+
+        F = check_array(name, load, low=-np.inf, low_inclusive=True)
+        Eh = self.modulus * self.adhesion_range
+        _domain.check_si(name, F, Eh, "F_over_Eh", "N/m")
+        F_max = float(_ljg.load_max_over_Eh(self.R_over_h, self.sigma0_over_E)) * Eh
+        if np.any(F > F_max):
+            raise ValueError(
+                f"{name}={float(F[F > F_max].flat[0])!r} N/m is beyond the loads the "
+                f"Lennard-Jones solver is asked for, up to {F_max:.6g} N/m here (ten times the "
+                "rigid cylinder's pull-off); at such loads both laws approach Hertz, and the "
+                "Dugdale law (the default) gives the contact"
+            )
+        try:
+            r = _lj.contact_for_load(F / Eh, self.R_over_h, self.sigma0_over_E, on_failure=policy)
+        except _ljg.BelowPullOffError as e:
+            Fi = float(np.reshape(F, -1)[e.index])
+            raise NoEquilibriumError(
+                f"no contact carries {name}={Fi!r} N/m under the Lennard-Jones law: it is "
+                f"below the pull-off force {e.F_pulloff_over_Eh * Eh!r} N/m (error estimate "
+                f"{e.error_estimate_over_Eh * Eh:.2g} N/m); the cylinder has pulled off"
+            ) from None
+
+        def si(v, unit):
+            v = np.multiply(v, unit)
+            return v.item() if np.ndim(v) == 0 else v
+
+        load_given = (
+            F.item() if np.ndim(r.F_over_Eh) == 0 else np.broadcast_to(F, np.shape(r.F_over_Eh))
+        )
+        _warn_widths(si(r.a_over_R, self.radius), self.radius, stacklevel=4)
+        return CylinderLennardJonesContact(
+            si(r.a_over_R, self.radius),
+            si(r.central_gap_over_h, self.adhesion_range),
+            load_given,
+            si(r.error_estimate_over_Eh, Eh),
+            r.stable,
+            r.state,
+            r,
+        )
+
+    @overload
+    def pull_off(self, *, law: Literal["dugdale"] = "dugdale") -> CylinderPullOff: ...
+
+    @overload
+    def pull_off(self, *, law: str) -> CylinderPullOff | CylinderLennardJonesPullOff: ...
+
+    def pull_off(self, *, law: str = "dugdale") -> CylinderPullOff | CylinderLennardJonesPullOff:
+        """Pull-off force under load control [N/m] (the Maugis--Dugdale law).
+
+        ``law="lennard-jones"`` is deprecated (a ``DeprecationWarning``): use
+        :meth:`lennard_jones_pull_off`, which it calls. ``law="dugdale"`` (the default) is
+        accepted silently.
+        """
+        _normal._check_law(law, "Cylinder.pull_off", "Cylinder.lennard_jones_pull_off()")
+        if law == "lennard-jones":
+            return self._pull_off_lj()
+        p = _normal.pull_off(self.R_over_h, self.sigma0_over_E)
+        Eh = self.modulus * self.adhesion_range
+        _warn_widths(
+            p.a_over_R_at_pulloff * self.radius,
+            self.radius,
+            "the contact half-width at pull-off",
+            _ZERO_WIDTH if p.mechanism == "zero-width" else "",
+            stacklevel=3,
+        )
+        return CylinderPullOff(
+            p.F_pulloff_over_Eh * Eh,
+            p.a_over_R_at_pulloff * self.radius,
+            p.mechanism,
+            p.F_zero_width_over_Eh * Eh,
+            p,
+        )
+
+    # the Lennard-Jones law (a law is a method here, as it is a module in linecontact.laws)
+    def lennard_jones_contact(
+        self, *, load: ArrayLike, on_failure: FailurePolicy = RAISE
+    ) -> CylinderLennardJonesContact:
+        """The contact carrying ``load`` [N/m] under the Lennard-Jones law of Eq. (1).
+
+        Solved self-consistently (:func:`linecontact.laws.lennard_jones.contact_for_load`),
+        the stable branch, with the cylinder's work of adhesion ``w = sigma0 h`` and
+        ``z0 = 16 h/(9 sqrt 3)`` (for a cylinder built from ``(w, z0)`` these are the ``w``
+        and ``z0`` given, as the Maugis conversion of :func:`~linecontact.adhesion_from_work`
+        is undone). A load below the pull-off force raises
+        :class:`~linecontact.errors.NoEquilibriumError`, or with ``on_failure="report"``
+        gives ``state == "no-equilibrium"`` and NaN values.
+        """
+        policy = failure_policy(on_failure, where="Cylinder.lennard_jones_contact", accepts=())
+        self._check_lennard_jones()
+        return self._for_load_lj("load", load, policy)
+
+    def lennard_jones_pull_off(self) -> CylinderLennardJonesPullOff:
+        """Pull-off force [N/m] under the Lennard-Jones law of Eq. (1).
+
+        With the cylinder's ``w`` and ``z0`` (as in :meth:`lennard_jones_contact`);
+        :func:`linecontact.laws.lennard_jones.pull_off` in SI units.
+        """
+        return self._pull_off_lj()
+
+    def _pull_off_lj(self) -> CylinderLennardJonesPullOff:
+        """:meth:`lennard_jones_pull_off` (its warnings point at the caller of the caller)."""
+        from ..laws import lennard_jones as _lj
+
+        self._check_lennard_jones()
+        q = _lj.pull_off(self.R_over_h, self.sigma0_over_E)
+        Eh = self.modulus * self.adhesion_range
+        _warn_widths(
+            q.a_over_R_at_pulloff * self.radius,
+            self.radius,
+            "the contact half-width at pull-off",
+            "the repulsive region vanishes before the pull-off",
+            stacklevel=4,
+        )
+        return CylinderLennardJonesPullOff(
+            float(q.F_pulloff_over_Eh) * Eh,
+            float(q.error_estimate_over_Eh) * Eh,
+            float(q.a_over_R_at_pulloff) * self.radius,
+            float(q.central_gap_over_h_at_pulloff) * self.adhesion_range,
+            float(q.F_jump_in_over_Eh) * Eh,
+            q,
+        )

@@ -1,0 +1,630 @@
+"""The tangential problems, the pushed fibre and the load histories in SI units."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .. import domain as _domain
+from .. import push as _push
+from .._validation import (
+    RAISE,
+    FailurePolicy,
+    broadcast,
+    check_array,
+    failure_policy,
+    non_negative,
+    positive,
+    scalar,
+)
+from ..errors import NoEquilibriumError
+from ..tangential import (
+    sliding_initiation,
+    sliding_initiation_coulomb,
+    steady_rolling,
+    steady_rolling_coulomb,
+)
+from ..tangential.initiation import _CATTANEO_MINDLIN, _INITIATION
+from ..tangential.rolling import _CARTER, _ROLLING
+from ._checks import (
+    _first,
+    _plausible,
+    _warn_widths,
+)
+from ._cylinder import Cylinder
+from ._results import (
+    CylinderCyclicLoss,
+    CylinderPush,
+    CylinderTangential,
+    CylinderTangentialHistory,
+)
+
+# --------------------------------------------------------------------------------------------
+# tangential problems in SI units
+
+
+def _cylinder_tangential(
+    problem,
+    cylinder,
+    normal_load,
+    friction_stress,
+    friction_coefficient,
+    d_over_a,
+    tangential_load,
+    method,
+    policy,
+) -> CylinderTangential:
+    if not isinstance(cylinder, Cylinder):
+        raise ValueError(
+            f"cylinder must be a linecontact.Cylinder (Cylinder.from_modulus or "
+            f"Cylinder.from_materials), got {cylinder!r}"
+        )
+    if (friction_stress is None) == (friction_coefficient is None):
+        raise ValueError(
+            "give exactly one of friction_stress (constant tau0 [Pa]) or "
+            "friction_coefficient (Coulomb mu)"
+        )
+    if (d_over_a is None) == (tangential_load is None):
+        raise ValueError("give exactly one of d_over_a or tangential_load [N/m]")
+    E = cylinder.modulus
+    rolling = problem == "steady rolling"
+    coulomb = friction_coefficient is not None
+    pb = (
+        (_CARTER if coulomb else _ROLLING)
+        if rolling
+        else (_CATTANEO_MINDLIN if coulomb else _INITIATION)
+    )
+    # every input checked, and the shapes against each other, before any solve
+    if coulomb:
+        F = check_array("normal_load", normal_load)
+        fr_name, fr = (
+            "friction_coefficient",
+            _domain.check("friction_coefficient", friction_coefficient, "mu"),
+        )
+    else:
+        F = check_array("normal_load", normal_load, low=-np.inf)
+        fr_name, fr = "friction_stress", positive("friction_stress", friction_stress)
+        _domain.check_si("friction_stress", fr, E, "tau0_over_E", "Pa")
+    if d_over_a is not None:
+        st_name = "d_over_a"
+        st = check_array(
+            "d_over_a", d_over_a, low=pb.d_low, low_inclusive=pb.d_low_inclusive, high=1.0
+        )
+    else:
+        st_name, st = "tangential_load", non_negative("tangential_load", tangential_load)
+    broadcast(normal_load=F, **{fr_name: fr, st_name: st})
+    d = st if d_over_a is not None else None
+    if coulomb:
+        if cylinder.cohesive_stress != 0:
+            raise ValueError(
+                "Coulomb friction is the macro-scale counterpart for the "
+                "non-adhesive Hertz contact: use a Cylinder without adhesion "
+                "(cohesive_stress = 0), or give friction_stress"
+            )
+        contact = cylinder._for_load("normal_load", F)
+        A = np.asarray(contact.contact_half_width) / cylinder.radius
+        mu = fr
+        if d is None:
+            _domain.check_si("tangential_load", st, mu * F, "T_over_muF", "N/m")
+        T = None if d is not None else st / (mu * F)
+        coulomb_fn = steady_rolling_coulomb if rolling else sliding_initiation_coulomb
+        full = mu * F
+        try:
+            r: Any = coulomb_fn(mu, A, d, T_over_muF=T, method=method, on_failure=policy)
+        except NoEquilibriumError:
+            raise _full_slip(st, full, "mu F", st_name) from None
+        friction = "coulomb"
+    else:
+        contact = cylinder._for_load("normal_load", F)
+        a = np.asarray(contact.contact_half_width)
+        t0 = fr
+        if d is None:
+            _domain.check_si("tangential_load", st, E * a, "T_over_Ea", "N/m")
+        T = None if d is not None else st / (E * a)
+        fn = steady_rolling if rolling else sliding_initiation
+        # broadcast with a so that every field has the shape of the points
+        full = 2 * a * t0
+        try:
+            r = fn(t0 / E + 0 * a, d, T_over_Ea=T, method=method, on_failure=policy)
+        except NoEquilibriumError:
+            raise _full_slip(st, full, "2 a tau0", st_name) from None
+        friction = "constant"
+    a = np.asarray(contact.contact_half_width)
+    Tn = np.multiply(r.T_over_Ea, E * a)
+    creep = r.creep_over_V if rolling else None
+    return CylinderTangential(
+        problem,
+        friction,
+        _scalar(F + 0 * a),
+        _scalar(a),
+        _scalar(np.multiply(r.d_over_a, a)),
+        _scalar(Tn),
+        _scalar(full),
+        creep,
+        r.state,
+        r,
+        contact,
+    )
+
+
+def _full_slip(
+    T: NDArray, full: ArrayLike, what: str, given: str = "tangential_load"
+) -> NoEquilibriumError:
+    """The error for a tangential load [N/m] at or above full slip, said in N/m.
+
+    With ``given == "d_over_a"``, ``T`` is the stick zone given: full slip is ``d_over_a = 0``.
+    """
+    if given == "d_over_a":
+        d, full = np.broadcast_arrays(np.asarray(T, float), np.asarray(full, float))
+        di, fi = _first(d == 0, d, full) if np.any(d == 0) else (0.0, float(full.flat[0]))
+        return NoEquilibriumError(
+            f"d_over_a={di!r} is full slip (the tangential load is the full-slip load "
+            f"{fi:.6g} N/m, {what}): the whole contact slips (sliding), there is no stick zone"
+        )
+    T, full = np.broadcast_arrays(np.asarray(T, float), np.asarray(full, float))
+    Ti, fi = (
+        _first(T >= full, T, full) if np.any(T >= full) else (float(T.flat[0]), float(full.flat[0]))
+    )
+    return NoEquilibriumError(
+        f"tangential_load={Ti!r} N/m is at or above the full-slip load {fi:.6g} N/m ({what}): "
+        "the whole contact slips (sliding), there is no stick zone"
+    )
+
+
+def _scalar(v):
+    v = np.asarray(v)
+    return v.item() if v.ndim == 0 else v
+
+
+def cylinder_sliding_initiation(
+    cylinder,
+    normal_load: ArrayLike,
+    *,
+    friction_stress: ArrayLike | None = None,
+    friction_coefficient: ArrayLike | None = None,
+    d_over_a: ArrayLike | None = None,
+    tangential_load: ArrayLike | None = None,
+    method: str = "closed-form",
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
+) -> CylinderTangential:
+    """Initiation of sliding of a :class:`~linecontact.cylinder.Cylinder` (SI units).
+
+    Parameters
+    ----------
+    cylinder : Cylinder
+        Geometry, materials and adhesion.
+    normal_load : array_like
+        ``F`` [N/m]; the contact half-width ``a`` is that of the stable normal contact
+        (:meth:`Cylinder.contact`). A load below the pull-off force raises
+        :class:`~linecontact.errors.NoEquilibriumError`.
+    friction_stress : array_like, optional
+        ``tau0`` [Pa], ``> 0``: the nano-scale law (:func:`sliding_initiation`).
+    friction_coefficient : array_like, optional
+        ``mu``, ``> 0``: Coulomb friction on the Hertz contact
+        (:func:`sliding_initiation_coulomb`); the cylinder must have no adhesion and
+        ``F > 0``. Give exactly one of ``friction_stress`` and ``friction_coefficient``.
+    d_over_a : array_like, optional
+        Stick-zone half-width over ``a`` in ``[0, 1)``.
+    tangential_load : array_like, optional
+        ``T`` [N/m], ``>= 0`` (exactly one of ``d_over_a`` and ``tangential_load``).
+    method : {"closed-form", "collocation"}
+        As in :func:`sliding_initiation`.
+    on_failure : {"raise", "report"}
+        As in :func:`sliding_initiation`: a tangential load at or above full slip raises
+        :class:`~linecontact.errors.NoEquilibriumError` (``"raise"``, default), or gives
+        ``state == "sliding"`` (``"report"``); README, "Conventions". **Changed** after
+        0.2.0: the deprecated ``on_sliding`` defaulted to ``"report"``. A normal load below
+        the pull-off force raises either way.
+
+    Returns
+    -------
+    CylinderTangential
+
+    Examples
+    --------
+    >>> from linecontact import Cylinder
+    >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
+    >>> s = cylinder_sliding_initiation(cyl, 1.0, friction_stress=1e9, tangential_load=1.0)
+    >>> s.state, s.stick_zone_end < s.contact_half_width
+    ('stick-slip', True)
+    """
+    policy = failure_policy(
+        on_failure, where="cylinder_sliding_initiation", accepts=("on_sliding",), **deprecated
+    )
+    return _cylinder_tangential(
+        "sliding initiation",
+        cylinder,
+        normal_load,
+        friction_stress,
+        friction_coefficient,
+        d_over_a,
+        tangential_load,
+        method,
+        policy,
+    )
+
+
+def cylinder_steady_rolling(
+    cylinder,
+    normal_load: ArrayLike,
+    *,
+    friction_stress: ArrayLike | None = None,
+    friction_coefficient: ArrayLike | None = None,
+    d_over_a: ArrayLike | None = None,
+    tangential_load: ArrayLike | None = None,
+    method: str = "closed-form",
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
+) -> CylinderTangential:
+    """Steady rolling of a driving :class:`~linecontact.cylinder.Cylinder` (SI units).
+
+    Parameters as in :func:`cylinder_sliding_initiation`, with ``d_over_a`` in ``(-1, 1)``
+    the start of the leading-edge stick zone; ``tangential_load`` is the tractive force
+    [N/m]. The result's ``creep_ratio`` is ``(V - omega R)/V`` (negative).
+
+    Examples
+    --------
+    >>> from linecontact import Cylinder
+    >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
+    >>> r = cylinder_steady_rolling(cyl, 1.0, friction_stress=1e9, d_over_a=0.0)
+    >>> r.creep_ratio < 0
+    True
+    """
+    policy = failure_policy(
+        on_failure, where="cylinder_steady_rolling", accepts=("on_sliding",), **deprecated
+    )
+    return _cylinder_tangential(
+        "steady rolling",
+        cylinder,
+        normal_load,
+        friction_stress,
+        friction_coefficient,
+        d_over_a,
+        tangential_load,
+        method,
+        policy,
+    )
+
+
+# --------------------------------------------------------------------------------------------
+# the pushed fibre in SI units
+
+
+def cylinder_push(
+    cylinder,
+    *,
+    friction_stress: float,
+    height: ArrayLike,
+    receding_range: float | None = None,
+    receding_work_of_adhesion: float | None = None,
+    normal_load: ArrayLike = 0.0,
+    push: ArrayLike | None = None,
+    tip_friction: ArrayLike | None = None,
+    length: float | None = None,
+) -> CylinderPush:
+    """Will a pushed :class:`~linecontact.cylinder.Cylinder` stay, roll or slide (SI units).
+
+    The cylinder's adhesion is the advancing one (its ``cohesive_stress`` and
+    ``adhesion_range`` ``h2``, e.g. from the advancing work of adhesion); the receding edge
+    has the same ``sigma0`` and the range ``h1``, given as ``receding_range`` [m] or as
+    ``receding_work_of_adhesion`` [J/m^2] (``h1 = w1 / sigma0``), ``h1 >= h2``.
+
+    Parameters
+    ----------
+    cylinder : Cylinder
+        Geometry, materials, advancing adhesion.
+    friction_stress : float
+        ``tau0`` [Pa].
+    height : array_like
+        ``H`` [m] of the push, in ``[0, 2R]`` (of the tip's contact, in ``(0, 2R)``).
+    receding_range, receding_work_of_adhesion : float
+        Exactly one.
+    normal_load : array_like
+        ``F`` [N/m] (default 0).
+    push : array_like, optional
+        A horizontal push [N/m] whose state is wanted.
+    tip_friction : array_like, optional
+        A tip at ``height`` with this friction coefficient (:func:`linecontact.push`).
+    length : float, optional
+        The fibre's length [m], for the totals.
+
+    Returns
+    -------
+    CylinderPush
+
+    Examples
+    --------
+    >>> from linecontact import Cylinder, adhesion_from_work
+    >>> s0, h1 = adhesion_from_work(0.05, 0.3e-9)        # receding work of adhesion
+    >>> cyl = Cylinder.from_modulus(50e-9, 48.4e9, cohesive_stress=s0, adhesion_range=0.025 / s0)
+    >>> p = cylinder_push(cyl, friction_stress=1e6, height=[25e-9, 50e-9], receding_range=h1)
+    >>> [str(m) for m in p.first_motion]
+    ['slide', 'roll']
+    """
+    if (receding_range is None) == (receding_work_of_adhesion is None):
+        raise ValueError("give exactly one of receding_range [m] or receding_work_of_adhesion")
+    s0, h2, R, E = (
+        cylinder.cohesive_stress,
+        cylinder.adhesion_range,
+        cylinder.radius,
+        cylinder.modulus,
+    )
+    if receding_range is not None:
+        # h1 >= h2 (the hysteresis is not negative), as push's h1/h2 in [1, 1000]
+        h1 = scalar(
+            "receding_range",
+            receding_range,
+            low=h2,
+            low_inclusive=True,
+            high=1e3 * h2,
+            high_inclusive=True,
+        )
+    elif receding_work_of_adhesion is not None:
+        w1 = scalar("receding_work_of_adhesion", receding_work_of_adhesion)
+        if not (np.isfinite(w1) and w1 > 0 and s0 > 0):
+            raise ValueError(
+                "receding_work_of_adhesion must be a finite number > 0, with a cylinder that "
+                f"has adhesion (cohesive_stress > 0), got {w1!r}"
+            )
+        scalar(
+            "receding_work_of_adhesion",
+            w1,
+            low=s0 * h2,
+            low_inclusive=True,
+            high=1e3 * s0 * h2,
+            high_inclusive=True,
+        )
+        h1 = w1 / s0
+        _plausible("receding_work_of_adhesion", w1, key="work_of_adhesion")
+    if receding_range is not None:
+        _plausible("receding_range", h1, key="adhesion_range")
+    tau = scalar("friction_stress", friction_stress)
+    _domain.check_si("friction_stress", tau, E, "tau0_over_E", "Pa")
+    H = check_array("height", height, low=0.0, low_inclusive=True, high=2 * R, high_inclusive=True)
+    Eh = E * h2
+    # the SI inputs are checked (and named) here, not as the groups they form
+    load = check_array("normal_load", normal_load, low=-np.inf, high=np.inf)
+    _domain.check_si("normal_load", load, Eh, "F_over_Eh2", "N/m")
+    F = load / Eh
+    Q = None
+    if push is not None:
+        Q = check_array("push", push, low=0.0, low_inclusive=True) / Eh
+    if length is not None:
+        positive("length", length)
+    try:
+        p = _push.push(
+            R / h2,
+            h1 / h2,
+            cylinder.sigma0_over_E,
+            tau / E,
+            F,
+            np.asarray(H, float) / R,
+            Q,
+            tip_friction=tip_friction,
+        )
+    except NoEquilibriumError:
+        # below the pull-off force of steady sliding: said in N/m, for this cylinder
+        from ..sliding import sliding_pull_off
+
+        F_po = float(sliding_pull_off(R / h2, h1 / h2, cylinder.sigma0_over_E).F_pulloff_over_Eh2)
+        F_po *= Eh
+        below = np.asarray(load < F_po)
+        Fi = float(load[below].flat[0]) if np.any(below) else float(np.min(load))
+        raise NoEquilibriumError(
+            f"normal_load={Fi!r} N/m is below the sliding pull-off force {F_po:.6g} N/m of "
+            f"this cylinder (receding range {h1:.6g} m): it has pulled off"
+        ) from None
+    except _domain.TooWideError as e:
+        # e.index counts the points of push, over the shape all its inputs broadcast to
+        points = np.broadcast_shapes(
+            *(np.shape(v) for v in (F, H, Q, tip_friction) if v is not None)
+        )
+        Fi = float(np.broadcast_to(load, points).reshape(-1)[e.index])
+        raise ValueError(
+            f"normal_load={Fi!r} N/m needs a contact of half-width {e.a_over_R * R:.6g} m, "
+            f"{e.a_over_R:.6g} radii: {e.limit}"
+        ) from None
+
+    def si(v, unit):
+        out = np.multiply(v, unit)
+        return out.item() if np.ndim(out) == 0 else out
+
+    _warn_widths(si(p.a_rest_over_R, R), R, "the contact half-width at rest")
+    _warn_widths(si(p.a_slide_over_R, R), R, "the contact half-width while sliding")
+    return CylinderPush(
+        height=si(p.H_over_R, R),
+        moment_arm=si(p.H_arm_over_R, R),
+        rest_half_width=si(p.a_rest_over_R, R),
+        slide_half_width=si(p.a_slide_over_R, R),
+        rolling_resistance=si(p.Q_roll_over_Eh2, Eh),
+        sliding_resistance=si(p.Q_slide_over_Eh2, Eh),
+        slip_onset=si(p.Q_onset_over_Eh2, Eh),
+        critical_height=si(p.H_critical_over_R, R),
+        first_motion=p.first_motion,
+        creep_ratio=p.creep_over_V,
+        state=p.state,
+        length=length,
+        nondimensional=p,
+    )
+
+
+# --------------------------------------------------------------------------------------------
+# tangential load histories and cyclic loading in SI units
+
+
+def _history_contact(cylinder, normal_load, friction_stress, friction_coefficient):
+    """(F, a [m], friction scale, coulomb?) for the SI history functions, every input checked."""
+    if not isinstance(cylinder, Cylinder):
+        raise ValueError(
+            f"cylinder must be a linecontact.Cylinder (Cylinder.from_modulus or "
+            f"Cylinder.from_materials), got {cylinder!r}"
+        )
+    if (friction_stress is None) == (friction_coefficient is None):
+        raise ValueError(
+            "give exactly one of friction_stress (constant tau0 [Pa]) or "
+            "friction_coefficient (Coulomb mu)"
+        )
+    coulomb = friction_coefficient is not None
+    if coulomb:
+        F = scalar("normal_load", normal_load)
+        fr = _domain.scalar("friction_coefficient", friction_coefficient, "mu")
+        if cylinder.cohesive_stress != 0:
+            raise ValueError(
+                "Coulomb friction is the macro-scale counterpart for the non-adhesive Hertz "
+                "contact: use a Cylinder without adhesion (cohesive_stress = 0), or give "
+                "friction_stress"
+            )
+    else:
+        F = scalar("normal_load", normal_load, low=-np.inf)
+        fr = scalar("friction_stress", friction_stress)
+        _domain.check_si("friction_stress", fr, cylinder.modulus, "tau0_over_E", "Pa")
+    contact = cylinder._for_load("normal_load", F)
+    a = float(contact.contact_half_width)
+    return F, a, fr, coulomb, contact
+
+
+def _history_solve(cylinder, normal_load, stress, coefficient, loads, constant, coulomb, method):
+    """``(F, a, full-slip load, result, law)``: ``loads`` [N/m] through the nondimensional call.
+
+    ``constant(tau0/E, loads/(E a))`` or ``coulomb(mu, a/R, loads/(mu F))``; ``law`` is
+    ``"constant"`` or ``"coulomb"``.
+    """
+    F, a, fr, is_coulomb, _ = _history_contact(cylinder, normal_load, stress, coefficient)
+    if is_coulomb:
+        r = coulomb(fr, a / cylinder.radius, loads / (fr * F), method=method)
+        full = fr * F
+    else:
+        E = cylinder.modulus
+        r = constant(fr / E, loads / (E * a), method=method)
+        full = 2 * a * fr
+    return F, a, full, r, "coulomb" if is_coulomb else "constant"
+
+
+def cylinder_tangential_history(
+    cylinder,
+    normal_load: float,
+    tangential_load: ArrayLike,
+    *,
+    friction_stress: float | None = None,
+    friction_coefficient: float | None = None,
+    method: str = "closed-form",
+) -> CylinderTangentialHistory:
+    """The states of a :class:`~linecontact.cylinder.Cylinder` along a tangential history.
+
+    Parameters
+    ----------
+    cylinder : Cylinder
+    normal_load : float
+        ``F`` [N/m], fixed; ``a`` is that of the stable normal contact.
+    tangential_load : array_like, 1-D
+        ``T`` [N/m] at the end of each step, either sign, starting from 0.
+    friction_stress, friction_coefficient : float
+        Exactly one: ``tau0`` [Pa] (constant friction stress) or ``mu`` (Coulomb, Hertz).
+    method : {"closed-form", "incremental"}
+        As in :func:`linecontact.tangential_history`.
+
+    Returns
+    -------
+    CylinderTangentialHistory
+
+    Examples
+    --------
+    >>> from linecontact import Cylinder
+    >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
+    >>> h = cylinder_tangential_history(cyl, 1.0, [1.0, -1.0, 1.0], friction_stress=1e9)
+    >>> h.state.tolist()
+    ['stick-slip', 'stick-slip', 'stick-slip']
+    >>> bool(h.dissipation[1] > 0)
+    True
+    """
+    from ..tangential.history import tangential_history, tangential_history_coulomb
+
+    T = check_array("tangential_load", tangential_load, low=-np.inf)
+    F, a, full, h, law = _history_solve(
+        cylinder,
+        normal_load,
+        friction_stress,
+        friction_coefficient,
+        T,
+        tangential_history,
+        tangential_history_coulomb,
+        method,
+    )
+    E = cylinder.modulus
+    return CylinderTangentialHistory(
+        law,
+        F,
+        a,
+        full,
+        T.reshape(-1),  # as given (not back from T/(E a))
+        np.asarray(h.c_over_a) * a,
+        np.asarray(h.displacement_over_a) * a,
+        np.asarray(h.dissipation_over_Ea2) * E * a * a,
+        h.state,
+        h,
+    )
+
+
+def cylinder_cyclic_loss(
+    cylinder,
+    normal_load: float,
+    amplitude: ArrayLike,
+    *,
+    friction_stress: float | None = None,
+    friction_coefficient: float | None = None,
+    method: str = "closed-form",
+) -> CylinderCyclicLoss:
+    """Energy dissipated per cycle between ``-T*`` and ``+T*`` (SI units).
+
+    Parameters
+    ----------
+    cylinder : Cylinder
+    normal_load : float
+        ``F`` [N/m], fixed.
+    amplitude : array_like
+        ``T*`` [N/m], ``> 0``; at or above full slip the state is ``"sliding"``.
+    friction_stress, friction_coefficient : float
+        Exactly one: ``tau0`` [Pa] or Coulomb ``mu``.
+    method : {"closed-form", "incremental"}
+        As in :func:`linecontact.cyclic_loss`.
+
+    Returns
+    -------
+    CylinderCyclicLoss
+
+    Examples
+    --------
+    >>> from linecontact import Cylinder
+    >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
+    >>> w = cylinder_cyclic_loss(cyl, 1.0, [0.5, 1.0], friction_stress=1e9)
+    >>> bool(w.energy_per_cycle[1] > w.energy_per_cycle[0] > 0)
+    True
+    """
+    from ..tangential.history import cyclic_loss, cyclic_loss_coulomb
+
+    A = check_array("amplitude", amplitude, low=0.0, low_inclusive=False)
+    F, a, full, w, law = _history_solve(
+        cylinder,
+        normal_load,
+        friction_stress,
+        friction_coefficient,
+        A,
+        cyclic_loss,
+        cyclic_loss_coulomb,
+        method,
+    )
+    E = cylinder.modulus
+    return CylinderCyclicLoss(
+        law,
+        F,
+        a,
+        full,
+        _scalar(A + 0 * np.asarray(w.W_over_Ea2)),  # as given, in the result's shape
+        _scalar(np.multiply(w.W_over_Ea2, E * a * a)),
+        _scalar(np.multiply(w.c_over_a, a)),
+        w.state,
+        w,
+    )

@@ -1,0 +1,194 @@
+r"""Pull-off under load control (:func:`pull_off`): the global minimum of the contact branch.
+
+The minimum and its label (snap-off or zero-width, ``docs/derivations.md``, Sec. 4), found
+per parameter point on the closed form of :mod:`linecontact.normal.contact`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any, ClassVar
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .. import domain as _domain
+from .. import reference as _ref
+from .._validation import (
+    broadcast,
+    scalar_or_array,
+)
+from ..results import Result, as_output
+from ._law import _check_law
+from .contact import _ustar
+
+#: The pull-off is called a snap-off when the contact half-width at the load minimum is at
+#: least this many ranges ``h`` of the adhesive stress (``h = 0.97 z0``, about one atomic
+#: spacing); a contact that shrinks below that width before it lets go peels to zero width
+#: (docs/derivations.md, Sec. 4). The label only: the pull-off force is always the minimum.
+SNAP_OFF_MIN_WIDTH_OVER_H = 1.0
+
+
+#: ... and the pull-off is called a snap-off too when it lies more than this fraction of
+#: Eq. (14) below Eq. (14), however narrow the contact it lets go from: ``"zero-width"``
+#: promises a pull-off force that is Eq. (14) to within 1 % (at small ``R/h`` a contact
+#: narrower than ``h`` can let go far below it, e.g. 39 % at ``R/h = 1``, ``sigma0/E = 2``).
+ZERO_WIDTH_LOAD_RTOL = 1e-2
+
+
+@dataclass(frozen=True)
+class PullOff(Result):
+    """Pull-off under load control: the global minimum of the load on the contact branch.
+
+    Attributes
+    ----------
+    F_pulloff_over_Eh : ndarray or float
+        The pull-off force over ``E h`` (negative).
+    a_over_R_at_pulloff, c_over_R_at_pulloff : ndarray or float
+        Half-widths at pull-off, the state of the minimum (``a = 0``, the touching state,
+        when the minimum is Eq. 14 itself: no adhesion, or a width below the floating-point
+        range).
+    mechanism : ndarray of str or str
+        ``"snap-off"``: the contact lets go from a half-width of at least the adhesion range
+        ``h`` (:data:`SNAP_OFF_MIN_WIDTH_OVER_H`), or at a load more than 1 % below Eq.
+        (14) (:data:`ZERO_WIDTH_LOAD_RTOL`); ``"zero-width"``: it first peels to a width
+        below ``h`` and lets go at a load within 1 % of Eq. (14).
+    F_zero_width_over_Eh : ndarray or float
+        Eq. (14), the load at vanishing contact width.
+    F_minimum_over_Eh, a_over_R_at_minimum : ndarray or float
+        The minimum of the load on the contact branch and its width (equal to the pull-off
+        force and width; kept under these names for existing callers).
+    kappa, maugis_parameter : ndarray or float
+        The group that fixes the shape of the load curve, and Baney & Hui's lambda.
+    """
+
+    inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E")
+
+    F_pulloff_over_Eh: NDArray | float
+    a_over_R_at_pulloff: NDArray | float
+    c_over_R_at_pulloff: NDArray | float
+    mechanism: NDArray | str
+    F_zero_width_over_Eh: NDArray | float
+    F_minimum_over_Eh: NDArray | float
+    a_over_R_at_minimum: NDArray | float
+    R_over_h: NDArray | float
+    sigma0_over_E: NDArray | float
+    kappa: NDArray | float
+    maugis_parameter: NDArray | float
+
+
+def _pulloff_arrays(rho: NDArray, s: NDArray, scalar: bool = False):
+    """:func:`_pulloff_flat` at arrays of any shape, or at NumPy scalars (``scalar``)."""
+    if scalar:
+        return _pulloff_flat(*_ref._scalars(rho, s))
+    shape = np.shape(rho)
+    rho = np.atleast_1d(rho).astype(float).reshape(-1)
+    s = np.atleast_1d(s).astype(float).reshape(-1)
+    d = _pulloff_flat(rho, s)
+    return {k: np.reshape(v, shape) for k, v in d.items()}
+
+
+def _pulloff_flat(rho: NDArray, s: NDArray):
+    """Pull-off at flat arrays or NumPy scalars (elementwise; see reference._where)."""
+    where = _ref._where
+    kap = _ref._kappa(rho, s)
+    F0 = _ref._zero_width(rho, s)
+    us = _ustar(kap)
+    fin = np.isfinite(us)
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
+        uf = where(fin, us, 1.0)  # kappa = 0: no interior minimum (any finite u will do)
+        bp = _ref._branch_point(uf, kap)
+        sq = np.sqrt(2 / rho)
+        A_min = where(fin, bp["abar"] * sq, 0.0)
+        C_min = where(fin, bp["X"] * bp["Ct"] * sq, 0.0)
+        F_min = where(fin, _ref._minimum((np.pi / 2) * bp["phi"], F0), F0)
+        # the load minimum along the branch in units of Phi = (2/pi) F/(Eh) (contact_for_load)
+        phi_min = where(fin, _ref._minimum(bp["phi"], F0 * (2 / np.pi)), F0 * (2 / np.pi))
+    zero_c = sq * 2 / (kap * _ref.LN2 + np.sqrt(kap * kap * _ref.LN2**2 + 4))
+    # the pull-off force is the minimum of the load, at the width of u* (however small: the
+    # stability of every state is judged against it); the label says whether the contact
+    # lets go from a width the continuum model resolves (at least the range h) or peels
+    # below it
+    snap = (F_min < F0) & (
+        (A_min >= SNAP_OFF_MIN_WIDTH_OVER_H / rho) | (F0 - F_min > ZERO_WIDTH_LOAD_RTOL * abs(F0))
+    )
+    return dict(
+        F_pulloff_over_Eh=F_min,
+        a_over_R_at_pulloff=A_min,
+        c_over_R_at_pulloff=where(A_min > 0, C_min, zero_c),
+        mechanism=where(snap, "snap-off", "zero-width"),
+        F_zero_width_over_Eh=F0,
+        F_minimum_over_Eh=F_min,
+        a_over_R_at_minimum=A_min,
+        kappa=kap,
+        us=us,
+        phi_min=phi_min,
+    )
+
+
+def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugdale") -> Any:
+    r"""Pull-off force under load control, vectorised over parameter points.
+
+    The load along the contact branch has exactly one stationary point, a minimum, for every
+    :math:`\sigma_0 > 0` (``docs/derivations.md``); it is found as the root of a monotone
+    function of :math:`u = \operatorname{arccosh}(c/a)`, so no grid can miss it. The
+    pull-off force is that minimum. The mechanism is ``"snap-off"`` when the contact
+    half-width there is at least the range ``h`` of the adhesive stress
+    (:data:`SNAP_OFF_MIN_WIDTH_OVER_H`) or the force more than 1 % below Eq. (14)
+    (:data:`ZERO_WIDTH_LOAD_RTOL`), ``"zero-width"`` otherwise: the contact then peels
+    below the range of the surface forces and lets go at a load within 1 % of Eq. (14)
+    (at most 2e-3 of it for ``R/h >= 100``, 2e-5 for ``R/h >= 1e4``; see
+    ``docs/derivations.md``). The pull-off state is the minimum in either case, and it is
+    the one the load curve marks (:func:`load_curve`, ``linecontact curve``).
+
+    Parameters
+    ----------
+    R_over_h : array_like
+        ``> 0``.
+    sigma0_over_E : array_like
+        ``>= 0`` (0: Hertz, pull-off force 0 at zero width).
+    law : {"dugdale", "lennard-jones"}
+        Deprecated for ``"lennard-jones"`` (a ``DeprecationWarning``): use
+        :func:`linecontact.laws.lennard_jones.pull_off`. The Dugdale step (default; also
+        accepted explicitly, silently), or the Lennard-Jones law of Eq. (1) with the same work
+        of adhesion ``sigma0 h`` and peak tension ``sigma0``, solved self-consistently
+        (:mod:`linecontact.lennard_jones`; ``sigma0_over_E > 0``, and ``mu = 0.974^(3/2)
+        (sigma0/E) sqrt(R/h)`` within ``domain.DOMAIN["lj_mu"]``).
+
+    Returns
+    -------
+    PullOff or linecontact.lennard_jones.LennardJonesPullOff
+
+    Examples
+    --------
+    >>> po = pull_off(100.0, 0.01)       # peels to a width far below h, at Eq. (14)
+    >>> po.mechanism, po.a_over_R_at_pulloff < 1e-3 / 100
+    ('zero-width', True)
+    >>> abs(po.F_pulloff_over_Eh / po.F_zero_width_over_Eh - 1) < 1e-8
+    True
+    >>> po = pull_off(100.0, 0.2)        # lets go at a/R = 0.087, far above h/R = 0.01
+    >>> po.mechanism, round(po.a_over_R_at_pulloff, 4)
+    ('snap-off', 0.0869)
+    """
+    _check_law(law, "pull_off")
+    rho = _domain.check("R_over_h", R_over_h)
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
+    scalar = scalar_or_array(rho, s)
+    rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
+    if law == "lennard-jones":
+        from ..lennard_jones import pull_off_in_dugdale_groups
+
+        return pull_off_in_dugdale_groups(
+            rho.reshape(()) if scalar else rho, s.reshape(()) if scalar else s
+        )
+    _ref._check_kappa(rho, s)
+    d = _pulloff_arrays(rho, s, scalar)
+    del d["us"], d["phi_min"]
+    lam = _ref._maugis_parameter(rho, s)
+    vals = {k: as_output(v if scalar else np.asarray(v), scalar) for k, v in d.items()}
+    return PullOff(
+        R_over_h=as_output(rho, scalar),
+        sigma0_over_E=as_output(s, scalar),
+        maugis_parameter=as_output(lam, scalar),
+        **vals,
+    )

@@ -1,0 +1,285 @@
+r"""The sliding contact that carries a given load (:func:`sliding_contact_for_load`).
+
+The inverse of :func:`~linecontact.sliding.sliding_contact`, solved per point on the closed
+form in ``ln(a)`` on the stable side of the load minimum (or below it, on the unstable side).
+"""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from .. import domain as _domain
+from .. import reference as _ref
+from .._validation import (
+    RAISE,
+    FailurePolicy,
+    broadcast,
+    failure_policy,
+    first_point,
+    point_text,
+    scalar_or_array,
+)
+from ..errors import NoEquilibriumError
+from ._checks import _check_common, _check_method
+from .contact import SlidingContact, _pack, _solve_flat, _solve_split
+from .pulloff import _LAB_DEEP, _phi_at, _pulloff_flat
+
+
+def _lower_end(F, rho, r, s, kap, phi_t, report: bool = False):
+    """Lower end (ln abar) of the stable branch; below the pull-off, NoEquilibriumError.
+
+    Flat arrays or NumPy scalars; the pull-off search runs on the adhesive points only.
+    With ``report`` the points below the pull-off force (or at a load <= 0 without
+    adhesion) are not an error: they are marked ``missing`` and their target load is moved
+    to one that a contact carries. Returns ``(lab_lo, phi_t, missing, phi_po)``, the last
+    the load at the lower end (the pull-off load; 0 without adhesion).
+
+    Where the minimum sits at zero width the branch starts at ``abar -> 0``: the bracket
+    starts at ``abar = e**-300`` (a load within round-off of the zero-width one); without
+    adhesion just below the width that carries the target (``Phi = abar^2``).
+    """
+    adh = s > 0
+    if not isinstance(F, np.ndarray):
+        phi_po, lab_lo = np.float64(0.0), np.float64(_LAB_DEEP)
+        if adh:
+            d = _pulloff_flat(kap, r)
+            phi_po = d["phi_min"]
+            lab_lo = _ref._where(d["interior"], d["lab_min"], lab_lo)
+    else:
+        lab_lo = np.full(F.shape, _LAB_DEEP)
+        phi_po = np.zeros(F.shape)
+        if adh.any():
+            d = _pulloff_flat(kap[adh], r[adh])
+            phi_po[adh] = d["phi_min"]
+            lab_lo[adh] = np.where(d["interior"], d["lab_min"], _LAB_DEEP)
+    below = adh & (F < (np.pi / 2) * phi_po)  # as the pull-off force is reported
+    nonpos = ~adh & (phi_t <= 0)
+    missing = below | nonpos
+    # without adhesion the load is Hertz's, Phi = abar^2, down to any width: start the
+    # bracket below the width that carries the target (F = 1e-300 needs abar ~ 1e-150)
+    hertz_lo = 0.5 * np.log(_ref._maximum(phi_t, 1e-300)) - 1.0
+    lab_lo = _ref._where(~adh, hertz_lo, lab_lo)
+    if report:
+        # a load that a contact carries stands in (the values are NaN in the result)
+        phi_t = _ref._where(below, phi_po, _ref._where(nonpos, 1.0, phi_t))
+        return lab_lo, phi_t, missing, phi_po
+    if np.any(below):
+        _, at = first_point(
+            below,
+            F_over_Eh2=F,
+            F_po=np.pi / 2 * phi_po,
+            R_over_h2=rho,
+            h1_over_h2=r,
+            sigma0_over_E=s,
+        )
+        raise NoEquilibriumError(
+            f"no steadily sliding contact carries F_over_Eh2={at.pop('F_over_Eh2')!r}: it is "
+            f"below the pull-off force F_pulloff_over_Eh2={at.pop('F_po')!r} "
+            f"({point_text(at)}); the cylinder has pulled off"
+        )
+    if np.any(nonpos):
+        _, at = first_point(nonpos, F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r)
+        raise NoEquilibriumError(
+            f"no contact carries F_over_Eh2={at.pop('F_over_Eh2')!r} without adhesion "
+            f"(sigma0_over_E=0, {point_text(at)}): the pull-off force is 0 and the load must "
+            "be > 0"
+        )
+    return lab_lo, phi_t, missing, phi_po
+
+
+def _double_step(lab, ph, phi_t, kap, r):
+    """Double abar until the load at it exceeds the target (the upper end of the bracket)."""
+    lab = lab + np.log(2.0)
+    ph, _, _, _ = _phi_at(lab, kap, r)
+    return (lab, ph), ~(ph < phi_t)
+
+
+def _load_step(lab, lo, hi, u1, u2, phi_t, pmin, kap, r):
+    """One bracketed Newton step in ln abar of Phi(abar) = phi_t along the stable branch.
+
+    Newton on ``ln(Phi - pmin) = ln(phi_t - pmin)`` (``pmin`` the load at the lower end),
+    which is exact for Hertz (``Phi = abar^2``) and takes loads many decades above the
+    lower end in a few steps; on ``Phi - phi_t`` where a difference is not positive.
+    Also returns the u1, u2 of the closed form at the point evaluated (a done point keeps
+    that point, so they belong to the returned ln abar).
+    """
+    where = _ref._where
+    mx = _ref._maximum
+    ph, dph, u1, u2 = _phi_at(lab, kap, r)
+    fx = ph - phi_t
+    up = fx > 0
+    hi = where(up, lab, hi)
+    lo = where(up, lo, lab)
+    ab = np.exp(lab)
+    d, dt = ph - pmin, phi_t - pmin
+    logs = (d > 0) & (dt > 0)
+    nxt = where(
+        logs,
+        lab - np.log(where(logs, d / dt, 1.0)) * d / (dph * ab),
+        lab - fx / (dph * ab),
+    )
+    nxt = where((abs(nxt) < np.inf) & (nxt > lo) & (nxt < hi), nxt, 0.5 * (lo + hi))
+    # at the noise of Phi's terms (Hertz's abar^2, the adhesive rest), relative at any scale
+    ab2 = np.exp(2 * lab)
+    done = (
+        (abs(fx) <= 4e-16 * mx(mx(abs(phi_t), ab2), abs(ph - ab2)))
+        | (abs(nxt - lab) <= 1e-15 * mx(1.0, abs(lab)))
+        | (hi - lo <= 1e-15 * mx(1.0, abs(hi)))
+    )
+    return (where(done, lab, nxt), lo, hi, u1, u2), done
+
+
+def sliding_contact_for_load(
+    F_over_Eh2: ArrayLike,
+    R_over_h2: ArrayLike,
+    h1_over_h2: ArrayLike,
+    sigma0_over_E: ArrayLike,
+    *,
+    tau0_over_E: ArrayLike | None = None,
+    method: Literal["closed-form", "collocation"] = "closed-form",
+    n: int | str = "auto",
+    tol: float = 1e-12,
+    on_failure: FailurePolicy = RAISE,
+    **deprecated: Any,
+) -> SlidingContact:
+    r"""The steadily sliding contact carrying a given normal load (stable branch).
+
+    Solves ``F(a) = F`` for the contact half-width on the branch with ``dF/da > 0`` (stable
+    under load control) with the closed form, then computes the state at that width with
+    ``method``; with ``tau0_over_E`` the friction force ``2 a tau0`` is reported as
+    ``T_over_Eh2``. A load within 1e-12 of the zero-width load, where the stable branch
+    starts at zero width, gives the zero-width state at the domain's end ``a/R = 1e-20``
+    (every narrower width carries it to round-off), by the closed form under either method
+    (``n_collocation`` 0; docs/sliding.md, "Loads at the zero-width end").
+
+    Parameters
+    ----------
+    F_over_Eh2 : array_like
+        Normal load per unit length over ``E h2``, compressive positive.
+    R_over_h2, h1_over_h2, sigma0_over_E, tau0_over_E, method, n, tol
+        As in :func:`sliding_contact` (the closed form by default).
+    on_failure : {"raise", "report"}
+        For a load below the pull-off force, or a state that misses its tolerance: raise
+        :class:`~linecontact.errors.NoEquilibriumError` or
+        :class:`~linecontact.errors.ConvergenceError` (``"raise"``, default), or report the
+        point (``"report"``: below the pull-off force ``state == "no-equilibrium"``, NaN
+        values (the load kept), ``converged`` and ``stable`` False; a miss flagged in
+        ``converged``); README, "Conventions". Replaces both deprecated keywords,
+        ``raise_on_failure`` (``False`` is ``"report"``) and ``on_no_equilibrium``.
+
+    Returns
+    -------
+    SlidingContact
+
+    Raises
+    ------
+    NoEquilibriumError
+        If the load is below the pull-off force of steady sliding (:func:`sliding_pull_off`),
+        naming it.
+
+    Examples
+    --------
+    >>> r = sliding_contact_for_load(0.5, 100.0, 2.0, 0.01, tau0_over_E=0.005)
+    >>> abs(r.F_over_Eh2 - 0.5) < 1e-10, bool(r.stable)
+    (True, True)
+    """
+    F = _domain.check("F_over_Eh2", F_over_Eh2)
+    rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
+    tau = (
+        np.full((), np.nan)
+        if tau0_over_E is None
+        else _domain.check("tau0_over_E", tau0_over_E, "friction_tau0_over_E")
+    )
+    _check_method(method, n, tol)
+    policy = failure_policy(
+        on_failure,
+        where="sliding_contact_for_load",
+        accepts=("raise_on_failure", "on_no_equilibrium"),
+        **deprecated,
+    )
+    report = policy == "report"
+    scalar = scalar_or_array(F, rho, r, s, tau)
+    F, rho, r, s, tau = broadcast(
+        F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau
+    )
+    _ref._check_kappa(rho, s, "R_over_h2")
+    shape = F.shape
+    if scalar:  # the search runs on NumPy scalars (see reference._where)
+        F, rho, r, s, tau = _ref._scalars(F, rho, r, s, tau)
+    else:
+        F, rho, r, s, tau = (
+            np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (F, rho, r, s, tau)
+        )
+    kap = _ref._kappa(rho, s)
+    phi_t = F * (2 / np.pi)
+    # as in sliding_pull_off: far from h1 = h2 the search overflows on the way; the
+    # convergence check of the state found reports a failure
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        # lower end of the stable branch and its load
+        lab_lo, phi_t, missing, phi_lo = _lower_end(F, rho, r, s, kap, phi_t, report)
+        # upper end: where Phi exceeds the target (Hertz: Phi >= abar^2 - kappa abar sinh ...)
+        lab_hi = np.log(np.sqrt(_ref._maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
+        ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
+        (lab_hi, _), _ = _ref._iterate(
+            _double_step, (lab_hi, ph_hi), (phi_t, kap, r), 60, done=~(ph_hi < phi_t)
+        )
+        # bracketed Newton in ln abar on [lab_lo, lab_hi], where Phi increases
+        lab = 0.5 * (lab_lo + lab_hi)
+        zero = 0.0 * lab
+        (lab, _, _, u1, u2), _ = _ref._iterate(
+            _load_step, (lab, lab_lo, lab_hi, zero, zero), (phi_t, phi_lo, kap, r), 200
+        )
+        A = np.exp(lab) * np.sqrt(2 / rho)
+        # narrower than the domain of sliding_contact: the load there is the zero-width one
+        # to round-off (kept at the domain's end), or the point is refused (A = 0 below).
+        # Where the stable branch starts at zero width (or at a minimum within 1e-12 of the
+        # zero-width load), a load that the domain's end already carries to 1e-12 is the
+        # zero-width state too: the load rises like a^2 from there, so the width that Newton
+        # finds for it (anywhere below ~1e-7 R) is set by the last bits of the load, which
+        # differ between machines, and the collocation cannot resolve such widths. The state
+        # at the domain's end is the answer on every machine (docs/sliding.md, "Loads at the
+        # zero-width end").
+        a_min = _domain.DOMAIN["sliding_a_over_R"][0]
+        ph_f, _, u1f, u2f = _phi_at(np.log(a_min * np.sqrt(rho / 2)), kap, r)
+        scale = _ref._maximum(abs(phi_t), abs(phi_lo))
+        ok = abs(ph_f - phi_t) <= 1e-12 * scale
+        zero_end = (s > 0) & (abs(ph_f - phi_lo) <= 1e-12 * scale)
+        narrow = ((A < a_min) | (ok & zero_end)) & ~missing
+        if np.any(narrow):
+            where = _ref._where
+            # (without adhesion the width found is Hertz's and is said; else it is < a_min)
+            A = where(narrow, where(ok, a_min, where(s == 0, A, 0.0)), A)
+            u1, u2 = where(narrow, u1f, u1), where(narrow, u2f, u2)
+        if not scalar or method != "closed-form":  # the collocation works on arrays
+            A, rho, r, s, tau, u1, u2, F, missing = (
+                np.reshape(v, -1) for v in (A, rho, r, s, tau, u1, u2, F, missing)
+            )
+    _domain.check_widths(
+        np.where(missing, np.nan, A), F, "F_over_Eh2", "sliding_a_over_R", narrow=True
+    )
+    _ref._warn_wide(np.where(missing, np.nan, A))
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # see sliding_contact
+        if method == "closed-form":
+            dd = _solve_flat(A, rho, r, s, method, n, tol, u_guess=(u1, u2))
+        else:
+            # the zero-width states (A at the domain's end, above) are the closed form's:
+            # no collocation resolves a contact 1e20 times narrower than its adhesive zones
+            dd = _solve_split(A, rho, r, s, n, tol, (A <= a_min) & (s > 0), (u1, u2))
+        return _pack(
+            dd,
+            A,
+            rho,
+            r,
+            s,
+            tau,
+            method,
+            shape,
+            scalar,
+            policy,
+            "sliding_contact_for_load",
+            missing,
+            F,
+        )
