@@ -52,6 +52,7 @@ with _imports_interruptible():
         composite_modulus,
         dundurs_beta,
     )
+    from .measurements import read_measurements
     from .normal import (
         NormalContact,
         PullOff,
@@ -121,6 +122,7 @@ __all__ = [
     "normal_contact",
     "pull_off",
     "propagate",
+    "read_measurements",
     "push",
     "sliding_contact",
     "sliding_contact_for_load",
