@@ -22,6 +22,7 @@ FLOORS = {
         "linecontact._validation",
         "linecontact.domain",
         "linecontact.results",
+        "linecontact.units",
     ],
     "core": [
         "linecontact.sie",
@@ -42,6 +43,7 @@ FLOORS = {
     "si": [
         "linecontact.cylinder",
         "linecontact.inverse",
+        "linecontact.fits",
         "linecontact.uncertainty",
         "linecontact.measurements",
     ],
@@ -151,10 +153,8 @@ MAX_LINES = 800
 #: Today's exceptions, each with its size when the rule came in as a ceiling: they may
 #: shrink, never grow. Take a module off this list when it is split or falls under the limit.
 LONG_MODULES = {
-    "inverse.py": 1000,
     "lennard_jones.py": 1019,
     "tangential/history.py": 1296,
-    "cli/fit.py": 1053,
 }
 
 

@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import signal
 import sys
 from collections.abc import Iterator
 
@@ -60,12 +61,33 @@ def _interrupted(exc: BaseException) -> bool:
 
 @contextlib.contextmanager
 def imports_interruptible() -> Iterator[None]:
-    """Turn a ``KeyboardInterrupt`` in the block into exit status 130 on the command line."""
+    """Turn a ``KeyboardInterrupt`` in the block into exit status 130 on the command line.
+
+    On the command line the block runs under a SIGINT handler that notes the interrupt
+    before it raises ``KeyboardInterrupt``: a C extension's initialisation can swallow that
+    exception and fail with an unrelated ``ImportError`` (NumPy: "PyCapsule_Import could not
+    import module 'datetime'"), which is then known to be the interrupt's doing. A library
+    user's handler is left alone.
+    """
+    cli = launched_as_cli()
+    seen: list[int] = []
+    previous = None
+    if cli:
+
+        def note(signum: int, frame: object) -> None:
+            seen.append(signum)
+            raise KeyboardInterrupt
+
+        with contextlib.suppress(ValueError):  # not the main thread: keep the handler
+            previous = signal.signal(signal.SIGINT, note)
     try:
         yield
     except BaseException as exc:
-        if not (_interrupted(exc) and launched_as_cli()):
+        if not (cli and (seen or _interrupted(exc))):
             raise
         with contextlib.suppress(OSError, ValueError):
             print("linecontact: interrupted", file=sys.stderr)
         raise SystemExit(EXIT_INTERRUPTED) from None
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGINT, previous)

@@ -161,6 +161,12 @@ class LennardJonesContact(Result):
         "mu",
         "maugis_parameter",
     )
+    si: ClassVar[dict[str, tuple[str, str, str]]] = {
+        "a_over_R": ("contact_half_width", "R", "m"),
+        "central_gap_over_h": ("central_gap", "h", "m"),
+        "F_over_Eh": ("load", "Eh", "N/m"),
+        "error_estimate_over_Eh": ("error_estimate", "Eh", "N/m"),
+    }
 
     a_over_R: NDArray | float
     central_gap_over_h: NDArray | float

@@ -28,7 +28,7 @@ from typing import Literal
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["KINDS", "read_columns", "read_measurements"]
+__all__ = ["KINDS", "per_length", "read_columns", "read_measurements"]
 
 #: the kinds of measurement file: kind -> {quantity: (kind of unit, required, with_sd)}
 KINDS: dict[str, dict[str, tuple[str, bool, bool]]] = {
@@ -348,3 +348,25 @@ def read_measurements(
             raise ValueError(f"{label}, row {int(lines[i])}: the friction force is not > 0")
     cols["line"] = lines
     return cols
+
+
+def per_length(total: float, length: float, *, length_name: str = "length") -> float:
+    """A force of the whole fibre [N] as a force per unit length [N/m].
+
+    Parameters
+    ----------
+    total : float
+        The force on the whole fibre [N] (or its standard uncertainty).
+    length : float
+        The fibre's length [m], ``> 0``.
+    length_name : str
+        How the message names ``length`` (the command line: ``--length``).
+
+    Examples
+    --------
+    >>> per_length(-3e-6, 2e-6)
+    -1.5
+    """
+    if not (math.isfinite(length) and length > 0):
+        raise ValueError(f"{length_name} must be a finite length > 0 [m], got {length!r}")
+    return total / length

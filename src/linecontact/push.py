@@ -110,6 +110,16 @@ class Push(Result):
         "tau0_over_E",
         "F_over_Eh2",
     )
+    si: ClassVar[dict[str, tuple[str, str, str]]] = {
+        "H_over_R": ("height", "R", "m"),
+        "H_arm_over_R": ("moment_arm", "R", "m"),
+        "a_rest_over_R": ("rest_half_width", "R", "m"),
+        "a_slide_over_R": ("slide_half_width", "R", "m"),
+        "Q_roll_over_Eh2": ("rolling_resistance", "Eh", "N/m"),
+        "Q_slide_over_Eh2": ("sliding_resistance", "Eh", "N/m"),
+        "Q_onset_over_Eh2": ("slip_onset", "Eh", "N/m"),
+        "H_critical_over_R": ("critical_height", "R", "m"),
+    }
 
     H_over_R: NDArray | float
     H_arm_over_R: NDArray | float
@@ -200,239 +210,364 @@ def push(
     >>> bool(abs(p.Q_roll_over_Eh2[1] * 1.0 - 0.01 * (2.0 - 1.0)) < 1e-12)
     True
     """
-    rho = _domain.check("R_over_h2", R_over_h2)
-    r = check_array(
-        "h1_over_h2",
-        h1_over_h2,
-        low=1.0,
-        low_inclusive=True,
-        high=_domain.DOMAIN["h1_over_h2"][2],
-        high_inclusive=True,
-    )
-    s = _domain.check("sigma0_over_E", sigma0_over_E)
-    tau = _domain.check("tau0_over_E", tau0_over_E)
-    F = _domain.check("F_over_Eh2", F_over_Eh2)
-    H = check_array(
-        "H_over_R", H_over_R, low=0.0, low_inclusive=True, high=2.0, high_inclusive=True
-    )
-    Q = (
-        np.full((), np.nan)
-        if Q_over_Eh2 is None
-        else check_array(
-            "Q_over_Eh2", Q_over_Eh2, low=0.0, low_inclusive=True, high=1e12, high_inclusive=True
-        )
-    )
-    tip = tip_friction is not None
-    mu = (
-        np.full((), np.nan)
-        if tip_friction is None
-        else check_array(
-            "tip_friction",
-            tip_friction,
-            low=0.0,
-            low_inclusive=True,
-            high=10.0,
-            high_inclusive=True,
-        )
-    )
-    scalar = scalar_or_array(rho, r, s, tau, F, H, Q, mu)
-    rho, r, s, tau, F, H, Q, mu = (
-        np.asarray(v, float)
-        for v in broadcast(
-            R_over_h2=rho,
-            h1_over_h2=r,
-            sigma0_over_E=s,
-            tau0_over_E=tau,
-            F_over_Eh2=F,
-            H_over_R=H,
-            Q_over_Eh2=Q,
-            tip_friction=mu,
-        )
-    )
-    shape = rho.shape
-    rho, r, s, tau, F, H, Q, mu = (np.reshape(v, -1) for v in (rho, r, s, tau, F, H, Q, mu))
-    if tip:  # the moment arm and the load the tip adds per unit horizontal push
-        tp = tip_push(H, mu)
-        arm = np.asarray(tp.H_effective_over_R, float)
-        k = np.asarray(tp.dF_per_P, float) / np.asarray(tp.Q_per_P, float)
-    else:
-        arm, k = H, np.zeros(H.shape)
-
-    # a scalar call takes the inverses' scalar fast paths
-    one = (lambda v: float(v[0])) if scalar else (lambda v: v)
-    flat = (lambda v: np.reshape(np.asarray(v, float), -1)) if scalar else np.asarray
-
-    def slide_at(load, report=False):
-        """The steady contact carrying ``load``: its a/R and F, converged; NaN where none.
-
-        The load given raises below the pull-off force of steady sliding; where the load a
-        tip adds takes it beyond (``report``), NaN: the fibre lifts off first.
-        """
-        # (a tip's load beyond the domain's ends is held there: far beyond any pull-off
-        # force, or a contact far wider than the domain of widths, which the inverse says)
-        lo, _, hi, _ = _domain.DOMAIN["F_over_Eh2"]
-        load = np.clip(load, lo, hi)
-        res = sliding_contact_for_load(
-            one(load),
-            one(rho),
-            one(r),
-            one(s),
-            method="closed-form",
-            on_failure="report" if report else "raise",
-        )
-        return flat(res.a_over_R), flat(res.F_over_Eh2), np.reshape(np.asarray(res.converged), -1)
-
-    def rest_at(load):
-        lo, _, hi, _ = _domain.DOMAIN["F_over_Eh"]
-        load = np.clip(load, lo, hi)
-        res = contact_for_load(one(load), one(rho), one(s), on_failure="report")
-        return flat(res.a_over_R), np.reshape(np.asarray(res.converged), -1)
-
-    dw = s * (r - 1.0)
-    # the contact of steady sliding (raises below the sliding pull-off force) and at rest;
-    # with a tip, each at the load the tip adds at its threshold (fixed point: the tip's
-    # load changes the width by a part of order tau0/E, a few iterations)
-    a_slide, F_slide, conv = slide_at(F)
-    a_rest, conv_rest = rest_at(F)
-    Q_slide = 2.0 * a_slide * rho * tau + dw
-    Q_onset = 2.0 * a_rest * rho * tau
-    settled = np.ones(F.shape, bool)  # the fixed points of a tip converged
-    if tip and np.any(k != 0):
-        # Q = g(Q) = 2 a(F + k Q) tau0 + dw by secant steps on g(Q) - Q (plain iteration
-        # converges only linearly where the contact is wide: a ~ sqrt(load))
-        Q_prev, f_prev = Q_slide, np.zeros(F.shape)
-        for it in range(60):
-            a_slide, F_slide, conv = slide_at(F + k * Q_slide, report=True)
-            g = 2.0 * a_slide * rho * tau + dw  # NaN: the tip lifts the fibre first
-            f = g - Q_slide
-            with np.errstate(divide="ignore", invalid="ignore"):
-                secant = Q_slide - f * (Q_slide - Q_prev) / (f - f_prev)
-            usable = (it > 0) & np.isfinite(secant) & (secant > 0)
-            Q_next = np.where(usable, secant, g)
-            done = np.abs(np.nan_to_num(f)) <= 1e-14 * np.nan_to_num(np.abs(g), nan=1.0)
-            Q_prev, f_prev = Q_slide, f
-            if np.all(done):
-                Q_slide = g
-                break
-            Q_slide = np.where(done, g, Q_next)
-        settled &= done
-        conv |= ~np.isfinite(a_slide)  # a lifted fibre is a state, not a failure
-        F_slide = np.where(np.isfinite(a_slide), F_slide - k * Q_slide, F)  # the load given
-        for _ in range(60):
-            a_new, conv_rest = rest_at(F + k * np.nan_to_num(Q_onset))  # NaN: lifted
-            Q_new = 2.0 * a_new * rho * tau
-            step = np.abs(np.nan_to_num(Q_new - Q_onset))
-            a_rest, Q_onset = a_new, Q_new
-            if np.all(step <= 1e-14 * np.nan_to_num(Q_new, nan=1.0)):
-                break
-        settled &= step <= 1e-14 * np.nan_to_num(Q_onset, nan=1.0)
-    capacity = Q_slide - dw  # 2 a_slide tau0: full slip of the steady contact
-    conv = conv & (conv_rest | ~np.isfinite(a_rest)) & settled
-    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        # Q_roll = M_axis / H: 0 without hysteresis (H > 0); inf for a push at the contact
-        # line (H = 0, or so close to it that M_axis / H overflows)
-        # (the identity M_axis = R dw of the sliding contact, eq. (1), tested at every width,
-        # taken exactly: M - e F loses digits when the adhesion is tiny beside the load)
-        Q_roll = np.where(arm > 0, dw / np.where(arm > 0, arm, 1.0), np.inf)
-        S_roll = np.where(arm > 0, Q_roll * (arm - 1.0), -np.inf)
-    # the rolling contact: the steady contact at the load while rolling
-    a_roll = a_slide
-    if tip and np.any(k != 0):
-        a_roll, _, _ = slide_at(F + k * np.where(np.isfinite(Q_roll), Q_roll, 0.0), True)
-    # a tip that lifts (k < 0) pulls the fibre off at rest when F + k Q falls to the pull-off
-    # force of the contact at rest; a threshold beyond that push is not reached (NaN -> inf)
-    Q_lift = np.full(F.shape, np.inf)
-    if np.any(k < 0):
-        with np.errstate(divide="ignore", invalid="ignore"):
-            F_po = flat(pull_off(one(rho), one(s)).F_pulloff_over_Eh)
-            Q_lift = np.where(k < 0, (F - F_po) / np.where(k < 0, -k, 1.0), np.inf)
-    Q_slide = np.where(np.isnan(Q_slide), np.inf, Q_slide)
-    Q_roll = np.where(np.isnan(a_roll) & np.isfinite(Q_roll), np.inf, Q_roll)
-    H_crit = dw / Q_slide
-    holds = np.abs(S_roll) < 2.0 * a_roll * rho * tau
-    roll_first = Q_roll < Q_slide
-    first = np.where(roll_first, np.where(holds, "roll", "roll+slide"), "slide")
-    first = np.where(Q_lift < np.minimum(Q_roll, Q_slide), "lift-off", first)
-
-    creep = np.full(rho.shape, np.nan)
-    if np.any(holds):
-        T = np.abs(S_roll[holds]) / (rho[holds] * a_roll[holds])  # T over E a_roll
-        # at full slip (T = 2 tau0): the sliding state, reported
-        roll = steady_rolling(
-            tau[holds], T_over_Ea=np.minimum(T, 2 * tau[holds]), on_failure="report"
-        )
-        creep[holds] = np.sign(S_roll[holds]) * np.asarray(roll.creep_over_V, float)
-        creep[holds] = np.where(S_roll[holds] == 0, 0.0, creep[holds])
-
-    given = np.isfinite(Q)
-    state = np.full(rho.shape, "", dtype="<U10")
-    d_rest = np.full(rho.shape, np.nan)
-    if np.any(given):
-        over_roll = Q >= Q_roll
-        over_slide = Q >= Q_slide
-        moving = np.where(
-            over_roll & over_slide,
-            "roll+slide",
-            np.where(over_roll, np.where(holds, "roll", "roll+slide"), "slide"),
-        )
-        state = np.where(given, np.where(over_roll | over_slide, moving, "rest"), "")
-        state = np.where(given & (Q >= Q_lift), "lift-off", state)
-        at_rest = given & (state == "rest")
-        a_here = a_rest
-        if tip and np.any(at_rest & (k != 0)):  # the contact at rest under the tip's load
-            a_here, _ = rest_at(F + k * np.where(given, Q, 0.0))
-        at_rest &= np.isfinite(a_here)
-        if np.any(at_rest):
-            T = Q[at_rest] / (rho[at_rest] * a_here[at_rest])
-            init = sliding_initiation(tau[at_rest], T_over_Ea=T, on_failure="report")
-            d_rest[at_rest] = np.where(
-                np.asarray(init.state) == "sliding", 0.0, np.asarray(init.d_over_a, float)
-            )
-
+    p = _checked(R_over_h2, h1_over_h2, sigma0_over_E, tau0_over_E, F_over_Eh2, H_over_R,
+                 Q_over_Eh2, tip_friction)  # fmt: skip
+    slide = _steady_sliding_contact(p)
+    rest = _contact_at_rest(p)
+    Q_roll, S_roll = _rolling_resistance(p.dw, p.arm)
+    a_roll = _rolling_contact(p, slide.a, Q_roll)
+    Q_lift = _lift_off(p)
+    first, holds, Q_roll, Q_slide = _first_motion(p, slide.Q, Q_roll, S_roll, a_roll, Q_lift)
+    creep = _creep(p, S_roll, a_roll, holds)
+    state, d_rest = _state_under_push(p, Q_roll, Q_slide, Q_lift, holds, rest.a)
     with np.errstate(invalid="ignore"):
         # the load's scale: the Hertz load of the contact (its adhesive part is of that order)
-        scale = np.abs(F) + (np.pi / 4) * rho * a_slide * a_slide + 1e-300
-        res = np.abs(F_slide - F) / scale
-    if not np.all(conv):
-        named = dict(
-            R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau, F_over_Eh2=F, H_over_R=H
-        )
-        if Q_over_Eh2 is not None:
-            named["Q_over_Eh2"] = Q
-        if tip:
-            named["tip_friction"] = mu
-        _, at = first_point(~np.asarray(conv, bool), **named)
-        raise ConvergenceError(
-            f"push did not converge at {point_text(at)}"
-            + ": a contact or the tip's load could not be solved to round-off"
-        )
+        scale = np.abs(p.F) + (np.pi / 4) * p.rho * slide.a * slide.a + 1e-300
+        res = np.abs(slide.F - p.F) / scale
+    conv = slide.converged & (rest.converged | ~np.isfinite(rest.a))
+    _raise_unconverged(p, conv, Q_over_Eh2 is not None)
     vals = dict(
-        H_over_R=H,
-        H_arm_over_R=arm,
-        tip_friction=mu,
-        a_rest_over_R=a_rest,
-        a_slide_over_R=a_slide,
+        H_over_R=p.H,
+        H_arm_over_R=p.arm,
+        tip_friction=p.mu,
+        a_rest_over_R=rest.a,
+        a_slide_over_R=slide.a,
         Q_roll_over_Eh2=Q_roll,
         Q_slide_over_Eh2=Q_slide,
-        friction_over_Eh2=capacity,
-        hysteresis_over_Eh2=dw,
-        Q_onset_over_Eh2=Q_onset,
-        H_critical_over_R=H_crit,
+        friction_over_Eh2=slide.Q - p.dw,  # 2 a_slide tau0: full slip of the steady contact
+        hysteresis_over_Eh2=p.dw,
+        Q_onset_over_Eh2=rest.Q,
+        H_critical_over_R=p.dw / Q_slide,
         first_motion=first,
         S_roll_over_Eh2=S_roll,
         creep_over_V=creep,
-        Q_over_Eh2=Q,
+        Q_over_Eh2=p.Q,
         state=state,
         d_over_a_rest=d_rest,
-        R_over_h2=rho,
-        h1_over_h2=r,
-        sigma0_over_E=s,
-        tau0_over_E=tau,
-        F_over_Eh2=F,
+        R_over_h2=p.rho,
+        h1_over_h2=p.r,
+        sigma0_over_E=p.s,
+        tau0_over_E=p.tau,
+        F_over_Eh2=p.F,
         residual_load=res,
         converged=conv,
     )
-    return Push(**{k: as_output(np.reshape(v, shape), scalar) for k, v in vals.items()})
+    return Push(**{k: as_output(np.reshape(v, p.shape), p.scalar) for k, v in vals.items()})
+
+
+# --------------------------------------------------------------------------------------------
+# the steps of push: flat arrays of checked inputs in, plain arrays out; no step checks again
+
+
+@dataclass(frozen=True)
+class _Inputs:
+    """The checked inputs of :func:`push`, broadcast and flat, and the tip's reduction.
+
+    ``arm`` is the moment arm of the push over ``R`` (``H``, or the tip's ``H_eff``) and
+    ``k`` the load the tip adds per unit horizontal push (0 for a horizontal push).
+    ``dw`` is the adhesion hysteresis ``sigma0 (h1 - h2)`` over ``E h2``. ``scalar`` says
+    that every input was a scalar: the inverses then take their scalar fast paths.
+    """
+
+    rho: NDArray
+    r: NDArray
+    s: NDArray
+    tau: NDArray
+    F: NDArray
+    H: NDArray
+    Q: NDArray
+    mu: NDArray
+    arm: NDArray
+    k: NDArray
+    dw: NDArray
+    tip: bool
+    scalar: bool
+    shape: tuple[int, ...]
+
+
+@dataclass(frozen=True)
+class _Contact:
+    """A contact found by a step, and the threshold push it gives.
+
+    Its half-width ``a`` over ``R``, the load it carries ``F`` (NaN where not solved for
+    one), the threshold push ``Q`` and ``converged``.
+    """
+
+    a: NDArray
+    F: NDArray
+    Q: NDArray
+    converged: NDArray
+
+
+def _checked(rho, r, s, tau, F, H, Q, mu) -> _Inputs:
+    """Check every input of :func:`push` once (domain, broadcast, the tip), flatten them."""
+    tip = mu is not None
+    checked = dict(
+        R_over_h2=_domain.check("R_over_h2", rho),
+        h1_over_h2=check_array("h1_over_h2", r, low=1.0, low_inclusive=True,
+                               high=_domain.DOMAIN["h1_over_h2"][2], high_inclusive=True),
+        sigma0_over_E=_domain.check("sigma0_over_E", s),
+        tau0_over_E=_domain.check("tau0_over_E", tau),
+        F_over_Eh2=_domain.check("F_over_Eh2", F),
+        # a tip pushes sideways strictly between the ends (tip_push's range)
+        H_over_R=check_array("H_over_R", H, low=0.0, low_inclusive=not tip, high=2.0,
+                             high_inclusive=not tip),
+        Q_over_Eh2=np.full((), np.nan) if Q is None else check_array(
+            "Q_over_Eh2", Q, low=0.0, low_inclusive=True, high=1e12, high_inclusive=True),
+        tip_friction=np.full((), np.nan) if mu is None else check_array(
+            "tip_friction", mu, low=0.0, low_inclusive=True, high=10.0, high_inclusive=True),
+    )  # fmt: skip
+    scalar = scalar_or_array(*checked.values())
+    flat = [np.asarray(v, float) for v in broadcast(**checked)]
+    shape = flat[0].shape
+    rho, r, s, tau, F, H, Q, mu = (np.reshape(v, -1) for v in flat)
+    if tip:  # the moment arm and the load the tip adds per unit horizontal push
+        q_per_P, dF_per_P, arm = _tip_forces(H, mu)
+        k = dF_per_P / q_per_P
+    else:
+        arm, k = H, np.zeros(H.shape)
+    return _Inputs(rho, r, s, tau, F, H, Q, mu, arm, k, s * (r - 1.0), tip, scalar, shape)
+
+
+def _solved(v, dtype=float) -> NDArray:
+    """A result's column as a flat array of its own (the steps write into it)."""
+    return np.array(v, dtype).reshape(-1)
+
+
+def _slide_at(load, rho, r, s, scalar: bool, report: bool = False):
+    """The steady sliding contact carrying ``load``: its a/R, F and converged (flat arrays).
+
+    The load given raises below the pull-off force of steady sliding; with ``report`` (a
+    tip's load) NaN there instead: the fibre lifts off first. A tip's load beyond the
+    domain's ends is held there (far beyond any pull-off force, or a contact far wider than
+    the domain of widths, which the inverse says).
+    """
+    lo, _, hi, _ = _domain.DOMAIN["F_over_Eh2"]
+    args = (np.clip(load, lo, hi), rho, r, s)
+    res = sliding_contact_for_load(
+        *((float(v[0]) for v in args) if scalar else args),  # the scalar fast path
+        method="closed-form",
+        on_failure="report" if report else "raise",
+    )
+    return _solved(res.a_over_R), _solved(res.F_over_Eh2), _solved(res.converged, bool)
+
+
+def _rest_at(load, rho, s, scalar: bool):
+    """The contact at rest carrying ``load``: a/R (NaN where none carries it), converged.
+
+    The normal contact with the advancing range; a load beyond the domain is held there.
+    """
+    lo, _, hi, _ = _domain.DOMAIN["F_over_Eh"]
+    args = (np.clip(load, lo, hi), rho, s)
+    res = contact_for_load(*((float(v[0]) for v in args) if scalar else args), on_failure="report")
+    return _solved(res.a_over_R), _solved(res.converged, bool)
+
+
+def _steady_sliding_contact(p: _Inputs) -> _Contact:
+    """The steady contact of motion and the sliding resistance ``2 a_slide tau0 + dw``.
+
+    At the load given (raises below the pull-off force of steady sliding); with a tip, at
+    the load it adds at the threshold, ``F + k Q_slide`` (:func:`_tip_sliding_threshold`).
+    ``F`` is the load given that the contact carries (its residual is push's).
+    """
+    a, F_found, conv = _slide_at(p.F, p.rho, p.r, p.s, p.scalar)
+    Q = 2.0 * a * p.rho * p.tau + p.dw
+    if not p.tip or not np.any(p.k != 0):
+        return _Contact(a, F_found, Q, conv)
+    tip = _tip_sliding_threshold(p, Q, a, F_found, conv)
+    conv = tip.converged | ~np.isfinite(tip.a)  # a lifted fibre is a state, not a failure
+    F_given = np.where(np.isfinite(tip.a), tip.F - p.k * tip.Q, p.F)
+    return _Contact(tip.a, F_given, tip.Q, conv)
+
+
+def _tip_sliding_threshold(p: _Inputs, Q0, a0, F0, conv0) -> _Contact:
+    """Solve ``Q = g(Q) = 2 a(F + k Q) tau0 + dw`` from ``Q0`` (the threshold at ``F``).
+
+    Secant steps on ``g(Q) - Q`` (plain iteration converges only linearly where the contact
+    is wide: ``a ~ sqrt(load)``); a point leaves the loop when ``|g - Q| <= 1e-14 g``, with
+    ``Q = g`` and the contact at ``F + k Q``; ``g`` NaN: the tip lifts the fibre first (it
+    leaves as NaN). ``converged`` is False where 60 steps do not settle a point.
+    """
+    Q, a, F, conv = Q0.copy(), a0.copy(), F0.copy(), conv0.copy()
+    act = np.flatnonzero(p.k != 0)  # where k = 0 the threshold is the one at F
+    conv[act] = False
+    Q_now, Q_prev, f_prev = Q0[act], Q0[act], np.zeros(act.size)
+    for it in range(60):
+        rho, tau = p.rho[act], p.tau[act]
+        a_i, F_i, c_i = _slide_at(p.F[act] + p.k[act] * Q_now, rho, p.r[act], p.s[act],
+                                  p.scalar, report=True)  # fmt: skip
+        g = 2.0 * a_i * rho * tau + p.dw[act]  # NaN: the tip lifts the fibre first
+        f = g - Q_now
+        with np.errstate(divide="ignore", invalid="ignore"):
+            secant = Q_now - f * (Q_now - Q_prev) / (f - f_prev)
+        usable = (it > 0) & np.isfinite(secant) & (secant > 0)
+        done = np.abs(np.nan_to_num(f)) <= 1e-14 * np.nan_to_num(np.abs(g), nan=1.0)
+        last = done | (it == 59)  # unsettled after 60 steps: reported unconverged
+        at = act[last]
+        Q[at] = np.where(done, g, np.where(usable, secant, g))[last]
+        a[at], F[at], conv[at] = a_i[last], F_i[last], (c_i & done)[last]
+        Q_prev, f_prev = Q_now[~last], f[~last]
+        Q_now, act = np.where(usable, secant, g)[~last], act[~last]
+        if act.size == 0:
+            break
+    return _Contact(a, F, Q, conv)
+
+
+def _contact_at_rest(p: _Inputs) -> _Contact:
+    """The contact at rest and the push where gross slip begins, ``Q_onset = 2 a_rest tau0``.
+
+    The normal contact at the load with the advancing range (NaN where none carries it:
+    below the pull-off force at rest); with a tip, at ``F + k Q_onset`` by plain iteration
+    (the tip's load changes the width by a part of order ``tau0/E``: a few steps to 1e-14).
+    ``F`` is NaN: the load is not reported.
+    """
+    a, conv = _rest_at(p.F, p.rho, p.s, p.scalar)
+    Q = 2.0 * a * p.rho * p.tau
+    act = np.flatnonzero(p.k != 0) if p.tip else np.zeros(0, int)
+    conv[act] = False
+    for _ in range(60 if act.size else 0):  # (no contact at rest, NaN: retried at F)
+        a_i, c_i = _rest_at(p.F[act] + p.k[act] * np.nan_to_num(Q[act]), p.rho[act],
+                            p.s[act], p.scalar)  # fmt: skip
+        Q_i = 2.0 * a_i * p.rho[act] * p.tau[act]
+        done = np.abs(np.nan_to_num(Q_i - Q[act])) <= 1e-14 * np.nan_to_num(Q_i, nan=1.0)
+        a[act], Q[act], conv[act] = a_i, Q_i, c_i & done
+        act = act[~done]
+        if act.size == 0:
+            break
+    return _Contact(a, np.full(a.shape, np.nan), Q, conv)
+
+
+def _rolling_resistance(dw, arm):
+    """Steady rolling: the push ``Q_roll = R dw / H`` and the contact's shear ``S_roll``.
+
+    The moment balance about the axis with the moment ``M_axis = R dw`` of the steady
+    contact's pressure (``docs/push.md`` eq. 1, taken exactly: ``M - e F`` loses digits when
+    the adhesion is tiny beside the load), and the force balance ``Q + S = dw``:
+    ``S_roll = Q_roll (H - R)/R``. ``Q_roll`` is 0 without hysteresis (``H > 0``) and
+    ``inf`` for a push at the contact line (``H = 0``, or so close that ``dw / H``
+    overflows; ``S_roll`` is then ``-inf``). Kendall's energy balance gives the same.
+    """
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        Q_roll = np.where(arm > 0, dw / np.where(arm > 0, arm, 1.0), np.inf)
+        S_roll = np.where(arm > 0, Q_roll * (arm - 1.0), -np.inf)
+    return Q_roll, S_roll
+
+
+def _rolling_contact(p: _Inputs, a_slide, Q_roll):
+    """The contact that holds the shear while rolling: its half-width over ``R``.
+
+    The steady contact at the load; with a tip at ``F + k Q_roll`` (NaN where that lifts
+    the fibre).
+    """
+    a_roll = a_slide.copy()
+    act = np.flatnonzero(p.k != 0) if p.tip else np.zeros(0, int)
+    if act.size:
+        Q = np.where(np.isfinite(Q_roll[act]), Q_roll[act], 0.0)
+        a_roll[act], _, _ = _slide_at(p.F[act] + p.k[act] * Q, p.rho[act], p.r[act],
+                                      p.s[act], p.scalar, report=True)  # fmt: skip
+    return a_roll
+
+
+def _lift_off(p: _Inputs):
+    """The push at which a tip that lifts (``k < 0``) pulls the fibre off at rest.
+
+    ``Q_lift = (F - F_po)/(-k)``, where the load reaches the pull-off force ``F_po`` of the
+    contact at rest; ``inf`` where the tip does not lift.
+    """
+    Q_lift = np.full(p.F.shape, np.inf)
+    lifts = np.flatnonzero(p.k < 0)
+    if lifts.size:
+        args = (p.rho[lifts], p.s[lifts])
+        po = pull_off(*((float(v[0]) for v in args) if p.scalar else args))
+        with np.errstate(divide="ignore", invalid="ignore"):
+            Q_lift[lifts] = (p.F[lifts] - _solved(po.F_pulloff_over_Eh)) / -p.k[lifts]
+    return Q_lift
+
+
+def _first_motion(p: _Inputs, Q_slide, Q_roll, S_roll, a_roll, Q_lift):
+    """The first motion under a growing push, and whether the rolling contact holds.
+
+    The lower steady resistance (``docs/push.md`` section 4), ``"roll+slide"`` where rolling
+    needs more shear than its contact holds (``|S_roll| >= 2 a_roll tau0``), ``"lift-off"``
+    where a tip lifts the fibre first.
+
+    Returns ``(first, holds, Q_roll, Q_slide)``, the thresholds that a lifted contact does
+    not reach set to ``inf``.
+    """
+    Q_slide = np.where(np.isnan(Q_slide), np.inf, Q_slide)
+    Q_roll = np.where(np.isnan(a_roll) & np.isfinite(Q_roll), np.inf, Q_roll)
+    holds = np.abs(S_roll) < 2.0 * a_roll * p.rho * p.tau
+    first = np.where(Q_roll < Q_slide, np.where(holds, "roll", "roll+slide"), "slide")
+    first = np.where(Q_lift < np.minimum(Q_roll, Q_slide), "lift-off", first)
+    return first, holds, Q_roll, Q_slide
+
+
+def _creep(p: _Inputs, S_roll, a_roll, holds):
+    """The creep ``(V - omega R)/V`` of steady rolling under the shear ``S_roll``.
+
+    Where the contact holds it (:func:`~linecontact.steady_rolling`, once), NaN elsewhere;
+    negative where the shear drives, 0 without shear.
+    """
+    creep = np.full(p.rho.shape, np.nan)
+    if np.any(holds):
+        tau, S = p.tau[holds], S_roll[holds]
+        T = np.abs(S) / (p.rho[holds] * a_roll[holds])  # T over E a_roll
+        # at full slip (T = 2 tau0): the sliding state, reported
+        roll = steady_rolling(tau, T_over_Ea=np.minimum(T, 2 * tau), on_failure="report")
+        c = np.sign(S) * np.asarray(roll.creep_over_V, float)
+        creep[holds] = np.where(S == 0, 0.0, c)
+    return creep
+
+
+def _state_under_push(p: _Inputs, Q_roll, Q_slide, Q_lift, holds, a_rest):
+    """The state under the push given (``""`` without one) and the stick zone at rest.
+
+    ``"rest"`` below both resistances, ``"roll"``/``"slide"`` above one, ``"roll+slide"``
+    above both (or rolling needs more shear than the contact holds), ``"lift-off"`` at or
+    beyond ``Q_lift``. At rest the stick zone ``d/a_rest`` of the initiation problem
+    (:func:`~linecontact.sliding_initiation`, once) on the contact at the load (with a tip,
+    ``F + k Q``); 0 from gross slip on, NaN when moving or without a push.
+    """
+    given = np.isfinite(p.Q)
+    state = np.full(p.rho.shape, "", dtype="<U10")
+    d_rest = np.full(p.rho.shape, np.nan)
+    if not np.any(given):
+        return state, d_rest
+    over_roll, over_slide = p.Q >= Q_roll, p.Q >= Q_slide
+    rolls = np.where(holds, "roll", "roll+slide")
+    moving = np.where(over_roll, np.where(over_slide, "roll+slide", rolls), "slide")
+    state = np.where(given, np.where(over_roll | over_slide, moving, "rest"), "")
+    state = np.where(given & (p.Q >= Q_lift), "lift-off", state)
+    at_rest = given & (state == "rest")
+    a_here = a_rest.copy()
+    loaded = np.flatnonzero(at_rest & (p.k != 0)) if p.tip else np.zeros(0, int)
+    if loaded.size:  # the contact at rest under the tip's load
+        load = p.F[loaded] + p.k[loaded] * p.Q[loaded]
+        a_here[loaded], _ = _rest_at(load, p.rho[loaded], p.s[loaded], p.scalar)
+    at_rest &= np.isfinite(a_here)
+    if np.any(at_rest):
+        T = p.Q[at_rest] / (p.rho[at_rest] * a_here[at_rest])
+        init = sliding_initiation(p.tau[at_rest], T_over_Ea=T, on_failure="report")
+        d = np.asarray(init.d_over_a, float)
+        d_rest[at_rest] = np.where(np.asarray(init.state) == "sliding", 0.0, d)
+    return state, d_rest
+
+
+def _raise_unconverged(p: _Inputs, conv, given: bool) -> None:
+    """Raise :class:`ConvergenceError` naming the first point not solved to round-off."""
+    if np.all(conv):
+        return
+    named = dict(R_over_h2=p.rho, h1_over_h2=p.r, sigma0_over_E=p.s, tau0_over_E=p.tau,
+                 F_over_Eh2=p.F, H_over_R=p.H)  # fmt: skip
+    if given:
+        named["Q_over_Eh2"] = p.Q
+    if p.tip:
+        named["tip_friction"] = p.mu
+    _, at = first_point(~np.asarray(conv, bool), **named)
+    raise ConvergenceError(
+        f"push did not converge at {point_text(at)}"
+        + ": a contact or the tip's load could not be solved to round-off"
+    )
 
 
 @dataclass(frozen=True)
@@ -499,6 +634,23 @@ def tip_push(H_over_R: ArrayLike, tip_friction: ArrayLike = 0.0) -> TipPush:
     )
     scalar = scalar_or_array(H, mu)
     H, mu = (np.asarray(v, float) for v in broadcast(H_over_R=H, tip_friction=mu))
+    qx, dF, H_eff = _tip_forces(H, mu)
+    vals = dict(
+        Q_per_P=qx,
+        dF_per_P=dF,
+        H_effective_over_R=H_eff,
+        H_over_R=H,
+        tip_friction=mu,
+    )
+    return TipPush(**{k: as_output(v, scalar) for k, v in vals.items()})
+
+
+def _tip_forces(H, mu):
+    """A tip's ``(Q/P, dF/P, H_eff/R)`` at checked heights and frictions.
+
+    ``docs/push.md`` section 6; raises where the tip does not push forward
+    (``cos(theta) <= mu sin(theta)``).
+    """
     # 1 + sin(theta) = H and 1 - sin(theta) = 2 - H (exact for H >= 1, correctly rounded
     # below): cos(theta) = sqrt(H (2 - H)) keeps its relative accuracy at both ends, where
     # forming 1 -+ sin(theta) from sin(theta) = H - 1 cancels (H = 1e-15 came out 4e-4 off)
@@ -512,11 +664,4 @@ def tip_push(H_over_R: ArrayLike, tip_friction: ArrayLike = 0.0) -> TipPush:
             "tip's force backwards or vertical "
             f"(cos(theta) <= tip_friction sin(theta)): the tip does not push the fibre"
         )
-    vals = dict(
-        Q_per_P=qx,
-        dF_per_P=sin + mu * cos,
-        H_effective_over_R=(cos - mu * H) / qx,
-        H_over_R=H,
-        tip_friction=mu,
-    )
-    return TipPush(**{k: as_output(v, scalar) for k, v in vals.items()})
+    return qx, sin + mu * cos, (cos - mu * H) / qx

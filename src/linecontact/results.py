@@ -32,18 +32,26 @@ class Result:
     """Base of the frozen result dataclasses.
 
     Subclasses list the fields that are inputs of the problem in ``inputs`` (the output
-    layer moves them to its ``parameters`` block when they are the same at every point)
-    and the derived per-point properties to export in ``derived``. Fields declared with
-    ``repr=False`` (nested results) are not exported.
+    layer moves them to its ``parameters`` block when they are the same at every point),
+    the derived per-point properties to export in ``derived``, the fields that are not per
+    point in ``whole``, and the SI form of their fields in ``si`` (:mod:`linecontact.units`).
+    Fields declared with ``repr=False`` (nested results) are not exported.
     """
 
     #: Fields that are inputs of the problem (parameters of the points).
     inputs: ClassVar[tuple[str, ...]] = ()
     #: Per-point properties exported as columns after the fields.
     derived: ClassVar[tuple[str, ...]] = ()
+    #: Fields that are one value for the whole result, not per point (an interval, a
+    #: matrix): in :meth:`to_dict`, not in :meth:`columns`.
+    whole: ClassVar[tuple[str, ...]] = ()
+    #: The SI form of each field with one: ``{field: (SI name, scale, SI unit)}``, the scale
+    #: a name of :data:`linecontact.units.SCALES` (:func:`linecontact.units.to_si` reads it).
+    si: ClassVar[dict[str, tuple[str, str, str]]] = {}
 
     def _names(self) -> list[str]:
-        return [f.name for f in fields(self) if f.repr] + list(self.derived)
+        names = [f.name for f in fields(self) if f.repr and f.name not in self.whole]
+        return names + list(self.derived)
 
     @property
     def shape(self) -> tuple[int, ...]:

@@ -16,12 +16,13 @@ import math
 import warnings
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import Any, Literal
+from typing import Any, ClassVar, Literal
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .errors import ModelValidityWarning
+from .results import Result
 
 __all__ = ["Estimate", "propagate"]
 
@@ -33,7 +34,7 @@ _UNREACHABLE: contextvars.ContextVar[Literal["raise", "nan"]] = contextvars.Cont
 
 
 @dataclass(frozen=True)
-class Estimate:
+class Estimate(Result):
     """A derived quantity with its standard uncertainty and 95 % interval.
 
     Attributes
@@ -49,6 +50,9 @@ class Estimate:
         Samples drawn, samples without a solution (a pull-off no ``w`` reaches, a load below
         pull-off), the seed.
     """
+
+    inputs: ClassVar[tuple[str, ...]] = ("n_samples", "seed")
+    whole: ClassVar[tuple[str, ...]] = ("ci95", "ci95_linear")
 
     value: float
     sd: float

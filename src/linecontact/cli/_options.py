@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from ..cylinder import _ZERO_WIDTH, Cylinder, _warn_widths
-from ..domain import TooWideError, check_si
+from ..domain import check_si
 from ..errors import ModelValidityWarning, UnitsWarning
 from ..output import FORMATS, Table, write
 from ..presets import Material, material_names
@@ -712,9 +712,9 @@ def add_width_options(p: Any, load_flag: str, load_help: str) -> None:
 
 
 def half_widths(args: argparse.Namespace, cyl: Cylinder | None, load_attr: str):
-    """Contact half-widths a/R from ``--a-over-R``, ``--a-over-R-range``, ``--half-width``.
+    """Contact half-widths: a/R (``--a-over-R``, ``--a-over-R-range``) or a [m] (``--half-width``).
 
-    None for loads.
+    None for loads. The SI half-widths are for the cylinder's methods.
 
     Exactly one of those, ``--<load_attr>`` or ``--load`` [N/m] must be given.
     """
@@ -759,25 +759,15 @@ def half_widths(args: argparse.Namespace, cyl: Cylinder | None, load_attr: str):
             raise ValueError(f"--half-width must be a finite number > 0, got {bad!r}")
         key = "sliding_a_over_R" if load_attr == "F_over_Eh2" else "a_over_R"
         check_si("--half-width", a, cyl.radius, key, "m")  # type: ignore[union-attr]
-        return a / cyl.radius  # type: ignore[union-attr]
+        return a
     return None
 
 
 def si_loads(args: argparse.Namespace, cyl: Cylinder, key: str) -> np.ndarray:
-    """``--load`` [N/m] over its unit ``E h`` (``E h2`` for sliding), inside ``key``'s domain."""
+    """``--load`` [N/m], inside ``key``'s domain (in units of ``E h``; ``E h2`` for sliding)."""
     load = np.asarray(args.load, float)
-    Eh = cyl.modulus * cyl.adhesion_range
-    check_si("--load", load, Eh, key, "N/m")
-    return load / Eh
-
-
-def too_wide(e: TooWideError, args: argparse.Namespace, cyl: Cylinder) -> ValueError:
-    """The API's 'needs a contact of half-width a_over_R = ...' said for ``--load`` in SI."""
-    load = float(np.reshape(np.asarray(args.load, float), -1)[e.index])
-    return ValueError(
-        f"--load={load!r} N/m needs a contact of half-width {e.a_over_R * cyl.radius:.6g} m, "
-        f"{e.a_over_R:.6g} radii: {e.limit}"
-    )
+    check_si("--load", load, cyl.scale("Eh"), key, "N/m")
+    return load
 
 
 def record_flags(parser: argparse.ArgumentParser, args: argparse.Namespace) -> None:

@@ -21,7 +21,7 @@ from typing import Any
 import numpy as np
 
 from .. import inverse as inv
-from ..measurements import read_measurements
+from ..measurements import per_length, read_measurements
 from ..output import Table
 from ._options import (
     add_command,
@@ -274,6 +274,46 @@ def _one_sd(args, name: str, value: float | None) -> float:
     return abs(value) * v if rel else v
 
 
+def _record(result: Any, keys: tuple[tuple[str, str], ...]) -> dict[str, Any]:
+    """The fields (and derived properties) of a fit's result under their JSON keys."""
+    d = {**result.to_dict(), **{k: getattr(result, k) for k in type(result).derived}}
+    return {key: list(d[k]) if isinstance(d[k], tuple) else d[k] for k, key in keys}
+
+
+#: The JSON keys of an AdhesionFit's fields, in the output's order.
+_FIT = (
+    ("work_of_adhesion", "work_of_adhesion"),
+    ("work_of_adhesion_sd", "work_of_adhesion_sd"),
+    ("work_of_adhesion_ci95", "work_of_adhesion_ci95"),
+    ("work_of_adhesion_ci95_linear", "work_of_adhesion_ci95_linear"),
+    ("equilibrium_spacing", "z0"),
+    ("equilibrium_spacing_sd", "z0_sd"),
+    ("equilibrium_spacing_ci95", "z0_ci95"),
+    ("equilibrium_spacing_ci95_linear", "z0_ci95_linear"),
+    ("correlation", "correlation"),
+    ("covariance", "covariance"),
+    ("identifiable", "identifiable"),
+    ("note", "note"),
+    ("chi2", "chi2"),
+    ("dof", "dof"),
+)
+_FIT_INPUTS_SD = (
+    ("work_of_adhesion_sd_inputs", "work_of_adhesion_sd_inputs"),
+    ("equilibrium_spacing_sd_inputs", "z0_sd_inputs"),
+    ("work_of_adhesion_sd_total", "work_of_adhesion_sd_total"),
+    ("equilibrium_spacing_sd_total", "z0_sd_total"),
+)
+_FIT_DATA = (("model", "model_N_per_m"), ("residuals", "residuals_N_per_m"))
+#: An Estimate's fields, ``{}`` the quantity's JSON name.
+_ESTIMATE = (
+    ("value", "{}"),
+    ("sd", "{}_sd"),
+    ("ci95", "{}_ci95"),
+    ("sd_linear", "{}_sd_linear"),
+    ("ci95_linear", "{}_ci95_linear"),
+)
+
+
 def _table(args, record: dict[str, Any], params: dict[str, Any], title: str, units) -> Table:
     cols = {}
     for k, v in record.items():
@@ -369,36 +409,14 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
         )
         z_ref = fit.equilibrium_spacing
         simple = inv.simple_model_work_of_adhesion(R, F, E, z_ref, sd)
-        extra_sd: dict[str, float] = {}
-        if E_sd or z_sd:
-            extra_sd = {
-                "work_of_adhesion_sd_inputs": fit.work_of_adhesion_sd_inputs,
-                "z0_sd_inputs": fit.equilibrium_spacing_sd_inputs,
-                "work_of_adhesion_sd_total": fit.work_of_adhesion_sd_total,
-                "z0_sd_total": fit.equilibrium_spacing_sd_total,
-            }
         rec: dict[str, Any] = {
-            "work_of_adhesion": fit.work_of_adhesion,
-            "work_of_adhesion_sd": fit.work_of_adhesion_sd,
-            "work_of_adhesion_ci95": list(fit.work_of_adhesion_ci95),
-            "work_of_adhesion_ci95_linear": list(fit.work_of_adhesion_ci95_linear),
-            "z0": fit.equilibrium_spacing,
-            "z0_sd": fit.equilibrium_spacing_sd,
-            "z0_ci95": list(fit.equilibrium_spacing_ci95),
-            "z0_ci95_linear": list(fit.equilibrium_spacing_ci95_linear),
-            "correlation": fit.correlation,
-            "covariance": fit.covariance.tolist(),
-            "identifiable": fit.identifiable,
-            "note": fit.note,
-            "chi2": fit.chi2,
-            "dof": fit.dof,
+            **_record(fit, _FIT),
             "work_of_adhesion_jkr": simple["jkr"],
             "work_of_adhesion_dmt": simple["dmt"],
-            **extra_sd,
+            **(_record(fit, _FIT_INPUTS_SD) if E_sd or z_sd else {}),
             "radius_m": R.tolist(),
             "pull_off_force_N_per_m": F.tolist(),
-            "model_N_per_m": fit.model.tolist(),
-            "residuals_N_per_m": fit.residuals.tolist(),
+            **_record(fit, _FIT_DATA),
         }
         params.update(
             data=os.fspath(args.data),
@@ -480,8 +498,9 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
         if given == ["pull_off_force_total"]:
             if args.length is None:
                 raise ValueError("--pull-off-force-total [N] needs the fibre's --length [m]")
-            F = args.pull_off_force_total / args.length
-            F_sd = _one_sd(args, "pull_off_force_total", args.pull_off_force_total) / args.length
+            total_sd = _one_sd(args, "pull_off_force_total", args.pull_off_force_total)
+            F = per_length(args.pull_off_force_total, args.length, length_name="--length")
+            F_sd = per_length(total_sd, args.length, length_name="--length")
             params.update(pull_off_force_total_N=args.pull_off_force_total, length_m=args.length)
         else:
             F = args.pull_off_force
@@ -494,11 +513,7 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
     fn(**values)  # a clear error for a measurement no w can produce
     est = inv.propagate(fn, values, sds, n_samples=args.samples, seed=args.seed)
     rec: dict[str, Any] = {
-        "work_of_adhesion": est.value,
-        "work_of_adhesion_sd": est.sd,
-        "work_of_adhesion_ci95": list(est.ci95),
-        "work_of_adhesion_sd_linear": est.sd_linear,
-        "work_of_adhesion_ci95_linear": list(est.ci95_linear),
+        **_record(est, tuple((k, key.format("work_of_adhesion")) for k, key in _ESTIMATE)),
         "z0": args.z0,
     }
     if "pull_off_force" in values:
@@ -520,59 +535,6 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
 
 # --------------------------------------------------------------------------------------------
 # fit-friction
-
-
-def _combined(fn, f, F, f_sd, common, shared_sd, n_samples: int, seed: int):
-    """One tau0 for all points: the mean weighted by the friction forces' uncertainties.
-
-    Its uncertainty by Monte Carlo over everything at once: the friction forces
-    independently, the cylinder's inputs (shared by every point, so not averaged away)
-    once per sample; widened by the square root of the Birge ratio (the points' chi^2 per
-    degree of freedom about the mean) when they scatter more than their uncertainties say.
-    Returns ``(tau0, sd, (lo, hi), birge ratio)``.
-    """
-    wt = 1 / f_sd**2 if np.all(f_sd > 0) else np.ones_like(f)
-    tau = np.asarray(fn(f, F, **common), float)
-    value = float(np.sum(wt * tau) / np.sum(wt))
-    if not (np.any(f_sd > 0) or any(shared_sd.values())):
-        return value, 0.0, (value, value), math.nan
-    rng = np.random.default_rng(seed + 7919)
-    draw = {}
-    for k, v in common.items():
-        s = shared_sd.get(k, 0.0)
-        x = v + s * rng.standard_normal((n_samples, 1)) if s else np.full((n_samples, 1), v)
-        draw[k] = np.where(x > 0, x, v)  # a positive input: no non-physical draw
-    ff = f + f_sd * rng.standard_normal((n_samples, f.size))
-    ok = np.all(ff > 0, axis=1)
-    taus = np.full((n_samples, f.size), np.nan)
-
-    def rows(idx):  # a batch that raises is split in halves: nan only where a draw fails
-        try:
-            taus[idx] = fn(
-                ff[idx], np.broadcast_to(F, ff[idx].shape), **{k: v[idx] for k, v in draw.items()}
-            )
-        except ValueError:
-            if idx.size > 1:
-                rows(idx[: idx.size // 2])
-                rows(idx[idx.size // 2 :])
-
-    rows(np.flatnonzero(ok))
-    comb = np.sum(wt * taus, axis=1) / np.sum(wt)
-    comb = comb[np.isfinite(comb)]
-    if comb.size < 2:
-        return value, math.nan, (math.nan, math.nan), math.nan
-    lo, hi = (float(v) for v in np.percentile(comb, [2.5, 97.5]))
-    sd = float(np.std(comb, ddof=1))
-    # the points' scatter about the mean against their measurement uncertainty (tau0 is
-    # proportional to f): a Birge ratio above 1 widens the interval by its square root
-    birge = math.nan
-    if f.size > 1 and np.all(f_sd > 0):
-        sd_i = tau * f_sd / f
-        birge = float(np.sum(((tau - value) / sd_i) ** 2) / (f.size - 1))
-        if birge > 1:
-            k = math.sqrt(birge)
-            sd, lo, hi = sd * k, value - k * (value - lo), value + k * (hi - value)
-    return value, sd, (lo, hi), birge
 
 
 def _friction_from_width(args: argparse.Namespace) -> int:
@@ -637,10 +599,7 @@ def _friction_from_width(args: argparse.Namespace) -> int:
             f"hysteresis {dw:.6g} J/m^2: no positive shear strength"
         )
     rec = {
-        "tau0_Pa": est.value,
-        "tau0_sd_Pa": est.sd,
-        "tau0_ci95_Pa": list(est.ci95),
-        "tau0_sd_linear_Pa": est.sd_linear,
+        **_record(est, tuple((k, key.format("tau0") + "_Pa") for k, key in _ESTIMATE[:4])),
         "half_width_m": args.half_width,
     }
     params: dict[str, Any] = dict(
@@ -747,7 +706,7 @@ def _cmd_friction(args: argparse.Namespace) -> int:
         for i in range(n)
     ]
     sd = np.array([e.sd for e in ests])
-    tau_all, tau_all_sd, tau_all_ci, birge = _combined(
+    combined = inv.fit_shear_strength(
         fn,
         f,
         F,
@@ -766,10 +725,15 @@ def _cmd_friction(args: argparse.Namespace) -> int:
             except ValueError:
                 others[c].append(math.nan)
     rec: dict[str, Any] = {
-        "tau0_Pa": tau_all,
-        "tau0_sd_Pa": tau_all_sd,
-        "tau0_ci95_Pa": list(tau_all_ci),
-        "birge_ratio": birge,
+        **_record(
+            combined,
+            (
+                ("tau0", "tau0_Pa"),
+                ("tau0_sd", "tau0_sd_Pa"),
+                ("tau0_ci95", "tau0_ci95_Pa"),
+                ("birge_ratio", "birge_ratio"),
+            ),
+        ),
         "n_points": n,
         "normal_load_N_per_m": F.tolist(),
         "friction_force_N_per_m": f.tolist(),
@@ -803,7 +767,7 @@ def _cmd_friction(args: argparse.Namespace) -> int:
             {k.upper() if k != "hertz" else "Hertz": np.asarray(v) for k, v in others.items()},
             args.plot,
             friction_sd=f_sd,
-            combined=(tau_all, tau_all_ci),
+            combined=(combined.tau0, combined.tau0_ci95),
         )
     units = {"n_points": "1", "birge_ratio": "1", "tau0_per_point_ci95_Pa": "Pa"}
     emit(

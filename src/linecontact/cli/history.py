@@ -184,7 +184,7 @@ def _si_friction(args: argparse.Namespace, coulomb: bool, cyl: Cylinder) -> dict
     if len(_given(args, "tau0", "tau0_over_E")) != 1:
         raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
     return dict(
-        friction_stress=args.tau0 if args.tau0 is not None else args.tau0_over_E * cyl.modulus
+        friction_stress=args.tau0 if args.tau0 is not None else cyl.in_si(args.tau0_over_E, "E")
     )
 
 
@@ -194,18 +194,18 @@ def _si_loads(args: argparse.Namespace, cyl: Cylinder, state: str, values, coulo
     Loads in N/m beyond the solvers' domain (``|T|`` over ``E a`` or ``mu F`` above 1e12) are
     refused naming the flag given.
     """
-    Ea = cyl.modulus * cyl.contact(load=args.load).contact_half_width
+    mu = dict(friction_coefficient=args.mu)
     if state.endswith("over_Ea"):
-        return values * Ea
+        return cyl.tangential_load(args.load, values, over="Ea")
     if state.endswith("over_muF"):
-        return values * args.mu * args.load
-    unit, name = (args.mu * args.load, "mu F") if coulomb else (Ea, "E a")
-    big = np.abs(values) > _T_LIMIT * unit
+        return cyl.tangential_load(args.load, values, over="muF", **mu)
+    over, name = ("muF", "mu F") if coulomb else ("Ea", "E a")
+    limit = cyl.tangential_load(args.load, _T_LIMIT, over=over, **mu)  # type: ignore[arg-type]
+    big = np.abs(values) > limit
     if np.any(big):
         v = float(values[np.flatnonzero(big)[0]])
         raise ValueError(
-            f"{state} must be at most {_T_LIMIT:g} {name} = {_T_LIMIT * unit:.6g} N/m in "
-            f"magnitude, got {v!r}"
+            f"{state} must be at most {_T_LIMIT:g} {name} = {limit:.6g} N/m in magnitude, got {v!r}"
         )
     return values
 
@@ -216,7 +216,7 @@ def _si_params(args, cyl, res, fr) -> dict[str, Any]:
     params.update(
         F_N_per_m=args.load,
         a_m=res.contact_half_width,
-        a_over_R=res.contact_half_width / cyl.radius,
+        a_over_R=cyl.over(res.contact_half_width, "R"),
         T_full_slip_N_per_m=res.full_slip_load,
     )
     if "friction_coefficient" in fr:
@@ -224,7 +224,7 @@ def _si_params(args, cyl, res, fr) -> dict[str, Any]:
     else:
         params["tau0_Pa"] = fr["friction_stress"]
     if args.length is not None:
-        params["F_total_N"] = args.load * args.length
+        params["F_total_N"] = cyl.total(args.load, args.length)
     return params
 
 
@@ -242,7 +242,7 @@ def _cmd_cycle(args: argparse.Namespace) -> int:
             "c_m": res.stick_zone_half_width,
         }
         if args.length is not None:
-            extra["W_total_J"] = np.multiply(res.energy_per_cycle, args.length)
+            extra["W_total_J"] = cyl.total(res.energy_per_cycle, args.length)
         table = _cycle_table(args, res.nondimensional, _si_params(args, cyl, res, fr), extra)
         emit(args, table)
         return 0
@@ -285,7 +285,7 @@ def _cmd_history(args: argparse.Namespace) -> int:
             "dissipation_J_per_m": res.dissipation,
         }
         if args.length is not None:
-            extra["dissipation_total_J"] = res.dissipation * args.length
+            extra["dissipation_total_J"] = cyl.total(res.dissipation, args.length)
         h = res.nondimensional
         table = _history_table(args, h, _si_params(args, cyl, res, fr), extra)
         emit(args, table)

@@ -8,7 +8,6 @@ from typing import Any
 import numpy as np
 
 from ..cylinder import Cylinder
-from ..domain import TooWideError
 from ..laws import lennard_jones as _lj
 from ..normal import NormalContact, contact_for_load, load_curve, normal_contact, pull_off
 from ..output import Table, table_from_result
@@ -28,10 +27,16 @@ from ._options import (
     show_together,
     si_loads,
     si_parameters,
-    too_wide,
 )
 
 __all__ = ["register"]
+
+
+def _force(cyl: Cylinder | None, F_over_Eh: Any) -> str:
+    """A force of the groups as the user gave the problem: in N/m (SI inputs) or in E h."""
+    if cyl is None:
+        return f"{F_over_Eh:.6g} E h"
+    return f"{cyl.in_si(F_over_Eh, 'Eh'):.6g} N/m"
 
 
 def _parameters(args, rho: float, s: float, cyl: Cylinder | None) -> dict[str, Any]:
@@ -58,13 +63,18 @@ def _cmd_normal(args: argparse.Namespace) -> int:
                 "--branch applies to given loads (--F-over-Eh or --load): a contact half-width "
                 "fixes the state"
             )
-        r = normal_contact(A, rho, s, method=args.method, on_failure="report")
+        if cyl is None:
+            r = normal_contact(A, rho, s, method=args.method, on_failure="report")
+        else:  # A in m
+            c = cyl.contact(contact_half_width=A, method=args.method, on_failure="report")
+            r = c.nondimensional
         ok = np.asarray(r.converged, bool).reshape(-1)
         state = np.where(ok, "contact", "not-converged")
         reason = np.full(ok.shape, None, dtype=object)
+        A_over_R = np.reshape(r.a_over_R, -1)
         for i in np.flatnonzero(~ok):
             reason[i] = (
-                f"the {args.method} solver did not converge at a_over_R={float(A[i])!r} "
+                f"the {args.method} solver did not converge at a_over_R={float(A_over_R[i])!r} "
                 f"(error estimate {float(np.reshape(r.error_estimate, -1)[i]):.3g})"
             )
         given = "a_over_R"
@@ -75,11 +85,13 @@ def _cmd_normal(args: argparse.Namespace) -> int:
                 "--a-over-R-range or --a); the contact for a given load is found by the closed "
                 "form"
             )
-        F = np.asarray(args.F_over_Eh, float) if cyl is None else si_loads(args, cyl, "F_over_Eh")
-        try:
+        if cyl is None:
+            F = np.asarray(args.F_over_Eh, float)
             r = contact_for_load(F, rho, s, branch=args.branch, on_failure="report")
-        except TooWideError as e:
-            raise e if cyl is None else too_wide(e, args, cyl) from None
+        else:
+            load = si_loads(args, cyl, "F_over_Eh")
+            r = cyl.contact(load=load, branch=args.branch, on_failure="report").nondimensional
+            F = cyl.over(load, "Eh")
         state = np.asarray(r.state).reshape(-1)
         reason = _load_reasons(F.reshape(-1), state, rho, s, args.branch, cyl)
         given = "F_over_Eh"
@@ -110,10 +122,9 @@ def _cmd_normal_lj(args: argparse.Namespace, A, rho: float, s: float, cyl: Cylin
     reason = np.full(state.shape, None, dtype=object)
     if np.any(state != "contact"):
         po = _lj.pull_off(rho, s)
-        unit, scale = ("N/m", cyl.modulus * cyl.adhesion_range) if cyl else ("E h", 1.0)
         reason[state != "contact"] = (
             f"no contact carries this load: it is below the pull-off force "
-            f"{po.F_pulloff_over_Eh * scale:.6g} {unit} under the Lennard-Jones law (the "
+            f"{_force(cyl, po.F_pulloff_over_Eh)} under the Lennard-Jones law (the "
             "contact has pulled off)"
         )
     params = _parameters(args, rho, s, cyl)
@@ -122,16 +133,10 @@ def _cmd_normal_lj(args: argparse.Namespace, A, rho: float, s: float, cyl: Cylin
     extra: dict[str, Any] = {}
     show = ["a_over_R", "central_gap_over_h", "F_over_Eh", "error_estimate_over_Eh"]
     if cyl is not None:
-        R, h, Eh = cyl.radius, cyl.adhesion_range, cyl.modulus * cyl.adhesion_range
-        extra.update(
-            a_m=np.multiply(r.a_over_R, R),
-            central_gap_m=np.multiply(r.central_gap_over_h, h),
-            F_N_per_m=np.multiply(r.F_over_Eh, Eh),
-            error_estimate_N_per_m=np.multiply(r.error_estimate_over_Eh, Eh),
-        )
+        fields = ("a_over_R", "central_gap_over_h", "F_over_Eh", "error_estimate_over_Eh")
+        extra.update(cyl.columns(r, fields, length=args.length))
         show += ["a_m", "F_N_per_m"]
         if args.length is not None:
-            extra["F_total_N"] = np.multiply(r.F_over_Eh, Eh * args.length)
             show.append("F_total_N")
     extra.update(state=state, reason=reason)
     if np.any(state != "contact"):
@@ -157,18 +162,17 @@ def _load_reasons(F, state, rho, s, branch, cyl) -> np.ndarray:
     if bad.size == 0:
         return reason
     po = pull_off(rho, s)
-    unit, scale = ("N/m", cyl.modulus * cyl.adhesion_range) if cyl else ("E h", 1.0)
     for i in bad:
         if F[i] < po.F_minimum_over_Eh or branch == "stable":
             reason[i] = (
                 f"no contact carries this load: it is below the pull-off force "
-                f"{po.F_minimum_over_Eh * scale:.6g} {unit} (the cylinder has pulled off)"
+                f"{_force(cyl, po.F_minimum_over_Eh)} (the cylinder has pulled off)"
             )
         else:
             reason[i] = (
                 f"no unstable contact carries this load: that branch exists only between the "
-                f"load minimum {po.F_minimum_over_Eh * scale:.6g} {unit} and the zero-width "
-                f"load {po.F_zero_width_over_Eh * scale:.6g} {unit}"
+                f"load minimum {_force(cyl, po.F_minimum_over_Eh)} and the zero-width "
+                f"load {_force(cyl, po.F_zero_width_over_Eh)}"
             )
     return reason
 
@@ -180,15 +184,9 @@ def _normal_table(args, r: NormalContact, rho, s, cyl, state, reason, given) -> 
     extra: dict[str, Any] = {}
     show = ["a_over_R", "c_over_R", "F_over_Eh", "c_over_a", "stable"]
     if cyl is not None:
-        R, Eh = cyl.radius, cyl.modulus * cyl.adhesion_range
-        extra.update(
-            a_m=np.multiply(r.a_over_R, R),
-            c_m=np.multiply(r.c_over_R, R),
-            F_N_per_m=np.multiply(r.F_over_Eh, Eh),
-        )
+        extra.update(cyl.columns(r, ("a_over_R", "c_over_R", "F_over_Eh"), length=args.length))
         show += ["a_m", "c_m", "F_N_per_m"]
         if args.length is not None:
-            extra["F_total_N"] = np.multiply(r.F_over_Eh, Eh * args.length)
             show.append("F_total_N")
     extra.update(state=state, reason=reason)
     if np.any(state != "contact"):
@@ -201,9 +199,9 @@ def _normal_table(args, r: NormalContact, rho, s, cyl, state, reason, given) -> 
         terms = np.pi / 4 * a * a * rho + 2 * s * rho * np.sqrt(np.maximum(c * c - a * a, 0.0))
     scales = {"F_over_Eh": terms}
     if cyl is not None:
-        scales["F_N_per_m"] = terms * cyl.modulus * cyl.adhesion_range
+        scales["F_N_per_m"] = cyl.in_si(terms, "Eh")
         if args.length is not None:
-            scales["F_total_N"] = scales["F_N_per_m"] * args.length
+            scales["F_total_N"] = cyl.total(scales["F_N_per_m"], args.length)
     table = table_from_result(
         r,
         columns=extra,
@@ -222,7 +220,7 @@ def _normal_table(args, r: NormalContact, rho, s, cyl, state, reason, given) -> 
 
 
 def _cmd_pulloff_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinder | None) -> int:
-    p = _lj.pull_off(rho, s)
+    p = _lj.pull_off(rho, s) if cyl is None else cyl.lennard_jones_pull_off().nondimensional
     params = _parameters(args, rho, s, cyl)
     params.pop("kappa")
     params["law"] = "lennard-jones"
@@ -235,15 +233,11 @@ def _cmd_pulloff_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinde
         "mu",
     ]
     if cyl is not None:
-        Eh = cyl.modulus * cyl.adhesion_range
-        extra.update(
-            F_pulloff_N_per_m=p.F_pulloff_over_Eh * Eh,
-            a_at_pulloff_m=p.a_over_R_at_pulloff * cyl.radius,
-            central_gap_at_pulloff_m=p.central_gap_over_h_at_pulloff * cyl.adhesion_range,
-        )
+        fields = ("F_pulloff_over_Eh", "a_over_R_at_pulloff", "central_gap_over_h_at_pulloff")
+        extra.update(cyl.columns(p, fields))
         show += ["F_pulloff_N_per_m"]
-        if args.length is not None:
-            extra["F_pulloff_total_N"] = p.F_pulloff_over_Eh * Eh * args.length
+        if args.length is not None:  # the pull-off force [N/m] times L
+            extra["F_pulloff_total_N"] = cyl.total(extra["F_pulloff_N_per_m"], args.length)
             show.append("F_pulloff_total_N")
     table = table_from_result(
         p,
@@ -262,22 +256,18 @@ def _cmd_pulloff(args: argparse.Namespace) -> int:
     rho, s, cyl = groups(args)
     if args.law == "lennard-jones":
         return _cmd_pulloff_lj(args, rho, s, cyl)
-    p = pull_off(rho, s)
+    p = pull_off(rho, s) if cyl is None else cyl.pull_off().nondimensional
     params = _parameters(args, rho, s, cyl)
     params.pop("kappa")
     params.pop("maugis_parameter")
     extra: dict[str, Any] = {}
     show = ["F_pulloff_over_Eh", "a_over_R_at_pulloff", "mechanism", "F_zero_width_over_Eh"]
     if cyl is not None:
-        Eh = cyl.modulus * cyl.adhesion_range
-        extra.update(
-            F_pulloff_N_per_m=p.F_pulloff_over_Eh * Eh,
-            a_at_pulloff_m=p.a_over_R_at_pulloff * cyl.radius,
-            F_zero_width_N_per_m=p.F_zero_width_over_Eh * Eh,
-        )
+        fields = ("F_pulloff_over_Eh", "a_over_R_at_pulloff", "F_zero_width_over_Eh")
+        extra.update(cyl.columns(p, fields))
         show += ["F_pulloff_N_per_m", "a_at_pulloff_m"]
-        if args.length is not None:
-            extra["F_pulloff_total_N"] = p.F_pulloff_over_Eh * Eh * args.length
+        if args.length is not None:  # the pull-off force [N/m] times L
+            extra["F_pulloff_total_N"] = cyl.total(extra["F_pulloff_N_per_m"], args.length)
             show.append("F_pulloff_total_N")
     table = table_from_result(
         p,
@@ -318,22 +308,14 @@ def _cmd_curve_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinder 
             raise ValueError("--F-max [N/m] is an SI input: give --radius and the materials too")
         if args.F_max_over_Eh is not None:
             raise ValueError("give either --F-max-over-Eh or --F-max [N/m], not both")
-        Eh = cyl.modulus * cyl.adhesion_range
         if not (np.isfinite(args.F_max) and args.F_max > 0):
             raise ValueError(f"--F-max must be a finite load > 0 [N/m], got {args.F_max!r}")
-        from ..lennard_jones_groups import load_max_over_Eh
-
-        limit = float(load_max_over_Eh(rho, s)) * Eh
-        if args.F_max > limit:
-            raise ValueError(
-                f"--F-max={args.F_max!r} N/m is beyond the loads the Lennard-Jones solver is "
-                f"asked for, up to {limit:.6g} N/m here (ten times the rigid cylinder's "
-                "pull-off); at such loads both laws approach Hertz: use --law dugdale"
-            )
-        F_max = args.F_max / Eh
     elif cyl is not None and F_max is not None:
         raise ValueError("--F-max-over-Eh is nondimensional: with SI inputs give --F-max [N/m]")
-    c = _lj.load_curve(rho, s, F_max_over_Eh=F_max)
+    if cyl is None:
+        c = _lj.load_curve(rho, s, F_max_over_Eh=F_max)
+    else:
+        c = cyl.lennard_jones_load_curve(max_load=args.F_max)
     po = c.pulloff
     is_po = np.zeros(c.F_over_Eh.shape, bool)
     is_po[int(np.argmin(c.F_over_Eh))] = True  # the sample nearest the refined pull-off
@@ -349,16 +331,11 @@ def _cmd_curve_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinder 
         "stable",
     ]
     if cyl is not None:
-        R, h, Eh = cyl.radius, cyl.adhesion_range, cyl.modulus * cyl.adhesion_range
-        extra.update(
-            central_gap_m=c.central_gap_over_h * h,
-            a_m=c.a_over_R * R,
-            F_N_per_m=c.F_over_Eh * Eh,
-            error_estimate_N_per_m=c.error_estimate_over_Eh * Eh,
-        )
+        fields = ("central_gap_over_h", "a_over_R", "F_over_Eh", "error_estimate_over_Eh")
+        extra.update(cyl.columns(c, fields))
         show += ["a_m", "F_N_per_m"]
-        if args.length is not None:
-            extra["F_total_N"] = c.F_over_Eh * Eh * args.length
+        if args.length is not None:  # the load [N/m] times L
+            extra["F_total_N"] = cyl.total(extra["F_N_per_m"], args.length)
             show.append("F_total_N")
     show.append("pulloff")
     table = table_from_result(
@@ -391,12 +368,13 @@ def _cmd_curve(args: argparse.Namespace) -> int:
     for flag, v in (("--num", args.num), ("--num-noncontact", args.num_noncontact)):
         if not 2 <= v <= MAX_POINTS:
             raise ValueError(f"{flag} must be an integer in [2, {MAX_POINTS}], got {v!r}")
-    a_max = args.a_max_over_R
-    if cyl is not None and args.a_max is not None:
-        a_max = args.a_max / cyl.radius
-    elif args.a_max is not None:
+    if cyl is None and args.a_max is not None:
         raise ValueError("--a-max [m] is an SI input: give --radius and the materials too")
-    c = load_curve(rho, s, a_max_over_R=a_max, num=args.num, num_noncontact=args.num_noncontact)
+    n = dict(num=args.num, num_noncontact=args.num_noncontact)
+    if cyl is None or args.a_max is None:
+        c = load_curve(rho, s, a_max_over_R=args.a_max_over_R, **n)
+    else:
+        c = cyl.load_curve(max_half_width=args.a_max, **n)
     po = c.pulloff
     # the pull-off state is the one `pulloff` reports, whatever its label: the load minimum
     # (a point of the curve), or the touching state where the minimum is narrower than the
@@ -411,16 +389,11 @@ def _cmd_curve(args: argparse.Namespace) -> int:
     extra: dict[str, Any] = {"pulloff": is_po}
     show = ["branch", "central_gap_over_h", "a_over_R", "c_over_R", "F_over_Eh", "stable"]
     if cyl is not None:
-        R, Eh = cyl.radius, cyl.modulus * cyl.adhesion_range
-        extra.update(
-            central_gap_m=c.central_gap_over_h * cyl.adhesion_range,
-            a_m=c.a_over_R * R,
-            c_m=c.c_over_R * R,
-            F_N_per_m=c.F_over_Eh * Eh,
-        )
+        fields = ("central_gap_over_h", "a_over_R", "c_over_R", "F_over_Eh")
+        extra.update(cyl.columns(c, fields))
         show += ["a_m", "F_N_per_m"]
-        if args.length is not None:
-            extra["F_total_N"] = c.F_over_Eh * Eh * args.length
+        if args.length is not None:  # the load [N/m] times L
+            extra["F_total_N"] = cyl.total(extra["F_N_per_m"], args.length)
             show.append("F_total_N")
     show.append("pulloff")
     table = table_from_result(
@@ -562,4 +535,4 @@ def register(sub: Any) -> None:
         help="lennard-jones: end load F/(E h), or F [N/m] (docs/cli.md)",
     )
     add_output_options(cu)
-    cu.set_defaults(func=_cmd_curve)
+    cu.set_defaults(func=_cmd_curve, _api_flags={"max_load": "--F-max"})

@@ -13,10 +13,9 @@ from typing import Any
 
 import numpy as np
 
-from ..cylinder import _check_cylinder_si, _plausible
+from ..cylinder import _check_cylinder_si, _plausible, cylinder_push, hysteresis_adhesion
 from ..domain import check_si
 from ..errors import ModelValidityWarning
-from ..materials import adhesion_from_work
 from ..output import table_from_result
 from ..push import push
 from ._options import (
@@ -185,28 +184,38 @@ def _cmd_push(args: argparse.Namespace) -> int:
                     "ignore", "(adhesion_range|work_of_adhesion) = ", ModelValidityWarning
                 )
             cyl = cylinder(args, range_flag="--h2")
-        Eh = cyl.modulus * cyl.adhesion_range
+        Eh = cyl.scale("Eh")
         if args.h1 is not None:
-            check_si("--h1", args.h1, cyl.adhesion_range, "h1_over_h2", "m")
-        check_si("--tau0", args.tau0, cyl.modulus, "tau0_over_E", "Pa")
+            check_si("--h1", args.h1, cyl.scale("h"), "h1_over_h2", "m")
+        check_si("--tau0", args.tau0, cyl.scale("E"), "tau0_over_E", "Pa")
         tip = args.tip_height is not None
         flag = "--tip-height" if tip else "--height"
         heights = np.asarray(args.tip_height if tip else args.height, float)
-        ok = (heights > 0) & (heights < 2 * cyl.radius) if tip else (heights >= 0)
-        ok &= heights <= 2 * cyl.radius
+        diameter = float(cyl.in_si(2.0, "R"))
+        ok = (heights > 0) & (heights < diameter) if tip else (heights >= 0)
+        ok &= heights <= diameter
         if not np.all(ok):
             bad = float(heights[~ok][0])
-            rng = f"(0, {2 * cyl.radius:g})" if tip else f"[0, {2 * cyl.radius:g}]"
+            rng = f"(0, {diameter:g})" if tip else f"[0, {diameter:g}]"
             raise ValueError(f"{flag} must be in {rng} m (2R), got {bad!r}")
         load = 0.0 if args.load is None else args.load
         check_si("--load", load, Eh, "F_over_Eh2", "N/m")
         if args.push is not None:
             check_si("--push", args.push, Eh, "T_over_Ea", "N/m")
-        rho, s = cyl.R_over_h, cyl.sigma0_over_E
-        r = args.h1_over_h2 if args.h1 is None else args.h1 / cyl.adhesion_range
-        tau, F, H = args.tau0 / cyl.modulus, load / Eh, heights / cyl.radius
-        Q = None if args.push is None else args.push / Eh
-    res = push(rho, r, s, tau, F, H, Q, tip_friction=args.tip_friction)
+        h1 = args.h1 if args.h1 is not None else cyl.in_si(args.h1_over_h2, "h")
+        Q = args.push
+        res: Any = cylinder_push(
+            cyl,
+            friction_stress=args.tau0,
+            height=heights,
+            receding_range=h1,
+            normal_load=load,
+            push=args.push,
+            tip_friction=args.tip_friction,
+            length=args.length,
+        ).nondimensional
+    if cyl is None:
+        res = push(rho, r, s, tau, F, H, Q, tip_friction=args.tip_friction)
     show = [
         "H_over_R",
         "a_rest_over_R",
@@ -230,7 +239,11 @@ def _cmd_push(args: argparse.Namespace) -> int:
     extra: dict[str, Any] = {}
     if cyl is not None:
         params.update(si_parameters(args, cyl))
-        params.update(h1_m=r * cyl.adhesion_range, tau0_Pa=args.tau0, load_N_per_m=F * Eh)
+        h1_m, load_N_per_m = (
+            cyl.in_si(float(np.reshape(v, -1)[0]), unit)
+            for v, unit in ((res.h1_over_h2, "h"), (res.F_over_Eh2, "Eh"))
+        )
+        params.update(h1_m=h1_m, tau0_Pa=args.tau0, load_N_per_m=load_N_per_m)
         if Q is not None:
             params["push_N_per_m"] = args.push
         for key, name in (
@@ -239,27 +252,15 @@ def _cmd_push(args: argparse.Namespace) -> int:
         ):
             if getattr(args, key) is not None:
                 params[name] = getattr(args, key)
-        R = cyl.radius
-        extra.update(
-            H_m=np.multiply(res.H_over_R, R),
-            a_rest_m=np.multiply(res.a_rest_over_R, R),
-            a_slide_m=np.multiply(res.a_slide_over_R, R),
-            Q_roll_N_per_m=np.multiply(res.Q_roll_over_Eh2, Eh),
-            Q_slide_N_per_m=np.multiply(res.Q_slide_over_Eh2, Eh),
-            Q_onset_N_per_m=np.multiply(res.Q_onset_over_Eh2, Eh),
-            H_critical_m=np.multiply(res.H_critical_over_R, R),
-        )
+        fields = ["H_over_R", "a_rest_over_R", "a_slide_over_R", "Q_roll_over_Eh2"]
+        fields += ["Q_slide_over_Eh2", "Q_onset_over_Eh2", "H_critical_over_R"]
         show = ["H_m", "a_slide_m", "Q_roll_N_per_m", "Q_slide_N_per_m", "H_critical_m"]
         if args.tip_friction is not None:
-            extra["H_arm_m"] = np.multiply(res.H_arm_over_R, R)
+            fields.append("H_arm_over_R")
             show.insert(1, "H_arm_m")
+        extra.update(cyl.columns(res, tuple(fields), length=args.length))
         show += ["first_motion"] + (["state"] if Q is not None else [])
         if args.length is not None:
-            L = args.length
-            extra.update(
-                Q_roll_total_N=np.multiply(res.Q_roll_over_Eh2, Eh * L),
-                Q_slide_total_N=np.multiply(res.Q_slide_over_Eh2, Eh * L),
-            )
             show += ["Q_roll_total_N", "Q_slide_total_N"]
     table = table_from_result(
         res,
@@ -302,5 +303,5 @@ def _works_to_ranges(args: argparse.Namespace) -> None:
         _check_cylinder_si(
             args.radius, args.modulus, {"work_of_adhesion": w1, "equilibrium_spacing": args.z0}
         )
-    s0, h1 = adhesion_from_work(w1, args.z0)
-    args.sigma0, args.h, args.h1, args.z0 = s0, w2 / s0, h1, None
+    args.sigma0, args.h, args.h1 = hysteresis_adhesion(w1, w2, args.z0)
+    args.z0 = None

@@ -13,7 +13,8 @@ from typing import Any
 
 import numpy as np
 
-from ..domain import TooWideError, check_si
+from ..cylinder import sliding_pull_off_force
+from ..domain import check_si
 from ..output import table_from_result
 from ..sliding import sliding_contact, sliding_contact_for_load, sliding_pull_off
 from ._options import (
@@ -31,7 +32,6 @@ from ._options import (
     si_given,
     si_loads,
     si_parameters,
-    too_wide,
 )
 
 __all__ = ["register"]
@@ -106,7 +106,11 @@ def register(sub: Any) -> None:
 
 
 def _setup(args: argparse.Namespace):
-    """(R/h2, h1/h2, sigma0/E, tau0/E or None, Cylinder or None) from the arguments."""
+    """(R/h2, h1/h2, sigma0/E, tau0/E or None, Cylinder or None) from the arguments.
+
+    With SI inputs h1/h2 and tau0/E are None: the cylinder's method takes ``--h1`` [m] (or
+    ``--h1-over-h2``) and ``--tau0`` [Pa].
+    """
     si = si_given(args, extra=("h1", "tau0"))
     nd = any(v is not None for v in (args.R_over_h2, args.sigma0_over_E, args.tau0_over_E))
     if si and nd:
@@ -128,35 +132,45 @@ def _setup(args: argparse.Namespace):
     if args.tau0 is not None and not (np.isfinite(args.tau0) and args.tau0 >= 0):
         raise ValueError(f"--tau0 must be a finite number >= 0, got {args.tau0!r}")
     if args.h1 is not None:
-        check_si("--h1", args.h1, cyl.adhesion_range, "h1_over_h2", "m")
+        check_si("--h1", args.h1, cyl.scale("h"), "h1_over_h2", "m")
     if args.tau0 is not None:
-        check_si("--tau0", args.tau0, cyl.modulus, "friction_tau0_over_E", "Pa")
-    r = args.h1_over_h2 if args.h1 is None else args.h1 / cyl.adhesion_range
-    tau = None if args.tau0 is None else args.tau0 / cyl.modulus
-    return cyl.R_over_h, r, cyl.sigma0_over_E, tau, cyl
+        check_si("--tau0", args.tau0, cyl.scale("E"), "friction_tau0_over_E", "Pa")
+    return cyl.R_over_h, None, cyl.sigma0_over_E, None, cyl
+
+
+def _ratio(res) -> float:
+    """The one h1/h2 of a result."""
+    return float(np.reshape(res.h1_over_h2, -1)[0])
 
 
 def _cmd_slide(args: argparse.Namespace) -> int:
     rho, r, s, tau, cyl = _setup(args)
     A = half_widths(args, cyl, "F_over_Eh2")
+    how: dict[str, Any] = dict(method=args.method, on_failure="report")
+    if cyl is not None:  # the SI layer: h1 [m] or h1/h2, tau0 [Pa]
+        how.update(receding_range=args.h1, h1_over_h2=args.h1_over_h2, friction_stress=args.tau0)
     if A is not None:
-        res = sliding_contact(
-            A, rho, r, s, tau0_over_E=tau, method=args.method, on_failure="report"
-        )
+        if cyl is None:
+            res = sliding_contact(A, rho, r, s, tau0_over_E=tau, **how)
+        else:  # A in m
+            res = cyl.sliding(contact_half_width=A, **how)
         ok = np.asarray(res.converged, bool).reshape(-1)
         state = np.where(ok, "contact", "not-converged")
         reason = np.full(ok.shape, None, dtype=object)
+        A_over_R = np.reshape(res.a_over_R, -1)
         for i in np.flatnonzero(~ok):
-            reason[i] = f"the {args.method} solver did not converge at a_over_R={float(A[i])!r}"
+            reason[i] = (
+                f"the {args.method} solver did not converge at a_over_R={float(A_over_R[i])!r}"
+            )
         given = "a_over_R"
     else:
-        F = np.asarray(args.F_over_Eh2, float) if cyl is None else si_loads(args, cyl, "F_over_Eh2")
-        try:
-            res = sliding_contact_for_load(
-                F, rho, r, s, tau0_over_E=tau, method=args.method, on_failure="report"
-            )
-        except TooWideError as e:
-            raise e if cyl is None else too_wide(e, args, cyl) from None
+        if cyl is None:
+            F = np.asarray(args.F_over_Eh2, float)
+            res = sliding_contact_for_load(F, rho, r, s, tau0_over_E=tau, **how)
+        else:
+            load = si_loads(args, cyl, "F_over_Eh2")
+            res = cyl.sliding(load=load, **how)
+            F = cyl.over(load, "Eh")
         state = np.asarray(res.state).reshape(-1)
         reason = np.full(state.shape, None, dtype=object)
         # a state that misses its tolerance is marked, as for given widths
@@ -166,13 +180,17 @@ def _cmd_slide(args: argparse.Namespace) -> int:
             reason[i] = f"the {args.method} solver did not converge at F_over_Eh2={Fi!r}"
         state = np.where(missed, "not-converged", state)
         if np.any(state == "no-equilibrium"):
-            po = sliding_pull_off(rho, r, s) if s > 0 else None
-            unit, scale = ("N/m", cyl.modulus * cyl.adhesion_range) if cyl else ("E h2", 1.0)
+            if s == 0:
+                force = None
+            elif cyl is None:
+                force = f"{sliding_pull_off(rho, r, s).F_pulloff_over_Eh2:.6g} E h2"
+            else:
+                force = f"{sliding_pull_off_force(cyl, _ratio(res)):.6g} N/m"
             for i in np.flatnonzero(state == "no-equilibrium"):
                 reason[i] = (
                     "no steadily sliding contact carries this load: it is below the pull-off "
-                    f"force {po.F_pulloff_over_Eh2 * scale:.6g} {unit}"
-                    if po is not None
+                    f"force {force}"
+                    if force is not None
                     else "without adhesion (sigma0 = 0) the load must be > 0"
                 )
         given = "F_over_Eh2"
@@ -180,37 +198,24 @@ def _cmd_slide(args: argparse.Namespace) -> int:
     extra: dict[str, Any] = {"c1_minus_c2_over_R": np.subtract(res.c1_over_R, res.c2_over_R)}
     show = ["a_over_R", "c1_over_R", "c2_over_R", "e_over_R", "F_over_Eh2", "M_over_Eh2R"]
     drop = ["state"]
-    if tau is None:
+    if tau is None and args.tau0 is None:
         drop += ["tau0_over_E", "T_over_Eh2"]
     else:
         show.append("T_over_Eh2")
     show.append("stable")
     if cyl is not None:
         params.update(si_parameters(args, cyl))
-        params["h1_m"] = r * cyl.adhesion_range
-        R, Eh = cyl.radius, cyl.modulus * cyl.adhesion_range
-        extra.update(
-            a_m=np.multiply(res.a_over_R, R),
-            c1_m=np.multiply(res.c1_over_R, R),
-            c2_m=np.multiply(res.c2_over_R, R),
-            e_m=np.multiply(res.e_over_R, R),
-            F_N_per_m=np.multiply(res.F_over_Eh2, Eh),
-            M_N=np.multiply(res.M_over_Eh2R, Eh * R),
-        )
+        params["h1_m"] = cyl.in_si(_ratio(res), "h")
+        fields = ["a_over_R", "c1_over_R", "c2_over_R", "e_over_R", "F_over_Eh2", "M_over_Eh2R"]
         show += ["a_m", "F_N_per_m", "M_N"]
-        if tau is not None:
+        if args.tau0 is not None:
             params["tau0_Pa"] = args.tau0
-            extra["T_N_per_m"] = np.multiply(res.T_over_Eh2, Eh)
+            fields.append("T_over_Eh2")
             show.append("T_N_per_m")
+        extra.update(cyl.columns(res, tuple(fields), length=args.length))
         if args.length is not None:
-            L = args.length
-            extra.update(
-                F_total_N=np.multiply(res.F_over_Eh2, Eh * L),
-                M_total_N_m=np.multiply(res.M_over_Eh2R, Eh * R * L),
-            )
             show += ["F_total_N", "M_total_N_m"]
-            if tau is not None:
-                extra["T_total_N"] = np.multiply(res.T_over_Eh2, Eh * L)
+            if args.tau0 is not None:
                 show.append("T_total_N")
     extra.update(state=state, reason=reason)
     if np.any(state != "contact"):

@@ -282,13 +282,13 @@ def _run(args: argparse.Namespace, rolling: bool) -> int:
 
 
 def _run_si(args, rolling, coulomb, cyl: Cylinder, state, values, d, law) -> int:
-    E = cyl.modulus
     if coulomb:
         fr: dict[str, Any] = dict(friction_coefficient=args.mu)
     else:
         if len(_given(args, "tau0", "tau0_over_E")) != 1:
             raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
-        fr = dict(friction_stress=args.tau0 if args.tau0 is not None else args.tau0_over_E * E)
+        tau0 = args.tau0 if args.tau0 is not None else cyl.in_si(args.tau0_over_E, "E")
+        fr = dict(friction_stress=tau0)
     fn = cylinder_steady_rolling if rolling else cylinder_sliding_initiation
     contact = cyl.contact(load=args.load, on_failure="report")
     params: dict[str, Any] = dict(law)
@@ -298,17 +298,18 @@ def _run_si(args, rolling, coulomb, cyl: Cylinder, state, values, d, law) -> int
         # the normal load is below the pull-off force: no tangential state exists
         return _pulled_off(args, rolling, values, state, params, cyl)
     a_m = contact.contact_half_width
+    how: dict[str, Any] = dict(**fr, method=args.method, on_failure="report")
     if state in ("T_over_Ea", "T_over_muF"):
-        T = values * E * a_m if state == "T_over_Ea" else values * args.mu * args.load
-        res = fn(cyl, args.load, tangential_load=T, **fr, method=args.method, on_failure="report")
+        over = "Ea" if state == "T_over_Ea" else "muF"
+        mu = dict(friction_coefficient=args.mu)
+        T = cyl.tangential_load(args.load, values, over=over, **mu)  # type: ignore[arg-type]
+        res = fn(cyl, args.load, tangential_load=T, **how)
     elif state == "tangential_load":
-        res = fn(
-            cyl, args.load, tangential_load=values, **fr, method=args.method, on_failure="report"
-        )
+        res = fn(cyl, args.load, tangential_load=values, **how)
     else:
-        res = fn(cyl, args.load, d_over_a=d, **fr, method=args.method, on_failure="report")
+        res = fn(cyl, args.load, d_over_a=d, **how)
     params.update(
-        a_over_R=a_m / cyl.radius,
+        a_over_R=cyl.over(a_m, "R"),
         a_m=a_m,
         T_full_slip_N_per_m=float(np.reshape(res.full_slip_load, -1)[0]),
     )
@@ -321,9 +322,9 @@ def _run_si(args, rolling, coulomb, cyl: Cylinder, state, values, d, law) -> int
         "T_N_per_m": res.tangential_load,
     }
     if args.length is not None:
-        extra["T_total_N"] = np.multiply(res.tangential_load, args.length)
-        params["F_total_N"] = args.load * args.length
-        params["T_full_slip_total_N"] = params["T_full_slip_N_per_m"] * args.length
+        extra["T_total_N"] = cyl.total(res.tangential_load, args.length)
+        params["F_total_N"] = cyl.total(args.load, args.length)
+        params["T_full_slip_total_N"] = cyl.total(params["T_full_slip_N_per_m"], args.length)
     table = _table(args, res.nondimensional, rolling, coulomb, params, extra)
     emit(args, table)
     return 0

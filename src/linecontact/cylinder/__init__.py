@@ -7,8 +7,9 @@ paper's groups, call the nondimensional solvers (:mod:`linecontact.normal`,
 [Pa], forces per unit length of cylinder [N/m], work of adhesion [J/m^2]. Materials and
 adhesion conventions: :mod:`linecontact.materials`.
 
-The package's modules: ``_cylinder.py`` (:class:`Cylinder`), ``_problems.py`` (the tangential
-problems, the pushed fibre, the load histories), ``_results.py`` (the SI result classes),
+The package's modules: ``_cylinder.py`` (:class:`Cylinder`, and :data:`SI_COLUMNS`, the SI
+columns of the command line), ``_problems.py`` (the tangential problems, the pushed fibre, the
+load histories), ``_sliding.py`` (steady sliding), ``_results.py`` (the SI result classes),
 ``_checks.py`` (the plausible ranges of the SI inputs and the checks of the widths). Import
 from ``linecontact.cylinder``: every name is here.
 """
@@ -34,7 +35,7 @@ from ._checks import (
     _warn_widths,
     _which,
 )
-from ._cylinder import Cylinder
+from ._cylinder import SI_COLUMNS, Cylinder
 from ._problems import (
     _cylinder_tangential,
     _full_slip,
@@ -57,6 +58,7 @@ from ._results import (
     CylinderTangential,
     CylinderTangentialHistory,
 )
+from ._sliding import cylinder_sliding, hysteresis_adhesion, sliding_pull_off_force
 
 __all__ = [
     "CylinderPush",
@@ -71,6 +73,7 @@ __all__ = [
     "CylinderTangential",
     "CylinderTangentialHistory",
     "cylinder_cyclic_loss",
+    "cylinder_sliding",
     "cylinder_sliding_initiation",
     "cylinder_tangential_history",
     "cylinder_steady_rolling",

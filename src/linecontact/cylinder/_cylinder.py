@@ -29,6 +29,7 @@ from ..materials import (
     composite_modulus,
     dundurs_beta,
 )
+from ..units import Scales, to_si
 from ._checks import (
     _CHECKED,
     _S_LJ,
@@ -336,15 +337,9 @@ class Cylinder:
 
     # problems ----------------------------------------------------------------------------
     def _wrap(self, r: _normal.NormalContact) -> CylinderContact:
-        R, Eh = self.radius, self.modulus * self.adhesion_range
-
-        def si(v, unit):
-            v = np.multiply(v, unit)
-            return v.item() if np.ndim(v) == 0 else v
-
-        a = si(r.a_over_R, R)
-        _warn_widths(a, R, stacklevel=4)
-        return CylinderContact(a, si(r.c_over_R, R), si(r.F_over_Eh, Eh), r.stable, r.state, r)
+        si = to_si(r, Scales.of(self))
+        _warn_widths(si["contact_half_width"], self.radius, stacklevel=4)
+        return CylinderContact(**si, stable=r.stable, state=r.state, nondimensional=r)
 
     @overload
     def contact(
@@ -510,23 +505,13 @@ class Cylinder:
                 f"{e.error_estimate_over_Eh * Eh:.2g} N/m); the cylinder has pulled off"
             ) from None
 
-        def si(v, unit):
-            v = np.multiply(v, unit)
-            return v.item() if np.ndim(v) == 0 else v
-
-        load_given = (
+        si = to_si(r, Scales.of(self))
+        # the load as given (not back from F/(E h))
+        si["load"] = (
             F.item() if np.ndim(r.F_over_Eh) == 0 else np.broadcast_to(F, np.shape(r.F_over_Eh))
         )
-        _warn_widths(si(r.a_over_R, self.radius), self.radius, stacklevel=4)
-        return CylinderLennardJonesContact(
-            si(r.a_over_R, self.radius),
-            si(r.central_gap_over_h, self.adhesion_range),
-            load_given,
-            si(r.error_estimate_over_Eh, Eh),
-            r.stable,
-            r.state,
-            r,
-        )
+        _warn_widths(si["contact_half_width"], self.radius, stacklevel=4)
+        return CylinderLennardJonesContact(**si, stable=r.stable, state=r.state, nondimensional=r)
 
     @overload
     def pull_off(self, *, law: Literal["dugdale"] = "dugdale") -> CylinderPullOff: ...
@@ -545,21 +530,15 @@ class Cylinder:
         if law == "lennard-jones":
             return self._pull_off_lj()
         p = _normal.pull_off(self.R_over_h, self.sigma0_over_E)
-        Eh = self.modulus * self.adhesion_range
+        si = to_si(p, Scales.of(self))
         _warn_widths(
-            p.a_over_R_at_pulloff * self.radius,
+            si["contact_half_width_at_pull_off"],
             self.radius,
             "the contact half-width at pull-off",
             _ZERO_WIDTH if p.mechanism == "zero-width" else "",
             stacklevel=3,
         )
-        return CylinderPullOff(
-            p.F_pulloff_over_Eh * Eh,
-            p.a_over_R_at_pulloff * self.radius,
-            p.mechanism,
-            p.F_zero_width_over_Eh * Eh,
-            p,
-        )
+        return CylinderPullOff(**si, mechanism=p.mechanism, nondimensional=p)
 
     # the Lennard-Jones law (a law is a method here, as it is a module in linecontact.laws)
     def lennard_jones_contact(
@@ -593,19 +572,197 @@ class Cylinder:
 
         self._check_lennard_jones()
         q = _lj.pull_off(self.R_over_h, self.sigma0_over_E)
-        Eh = self.modulus * self.adhesion_range
+        si = {k: float(v) for k, v in to_si(q, Scales.of(self)).items()}
         _warn_widths(
-            q.a_over_R_at_pulloff * self.radius,
+            si["contact_half_width_at_pull_off"],
             self.radius,
             "the contact half-width at pull-off",
             "the repulsive region vanishes before the pull-off",
             stacklevel=4,
         )
-        return CylinderLennardJonesPullOff(
-            float(q.F_pulloff_over_Eh) * Eh,
-            float(q.error_estimate_over_Eh) * Eh,
-            float(q.a_over_R_at_pulloff) * self.radius,
-            float(q.central_gap_over_h_at_pulloff) * self.adhesion_range,
-            float(q.F_jump_in_over_Eh) * Eh,
-            q,
+        return CylinderLennardJonesPullOff(**si, nondimensional=q)
+
+    # the SI form of the groups (the one place the command line's SI columns are formed) ---
+    def scale(self, name: str) -> float:
+        """The SI unit of a group: ``"R"``, ``"h"`` [m], ``"E"`` [Pa], ``"Eh"`` [N/m], ``"EhR"``.
+
+        ``"EhR"`` [N] is the unit of a moment per unit length.
+
+        >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
+        >>> cyl.scale("Eh")
+        50.0
+        """
+        R, E, h = self.radius, self.modulus, self.adhesion_range
+        units = {"R": R, "h": h, "E": E, "Eh": E * h, "EhR": E * h * R}
+        if name not in units:
+            raise ValueError(f"scale must be one of {', '.join(units)}, got {name!r}")
+        return units[name]
+
+    def in_si(self, value: ArrayLike, scale: str) -> Any:
+        """``value`` given over the group ``scale`` (:meth:`scale`) in SI units."""
+        return np.multiply(value, self.scale(scale))
+
+    def over(self, value: ArrayLike, scale: str) -> Any:
+        """``value`` in SI units over the group ``scale`` (:meth:`scale`); :meth:`in_si` undone."""
+        return np.divide(value, self.scale(scale))
+
+    @staticmethod
+    def total(value: Any, length: float | None) -> Any:
+        """A value per unit length (N/m, J/m, N m/m) over a fibre of ``length`` [m].
+
+        None without a length; otherwise ``value * length`` ([N], [J], [N m]).
+        """
+        if length is None:
+            return None
+        return np.multiply(value, positive("length", length))
+
+    def tangential_load(
+        self,
+        normal_load: float,
+        value: ArrayLike,
+        *,
+        over: Literal["Ea", "muF"] = "Ea",
+        friction_coefficient: float | None = None,
+    ) -> Any:
+        """A tangential load [N/m] given over ``E a`` or over ``mu F`` (Coulomb).
+
+        ``a`` is the half-width of the stable contact under ``normal_load`` ``F`` [N/m]
+        (:meth:`contact`), ``mu`` the ``friction_coefficient``: ``value * (E a)`` or
+        ``value * mu * F``.
+        """
+        if over == "muF":
+            if friction_coefficient is None:
+                raise ValueError("a load over mu F needs the friction_coefficient mu")
+            return np.multiply(np.multiply(value, friction_coefficient), normal_load)
+        if over != "Ea":
+            raise ValueError(f"over must be 'Ea' or 'muF', got {over!r}")
+        a = self.contact(load=normal_load).contact_half_width
+        return np.multiply(value, self.modulus * a)
+
+    def columns(
+        self, result: Any, fields: tuple[str, ...], *, length: float | None = None
+    ) -> dict[str, Any]:
+        """The SI columns of the nondimensional ``result`` of one of this cylinder's problems.
+
+        For each of ``fields`` (a field of ``result`` over its group, ``"a_over_R"``,
+        ``"F_over_Eh"``, ...) its SI column (``"a_m"``, ``"F_N_per_m"``, ...: the field times
+        its unit, :data:`SI_COLUMNS`), in that order; with ``length`` [m] then the totals
+        (``"F_total_N"``, ...) of the forces and moments among them, over the fibre: the field
+        times the unit's total over the fibre (``F_over_Eh * (E h L)``).
+        """
+        out: dict[str, Any] = {}
+        totals: dict[str, Any] = {}
+        for f in fields:
+            name, unit, total = SI_COLUMNS[f]
+            out[name] = self.in_si(getattr(result, f), unit)
+            if total is not None and length is not None:  # the field times (unit times L)
+                L = positive("length", length)
+                totals[total] = np.multiply(getattr(result, f), self.scale(unit) * L)
+        return {**out, **totals}
+
+    # the problems as methods (the tangential ones, the pushed fibre and the load histories
+    # stay functions: _problems.py imports Cylinder, a method calling them closes a circle) -
+    def load_curve(
+        self,
+        *,
+        max_half_width: float | None = None,
+        num: int = 200,
+        num_noncontact: int = 40,
+    ) -> Any:
+        """The load curve (:func:`linecontact.load_curve`) up to ``max_half_width`` [m].
+
+        Returns the nondimensional :class:`~linecontact.normal.LoadCurve`; its SI columns are
+        :meth:`columns`.
+        """
+        a_max = None if max_half_width is None else self.over(max_half_width, "R")
+        return _normal.load_curve(
+            self.R_over_h,
+            self.sigma0_over_E,
+            a_max_over_R=a_max,
+            num=num,
+            num_noncontact=num_noncontact,
         )
+
+    def lennard_jones_load_curve(self, *, max_load: float | None = None) -> Any:
+        """The load curve under the Lennard-Jones law up to the compressive ``max_load`` [N/m].
+
+        :func:`linecontact.laws.lennard_jones.load_curve`, nondimensional; its SI columns are
+        :meth:`columns`.
+        """
+        from .. import lennard_jones_groups as _ljg
+        from ..laws import lennard_jones as _lj
+
+        self._check_lennard_jones()
+        F_max = None
+        if max_load is not None:
+            F_max = float(_ljg.load_max_over_Eh(self.R_over_h, self.sigma0_over_E))
+            limit = self.in_si(F_max, "Eh")
+            if max_load > limit:
+                raise ValueError(
+                    f"max_load={max_load!r} N/m is beyond the loads the Lennard-Jones solver is "
+                    f"asked for, up to {limit:.6g} N/m here (ten times the rigid cylinder's "
+                    "pull-off); at such loads both laws approach Hertz: use law='dugdale'"
+                )
+            F_max = self.over(max_load, "Eh")
+        return _lj.load_curve(self.R_over_h, self.sigma0_over_E, F_max_over_Eh=F_max)
+
+    def sliding(
+        self,
+        *,
+        receding_range: float | None = None,
+        h1_over_h2: float | None = None,
+        contact_half_width: ArrayLike | None = None,
+        load: ArrayLike | None = None,
+        friction_stress: float | None = None,
+        method: Literal["closed-form", "collocation"] = "collocation",
+        on_failure: FailurePolicy = RAISE,
+    ) -> Any:
+        """Steady sliding in SI units: :func:`~linecontact.cylinder.cylinder_sliding`.
+
+        The cylinder's range is the leading edge's ``h2``; the trailing edge's ``h1`` [m] is
+        ``receding_range`` (or give ``h1_over_h2``); ``contact_half_width`` [m] or ``load``
+        [N/m]; ``friction_stress`` ``tau0`` [Pa] adds the friction force.
+        """
+        from ._sliding import cylinder_sliding
+
+        return cylinder_sliding(
+            self,
+            receding_range=receding_range,
+            h1_over_h2=h1_over_h2,
+            contact_half_width=contact_half_width,
+            load=load,
+            friction_stress=friction_stress,
+            method=method,
+            on_failure=on_failure,
+        )
+
+
+#: The SI column of each group the command line writes: ``field: (column, unit, total)``, the
+#: unit a name of :meth:`Cylinder.scale`, the total's column over a fibre's length (or None).
+SI_COLUMNS: dict[str, tuple[str, str, str | None]] = {
+    "a_over_R": ("a_m", "R", None),
+    "c_over_R": ("c_m", "R", None),
+    "central_gap_over_h": ("central_gap_m", "h", None),
+    "F_over_Eh": ("F_N_per_m", "Eh", "F_total_N"),
+    "error_estimate_over_Eh": ("error_estimate_N_per_m", "Eh", None),
+    "F_pulloff_over_Eh": ("F_pulloff_N_per_m", "Eh", "F_pulloff_total_N"),
+    "a_over_R_at_pulloff": ("a_at_pulloff_m", "R", None),
+    "central_gap_over_h_at_pulloff": ("central_gap_at_pulloff_m", "h", None),
+    "F_zero_width_over_Eh": ("F_zero_width_N_per_m", "Eh", None),
+    # steady sliding (h = h2, the leading edge's range)
+    "c1_over_R": ("c1_m", "R", None),
+    "c2_over_R": ("c2_m", "R", None),
+    "e_over_R": ("e_m", "R", None),
+    "F_over_Eh2": ("F_N_per_m", "Eh", "F_total_N"),
+    "M_over_Eh2R": ("M_N", "EhR", "M_total_N_m"),
+    "T_over_Eh2": ("T_N_per_m", "Eh", "T_total_N"),
+    # the pushed fibre
+    "H_over_R": ("H_m", "R", None),
+    "H_arm_over_R": ("H_arm_m", "R", None),
+    "a_rest_over_R": ("a_rest_m", "R", None),
+    "a_slide_over_R": ("a_slide_m", "R", None),
+    "Q_roll_over_Eh2": ("Q_roll_N_per_m", "Eh", "Q_roll_total_N"),
+    "Q_slide_over_Eh2": ("Q_slide_N_per_m", "Eh", "Q_slide_total_N"),
+    "Q_onset_over_Eh2": ("Q_onset_N_per_m", "Eh", None),
+    "H_critical_over_R": ("H_critical_m", "R", None),
+}

@@ -28,6 +28,7 @@ from ..tangential import (
 )
 from ..tangential.initiation import _CATTANEO_MINDLIN, _INITIATION
 from ..tangential.rolling import _CARTER, _ROLLING
+from ..units import Scales, to_si
 from ._checks import (
     _first,
     _plausible,
@@ -132,15 +133,15 @@ def _cylinder_tangential(
             raise _full_slip(st, full, "2 a tau0", st_name) from None
         friction = "constant"
     a = np.asarray(contact.contact_half_width)
-    Tn = np.multiply(r.T_over_Ea, E * a)
+    si = to_si(r, Scales.of(cylinder, a=a))
     creep = r.creep_over_V if rolling else None
     return CylinderTangential(
         problem,
         friction,
         _scalar(F + 0 * a),
         _scalar(a),
-        _scalar(np.multiply(r.d_over_a, a)),
-        _scalar(Tn),
+        si["stick_zone_end"],
+        si["tangential_load"],
         _scalar(full),
         creep,
         r.state,
@@ -428,21 +429,11 @@ def cylinder_push(
             f"{e.a_over_R:.6g} radii: {e.limit}"
         ) from None
 
-    def si(v, unit):
-        out = np.multiply(v, unit)
-        return out.item() if np.ndim(out) == 0 else out
-
-    _warn_widths(si(p.a_rest_over_R, R), R, "the contact half-width at rest")
-    _warn_widths(si(p.a_slide_over_R, R), R, "the contact half-width while sliding")
+    si = to_si(p, Scales.of(cylinder))  # h2: the cylinder's (advancing) range
+    _warn_widths(si["rest_half_width"], R, "the contact half-width at rest")
+    _warn_widths(si["slide_half_width"], R, "the contact half-width while sliding")
     return CylinderPush(
-        height=si(p.H_over_R, R),
-        moment_arm=si(p.H_arm_over_R, R),
-        rest_half_width=si(p.a_rest_over_R, R),
-        slide_half_width=si(p.a_slide_over_R, R),
-        rolling_resistance=si(p.Q_roll_over_Eh2, Eh),
-        sliding_resistance=si(p.Q_slide_over_Eh2, Eh),
-        slip_onset=si(p.Q_onset_over_Eh2, Eh),
-        critical_height=si(p.H_critical_over_R, R),
+        **si,
         first_motion=p.first_motion,
         creep_ratio=p.creep_over_V,
         state=p.state,
@@ -553,16 +544,16 @@ def cylinder_tangential_history(
         tangential_history_coulomb,
         method,
     )
-    E = cylinder.modulus
+    si = to_si(h, Scales.of(cylinder, a=a))
     return CylinderTangentialHistory(
         law,
         F,
         a,
         full,
         T.reshape(-1),  # as given (not back from T/(E a))
-        np.asarray(h.c_over_a) * a,
-        np.asarray(h.displacement_over_a) * a,
-        np.asarray(h.dissipation_over_Ea2) * E * a * a,
+        si["stick_zone_half_width"],
+        si["displacement"],
+        si["dissipation"],
         h.state,
         h,
     )
@@ -616,15 +607,15 @@ def cylinder_cyclic_loss(
         cyclic_loss_coulomb,
         method,
     )
-    E = cylinder.modulus
+    si = to_si(w, Scales.of(cylinder, a=a))
     return CylinderCyclicLoss(
         law,
         F,
         a,
         full,
         _scalar(A + 0 * np.asarray(w.W_over_Ea2)),  # as given, in the result's shape
-        _scalar(np.multiply(w.W_over_Ea2, E * a * a)),
-        _scalar(np.multiply(w.c_over_a, a)),
+        si["energy_per_cycle"],
+        si["stick_zone_half_width"],
         w.state,
         w,
     )

@@ -1,20 +1,25 @@
-"""The SI result classes of the cylinder's problems (frozen dataclasses)."""
+"""The SI result classes of the cylinder's problems (frozen dataclasses, each a ``Result``).
+
+Their SI fields are built by :func:`linecontact.units.to_si` from the scales that their
+nondimensional results declare.
+"""
 
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from numpy.typing import NDArray
 
 from .. import normal as _normal
+from ..results import Result
 
 if TYPE_CHECKING:  # imported where used: the Lennard-Jones solver needs scipy
     from ..lennard_jones_groups import LennardJonesContact
 
 
 @dataclass(frozen=True)
-class CylinderContact:
+class CylinderContact(Result):
     """A normal contact state in SI units, with its nondimensional result.
 
     Attributes
@@ -43,7 +48,7 @@ class CylinderContact:
 
 
 @dataclass(frozen=True)
-class CylinderPullOff:
+class CylinderPullOff(Result):
     """Pull-off in SI units.
 
     Attributes
@@ -67,7 +72,7 @@ class CylinderPullOff:
 
 
 @dataclass(frozen=True)
-class CylinderLennardJonesContact:
+class CylinderLennardJonesContact(Result):
     """A contact state under the Lennard-Jones law in SI units, with its nondimensional result.
 
     Attributes
@@ -99,7 +104,7 @@ class CylinderLennardJonesContact:
 
 
 @dataclass(frozen=True)
-class CylinderLennardJonesPullOff:
+class CylinderLennardJonesPullOff(Result):
     """Pull-off under the Lennard-Jones law in SI units.
 
     Attributes
@@ -126,7 +131,7 @@ class CylinderLennardJonesPullOff:
 
 
 @dataclass(frozen=True)
-class CylinderTangential:
+class CylinderTangential(Result):
     """A tangential state of a :class:`~linecontact.cylinder.Cylinder`, in SI units.
 
     Attributes
@@ -156,6 +161,8 @@ class CylinderTangential:
         The normal contact.
     """
 
+    inputs: ClassVar[tuple[str, ...]] = ("problem", "friction")
+
     problem: str
     friction: str
     normal_load: NDArray | float
@@ -170,7 +177,7 @@ class CylinderTangential:
 
 
 @dataclass(frozen=True)
-class CylinderPush:
+class CylinderPush(Result):
     """A pushed :class:`~linecontact.cylinder.Cylinder` (``docs/push.md``), in SI units.
 
     Attributes
@@ -197,6 +204,8 @@ class CylinderPush:
     nondimensional : Push
         The underlying result with its diagnostics.
     """
+
+    inputs: ClassVar[tuple[str, ...]] = ("length",)
 
     height: NDArray | float
     moment_arm: NDArray | float
@@ -229,7 +238,7 @@ class CylinderPush:
 
 
 @dataclass(frozen=True)
-class CylinderTangentialHistory:
+class CylinderTangentialHistory(Result):
     """A tangential load history of a :class:`~linecontact.cylinder.Cylinder`, in SI units.
 
     Attributes
@@ -255,6 +264,13 @@ class CylinderTangentialHistory:
         With the diagnostics, and ``traction``, ``slip`` and ``zones``.
     """
 
+    inputs: ClassVar[tuple[str, ...]] = (
+        "friction",
+        "normal_load",
+        "contact_half_width",
+        "full_slip_load",
+    )
+
     friction: str
     normal_load: float
     contact_half_width: float
@@ -268,7 +284,7 @@ class CylinderTangentialHistory:
 
 
 @dataclass(frozen=True)
-class CylinderCyclicLoss:
+class CylinderCyclicLoss(Result):
     """Cyclic tangential loading of a :class:`~linecontact.cylinder.Cylinder`, in SI units.
 
     Attributes
@@ -285,6 +301,13 @@ class CylinderCyclicLoss:
     state : ndarray of str or str
     nondimensional : CyclicLoss or CoulombCyclicLoss
     """
+
+    inputs: ClassVar[tuple[str, ...]] = (
+        "friction",
+        "normal_load",
+        "contact_half_width",
+        "full_slip_load",
+    )
 
     friction: str
     normal_load: float

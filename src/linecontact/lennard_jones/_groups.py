@@ -47,6 +47,13 @@ class LennardJonesPullOff(Result):
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E")
+    si: ClassVar[dict[str, tuple[str, str, str]]] = {
+        "F_pulloff_over_Eh": ("pull_off_force", "Eh", "N/m"),
+        "error_estimate_over_Eh": ("error_estimate", "Eh", "N/m"),
+        "a_over_R_at_pulloff": ("contact_half_width_at_pull_off", "R", "m"),
+        "central_gap_over_h_at_pulloff": ("central_gap_at_pull_off", "h", "m"),
+        "F_jump_in_over_Eh": ("jump_in_force", "Eh", "N/m"),
+    }
 
     F_pulloff_over_Eh: NDArray | float
     a_over_R_at_pulloff: NDArray | float

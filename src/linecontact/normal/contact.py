@@ -69,6 +69,11 @@ class NormalContact(Result):
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E", "method")
+    si: ClassVar[dict[str, tuple[str, str, str]]] = {
+        "a_over_R": ("contact_half_width", "R", "m"),
+        "c_over_R": ("adhesive_zone_half_width", "R", "m"),
+        "F_over_Eh": ("load", "Eh", "N/m"),
+    }
     derived: ClassVar[tuple[str, ...]] = ("c_over_a",)
 
     a_over_R: NDArray | float

@@ -63,6 +63,11 @@ class PullOff(Result):
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E")
+    si: ClassVar[dict[str, tuple[str, str, str]]] = {
+        "F_pulloff_over_Eh": ("pull_off_force", "Eh", "N/m"),
+        "a_over_R_at_pulloff": ("contact_half_width_at_pull_off", "R", "m"),
+        "F_zero_width_over_Eh": ("zero_width_force", "Eh", "N/m"),
+    }
 
     F_pulloff_over_Eh: NDArray | float
     a_over_R_at_pulloff: NDArray | float

@@ -12,6 +12,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
+from typing import ClassVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -296,6 +297,12 @@ def _states(sliding, stick, shape):
 @dataclass(frozen=True)
 class _Tangential(Result):
     """Fields shared by the four tangential results (see the subclasses)."""
+
+    #: the SI form (``a`` the contact half-width); every subclass has ``T_over_Ea``
+    si: ClassVar[dict[str, tuple[str, str, str]]] = {
+        "d_over_a": ("stick_zone_end", "a", "m"),
+        "T_over_Ea": ("tangential_load", "Ea", "N/m"),
+    }
 
     d_over_a: NDArray | float
     T_over_T_full_slip: NDArray | float

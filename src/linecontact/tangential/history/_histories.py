@@ -32,6 +32,13 @@ _SLIDING = "sliding"
 class _History(Result):
     """Shared fields and methods of the two history results (one point per step)."""
 
+    si: ClassVar[dict[str, tuple[str, str, str]]] = {
+        "T_over_Ea": ("tangential_load", "Ea", "N/m"),
+        "c_over_a": ("stick_zone_half_width", "a", "m"),
+        "displacement_over_a": ("displacement", "a", "m"),
+        "dissipation_over_Ea2": ("dissipation", "Ea2", "J/m"),
+    }
+
     step: NDArray
     T_over_Ea: NDArray
     T_over_T_full_slip: NDArray

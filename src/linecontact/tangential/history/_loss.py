@@ -30,6 +30,12 @@ _EPS_LOSS = float(np.finfo(float).eps)
 
 @dataclass(frozen=True)
 class _Cyclic(Result):
+    si: ClassVar[dict[str, tuple[str, str, str]]] = {
+        "T_amplitude_over_Ea": ("amplitude", "Ea", "N/m"),
+        "W_over_Ea2": ("energy_per_cycle", "Ea2", "J/m"),
+        "c_over_a": ("stick_zone_half_width", "a", "m"),
+    }
+
     T_amplitude_over_Ea: NDArray | float
     T_amplitude_over_T_full_slip: NDArray | float
     W_over_Ea2: NDArray | float

@@ -1,0 +1,110 @@
+"""Steady sliding of a :class:`~linecontact.cylinder.Cylinder` in SI units (Eqs 18-22)."""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from .. import domain as _domain
+from .._validation import RAISE, FailurePolicy, check_array, failure_policy, positive, scalar
+
+
+def cylinder_sliding(
+    cylinder: Any,
+    *,
+    receding_range: float | None = None,
+    h1_over_h2: float | None = None,
+    contact_half_width: ArrayLike | None = None,
+    load: ArrayLike | None = None,
+    friction_stress: float | None = None,
+    method: Literal["closed-form", "collocation"] = "collocation",
+    on_failure: FailurePolicy = RAISE,
+) -> Any:
+    """Steady sliding of ``cylinder`` (:func:`linecontact.sliding.sliding_contact`) in SI units.
+
+    The cylinder's adhesion is the leading (advancing) edge's: ``sigma0`` and the range
+    ``h2``; the trailing (receding) edge has the same ``sigma0`` and the range ``h1``.
+
+    Parameters
+    ----------
+    cylinder : Cylinder
+    receding_range : float, optional
+        ``h1`` [m]; or give ``h1_over_h2`` (exactly one).
+    contact_half_width : array_like, optional
+        ``a`` [m]; or give ``load`` [N/m], compressive positive (exactly one): the stable
+        sliding contact that carries it (:func:`~linecontact.sliding.sliding_contact_for_load`).
+    friction_stress : float, optional
+        ``tau0`` [Pa], ``>= 0``: adds the friction force ``2 a tau0``.
+    method, on_failure
+        As in :func:`~linecontact.sliding.sliding_contact`.
+
+    Returns
+    -------
+    SlidingContact
+        The nondimensional result (in ``h = h2``); its SI columns are
+        :meth:`Cylinder.columns`, the trailing range used is
+        ``cylinder.in_si(result.h1_over_h2, "h")``.
+    """
+    from ..sliding import sliding_contact, sliding_contact_for_load
+
+    policy = failure_policy(on_failure, where="Cylinder.sliding", accepts=())
+    if (receding_range is None) == (h1_over_h2 is None):
+        raise ValueError("give exactly one of receding_range [m] or h1_over_h2")
+    if (contact_half_width is None) == (load is None):
+        raise ValueError("give exactly one of contact_half_width [m] or load [N/m]")
+    if receding_range is not None:
+        h1 = positive("receding_range", receding_range)
+        _domain.check_si("receding_range", h1, cylinder.adhesion_range, "h1_over_h2", "m")
+        h1_over_h2 = cylinder.over(h1, "h")
+    tau = None
+    if friction_stress is not None:
+        t = scalar("friction_stress", friction_stress, low=0.0, low_inclusive=True)
+        _domain.check_si("friction_stress", t, cylinder.modulus, "friction_tau0_over_E", "Pa")
+        tau = cylinder.over(t, "E")
+    groups: tuple[Any, Any, Any] = (cylinder.R_over_h, h1_over_h2, cylinder.sigma0_over_E)
+    if contact_half_width is not None:
+        a = positive("contact_half_width", contact_half_width)
+        _domain.check_si("contact_half_width", a, cylinder.radius, "sliding_a_over_R", "m")
+        return sliding_contact(
+            cylinder.over(a, "R"), *groups, tau0_over_E=tau, method=method, on_failure=policy
+        )
+    F = check_array("load", load, low=-np.inf, low_inclusive=True)  # type: ignore[arg-type]
+    _domain.check_si("load", F, cylinder.scale("Eh"), "F_over_Eh2", "N/m")
+    try:
+        return sliding_contact_for_load(
+            cylinder.over(F, "Eh"), *groups, tau0_over_E=tau, method=method, on_failure=policy
+        )
+    except _domain.TooWideError as e:
+        Fi = float(np.reshape(F, -1)[e.index])
+        raise ValueError(
+            f"load={Fi!r} N/m needs a contact of half-width {e.a_over_R * cylinder.radius:.6g} "
+            f"m, {e.a_over_R:.6g} radii: {e.limit}"
+        ) from None
+
+
+def sliding_pull_off_force(cylinder: Any, h1_over_h2: float) -> float:
+    """The pull-off force of steady sliding [N/m] (``nan`` without adhesion)."""
+    from ..sliding import sliding_pull_off
+
+    if cylinder.cohesive_stress == 0:
+        return float("nan")
+    po = sliding_pull_off(cylinder.R_over_h, h1_over_h2, cylinder.sigma0_over_E)
+    return float(cylinder.in_si(po.F_pulloff_over_Eh2, "Eh"))
+
+
+def hysteresis_adhesion(
+    receding_work_of_adhesion: float, advancing_work_of_adhesion: float, equilibrium_spacing: float
+) -> tuple[float, float, float]:
+    """``(sigma0 [Pa], h2 [m], h1 [m])`` of a receding and an advancing work of adhesion.
+
+    One ``sigma0``, that of the receding ``w1`` with ``z0`` (the Maugis convention of
+    :func:`~linecontact.adhesion_from_work`, which gives ``h1``); the advancing range
+    ``h2 = w2 / sigma0``. A cylinder with ``(sigma0, h2)`` and the receding range ``h1`` is
+    the pushed or sliding fibre of :func:`~linecontact.cylinder.cylinder_push`.
+    """
+    from ..materials import adhesion_from_work
+
+    s0, h1 = adhesion_from_work(receding_work_of_adhesion, equilibrium_spacing)
+    return float(s0), float(advancing_work_of_adhesion / s0), float(h1)

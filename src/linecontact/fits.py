@@ -1,0 +1,786 @@
+r"""The pull-off inverse problems: the forward model, ``w`` from one pull-off, ``(w, z0)`` fitted.
+
+Split from :mod:`linecontact.inverse`, which re-exports every public name (``from
+linecontact.inverse import fit_pull_off`` keeps working):
+
+* :func:`pull_off_force`: the Maugis--Dugdale pull-off force of a cylinder in SI units, with
+  the adhesion given as ``(w, z0)`` (``sigma0 = 16 w/(9 sqrt(3) z0)``, ``h = w/sigma0``); the
+  JKR and rigid (DMT) limits :func:`jkr_pull_off_force`, :func:`dmt_pull_off_force` and the
+  work of adhesion they alone would give (:func:`simple_model_work_of_adhesion`);
+* :func:`work_of_adhesion_from_pull_off`: the model solved for ``w`` at a known radius,
+  modulus and range;
+* :func:`fit_pull_off`: ``(w, z0)`` jointly, or ``w`` alone at a fixed ``z0``, from pull-off
+  forces at several radii (:class:`AdhesionFit`, a :class:`~linecontact.results.Result`).
+
+Units: SI throughout (m, Pa, N/m, J/m^2); pull-off forces are negative (tensile).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import ClassVar, Literal
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from . import normal as _normal
+from . import reference as _ref
+from ._validation import broadcast, check_array, first_point
+from .cylinder import _check_cylinder_si, _plausible
+from .materials import MAUGIS_STRENGTH
+from .results import Result
+from .uncertainty import _UNREACHABLE
+
+__all__ = [
+    "AdhesionFit",
+    "ShearStrengthFit",
+    "dmt_pull_off_force",
+    "fit_pull_off",
+    "fit_shear_strength",
+    "jkr_pull_off_force",
+    "pull_off_force",
+    "simple_model_work_of_adhesion",
+    "work_of_adhesion_from_pull_off",
+]
+
+#: sigma0 = S w / z0 (Maugis: the strength of the Lennard-Jones law), h = z0 / S
+S_LJ = MAUGIS_STRENGTH  # an alias of materials.MAUGIS_STRENGTH
+#: the range of sigma0/E searched by the inversions (the solvers' domain is wider)
+_S_MIN, _S_MAX = 1e-14, 0.999e6  # inside the solvers' domain of sigma0/E (to 1e6)
+_BISECTIONS = 200
+
+
+def _groups(radius, modulus, w, z0):
+    """R/h and sigma0/E of a cylinder with adhesion (w, z0)."""
+    h = z0 / S_LJ
+    return radius / h, S_LJ * w / (z0 * modulus), h
+
+
+def pull_off_force(
+    radius: ArrayLike,
+    modulus: ArrayLike,
+    work_of_adhesion: ArrayLike,
+    equilibrium_spacing: ArrayLike,
+) -> NDArray:
+    """Maugis--Dugdale pull-off force per unit length [N/m] (negative), vectorised.
+
+    The forward model of the pull-off inversions: :func:`linecontact.pull_off` at
+    ``R/h``, ``sigma0/E`` of the adhesion ``(w, z0)``, times ``E h``.
+
+    Examples
+    --------
+    >>> round(float(pull_off_force(50e-9, 50e9, 0.1, 0.3e-9)), 6)
+    -3.498523
+    """
+    R, E, w, z0 = broadcast(
+        radius=check_array("radius", radius),
+        modulus=check_array("modulus", modulus),
+        work_of_adhesion=check_array("work_of_adhesion", work_of_adhesion),
+        equilibrium_spacing=check_array("equilibrium_spacing", equilibrium_spacing),
+    )
+    _check_cylinder_si(R, E, {"work_of_adhesion": w, "equilibrium_spacing": z0}, stacklevel=4)
+    rho, s, h = _groups(R, E, w, z0)
+    return np.asarray(_normal.pull_off(rho, s).F_pulloff_over_Eh) * E * h
+
+
+def jkr_pull_off_force(radius: ArrayLike, modulus: ArrayLike, work_of_adhesion: ArrayLike):
+    """JKR pull-off of a line contact, ``-(3/4) (4 pi w^2 E R)^(1/3)`` [N/m] (no range)."""
+    R = check_array("radius", radius)
+    E = check_array("modulus", modulus)
+    w = check_array("work_of_adhesion", work_of_adhesion)
+    for name, v in (("radius", R), ("modulus", E), ("work_of_adhesion", w)):
+        _plausible(name, v)
+    return _jkr_pull_off_si(R, E, w)
+
+
+def _jkr_pull_off_si(R, E, w):
+    """:func:`linecontact.reference._jkr_pull_off` in SI units (``h = R``: no range in JKR)."""
+    return E * R * _ref._jkr_pull_off(1.0, w / (E * R))[0]
+
+
+def _dmt_pull_off_si(R, w, z0):
+    """:func:`linecontact.reference._rigid_pull_off` in SI units: ``E h`` times it (any E)."""
+    h = z0 / S_LJ
+    return h * _ref._rigid_pull_off(R / h, w / h)
+
+
+def dmt_pull_off_force(
+    radius: ArrayLike, work_of_adhesion: ArrayLike, equilibrium_spacing: ArrayLike
+):
+    """Rigid-cylinder (DMT-like) pull-off of the Dugdale law, ``-2 sqrt(2) w sqrt(R/h)`` [N/m].
+
+    The small-Maugis-parameter limit: the adhesive zone ``|x| < sqrt(2 R h)`` around a rigid
+    cylinder touching at a point, ``h = 9 sqrt(3) z0/16``.
+    """
+    R = check_array("radius", radius)
+    w = check_array("work_of_adhesion", work_of_adhesion)
+    z0 = check_array("equilibrium_spacing", equilibrium_spacing)
+    for name, v in (("radius", R), ("work_of_adhesion", w)):
+        _plausible(name, v)
+    _plausible("equilibrium_spacing", z0, key="adhesion_range")
+    return _dmt_pull_off_si(R, w, z0)
+
+
+def simple_model_work_of_adhesion(
+    radius: ArrayLike,
+    pull_off_force: ArrayLike,
+    modulus: float,
+    equilibrium_spacing: float,
+    sd: ArrayLike | None = None,
+) -> dict[str, float]:
+    """The work of adhesion JKR and DMT alone would give, by weighted least squares.
+
+    ``F = -c_i w^(2/3)`` (JKR, ``c_i = (3/4)(4 pi E R_i)^(1/3)``) and ``F = -d_i w`` (the
+    rigid/DMT limit, ``d_i = 2 sqrt(2) sqrt(R_i/h)`` at the range given) are linear in
+    ``w^(2/3)`` and ``w``: closed-form weighted least squares. Returns
+    ``{"jkr": w_JKR, "dmt": w_DMT}`` [J/m^2] — what the simple models would have reported.
+
+    Examples
+    --------
+    >>> R = np.array([1e-4, 2e-4])
+    >>> F = jkr_pull_off_force(R, 50e9, 0.2)
+    >>> round(simple_model_work_of_adhesion(R, F, 50e9, 0.3e-9)["jkr"], 12)
+    0.2
+    """
+    R = check_array("radius", radius).reshape(-1)
+    F = check_array("pull_off_force", pull_off_force, low=-np.inf, high=0.0).reshape(-1)
+    E = float(check_array("modulus", modulus))
+    z0 = float(check_array("equilibrium_spacing", equilibrium_spacing))
+    wt = np.ones_like(F) if sd is None else 1.0 / check_array("sd", sd).reshape(-1) ** 2
+    _check_cylinder_si(R, E, {"work_of_adhesion": None, "equilibrium_spacing": z0}, stacklevel=4)
+    c = -_jkr_pull_off_si(R, E, 1.0)  # the JKR pull-off is -c w^(2/3)
+    u = float(np.sum(wt * c * -F) / np.sum(wt * c * c))
+    d = -_dmt_pull_off_si(R, 1.0, z0)  # the rigid pull-off is -d w
+    w_dmt = float(np.sum(wt * d * -F) / np.sum(wt * d * d))
+    return {"jkr": u**1.5, "dmt": w_dmt}
+
+
+def _bisect_log(
+    fun: Callable[[NDArray], NDArray], lo: NDArray, hi: NDArray, rtol: float = 1e-15
+) -> NDArray:
+    """Root of an increasing ``fun`` between ``lo`` and ``hi`` (> 0), bisected in log.
+
+    To ``rtol`` relative in the root (round-off at the default).
+    """
+    a, b = np.log(lo), np.log(hi)
+    for _ in range(_BISECTIONS):
+        m = 0.5 * (a + b)
+        up = fun(np.exp(m)) > 0
+        a, b = np.where(up, a, m), np.where(up, m, b)
+        if np.all(b - a <= np.maximum(rtol, 4e-16 * np.abs(m))):
+            break
+    return np.exp(0.5 * (a + b))
+
+
+def work_of_adhesion_from_pull_off(
+    pull_off_force: ArrayLike,
+    radius: ArrayLike,
+    modulus: ArrayLike,
+    equilibrium_spacing: ArrayLike,
+) -> NDArray:
+    """The work of adhesion [J/m^2] whose Maugis--Dugdale pull-off is the one measured.
+
+    Parameters
+    ----------
+    pull_off_force : array_like
+        Measured pull-off force per unit length [N/m], negative (tensile).
+    radius, modulus, equilibrium_spacing : array_like
+        ``R`` [m], the composite plane-strain modulus ``E`` [Pa], the range ``z0`` [m].
+
+    Returns
+    -------
+    ndarray
+        ``w`` [J/m^2]; arrays broadcast together.
+
+    Raises
+    ------
+    ValueError
+        For a force no ``w`` can produce (not negative, or beyond the reachable range,
+        which the message states in N/m).
+
+    Examples
+    --------
+    >>> F = pull_off_force(50e-9, 50e9, 0.1, 0.3e-9)
+    >>> round(float(work_of_adhesion_from_pull_off(F, 50e-9, 50e9, 0.3e-9)), 12)
+    0.1
+    """
+    return _work_from_pull_off(
+        pull_off_force,
+        radius,
+        modulus,
+        equilibrium_spacing,
+        unreachable=_UNREACHABLE.get(),
+        stacklevel=5,
+    )
+
+
+def _work_from_pull_off(
+    pull_off_force: ArrayLike,
+    radius: ArrayLike,
+    modulus: ArrayLike,
+    equilibrium_spacing: ArrayLike,
+    *,
+    rtol: float = 1e-15,
+    unreachable: Literal["raise", "nan"] = "raise",
+    stacklevel: int = 4,
+) -> NDArray:
+    """:func:`work_of_adhesion_from_pull_off` with the options of the module's own callers.
+
+    ``rtol``: of the bisection in ``w`` (a fit's starting point needs 1e-4 only);
+    ``unreachable="nan"``: nan where no ``w`` produces the force, instead of the
+    ``ValueError`` (for :func:`propagate`); ``stacklevel``: of the units warnings, for the
+    caller of the public function.
+    """
+    F = check_array("pull_off_force", pull_off_force, low=-np.inf)
+    R = check_array("radius", radius)
+    E = check_array("modulus", modulus)
+    z0 = check_array("equilibrium_spacing", equilibrium_spacing)
+    F, R, E, z0 = broadcast(pull_off_force=F, radius=R, modulus=E, equilibrium_spacing=z0)
+    _check_cylinder_si(
+        R, E, {"work_of_adhesion": None, "equilibrium_spacing": z0}, stacklevel=stacklevel
+    )
+    w_lo = _S_MIN * E * z0 / S_LJ
+    w_hi = _S_MAX * E * z0 / S_LJ
+    F_lo = pull_off_force_at(R, E, w_hi, z0)  # the strongest adhesion searched
+    F_hi = pull_off_force_at(R, E, w_lo, z0)  # the weakest
+    bad = ~((F < F_hi) & (F > F_lo))
+    if np.any(bad) and unreachable == "nan":  # for propagate: nan where no w reaches
+        Fm = np.where(bad, 0.5 * (F_lo + F_hi), F)
+        w = _bisect_log(lambda w: Fm - pull_off_force_at(R, E, w, z0), w_lo, w_hi, rtol)
+        return np.where(bad, np.nan, w)
+    if np.any(bad):
+        _, at = first_point(bad, F=F, R=R, E=E, z0=z0, lo=F_lo, hi=F_hi)
+        raise ValueError(
+            f"pull_off_force={at['F']!r} N/m cannot be produced by any work of "
+            f"adhesion at radius={at['R']!r} m, modulus="
+            f"{at['E']!r} Pa, equilibrium_spacing={at['z0']!r}"
+            f" m: the reachable pull-off forces are ({at['lo']:.6g}, "
+            f"{at['hi']:.6g}) N/m (sigma0/E from {_S_MIN:g} to {_S_MAX:g})"
+        )
+    # the pull-off force falls (grows in magnitude) with w
+    return _bisect_log(lambda w: F - pull_off_force_at(R, E, w, z0), w_lo, w_hi, rtol)
+
+
+def pull_off_force_at(R, E, w, z0):
+    """:func:`pull_off_force` without the broadcasting (arrays of one shape)."""
+    rho, s, h = _groups(R, E, w, z0)
+    return np.asarray(_normal.pull_off(rho, s).F_pulloff_over_Eh) * E * h
+
+
+# --------------------------------------------------------------------------------------------
+# joint fit of (w, z0) to pull-off forces at several radii
+
+
+@dataclass(frozen=True)
+class AdhesionFit(Result):
+    """``(w, z0)`` (or ``w`` at a fixed ``z0``) fitted to pull-off forces at several radii.
+
+    Attributes
+    ----------
+    work_of_adhesion, equilibrium_spacing : float
+        The fit [J/m^2], [m] (``equilibrium_spacing`` as given when it was fixed).
+    work_of_adhesion_sd, equilibrium_spacing_sd : float
+        Standard uncertainties from the covariance (``0`` for a fixed ``z0``).
+    work_of_adhesion_ci95, equilibrium_spacing_ci95 : (float, float)
+        95 % intervals by parametric bootstrap (refits to the model plus noise of the
+        data's standard deviations); ``*_ci95_linear`` from the covariance in the log
+        parameters.
+    covariance : ndarray, shape (2, 2)
+        Of ``(w, z0)`` [J/m^2, m] (linearised at the fit; zero row and column for a fixed
+        ``z0``).
+    correlation : float
+        Between ``w`` and ``z0`` (nan for a fixed ``z0``).
+    residuals : ndarray
+        ``F_model - F_measured`` [N/m] at the data points.
+    model : ndarray
+        The fitted pull-off forces at the data's radii [N/m].
+    chi2 : float
+        Sum of squared weighted residuals; ``dof`` the degrees of freedom.
+    identifiable : bool
+        Whether the data determine ``z0`` (its relative uncertainty below 50 % and the
+        correlation below 0.999 in magnitude); ``note`` says why not.
+    work_of_adhesion_sd_inputs, equilibrium_spacing_sd_inputs : float
+        The standard uncertainties that the inputs' uncertainties (``modulus_sd``, and
+        ``equilibrium_spacing_sd`` of a fixed ``z0``) add, by refits with the inputs drawn
+        (``0`` without them; for a fixed ``z0``, its own ``equilibrium_spacing_sd``);
+        ``*_sd_total`` (properties) combine them with the data's, in quadrature.
+    """
+
+    inputs: ClassVar[tuple[str, ...]] = ("fixed_spacing",)
+    whole: ClassVar[tuple[str, ...]] = (
+        "work_of_adhesion_ci95",
+        "equilibrium_spacing_ci95",
+        "work_of_adhesion_ci95_linear",
+        "equilibrium_spacing_ci95_linear",
+        "covariance",
+    )
+    derived: ClassVar[tuple[str, ...]] = (
+        "work_of_adhesion_sd_total",
+        "equilibrium_spacing_sd_total",
+    )
+
+    work_of_adhesion: float
+    equilibrium_spacing: float
+    work_of_adhesion_sd: float
+    equilibrium_spacing_sd: float
+    work_of_adhesion_ci95: tuple[float, float]
+    equilibrium_spacing_ci95: tuple[float, float]
+    work_of_adhesion_ci95_linear: tuple[float, float]
+    equilibrium_spacing_ci95_linear: tuple[float, float]
+    covariance: NDArray
+    correlation: float
+    residuals: NDArray
+    model: NDArray
+    chi2: float
+    dof: int
+    fixed_spacing: bool
+    identifiable: bool
+    note: str
+    radius: NDArray = field(repr=False)
+    pull_off_force: NDArray = field(repr=False)
+    sd: NDArray = field(repr=False)
+    modulus: float = field(repr=False, default=math.nan)
+    work_of_adhesion_sd_inputs: float = 0.0
+    equilibrium_spacing_sd_inputs: float = 0.0
+
+    @property
+    def work_of_adhesion_sd_total(self) -> float:
+        """The standard uncertainty of ``w`` from the data and the inputs [J/m^2]."""
+        return math.hypot(self.work_of_adhesion_sd, self.work_of_adhesion_sd_inputs)
+
+    @property
+    def equilibrium_spacing_sd_total(self) -> float:
+        """The standard uncertainty of ``z0`` from the data and the inputs [m]."""
+        return math.hypot(self.equilibrium_spacing_sd, self.equilibrium_spacing_sd_inputs)
+
+
+def fit_pull_off(
+    radius: ArrayLike,
+    pull_off_force: ArrayLike,
+    modulus: float,
+    *,
+    sd: ArrayLike | None = None,
+    equilibrium_spacing: float | None = None,
+    bootstrap: int | str = "auto",
+    seed: int = 0,
+    modulus_sd: float = 0.0,
+    equilibrium_spacing_sd: float = 0.0,
+    samples: int = 100,
+) -> AdhesionFit:
+    r"""Fit the work of adhesion (and the range) to pull-off forces at several radii.
+
+    Weighted least squares on the Maugis--Dugdale pull-off (:func:`pull_off_force`) in the
+    parameters ``ln w`` and ``ln z0``. The radius dependence separates them in the
+    transition regime: ``F ~ w sqrt(R/z0)`` for a rigid-like contact (small Maugis
+    parameter), ``F ~ (w^2 E R)^(1/3)``, independent of ``z0``, in the JKR limit; data all in
+    the JKR regime do not determine ``z0`` (``identifiable`` is False and ``note`` says so:
+    fix ``equilibrium_spacing``).
+
+    Parameters
+    ----------
+    radius, pull_off_force : array_like, 1-D
+        The data [m], [N/m] (negative).
+    modulus : float
+        Composite plane-strain modulus ``E`` [Pa].
+    sd : array_like, optional
+        Standard uncertainties of the forces [N/m]; without them the weights are equal and
+        the scatter of the residuals sets the uncertainty.
+    equilibrium_spacing : float, optional
+        Fix ``z0`` [m] and fit ``w`` alone (one point suffices).
+    bootstrap : int or "auto"
+        Parametric-bootstrap refits for the 95 % intervals (0: none, the linear ones are
+        copied; ``"auto"``: 100 where the linear interval is poor, a relative standard
+        uncertainty of a parameter above 10 %, else none).
+    seed : int
+        Of the bootstrap (``seed + 1``: of the inputs' draws).
+    modulus_sd : float
+        The standard uncertainty of ``modulus`` [Pa].
+    equilibrium_spacing_sd : float
+        The standard uncertainty of a fixed ``equilibrium_spacing`` [m].
+    samples : int
+        Refits with the modulus (and a fixed ``z0``) drawn from normal distributions, for
+        the uncertainty they add (``work_of_adhesion_sd_inputs``, ...; draws at or below
+        zero and refits without a solution are skipped). Only with ``modulus_sd`` or
+        ``equilibrium_spacing_sd``.
+
+    Returns
+    -------
+    AdhesionFit
+
+    Examples
+    --------
+    >>> R = np.array([20e-9, 50e-9, 100e-9, 200e-9, 500e-9])
+    >>> F = pull_off_force(R, 50e9, 0.1, 0.3e-9)
+    >>> fit = fit_pull_off(R, F, 50e9, bootstrap=0)
+    >>> round(fit.work_of_adhesion, 8), round(fit.equilibrium_spacing * 1e9, 6)
+    (0.1, 0.3)
+
+    A 5 % uncertainty of the modulus, propagated by refits:
+
+    >>> fit = fit_pull_off(R, F, 50e9, bootstrap=0, modulus_sd=2.5e9)
+    >>> bool(0 < fit.work_of_adhesion_sd_inputs < 0.01), fit.work_of_adhesion_sd_total > 0
+    (True, True)
+    """
+    from scipy.optimize import least_squares
+
+    R = check_array("radius", radius).reshape(-1)
+    F = check_array("pull_off_force", pull_off_force, low=-np.inf, high=0.0).reshape(-1)
+    if R.size != F.size:
+        raise ValueError(
+            f"radius and pull_off_force must have one length, got {R.size} and {F.size}"
+        )
+    E_arr = check_array("modulus", modulus)
+    if E_arr.ndim != 0:
+        raise ValueError(
+            f"modulus must be a single number [Pa], got an array of shape {E_arr.shape}"
+        )
+    E = float(E_arr)
+    _plausible("radius", R)
+    _plausible("modulus", E)
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        raise ValueError(f"seed must be an integer >= 0, got {seed!r}")
+    fixed = equilibrium_spacing is not None
+    for name, v in (("modulus_sd", modulus_sd), ("equilibrium_spacing_sd", equilibrium_spacing_sd)):
+        if isinstance(v, (bool, str)) or not (
+            isinstance(v, (int, float, np.integer, np.floating)) and math.isfinite(v) and v >= 0
+        ):
+            raise ValueError(f"{name} must be a finite number >= 0, got {v!r}")
+    if equilibrium_spacing_sd and not fixed:
+        raise ValueError(
+            "equilibrium_spacing_sd needs a fixed equilibrium_spacing (a joint fit estimates z0)"
+        )
+    if (
+        isinstance(samples, bool)
+        or not isinstance(samples, (int, np.integer))
+        or not 2 <= samples <= 100_000
+    ):
+        raise ValueError(f"samples must be an integer in [2, 1e5], got {samples!r}")
+    n_par = 1 if fixed else 2
+    if R.size < n_par + (0 if fixed else 1):
+        raise ValueError(
+            f"a joint fit of (w, z0) needs at least 3 data points, got {R.size}: give more "
+            "radii, or fix equilibrium_spacing"
+            if not fixed
+            else "give at least one data point"
+        )
+    if not fixed and np.unique(R).size < 3:
+        raise ValueError(
+            f"a joint fit of (w, z0) needs at least 3 distinct radii, got {np.unique(R).size}: "
+            "the radius dependence is what separates w from z0 (or fix equilibrium_spacing)"
+        )
+    if sd is None:
+        sig = np.ones_like(F)
+        have_sd = False
+    else:
+        sig = check_array("sd", sd).reshape(-1)
+        if sig.size != F.size:
+            raise ValueError(f"sd must have one value per data point ({F.size}), got {sig.size}")
+        rel = sig / np.abs(F)
+        if np.any((rel < 1e-12) | (rel > 1e6)):
+            i = int(np.flatnonzero((rel < 1e-12) | (rel > 1e6))[0])
+            raise ValueError(
+                f"sd of data point {i + 1} is {float(sig[i])!r} for a force of {float(F[i])!r} "
+                "N/m: the weights need sd between 1e-12 and 1e6 times the force"
+            )
+        have_sd = True
+    if bootstrap != "auto" and (
+        isinstance(bootstrap, bool)
+        or not isinstance(bootstrap, (int, np.integer))
+        or not 0 <= bootstrap <= 100_000
+    ):
+        raise ValueError(f"bootstrap must be 'auto' or an integer in [0, 1e5], got {bootstrap!r}")
+    z_fixed = 0.0
+    if equilibrium_spacing is not None:
+        z_arr = check_array("equilibrium_spacing", equilibrium_spacing)
+        if z_arr.ndim != 0:
+            raise ValueError("equilibrium_spacing must be a single number [m] (or None to fit it)")
+        z_fixed = float(z_arr)
+        _check_cylinder_si(R, E, {"work_of_adhesion": None, "equilibrium_spacing": z_fixed})
+
+    def model(p, R=R):
+        w = math.exp(p[0])
+        z0 = z_fixed if fixed else math.exp(p[1])
+        return pull_off_force_at(R, np.full(R.shape, E), np.full(R.shape, w), np.full(R.shape, z0))
+
+    # ln w in [ln 1e-8, ln 1e3] J/m^2, ln z0 in [ln 1e-12, ln 1e-7] m
+    lo = np.log([1e-8, 1e-12])[:n_par]
+    hi = np.log([1e3, 1e-7])[:n_par]
+
+    def solve(Fd, start):
+        return least_squares(
+            lambda p: (model(p) - Fd) / sig,
+            np.clip(start, lo + 1e-9, hi - 1e-9),
+            bounds=(lo, hi),
+            method="trf",
+            x_scale=1.0,
+            xtol=1e-15,
+            ftol=1e-15,
+            gtol=1e-15,
+            max_nfev=2000,
+        )
+
+    # start: per point w at trial ranges, the best median
+    best = None
+    for z_try in [z_fixed] if fixed else [0.15e-9, 0.4e-9, 1.5e-9]:
+        try:
+            w_pts = _work_from_pull_off(F, R, E, z_try, rtol=1e-4)
+        except ValueError:
+            continue
+        p0 = np.log([float(np.median(w_pts))] + ([] if fixed else [z_try]))
+        cost = float(np.sum(((model(p0) - F) / sig) ** 2))
+        if best is None or cost < best[0]:
+            best = (cost, p0)
+    if best is None:
+        raise ValueError(
+            "no work of adhesion reproduces these pull-off forces at any trial range: check "
+            "their sign (tensile pull-off forces are negative) and units (N/m)"
+        )
+    res = solve(F, best[1])
+    p = res.x
+    J = res.jac
+    resid = model(p) - F
+    chi2 = float(np.sum((resid / sig) ** 2))
+    dof = F.size - n_par
+    scale = 1.0 if have_sd else (chi2 / dof if dof > 0 else math.nan)
+    with np.errstate(all="ignore"):
+        try:
+            cov_log = np.linalg.inv(J.T @ J) * scale
+        except np.linalg.LinAlgError:
+            cov_log = np.full((n_par, n_par), np.inf)
+    w = math.exp(p[0])
+    z0 = z_fixed if fixed else math.exp(p[1])
+    D = np.array([w, z0])[:n_par]
+    cov = np.zeros((2, 2))
+    cov[:n_par, :n_par] = cov_log * np.outer(D, D)
+    sd_log = np.sqrt(np.clip(np.diag(cov_log), 0, None))
+    w_sd = float(np.sqrt(cov[0, 0]))
+    z_sd = float(np.sqrt(cov[1, 1]))
+    with np.errstate(over="ignore"):  # a parameter the data do not determine: inf
+        ci_lin_w = (float(w * np.exp(-1.96 * sd_log[0])), float(w * np.exp(1.96 * sd_log[0])))
+        ci_lin_z = (
+            (z0, z0)
+            if fixed
+            else (float(z0 * np.exp(-1.96 * sd_log[1])), float(z0 * np.exp(1.96 * sd_log[1])))
+        )
+    # the correlation does not depend on the scale (zero for an exact fit without sds)
+    with np.errstate(all="ignore"):
+        try:
+            unit = np.linalg.inv(J.T @ J)
+        except np.linalg.LinAlgError:
+            unit = np.full((n_par, n_par), np.nan)
+    corr = math.nan if fixed else float(unit[0, 1] / math.sqrt(unit[0, 0] * unit[1, 1]))
+    ci_w, ci_z = ci_lin_w, ci_lin_z
+    n_boot = (0 if np.all(sd_log <= 0.1) else 100) if bootstrap == "auto" else int(bootstrap)
+    if n_boot > 0 and np.isfinite(scale):
+        rng = np.random.default_rng(seed)
+        noise = sig * (1.0 if have_sd else math.sqrt(scale))
+        fitted = model(p)
+        ws, zs = [], []
+        for _ in range(n_boot):
+            Fb = fitted + noise * rng.standard_normal(F.size)
+            if np.any(Fb >= 0):
+                continue
+            rb = solve(Fb, p)
+            ws.append(math.exp(rb.x[0]))
+            zs.append(z0 if fixed else math.exp(rb.x[1]))
+        if len(ws) >= 20:
+            ci_w = tuple(float(v) for v in np.percentile(ws, [2.5, 97.5]))  # type: ignore[assignment]
+            ci_z = tuple(float(v) for v in np.percentile(zs, [2.5, 97.5]))  # type: ignore[assignment]
+    identifiable = True
+    note = ""
+    exact = not have_sd and chi2 <= 1e-24 * float(np.sum(F * F))
+    if not fixed:
+        lam = _ref.maugis_parameter(R / (z0 / S_LJ), S_LJ * w / (z0 * E))
+        loose = not exact and not z_sd / z0 < 0.5
+        if loose or not abs(corr) < 0.999:
+            identifiable = False
+            note = (
+                f"the data do not determine z0 (relative uncertainty {z_sd / z0:.2g}, "
+                f"correlation with w {corr:.4f}): Maugis parameter {float(np.min(lam)):.3g} to "
+                f"{float(np.max(lam)):.3g}; in the JKR regime the pull-off does not depend on "
+                "z0. Fix equilibrium_spacing, or add radii where the parameter is below ~1"
+            )
+    if dof == 0 and not have_sd:
+        note = (note + "; " if note else "") + (
+            "as many parameters as data points and no sd: no uncertainty can be estimated "
+            "(give the forces' standard deviations, or more points)"
+        )
+    elif exact:
+        note = (note + "; " if note else "") + (
+            "the model fits the data exactly and no sd was given: there is no scatter to "
+            "estimate an uncertainty from (give the forces' standard deviations)"
+        )
+    at_bound = np.isclose(p, lo, rtol=0, atol=1e-6) | np.isclose(p, hi, rtol=0, atol=1e-6)
+    if np.any(at_bound):
+        note = (note + "; " if note else "") + (
+            "the fit ended on the bounds of the search (w in [1e-8, 1e3] J/m^2, z0 in "
+            "[1e-12, 1e-7] m): these data may not be pull-offs of this model (check units)"
+        )
+    w_sd_in, z_sd_in = 0.0, 0.0
+    if modulus_sd or equilibrium_spacing_sd:
+        w_sd_in, z_sd_in = _input_refits(
+            R,
+            F,
+            E,
+            sd,
+            z_fixed if fixed else None,
+            float(modulus_sd),
+            float(equilibrium_spacing_sd),
+            int(samples),
+            int(seed) + 1,
+        )
+    return AdhesionFit(
+        w,
+        z0,
+        w_sd,
+        0.0 if fixed else z_sd,
+        ci_w,
+        ci_z,
+        ci_lin_w,
+        ci_lin_z,
+        cov,
+        corr,
+        resid,
+        model(p),
+        chi2,
+        dof,
+        fixed,
+        identifiable,
+        note,
+        R,
+        F,
+        sig if have_sd else np.full(F.shape, math.nan),
+        E,
+        w_sd_in,
+        z_sd_in,
+    )
+
+
+def _input_refits(
+    R: NDArray,
+    F: NDArray,
+    E: float,
+    sd: ArrayLike | None,
+    z0: float | None,
+    E_sd: float,
+    z0_sd: float,
+    samples: int,
+    seed: int,
+) -> tuple[float, float]:
+    """The standard uncertainties of ``(w, z0)`` from the modulus (and a fixed ``z0``) drawn.
+
+    ``samples`` refits without bootstrap, each with ``E`` (and a fixed ``z0``) drawn from
+    normal distributions; a draw at or below zero, or one no fit reproduces, is skipped. For
+    a fixed ``z0`` the second value is ``z0_sd`` itself.
+    """
+    rng = np.random.default_rng(seed)
+    ws, zs = [], []
+    for _ in range(samples):  # the draws in this order: E, then a fixed z0, per refit
+        Ei = E + E_sd * rng.standard_normal()
+        zi = (z0 + z0_sd * rng.standard_normal()) if z0 is not None else None
+        if Ei <= 0 or (zi is not None and zi <= 0):
+            continue
+        try:
+            fi = fit_pull_off(R, F, Ei, sd=sd, equilibrium_spacing=zi, bootstrap=0)
+        except ValueError:
+            continue
+        ws.append(fi.work_of_adhesion)
+        zs.append(fi.equilibrium_spacing)
+    if len(ws) < 2:
+        return math.nan, (z0_sd if z0 is not None else math.nan)
+    w_sd = float(np.std(ws, ddof=1))
+    return w_sd, (z0_sd if z0 is not None else float(np.std(zs, ddof=1)))
+
+
+# --------------------------------------------------------------------------------------------
+# one shear strength for several friction forces
+
+
+@dataclass(frozen=True)
+class ShearStrengthFit(Result):
+    """One ``tau0`` for several friction forces (:func:`fit_shear_strength`).
+
+    Attributes
+    ----------
+    tau0, tau0_sd : float
+        The mean weighted by the friction forces' uncertainties [Pa], its standard
+        uncertainty by Monte Carlo (widened by the square root of a Birge ratio above 1).
+    tau0_ci95 : (float, float)
+        Its 95 % interval [Pa].
+    birge_ratio : float
+        The points' chi^2 per degree of freedom about the mean (``nan`` for one point or
+        without the friction forces' uncertainties).
+    """
+
+    whole: ClassVar[tuple[str, ...]] = ("tau0_ci95",)
+
+    tau0: float
+    tau0_sd: float
+    tau0_ci95: tuple[float, float]
+    birge_ratio: float
+
+
+def fit_shear_strength(
+    fn: Callable[..., NDArray],
+    f: NDArray,
+    F: NDArray,
+    f_sd: NDArray,
+    common: dict[str, float],
+    shared_sd: dict[str, float],
+    n_samples: int,
+    seed: int,
+) -> ShearStrengthFit:
+    """One tau0 for all points: the mean weighted by the friction forces' uncertainties.
+
+    Its uncertainty by Monte Carlo over everything at once: the friction forces
+    independently, the cylinder's inputs (shared by every point, so not averaged away)
+    once per sample; widened by the square root of the Birge ratio (the points' chi^2 per
+    degree of freedom about the mean) when they scatter more than their uncertainties say.
+    ``fn(friction_force, normal_load, **common)`` gives ``tau0`` per point (vectorised);
+    ``f``, ``F``, ``f_sd`` are the friction forces, normal loads and the friction forces'
+    standard uncertainties [N/m]; ``shared_sd`` the standard uncertainties of ``common``.
+    """
+    wt = 1 / f_sd**2 if np.all(f_sd > 0) else np.ones_like(f)
+    tau = np.asarray(fn(f, F, **common), float)
+    value = float(np.sum(wt * tau) / np.sum(wt))
+    if not (np.any(f_sd > 0) or any(shared_sd.values())):
+        return ShearStrengthFit(value, 0.0, (value, value), math.nan)
+    rng = np.random.default_rng(seed + 7919)
+    draw = {}
+    for k, v in common.items():
+        s = shared_sd.get(k, 0.0)
+        x = v + s * rng.standard_normal((n_samples, 1)) if s else np.full((n_samples, 1), v)
+        draw[k] = np.where(x > 0, x, v)  # a positive input: no non-physical draw
+    ff = f + f_sd * rng.standard_normal((n_samples, f.size))
+    ok = np.all(ff > 0, axis=1)
+    taus = np.full((n_samples, f.size), np.nan)
+
+    def rows(idx):  # a batch that raises is split in halves: nan only where a draw fails
+        try:
+            taus[idx] = fn(
+                ff[idx], np.broadcast_to(F, ff[idx].shape), **{k: v[idx] for k, v in draw.items()}
+            )
+        except ValueError:
+            if idx.size > 1:
+                rows(idx[: idx.size // 2])
+                rows(idx[idx.size // 2 :])
+
+    rows(np.flatnonzero(ok))
+    comb = np.sum(wt * taus, axis=1) / np.sum(wt)
+    comb = comb[np.isfinite(comb)]
+    if comb.size < 2:
+        return ShearStrengthFit(value, math.nan, (math.nan, math.nan), math.nan)
+    lo, hi = (float(v) for v in np.percentile(comb, [2.5, 97.5]))
+    sd = float(np.std(comb, ddof=1))
+    # the points' scatter about the mean against their measurement uncertainty (tau0 is
+    # proportional to f): a Birge ratio above 1 widens the interval by its square root
+    birge = math.nan
+    if f.size > 1 and np.all(f_sd > 0):
+        sd_i = tau * f_sd / f
+        birge = float(np.sum(((tau - value) / sd_i) ** 2) / (f.size - 1))
+        if birge > 1:
+            g = math.sqrt(birge)
+            sd, lo, hi = sd * g, value - g * (value - lo), value + g * (hi - value)
+    return ShearStrengthFit(value, sd, (lo, hi), birge)
