@@ -385,9 +385,11 @@ def _zero_width(rho: NDArray, s: NDArray) -> NDArray:
 # a scalar call of the public functions runs the very same code on scalars, where an
 # arithmetic operation costs ~60 ns and an elementary function ~0.2 us instead of ~0.5 us on
 # a 0-d array, and ``np.where`` (~2.5 us on 0-d arrays) is replaced by a plain conditional
-# (:func:`_where`). NumPy's scalar functions use the same inner loops as its array functions,
-# so a point gives the same bits alone and in a batch -- except ``x ** 2``, which is pow() for
-# a scalar but a product for an array: the kernels square by multiplying.
+# (:func:`_where`). A point gives the same answer alone and in a batch to rounding, not
+# always to the bit: on some CPUs (AVX-512) NumPy's SIMD loops for ``exp``/``log`` on arrays
+# round differently from its scalar code (README, "Same answers on every machine"). And
+# ``x ** 2`` is pow() for a scalar but a product for an array: the kernels square by
+# multiplying.
 
 
 def _where(cond, a, b):
