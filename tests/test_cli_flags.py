@@ -315,7 +315,7 @@ def test_the_coupling_note_says_its_effect_once_and_quiet_hides_it(capsys):
     assert code == 0
     lines = [line for line in err.splitlines() if "Dundurs beta" in line]
     assert len(lines) == 1 and lines[0].count(COUPLING_EFFECT) == 1
-    assert "beta^2" in lines[0] and "Spence 1975" in lines[0]
+    assert "beta^2" in lines[0] and "Johnson 1985" in lines[0]
     code, _, quiet = _run(capsys, *COUPLED, "--load", "0.1", "0.2", "--quiet")
     assert code == 0 and "Dundurs" not in quiet
 

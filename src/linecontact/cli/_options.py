@@ -292,12 +292,11 @@ def is_units_warning(message: Warning | str, category: type[Warning]) -> bool:
 #: What the coupling warning adds, once: the effect of beta, its sign and order, no number.
 COUPLING_EFFECT = (
     "; its effect on the results is not computed. Without friction at the interface the "
-    "coupling does not change the normal contact (no shear tractions); with friction it "
-    "brings shear tractions that make the contact slightly narrower and the peak pressure "
-    "higher at a given load (Spence 1975, J. Elasticity 5:297; Johnson 1985, Contact "
-    "Mechanics, sec. 5.4). Exchanging the bodies changes the sign of beta and not the "
-    "contact, so the change of the width is even in beta (of order beta^2) and grows with "
-    "|beta| (at most 0.5); no figure for it is given"
+    "coupling does not change the normal contact (no shear tractions to couple; Johnson "
+    "1985, Contact Mechanics, sec. 5.4); where the interface holds shear (friction, stick, "
+    "adhesion) it brings shear tractions that change the contact a little. Exchanging the "
+    "bodies changes the sign of beta and not the contact, so the change of the width is even "
+    "in beta (of order beta^2) and grows with |beta| (at most 0.5); no figure for it is given"
 )
 
 
