@@ -9,7 +9,7 @@ Prints (loads over ``w sqrt(R/z0)``, compressive positive)
 2. a refinement study at mu = 1: ``lj_state(1.05, 1, m=m)`` and ``lj_pull_off(1, m=m)`` for
    m = 80 ... 1280 (640 with ``--quick``): the load, its error estimate and its actual error
    against the finest mesh, the nodes and the time;
-3. the rigid limit mu = 0 against the closed forms of ``linecontact.reference``;
+3. the rigid limit mu = 0 against the closed forms of ``linecontact.closed_forms``;
 4. the pull-off against Maugis-Dugdale with the Maugis matching (same work of adhesion and
    peak tension) and against the JKR line-contact pull-off -(3/4)(4 pi/mu)^(1/3) (the limit
    of large mu), for mu = 0.01 ... 10 (to 3 with ``--quick``), and whether the Dugdale
@@ -25,6 +25,7 @@ import time
 import numpy as np
 
 import linecontact as lc
+from linecontact.closed_forms import lennard_jones_rigid_load, lennard_jones_rigid_pull_off
 from linecontact.lennard_jones import (
     MAUGIS_MATCH_SIGMA0,
     lj_curve,
@@ -33,7 +34,6 @@ from linecontact.lennard_jones import (
     maugis_parameter_of_mu,
     mu_of_dugdale,
 )
-from linecontact.reference import lennard_jones_rigid_load, lennard_jones_rigid_pull_off
 
 
 def timed(fn):
@@ -80,7 +80,7 @@ def refinement(quick: bool) -> None:
 
 
 def rigid() -> None:
-    print("3. rigid limit mu = 0 against linecontact.reference")
+    print("3. rigid limit mu = 0 against linecontact.closed_forms")
     F_ref, z_ref = lennard_jones_rigid_pull_off()
     t, p = timed(lambda: lj_pull_off(0.0))
     rel = abs(p.F_pulloff / F_ref - 1)

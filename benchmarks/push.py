@@ -8,7 +8,11 @@ sliding inverse dominates), and over the same points the worst relative residual
 - Kendall's energy balance ``Q_roll H = R dw`` against the moment ``M - e F`` of the
   sliding solution at ``a_slide``;
 - the load carried by the steady contact (``residual_load``);
-- the load the collocation solver finds at ``a_slide``, against ``F`` (on 200 points).
+- the load the collocation solver finds at ``a_slide``, against ``F`` (on 200 points);
+
+then the best-of-3 time of ``push`` from a tip (``tip_friction``) over the same points,
+touching at ``H`` in ``[0.8, 1.35] R`` with a friction up to 0.3 (the fixed points of the
+tip's load: the sliding inverse's kernel at each iteration, the pull-off search once).
 """
 
 from __future__ import annotations
@@ -54,6 +58,13 @@ def main() -> None:
     print("  first motions: " + ", ".join(f"{k} {v}" for k, v in zip(firsts, counts, strict=True)))
     t1, _ = best_of(lambda: lc.push(100.0, 2.0, 0.01, 1e-3, 0.0, 1.0))
     print(f"push, one point: {1e3 * t1:.2f} ms")
+    H_tip = 0.8 + 0.55 * H  # H in [0, 2] above: a tip between 0.8 R and 1.35 R
+    mu = rng.uniform(0.0, 0.3, n)
+    t, p = best_of(lambda: lc.push(rho, r, s, tau, F, H_tip, 0.5 * tau, tip_friction=mu))
+    print(f"push from a tip, {n} points: {t:.3f} s ({1e6 * t / n:.1f} us/point)")
+    print(f"  worst load residual of the steady contact: {np.max(p.residual_load):.2e}")
+    t1, _ = best_of(lambda: lc.push(100.0, 2.0, 0.01, 1e-3, 0.0, 0.5, tip_friction=0.2))
+    print(f"push from a tip, one point: {1e3 * t1:.2f} ms")
 
 
 if __name__ == "__main__":

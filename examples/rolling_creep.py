@@ -32,9 +32,7 @@ F_po = wire.pull_off().pull_off_force  # N/m, negative
 loads = np.linspace(0.9 * F_po, 3 * abs(F_po), 8)  # N/m, vectorised over the loads
 
 # a load whose full-slip force 2 a tau0 is below T slides: reported, not raised
-roll = lc.cylinder_steady_rolling(
-    wire, loads, friction_stress=TAU0, tangential_load=T, on_failure="report"
-)
+roll = wire.steady_rolling(loads, friction_stress=TAU0, tangential_load=T, on_failure="report")
 a = roll.contact_half_width
 print(f"steady rolling with adhesion, tau0 = {TAU0 / 1e6:g} MPa, T = {T} N/m")
 print("  F [N/m]    a [nm]   T/(2 a tau0)   stick zone from d/a   creep (V - wR)/V")
@@ -50,8 +48,8 @@ hertz = lc.Cylinder.from_modulus(
 positive = loads[loads > 0]
 F_mid = positive[len(positive) // 2]
 mu = 2 * hertz.contact(load=F_mid).contact_half_width * TAU0 / F_mid
-carter = lc.cylinder_steady_rolling(
-    hertz, positive, friction_coefficient=mu, tangential_load=T, on_failure="report"
+carter = hertz.steady_rolling(
+    positive, friction_coefficient=mu, tangential_load=T, on_failure="report"
 )
 print(
     f"\nCarter (Coulomb friction mu = {mu:.3f}, no adhesion), T = {T} N/m: rolls for F > "

@@ -22,9 +22,9 @@ from numpy.testing import assert_allclose
 import linecontact.adhesion_map as am
 from linecontact import contact_for_load, jkr_load, pull_off
 from linecontact.cli import main
+from linecontact.closed_forms import lennard_jones_rigid_load, lennard_jones_rigid_pull_off
 from linecontact.domain import DOMAIN
 from linecontact.lennard_jones import lj_contact_for_load, maugis_parameter_of_mu, mu_of_dugdale
-from linecontact.reference import lennard_jones_rigid_load, lennard_jones_rigid_pull_off
 
 RNG = np.random.default_rng(11)
 

@@ -394,8 +394,7 @@ def test_cylinder_push_too_wide_over_a_grid():
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", lc.ModelValidityWarning)
         with pytest.raises(ValueError, match=rf"normal_load={wide!r} N/m needs a contact"):
-            lc.cylinder_push(
-                cyl,
+            cyl.push(
                 friction_stress=1e6,
                 height=[10e-9, 50e-9],
                 normal_load=[[1.0], [wide]],

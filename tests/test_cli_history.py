@@ -9,7 +9,6 @@ from linecontact import (
     Cylinder,
     cyclic_loss,
     cyclic_loss_coulomb,
-    cylinder_cyclic_loss,
     tangential_history,
     tangential_history_coulomb,
 )
@@ -86,7 +85,7 @@ def test_cycle_si_with_length(capsys):
     assert code == 0, err
     params, recs = records(out)
     cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
-    ref = cylinder_cyclic_loss(cyl, 1.0, [0.5, 2.0], friction_stress=1e9)
+    ref = cyl.cyclic_loss(1.0, [0.5, 2.0], friction_stress=1e9)
     assert [r["W_J_per_m"] for r in recs[:2]] == list(ref.energy_per_cycle)
     assert [r["W_total_J"] for r in recs[:2]] == list(ref.energy_per_cycle * 5e-6)
     assert params["a_m"] == ref.contact_half_width

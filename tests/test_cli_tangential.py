@@ -9,7 +9,6 @@ import pytest
 from linecontact import (
     Cylinder,
     contact_for_load,
-    cylinder_sliding_initiation,
     sliding_initiation,
     sliding_initiation_coulomb,
     steady_rolling,
@@ -178,7 +177,7 @@ def test_si_mode_matches_the_api(capsys):
     assert code == 0, err
     recs = records(out)
     cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
-    ref = cylinder_sliding_initiation(cyl, 1.0, friction_stress=1e9, tangential_load=[1, 5])
+    ref = cyl.sliding_initiation(1.0, friction_stress=1e9, tangential_load=[1, 5])
     assert [r["d_m"] for r in recs] == list(ref.stick_zone_end)
     assert all(r["a_m"] == ref.contact_half_width for r in recs)
     assert [r["T_N_per_m"] for r in recs] == pytest.approx([1, 5], rel=1e-14)

@@ -22,8 +22,7 @@ def cyl():
 
 
 def test_si_is_the_groups_times_their_units(cyl):
-    p = lc.cylinder_push(
-        cyl,
+    p = cyl.push(
         friction_stress=1e6,
         height=[25e-9, 50e-9],
         receding_range=H1,
@@ -43,8 +42,8 @@ def test_si_is_the_groups_times_their_units(cyl):
 
 
 def test_receding_work_of_adhesion_is_the_range_times_sigma0(cyl):
-    a = lc.cylinder_push(cyl, friction_stress=1e6, height=3e-8, receding_range=H1)
-    b = lc.cylinder_push(cyl, friction_stress=1e6, height=3e-8, receding_work_of_adhesion=0.05)
+    a = cyl.push(friction_stress=1e6, height=3e-8, receding_range=H1)
+    b = cyl.push(friction_stress=1e6, height=3e-8, receding_work_of_adhesion=0.05)
     assert a.sliding_resistance == pytest.approx(b.sliding_resistance, rel=1e-14)
     with pytest.raises(ValueError, match="give length="):
         _ = a.rolling_resistance_total
@@ -72,4 +71,4 @@ def test_receding_work_of_adhesion_is_the_range_times_sigma0(cyl):
 def test_bad_si_input(cyl, kw, message):
     args = {"friction_stress": 1e6, "height": 3e-8, **kw}
     with pytest.raises(ValueError, match=message):
-        lc.cylinder_push(cyl, **args)
+        cyl.push(**args)

@@ -29,8 +29,8 @@ from hypothesis import strategies as st
 import linecontact as lc
 from linecontact import ConvergenceError, NoEquilibriumError
 from linecontact.cli import main
+from linecontact.closed_forms import KAPPA_MAX
 from linecontact.domain import DOMAIN
-from linecontact.reference import KAPPA_MAX
 
 EXAMPLES = int(os.environ.get("LINECONTACT_FUZZ_EXAMPLES", "40"))
 FUZZ = settings(
@@ -654,8 +654,8 @@ def _lj_mu() -> st.SearchStrategy[float]:
 @LJ
 @given(_lj_mu())
 def test_lennard_jones_pull_off_inside(mu):
+    from linecontact.closed_forms import lennard_jones_rigid_pull_off
     from linecontact.lennard_jones import MAUGIS_MATCH_SIGMA0, lj_pull_off
-    from linecontact.reference import lennard_jones_rigid_pull_off
 
     p = lj_pull_off(mu)
     assert p.converged and _finite(p.F_pulloff, p.central_gap_at_pulloff, p.error_estimate)

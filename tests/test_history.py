@@ -18,8 +18,6 @@ from linecontact import (
     Cylinder,
     cyclic_loss,
     cyclic_loss_coulomb,
-    cylinder_cyclic_loss,
-    cylinder_tangential_history,
     sliding_initiation,
     sliding_initiation_coulomb,
     tangential_history,
@@ -352,15 +350,15 @@ def test_cyclic_loss_broadcasts_and_returns_scalars_for_scalars():
 
 def test_si_layer_converts_units():
     cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
-    w = cylinder_cyclic_loss(cyl, 1.0, [0.5, 1.0, 100.0], friction_stress=1e9)
+    w = cyl.cyclic_loss(1.0, [0.5, 1.0, 100.0], friction_stress=1e9)
     a, E = w.contact_half_width, 100e9
     nd = cyclic_loss(1e9 / E, np.array([0.5, 1.0]) / (E * a))
     assert np.allclose(w.energy_per_cycle[:2], nd.W_over_Ea2 * E * a * a, rtol=1e-14)
     assert w.state[2] == "sliding" and np.isnan(w.energy_per_cycle[2])
-    h = cylinder_tangential_history(cyl, 1.0, [1.0, -1.0, 1.0], friction_stress=1e9)
+    h = cyl.tangential_history(1.0, [1.0, -1.0, 1.0], friction_stress=1e9)
     assert np.sum(h.dissipation[1:]) == pytest.approx(w.energy_per_cycle[1], rel=1e-13)
     hertz = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=0.0, adhesion_range=0.5e-9)
-    wc = cylinder_cyclic_loss(hertz, 1.0, 0.1, friction_coefficient=0.3)
+    wc = hertz.cyclic_loss(1.0, 0.1, friction_coefficient=0.3)
     assert wc.full_slip_load == pytest.approx(0.3)
     assert wc.energy_per_cycle > 0
 

@@ -25,7 +25,9 @@ FLOORS = {
         "linecontact.units",
     ],
     "core": [
+        "linecontact._numerics",
         "linecontact.sie",
+        "linecontact.closed_forms",
         "linecontact.reference",
         "linecontact.materials",
         "linecontact.presets",

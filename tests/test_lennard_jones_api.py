@@ -21,6 +21,7 @@ import pytest
 import linecontact as lc
 from linecontact import Cylinder, NoEquilibriumError, NormalContact
 from linecontact.cli import main
+from linecontact.closed_forms import lennard_jones_rigid_pull_off
 from linecontact.cylinder import (
     CylinderContact,
     CylinderLennardJonesContact,
@@ -36,7 +37,6 @@ from linecontact.lennard_jones_groups import (
     LennardJonesLoadCurve,
 )
 from linecontact.normal import LoadCurve
-from linecontact.reference import lennard_jones_rigid_pull_off
 
 LJ = "lennard-jones"
 S = 16 / (9 * math.sqrt(3))  # the peak tension of the law over w/z0

@@ -12,7 +12,7 @@ import pytest
 from scipy.integrate import quad
 from scipy.optimize import minimize_scalar
 
-from linecontact.reference import lennard_jones_rigid_load, lennard_jones_rigid_pull_off
+from linecontact.closed_forms import lennard_jones_rigid_load, lennard_jones_rigid_pull_off
 
 
 def _by_quadrature(zeta: float) -> float:

@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from linecontact import ConvergenceError, NoEquilibriumError, maugis_parameter, pull_off
+from linecontact.closed_forms import lennard_jones_rigid_load, lennard_jones_rigid_pull_off
 from linecontact.lennard_jones import (
     MAUGIS_MATCH_SIGMA0,
     lj_contact_for_load,
@@ -25,7 +26,6 @@ from linecontact.lennard_jones import (
     maugis_parameter_of_mu,
     mu_of_dugdale,
 )
-from linecontact.reference import lennard_jones_rigid_load, lennard_jones_rigid_pull_off
 
 
 @pytest.mark.parametrize("zeta0", [0.95, 1.1, 2.0, 8.0])

@@ -18,7 +18,7 @@ from numpy.testing import assert_allclose, assert_array_equal
 from scipy.integrate import quad
 from scipy.special import roots_legendre
 
-from linecontact import reference
+from linecontact import closed_forms
 from linecontact.errors import ConvergenceError, NoEquilibriumError
 from linecontact.normal import (
     SNAP_OFF_MIN_WIDTH_OVER_H,
@@ -109,7 +109,7 @@ def test_hertz_limit_exact(method):
     rho = np.array([[10.0], [1e4]])
     r = normal_contact(A, rho, 0.0, method=method)
     assert_allclose(r.F_over_Eh, np.pi / 4 * A * A * rho, rtol=1e-14, err_msg=method)
-    assert_allclose(r.F_over_Eh, reference.hertz_load(A, rho), rtol=1e-14)
+    assert_allclose(r.F_over_Eh, closed_forms.hertz_load(A, rho), rtol=1e-14)
     assert np.all(r.stable)
     # the pressure is Hertz's: (1/2) sqrt(a^2 - x^2) / R in units of E
     r1 = normal_contact(0.05, 100.0, 0.0, method=method)
@@ -121,7 +121,7 @@ def test_hertz_limit_approached_as_sigma0_vanishes():
     A = np.array([1e-3, 0.01, 0.1])
     rho = 100.0
     errs = [
-        np.max(np.abs(normal_contact(A, rho, s).F_over_Eh / reference.hertz_load(A, rho) - 1))
+        np.max(np.abs(normal_contact(A, rho, s).F_over_Eh / closed_forms.hertz_load(A, rho) - 1))
         for s in (1e-4, 1e-6, 1e-8, 1e-10)
     ]
     for e_big, e_small in zip(errs, errs[1:], strict=False):
@@ -137,7 +137,7 @@ def test_jkr_limit():
     for rho in (1e3, 1e4, 1e5, 1e6, 1e7):
         s = W * rho
         r = normal_contact(A, rho, s)
-        errs.append(np.abs(r.F_over_Eh - reference.jkr_load(A, rho, s)) / rho)  # in E R units
+        errs.append(np.abs(r.F_over_Eh - closed_forms.jkr_load(A, rho, s)) / rho)  # in E R units
         gaps.append(r.c_over_a - 1)
     errs, gaps = np.array(errs), np.array(gaps)
     assert np.all(errs[1:] < errs[:-1] / 50), f"|F - F_JKR|/(E R): {errs}"
@@ -145,12 +145,12 @@ def test_jkr_limit():
     assert np.all(errs[-1] < 1e-11)
     assert np.all(gaps[-1] < 1e-7)
     # the load itself is a finite number of E R: the comparison is not of two tiny numbers
-    assert np.all(np.abs(reference.jkr_load(A, 1e7, W * 1e7)) / 1e7 > 1e-5)
+    assert np.all(np.abs(closed_forms.jkr_load(A, 1e7, W * 1e7)) / 1e7 > 1e-5)
 
 
 @pytest.mark.parametrize("rho, s", [(100.0, 0.01), (1e4, 0.3), (10.0, 1e-4), (100.0, 0.2)])
 def test_eq14_limit_zero_width(rho, s):
-    F0 = reference.zero_width_load(rho, s)
+    F0 = closed_forms.zero_width_load(rho, s)
     A = np.array([1e-3, 1e-5, 1e-7, 1e-9, 1e-12])
     r = normal_contact(A, rho, s)
     err = np.abs(r.F_over_Eh / F0 - 1)
@@ -416,7 +416,7 @@ def test_stable_flag_is_sign_of_dF_da():
 
 def test_kappa_stationary_strictly_decreasing():
     u = np.geomspace(1e-6, 1e6, 200_001)
-    k = reference._kappa_stationary(u)
+    k = closed_forms._kappa_stationary(u)
     assert np.all(np.isfinite(k))
     assert np.all(np.diff(k) < 0)
     # the ends: infinity at u -> 0 (as 2 sqrt(2) u^(-3/2)) and 0 at u -> infinity
@@ -460,10 +460,10 @@ def test_pull_off_zero_width_mechanism(rho, s):
     assert po.a_over_R_at_pulloff < SNAP_OFF_MIN_WIDTH_OVER_H / rho
     assert po.a_over_R_at_pulloff == po.a_over_R_at_minimum
     assert po.F_pulloff_over_Eh == po.F_minimum_over_Eh <= po.F_zero_width_over_Eh
-    assert_allclose(po.F_pulloff_over_Eh, reference.zero_width_load(rho, s), rtol=1e-8)
+    assert_allclose(po.F_pulloff_over_Eh, closed_forms.zero_width_load(rho, s), rtol=1e-8)
     assert_allclose(po.c_over_R_at_pulloff, non_contact(0.0, rho, s).c_over_R, rtol=1e-8)
-    assert_allclose(po.kappa, reference.kappa(rho, s), rtol=1e-15)
-    assert_allclose(po.maugis_parameter, reference.maugis_parameter(rho, s), rtol=1e-15)
+    assert_allclose(po.kappa, closed_forms.kappa(rho, s), rtol=1e-15)
+    assert_allclose(po.maugis_parameter, closed_forms.maugis_parameter(rho, s), rtol=1e-15)
 
 
 @pytest.mark.parametrize("rho", [10.0, 100.0, 1e3, 1e4])
@@ -496,7 +496,7 @@ def test_pull_off_snap_off_mechanism(rho, s):
     assert po.a_over_R_at_pulloff > 0, msg
     assert po.a_over_R_at_pulloff == po.a_over_R_at_minimum
     assert po.F_pulloff_over_Eh == po.F_minimum_over_Eh
-    assert po.F_pulloff_over_Eh < reference.zero_width_load(rho, s) * (1 + 1e-6), msg
+    assert po.F_pulloff_over_Eh < closed_forms.zero_width_load(rho, s) * (1 + 1e-6), msg
     r = normal_contact(po.a_over_R_at_pulloff, rho, s)
     assert_allclose(r.F_over_Eh, po.F_pulloff_over_Eh, rtol=1e-12, err_msg=msg)
     assert_allclose(r.c_over_R, po.c_over_R_at_pulloff, rtol=1e-12, err_msg=msg)
@@ -540,7 +540,7 @@ def test_pull_off_vectorised_1000_points():
         "kappa",
     ):
         assert np.all(np.isfinite(getattr(po, name))), name
-    F0 = reference.zero_width_load(rho, s)
+    F0 = closed_forms.zero_width_load(rho, s)
     assert np.all(po.F_pulloff_over_Eh <= F0)
     assert np.all(po.F_pulloff_over_Eh < 0)
     assert set(np.unique(po.mechanism)) == {"snap-off", "zero-width"}
@@ -673,7 +673,7 @@ def test_equilibria_compressive_and_below_pull_off():
 def test_non_contact_end_points_and_monotonicity():
     for rho, s in (SNAP, ZERO, (1e4, 0.3)):
         r0 = non_contact(0.0, rho, s)
-        assert_allclose(r0.F_over_Eh, reference.zero_width_load(rho, s), rtol=1e-14)
+        assert_allclose(r0.F_over_Eh, closed_forms.zero_width_load(rho, s), rtol=1e-14)
         r1 = non_contact(1.0, rho, s)
         assert r1.F_over_Eh == 0.0 and r1.c_over_R == 0.0
         g = np.linspace(0, 1, 101)
@@ -733,7 +733,7 @@ def test_load_curve_snap_off():
     assert lc.central_gap_over_h[0] == 1.0 and lc.F_over_Eh[0] == 0.0
     assert np.all(np.diff(lc.central_gap_over_h[nc]) < 0)
     assert np.all(np.diff(lc.a_over_R[ct]) > 0)
-    assert_allclose(lc.F_over_Eh[nc][-1], reference.zero_width_load(rho, s), rtol=1e-14)
+    assert_allclose(lc.F_over_Eh[nc][-1], closed_forms.zero_width_load(rho, s), rtol=1e-14)
     assert_array_equal(lc.a_over_R[nc], 0.0)
     assert_array_equal(lc.central_gap_over_h[ct], 0.0)
     assert_allclose(lc.F_over_Eh[ct], normal_contact(lc.a_over_R[ct], rho, s).F_over_Eh, rtol=1e-13)
@@ -745,7 +745,7 @@ def test_load_curve_sizes_and_hertz():
     assert set(lc.branch.tolist()) == {"contact"}  # no adhesion: no non-contact branch
     assert lc.a_over_R.max() == 0.1
     assert not lc.turning_point.any()
-    assert_allclose(lc.F_over_Eh, reference.hertz_load(lc.a_over_R, 100.0), rtol=1e-14)
+    assert_allclose(lc.F_over_Eh, closed_forms.hertz_load(lc.a_over_R, 100.0), rtol=1e-14)
     lc = load_curve(*SNAP, num=20, num_noncontact=5)
     assert (lc.branch == "non-contact").sum() == 5
 

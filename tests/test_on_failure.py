@@ -122,16 +122,16 @@ DEPRECATED = [
         "raise_on_failure", False, "report", _state,
     ),
     (
-        "cylinder_sliding_initiation",
-        lambda **k: lc.cylinder_sliding_initiation(
-            CYL, 1.0, friction_stress=1e9, tangential_load=[1.0, 100.0], **k
+        "Cylinder.sliding_initiation",
+        lambda **k: CYL.sliding_initiation(
+            1.0, friction_stress=1e9, tangential_load=[1.0, 100.0], **k
         ),
         "on_sliding", "report", "report", _state,
     ),
     (
-        "cylinder_steady_rolling",
-        lambda **k: lc.cylinder_steady_rolling(
-            HERTZ, 1.0, friction_coefficient=0.3, tangential_load=[0.1, 1.0], **k
+        "Cylinder.steady_rolling",
+        lambda **k: HERTZ.steady_rolling(
+            1.0, friction_coefficient=0.3, tangential_load=[0.1, 1.0], **k
         ),
         "on_sliding", "report", "report", _state,
     ),
@@ -190,7 +190,7 @@ def test_the_reports_mark_the_points():
         lambda **k: lc.sliding_initiation(0.01, 0.5, **k),
         lambda **k: lc.tangential_history(0.01, [0.01], **k),
         lambda **k: CYL.contact(load=1.0, **k),
-        lambda **k: lc.cylinder_steady_rolling(CYL, 1.0, friction_stress=1e9, d_over_a=0.0, **k),
+        lambda **k: CYL.steady_rolling(1.0, friction_stress=1e9, d_over_a=0.0, **k),
     ],
 )
 @pytest.mark.parametrize("new", ["raise", "report"])
@@ -252,8 +252,8 @@ def test_the_default_is_raise_everywhere():
         lc.steady_rolling_coulomb,
         lc.tangential_history,
         lc.tangential_history_coulomb,
-        lc.cylinder_sliding_initiation,
-        lc.cylinder_steady_rolling,
+        lc.Cylinder.sliding_initiation,
+        lc.Cylinder.steady_rolling,
         lc.Cylinder.contact,
         ljg.contact_for_load_in_dugdale_groups,
     ]
@@ -265,7 +265,7 @@ def test_the_default_is_raise_everywhere():
     with pytest.raises(NoEquilibriumError, match="full-slip load"):
         lc.steady_rolling(0.01, T_over_Ea=0.03)
     with pytest.raises(NoEquilibriumError, match="full-slip load"):
-        lc.cylinder_sliding_initiation(CYL, 1.0, friction_stress=1e9, tangential_load=100.0)
+        CYL.sliding_initiation(1.0, friction_stress=1e9, tangential_load=100.0)
 
 
 def test_sliding_defaults_to_the_closed_form():
@@ -307,8 +307,7 @@ def test_api_calls_give_no_deprecation_warning():
         warnings.simplefilter("error", DeprecationWarning)
         lc.push(100.0, 2.0, 0.01, 1e-3, 0.0, [0.25, 1.0, 2.0], [1e-4, 1e-2, 1.0])
         lc.tip_push([0.5, 1.0], 0.1)
-        lc.cylinder_push(
-            CYL,
+        CYL.push(
             friction_stress=1e6,
             normal_load=1.0,
             height=[25e-9, 100e-9],
@@ -317,8 +316,8 @@ def test_api_calls_give_no_deprecation_warning():
         )
         CYL.contact(load=[-100.0, 1.0], on_failure="report")
         CYL.contact(contact_half_width=2e-9, method="collocation")
-        lc.cylinder_steady_rolling(
-            CYL, 1.0, friction_stress=1e9, tangential_load=[1.0, 100.0], on_failure="report"
+        CYL.steady_rolling(
+            1.0, friction_stress=1e9, tangential_load=[1.0, 100.0], on_failure="report"
         )
         wire = lc.Cylinder.from_modulus(
             50e-9, 50e9, work_of_adhesion=0.1, equilibrium_spacing=0.3e-9
@@ -331,10 +330,15 @@ def test_api_calls_give_no_deprecation_warning():
 
 
 def _no_deprecation(capsys, *argv):
-    code = main(list(argv))
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", DeprecationWarning)  # not even a caught one
+        code = main(list(argv))
     out, err = capsys.readouterr()
     assert "deprecated" not in err.lower(), err
     return code, out, err
+
+
+_SI = ["--radius", "50e-9", "--modulus", "100e9", "--sigma0", "1e9", "--h", "0.5e-9"]
 
 
 @pytest.mark.parametrize(
@@ -357,6 +361,12 @@ def _no_deprecation(capsys, *argv):
         ["push", "--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.01",
          "--tau0-over-E", "1e-3", "--H-over-R", "0.25", "1", "2"],
         ["history", "--tau0-over-E", "0.01", "--T-over-Ea", "0.016", "-0.008", "0.03"],
+        # the SI runs, through the methods of Cylinder (the cylinder_* functions deprecated)
+        ["slide-init", *_SI, "--load", "1", "--tau0", "1e9", "--tangential-load", "1", "5"],
+        ["push", "--radius", "50e-9", "--modulus", "48e9", "--sigma0", "1e8", "--h2", "0.3e-9",
+         "--h1", "0.6e-9", "--tau0", "1e6", "--height", "10e-9", "50e-9", "--length", "1e-6"],
+        ["history", *_SI, "--load", "1", "--tau0", "1e9", "--tangential-load", "1", "-1", "1"],
+        ["cycle", *_SI, "--load", "1", "--tau0", "1e9", "--tangential-amplitude", "0.5", "9"],
     ],
     ids=lambda a: " ".join(a[:1] + a[-2:]),
 )  # fmt: skip

@@ -1,8 +1,9 @@
 """Each constant and closed form once: the source of the package is read, not run.
 
 The Maugis strength ``16/(9 sqrt 3)`` lives in ``materials.py`` (``MAUGIS_STRENGTH``), the
-group ``kappa = (4/pi)(sigma0/E) sqrt(2R/h)`` in ``reference._kappa``, and the closed forms of
-Hertz and JKR in ``reference`` (``_hertz``, ``_jkr``, ``_jkr_pull_off``, ...): any other
+group ``kappa = (4/pi)(sigma0/E) sqrt(2R/h)`` in ``closed_forms/groups.py`` (``_kappa``), and
+the closed forms of JKR and the rigid pull-off in ``closed_forms/jkr.py`` (``_jkr``,
+``_jkr_pull_off``, ``_rigid_pull_off``, ...): any other
 module writing them again fails here. Every expression of every module under
 ``src/linecontact`` is normalised by ``ast.unparse`` (so that parentheses, spacing and
 strings or comments do not matter) and matched against each spelling.
@@ -37,19 +38,19 @@ RULES = {
         ],
     ),
     "kappa": (
-        ("reference.py", ("_kappa",)),
+        ("closed_forms/groups.py", ("_kappa",)),
         [rf"\b4{_NUM}\s*/\s*(?:\w+\.)?pi\b.*sqrt\(2{_NUM}\s*\*"],
     ),
     "JKR load": (
-        ("reference.py", ("_jkr", "_jkr_half_width")),
+        ("closed_forms/jkr.py", ("_jkr", "_jkr_half_width")),
         [rf"sqrt\(2{_NUM}\s*\*\s*(?:\w+\.)?pi\s*\*"],
     ),
     "JKR pull-off": (
-        ("reference.py", ("_jkr_pull_off",)),
+        ("closed_forms/jkr.py", ("_jkr_pull_off",)),
         [rf"0?\.75\s*\*\s*(?:\w+\.)?cbrt\(4{_NUM}\s*\*\s*(?:\w+\.)?pi"],
     ),
     "rigid pull-off": (
-        ("reference.py", ("_rigid_pull_off",)),
+        ("closed_forms/jkr.py", ("_rigid_pull_off",)),
         [rf"\b2{_NUM}\s*\*\s*(?:\w+\.)*sqrt\(2{_NUM}\)\s*\*"],
     ),
 }

@@ -218,3 +218,40 @@ def test_an_unconverged_point_is_named():
     P._raise_unconverged(p, np.ones(3, bool), False)
     with pytest.raises(lc.ConvergenceError, match=r"push did not converge at .*H_over_R=1.0"):
         P._raise_unconverged(p, np.array([True, False, True]), False)
+
+
+# --------------------------------------------------------------------------------------------
+# public functions check, private kernels compute (issue 21): the pull-off searches run once
+
+
+def test_the_pulloff_searches_run_once_per_call(monkeypatch):
+    SI = importlib.import_module("linecontact.sliding.inverse")
+    NI = importlib.import_module("linecontact.normal.inverse")
+    calls = []
+    search = SI._pulloff_flat
+    monkeypatch.setattr(SI, "_pulloff_flat", lambda *a: calls.append(1) or search(*a))
+    rest = NI._pulloff_arrays
+    monkeypatch.setattr(NI, "_pulloff_arrays", lambda *a: calls.append(2) or rest(*a))
+    H = [0.3, 0.6, 1.2, 1.7]
+    p = lc.push(RHO, R, S, TAU, 0.05, H, 2e-3, tip_friction=0.2)  # fixed points iterate
+    assert calls == [1]  # the sliding search, at _branch_ends; the normal one outside NI
+    assert np.all(p.converged)
+    calls.clear()
+    lc.push(RHO, R, S, TAU, 0.05, 0.6, 2e-3, tip_friction=0.2)  # the scalar path
+    assert calls == [1]
+
+
+@pytest.mark.parametrize("scalar", [False, True])
+def test_the_kernels_give_the_public_answers(scalar):
+    F = 0.05 if scalar else [-0.005, 0.05, 1.0]
+    p = _inputs(F=F, H=1.2 if scalar else [1.2, 1.2, 1.2], mu=0.2)
+    load = p.F + 0.01
+    a, F, conv = P._slide_at(p, slice(None), load)
+    args = (float(load[0]), RHO, R, S) if scalar else (load, RHO, R, S)
+    ref = lc.sliding_contact_for_load(*args)
+    np.testing.assert_array_equal(a, np.reshape(ref.a_over_R, -1))
+    np.testing.assert_array_equal(F, np.reshape(ref.F_over_Eh2, -1))
+    assert conv.all()
+    a, conv = P._rest_at(p, slice(None), load)
+    ref = lc.contact_for_load(args[0], RHO, S, on_failure="report")
+    np.testing.assert_array_equal(a, np.reshape(ref.a_over_R, -1))

@@ -182,13 +182,13 @@ A3, B2 = [0.01, 0.02, 0.03], [1.0, 2.0]
             r"work_of_adhesion has shape \(3,\), equilibrium_spacing has shape \(2,\)",
         ),
         (
-            lc.cylinder_steady_rolling,
+            lc.Cylinder.steady_rolling,
             (CYL, [0.5, 1.0, 2.0]),
             {"friction_stress": 1e9, "tangential_load": [0.1, 0.2]},
             r"normal_load has shape \(3,\), tangential_load has shape \(2,\)",
         ),
         (
-            lc.cylinder_sliding_initiation,
+            lc.Cylinder.sliding_initiation,
             (CYL, 1.0),
             {"friction_stress": [1e9, 2e9, 3e9], "d_over_a": [0.1, 0.2]},
             r"friction_stress has shape \(3,\), d_over_a has shape \(2,\)",
@@ -205,15 +205,19 @@ def test_shapes_that_do_not_broadcast_are_named(fn, args, kwargs, message):
 @pytest.mark.parametrize("fn", [lc.cylinder_sliding_initiation, lc.cylinder_steady_rolling])
 @pytest.mark.parametrize("cylinder", [None, "cyl", 50e-9])
 def test_cylinder_functions_want_a_cylinder(fn, cylinder):
-    with pytest.raises(ValueError, match=r"^cylinder must be a linecontact.Cylinder"):
+    # the deprecated aliases: they warn, then check that they were given a Cylinder
+    with (
+        pytest.warns(DeprecationWarning, match=r"use Cylinder\."),
+        pytest.raises(ValueError, match=r"^cylinder must be a linecontact.Cylinder"),
+    ):
         fn(cylinder, 1.0, friction_stress=1e9, d_over_a=0.5)
 
 
 @pytest.mark.parametrize(
     "fn, d, message",
     [
-        (lc.cylinder_sliding_initiation, 1.0, r"^d_over_a must be in \[0, 1\), got 1.0$"),
-        (lc.cylinder_steady_rolling, -1.0, r"^d_over_a must be in \(-1, 1\), got -1.0$"),
+        (lc.Cylinder.sliding_initiation, 1.0, r"^d_over_a must be in \[0, 1\), got 1.0$"),
+        (lc.Cylinder.steady_rolling, -1.0, r"^d_over_a must be in \(-1, 1\), got -1.0$"),
     ],
 )
 def test_cylinder_functions_check_the_stick_zone_first(fn, d, message):
@@ -720,7 +724,7 @@ def test_cylinder_load_below_pull_off_is_said_in_newton_per_metre():
         CYL.contact(load=[1.0, -100.0])
     # and the tangential functions name their own parameter
     with pytest.raises(NoEquilibriumError, match=r"^no contact carries normal_load=-50.0 N/m"):
-        lc.cylinder_steady_rolling(CYL, -50.0, friction_stress=1e8, d_over_a=0.1)
+        CYL.steady_rolling(-50.0, friction_stress=1e8, d_over_a=0.1)
 
 
 def test_si_inputs_outside_the_validated_domain_are_named_in_si():
@@ -732,14 +736,14 @@ def test_si_inputs_outside_the_validated_domain_are_named_in_si():
     ):
         CYL.contact(load=[1.0, 1e20])
     with pytest.raises(ValueError, match=r"^normal_load must be in \[-5e\+13, 5e\+13\] N/m"):
-        lc.cylinder_steady_rolling(CYL, 1e20, friction_stress=1e8, d_over_a=0.1)
+        CYL.steady_rolling(1e20, friction_stress=1e8, d_over_a=0.1)
     # a load inside that range whose contact is wider than 10 radii (Hertz: 3.9e5 N/m)
     with pytest.raises(
         ValueError,
         match=r"^normal_load=1000000\.0 N/m needs a contact of half-width 7\.979\d*e-07 m, "
         r"15\.9\d* radii: beyond the domain of the solvers \(a_over_R <= 10\)$",
     ):
-        lc.cylinder_steady_rolling(CYL, 1e6, friction_stress=1e8, d_over_a=0.1)
+        CYL.steady_rolling(1e6, friction_stress=1e8, d_over_a=0.1)
     with pytest.raises(ValueError, match=r"^load=1000000\.0 N/m needs a contact"):
         CYL.contact(load=1e6)
     with pytest.raises(

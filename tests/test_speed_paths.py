@@ -1,8 +1,8 @@
 """The fast paths give the results of the general ones.
 
-- A scalar call runs the vectorised kernels on NumPy scalars (``reference._where``): it must
+- A scalar call runs the vectorised kernels on NumPy scalars (``_numerics._where``): it must
   give the element of the same call on an array, to rounding.
-- The per-point iterations (``reference._iterate``) drop converged points: a batch with an
+- The per-point iterations (``_numerics._iterate``) drop converged points: a batch with an
   extreme or unconvergeable point returns the other points as when each is alone.
 - The collocation solvers work on chunks of points (``sie._CHUNK_ELEMENTS``): any chunk size
   gives the same results, to rounding.
@@ -31,7 +31,7 @@ import scipy.special
 from numpy.testing import assert_array_equal
 
 import linecontact as lc
-from linecontact import reference, sie
+from linecontact import _numerics, closed_forms, sie
 from linecontact._validation import check_array, non_negative, positive
 from linecontact.tangential._core import _xlogy
 
@@ -210,16 +210,16 @@ def test_iterate_drops_finished_points():
         return (x,), x >= target
 
     target = np.array([3.0, 1.0, np.inf, 5.0])
-    (x,), its = reference._iterate(step, (np.zeros(4),), (target,), 8)
+    (x,), its = _numerics._iterate(step, (np.zeros(4),), (target,), 8)
     assert_array_equal(its, [3, 1, 8, 5])
     assert_array_equal(x, [3.0, 1.0, 8.0, 5.0])
     assert sizes == [4, 3, 3, 2, 2, 1, 1, 1]
     # scalars: the same iteration on NumPy scalars
-    (xs,), k = reference._iterate(step, (np.float64(0.0),), (np.float64(3.0),), 8)
+    (xs,), k = _numerics._iterate(step, (np.float64(0.0),), (np.float64(3.0),), 8)
     assert (xs, k) == (3.0, 3)
     # points marked done are not iterated at all
     sizes.clear()
-    (x,), its = reference._iterate(
+    (x,), its = _numerics._iterate(
         step, (np.zeros(3),), (np.array([2.0, 2.0, 2.0]),), 8, done=np.array([True, False, True])
     )
     assert_array_equal(its, [0, 2, 0])
@@ -230,16 +230,16 @@ def test_iterate_drops_finished_points():
 def test_u_of_abar_counts_iterations_per_point():
     ab = np.array([0.14, 1e-200, 3.0, 1e20])
     kap = np.full(4, 0.11)
-    u, res, it = reference._u_of_abar(ab, kap)
+    u, res, it = closed_forms._u_of_abar(ab, kap)
     for i in (0, 2):
-        ui, ri, ki = reference._u_of_abar(ab[i], kap[i])
+        ui, ri, ki = closed_forms._u_of_abar(ab[i], kap[i])
         assert _agree(u[i], ui, "u") and _agree(res[i], ri, "residual")
         assert abs(int(it[i]) - int(ki)) <= 1  # a last bit may cost or save a Newton step
     assert it.max() <= 8
     # the closed form over a broad sample needs a handful of Newton steps per point
     A, rho, s = _sample(20_000, np.random.default_rng(7))
     kap = (4 / np.pi) * s * np.sqrt(2 * rho)
-    _, res, it = reference._u_of_abar(A * np.sqrt(rho / 2), kap)
+    _, res, it = closed_forms._u_of_abar(A * np.sqrt(rho / 2), kap)
     assert it.max() <= 6 and res.max() < 1e-13
 
 
@@ -250,11 +250,11 @@ def test_u_stationary_matches_bisection():
     hi = np.full(kap.shape, np.log(1e9))
     for _ in range(90):
         mid = 0.5 * (lo + hi)
-        above = reference._kappa_stationary(np.exp(mid)) > kap
+        above = closed_forms._kappa_stationary(np.exp(mid)) > kap
         lo, hi = np.where(above, mid, lo), np.where(above, hi, mid)
-    np.testing.assert_allclose(reference._u_stationary(kap), np.exp(0.5 * (lo + hi)), rtol=1e-14)
-    scalar = reference._u_stationary(np.float64(1.0))
-    assert _agree(scalar, reference._u_stationary(np.array([1.0]))[0], "u")
+    np.testing.assert_allclose(closed_forms._u_stationary(kap), np.exp(0.5 * (lo + hi)), rtol=1e-14)
+    scalar = closed_forms._u_stationary(np.float64(1.0))
+    assert _agree(scalar, closed_forms._u_stationary(np.array([1.0]))[0], "u")
 
 
 def test_batch_with_an_unconvergeable_point_keeps_the_others():

@@ -18,8 +18,6 @@ from linecontact import (
     Cylinder,
     NoEquilibriumError,
     contact_for_load,
-    cylinder_sliding_initiation,
-    cylinder_steady_rolling,
     sliding_initiation,
     sliding_initiation_coulomb,
     steady_rolling,
@@ -487,7 +485,7 @@ def test_sweep_coulomb(mu, A, d):
 def test_si_layer_matches_nondimensional():
     cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
     F = np.array([0.5, 2.0])
-    r = cylinder_steady_rolling(cyl, F, friction_stress=2e8, tangential_load=0.5)
+    r = cyl.steady_rolling(F, friction_stress=2e8, tangential_load=0.5)
     a = contact_for_load(F / (100e9 * 0.5e-9), 100.0, 0.01).a_over_R * 50e-9
     assert_allclose(r.contact_half_width, a, rtol=1e-14)
     nd = steady_rolling(2e8 / 100e9, T_over_Ea=0.5 / (100e9 * a))
@@ -496,16 +494,14 @@ def test_si_layer_matches_nondimensional():
     assert_allclose(r.full_slip_load, 2 * a * 2e8, rtol=1e-14)
     assert_allclose(r.tangential_load, 0.5, rtol=1e-14)
     assert r.problem == "steady rolling" and r.friction == "constant"
-    s = cylinder_sliding_initiation(
-        cyl, 1.0, friction_stress=2e8, d_over_a=[0.0, 0.5], on_failure="report"
-    )
+    s = cyl.sliding_initiation(1.0, friction_stress=2e8, d_over_a=[0.0, 0.5], on_failure="report")
     assert list(s.state) == ["sliding", "stick-slip"] and s.creep_ratio is None
 
 
 def test_si_layer_coulomb_uses_hertz():
     cyl = Cylinder.from_modulus(1e-3, 100e9, adhesion_range=1e-9)  # no adhesion
     F = 1e4
-    r = cylinder_sliding_initiation(cyl, F, friction_coefficient=0.3, tangential_load=1500.0)
+    r = cyl.sliding_initiation(F, friction_coefficient=0.3, tangential_load=1500.0)
     a = np.sqrt(4 * F * 1e-3 / (np.pi * 100e9))
     assert r.contact_half_width == pytest.approx(a, rel=1e-12)
     assert r.full_slip_load == pytest.approx(0.3 * F)
@@ -624,7 +620,7 @@ BAD_SI = [
 def test_bad_si_input(kwargs, message):
     kw = {"d_over_a": 0.5, **kwargs} if "tangential_load" not in kwargs else kwargs
     with pytest.raises(ValueError, match=message):
-        cylinder_steady_rolling(_cyl(), 1.0, **kw)
+        _cyl().steady_rolling(1.0, **kw)
 
 
 def test_si_errors_from_the_normal_problem_and_coulomb_adhesion():
@@ -633,15 +629,11 @@ def test_si_errors_from_the_normal_problem_and_coulomb_adhesion():
         match=r"Coulomb friction is the macro-scale counterpart for "
         r"the non-adhesive Hertz contact",
     ):
-        cylinder_sliding_initiation(
-            _cyl(cohesive_stress=1e9), 1.0, friction_coefficient=0.3, d_over_a=0.5
-        )
+        _cyl(cohesive_stress=1e9).sliding_initiation(1.0, friction_coefficient=0.3, d_over_a=0.5)
     with pytest.raises(ValueError, match=r"normal_load must be in \(0, inf\), got 0\.0"):
-        cylinder_sliding_initiation(_cyl(), 0.0, friction_coefficient=0.3, d_over_a=0.5)
+        _cyl().sliding_initiation(0.0, friction_coefficient=0.3, d_over_a=0.5)
     with pytest.raises(NoEquilibriumError, match=r"below the pull-off force"):
-        cylinder_sliding_initiation(
-            _cyl(cohesive_stress=1e9), -100.0, friction_stress=1e8, d_over_a=0.5
-        )
+        _cyl(cohesive_stress=1e9).sliding_initiation(-100.0, friction_stress=1e8, d_over_a=0.5)
 
 
 # --------------------------------------------------------------------------------------------

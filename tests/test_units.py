@@ -15,11 +15,6 @@ import linecontact as lc
 from linecontact import inverse as inv
 from linecontact.cylinder import (
     Cylinder,
-    cylinder_cyclic_loss,
-    cylinder_push,
-    cylinder_sliding_initiation,
-    cylinder_steady_rolling,
-    cylinder_tangential_history,
 )
 from linecontact.lennard_jones._groups import LennardJonesPullOff
 from linecontact.lennard_jones_groups import LennardJonesContact
@@ -143,8 +138,8 @@ def test_lennard_jones():
 
 
 def test_tangential(cyl):
-    for fn in (cylinder_sliding_initiation, cylinder_steady_rolling):
-        t = fn(cyl, [0.5, 1.0], friction_stress=1e9, tangential_load=0.5)
+    for fn in (cyl.sliding_initiation, cyl.steady_rolling):
+        t = fn([0.5, 1.0], friction_stress=1e9, tangential_load=0.5)
         r = t.nondimensional
         a = np.asarray(t.contact_half_width)
         np.testing.assert_array_equal(t.stick_zone_end, np.multiply(r.d_over_a, a))
@@ -157,9 +152,7 @@ def test_tangential(cyl):
 
 def test_push(cyl):
     h2 = 2 * cyl.adhesion_range
-    p = cylinder_push(
-        cyl, friction_stress=1e9, height=[0.5 * R, 1.5 * R], receding_range=h2, normal_load=1.0
-    )
+    p = cyl.push(friction_stress=1e9, height=[0.5 * R, 1.5 * R], receding_range=h2, normal_load=1.0)
     n = p.nondimensional
     Eh = E * cyl.adhesion_range  # the groups of a push are over E h2, h2 the advancing range
     for si_name, field, scale in (
@@ -177,12 +170,12 @@ def test_push(cyl):
 
 
 def test_histories(cyl):
-    w = cylinder_cyclic_loss(cyl, 1.0, [0.5, 1.0], friction_stress=1e9)
+    w = cyl.cyclic_loss(1.0, [0.5, 1.0], friction_stress=1e9)
     n, a = w.nondimensional, w.contact_half_width
     np.testing.assert_array_equal(w.energy_per_cycle, np.multiply(n.W_over_Ea2, E * a * a))
     np.testing.assert_array_equal(w.stick_zone_half_width, np.multiply(n.c_over_a, a))
     np.testing.assert_allclose(to_si(n, Scales.of(cyl, a=a))["amplitude"], [0.5, 1.0], rtol=1e-12)
-    h = cylinder_tangential_history(cyl, 1.0, [1.0, -1.0, 1.0], friction_stress=1e9)
+    h = cyl.tangential_history(1.0, [1.0, -1.0, 1.0], friction_stress=1e9)
     m, a = h.nondimensional, h.contact_half_width
     np.testing.assert_array_equal(h.stick_zone_half_width, np.asarray(m.c_over_a) * a)
     np.testing.assert_array_equal(h.displacement, np.asarray(m.displacement_over_a) * a)
@@ -212,13 +205,11 @@ def test_si_results_are_results(cyl):
         cyl.contact(load=[0.5, 1.0]),
         cyl.contact(load=1.0),
         cyl.pull_off(),
-        cylinder_sliding_initiation(cyl, [0.5, 1.0], friction_stress=1e9, tangential_load=0.5),
-        cylinder_steady_rolling(cyl, 1.0, friction_stress=1e9, tangential_load=0.5),
-        cylinder_push(
-            cyl, friction_stress=1e9, height=[0.5 * R, R], receding_range=1e-9, normal_load=1.0
-        ),
-        cylinder_cyclic_loss(cyl, 1.0, [0.5, 1.0], friction_stress=1e9),
-        cylinder_tangential_history(cyl, 1.0, [1.0, -1.0, 1.0], friction_stress=1e9),
+        cyl.sliding_initiation([0.5, 1.0], friction_stress=1e9, tangential_load=0.5),
+        cyl.steady_rolling(1.0, friction_stress=1e9, tangential_load=0.5),
+        cyl.push(friction_stress=1e9, height=[0.5 * R, R], receding_range=1e-9, normal_load=1.0),
+        cyl.cyclic_loss(1.0, [0.5, 1.0], friction_stress=1e9),
+        cyl.tangential_history(1.0, [1.0, -1.0, 1.0], friction_stress=1e9),
     ]
     for r in results:
         _round_trip(r)

@@ -7,7 +7,7 @@ import pytest
 
 import linecontact as lc
 from linecontact.cli import main
-from linecontact.reference import A_OVER_R_SMALL_STRAIN
+from linecontact.closed_forms import A_OVER_R_SMALL_STRAIN
 
 WIDE = "beyond the small-strain range of the half-plane theory"
 

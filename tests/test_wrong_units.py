@@ -98,32 +98,29 @@ ENTRIES: dict[str, tuple[set[str], Callable]] = {
         set(GOOD),
         lambda v: _cyl(v).lennard_jones_contact(load=0.5),
     ),
-    "cylinder_sliding_initiation": (
+    "Cylinder.sliding_initiation": (
         set(GOOD),
-        lambda v: lc.cylinder_sliding_initiation(
-            _cyl(v), 0.5, friction_stress=1e8, tangential_load=1e-3
-        ),
+        lambda v: _cyl(v).sliding_initiation(0.5, friction_stress=1e8, tangential_load=1e-3),
     ),
-    "cylinder_steady_rolling": (
+    "Cylinder.steady_rolling": (
         set(GOOD),
-        lambda v: lc.cylinder_steady_rolling(_cyl(v), 0.5, friction_stress=1e8, d_over_a=0.0),
+        lambda v: _cyl(v).steady_rolling(0.5, friction_stress=1e8, d_over_a=0.0),
     ),
-    "cylinder_push": (
+    "Cylinder.push": (
         set(GOOD),
-        lambda v: lc.cylinder_push(
-            _cyl(v),
+        lambda v: _cyl(v).push(
             friction_stress=1e8,
             height=25e-9,
             receding_work_of_adhesion=2 * v["work_of_adhesion"],
         ),
     ),
-    "cylinder_tangential_history": (
+    "Cylinder.tangential_history": (
         set(GOOD),
-        lambda v: lc.cylinder_tangential_history(_cyl(v), 0.5, [1e-3, -1e-3], friction_stress=1e8),
+        lambda v: _cyl(v).tangential_history(0.5, [1e-3, -1e-3], friction_stress=1e8),
     ),
-    "cylinder_cyclic_loss": (
+    "Cylinder.cyclic_loss": (
         set(GOOD),
-        lambda v: lc.cylinder_cyclic_loss(_cyl(v), 0.5, [1e-3], friction_stress=1e8),
+        lambda v: _cyl(v).cyclic_loss(0.5, [1e-3], friction_stress=1e8),
     ),
     "pull_off_force": (set(GOOD), lambda v: inv.pull_off_force(*v.values())),
     "jkr_pull_off_force": (
@@ -262,9 +259,7 @@ def test_a_push_below_the_sliding_pull_off_is_said_in_newtons_per_metre():
     po = lc.sliding_pull_off(cyl.R_over_h, h1 / cyl.adhesion_range, cyl.sigma0_over_E)
     F_po = po.F_pulloff_over_Eh2 * cyl.modulus * cyl.adhesion_range
     with pytest.raises(NoEquilibriumError) as exc:
-        lc.cylinder_push(
-            cyl, friction_stress=1e6, height=25e-9, receding_range=h1, normal_load=-3.0
-        )
+        cyl.push(friction_stress=1e6, height=25e-9, receding_range=h1, normal_load=-3.0)
     assert str(exc.value) == (
         f"normal_load=-3.0 N/m is below the sliding pull-off force {F_po:.6g} N/m of this "
         f"cylinder (receding range {h1:.6g} m): it has pulled off"
@@ -275,8 +270,8 @@ def test_a_push_below_the_sliding_pull_off_is_said_in_newtons_per_metre():
 def test_a_tangential_load_beyond_full_slip_is_said_in_newtons_per_metre():
     cyl = lc.Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
     with pytest.raises(NoEquilibriumError, match=r"^tangential_load=100\.0 N/m is at or above"):
-        lc.cylinder_sliding_initiation(
-            cyl, 1.0, friction_stress=1e9, tangential_load=[1.0, 100.0], on_failure="raise"
+        cyl.sliding_initiation(
+            1.0, friction_stress=1e9, tangential_load=[1.0, 100.0], on_failure="raise"
         )
 
 

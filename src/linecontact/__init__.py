@@ -14,12 +14,15 @@ length over ``E h``, stresses over ``E``; compressive load positive):
 - :mod:`linecontact.laws` -- a law is a module: ``laws.dugdale`` and ``laws.lennard_jones``
   have the same ``pull_off``, ``contact_for_load`` and ``load_curve`` (the Lennard-Jones law
   of Eq. 1 in the paper's groups);
-- :mod:`linecontact.reference` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14);
+- :mod:`linecontact.closed_forms` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14);
 - :mod:`linecontact.sie` -- the Gauss--Chebyshev singular-integral core;
 - :func:`fit_pull_off`, :func:`work_of_adhesion_from_pull_off`,
   :func:`shear_strength_from_friction`, :func:`propagate` -- from measurements to properties
   with uncertainty (:mod:`linecontact.inverse`); :class:`Material` -- presets with sources;
-- :class:`Cylinder` -- the SI layer (materials, adhesion as (sigma0, h) or (w, z0));
+- :class:`Cylinder` -- the SI layer (materials, adhesion as (sigma0, h) or (w, z0)), one
+  method per problem (``contact``, ``pull_off``, ``sliding``, ``sliding_initiation``,
+  ``steady_rolling``, ``push``, ``tangential_history``, ``cyclic_loss``); the ``cylinder_*``
+  functions are its deprecated aliases;
 - :mod:`linecontact.output` -- results to JSON, JSON Lines, CSV or tables, with provenance.
 """
 
@@ -30,6 +33,7 @@ from ._interrupt import imports_interruptible as _imports_interruptible
 with _imports_interruptible():
     from . import laws
     from ._version import __version__
+    from .closed_forms import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
     from .cylinder import (
         Cylinder,
         cylinder_cyclic_loss,
@@ -65,7 +69,6 @@ with _imports_interruptible():
     )
     from .presets import Material
     from .push import Push, TipPush, push, tip_push
-    from .reference import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
     from .sliding import (
         SlidingContact,
         SlidingPullOff,

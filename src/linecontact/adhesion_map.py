@@ -5,7 +5,7 @@ Maugis--Dugdale hold over the Maugis parameter and the load. Their map does not 
 to a cylinder on a half-plane. For a sphere both ends of the pull-off are plateaus in one
 scale, ``pi w R`` (Bradley 2, JKR 1.5), so one load axis serves every Maugis parameter. For
 a cylinder the rigid end scales with ``w sqrt(R/z0)`` (2.466 of it under the Lennard-Jones
-law, :func:`linecontact.reference.lennard_jones_rigid_pull_off`; 16 % more under the
+law, :func:`linecontact.closed_forms.lennard_jones_rigid_pull_off`; 16 % more under the
 matched Dugdale step) and the JKR end with ``(E w^2 R)^(1/3)`` (the pull-off
 ``-(3/4)(4 pi/mu)^(1/3) w sqrt(R/z0)``): in either scale the other end drifts with ``mu``,
 and there is no universal plateau. Here the load is therefore counted from the full law's
@@ -20,11 +20,11 @@ positive), the one group ``mu = w sqrt(R/z0) / (E z0)``, ``E`` the composite pla
 modulus. The models, in those units:
 
 - Hertz: ``F = (pi / (4 mu)) xi^2`` (:func:`hertz_half_width`);
-- JKR (Chaudhury et al. 1996, :func:`linecontact.reference.jkr_load`):
+- JKR (Chaudhury et al. 1996, :func:`linecontact.closed_forms.jkr_load`):
   ``F = (pi / (4 mu)) xi^2 - sqrt(2 pi xi / mu)``, pull-off ``-(3/4) (4 pi / mu)^(1/3)``
   (:func:`jkr_half_width`, :func:`jkr_load`);
 - rigid: the law on a rigid cylinder (no elastic deformation),
-  :func:`linecontact.reference.lennard_jones_rigid_load`; the gap below ``z0`` where
+  :func:`linecontact.closed_forms.lennard_jones_rigid_load`; the gap below ``z0`` where
   ``g0 + x^2/(2R) < z0``, ``xi = sqrt(2 (1 - g0/z0))`` (:func:`rigid_half_width`);
 - Maugis--Dugdale: the Dugdale step with the Maugis matching (same work of adhesion and
   peak tension, :func:`linecontact.lennard_jones.mu_of_dugdale`), solved by
@@ -51,8 +51,9 @@ from typing import ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from . import reference as _ref
+from . import closed_forms as _cf
 from ._validation import check_array
+from .closed_forms import lennard_jones_rigid_load, lennard_jones_rigid_pull_off
 from .errors import ConvergenceError
 from .lennard_jones import (
     MAUGIS_MATCH_SIGMA0,
@@ -62,7 +63,6 @@ from .lennard_jones import (
     maugis_parameter_of_mu,
 )
 from .normal import contact_for_load
-from .reference import lennard_jones_rigid_load, lennard_jones_rigid_pull_off
 from .results import Result
 
 __all__ = [
@@ -123,45 +123,45 @@ def hertz_half_width(F: ArrayLike, mu: ArrayLike) -> NDArray:
     """Hertz line contact: ``F = (pi/(4 mu)) xi^2``, so ``xi = sqrt(4 mu F/pi)``; 0 for ``F <= 0``.
 
     ``F`` over ``w sqrt(R/z0)``, ``xi`` over ``sqrt(R z0)``, arrays broadcast. The closed
-    form of :mod:`linecontact.reference` in the paper's groups with ``h = z0``: ``R/h = 1``
+    form of :mod:`linecontact.closed_forms` in the paper's groups with ``h = z0``: ``R/h = 1``
     (lengths over ``sqrt(R z0)``), ``sigma0/E = mu``, ``F/(E h) = mu F``.
     """
     F, mu = np.broadcast_arrays(np.asarray(F, float), np.asarray(mu, float))
-    return _ref._hertz_half_width(mu * F, 1.0)
+    return _cf._hertz_half_width(mu * F, 1.0)
 
 
 def jkr_load(xi: ArrayLike, mu: ArrayLike) -> NDArray:
     """JKR line contact in the full law's units: ``F = (pi/(4 mu)) xi^2 - sqrt(2 pi xi/mu)``.
 
-    :func:`linecontact.reference.jkr_load`, ``F = pi E a^2/(4R) - sqrt(2 pi E w a)``, with
+    :func:`linecontact.closed_forms.jkr_load`, ``F = pi E a^2/(4R) - sqrt(2 pi E w a)``, with
     ``a = xi sqrt(R z0)`` and ``F`` over ``w sqrt(R/z0)`` (as :func:`hertz_half_width`).
     """
     xi = np.asarray(xi, float)
     mu = np.asarray(mu, float)
-    return _ref._jkr(xi, 1.0, mu) / mu
+    return _cf._jkr(xi, 1.0, mu) / mu
 
 
 def jkr_pull_off(mu: ArrayLike) -> tuple[NDArray, NDArray]:
     """The JKR pull-off ``-(3/4)(4 pi/mu)^(1/3)`` and its half-width ``(2 mu/pi)^(1/3)``."""
     mu = np.asarray(mu, float)
-    F, xi = _ref._jkr_pull_off(1.0, mu)
+    F, xi = _cf._jkr_pull_off(1.0, mu)
     return F / mu, xi
 
 
 def jkr_half_width(F: ArrayLike, mu: ArrayLike) -> NDArray:
     """The JKR half-width on the stable branch (``xi`` above the pull-off width) at ``F``.
 
-    :func:`linecontact.reference._jkr_half_width` (Newton in ``sqrt(xi)``) at ``mu F``.
+    :func:`linecontact.closed_forms._jkr_half_width` (Newton in ``sqrt(xi)``) at ``mu F``.
     NaN below the pull-off (no JKR contact).
     """
     F, mu = np.broadcast_arrays(np.asarray(F, float), np.asarray(mu, float))
-    return _ref._jkr_half_width(mu * F, 1.0, mu)
+    return _cf._jkr_half_width(mu * F, 1.0, mu)
 
 
 def rigid_central_gap(F: ArrayLike) -> NDArray:
     """The central gap over ``z0`` of a rigid cylinder carrying ``F`` under the law.
 
-    The inverse of :func:`linecontact.reference.lennard_jones_rigid_load` on its branch of
+    The inverse of :func:`linecontact.closed_forms.lennard_jones_rigid_load` on its branch of
     contact (gaps below the pull-off gap 1.100925, where the load rises as the gap closes),
     by bisection in ``ln(g0)`` to round-off; NaN below the rigid pull-off and above the load
     at the smallest gap of that function's domain (0.01 ``z0``).

@@ -25,8 +25,8 @@ from typing import ClassVar, Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from . import closed_forms as _cf
 from . import normal as _normal
-from . import reference as _ref
 from ._validation import broadcast, check_array, first_point
 from .cylinder import _check_cylinder_si, _plausible
 from .materials import MAUGIS_STRENGTH
@@ -96,14 +96,14 @@ def jkr_pull_off_force(radius: ArrayLike, modulus: ArrayLike, work_of_adhesion: 
 
 
 def _jkr_pull_off_si(R, E, w):
-    """:func:`linecontact.reference._jkr_pull_off` in SI units (``h = R``: no range in JKR)."""
-    return E * R * _ref._jkr_pull_off(1.0, w / (E * R))[0]
+    """:func:`linecontact.closed_forms._jkr_pull_off` in SI units (``h = R``: no range in JKR)."""
+    return E * R * _cf._jkr_pull_off(1.0, w / (E * R))[0]
 
 
 def _dmt_pull_off_si(R, w, z0):
-    """:func:`linecontact.reference._rigid_pull_off` in SI units: ``E h`` times it (any E)."""
+    """:func:`linecontact.closed_forms._rigid_pull_off` in SI units: ``E h`` times it (any E)."""
     h = z0 / S_LJ
-    return h * _ref._rigid_pull_off(R / h, w / h)
+    return h * _cf._rigid_pull_off(R / h, w / h)
 
 
 def dmt_pull_off_force(
@@ -592,7 +592,7 @@ def fit_pull_off(
     note = ""
     exact = not have_sd and chi2 <= 1e-24 * float(np.sum(F * F))
     if not fixed:
-        lam = _ref.maugis_parameter(R / (z0 / S_LJ), S_LJ * w / (z0 * E))
+        lam = _cf.maugis_parameter(R / (z0 / S_LJ), S_LJ * w / (z0 * E))
         loose = not exact and not z_sd / z0 < 0.5
         if loose or not abs(corr) < 0.999:
             identifiable = False

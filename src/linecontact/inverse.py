@@ -33,8 +33,8 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from . import closed_forms as _cf
 from . import normal as _normal
-from . import reference as _ref
 from ._validation import broadcast, check_array, first_point
 from .cylinder import _check_cylinder_si, _plausible, _warn_widths
 from .errors import ModelValidityWarning
@@ -206,8 +206,8 @@ def _stable_width(F, R, E, w, z0, *, too_wide=None, pulled_off=np.nan):
 
 
 def _hertz_width(F, R, E):
-    """Hertz half-width [m] at the load F [N/m]: the closed form of reference, ``h = R``."""
-    return R * _ref._hertz_half_width(F / (E * R), 1.0)
+    """Hertz half-width [m] at the load F [N/m]: the closed form of closed_forms, ``h = R``."""
+    return R * _cf._hertz_half_width(F / (E * R), 1.0)
 
 
 def shear_strength_from_friction(
@@ -324,4 +324,4 @@ def shear_strength_from_friction(
 
 def _jkr_width(F, R, E, w):
     """Stable JKR line-contact half-width at the load F (nan below the pull-off)."""
-    return R * _ref._jkr_half_width(F / (E * R), 1.0, w / (E * R))
+    return R * _cf._jkr_half_width(F / (E * R), 1.0, w / (E * R))

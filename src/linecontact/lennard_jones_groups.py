@@ -30,7 +30,7 @@ from typing import Any, ClassVar
 import numpy as np
 from numpy.typing import NDArray
 
-from . import reference as _ref
+from . import closed_forms as _cf
 from ._validation import RAISE, FailurePolicy, failure_policy, first_point
 from .errors import ConvergenceError, NoEquilibriumError
 from .lennard_jones import (  # lj_groups, pull_off_of: defined there, re-exported here
@@ -254,7 +254,7 @@ def load_curve_in_dugdale_groups(
         _check_load(np.asarray(F_max), np.asarray(Fm), "F_max_over_Eh")
     c = lj_curve(mu, F_max=F_max)
     A = c.half_width / root
-    _ref._warn_wide(A, stacklevel=4)
+    _cf._warn_wide(A, stacklevel=4)
     return LennardJonesLoadCurve(
         F_over_Eh=c.F * scale,
         a_over_R=A,
@@ -341,7 +341,7 @@ def contact_for_load_in_dugdale_groups(
         E[i] = st.error_estimate * scale[i]
         res[i] = st.residual
         n[i] = st.n
-    _ref._warn_wide(A.reshape(shape) if shape else A[0], stacklevel=4)
+    _cf._warn_wide(A.reshape(shape) if shape else A[0], stacklevel=4)
     vals = dict(
         a_over_R=A,
         central_gap_over_h=G,

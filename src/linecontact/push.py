@@ -33,9 +33,11 @@ from numpy.typing import ArrayLike, NDArray
 from . import domain as _domain
 from ._validation import broadcast, check_array, first_point, point_text, scalar_or_array
 from .errors import ConvergenceError
-from .normal import contact_for_load, pull_off
+from .normal import pull_off
+from .normal.inverse import _contact_for_load
+from .normal.pulloff import _pulloff_arrays
 from .results import Result, as_output
-from .sliding import sliding_contact_for_load
+from .sliding.inverse import _sliding_ends, _sliding_for_load
 from .tangential import sliding_initiation, steady_rolling
 
 __all__ = ["Push", "TipPush", "push", "tip_push"]
@@ -267,6 +269,10 @@ class _Inputs:
     ``k`` the load the tip adds per unit horizontal push (0 for a horizontal push).
     ``dw`` is the adhesion hysteresis ``sigma0 (h1 - h2)`` over ``E h2``. ``scalar`` says
     that every input was a scalar: the inverses then take their scalar fast paths.
+    ``slide_ends`` and ``rest_ends`` are the lower ends of the stable branches of the
+    sliding contact and of the contact at rest at every point (the pull-off searches,
+    which depend on ``(R/h2, h1/h2, sigma0/E)`` only): computed once per call, and handed
+    to the inverses' kernels by :func:`_slide_at` and :func:`_rest_at`.
     """
 
     rho: NDArray
@@ -283,6 +289,8 @@ class _Inputs:
     tip: bool
     scalar: bool
     shape: tuple[int, ...]
+    slide_ends: tuple[NDArray, NDArray]
+    rest_ends: dict[str, NDArray]
 
 
 @dataclass(frozen=True)
@@ -326,7 +334,23 @@ def _checked(rho, r, s, tau, F, H, Q, mu) -> _Inputs:
         k = dF_per_P / q_per_P
     else:
         arm, k = H, np.zeros(H.shape)
-    return _Inputs(rho, r, s, tau, F, H, Q, mu, arm, k, s * (r - 1.0), tip, scalar, shape)
+    return _Inputs(rho, r, s, tau, F, H, Q, mu, arm, k, s * (r - 1.0), tip, scalar, shape,
+                   *_branch_ends(rho, r, s, scalar))  # fmt: skip
+
+
+def _branch_ends(rho, r, s, scalar: bool):
+    """The lower ends of the stable branches (sliding, at rest) at every point, once.
+
+    The pull-off searches of :func:`~linecontact.sliding_contact_for_load` and
+    :func:`~linecontact.contact_for_load`, on NumPy scalars for a scalar call (their fast
+    paths) kept as arrays of one point; kappa is checked here (as the inverses would).
+    """
+    if not scalar:
+        return _sliding_ends(rho, r, s), _pulloff_arrays(rho, s)
+    rho0, r0, s0 = (np.float64(v[0]) for v in (rho, r, s))
+    slide = tuple(np.reshape(e, 1) for e in _sliding_ends(rho0, r0, s0))
+    rest = {k: np.reshape(v, 1) for k, v in _pulloff_arrays(rho0, s0, True).items()}
+    return slide, rest
 
 
 def _solved(v, dtype=float) -> NDArray:
@@ -334,8 +358,11 @@ def _solved(v, dtype=float) -> NDArray:
     return np.array(v, dtype).reshape(-1)
 
 
-def _slide_at(load, rho, r, s, scalar: bool, report: bool = False):
+def _slide_at(p: _Inputs, at, load, report: bool = False):
     """The steady sliding contact carrying ``load``: its a/R, F and converged (flat arrays).
+
+    At the points ``at`` (an index array, or ``slice(None)``: all) of ``p``, by the kernel
+    of :func:`~linecontact.sliding_contact_for_load` with the lower ends found once.
 
     The load given raises below the pull-off force of steady sliding; with ``report`` (a
     tip's load) NaN there instead: the fibre lifts off first. A tip's load beyond the
@@ -343,23 +370,33 @@ def _slide_at(load, rho, r, s, scalar: bool, report: bool = False):
     the domain of widths, which the inverse says).
     """
     lo, _, hi, _ = _domain.DOMAIN["F_over_Eh2"]
-    args = (np.clip(load, lo, hi), rho, r, s)
-    res = sliding_contact_for_load(
-        *((float(v[0]) for v in args) if scalar else args),  # the scalar fast path
-        method="closed-form",
-        on_failure="report" if report else "raise",
-    )
+    load = np.clip(load, lo, hi)
+    F, rho, r, s, tau = load, p.rho[at], p.r[at], p.s[at], np.full(load.shape, np.nan)
+    ends = tuple(e[at] for e in p.slide_ends)
+    shape = () if p.scalar else load.shape
+    if p.scalar:  # the scalar fast path
+        F, rho, r, s, tau = (np.float64(v[0]) for v in (F, rho, r, s, tau))
+        ends = tuple(e[0] for e in ends)
+    policy = "report" if report else "raise"
+    res = _sliding_for_load(F, rho, r, s, tau, "closed-form", "auto", 1e-12, policy, shape,
+                            p.scalar, ends)  # fmt: skip
     return _solved(res.a_over_R), _solved(res.F_over_Eh2), _solved(res.converged, bool)
 
 
-def _rest_at(load, rho, s, scalar: bool):
+def _rest_at(p: _Inputs, at, load):
     """The contact at rest carrying ``load``: a/R (NaN where none carries it), converged.
 
-    The normal contact with the advancing range; a load beyond the domain is held there.
+    The normal contact with the advancing range at the points ``at`` of ``p`` (as in
+    :func:`_slide_at`), by the kernel of :func:`~linecontact.contact_for_load` with the
+    pull-off found once; a load beyond the domain is held there.
     """
     lo, _, hi, _ = _domain.DOMAIN["F_over_Eh"]
-    args = (np.clip(load, lo, hi), rho, s)
-    res = contact_for_load(*((float(v[0]) for v in args) if scalar else args), on_failure="report")
+    F, rho, s = np.clip(load, lo, hi), p.rho[at], p.s[at]
+    d = {k: v[at] for k, v in p.rest_ends.items()}
+    if p.scalar:  # the scalar fast path
+        F, rho, s = (np.asarray(float(v[0])) for v in (F, rho, s))
+        d = {k: v[0] for k, v in d.items()}
+    res = _contact_for_load(F, rho, s, "stable", "report", p.scalar, d)
     return _solved(res.a_over_R), _solved(res.converged, bool)
 
 
@@ -370,7 +407,7 @@ def _steady_sliding_contact(p: _Inputs) -> _Contact:
     the load it adds at the threshold, ``F + k Q_slide`` (:func:`_tip_sliding_threshold`).
     ``F`` is the load given that the contact carries (its residual is push's).
     """
-    a, F_found, conv = _slide_at(p.F, p.rho, p.r, p.s, p.scalar)
+    a, F_found, conv = _slide_at(p, slice(None), p.F)
     Q = 2.0 * a * p.rho * p.tau + p.dw
     if not p.tip or not np.any(p.k != 0):
         return _Contact(a, F_found, Q, conv)
@@ -393,10 +430,8 @@ def _tip_sliding_threshold(p: _Inputs, Q0, a0, F0, conv0) -> _Contact:
     conv[act] = False
     Q_now, Q_prev, f_prev = Q0[act], Q0[act], np.zeros(act.size)
     for it in range(60):
-        rho, tau = p.rho[act], p.tau[act]
-        a_i, F_i, c_i = _slide_at(p.F[act] + p.k[act] * Q_now, rho, p.r[act], p.s[act],
-                                  p.scalar, report=True)  # fmt: skip
-        g = 2.0 * a_i * rho * tau + p.dw[act]  # NaN: the tip lifts the fibre first
+        a_i, F_i, c_i = _slide_at(p, act, p.F[act] + p.k[act] * Q_now, report=True)
+        g = 2.0 * a_i * p.rho[act] * p.tau[act] + p.dw[act]  # NaN: the tip lifts the fibre first
         f = g - Q_now
         with np.errstate(divide="ignore", invalid="ignore"):
             secant = Q_now - f * (Q_now - Q_prev) / (f - f_prev)
@@ -421,13 +456,12 @@ def _contact_at_rest(p: _Inputs) -> _Contact:
     (the tip's load changes the width by a part of order ``tau0/E``: a few steps to 1e-14).
     ``F`` is NaN: the load is not reported.
     """
-    a, conv = _rest_at(p.F, p.rho, p.s, p.scalar)
+    a, conv = _rest_at(p, slice(None), p.F)
     Q = 2.0 * a * p.rho * p.tau
     act = np.flatnonzero(p.k != 0) if p.tip else np.zeros(0, int)
     conv[act] = False
     for _ in range(60 if act.size else 0):  # (no contact at rest, NaN: retried at F)
-        a_i, c_i = _rest_at(p.F[act] + p.k[act] * np.nan_to_num(Q[act]), p.rho[act],
-                            p.s[act], p.scalar)  # fmt: skip
+        a_i, c_i = _rest_at(p, act, p.F[act] + p.k[act] * np.nan_to_num(Q[act]))
         Q_i = 2.0 * a_i * p.rho[act] * p.tau[act]
         done = np.abs(np.nan_to_num(Q_i - Q[act])) <= 1e-14 * np.nan_to_num(Q_i, nan=1.0)
         a[act], Q[act], conv[act] = a_i, Q_i, c_i & done
@@ -463,8 +497,7 @@ def _rolling_contact(p: _Inputs, a_slide, Q_roll):
     act = np.flatnonzero(p.k != 0) if p.tip else np.zeros(0, int)
     if act.size:
         Q = np.where(np.isfinite(Q_roll[act]), Q_roll[act], 0.0)
-        a_roll[act], _, _ = _slide_at(p.F[act] + p.k[act] * Q, p.rho[act], p.r[act],
-                                      p.s[act], p.scalar, report=True)  # fmt: skip
+        a_roll[act], _, _ = _slide_at(p, act, p.F[act] + p.k[act] * Q, report=True)
     return a_roll
 
 
@@ -543,7 +576,7 @@ def _state_under_push(p: _Inputs, Q_roll, Q_slide, Q_lift, holds, a_rest):
     loaded = np.flatnonzero(at_rest & (p.k != 0)) if p.tip else np.zeros(0, int)
     if loaded.size:  # the contact at rest under the tip's load
         load = p.F[loaded] + p.k[loaded] * p.Q[loaded]
-        a_here[loaded], _ = _rest_at(load, p.rho[loaded], p.s[loaded], p.scalar)
+        a_here[loaded], _ = _rest_at(p, loaded, load)
     at_rest &= np.isfinite(a_here)
     if np.any(at_rest):
         T = p.Q[at_rest] / (p.rho[at_rest] * a_here[at_rest])

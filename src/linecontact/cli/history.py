@@ -18,7 +18,7 @@ import numpy as np
 
 from .. import tangential as tg
 from .._validation import check_array
-from ..cylinder import Cylinder, cylinder_cyclic_loss, cylinder_tangential_history
+from ..cylinder import Cylinder
 from ..output import table_from_result
 from ..tangential.history import _T_LIMIT
 from ._options import add_command, add_output_options, command_line, emit, si_parameters
@@ -235,7 +235,7 @@ def _cmd_cycle(args: argparse.Namespace) -> int:
     if cyl is not None:
         fr = _si_friction(args, coulomb, cyl)
         amp = _si_loads(args, cyl, state, values, coulomb)
-        res = cylinder_cyclic_loss(cyl, args.load, amp, **fr, method=args.method)
+        res = cyl.cyclic_loss(args.load, amp, **fr, method=args.method)
         extra: dict[str, Any] = {
             "T_amplitude_N_per_m": res.amplitude,
             "W_J_per_m": res.energy_per_cycle,
@@ -277,7 +277,7 @@ def _cmd_history(args: argparse.Namespace) -> int:
     if cyl is not None:
         fr = _si_friction(args, coulomb, cyl)
         T = _si_loads(args, cyl, state, values, coulomb)
-        res = cylinder_tangential_history(cyl, args.load, T, **fr, method=args.method)
+        res = cyl.tangential_history(args.load, T, **fr, method=args.method)
         extra: dict[str, Any] = {
             "T_N_per_m": res.tangential_load,
             "c_m": res.stick_zone_half_width,

@@ -7,11 +7,11 @@ from typing import Any
 
 import numpy as np
 
+from ..closed_forms import kappa, maugis_parameter
 from ..cylinder import Cylinder
 from ..laws import lennard_jones as _lj
 from ..normal import NormalContact, contact_for_load, load_curve, normal_contact, pull_off
 from ..output import Table, table_from_result
-from ..reference import kappa, maugis_parameter
 from ._options import (
     MAX_POINTS,
     add_command,

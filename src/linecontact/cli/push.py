@@ -13,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from ..cylinder import _check_cylinder_si, _plausible, cylinder_push, hysteresis_adhesion
+from ..cylinder import _check_cylinder_si, _plausible, hysteresis_adhesion
 from ..domain import check_si
 from ..errors import ModelValidityWarning
 from ..output import table_from_result
@@ -204,8 +204,7 @@ def _cmd_push(args: argparse.Namespace) -> int:
             check_si("--push", args.push, Eh, "T_over_Ea", "N/m")
         h1 = args.h1 if args.h1 is not None else cyl.in_si(args.h1_over_h2, "h")
         Q = args.push
-        res: Any = cylinder_push(
-            cyl,
+        res: Any = cyl.push(
             friction_stress=args.tau0,
             height=heights,
             receding_range=h1,

@@ -17,7 +17,7 @@ import numpy as np
 
 from .. import tangential as tg
 from .._validation import non_negative
-from ..cylinder import Cylinder, cylinder_sliding_initiation, cylinder_steady_rolling
+from ..cylinder import Cylinder
 from ..domain import DOMAIN, check
 from ..normal import contact_for_load
 from ..output import Table, table_from_result
@@ -289,7 +289,7 @@ def _run_si(args, rolling, coulomb, cyl: Cylinder, state, values, d, law) -> int
             raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
         tau0 = args.tau0 if args.tau0 is not None else cyl.in_si(args.tau0_over_E, "E")
         fr = dict(friction_stress=tau0)
-    fn = cylinder_steady_rolling if rolling else cylinder_sliding_initiation
+    fn = cyl.steady_rolling if rolling else cyl.sliding_initiation
     contact = cyl.contact(load=args.load, on_failure="report")
     params: dict[str, Any] = dict(law)
     params.update(si_parameters(args, cyl))
@@ -303,11 +303,11 @@ def _run_si(args, rolling, coulomb, cyl: Cylinder, state, values, d, law) -> int
         over = "Ea" if state == "T_over_Ea" else "muF"
         mu = dict(friction_coefficient=args.mu)
         T = cyl.tangential_load(args.load, values, over=over, **mu)  # type: ignore[arg-type]
-        res = fn(cyl, args.load, tangential_load=T, **how)
+        res = fn(args.load, tangential_load=T, **how)
     elif state == "tangential_load":
-        res = fn(cyl, args.load, tangential_load=values, **how)
+        res = fn(args.load, tangential_load=values, **how)
     else:
-        res = fn(cyl, args.load, d_over_a=d, **how)
+        res = fn(args.load, d_over_a=d, **how)
     params.update(
         a_over_R=cyl.over(a_m, "R"),
         a_m=a_m,

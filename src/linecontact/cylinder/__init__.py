@@ -1,15 +1,17 @@
 r"""The dimensional (SI) layer: a cylinder on a substrate, and its problems in SI units.
 
 :class:`Cylinder` holds the radius, the composite modulus, the adhesion ``(sigma0, h)`` and
-Dundurs' ``beta``; its methods and the ``cylinder_*`` functions convert SI inputs to the
+Dundurs' ``beta``; its methods (one per problem) convert SI inputs to the
 paper's groups, call the nondimensional solvers (:mod:`linecontact.normal`,
 :mod:`linecontact.tangential`) and convert back. Units: lengths [m], stresses and moduli
 [Pa], forces per unit length of cylinder [N/m], work of adhesion [J/m^2]. Materials and
 adhesion conventions: :mod:`linecontact.materials`.
 
 The package's modules: ``_cylinder.py`` (:class:`Cylinder`, and :data:`SI_COLUMNS`, the SI
-columns of the command line), ``_problems.py`` (the tangential problems, the pushed fibre, the
-load histories), ``_sliding.py`` (steady sliding), ``_results.py`` (the SI result classes),
+columns of the command line), ``_methods.py`` (the methods of the problems, which
+:class:`Cylinder` inherits), ``_problems.py`` (the tangential problems, the pushed fibre, the
+load histories), ``_sliding.py`` (steady sliding), ``_deprecated.py`` (the ``cylinder_*``
+functions, deprecated aliases of the methods), ``_results.py`` (the SI result classes),
 ``_checks.py`` (the plausible ranges of the SI inputs and the checks of the widths). Import
 from ``linecontact.cylinder``: every name is here.
 """
@@ -36,17 +38,20 @@ from ._checks import (
     _which,
 )
 from ._cylinder import SI_COLUMNS, Cylinder
+from ._deprecated import (
+    cylinder_cyclic_loss,
+    cylinder_push,
+    cylinder_sliding,
+    cylinder_sliding_initiation,
+    cylinder_steady_rolling,
+    cylinder_tangential_history,
+)
 from ._problems import (
     _cylinder_tangential,
     _full_slip,
     _history_contact,
     _history_solve,
     _scalar,
-    cylinder_cyclic_loss,
-    cylinder_push,
-    cylinder_sliding_initiation,
-    cylinder_steady_rolling,
-    cylinder_tangential_history,
 )
 from ._results import (
     CylinderContact,
@@ -58,7 +63,7 @@ from ._results import (
     CylinderTangential,
     CylinderTangentialHistory,
 )
-from ._sliding import cylinder_sliding, hysteresis_adhesion, sliding_pull_off_force
+from ._sliding import hysteresis_adhesion, sliding_pull_off_force
 
 __all__ = [
     "CylinderPush",

@@ -8,8 +8,8 @@ import warnings
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .. import closed_forms as _cf
 from .. import domain as _domain
-from .. import reference as _ref
 from ..errors import UnitsWarning
 from ..materials import MAUGIS_STRENGTH
 
@@ -181,15 +181,15 @@ def _check_cylinder_si(
         )
     # kappa = (4/pi) (sigma0/E) sqrt(2 R/h), the single group of the Maugis-Dugdale contact
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
-        kap = _ref._kappa(ratio, s)
-    bad = ~(kap <= _ref.KAPPA_MAX)
+        kap = _cf._kappa(ratio, s)
+    bad = ~(kap <= _cf.KAPPA_MAX)
     if np.any(bad):
         k, r, ev, av, zv = _first(bad, kap, R, E, a_val, length)
         guess = _which(modulus_name, *cands_s, ("radius", R, "radius"))
         raise ValueError(
             f"the adhesion of this cylinder is beyond the range of the solvers: kappa = "
             f"(4/pi) sigma0 sqrt(2 R) / (E sqrt(h)) = {k:.3g} must be at most "
-            f"{_ref.KAPPA_MAX:g}, got radius={r!r} m, {modulus_name}={ev!r} Pa, {a_name}="
+            f"{_cf.KAPPA_MAX:g}, got radius={r!r} m, {modulus_name}={ev!r} Pa, {a_name}="
             f"{av!r} {unit}, {l_name}={zv!r} m; {_units_question(guess, modulus_name, unit)}"
         )
 

@@ -10,9 +10,9 @@ from typing import TYPE_CHECKING, Any, Literal, overload
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .. import closed_forms as _cf
 from .. import domain as _domain
 from .. import normal as _normal
-from .. import reference as _ref
 from .._validation import (
     RAISE,
     FailurePolicy,
@@ -38,6 +38,7 @@ from ._checks import (
     _check_cylinder_si,
     _warn_widths,
 )
+from ._methods import _Problems
 from ._results import (
     CylinderContact,
     CylinderLennardJonesContact,
@@ -50,10 +51,14 @@ if TYPE_CHECKING:  # imported where used: the Lennard-Jones solver needs scipy
 
 
 @dataclass(frozen=True)
-class Cylinder:
+class Cylinder(_Problems):
     """A cylinder of radius ``R`` on a substrate, with Maugis--Dugdale adhesion.
 
-    Build it with :meth:`from_materials` or :meth:`from_modulus`.
+    Build it with :meth:`from_materials` or :meth:`from_modulus`. Each problem is a method:
+    :meth:`contact`, :meth:`pull_off`, :meth:`load_curve` here; :meth:`sliding`,
+    :meth:`sliding_initiation`, :meth:`steady_rolling`, :meth:`push`,
+    :meth:`tangential_history`, :meth:`cyclic_loss` from its base ``_Problems``
+    (``_methods.py``).
 
     Attributes
     ----------
@@ -285,12 +290,12 @@ class Cylinder:
     @property
     def maugis_parameter(self) -> float:
         """Baney & Hui's line-contact Tabor-like parameter (DMT-like small, JKR-like large)."""
-        return float(_ref.maugis_parameter(self.R_over_h, self.sigma0_over_E))
+        return float(_cf.maugis_parameter(self.R_over_h, self.sigma0_over_E))
 
     @property
     def kappa(self) -> float:
         """The single group of the Maugis--Dugdale line contact."""
-        return float(_ref.kappa(self.R_over_h, self.sigma0_over_E))
+        return float(_cf.kappa(self.R_over_h, self.sigma0_over_E))
 
     def _check_lennard_jones(self) -> None:
         """Refuse, in SI terms, a cylinder outside the domain of the Lennard-Jones solver.
@@ -705,36 +710,6 @@ class Cylinder:
                 )
             F_max = self.over(max_load, "Eh")
         return _lj.load_curve(self.R_over_h, self.sigma0_over_E, F_max_over_Eh=F_max)
-
-    def sliding(
-        self,
-        *,
-        receding_range: float | None = None,
-        h1_over_h2: float | None = None,
-        contact_half_width: ArrayLike | None = None,
-        load: ArrayLike | None = None,
-        friction_stress: float | None = None,
-        method: Literal["closed-form", "collocation"] = "collocation",
-        on_failure: FailurePolicy = RAISE,
-    ) -> Any:
-        """Steady sliding in SI units: :func:`~linecontact.cylinder.cylinder_sliding`.
-
-        The cylinder's range is the leading edge's ``h2``; the trailing edge's ``h1`` [m] is
-        ``receding_range`` (or give ``h1_over_h2``); ``contact_half_width`` [m] or ``load``
-        [N/m]; ``friction_stress`` ``tau0`` [Pa] adds the friction force.
-        """
-        from ._sliding import cylinder_sliding
-
-        return cylinder_sliding(
-            self,
-            receding_range=receding_range,
-            h1_over_h2=h1_over_h2,
-            contact_half_width=contact_half_width,
-            load=load,
-            friction_stress=friction_stress,
-            method=method,
-            on_failure=on_failure,
-        )
 
 
 #: The SI column of each group the command line writes: ``field: (column, unit, total)``, the

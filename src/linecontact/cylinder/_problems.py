@@ -34,7 +34,6 @@ from ._checks import (
     _plausible,
     _warn_widths,
 )
-from ._cylinder import Cylinder
 from ._results import (
     CylinderCyclicLoss,
     CylinderPush,
@@ -57,11 +56,6 @@ def _cylinder_tangential(
     method,
     policy,
 ) -> CylinderTangential:
-    if not isinstance(cylinder, Cylinder):
-        raise ValueError(
-            f"cylinder must be a linecontact.Cylinder (Cylinder.from_modulus or "
-            f"Cylinder.from_materials), got {cylinder!r}"
-        )
     if (friction_stress is None) == (friction_coefficient is None):
         raise ValueError(
             "give exactly one of friction_stress (constant tau0 [Pa]) or "
@@ -179,8 +173,8 @@ def _scalar(v):
     return v.item() if v.ndim == 0 else v
 
 
-def cylinder_sliding_initiation(
-    cylinder,
+def _sliding_initiation(
+    cylinder: Any,
     normal_load: ArrayLike,
     *,
     friction_stress: ArrayLike | None = None,
@@ -228,12 +222,16 @@ def cylinder_sliding_initiation(
     --------
     >>> from linecontact import Cylinder
     >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
-    >>> s = cylinder_sliding_initiation(cyl, 1.0, friction_stress=1e9, tangential_load=1.0)
+    >>> s = cyl.sliding_initiation(1.0, friction_stress=1e9, tangential_load=1.0)
     >>> s.state, s.stick_zone_end < s.contact_half_width
     ('stick-slip', True)
     """
     policy = failure_policy(
-        on_failure, where="cylinder_sliding_initiation", accepts=("on_sliding",), **deprecated
+        on_failure,
+        where="Cylinder.sliding_initiation",
+        accepts=("on_sliding",),
+        stacklevel=4,  # the caller of the method
+        **deprecated,
     )
     return _cylinder_tangential(
         "sliding initiation",
@@ -248,8 +246,8 @@ def cylinder_sliding_initiation(
     )
 
 
-def cylinder_steady_rolling(
-    cylinder,
+def _steady_rolling(
+    cylinder: Any,
     normal_load: ArrayLike,
     *,
     friction_stress: ArrayLike | None = None,
@@ -262,7 +260,7 @@ def cylinder_steady_rolling(
 ) -> CylinderTangential:
     """Steady rolling of a driving :class:`~linecontact.cylinder.Cylinder` (SI units).
 
-    Parameters as in :func:`cylinder_sliding_initiation`, with ``d_over_a`` in ``(-1, 1)``
+    Parameters as in :meth:`Cylinder.sliding_initiation`, with ``d_over_a`` in ``(-1, 1)``
     the start of the leading-edge stick zone; ``tangential_load`` is the tractive force
     [N/m]. The result's ``creep_ratio`` is ``(V - omega R)/V`` (negative).
 
@@ -270,12 +268,16 @@ def cylinder_steady_rolling(
     --------
     >>> from linecontact import Cylinder
     >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
-    >>> r = cylinder_steady_rolling(cyl, 1.0, friction_stress=1e9, d_over_a=0.0)
+    >>> r = cyl.steady_rolling(1.0, friction_stress=1e9, d_over_a=0.0)
     >>> r.creep_ratio < 0
     True
     """
     policy = failure_policy(
-        on_failure, where="cylinder_steady_rolling", accepts=("on_sliding",), **deprecated
+        on_failure,
+        where="Cylinder.steady_rolling",
+        accepts=("on_sliding",),
+        stacklevel=4,  # the caller of the method
+        **deprecated,
     )
     return _cylinder_tangential(
         "steady rolling",
@@ -294,8 +296,8 @@ def cylinder_steady_rolling(
 # the pushed fibre in SI units
 
 
-def cylinder_push(
-    cylinder,
+def _pushed_fibre(
+    cylinder: Any,
     *,
     friction_stress: float,
     height: ArrayLike,
@@ -341,7 +343,7 @@ def cylinder_push(
     >>> from linecontact import Cylinder, adhesion_from_work
     >>> s0, h1 = adhesion_from_work(0.05, 0.3e-9)        # receding work of adhesion
     >>> cyl = Cylinder.from_modulus(50e-9, 48.4e9, cohesive_stress=s0, adhesion_range=0.025 / s0)
-    >>> p = cylinder_push(cyl, friction_stress=1e6, height=[25e-9, 50e-9], receding_range=h1)
+    >>> p = cyl.push(friction_stress=1e6, height=[25e-9, 50e-9], receding_range=h1)
     >>> [str(m) for m in p.first_motion]
     ['slide', 'roll']
     """
@@ -448,11 +450,6 @@ def cylinder_push(
 
 def _history_contact(cylinder, normal_load, friction_stress, friction_coefficient):
     """(F, a [m], friction scale, coulomb?) for the SI history functions, every input checked."""
-    if not isinstance(cylinder, Cylinder):
-        raise ValueError(
-            f"cylinder must be a linecontact.Cylinder (Cylinder.from_modulus or "
-            f"Cylinder.from_materials), got {cylinder!r}"
-        )
     if (friction_stress is None) == (friction_coefficient is None):
         raise ValueError(
             "give exactly one of friction_stress (constant tau0 [Pa]) or "
@@ -494,8 +491,8 @@ def _history_solve(cylinder, normal_load, stress, coefficient, loads, constant, 
     return F, a, full, r, "coulomb" if is_coulomb else "constant"
 
 
-def cylinder_tangential_history(
-    cylinder,
+def _tangential_history(
+    cylinder: Any,
     normal_load: float,
     tangential_load: ArrayLike,
     *,
@@ -525,7 +522,7 @@ def cylinder_tangential_history(
     --------
     >>> from linecontact import Cylinder
     >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
-    >>> h = cylinder_tangential_history(cyl, 1.0, [1.0, -1.0, 1.0], friction_stress=1e9)
+    >>> h = cyl.tangential_history(1.0, [1.0, -1.0, 1.0], friction_stress=1e9)
     >>> h.state.tolist()
     ['stick-slip', 'stick-slip', 'stick-slip']
     >>> bool(h.dissipation[1] > 0)
@@ -559,8 +556,8 @@ def cylinder_tangential_history(
     )
 
 
-def cylinder_cyclic_loss(
-    cylinder,
+def _cyclic_loss(
+    cylinder: Any,
     normal_load: float,
     amplitude: ArrayLike,
     *,
@@ -590,7 +587,7 @@ def cylinder_cyclic_loss(
     --------
     >>> from linecontact import Cylinder
     >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
-    >>> w = cylinder_cyclic_loss(cyl, 1.0, [0.5, 1.0], friction_stress=1e9)
+    >>> w = cyl.cyclic_loss(1.0, [0.5, 1.0], friction_stress=1e9)
     >>> bool(w.energy_per_cycle[1] > w.energy_per_cycle[0] > 0)
     True
     """

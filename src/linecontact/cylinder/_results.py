@@ -233,7 +233,7 @@ class CylinderPush(Result):
 
     def _total(self, v):
         if self.length is None:
-            raise ValueError("give length= to cylinder_push for totals in N")
+            raise ValueError("give length= to Cylinder.push for totals in N")
         return v * self.length
 
 

@@ -11,7 +11,7 @@ from .. import domain as _domain
 from .._validation import RAISE, FailurePolicy, check_array, failure_policy, positive, scalar
 
 
-def cylinder_sliding(
+def _sliding(
     cylinder: Any,
     *,
     receding_range: float | None = None,
@@ -102,7 +102,7 @@ def hysteresis_adhesion(
     One ``sigma0``, that of the receding ``w1`` with ``z0`` (the Maugis convention of
     :func:`~linecontact.adhesion_from_work`, which gives ``h1``); the advancing range
     ``h2 = w2 / sigma0``. A cylinder with ``(sigma0, h2)`` and the receding range ``h1`` is
-    the pushed or sliding fibre of :func:`~linecontact.cylinder.cylinder_push`.
+    the pushed or sliding fibre of :meth:`Cylinder.push <linecontact.Cylinder.push>`.
     """
     from ..materials import adhesion_from_work
 

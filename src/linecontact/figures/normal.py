@@ -41,7 +41,7 @@ fig06_zero_width
 
 All curves depend on ``(R/h, sigma0/E)`` only through
 :math:`\kappa = (4/\pi)(\sigma_0/E)\sqrt{2R/h}` once ``a/R`` is scaled by ``sqrt(R/h)``
-(see :mod:`linecontact.reference`).
+(see :mod:`linecontact.closed_forms`).
 """
 
 from __future__ import annotations
@@ -50,7 +50,7 @@ from collections.abc import Iterable
 
 import numpy as np
 
-from .. import reference as _ref
+from .. import closed_forms as _cf
 from ..normal import non_contact, normal_contact, pull_off
 from ._style import (
     _CITE,
@@ -196,17 +196,17 @@ def _load_figure(run: Run, number: int, rho: float):
     ax.axhline(0.0, color="0.3", lw=0.8)
     ax.plot(
         np.concatenate([[0.0], a]),
-        np.concatenate([[0.0], _ref.hertz_load(a, rho)]),
+        np.concatenate([[0.0], _cf.hertz_load(a, rho)]),
         color="k",
         ls="--",
         lw=1.2,
         zorder=4,
     )
     big = data[-1]
-    ax.plot(a, _ref.jkr_load(a, rho, big["sigma"]), color="0.45", ls=(0, (6, 3)), lw=1.0)
+    ax.plot(a, _cf.jkr_load(a, rho, big["sigma"]), color="0.45", ls=(0, (6, 3)), lw=1.0)
     colors = _branch_figure(ax, data, "F")
     lo = min(d["F_po"] for d in data)
-    hi = float(_ref.hertz_load(A_MAX_OVER_R, rho))
+    hi = float(_cf.hertz_load(A_MAX_OVER_R, rho))
     ax.set_ylim(lo - 0.06 * (hi - lo), hi + 0.05 * (hi - lo))
     _legends(
         ax,
@@ -263,10 +263,10 @@ def _zero_width_figure(run: Run):
     colors = _colors(rhos.size)
     s_line = np.linspace(0.0, ZERO_WIDTH_SIGMA0_MAX, 300)
     s_mark = np.linspace(ZERO_WIDTH_SIGMA0_MAX / 12, ZERO_WIDTH_SIGMA0_MAX, 12)
-    F_line = np.asarray(_ref.zero_width_load(rhos[:, None], s_line[None, :]))
+    F_line = np.asarray(_cf.zero_width_load(rhos[:, None], s_line[None, :]))
     po = pull_off(rhos[:, None], s_mark[None, :])
     ax.axhline(0.0, color="0.3", lw=0.8)
-    ax.axhline(-np.pi / (2 * _ref.LN2), color="0.5", ls=":", lw=1.0)
+    ax.axhline(-np.pi / (2 * _cf.LN2), color="0.5", ls=":", lw=1.0)
     for i, col in enumerate(colors):
         ax.plot(s_line, F_line[i], color=col, lw=1.8)
         snap = np.asarray(po.mechanism)[i] == "snap-off"

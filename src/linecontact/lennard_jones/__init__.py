@@ -21,7 +21,7 @@ With ``x = sqrt(R z0) xi``, ``z = z0 zeta`` and ``p = (w/z0) P(zeta)``,
 
 and the load is ``F/(w sqrt(R/z0)) = 2 int_0^inf P d eta``. ``mu`` is the one group of the
 problem (a Tabor parameter for cylinders): ``mu -> 0`` is the rigid limit
-(:func:`linecontact.reference.lennard_jones_rigid_load`). With the Maugis matching of the
+(:func:`linecontact.closed_forms.lennard_jones_rigid_load`). With the Maugis matching of the
 Dugdale step (``sigma0 = 16 w/(9 sqrt(3) z0)``, ``h = w/sigma0``) the Maugis parameter of
 line contact (:func:`linecontact.maugis_parameter`) is a function of ``mu`` alone
 (:func:`maugis_parameter_of_mu`). Derivation and mesh study: ``docs/lennard-jones.md``.

@@ -1,6 +1,6 @@
 r"""Normal contact of a cylinder with Maugis--Dugdale adhesion (paper Eqs. 5--14).
 
-Units as in :mod:`linecontact.reference`: ``a/R``, ``c/R``, ``F/(E h)``, ``sigma0/E``,
+Units as in :mod:`linecontact.closed_forms`: ``a/R``, ``c/R``, ``F/(E h)``, ``sigma0/E``,
 ``R/h``; compressive pressure and load positive.
 
 Two solvers give the same :class:`NormalContact`:

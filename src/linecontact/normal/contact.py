@@ -15,8 +15,9 @@ from typing import Any, ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .. import _numerics as _num
+from .. import closed_forms as _cf
 from .. import domain as _domain
-from .. import reference as _ref
 from .._validation import (
     RAISE,
     FailurePolicy,
@@ -135,7 +136,7 @@ class NormalContact(Result):
 
 
 def _closed_form_from_u(u, kap, rho, ustar):
-    bp = _ref._branch_point(u, kap)
+    bp = _cf._branch_point(u, kap)
     sq = np.sqrt(2 / rho)
     A = bp["abar"] * sq
     C = np.maximum(bp["X"] * bp["Ct"] * sq, A)  # c >= a despite rounding
@@ -172,26 +173,26 @@ def _stable(u, kap, bp):
 def _ustar(kap: NDArray | np.float64) -> NDArray | np.float64:
     """U of the load minimum (inf where the minimum sits at vanishing width, kappa = 0).
 
-    Arrays or NumPy scalars (the scalar fast path, see :func:`linecontact.reference._where`).
+    Arrays or NumPy scalars (the scalar fast path, see :func:`linecontact._numerics._where`).
     """
     if np.ndim(kap) == 0:
-        return _ref._u_stationary(kap) if kap > 0 else np.float64(np.inf)
+        return _cf._u_stationary(kap) if kap > 0 else np.float64(np.inf)
     kap = np.asarray(kap, dtype=float)
     us = np.full(kap.shape, np.inf)
     pos = kap > 0
     if pos.any():
-        us[pos] = _ref._u_stationary(kap[pos])
+        us[pos] = _cf._u_stationary(kap[pos])
     return us
 
 
 def _closed_form(A, rho, s):
     """u, c/R, F/(Eh), separation residual, stability: flat arrays or NumPy scalars.
 
-    Called inside the ``np.errstate`` of :func:`normal_contact` (see ``_ref._solve_abar``).
+    Called inside the ``np.errstate`` of :func:`normal_contact` (see ``_cf._solve_abar``).
     """
-    kap = _ref._kappa(rho, s)
+    kap = _cf._kappa(rho, s)
     abar = A * np.sqrt(rho / 2)
-    u, res, _, bp = _ref._solve_abar(abar, kap)
+    u, res, _, bp = _cf._solve_abar(abar, kap)
     # c >= a exactly (coth u >= 1), which the product's rounding can miss by an ulp or two
     C = np.maximum(bp["X"] * bp["Ct"] * np.sqrt(2 / rho), A)
     F = (np.pi / 2) * bp["phi"]
@@ -313,7 +314,7 @@ def _stable_at(u, kap):
     kap = np.broadcast_to(kap, shape).reshape(-1)
     out = np.empty(u.size, bool)
     for c in _chunks(u.size, 0):
-        out[c] = _stable(u[c], kap[c], _ref._branch_point(u[c], kap[c]))
+        out[c] = _stable(u[c], kap[c], _cf._branch_point(u[c], kap[c]))
     return out.reshape(shape)
 
 
@@ -388,7 +389,7 @@ def normal_contact(
     sigma0_over_E : array_like
         Adhesive (Dugdale) stress over the composite modulus, ``>= 0`` (0 gives Hertz);
         ``kappa = (4/pi) sigma0_over_E sqrt(2 R_over_h)`` at most
-        :data:`~linecontact.reference.KAPPA_MAX` (1e12) here and in every normal and sliding
+        :data:`~linecontact.closed_forms.KAPPA_MAX` (1e12) here and in every normal and sliding
         solver.
     method : {"closed-form", "collocation"}
         Solver (see the module docstring).
@@ -425,8 +426,8 @@ def normal_contact(
     policy = failure_policy(on_failure, where="normal_contact", **deprecated)
     scalar = scalar_or_array(A, rho, s)
     A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
-    _ref._check_kappa(rho, s)
-    _ref._warn_wide(A)
+    _cf._check_kappa(rho, s)
+    _cf._warn_wide(A)
     # a contact half-width far outside the solvers' range (a/R ~ 1e-200 or 1e20) overflows
     # on the way; the residual and finiteness checks below turn that into non-convergence
     with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
@@ -434,8 +435,8 @@ def normal_contact(
             ncol: NDArray | int
             cons: NDArray | float
             err: NDArray | float
-            if scalar:  # the same kernels on NumPy scalars (see reference._where)
-                u, C, F, res, stable = _closed_form(*_ref._scalars(A, rho, s))
+            if scalar:  # the same kernels on NumPy scalars (see _numerics._where)
+                u, C, F, res, stable = _closed_form(*_num._scalars(A, rho, s))
                 ncol, cons, err = 0, 0.0, 0.0
             else:
                 shape = A.shape
@@ -446,7 +447,7 @@ def normal_contact(
                 err = np.zeros(shape)
             converged = (res < 1e-12) & (abs(C) < np.inf) & (abs(F) < np.inf)  # isfinite
         else:
-            kap = _ref._kappa(rho, s)
+            kap = _cf._kappa(rho, s)
             r = _collocation(A, rho, s, n, tol)
             u, C, F = r["u"], r["C"], r["F"]
             res, cons, err, ncol = r["res"], r["cons"], r["tail"], r["n"]

@@ -8,8 +8,8 @@ from typing import Any, ClassVar
 import numpy as np
 from numpy.typing import NDArray
 
+from .. import closed_forms as _cf
 from .. import domain as _domain
-from .. import reference as _ref
 from ..results import Result
 from ._law import _check_law
 from .contact import normal_contact
@@ -74,7 +74,7 @@ def load_curve(
     a_max_over_R : float, optional
         Largest contact half-width; default: three times the width at pull-off, at least
         the Hertz width at ``F = 10 |F_pulloff|`` and at least ``0.02``, but at most the
-        small-strain limit :data:`~linecontact.reference.A_OVER_R_SMALL_STRAIN` (or 1.5
+        small-strain limit :data:`~linecontact.closed_forms.A_OVER_R_SMALL_STRAIN` (or 1.5
         times the width at pull-off, if that is larger), and never beyond ``a/R = 10``, the
         end of the domain (where the pull-off is wider still, the curve stops short of it).
     num, num_noncontact : int
@@ -123,7 +123,7 @@ def load_curve(
         a_h = float(np.sqrt(4 * 10 * abs(float(po.F_pulloff_over_Eh)) / (np.pi * rho)))
         # within the small-strain range unless the pull-off itself is close to its end
         # and never beyond the domain of the solvers (a pull-off wider than that is cut off)
-        cap = min(max(_ref.A_OVER_R_SMALL_STRAIN, 1.5 * a_po), _domain.DOMAIN["a_over_R"][2])
+        cap = min(max(_cf.A_OVER_R_SMALL_STRAIN, 1.5 * a_po), _domain.DOMAIN["a_over_R"][2])
         a_max_over_R = min(max(3 * a_po, a_h, 0.02), cap)
     amax = _domain.scalar("a_max_over_R", a_max_over_R)
     A = np.unique(

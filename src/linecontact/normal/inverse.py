@@ -13,8 +13,9 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .. import _numerics as _num
+from .. import closed_forms as _cf
 from .. import domain as _domain
-from .. import reference as _ref
 from .._validation import (
     RAISE,
     FailurePolicy,
@@ -42,11 +43,11 @@ def _z_of_u(u):
     from its limit nearly exponential in ``u`` towards zero width (``~ e^{-2u}``): in ``z``
     and on the logarithms of :func:`_load_step` Newton's method sees nearly straight lines.
     """
-    return _ref._where(u >= 1.0, u, 1.0 + np.log(u))
+    return _num._where(u >= 1.0, u, 1.0 + np.log(u))
 
 
 def _u_of_z(z):
-    return _ref._where(z >= 1.0, z, np.exp(z - 1.0))
+    return _num._where(z >= 1.0, z, np.exp(z - 1.0))
 
 
 def _load_step(z, lo, hi, dz_prev, target, kap, lt, pmin, p0, stable):
@@ -61,25 +62,25 @@ def _load_step(z, lo, hi, dz_prev, target, kap, lt, pmin, p0, stable):
     two terms, or the Newton step at the rounding level of ``z``.
     """
     u = _u_of_z(z)
-    bp = _ref._branch_point(u, kap)
+    bp = _cf._branch_point(u, kap)
     phi = bp["phi"]
-    dphi = bp["dphi"] * _ref._where(z >= 1.0, 1.0, u)  # dPhi/dz
+    dphi = bp["dphi"] * _num._where(z >= 1.0, 1.0, u)  # dPhi/dz
     d = phi - pmin if stable else p0 - phi
     g = np.log(d) - lt
     dg = (dphi if stable else -dphi) / d
     up = g > 0
-    lo = _ref._where(up, z, lo)
-    hi = _ref._where(up, hi, z)
+    lo = _num._where(up, z, lo)
+    hi = _num._where(up, hi, z)
     dn = g / dg
     zn = z - dn
-    zmax = _ref._maximum(abs(z), 1.0)
+    zmax = _num._maximum(abs(z), 1.0)
     at_noise = abs(phi - target) <= 1e-15 * (
         bp["abar"] * bp["abar"] + abs(kap * bp["X"] * bp["St"])
     )
     conv = at_noise | (g == 0) | (abs(dn) <= 1e-15 * zmax)
-    zn = _ref._where(at_noise, z, zn)
+    zn = _num._where(at_noise, z, zn)
     ok = conv | ((abs(zn) < np.inf) & (zn > lo) & (zn < hi) & (abs(dn) <= 0.5 * abs(dz_prev)))
-    zn = _ref._where(ok, zn, 0.5 * (lo + hi))
+    zn = _num._where(ok, zn, 0.5 * (lo + hi))
     stop = conv | (hi - lo <= 1e-15 * zmax)
     return (zn, lo, hi, zn - z), stop
 
@@ -89,22 +90,22 @@ def _solve_u_for_phi(target, kap, pmin, p0, us, stable: bool):
 
     Stable: ``u`` in ``[1e-12, us]`` (``745`` for ``kappa = 0``), unstable: ``[us, 745]``.
     """
-    where = _ref._where
+    where = _num._where
     with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
         fin = abs(us) < np.inf
         if stable:
-            lo = _ref._full(target, _z_of_u(1e-12))
+            lo = _num._full(target, _z_of_u(1e-12))
             hi = _z_of_u(where(fin, us, 745.0))
-            lt = np.log(_ref._maximum(target - pmin, 0.0))
+            lt = np.log(_num._maximum(target - pmin, 0.0))
             # start from the Hertz-like width of the load (at the pull-off load: its end)
-            z0 = _z_of_u(_ref._u_guess(np.sqrt(_ref._maximum(target, 0.0) + 1.0), kap))
-            z0 = where(target <= pmin, hi, _ref._minimum(_ref._maximum(z0, lo), hi))
+            z0 = _z_of_u(_cf._u_guess(np.sqrt(_num._maximum(target, 0.0) + 1.0), kap))
+            z0 = where(target <= pmin, hi, _num._minimum(_num._maximum(z0, lo), hi))
         else:
             lo = _z_of_u(us)
-            hi = _ref._full(target, 745.0)
-            lt = np.log(_ref._maximum(p0 - target, 0.0))
-            z0 = _ref._minimum(lo + 1.0, 0.5 * (lo + hi))
-        (z, _, _, _), _ = _ref._iterate(
+            hi = _num._full(target, 745.0)
+            lt = np.log(_num._maximum(p0 - target, 0.0))
+            z0 = _num._minimum(lo + 1.0, 0.5 * (lo + hi))
+        (z, _, _, _), _ = _num._iterate(
             functools.partial(_load_step, stable=stable),
             (z0, lo, hi, hi - lo),
             (target, kap, lt, pmin, p0),
@@ -184,13 +185,24 @@ def contact_for_load(
         scalar = scalar_or_array(F, rho, s)
         F, rho, s = broadcast(F_over_Eh=F, R_over_h=rho, sigma0_over_E=s)
         return contact_for_load_in_dugdale_groups(F, rho, s, scalar=scalar, on_failure=policy)
-    report = policy == "report"
     scalar = scalar_or_array(F, rho, s)
     F, rho, s = (
         np.asarray(v, float) for v in broadcast(F_over_Eh=F, R_over_h=rho, sigma0_over_E=s)
     )
-    _ref._check_kappa(rho, s)
-    d = _pulloff_arrays(rho, s, scalar)
+    _cf._check_kappa(rho, s)
+    return _contact_for_load(F, rho, s, branch, policy, scalar)
+
+
+def _contact_for_load(F, rho, s, branch: str, policy: str, scalar: bool, d=None):
+    """The kernel of :func:`contact_for_load` (Dugdale): checked inputs, no check again.
+
+    Float arrays of one shape (0-d with ``scalar``), kappa within range; ``d`` the pull-off
+    of these points (:func:`_pulloff_arrays`, indexed like them) where the caller has it,
+    else it is computed here. Returns the :class:`NormalContact`.
+    """
+    report = policy == "report"
+    if d is None:
+        d = _pulloff_arrays(rho, s, scalar)
     Fmin, F0, us, kap = d["F_minimum_over_Eh"], d["F_zero_width_over_Eh"], d["us"], d["kappa"]
     F_asked = F
     if branch == "stable":
@@ -226,7 +238,7 @@ def contact_for_load(
         F = np.where(bad, 0.5 * (Fmin + F0), F)
     # no unstable branch (kappa = 0): any finite end stands in for the points reported
     us_solve = np.where(bad & ~np.isfinite(us), 1.0, us) if branch == "unstable" else us
-    Fs, rs = _ref._scalars(F, rho) if scalar else (F.reshape(-1), rho.reshape(-1))
+    Fs, rs = _num._scalars(F, rho) if scalar else (F.reshape(-1), rho.reshape(-1))
     flat = (lambda v: np.float64(v)) if scalar else (lambda v: np.reshape(v, -1))
     u = _solve_u_for_phi(
         Fs * (2 / np.pi),
@@ -241,8 +253,8 @@ def contact_for_load(
     if not scalar:
         A, C, Fc, stable = (v.reshape(F.shape) for v in (A, C, Fc, stable))
     Fv, rv = (Fs, rs) if scalar else (F, rho)
-    scale = _ref._maximum(_ref._maximum(abs(Fv), abs(F0)), np.pi / 4 * A * A * rv)
-    res = abs(Fc - Fv) / _ref._maximum(scale, 1e-300)
+    scale = _num._maximum(_num._maximum(abs(Fv), abs(F0)), np.pi / 4 * A * A * rv)
+    res = abs(Fc - Fv) / _num._maximum(scale, 1e-300)
     converged = ((abs(Fc) < np.inf) & (res <= _LOAD_RTOL)) | bad
     if not (bool(converged) if scalar else converged.all()):
         _, at = first_point(
@@ -254,7 +266,7 @@ def contact_for_load(
             f"carries F_over_Eh={Fci!r} (the load is outside the range of the solver)"
         )
     _domain.check_widths(np.where(bad, np.nan, A), F_asked, "F_over_Eh")
-    _ref._warn_wide(np.where(bad, np.nan, A))
+    _cf._warn_wide(np.where(bad, np.nan, A))
     z: NDArray | float = 0.0 if scalar else np.zeros(F.shape)
     nan = np.where(bad, np.nan, 1.0)
     vals = dict(
@@ -328,7 +340,7 @@ def equilibria(F_over_Eh: float, R_over_h: float, sigma0_over_E: float) -> tuple
     if s > 0 and po.F_zero_width_over_Eh <= F < 0:
         # invert F = -2 s rho C for C, then the gap
         C = -F / (2 * s * rho)
-        k = 4 * _ref.LN2 * s / np.pi
+        k = 4 * _cf.LN2 * s / np.pi
         g = 1 - rho * (C * C / 2 + k * C)
         states.append(Equilibrium("non-contact", False, F, 0.0, C, float(np.clip(g, 0, 1))))
     return tuple(states)

@@ -8,8 +8,8 @@ from typing import ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .. import closed_forms as _cf
 from .. import domain as _domain
-from .. import reference as _ref
 from .._validation import (
     broadcast,
     check_array,
@@ -67,7 +67,7 @@ def non_contact(
     g, rho, s = (
         np.asarray(v, float) for v in broadcast(central_gap_over_h=g, R_over_h=rho, sigma0_over_E=s)
     )
-    k = 4 * _ref.LN2 * s / np.pi
+    k = 4 * _cf.LN2 * s / np.pi
     rhs = 2 * (1 - g) / rho
     # the root of C^2 + 2 k C = rhs without overflow of k^2; C = 0 at g0 = h (also 0/0 at s = 0)
     den = k + np.hypot(k, np.sqrt(rhs))

@@ -12,8 +12,9 @@ from typing import Any, ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .. import _numerics as _num
+from .. import closed_forms as _cf
 from .. import domain as _domain
-from .. import reference as _ref
 from .._validation import (
     broadcast,
     scalar_or_array,
@@ -85,7 +86,7 @@ class PullOff(Result):
 def _pulloff_arrays(rho: NDArray, s: NDArray, scalar: bool = False):
     """:func:`_pulloff_flat` at arrays of any shape, or at NumPy scalars (``scalar``)."""
     if scalar:
-        return _pulloff_flat(*_ref._scalars(rho, s))
+        return _pulloff_flat(*_num._scalars(rho, s))
     shape = np.shape(rho)
     rho = np.atleast_1d(rho).astype(float).reshape(-1)
     s = np.atleast_1d(s).astype(float).reshape(-1)
@@ -94,22 +95,22 @@ def _pulloff_arrays(rho: NDArray, s: NDArray, scalar: bool = False):
 
 
 def _pulloff_flat(rho: NDArray, s: NDArray):
-    """Pull-off at flat arrays or NumPy scalars (elementwise; see reference._where)."""
-    where = _ref._where
-    kap = _ref._kappa(rho, s)
-    F0 = _ref._zero_width(rho, s)
+    """Pull-off at flat arrays or NumPy scalars (elementwise; see _numerics._where)."""
+    where = _num._where
+    kap = _cf._kappa(rho, s)
+    F0 = _cf._zero_width(rho, s)
     us = _ustar(kap)
     fin = np.isfinite(us)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
         uf = where(fin, us, 1.0)  # kappa = 0: no interior minimum (any finite u will do)
-        bp = _ref._branch_point(uf, kap)
+        bp = _cf._branch_point(uf, kap)
         sq = np.sqrt(2 / rho)
         A_min = where(fin, bp["abar"] * sq, 0.0)
         C_min = where(fin, bp["X"] * bp["Ct"] * sq, 0.0)
-        F_min = where(fin, _ref._minimum((np.pi / 2) * bp["phi"], F0), F0)
+        F_min = where(fin, _num._minimum((np.pi / 2) * bp["phi"], F0), F0)
         # the load minimum along the branch in units of Phi = (2/pi) F/(Eh) (contact_for_load)
-        phi_min = where(fin, _ref._minimum(bp["phi"], F0 * (2 / np.pi)), F0 * (2 / np.pi))
-    zero_c = sq * 2 / (kap * _ref.LN2 + np.sqrt(kap * kap * _ref.LN2**2 + 4))
+        phi_min = where(fin, _num._minimum(bp["phi"], F0 * (2 / np.pi)), F0 * (2 / np.pi))
+    zero_c = sq * 2 / (kap * _cf.LN2 + np.sqrt(kap * kap * _cf.LN2**2 + 4))
     # the pull-off force is the minimum of the load, at the width of u* (however small: the
     # stability of every state is judged against it); the label says whether the contact
     # lets go from a width the continuum model resolves (at least the range h) or peels
@@ -186,10 +187,10 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugda
         return pull_off_in_dugdale_groups(
             rho.reshape(()) if scalar else rho, s.reshape(()) if scalar else s
         )
-    _ref._check_kappa(rho, s)
+    _cf._check_kappa(rho, s)
     d = _pulloff_arrays(rho, s, scalar)
     del d["us"], d["phi_min"]
-    lam = _ref._maugis_parameter(rho, s)
+    lam = _cf._maugis_parameter(rho, s)
     vals = {k: as_output(v if scalar else np.asarray(v), scalar) for k, v in d.items()}
     return PullOff(
         R_over_h=as_output(rho, scalar),

@@ -26,7 +26,7 @@ and ``y`` up, so the cylinder moves to the right and "clockwise" is as seen in t
   counterclockwise: with ``h1 > h2`` it opposes forward (clockwise) rolling -- the resisting
   moment. ``M_axis = M - e F`` is the same moment taken about the cylinder's axis.
 
-Units (as in :mod:`linecontact.reference`, with ``h2`` as the unit of gap): lengths over
+Units (as in :mod:`linecontact.closed_forms`, with ``h2`` as the unit of gap): lengths over
 ``R`` (``a/R``, ``c1/R``, ``c2/R``, ``e/R``), force per unit length over ``E h2``, moment per
 unit length over ``E h2 R``, stresses over ``E``, ``R/h2`` and ``h1/h2``.
 

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import reference as _ref
+from .. import _numerics as _num
+from .. import closed_forms as _cf
 
 
 def _f1(u):
@@ -22,9 +23,9 @@ def _f1(u):
         us = np.where(small, u, 0.0)
         ub = np.where(small, 1.0, u)
         with np.errstate(over="ignore"):
-            return np.where(small, _ref._f1_series(us), 0.5 * np.sinh(2 * ub) - ub)
+            return np.where(small, _cf._f1_series(us), 0.5 * np.sinh(2 * ub) - ub)
     if small:
-        return _ref._f1_series(u)
+        return _cf._f1_series(u)
     if u < 350.0:  # sinh(2u) is finite (and no errstate is needed, ~1.5 us each)
         return 0.5 * np.sinh(2 * u) - u
     with np.errstate(over="ignore"):
@@ -69,11 +70,11 @@ def _initial_u(ab, kap, r):
     """Each edge as if the contact were symmetric with its own range (normal closed form)."""
     sr = np.sqrt(r)
     if not isinstance(ab, np.ndarray):
-        u2, _, _ = _ref._u_of_abar(ab, kap)
-        u1, _, _ = _ref._u_of_abar(ab / sr, kap / sr)
+        u2, _, _ = _cf._u_of_abar(ab, kap)
+        u1, _, _ = _cf._u_of_abar(ab / sr, kap / sr)
         return u1, u2
     # both edges as one batch (the points are independent; fewer calls on small batches)
-    u, _, _ = _ref._u_of_abar(np.concatenate([ab / sr, ab]), np.concatenate([kap / sr, kap]))
+    u, _, _ = _cf._u_of_abar(np.concatenate([ab / sr, ab]), np.concatenate([kap / sr, kap]))
     return u[: ab.size], u[ab.size :]
 
 
@@ -86,7 +87,7 @@ def _nan_to_num(x):
         return np.nan_to_num(x)
     if x != x:
         return np.float64(0.0)
-    return _ref._minimum(_ref._maximum(x, -_BIG), _BIG)
+    return _num._minimum(_num._maximum(x, -_BIG), _BIG)
 
 
 def _direction(u1, u2, E1, E2, J11, J12, J21, J22, tol, umax):
@@ -96,7 +97,7 @@ def _direction(u1, u2, E1, E2, J11, J12, J21, J22, tol, umax):
     the way to 0) and below ``umax``, and whether the point is done: its residual is below
     ``tol`` or the step is at rounding level.
     """
-    where = _ref._where
+    where = _num._where
     det = J11 * J22 - J12 * J21
     d1 = (-E1 * J22 + E2 * J12) / det
     d2 = (-E2 * J11 + E1 * J21) / det
@@ -110,14 +111,14 @@ def _direction(u1, u2, E1, E2, J11, J12, J21, J22, tol, umax):
     for d, u in ((d1, u1), (d2, u2)):
         neg = d < -0.75 * u
         if neg.any():
-            lam = where(neg, _ref._minimum(lam, 0.75 * u / where(neg, -d, 1.0)), lam)
+            lam = where(neg, _num._minimum(lam, 0.75 * u / where(neg, -d, 1.0)), lam)
         big = u + d > umax
         if big.any():
-            lam = where(big, _ref._minimum(lam, (umax - u) / where(big, d, 1.0)), lam)
-    tiny = (abs(d1) <= 4e-16 * _ref._maximum(u1, 1e-3)) & (
-        abs(d2) <= 4e-16 * _ref._maximum(u2, 1e-3)
+            lam = where(big, _num._minimum(lam, (umax - u) / where(big, d, 1.0)), lam)
+    tiny = (abs(d1) <= 4e-16 * _num._maximum(u1, 1e-3)) & (
+        abs(d2) <= 4e-16 * _num._maximum(u2, 1e-3)
     )
-    done = ~(_ref._maximum(abs(E1), abs(E2)) > tol) | tiny
+    done = ~(_num._maximum(abs(E1), abs(E2)) > tol) | tiny
     return d1, d2, lam + 0.0 * u1, done
 
 
@@ -131,11 +132,11 @@ def _newton2(evaluate, u1, u2, params, *, nextra=0, maxiter=60, tol=1e-15, floor
     rounding level or no step reduces its residual, or after ``maxiter`` Newton steps.
 
     Each iteration evaluates one trial point (a full step or a halved one) of every point
-    still active; a point that stops leaves the loop (:func:`linecontact.reference._iterate`),
+    still active; a point that stops leaves the loop (:func:`linecontact._numerics._iterate`),
     so one slow point does not keep the batch iterating. Returns ``u1, u2, |E1|, |E2|`` and
     the extras of the last evaluation at the returned ``u``.
     """
-    where = _ref._where
+    where = _num._where
     ev = tuple(evaluate(u1, u2, *params))
     d1, d2, lam, done = _direction(u1, u2, *ev[:6], tol, umax)
     zero = 0.0 * lam
@@ -149,14 +150,14 @@ def _newton2(evaluate, u1, u2, params, *, nextra=0, maxiter=60, tol=1e-15, floor
         n1 = u1 + lam * d1
         n2 = u2 + lam * d2
         r = evaluate(n1, n2, *args[nstate:])
-        nrm = _ref._maximum(abs(cur[0]), abs(cur[1]))
-        nn = _ref._maximum(abs(r[0]), abs(r[1]))
+        nrm = _num._maximum(abs(cur[0]), abs(cur[1]))
+        nn = _num._maximum(abs(r[0]), abs(r[1]))
         ok = (abs(nn) < np.inf) & ((nn < nrm) | (nn <= floor))
         cur = tuple(where(ok, a, b) for a, b in zip(r, cur, strict=True))
         u1, u2 = where(ok, n1, u1), where(ok, n2, u2)
         # a step at rounding level: quadratic convergence leaves nothing to gain
-        small = (abs(lam * d1) <= 1e-12 * _ref._maximum(u1, 1e-3)) & (
-            abs(lam * d2) <= 1e-12 * _ref._maximum(u2, 1e-3)
+        small = (abs(lam * d1) <= 1e-12 * _num._maximum(u1, 1e-3)) & (
+            abs(lam * d2) <= 1e-12 * _num._maximum(u2, 1e-3)
         )
         nd1, nd2, nlam, converged = _direction(u1, u2, *cur[:6], tol, umax)
         # thirteen trials that do not reduce the residual: it is at its rounding floor
@@ -169,14 +170,14 @@ def _newton2(evaluate, u1, u2, params, *, nextra=0, maxiter=60, tol=1e-15, floor
         return (u1, u2, *cur, d1, d2, lam, tries, steps), stop
 
     state = (u1, u2, *ev, d1, d2, lam, zero, zero)
-    (u1, u2, E1, E2, *rest), _ = _ref._iterate(step, state, tuple(params), 13 * maxiter, done)
+    (u1, u2, E1, E2, *rest), _ = _num._iterate(step, state, tuple(params), 13 * maxiter, done)
     return u1, u2, abs(E1), abs(E2), tuple(rest[4 : 4 + nextra])
 
 
 def _closed_form(A, rho, r, s, u1=None, u2=None):
     """u1, u2 and residuals of the closed-form separation conditions, flat arrays."""
     ab = A * np.sqrt(rho / 2)
-    kap = _ref._kappa(rho, s)
+    kap = _cf._kappa(rho, s)
     if u1 is None or u2 is None:
         u1, u2 = _initial_u(ab, kap, r)
     u1, u2, e1, e2, _ = _newton2(_cf_evaluate, u1, u2, (ab, kap, r))
@@ -191,7 +192,7 @@ def _cf_evaluate(u1, u2, ab, kap, r):
 def _cf_outputs(A, rho, r, s, u1, u2):
     """e, F, M, dF/da from u1, u2 (closed form; also used for the stability of any method)."""
     ab = A * np.sqrt(rho / 2)
-    kap = _ref._kappa(rho, s)
+    kap = _cf._kappa(rho, s)
     ecc = (2 * s / np.pi) * (u1 - u2)
     sh1, sh2 = np.sinh(u1), np.sinh(u2)
     F = (np.pi / 2) * (ab * ab - kap * ab * 0.5 * (sh1 + sh2))

@@ -12,7 +12,7 @@ from typing import cast
 import numpy as np
 from numpy.typing import NDArray
 
-from .. import reference as _ref
+from .. import closed_forms as _cf
 from ..sie import SIZES, BoundedSolver, _chunks, log_end_moments
 from .closed_form import _initial_u, _newton2
 
@@ -108,7 +108,7 @@ def _collocation(A, rho, r, s, n, tol):
     """Flat arrays in, dict of flat arrays out."""
     sizes = np.asarray(_SIZES)
     ab = A * np.sqrt(rho / 2)
-    kap = _ref._kappa(rho, s)
+    kap = _cf._kappa(rho, s)
     u1, u2 = _initial_u(ab, kap, r)  # each edge from the symmetric solution with its range
 
     def run(nn, idx, v1, v2):

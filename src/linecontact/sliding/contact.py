@@ -13,8 +13,9 @@ from typing import Any, ClassVar, Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .. import _numerics as _num
+from .. import closed_forms as _cf
 from .. import domain as _domain
-from .. import reference as _ref
 from .._validation import (
     RAISE,
     FailurePolicy,
@@ -238,7 +239,7 @@ def _stable(A, rho, r, s, u1, u2, dphi):
     minimum, always next to a zero-width one. Flat arrays or NumPy scalars.
     """
     ab = A * np.sqrt(rho / 2)
-    kap = _ref._kappa(rho, s)
+    kap = _cf._kappa(rho, s)
     with np.errstate(over="ignore", invalid="ignore"):
         c1, c2 = np.cosh(u1), np.cosh(u2)
         scale = 2 * ab + kap * (c1 + c2) + kap * ab * (c1 + c2)
@@ -279,7 +280,7 @@ def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
             cons=z,
             tail=z,
             n=np.zeros(A.shape, int) if flat else 0,
-            converged=(_ref._maximum(e1, e2) <= 1e-12) & (abs(F) < np.inf),
+            converged=(_num._maximum(e1, e2) <= 1e-12) & (abs(F) < np.inf),
         )
     else:
         d = _collocation(A, rho, r, s, n, tol)
@@ -442,11 +443,11 @@ def sliding_contact(
     A, rho, r, s, tau = broadcast(
         a_over_R=A, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau
     )
-    _ref._check_kappa(rho, s, "R_over_h2")
-    _ref._warn_wide(A)
+    _cf._check_kappa(rho, s, "R_over_h2")
+    _cf._warn_wide(A)
     shape = A.shape
     if scalar and method == "closed-form":  # the same kernels on NumPy scalars
-        A, rho, r, s, tau = _ref._scalars(A, rho, r, s, tau)
+        A, rho, r, s, tau = _num._scalars(A, rho, r, s, tau)
     else:
         A, rho, r, s, tau = (
             np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (A, rho, r, s, tau)

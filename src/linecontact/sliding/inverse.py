@@ -11,8 +11,9 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .. import _numerics as _num
+from .. import closed_forms as _cf
 from .. import domain as _domain
-from .. import reference as _ref
 from .._validation import (
     RAISE,
     FailurePolicy,
@@ -28,43 +29,68 @@ from .contact import SlidingContact, _pack, _solve_flat, _solve_split
 from .pulloff import _LAB_DEEP, _phi_at, _pulloff_flat
 
 
-def _lower_end(F, rho, r, s, kap, phi_t, report: bool = False):
+def _pulloff_end(r, s, kap):
+    """The load-free part of :func:`_lower_end`: ``(lab_lo, phi_po)`` of the adhesive points.
+
+    The lower end (ln abar) of the stable branch and its load (the pull-off load); without
+    adhesion ``_LAB_DEEP`` and 0 (:func:`_lower_end` then starts below Hertz's width). Flat
+    arrays or NumPy scalars; depends on ``(R/h2, h1/h2, sigma0/E)`` only, so a caller that
+    solves several loads at the same points computes it once (:func:`_sliding_ends`).
+    """
+    adh = s > 0
+    if not isinstance(s, np.ndarray):
+        phi_po, lab_lo = np.float64(0.0), np.float64(_LAB_DEEP)
+        if adh:
+            d = _pulloff_flat(kap, r)
+            phi_po = d["phi_min"]
+            lab_lo = _num._where(d["interior"], d["lab_min"], lab_lo)
+        return lab_lo, phi_po
+    lab_lo = np.full(s.shape, _LAB_DEEP)
+    phi_po = np.zeros(s.shape)
+    if adh.any():
+        d = _pulloff_flat(kap[adh], r[adh])
+        phi_po[adh] = d["phi_min"]
+        lab_lo[adh] = np.where(d["interior"], d["lab_min"], _LAB_DEEP)
+    return lab_lo, phi_po
+
+
+def _sliding_ends(rho, r, s):
+    """Check kappa and compute :func:`_pulloff_end` once, on flat checked arrays.
+
+    For :func:`_sliding_for_load` called many times at the same points (``push``'s tip);
+    the arrays are indexed by the caller like the points.
+    """
+    _cf._check_kappa(rho, s, "R_over_h2")
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        return _pulloff_end(r, s, _cf._kappa(rho, s))
+
+
+def _lower_end(F, rho, r, s, kap, phi_t, report: bool = False, ends=None):
     """Lower end (ln abar) of the stable branch; below the pull-off, NoEquilibriumError.
 
     Flat arrays or NumPy scalars; the pull-off search runs on the adhesive points only.
     With ``report`` the points below the pull-off force (or at a load <= 0 without
     adhesion) are not an error: they are marked ``missing`` and their target load is moved
-    to one that a contact carries. Returns ``(lab_lo, phi_t, missing, phi_po)``, the last
-    the load at the lower end (the pull-off load; 0 without adhesion).
+    to one that a contact carries. ``ends`` is :func:`_pulloff_end`'s result where the
+    caller has it. Returns ``(lab_lo, phi_t, missing, phi_po)``, the last the load at the
+    lower end (the pull-off load; 0 without adhesion).
 
     Where the minimum sits at zero width the branch starts at ``abar -> 0``: the bracket
     starts at ``abar = e**-300`` (a load within round-off of the zero-width one); without
     adhesion just below the width that carries the target (``Phi = abar^2``).
     """
     adh = s > 0
-    if not isinstance(F, np.ndarray):
-        phi_po, lab_lo = np.float64(0.0), np.float64(_LAB_DEEP)
-        if adh:
-            d = _pulloff_flat(kap, r)
-            phi_po = d["phi_min"]
-            lab_lo = _ref._where(d["interior"], d["lab_min"], lab_lo)
-    else:
-        lab_lo = np.full(F.shape, _LAB_DEEP)
-        phi_po = np.zeros(F.shape)
-        if adh.any():
-            d = _pulloff_flat(kap[adh], r[adh])
-            phi_po[adh] = d["phi_min"]
-            lab_lo[adh] = np.where(d["interior"], d["lab_min"], _LAB_DEEP)
+    lab_lo, phi_po = _pulloff_end(r, s, kap) if ends is None else ends
     below = adh & (F < (np.pi / 2) * phi_po)  # as the pull-off force is reported
     nonpos = ~adh & (phi_t <= 0)
     missing = below | nonpos
     # without adhesion the load is Hertz's, Phi = abar^2, down to any width: start the
     # bracket below the width that carries the target (F = 1e-300 needs abar ~ 1e-150)
-    hertz_lo = 0.5 * np.log(_ref._maximum(phi_t, 1e-300)) - 1.0
-    lab_lo = _ref._where(~adh, hertz_lo, lab_lo)
+    hertz_lo = 0.5 * np.log(_num._maximum(phi_t, 1e-300)) - 1.0
+    lab_lo = _num._where(~adh, hertz_lo, lab_lo)
     if report:
         # a load that a contact carries stands in (the values are NaN in the result)
-        phi_t = _ref._where(below, phi_po, _ref._where(nonpos, 1.0, phi_t))
+        phi_t = _num._where(below, phi_po, _num._where(nonpos, 1.0, phi_t))
         return lab_lo, phi_t, missing, phi_po
     if np.any(below):
         _, at = first_point(
@@ -106,8 +132,8 @@ def _load_step(lab, lo, hi, u1, u2, phi_t, pmin, kap, r):
     Also returns the u1, u2 of the closed form at the point evaluated (a done point keeps
     that point, so they belong to the returned ln abar).
     """
-    where = _ref._where
-    mx = _ref._maximum
+    where = _num._where
+    mx = _num._maximum
     ph, dph, u1, u2 = _phi_at(lab, kap, r)
     fx = ph - phi_t
     up = fx > 0
@@ -200,36 +226,47 @@ def sliding_contact_for_load(
         accepts=("raise_on_failure", "on_no_equilibrium"),
         **deprecated,
     )
-    report = policy == "report"
     scalar = scalar_or_array(F, rho, r, s, tau)
     F, rho, r, s, tau = broadcast(
         F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau
     )
-    _ref._check_kappa(rho, s, "R_over_h2")
+    _cf._check_kappa(rho, s, "R_over_h2")
     shape = F.shape
-    if scalar:  # the search runs on NumPy scalars (see reference._where)
-        F, rho, r, s, tau = _ref._scalars(F, rho, r, s, tau)
+    if scalar:  # the search runs on NumPy scalars (see _numerics._where)
+        F, rho, r, s, tau = _num._scalars(F, rho, r, s, tau)
     else:
         F, rho, r, s, tau = (
             np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (F, rho, r, s, tau)
         )
-    kap = _ref._kappa(rho, s)
+    return _sliding_for_load(F, rho, r, s, tau, method, n, tol, policy, shape, scalar)
+
+
+def _sliding_for_load(F, rho, r, s, tau, method, n, tol, policy, shape, scalar, ends=None):
+    """The kernel of :func:`sliding_contact_for_load`: checked inputs, no check again.
+
+    Flat float arrays (or NumPy scalars with ``scalar``) of the broadcast inputs, kappa
+    within range; ``ends`` the lower end of the stable branch at these points
+    (:func:`_sliding_ends`, indexed like them) where the caller has it, else it is searched
+    here. Returns the :class:`SlidingContact` of shape ``shape``.
+    """
+    report = policy == "report"
+    kap = _cf._kappa(rho, s)
     phi_t = F * (2 / np.pi)
     # as in sliding_pull_off: far from h1 = h2 the search overflows on the way; the
     # convergence check of the state found reports a failure
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
         # lower end of the stable branch and its load
-        lab_lo, phi_t, missing, phi_lo = _lower_end(F, rho, r, s, kap, phi_t, report)
+        lab_lo, phi_t, missing, phi_lo = _lower_end(F, rho, r, s, kap, phi_t, report, ends)
         # upper end: where Phi exceeds the target (Hertz: Phi >= abar^2 - kappa abar sinh ...)
-        lab_hi = np.log(np.sqrt(_ref._maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
+        lab_hi = np.log(np.sqrt(_num._maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
         ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
-        (lab_hi, _), _ = _ref._iterate(
+        (lab_hi, _), _ = _num._iterate(
             _double_step, (lab_hi, ph_hi), (phi_t, kap, r), 60, done=~(ph_hi < phi_t)
         )
         # bracketed Newton in ln abar on [lab_lo, lab_hi], where Phi increases
         lab = 0.5 * (lab_lo + lab_hi)
         zero = 0.0 * lab
-        (lab, _, _, u1, u2), _ = _ref._iterate(
+        (lab, _, _, u1, u2), _ = _num._iterate(
             _load_step, (lab, lab_lo, lab_hi, zero, zero), (phi_t, phi_lo, kap, r), 200
         )
         A = np.exp(lab) * np.sqrt(2 / rho)
@@ -244,12 +281,12 @@ def sliding_contact_for_load(
         # zero-width end").
         a_min = _domain.DOMAIN["sliding_a_over_R"][0]
         ph_f, _, u1f, u2f = _phi_at(np.log(a_min * np.sqrt(rho / 2)), kap, r)
-        scale = _ref._maximum(abs(phi_t), abs(phi_lo))
+        scale = _num._maximum(abs(phi_t), abs(phi_lo))
         ok = abs(ph_f - phi_t) <= 1e-12 * scale
         zero_end = (s > 0) & (abs(ph_f - phi_lo) <= 1e-12 * scale)
         narrow = ((A < a_min) | (ok & zero_end)) & ~missing
         if np.any(narrow):
-            where = _ref._where
+            where = _num._where
             # (without adhesion the width found is Hertz's and is said; else it is < a_min)
             A = where(narrow, where(ok, a_min, where(s == 0, A, 0.0)), A)
             u1, u2 = where(narrow, u1f, u1), where(narrow, u2f, u2)
@@ -260,7 +297,7 @@ def sliding_contact_for_load(
     _domain.check_widths(
         np.where(missing, np.nan, A), F, "F_over_Eh2", "sliding_a_over_R", narrow=True
     )
-    _ref._warn_wide(np.where(missing, np.nan, A))
+    _cf._warn_wide(np.where(missing, np.nan, A))
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # see sliding_contact
         if method == "closed-form":
             dd = _solve_flat(A, rho, r, s, method, n, tol, u_guess=(u1, u2))

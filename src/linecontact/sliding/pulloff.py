@@ -13,7 +13,8 @@ from typing import ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .. import reference as _ref
+from .. import _numerics as _num
+from .. import closed_forms as _cf
 from .._validation import (
     broadcast,
     first_point,
@@ -70,7 +71,7 @@ def _zero_width(kap, r):
     X2^2 + kappa S/2 ln(S/X1) = 1 and X1^2 + kappa S/2 ln(S/X2) = h1/h2 with S = X1 + X2
     (the separation conditions as u1, u2 -> inf at fixed c_i).
     """
-    ln2 = _ref.LN2
+    ln2 = _cf.LN2
     X2 = 2.0 / (kap * ln2 + np.sqrt(kap * kap * ln2 * ln2 + 4))
     X1 = 2.0 * r / (kap * ln2 + np.sqrt(kap * kap * ln2 * ln2 + 4 * r))
 
@@ -97,7 +98,7 @@ def _phi_at(lab, kap, r):
     starts from a distant abar can lead Newton astray).
     """
     ab = np.exp(lab)
-    one = _ref._full(ab, 1.0)  # the closed form depends on abar and kappa only: R/h2 = 1
+    one = _num._full(ab, 1.0)  # the closed form depends on abar and kappa only: R/h2 = 1
     A = ab * np.sqrt(2.0)
     s = kap * (np.pi / 4) / np.sqrt(2.0)
     u1, u2, _, _ = _closed_form(A, one, r, s)
@@ -139,7 +140,7 @@ def _phi_grid(labs, kap, r):
 
 def _secant_step(xp, fp, x, fx, lo, hi, ph, kap, r):
     """One step of the secant on dPhi inside its bracket (bisection otherwise), per point."""
-    where = _ref._where
+    where = _num._where
     nx = x - fx * (x - xp) / (fx - fp)
     ok = (abs(nx) < np.inf) & (nx > lo) & (nx < hi)
     nx = where(ok, nx, 0.5 * (lo + hi))
@@ -148,7 +149,7 @@ def _secant_step(xp, fp, x, fx, lo, hi, ph, kap, r):
     up = fx > 0
     hi = where(up, x, hi)
     lo = where(up, lo, x)
-    stop = ~(abs(x - xp) > 1e-10 * _ref._maximum(1.0, abs(x))) | (fx == 0)
+    stop = ~(abs(x - xp) > 1e-10 * _num._maximum(1.0, abs(x))) | (fx == 0)
     return (xp, fp, x, fx, lo, hi, ph), stop
 
 
@@ -183,13 +184,13 @@ def _pulloff_flat(kap, r):
         phis[kk + 1, cols],
     )
     if scalar:
-        start, interior = _ref._scalars(*(v[0] for v in start)), bool(interior[0])
-    (_, _, lab_min, _, _, _, ph), _ = _ref._iterate(
+        start, interior = _num._scalars(*(v[0] for v in start)), bool(interior[0])
+    (_, _, lab_min, _, _, _, ph), _ = _num._iterate(
         _secant_step, start, (kap, r), 100, done=not interior if scalar else ~interior
     )
     interior = interior & (ph < phi0)
-    phi_min = _ref._where(interior, ph, phi0)
-    lab_min = _ref._where(interior, lab_min, -np.inf)
+    phi_min = _num._where(interior, ph, phi0)
+    lab_min = _num._where(interior, lab_min, -np.inf)
     return dict(
         X1=X1,
         X2=X2,
@@ -229,14 +230,14 @@ def sliding_pull_off(
     rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
     scalar = scalar_or_array(rho, r, s)
     rho, r, s = broadcast(R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s)
-    _ref._check_kappa(rho, s, "R_over_h2")
+    _cf._check_kappa(rho, s, "R_over_h2")
     shape = rho.shape
     if scalar:  # the same kernels on NumPy scalars (the grid is a batch of 41 either way)
-        rho, r, s = _ref._scalars(rho, r, s)
+        rho, r, s = _num._scalars(rho, r, s)
     else:
         rho, r, s = (np.ascontiguousarray(v, float).reshape(-1) for v in (rho, r, s))
-    kap = _ref._kappa(rho, s)
-    where = _ref._where
+    kap = _cf._kappa(rho, s)
+    where = _num._where
     # h1/h2 far from 1 (1e-300, 1e12) overflows on the way to a finite answer; a result that
     # is not finite is reported below
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
@@ -248,7 +249,7 @@ def sliding_pull_off(
         # a snap-off lets go from a width of at least the shorter adhesion range, or more
         # than 1 % below the zero-width load (as in normal.pull_off)
         snap = d["interior"] & (
-            (a_min >= SNAP_OFF_MIN_WIDTH_OVER_H * _ref._minimum(1.0, r) / rho)
+            (a_min >= SNAP_OFF_MIN_WIDTH_OVER_H * _num._minimum(1.0, r) / rho)
             | (F0 - Fmin > ZERO_WIDTH_LOAD_RTOL * abs(F0))
         )
     bad = ~((abs(F0) < np.inf) & (abs(Fmin) < np.inf) & (abs(a_min) < np.inf))

@@ -17,8 +17,8 @@ from typing import ClassVar
 import numpy as np
 from numpy.typing import NDArray
 
+from .. import closed_forms as _cf
 from .. import domain as _domain
-from .. import reference as _ref
 from .._validation import (
     broadcast,
     check_array,
@@ -499,5 +499,5 @@ def _build(cls, method, scalar, **vals):
 
 def _wide(a_over_R: NDArray) -> NDArray:
     """``a_over_R`` after the small-strain warning of the Coulomb problems' Hertz contact."""
-    _ref._warn_wide(a_over_R, stacklevel=4)
+    _cf._warn_wide(a_over_R, stacklevel=4)
     return a_over_R

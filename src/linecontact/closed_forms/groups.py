@@ -1,0 +1,101 @@
+r"""The groups of the Maugis--Dugdale line contact: ``kappa`` and the Maugis parameter.
+
+``kappa = (4/pi)(sigma0/E) sqrt(2R/h)`` (Johnson & Greenwood 2008) is the one group on which
+the whole Maugis--Dugdale family depends; every solver forms it with :func:`_kappa` and
+refuses points beyond :data:`KAPPA_MAX` (:func:`_check_kappa`). The Maugis parameter is Baney
+& Hui's Tabor-like parameter for line contact, ``kappa = lambda^(3/2)/sqrt(2)``. Units as in
+:mod:`linecontact.closed_forms`.
+
+References
+----------
+J. M. Baney, C.-Y. Hui, "A cohesive zone model for the adhesion of cylinders",
+J. Adhesion Sci. Technol. 11 (1997) 393--406. doi:10.1163/156856197X00796
+K. L. Johnson, J. A. Greenwood, "A Maugis analysis of adhesive line contact",
+J. Phys. D: Appl. Phys. 41 (2008) 155315. doi:10.1088/0022-3727/41/15/155315
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .. import domain as _domain
+from .._numerics import _representable
+from .._validation import broadcast, first_point, out, scalar_or_array
+
+__all__ = ["KAPPA_MAX", "kappa", "maugis_parameter"]
+
+#: Largest ``kappa`` the Maugis--Dugdale solvers accept. Their brackets in
+#: ``u = arccosh(c/a)`` reach down to 1e-60 (the pull-off to 1e-10), and the load minimum sits
+#: at ``u ~ 2.8 kappa**(-2/3)``: beyond ``kappa ~ 1e13`` the minimum and the contacts near it
+#: fall outside, so pull-off forces and contacts for a given load would be wrong.
+KAPPA_MAX = 1e12
+
+
+def _check_kappa(rho: NDArray, s: NDArray, rho_name: str = "R_over_h") -> None:
+    """Refuse parameter points beyond :data:`KAPPA_MAX`, naming both parameters."""
+    if np.ndim(rho) == 0 and np.ndim(s) == 0:
+        # the same operations on Python floats (sqrt is correctly rounded in both)
+        if _kappa(float(rho), float(s)) <= KAPPA_MAX:
+            return
+    with np.errstate(over="ignore"):
+        kap = _kappa(rho, s)
+    bad = ~(kap <= KAPPA_MAX)
+    if np.any(bad):
+        pick = list(first_point(bad, kap=kap, rho=rho, s=s)[1].values())
+        raise ValueError(
+            f"kappa = (4/pi) sigma0_over_E sqrt(2 {rho_name}) must be <= {KAPPA_MAX:g} (the "
+            f"range of the solvers), got kappa={pick[0]:.3g} at {rho_name}={pick[1]!r}, "
+            f"sigma0_over_E={pick[2]!r}"
+        )
+
+
+def _kappa(rho, s):
+    """:func:`kappa` of validated inputs: arrays, NumPy scalars or Python floats.
+
+    The one home of the formula: every solver forms ``kappa`` here. A Python float takes
+    ``math.sqrt`` (fast, and correctly rounded as ``np.sqrt``: the same bits).
+    """
+    return (4 / np.pi) * s * (math.sqrt(2 * rho) if type(rho) is float else np.sqrt(2 * rho))
+
+
+def _maugis_parameter(rho, s):
+    """:func:`maugis_parameter` of validated inputs (arrays or NumPy scalars)."""
+    return 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
+
+
+def kappa(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | float:
+    r"""The single group of the Maugis--Dugdale line contact.
+
+    :math:`\kappa = (4/\pi)(\sigma_0/E)\sqrt{2R/h}`.
+
+    Small :math:`\kappa` is the DMT-like (rigid, long-range) end, large :math:`\kappa` the
+    JKR-like (compliant, short-range) end. :math:`\kappa = \lambda^{3/2}/\sqrt2`
+    with :math:`\lambda` of :func:`maugis_parameter`.
+    """
+    rho = _domain.check("R_over_h", R_over_h)
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
+    rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
+    with np.errstate(over="ignore"):
+        val = _kappa(rho, s)
+    val = _representable("kappa", val, R_over_h=rho, sigma0_over_E=s)
+    return out(val, scalar_or_array(rho, s))
+
+
+def maugis_parameter(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | float:
+    r"""Baney & Hui's Tabor-like parameter for line contact.
+
+    :math:`\lambda = 4\sigma_0 (R/(\pi^2 E^2 w))^{1/3}`.
+
+    With :math:`w = \sigma_0 h`: :math:`\lambda = (4/\pi^{2/3})(\sigma_0/E)^{2/3}(R/h)^{1/3}`.
+    DMT-like for :math:`\lambda \lesssim 0.1`, JKR-like for :math:`\lambda \gtrsim 5`.
+    """
+    rho = _domain.check("R_over_h", R_over_h)
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
+    rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
+    with np.errstate(over="ignore"):
+        val = _maugis_parameter(rho, s)
+    val = _representable("the Maugis parameter", val, R_over_h=rho, sigma0_over_E=s)
+    return out(val, scalar_or_array(rho, s))
