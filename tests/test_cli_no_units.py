@@ -21,8 +21,8 @@ run) and the test fails on a *product or quotient that involves an SI scale*. Pr
 Arithmetic on the paper's groups (``a_over_R``, ``rho``, ``s``, ``np.pi / 4 * A``) is not
 concerned: the shells may form nondimensional numbers; what they may not do is convert
 between the groups and SI units, or form totals over a fibre length. Those are the SI
-layer's (``Cylinder``'s methods, ``Cylinder.columns`` and the SI results; ``Cylinder.total``
-and ``columns(..., length=)`` for the totals).
+layer's (``Cylinder``'s methods and their SI results; the results' ``total(length)`` for the
+totals, and ``Cylinder.total``).
 
 The rule goes by names: a product of two plain numbers that no name marks as SI
 (``x * y``) is not seen. ``test_the_rule_catches`` holds the forms the command line used

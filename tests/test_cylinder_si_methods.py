@@ -1,5 +1,6 @@
 """The SI methods the command line reads (issue 21): ``Cylinder.sliding``, ``load_curve``,
-``lennard_jones_load_curve``, ``columns``, ``total``, ``tangential_load``, and
+``lennard_jones_load_curve`` (each an SI result, ``units.to_si`` of the nondimensional one),
+the results' ``total(length)``, ``Cylinder.total``, ``tangential_load``, and
 ``hysteresis_adhesion``: each the nondimensional problem in the cylinder's units.
 """
 
@@ -7,8 +8,14 @@ import numpy as np
 import pytest
 
 from linecontact import load_curve
-from linecontact.cylinder import Cylinder, hysteresis_adhesion
+from linecontact.cylinder import (
+    Cylinder,
+    CylinderLoadCurve,
+    CylinderSliding,
+    hysteresis_adhesion,
+)
 from linecontact.materials import adhesion_from_work
+from linecontact.results import Result
 from linecontact.sliding import sliding_contact, sliding_contact_for_load
 
 CYL = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
@@ -28,13 +35,18 @@ def test_scales_and_conversions():
         CYL.total(1.0, -1.0)
 
 
-def test_columns_and_totals():
-    c = CYL.contact(load=[0.0, 1.0]).nondimensional
-    cols = CYL.columns(c, ("a_over_R", "c_over_R", "F_over_Eh"), length=1e-6)
-    assert list(cols) == ["a_m", "c_m", "F_N_per_m", "F_total_N"]
-    np.testing.assert_array_equal(cols["a_m"], np.multiply(c.a_over_R, CYL.radius))
-    np.testing.assert_array_equal(cols["F_total_N"], np.multiply(c.F_over_Eh, 50.0 * 1e-6))
-    assert "F_total_N" not in CYL.columns(c, ("F_over_Eh",))
+def test_totals_over_a_fibre():
+    c = CYL.contact(load=[0.0, 1.0])
+    nd = c.nondimensional
+    np.testing.assert_array_equal(c.contact_half_width, np.multiply(nd.a_over_R, CYL.radius))
+    # the group times the scale's total over the fibre (E h L), as the command line wrote it
+    np.testing.assert_array_equal(c.total(1e-6)["load"], np.multiply(nd.F_over_Eh, 50.0 * 1e-6))
+    assert list(c.total(1e-6)) == ["load"]
+    with pytest.raises(ValueError, match="length"):
+        c.total(-1.0)
+    p = CYL.pull_off()  # no scales kept: the SI value times the length
+    assert p.total(2e-6) == {"pull_off_force": p.pull_off_force * 2e-6}
+    assert not hasattr(Cylinder, "columns")
 
 
 def test_sliding_is_the_nondimensional_problem():
@@ -47,10 +59,19 @@ def test_sliding_is_the_nondimensional_problem():
         tau0_over_E=5e8 / 1e11,
         method="collocation",
     )
-    np.testing.assert_array_equal(r.F_over_Eh2, nd.F_over_Eh2)
+    assert isinstance(r, CylinderSliding) and isinstance(r, Result)
+    np.testing.assert_array_equal(r.nondimensional.F_over_Eh2, nd.F_over_Eh2)
+    np.testing.assert_array_equal(r.load, nd.F_over_Eh2 * (1e11 * 0.5e-9))
+    np.testing.assert_array_equal(r.moment, nd.M_over_Eh2R * (1e11 * 0.5e-9 * 50e-9))
+    np.testing.assert_array_equal(r.friction_force, nd.T_over_Eh2 * (1e11 * 0.5e-9))
+    assert r.receding_range == 2.0 * 0.5e-9
+    np.testing.assert_array_equal(
+        r.total(1e-6)["moment"], nd.M_over_Eh2R * (1e11 * 0.5e-9 * 50e-9 * 1e-6)
+    )
     f = CYL.sliding(h1_over_h2=2.0, load=0.5, method="closed-form")
     g = sliding_contact_for_load(0.5 / 50.0, CYL.R_over_h, 2.0, 0.01, method="closed-form")
-    assert float(f.a_over_R) == float(g.a_over_R)
+    assert float(f.nondimensional.a_over_R) == float(g.a_over_R)
+    assert f.contact_half_width == float(g.a_over_R) * 50e-9
     assert CYL.sliding(h1_over_h2=2.0, load=0.5, method="closed-form").state == "contact"
 
 
@@ -72,7 +93,11 @@ def test_load_curve_in_si():
     nd = load_curve(
         CYL.R_over_h, CYL.sigma0_over_E, a_max_over_R=5e-9 / 50e-9, num=10, num_noncontact=4
     )
-    np.testing.assert_array_equal(c.F_over_Eh, nd.F_over_Eh)
+    assert isinstance(c, CylinderLoadCurve)
+    np.testing.assert_array_equal(c.nondimensional.F_over_Eh, nd.F_over_Eh)
+    np.testing.assert_array_equal(c.load, nd.F_over_Eh * (1e11 * 0.5e-9))
+    np.testing.assert_array_equal(c.central_gap, nd.central_gap_over_h * 0.5e-9)
+    np.testing.assert_array_equal(c.branch, nd.branch)
 
 
 def test_lennard_jones_load_curve_refuses_a_load_beyond_the_solver():

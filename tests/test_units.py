@@ -15,12 +15,16 @@ import linecontact as lc
 from linecontact import inverse as inv
 from linecontact.cylinder import (
     Cylinder,
+    CylinderLennardJonesLoadCurve,
+    CylinderLoadCurve,
+    CylinderSliding,
 )
 from linecontact.lennard_jones._groups import LennardJonesPullOff
-from linecontact.lennard_jones_groups import LennardJonesContact
-from linecontact.normal import NormalContact, PullOff
+from linecontact.lennard_jones_groups import LennardJonesContact, LennardJonesLoadCurve
+from linecontact.normal import LoadCurve, NormalContact, PullOff
 from linecontact.push import Push
 from linecontact.results import Result
+from linecontact.sliding import SlidingContact
 from linecontact.tangential import (
     CoulombRolling,
     CoulombSlidingInitiation,
@@ -41,6 +45,9 @@ DECLARED = [
     PullOff,
     LennardJonesContact,
     LennardJonesPullOff,
+    LoadCurve,
+    LennardJonesLoadCurve,
+    SlidingContact,
     Push,
     SlidingInitiation,
     CoulombSlidingInitiation,
@@ -135,6 +142,16 @@ def test_lennard_jones():
     np.testing.assert_array_equal(k.load, [0.5, 1.0])  # as given
     np.testing.assert_allclose(to_si(n, Scales.of(c))["load"], [0.5, 1.0], rtol=1e-12)
     assert isinstance(k, Result) and isinstance(p, Result)
+    u = c.lennard_jones_load_curve()
+    m = u.nondimensional
+    assert isinstance(u, CylinderLennardJonesLoadCurve) and isinstance(u, Result)
+    np.testing.assert_array_equal(u.load, np.multiply(m.F_over_Eh, Eh))
+    np.testing.assert_array_equal(u.error_estimate, np.multiply(m.error_estimate_over_Eh, Eh))
+    np.testing.assert_array_equal(u.contact_half_width, np.multiply(m.a_over_R, R))
+    np.testing.assert_array_equal(u.central_gap, np.multiply(m.central_gap_over_h, h))
+    np.testing.assert_array_equal(u.turning_point, m.turning_point)
+    np.testing.assert_array_equal(u.total(1e-6)["load"], u.load * 1e-6)
+    _round_trip(u)
 
 
 def test_tangential(cyl):
@@ -167,6 +184,44 @@ def test_push(cyl):
     ):
         np.testing.assert_array_equal(getattr(p, si_name), np.multiply(getattr(n, field), scale))
     assert to_si(n, Scales.of(cyl)).keys() == {v[0] for v in Push.si.values()}
+
+
+def test_sliding(cyl):
+    h2 = cyl.adhesion_range
+    s = cyl.sliding(receding_range=2 * h2, contact_half_width=[2e-9, 4e-9], friction_stress=1e8)
+    n = s.nondimensional
+    Eh = E * h2  # the groups of sliding are over h = h2, the cylinder's (advancing) range
+    for si_name, field, scale in (
+        ("contact_half_width", "a_over_R", R),
+        ("trailing_zone_end", "c1_over_R", R),
+        ("leading_zone_end", "c2_over_R", R),
+        ("eccentricity", "e_over_R", R),
+        ("load", "F_over_Eh2", Eh),
+        ("moment", "M_over_Eh2R", Eh * R),
+        ("moment_about_axis", "M_axis_over_Eh2R", Eh * R),
+        ("friction_force", "T_over_Eh2", Eh),
+    ):
+        np.testing.assert_array_equal(getattr(s, si_name), np.multiply(getattr(n, field), scale))
+    assert s.receding_range == 2 * h2
+    assert isinstance(s, CylinderSliding) and isinstance(s, Result)
+    assert to_si(n, Scales.of(cyl)).keys() == {v[0] for v in SlidingContact.si.values()}
+    t = s.total(1e-6)  # the group times the scale's total (E h2 L), as the command line's
+    assert list(t) == ["load", "moment", "friction_force"]
+    np.testing.assert_array_equal(t["moment"], np.multiply(n.M_over_Eh2R, Eh * R * 1e-6))
+
+
+def test_load_curve(cyl):
+    c = cyl.load_curve(max_half_width=5e-9, num=10, num_noncontact=4)
+    n = c.nondimensional
+    h, Eh = cyl.adhesion_range, E * cyl.adhesion_range
+    assert isinstance(c, CylinderLoadCurve) and isinstance(c, Result)
+    np.testing.assert_array_equal(c.central_gap, np.multiply(n.central_gap_over_h, h))
+    np.testing.assert_array_equal(c.contact_half_width, np.multiply(n.a_over_R, R))
+    np.testing.assert_array_equal(c.adhesive_zone_half_width, np.multiply(n.c_over_R, R))
+    np.testing.assert_array_equal(c.load, np.multiply(n.F_over_Eh, Eh))
+    np.testing.assert_array_equal(c.branch, n.branch)
+    np.testing.assert_array_equal(c.total(2e-6)["load"], c.load * 2e-6)
+    assert to_si(n, Scales.of(cyl)).keys() == {v[0] for v in LoadCurve.si.values()}
 
 
 def test_histories(cyl):
@@ -210,6 +265,8 @@ def test_si_results_are_results(cyl):
         cyl.push(friction_stress=1e9, height=[0.5 * R, R], receding_range=1e-9, normal_load=1.0),
         cyl.cyclic_loss(1.0, [0.5, 1.0], friction_stress=1e9),
         cyl.tangential_history(1.0, [1.0, -1.0, 1.0], friction_stress=1e9),
+        cyl.sliding(h1_over_h2=2.0, load=[0.5, 1.0], friction_stress=1e8, method="closed-form"),
+        cyl.load_curve(num=10, num_noncontact=4),
     ]
     for r in results:
         _round_trip(r)

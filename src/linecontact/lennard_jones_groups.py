@@ -106,6 +106,12 @@ class LennardJonesLoadCurve(Result):
         "mu",
         "maugis_parameter",
     )
+    si: ClassVar[dict[str, tuple[str, str, str]]] = {
+        "central_gap_over_h": ("central_gap", "h", "m"),
+        "a_over_R": ("contact_half_width", "R", "m"),
+        "F_over_Eh": ("load", "Eh", "N/m"),
+        "error_estimate_over_Eh": ("error_estimate", "Eh", "N/m"),
+    }
 
     F_over_Eh: NDArray
     a_over_R: NDArray

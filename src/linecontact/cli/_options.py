@@ -777,3 +777,23 @@ def record_flags(parser: argparse.ArgumentParser, args: argparse.Namespace) -> N
         if longs and action.dest not in flags:
             flags[action.dest] = longs[0]
     args._flags = flags
+
+
+def si_columns(
+    result: Any,
+    names: dict[str, str],
+    *,
+    totals: dict[str, str] | None = None,
+    length: float | None = None,
+) -> dict[str, Any]:
+    """The SI columns of an SI ``result`` of :class:`Cylinder`, under the record's keys.
+
+    ``names`` maps each SI field of ``result`` (``"load"``, ...) to its key (``"F_N_per_m"``),
+    in that order; with ``length`` [m] then ``totals`` maps each field of ``result.total``
+    (the field over the fibre) to its key (``"F_total_N"``). No arithmetic: a rename.
+    """
+    out = {key: getattr(result, name) for name, key in names.items()}
+    if length is not None and totals:
+        over = result.total(length)
+        out.update({key: over[name] for name, key in totals.items()})
+    return out

@@ -8,7 +8,7 @@ from typing import Any
 import numpy as np
 
 from ..closed_forms import kappa, maugis_parameter
-from ..cylinder import Cylinder
+from ..cylinder import Cylinder, _si_load_curve
 from ..laws import lennard_jones as _lj
 from ..normal import NormalContact, contact_for_load, load_curve, normal_contact, pull_off
 from ..output import Table, table_from_result
@@ -25,6 +25,7 @@ from ._options import (
     half_widths,
     null_missing,
     show_together,
+    si_columns,
     si_loads,
     si_parameters,
 )
@@ -57,6 +58,7 @@ def _cmd_normal(args: argparse.Namespace) -> int:
     A = half_widths(args, cyl, "F_over_Eh")
     if args.law == "lennard-jones":
         return _cmd_normal_lj(args, A, rho, s, cyl)
+    c: Any = None  # the SI result (SI inputs)
     if A is not None:
         if args.branch != "stable":
             raise ValueError(
@@ -90,12 +92,13 @@ def _cmd_normal(args: argparse.Namespace) -> int:
             r = contact_for_load(F, rho, s, branch=args.branch, on_failure="report")
         else:
             load = si_loads(args, cyl, "F_over_Eh")
-            r = cyl.contact(load=load, branch=args.branch, on_failure="report").nondimensional
+            c = cyl.contact(load=load, branch=args.branch, on_failure="report")
+            r = c.nondimensional
             F = cyl.over(load, "Eh")
         state = np.asarray(r.state).reshape(-1)
         reason = _load_reasons(F.reshape(-1), state, rho, s, args.branch, cyl)
         given = "F_over_Eh"
-    table = _normal_table(args, r, rho, s, cyl, state, reason, given)
+    table = _normal_table(args, r, c, rho, s, cyl, state, reason, given)
     emit(args, table)
     return finish(table, "contact")
 
@@ -111,6 +114,7 @@ def _cmd_normal_lj(args: argparse.Namespace, A, rho: float, s: float, cyl: Cylin
             "--branch and --method apply to --law dugdale: under the Lennard-Jones law the "
             "contact for a load is the stable state beyond the pull-off"
         )
+    c: Any = None  # the SI result (SI inputs)
     if cyl is None:
         F = np.asarray(args.F_over_Eh, float)
         r = _lj.contact_for_load(F, rho, s, on_failure="report")
@@ -133,8 +137,9 @@ def _cmd_normal_lj(args: argparse.Namespace, A, rho: float, s: float, cyl: Cylin
     extra: dict[str, Any] = {}
     show = ["a_over_R", "central_gap_over_h", "F_over_Eh", "error_estimate_over_Eh"]
     if cyl is not None:
-        fields = ("a_over_R", "central_gap_over_h", "F_over_Eh", "error_estimate_over_Eh")
-        extra.update(cyl.columns(r, fields, length=args.length))
+        names = {"contact_half_width": "a_m", "central_gap": "central_gap_m"}
+        names.update(load="F_N_per_m", error_estimate="error_estimate_N_per_m")
+        extra.update(si_columns(c, names, totals={"load": "F_total_N"}, length=args.length))
         show += ["a_m", "F_N_per_m"]
         if args.length is not None:
             show.append("F_total_N")
@@ -177,14 +182,16 @@ def _load_reasons(F, state, rho, s, branch, cyl) -> np.ndarray:
     return reason
 
 
-def _normal_table(args, r: NormalContact, rho, s, cyl, state, reason, given) -> Table:
+def _normal_table(args, r: NormalContact, c, rho, s, cyl, state, reason, given) -> Table:
     params = _parameters(args, rho, s, cyl)
     if args.branch != "stable":
         params["branch"] = args.branch
     extra: dict[str, Any] = {}
     show = ["a_over_R", "c_over_R", "F_over_Eh", "c_over_a", "stable"]
     if cyl is not None:
-        extra.update(cyl.columns(r, ("a_over_R", "c_over_R", "F_over_Eh"), length=args.length))
+        names = {"contact_half_width": "a_m", "adhesive_zone_half_width": "c_m"}
+        names["load"] = "F_N_per_m"
+        extra.update(si_columns(c, names, totals={"load": "F_total_N"}, length=args.length))
         show += ["a_m", "c_m", "F_N_per_m"]
         if args.length is not None:
             show.append("F_total_N")
@@ -220,7 +227,8 @@ def _normal_table(args, r: NormalContact, rho, s, cyl, state, reason, given) -> 
 
 
 def _cmd_pulloff_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinder | None) -> int:
-    p = _lj.pull_off(rho, s) if cyl is None else cyl.lennard_jones_pull_off().nondimensional
+    si = None if cyl is None else cyl.lennard_jones_pull_off()
+    p = _lj.pull_off(rho, s) if si is None else si.nondimensional
     params = _parameters(args, rho, s, cyl)
     params.pop("kappa")
     params["law"] = "lennard-jones"
@@ -233,11 +241,13 @@ def _cmd_pulloff_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinde
         "mu",
     ]
     if cyl is not None:
-        fields = ("F_pulloff_over_Eh", "a_over_R_at_pulloff", "central_gap_over_h_at_pulloff")
-        extra.update(cyl.columns(p, fields))
+        names = {"pull_off_force": "F_pulloff_N_per_m"}
+        names["contact_half_width_at_pull_off"] = "a_at_pulloff_m"
+        names["central_gap_at_pull_off"] = "central_gap_at_pulloff_m"
+        totals = {"pull_off_force": "F_pulloff_total_N"}
+        extra.update(si_columns(si, names, totals=totals, length=args.length))
         show += ["F_pulloff_N_per_m"]
-        if args.length is not None:  # the pull-off force [N/m] times L
-            extra["F_pulloff_total_N"] = cyl.total(extra["F_pulloff_N_per_m"], args.length)
+        if args.length is not None:
             show.append("F_pulloff_total_N")
     table = table_from_result(
         p,
@@ -256,18 +266,21 @@ def _cmd_pulloff(args: argparse.Namespace) -> int:
     rho, s, cyl = groups(args)
     if args.law == "lennard-jones":
         return _cmd_pulloff_lj(args, rho, s, cyl)
-    p = pull_off(rho, s) if cyl is None else cyl.pull_off().nondimensional
+    si = None if cyl is None else cyl.pull_off()
+    p = pull_off(rho, s) if si is None else si.nondimensional
     params = _parameters(args, rho, s, cyl)
     params.pop("kappa")
     params.pop("maugis_parameter")
     extra: dict[str, Any] = {}
     show = ["F_pulloff_over_Eh", "a_over_R_at_pulloff", "mechanism", "F_zero_width_over_Eh"]
     if cyl is not None:
-        fields = ("F_pulloff_over_Eh", "a_over_R_at_pulloff", "F_zero_width_over_Eh")
-        extra.update(cyl.columns(p, fields))
+        names = {"pull_off_force": "F_pulloff_N_per_m"}
+        names["contact_half_width_at_pull_off"] = "a_at_pulloff_m"
+        names["zero_width_force"] = "F_zero_width_N_per_m"
+        totals = {"pull_off_force": "F_pulloff_total_N"}
+        extra.update(si_columns(si, names, totals=totals, length=args.length))
         show += ["F_pulloff_N_per_m", "a_at_pulloff_m"]
-        if args.length is not None:  # the pull-off force [N/m] times L
-            extra["F_pulloff_total_N"] = cyl.total(extra["F_pulloff_N_per_m"], args.length)
+        if args.length is not None:
             show.append("F_pulloff_total_N")
     table = table_from_result(
         p,
@@ -312,10 +325,12 @@ def _cmd_curve_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinder 
             raise ValueError(f"--F-max must be a finite load > 0 [N/m], got {args.F_max!r}")
     elif cyl is not None and F_max is not None:
         raise ValueError("--F-max-over-Eh is nondimensional: with SI inputs give --F-max [N/m]")
+    si: Any = None
     if cyl is None:
         c = _lj.load_curve(rho, s, F_max_over_Eh=F_max)
     else:
-        c = cyl.lennard_jones_load_curve(max_load=args.F_max)
+        si = cyl.lennard_jones_load_curve(max_load=args.F_max)
+        c = si.nondimensional
     po = c.pulloff
     is_po = np.zeros(c.F_over_Eh.shape, bool)
     is_po[int(np.argmin(c.F_over_Eh))] = True  # the sample nearest the refined pull-off
@@ -331,11 +346,11 @@ def _cmd_curve_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinder 
         "stable",
     ]
     if cyl is not None:
-        fields = ("central_gap_over_h", "a_over_R", "F_over_Eh", "error_estimate_over_Eh")
-        extra.update(cyl.columns(c, fields))
+        names = {"central_gap": "central_gap_m", "contact_half_width": "a_m"}
+        names.update(load="F_N_per_m", error_estimate="error_estimate_N_per_m")
+        extra.update(si_columns(si, names, totals={"load": "F_total_N"}, length=args.length))
         show += ["a_m", "F_N_per_m"]
-        if args.length is not None:  # the load [N/m] times L
-            extra["F_total_N"] = cyl.total(extra["F_N_per_m"], args.length)
+        if args.length is not None:
             show.append("F_total_N")
     show.append("pulloff")
     table = table_from_result(
@@ -371,10 +386,14 @@ def _cmd_curve(args: argparse.Namespace) -> int:
     if cyl is None and args.a_max is not None:
         raise ValueError("--a-max [m] is an SI input: give --radius and the materials too")
     n = dict(num=args.num, num_noncontact=args.num_noncontact)
+    si: Any = None
     if cyl is None or args.a_max is None:
         c = load_curve(rho, s, a_max_over_R=args.a_max_over_R, **n)
+        if cyl is not None:  # the limit in radii: the same curve, in SI units
+            si = _si_load_curve(cyl, c)
     else:
-        c = cyl.load_curve(max_half_width=args.a_max, **n)
+        si = cyl.load_curve(max_half_width=args.a_max, **n)
+        c = si.nondimensional
     po = c.pulloff
     # the pull-off state is the one `pulloff` reports, whatever its label: the load minimum
     # (a point of the curve), or the touching state where the minimum is narrower than the
@@ -389,11 +408,11 @@ def _cmd_curve(args: argparse.Namespace) -> int:
     extra: dict[str, Any] = {"pulloff": is_po}
     show = ["branch", "central_gap_over_h", "a_over_R", "c_over_R", "F_over_Eh", "stable"]
     if cyl is not None:
-        fields = ("central_gap_over_h", "a_over_R", "c_over_R", "F_over_Eh")
-        extra.update(cyl.columns(c, fields))
+        names = {"central_gap": "central_gap_m", "contact_half_width": "a_m"}
+        names.update(adhesive_zone_half_width="c_m", load="F_N_per_m")
+        extra.update(si_columns(si, names, totals={"load": "F_total_N"}, length=args.length))
         show += ["a_m", "F_N_per_m"]
-        if args.length is not None:  # the load [N/m] times L
-            extra["F_total_N"] = cyl.total(extra["F_N_per_m"], args.length)
+        if args.length is not None:
             show.append("F_total_N")
     show.append("pulloff")
     table = table_from_result(

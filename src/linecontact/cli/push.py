@@ -27,6 +27,7 @@ from ._options import (
     emit,
     finish,
     show_together,
+    si_columns,
     si_given,
     si_parameters,
 )
@@ -204,7 +205,7 @@ def _cmd_push(args: argparse.Namespace) -> int:
             check_si("--push", args.push, Eh, "T_over_Ea", "N/m")
         h1 = args.h1 if args.h1 is not None else cyl.in_si(args.h1_over_h2, "h")
         Q = args.push
-        res: Any = cyl.push(
+        pushed: Any = cyl.push(
             friction_stress=args.tau0,
             height=heights,
             receding_range=h1,
@@ -212,7 +213,8 @@ def _cmd_push(args: argparse.Namespace) -> int:
             push=args.push,
             tip_friction=args.tip_friction,
             length=args.length,
-        ).nondimensional
+        )
+        res: Any = pushed.nondimensional
     if cyl is None:
         res = push(rho, r, s, tau, F, H, Q, tip_friction=args.tip_friction)
     show = [
@@ -251,13 +253,16 @@ def _cmd_push(args: argparse.Namespace) -> int:
         ):
             if getattr(args, key) is not None:
                 params[name] = getattr(args, key)
-        fields = ["H_over_R", "a_rest_over_R", "a_slide_over_R", "Q_roll_over_Eh2"]
-        fields += ["Q_slide_over_Eh2", "Q_onset_over_Eh2", "H_critical_over_R"]
+        names = {"height": "H_m", "rest_half_width": "a_rest_m"}
+        names.update(slide_half_width="a_slide_m", rolling_resistance="Q_roll_N_per_m")
+        names.update(sliding_resistance="Q_slide_N_per_m", slip_onset="Q_onset_N_per_m")
+        names["critical_height"] = "H_critical_m"
+        totals = {"rolling_resistance": "Q_roll_total_N", "sliding_resistance": "Q_slide_total_N"}
         show = ["H_m", "a_slide_m", "Q_roll_N_per_m", "Q_slide_N_per_m", "H_critical_m"]
         if args.tip_friction is not None:
-            fields.append("H_arm_over_R")
+            names["moment_arm"] = "H_arm_m"
             show.insert(1, "H_arm_m")
-        extra.update(cyl.columns(res, tuple(fields), length=args.length))
+        extra.update(si_columns(pushed, names, totals=totals, length=args.length))
         show += ["first_motion"] + (["state"] if Q is not None else [])
         if args.length is not None:
             show += ["Q_roll_total_N", "Q_slide_total_N"]

@@ -29,6 +29,7 @@ from ._options import (
     half_widths,
     null_missing,
     show_together,
+    si_columns,
     si_given,
     si_loads,
     si_parameters,
@@ -153,7 +154,8 @@ def _cmd_slide(args: argparse.Namespace) -> int:
         if cyl is None:
             res = sliding_contact(A, rho, r, s, tau0_over_E=tau, **how)
         else:  # A in m
-            res = cyl.sliding(contact_half_width=A, **how)
+            si = cyl.sliding(contact_half_width=A, **how)
+            res = si.nondimensional
         ok = np.asarray(res.converged, bool).reshape(-1)
         state = np.where(ok, "contact", "not-converged")
         reason = np.full(ok.shape, None, dtype=object)
@@ -169,7 +171,8 @@ def _cmd_slide(args: argparse.Namespace) -> int:
             res = sliding_contact_for_load(F, rho, r, s, tau0_over_E=tau, **how)
         else:
             load = si_loads(args, cyl, "F_over_Eh2")
-            res = cyl.sliding(load=load, **how)
+            si = cyl.sliding(load=load, **how)
+            res = si.nondimensional
             F = cyl.over(load, "Eh")
         state = np.asarray(res.state).reshape(-1)
         reason = np.full(state.shape, None, dtype=object)
@@ -206,13 +209,17 @@ def _cmd_slide(args: argparse.Namespace) -> int:
     if cyl is not None:
         params.update(si_parameters(args, cyl))
         params["h1_m"] = cyl.in_si(_ratio(res), "h")
-        fields = ["a_over_R", "c1_over_R", "c2_over_R", "e_over_R", "F_over_Eh2", "M_over_Eh2R"]
+        names = {"contact_half_width": "a_m", "trailing_zone_end": "c1_m"}
+        names.update(leading_zone_end="c2_m", eccentricity="e_m", load="F_N_per_m")
+        names["moment"] = "M_N"
+        totals = {"load": "F_total_N", "moment": "M_total_N_m"}
         show += ["a_m", "F_N_per_m", "M_N"]
         if args.tau0 is not None:
             params["tau0_Pa"] = args.tau0
-            fields.append("T_over_Eh2")
+            names["friction_force"] = "T_N_per_m"
+            totals["friction_force"] = "T_total_N"
             show.append("T_N_per_m")
-        extra.update(cyl.columns(res, tuple(fields), length=args.length))
+        extra.update(si_columns(si, names, totals=totals, length=args.length))
         if args.length is not None:
             show += ["F_total_N", "M_total_N_m"]
             if args.tau0 is not None:

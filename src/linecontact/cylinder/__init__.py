@@ -7,13 +7,12 @@ paper's groups, call the nondimensional solvers (:mod:`linecontact.normal`,
 [Pa], forces per unit length of cylinder [N/m], work of adhesion [J/m^2]. Materials and
 adhesion conventions: :mod:`linecontact.materials`.
 
-The package's modules: ``_cylinder.py`` (:class:`Cylinder`, and :data:`SI_COLUMNS`, the SI
-columns of the command line), ``_methods.py`` (the methods of the problems, which
-:class:`Cylinder` inherits), ``_problems.py`` (the tangential problems, the pushed fibre, the
-load histories), ``_sliding.py`` (steady sliding), ``_deprecated.py`` (the ``cylinder_*``
-functions, deprecated aliases of the methods), ``_results.py`` (the SI result classes),
-``_checks.py`` (the plausible ranges of the SI inputs and the checks of the widths). Import
-from ``linecontact.cylinder``: every name is here.
+The package's modules: ``_cylinder.py`` (:class:`Cylinder`), ``_methods.py`` (the methods of
+the problems, which :class:`Cylinder` inherits), ``_problems.py`` (the tangential problems, the
+pushed fibre, the load histories), ``_sliding.py`` (steady sliding), ``_deprecated.py`` (the
+``cylinder_*`` functions, deprecated aliases of the methods), ``_results.py`` (the SI result
+classes), ``_checks.py`` (the plausible ranges of the SI inputs and the checks of the widths).
+Import from ``linecontact.cylinder``: every name is here.
 """
 
 # the names of the package's modules, the private ones that other modules and the tests
@@ -37,7 +36,7 @@ from ._checks import (
     _warn_widths,
     _which,
 )
-from ._cylinder import SI_COLUMNS, Cylinder
+from ._cylinder import Cylinder, _si_load_curve
 from ._deprecated import (
     cylinder_cyclic_loss,
     cylinder_push,
@@ -57,9 +56,12 @@ from ._results import (
     CylinderContact,
     CylinderCyclicLoss,
     CylinderLennardJonesContact,
+    CylinderLennardJonesLoadCurve,
     CylinderLennardJonesPullOff,
+    CylinderLoadCurve,
     CylinderPullOff,
     CylinderPush,
+    CylinderSliding,
     CylinderTangential,
     CylinderTangentialHistory,
 )
@@ -72,8 +74,11 @@ __all__ = [
     "Cylinder",
     "CylinderContact",
     "CylinderLennardJonesContact",
+    "CylinderLennardJonesLoadCurve",
     "CylinderLennardJonesPullOff",
+    "CylinderLoadCurve",
     "CylinderPullOff",
+    "CylinderSliding",
     "CylinderCyclicLoss",
     "CylinderTangential",
     "CylinderTangentialHistory",

@@ -42,7 +42,9 @@ from ._methods import _Problems
 from ._results import (
     CylinderContact,
     CylinderLennardJonesContact,
+    CylinderLennardJonesLoadCurve,
     CylinderLennardJonesPullOff,
+    CylinderLoadCurve,
     CylinderPullOff,
 )
 
@@ -344,7 +346,9 @@ class Cylinder(_Problems):
     def _wrap(self, r: _normal.NormalContact) -> CylinderContact:
         si = to_si(r, Scales.of(self))
         _warn_widths(si["contact_half_width"], self.radius, stacklevel=4)
-        return CylinderContact(**si, stable=r.stable, state=r.state, nondimensional=r)
+        return CylinderContact(
+            **si, stable=r.stable, state=r.state, nondimensional=r, scales=Scales.of(self)
+        )
 
     @overload
     def contact(
@@ -480,6 +484,7 @@ class Cylinder(_Problems):
             c.stable,
             c.state,
             r,
+            scales=Scales.of(self),
         )
 
     def _for_load_lj(
@@ -516,7 +521,9 @@ class Cylinder(_Problems):
             F.item() if np.ndim(r.F_over_Eh) == 0 else np.broadcast_to(F, np.shape(r.F_over_Eh))
         )
         _warn_widths(si["contact_half_width"], self.radius, stacklevel=4)
-        return CylinderLennardJonesContact(**si, stable=r.stable, state=r.state, nondimensional=r)
+        return CylinderLennardJonesContact(
+            **si, stable=r.stable, state=r.state, nondimensional=r, scales=Scales.of(self)
+        )
 
     @overload
     def pull_off(self, *, law: Literal["dugdale"] = "dugdale") -> CylinderPullOff: ...
@@ -587,7 +594,7 @@ class Cylinder(_Problems):
         )
         return CylinderLennardJonesPullOff(**si, nondimensional=q)
 
-    # the SI form of the groups (the one place the command line's SI columns are formed) ---
+    # the SI form of the groups ---
     def scale(self, name: str) -> float:
         """The SI unit of a group: ``"R"``, ``"h"`` [m], ``"E"`` [Pa], ``"Eh"`` [N/m], ``"EhR"``.
 
@@ -644,27 +651,6 @@ class Cylinder(_Problems):
         a = self.contact(load=normal_load).contact_half_width
         return np.multiply(value, self.modulus * a)
 
-    def columns(
-        self, result: Any, fields: tuple[str, ...], *, length: float | None = None
-    ) -> dict[str, Any]:
-        """The SI columns of the nondimensional ``result`` of one of this cylinder's problems.
-
-        For each of ``fields`` (a field of ``result`` over its group, ``"a_over_R"``,
-        ``"F_over_Eh"``, ...) its SI column (``"a_m"``, ``"F_N_per_m"``, ...: the field times
-        its unit, :data:`SI_COLUMNS`), in that order; with ``length`` [m] then the totals
-        (``"F_total_N"``, ...) of the forces and moments among them, over the fibre: the field
-        times the unit's total over the fibre (``F_over_Eh * (E h L)``).
-        """
-        out: dict[str, Any] = {}
-        totals: dict[str, Any] = {}
-        for f in fields:
-            name, unit, total = SI_COLUMNS[f]
-            out[name] = self.in_si(getattr(result, f), unit)
-            if total is not None and length is not None:  # the field times (unit times L)
-                L = positive("length", length)
-                totals[total] = np.multiply(getattr(result, f), self.scale(unit) * L)
-        return {**out, **totals}
-
     # the problems as methods (the tangential ones, the pushed fibre and the load histories
     # stay functions: _problems.py imports Cylinder, a method calling them closes a circle) -
     def load_curve(
@@ -673,26 +659,30 @@ class Cylinder(_Problems):
         max_half_width: float | None = None,
         num: int = 200,
         num_noncontact: int = 40,
-    ) -> Any:
+    ) -> CylinderLoadCurve:
         """The load curve (:func:`linecontact.load_curve`) up to ``max_half_width`` [m].
 
-        Returns the nondimensional :class:`~linecontact.normal.LoadCurve`; its SI columns are
-        :meth:`columns`.
+        Returns the SI :class:`CylinderLoadCurve` (its ``nondimensional`` the
+        :class:`~linecontact.normal.LoadCurve`, with the pull-off).
         """
         a_max = None if max_half_width is None else self.over(max_half_width, "R")
-        return _normal.load_curve(
+        c = _normal.load_curve(
             self.R_over_h,
             self.sigma0_over_E,
             a_max_over_R=a_max,
             num=num,
             num_noncontact=num_noncontact,
         )
+        return _si_load_curve(self, c)
 
-    def lennard_jones_load_curve(self, *, max_load: float | None = None) -> Any:
+    def lennard_jones_load_curve(
+        self, *, max_load: float | None = None
+    ) -> CylinderLennardJonesLoadCurve:
         """The load curve under the Lennard-Jones law up to the compressive ``max_load`` [N/m].
 
-        :func:`linecontact.laws.lennard_jones.load_curve`, nondimensional; its SI columns are
-        :meth:`columns`.
+        :func:`linecontact.laws.lennard_jones.load_curve` in SI units: a
+        :class:`CylinderLennardJonesLoadCurve` (its ``nondimensional`` the curve in the Dugdale
+        groups, with the pull-off).
         """
         from .. import lennard_jones_groups as _ljg
         from ..laws import lennard_jones as _lj
@@ -709,35 +699,21 @@ class Cylinder(_Problems):
                     "pull-off); at such loads both laws approach Hertz: use law='dugdale'"
                 )
             F_max = self.over(max_load, "Eh")
-        return _lj.load_curve(self.R_over_h, self.sigma0_over_E, F_max_over_Eh=F_max)
+        c = _lj.load_curve(self.R_over_h, self.sigma0_over_E, F_max_over_Eh=F_max)
+        return CylinderLennardJonesLoadCurve(
+            **to_si(c, Scales.of(self)),
+            stable=c.stable,
+            turning_point=c.turning_point,
+            nondimensional=c,
+        )
 
 
-#: The SI column of each group the command line writes: ``field: (column, unit, total)``, the
-#: unit a name of :meth:`Cylinder.scale`, the total's column over a fibre's length (or None).
-SI_COLUMNS: dict[str, tuple[str, str, str | None]] = {
-    "a_over_R": ("a_m", "R", None),
-    "c_over_R": ("c_m", "R", None),
-    "central_gap_over_h": ("central_gap_m", "h", None),
-    "F_over_Eh": ("F_N_per_m", "Eh", "F_total_N"),
-    "error_estimate_over_Eh": ("error_estimate_N_per_m", "Eh", None),
-    "F_pulloff_over_Eh": ("F_pulloff_N_per_m", "Eh", "F_pulloff_total_N"),
-    "a_over_R_at_pulloff": ("a_at_pulloff_m", "R", None),
-    "central_gap_over_h_at_pulloff": ("central_gap_at_pulloff_m", "h", None),
-    "F_zero_width_over_Eh": ("F_zero_width_N_per_m", "Eh", None),
-    # steady sliding (h = h2, the leading edge's range)
-    "c1_over_R": ("c1_m", "R", None),
-    "c2_over_R": ("c2_m", "R", None),
-    "e_over_R": ("e_m", "R", None),
-    "F_over_Eh2": ("F_N_per_m", "Eh", "F_total_N"),
-    "M_over_Eh2R": ("M_N", "EhR", "M_total_N_m"),
-    "T_over_Eh2": ("T_N_per_m", "Eh", "T_total_N"),
-    # the pushed fibre
-    "H_over_R": ("H_m", "R", None),
-    "H_arm_over_R": ("H_arm_m", "R", None),
-    "a_rest_over_R": ("a_rest_m", "R", None),
-    "a_slide_over_R": ("a_slide_m", "R", None),
-    "Q_roll_over_Eh2": ("Q_roll_N_per_m", "Eh", "Q_roll_total_N"),
-    "Q_slide_over_Eh2": ("Q_slide_N_per_m", "Eh", "Q_slide_total_N"),
-    "Q_onset_over_Eh2": ("Q_onset_N_per_m", "Eh", None),
-    "H_critical_over_R": ("H_critical_m", "R", None),
-}
+def _si_load_curve(cylinder: Cylinder, c: Any) -> CylinderLoadCurve:
+    """The SI form of the nondimensional load curve ``c`` of ``cylinder`` (its groups)."""
+    return CylinderLoadCurve(
+        branch=c.branch,
+        **to_si(c, Scales.of(cylinder)),
+        stable=c.stable,
+        turning_point=c.turning_point,
+        nondimensional=c,
+    )

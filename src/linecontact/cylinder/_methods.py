@@ -22,6 +22,7 @@ from ._problems import (
 from ._results import (
     CylinderCyclicLoss,
     CylinderPush,
+    CylinderSliding,
     CylinderTangential,
     CylinderTangentialHistory,
 )
@@ -197,14 +198,14 @@ class _Problems:
         friction_stress: float | None = None,
         method: Literal["closed-form", "collocation"] = "collocation",
         on_failure: FailurePolicy = RAISE,
-    ) -> Any:
+    ) -> CylinderSliding:
         """Steady sliding in SI units (Eqs 18-22; :func:`~linecontact.sliding.sliding_contact`).
 
         The cylinder's range is the leading edge's ``h2``; the trailing edge's ``h1`` [m] is
         ``receding_range`` (or give ``h1_over_h2``); ``contact_half_width`` [m] or ``load``
-        [N/m]; ``friction_stress`` ``tau0`` [Pa] adds the friction force. Returns the
-        nondimensional :class:`~linecontact.sliding.SlidingContact` (in ``h = h2``); its SI
-        columns are :meth:`columns`.
+        [N/m]; ``friction_stress`` ``tau0`` [Pa] adds the friction force. Returns the SI
+        :class:`CylinderSliding` (its ``nondimensional`` the
+        :class:`~linecontact.sliding.SlidingContact`, in ``h = h2``).
         """
         return _sliding(
             self,

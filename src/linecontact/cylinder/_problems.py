@@ -441,6 +441,7 @@ def _pushed_fibre(
         state=p.state,
         length=length,
         nondimensional=p,
+        scales=Scales.of(cylinder),
     )
 
 

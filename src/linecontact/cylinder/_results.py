@@ -9,17 +9,48 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, ClassVar
 
+import numpy as np
 from numpy.typing import NDArray
 
 from .. import normal as _normal
+from .._validation import positive
 from ..results import Result
+from ..units import Scales
 
 if TYPE_CHECKING:  # imported where used: the Lennard-Jones solver needs scipy
-    from ..lennard_jones_groups import LennardJonesContact
+    from ..lennard_jones_groups import LennardJonesContact, LennardJonesLoadCurve
+    from ..sliding import SlidingContact
+
+
+class _PerLength:
+    """The totals over a fibre of the per-unit-length SI fields listed in ``per_length``."""
+
+    #: The SI fields per unit length (N/m, N m/m) that :meth:`total` multiplies by a length.
+    per_length: ClassVar[tuple[str, ...]] = ()
+    nondimensional: Any  # a field of the result (the mixin declares no field)
+
+    def total(self, length: float) -> dict[str, Any]:
+        """Each field of ``per_length`` over a fibre of ``length`` [m]: the field times it.
+
+        ``{"load": F * L, ...}`` ([N/m] times [m]: [N]; a moment [N m/m] gives [N m]). A
+        result that keeps its ``scales`` forms it from its nondimensional group, as the
+        group times the scale's total over the fibre (``F_over_Eh * (E h L)``).
+        """
+        L = positive("length", length)
+        scales = getattr(self, "scales", None)
+        if scales is None:
+            return {k: np.multiply(getattr(self, k), L) for k in self.per_length}
+        nd = self.nondimensional
+        groups = {name: (f, scale) for f, (name, scale, _) in type(nd).si.items()}
+        out = {}
+        for k in self.per_length:
+            f, scale = groups[k]
+            out[k] = np.multiply(getattr(nd, f), scales[scale] * L)
+        return out
 
 
 @dataclass(frozen=True)
-class CylinderContact(Result):
+class CylinderContact(_PerLength, Result):
     """A normal contact state in SI units, with its nondimensional result.
 
     Attributes
@@ -37,7 +68,11 @@ class CylinderContact(Result):
         ``on_failure="report"``; its values are NaN).
     nondimensional : NormalContact
         The underlying result with diagnostics.
+    scales : Scales or None
+        The cylinder's scales, for :meth:`total` (None: the SI value times the length).
     """
+
+    per_length: ClassVar[tuple[str, ...]] = ("load",)
 
     contact_half_width: NDArray | float
     adhesive_zone_half_width: NDArray | float
@@ -45,10 +80,11 @@ class CylinderContact(Result):
     stable: NDArray | bool
     state: NDArray | str
     nondimensional: _normal.NormalContact = field(repr=False)
+    scales: Scales | None = field(default=None, repr=False)
 
 
 @dataclass(frozen=True)
-class CylinderPullOff(Result):
+class CylinderPullOff(_PerLength, Result):
     """Pull-off in SI units.
 
     Attributes
@@ -64,6 +100,8 @@ class CylinderPullOff(Result):
     nondimensional : PullOff
     """
 
+    per_length: ClassVar[tuple[str, ...]] = ("pull_off_force",)
+
     pull_off_force: NDArray | float
     contact_half_width_at_pull_off: NDArray | float
     mechanism: NDArray | str
@@ -72,7 +110,7 @@ class CylinderPullOff(Result):
 
 
 @dataclass(frozen=True)
-class CylinderLennardJonesContact(Result):
+class CylinderLennardJonesContact(_PerLength, Result):
     """A contact state under the Lennard-Jones law in SI units, with its nondimensional result.
 
     Attributes
@@ -92,7 +130,11 @@ class CylinderLennardJonesContact(Result):
         with ``on_failure="report"``; its values are NaN).
     nondimensional : LennardJonesContact
         The underlying result (Dugdale groups) with its diagnostics.
+    scales : Scales or None
+        The cylinder's scales, for :meth:`total` (None: the SI value times the length).
     """
+
+    per_length: ClassVar[tuple[str, ...]] = ("load",)
 
     contact_half_width: NDArray | float
     central_gap: NDArray | float
@@ -101,10 +143,11 @@ class CylinderLennardJonesContact(Result):
     stable: NDArray | bool
     state: NDArray | str
     nondimensional: LennardJonesContact = field(repr=False)
+    scales: Scales | None = field(default=None, repr=False)
 
 
 @dataclass(frozen=True)
-class CylinderLennardJonesPullOff(Result):
+class CylinderLennardJonesPullOff(_PerLength, Result):
     """Pull-off under the Lennard-Jones law in SI units.
 
     Attributes
@@ -122,12 +165,128 @@ class CylinderLennardJonesPullOff(Result):
     nondimensional : LennardJonesPullOff
     """
 
+    per_length: ClassVar[tuple[str, ...]] = ("pull_off_force",)
+
     pull_off_force: float
     error_estimate: float
     contact_half_width_at_pull_off: float
     central_gap_at_pull_off: float
     jump_in_force: float
     nondimensional: Any = field(repr=False)
+
+
+@dataclass(frozen=True)
+class CylinderLoadCurve(_PerLength, Result):
+    """The load curve of a :class:`~linecontact.cylinder.Cylinder` in SI units.
+
+    Attributes
+    ----------
+    branch : ndarray of str
+        ``"non-contact"`` or ``"contact"``.
+    central_gap : ndarray
+        ``g0`` [m] (0 in contact).
+    contact_half_width, adhesive_zone_half_width : ndarray
+        ``a`` and ``c`` [m] (``a = 0`` off contact).
+    load : ndarray
+        ``F`` [N/m], compressive positive.
+    stable : ndarray of bool
+        Stable under load control.
+    turning_point : ndarray of bool
+        Marks the load minimum.
+    nondimensional : LoadCurve
+        The underlying result (with its ``pulloff``).
+    """
+
+    per_length: ClassVar[tuple[str, ...]] = ("load",)
+
+    branch: NDArray
+    central_gap: NDArray
+    contact_half_width: NDArray
+    adhesive_zone_half_width: NDArray
+    load: NDArray
+    stable: NDArray
+    turning_point: NDArray
+    nondimensional: _normal.LoadCurve = field(repr=False)
+
+
+@dataclass(frozen=True)
+class CylinderLennardJonesLoadCurve(_PerLength, Result):
+    """The load curve under the Lennard-Jones law in SI units.
+
+    Attributes
+    ----------
+    central_gap : ndarray
+        [m], decreasing along the curve.
+    contact_half_width : ndarray
+        Half-width of the repulsive region [m]; 0 where there is none.
+    load : ndarray
+        ``F`` [N/m], compressive positive.
+    error_estimate : ndarray
+        Estimated discretisation error of the load [N/m].
+    stable : ndarray of bool
+    turning_point : ndarray of bool
+    nondimensional : LennardJonesLoadCurve
+        The underlying result (Dugdale groups, with its ``pulloff``).
+    """
+
+    per_length: ClassVar[tuple[str, ...]] = ("load",)
+
+    central_gap: NDArray
+    contact_half_width: NDArray
+    load: NDArray
+    error_estimate: NDArray
+    stable: NDArray
+    turning_point: NDArray
+    nondimensional: LennardJonesLoadCurve = field(repr=False)
+
+
+@dataclass(frozen=True)
+class CylinderSliding(_PerLength, Result):
+    """Steady sliding of a :class:`~linecontact.cylinder.Cylinder` in SI units (Eqs 18-22).
+
+    Attributes
+    ----------
+    contact_half_width : ndarray or float
+        ``a`` [m].
+    trailing_zone_end, leading_zone_end : ndarray or float
+        ``c1`` and ``c2`` [m]: the ends of the trailing (``-c1 < x < -a``) and leading
+        (``a < x < c2``) adhesive zones from the contact centre.
+    eccentricity : ndarray or float
+        ``e`` [m]: the cylinder's axis relative to the contact centre.
+    load : ndarray or float
+        ``F`` [N/m], compressive positive.
+    moment, moment_about_axis : ndarray or float
+        ``M`` [N m/m] about the contact centre (clockwise positive), and about the axis.
+    friction_force : ndarray or float
+        ``T = 2 a tau0`` [N/m] (nan without a friction stress).
+    receding_range : float
+        ``h1`` [m], the trailing edge's range.
+    converged, stable : ndarray or bool
+    state : ndarray of str or str
+        ``"contact"``, or ``"no-equilibrium"`` (reported with ``on_failure="report"``).
+    nondimensional : SlidingContact
+        The underlying result (in ``h = h2``) with its diagnostics.
+    scales : Scales
+        The cylinder's scales (``h = h2``), for :meth:`total`.
+    """
+
+    inputs: ClassVar[tuple[str, ...]] = ("receding_range",)
+    per_length: ClassVar[tuple[str, ...]] = ("load", "moment", "friction_force")
+
+    contact_half_width: NDArray | float
+    trailing_zone_end: NDArray | float
+    leading_zone_end: NDArray | float
+    eccentricity: NDArray | float
+    load: NDArray | float
+    moment: NDArray | float
+    moment_about_axis: NDArray | float
+    friction_force: NDArray | float
+    receding_range: float
+    converged: NDArray | bool
+    stable: NDArray | bool
+    state: NDArray | str
+    nondimensional: SlidingContact = field(repr=False)
+    scales: Scales | None = field(default=None, repr=False)
 
 
 @dataclass(frozen=True)
@@ -177,7 +336,7 @@ class CylinderTangential(Result):
 
 
 @dataclass(frozen=True)
-class CylinderPush(Result):
+class CylinderPush(_PerLength, Result):
     """A pushed :class:`~linecontact.cylinder.Cylinder` (``docs/push.md``), in SI units.
 
     Attributes
@@ -203,9 +362,12 @@ class CylinderPush(Result):
         The fibre's length [m] for the totals ``*_total`` [N] (None: per unit length).
     nondimensional : Push
         The underlying result with its diagnostics.
+    scales : Scales or None
+        The cylinder's scales, for :meth:`total` (None: the SI value times the length).
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("length",)
+    per_length: ClassVar[tuple[str, ...]] = ("rolling_resistance", "sliding_resistance")
 
     height: NDArray | float
     moment_arm: NDArray | float
@@ -220,6 +382,7 @@ class CylinderPush(Result):
     state: NDArray | str
     length: float | None
     nondimensional: object = field(repr=False)
+    scales: Scales | None = field(default=None, repr=False)
 
     @property
     def rolling_resistance_total(self) -> NDArray | float:

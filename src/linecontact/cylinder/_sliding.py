@@ -9,6 +9,8 @@ from numpy.typing import ArrayLike
 
 from .. import domain as _domain
 from .._validation import RAISE, FailurePolicy, check_array, failure_policy, positive, scalar
+from ..units import Scales, to_si
+from ._results import CylinderSliding
 
 
 def _sliding(
@@ -21,7 +23,7 @@ def _sliding(
     friction_stress: float | None = None,
     method: Literal["closed-form", "collocation"] = "collocation",
     on_failure: FailurePolicy = RAISE,
-) -> Any:
+) -> CylinderSliding:
     """Steady sliding of ``cylinder`` (:func:`linecontact.sliding.sliding_contact`) in SI units.
 
     The cylinder's adhesion is the leading (advancing) edge's: ``sigma0`` and the range
@@ -42,10 +44,11 @@ def _sliding(
 
     Returns
     -------
-    SlidingContact
-        The nondimensional result (in ``h = h2``); its SI columns are
-        :meth:`Cylinder.columns`, the trailing range used is
-        ``cylinder.in_si(result.h1_over_h2, "h")``.
+    CylinderSliding
+        The SI result (:func:`linecontact.units.to_si` of the nondimensional
+        :class:`~linecontact.sliding.SlidingContact`, in ``h = h2``, its ``nondimensional``);
+        ``receding_range`` is the trailing range used, ``total(length)`` the totals over a
+        fibre.
     """
     from ..sliding import sliding_contact, sliding_contact_for_load
 
@@ -67,13 +70,16 @@ def _sliding(
     if contact_half_width is not None:
         a = positive("contact_half_width", contact_half_width)
         _domain.check_si("contact_half_width", a, cylinder.radius, "sliding_a_over_R", "m")
-        return sliding_contact(
-            cylinder.over(a, "R"), *groups, tau0_over_E=tau, method=method, on_failure=policy
+        return _si(
+            cylinder,
+            sliding_contact(
+                cylinder.over(a, "R"), *groups, tau0_over_E=tau, method=method, on_failure=policy
+            ),
         )
     F = check_array("load", load, low=-np.inf, low_inclusive=True)  # type: ignore[arg-type]
     _domain.check_si("load", F, cylinder.scale("Eh"), "F_over_Eh2", "N/m")
     try:
-        return sliding_contact_for_load(
+        res = sliding_contact_for_load(
             cylinder.over(F, "Eh"), *groups, tau0_over_E=tau, method=method, on_failure=policy
         )
     except _domain.TooWideError as e:
@@ -82,6 +88,22 @@ def _sliding(
             f"load={Fi!r} N/m needs a contact of half-width {e.a_over_R * cylinder.radius:.6g} "
             f"m, {e.a_over_R:.6g} radii: {e.limit}"
         ) from None
+    return _si(cylinder, res)
+
+
+def _si(cylinder: Any, res: Any) -> CylinderSliding:
+    """The SI form of the nondimensional sliding result ``res`` (in ``h = h2``)."""
+    scales = Scales.of(cylinder)
+    h1 = float(np.reshape(res.h1_over_h2, -1)[0]) * scales["h"]  # one h1 for all the points
+    return CylinderSliding(
+        **to_si(res, scales),
+        receding_range=h1,
+        converged=res.converged,
+        stable=res.stable,
+        state=res.state,
+        nondimensional=res,
+        scales=scales,
+    )
 
 
 def sliding_pull_off_force(cylinder: Any, h1_over_h2: float) -> float:

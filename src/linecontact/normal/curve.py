@@ -42,6 +42,12 @@ class LoadCurve(Result):
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E")
+    si: ClassVar[dict[str, tuple[str, str, str]]] = {
+        "central_gap_over_h": ("central_gap", "h", "m"),
+        "a_over_R": ("contact_half_width", "R", "m"),
+        "c_over_R": ("adhesive_zone_half_width", "R", "m"),
+        "F_over_Eh": ("load", "Eh", "N/m"),
+    }
 
     branch: NDArray
     central_gap_over_h: NDArray

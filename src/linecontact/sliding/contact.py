@@ -92,6 +92,17 @@ class SlidingContact(Result):
         "method",
     )
 
+    si: ClassVar[dict[str, tuple[str, str, str]]] = {
+        "a_over_R": ("contact_half_width", "R", "m"),
+        "c1_over_R": ("trailing_zone_end", "R", "m"),
+        "c2_over_R": ("leading_zone_end", "R", "m"),
+        "e_over_R": ("eccentricity", "R", "m"),
+        "F_over_Eh2": ("load", "Eh", "N/m"),
+        "M_over_Eh2R": ("moment", "EhR", "N"),
+        "M_axis_over_Eh2R": ("moment_about_axis", "EhR", "N"),
+        "T_over_Eh2": ("friction_force", "Eh", "N/m"),
+    }
+
     a_over_R: NDArray | float
     c1_over_R: NDArray | float
     c2_over_R: NDArray | float
