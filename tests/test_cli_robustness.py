@@ -43,7 +43,8 @@ def strict_json(text):
         ),
         (
             ["curve", *G, "-o", "/nonexistent-dir/curve.csv"],
-            r"cannot write -o/--output '/nonexistent-dir/curve.csv': No such file or directory",
+            r"cannot write -o/--output '/nonexistent-dir/curve.csv': the directory "
+            r"'/nonexistent-dir' does not exist",
         ),
         (
             ["normal", *G, "--a-over-R-range", "0.001", "inf", "5"],

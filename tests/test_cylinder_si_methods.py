@@ -160,3 +160,18 @@ def test_each_alias_warns_and_gives_the_methods_result(alias, method, cyl, args,
     for name, value in vars(want).items():
         if isinstance(value, np.ndarray | float | int):
             np.testing.assert_array_equal(getattr(got, name), value, err_msg=name)
+
+
+@pytest.mark.parametrize("value", [-1.0, 0.0, 1.0])
+def test_load_curve_names_max_half_width_in_metres(value):
+    # the SI argument and its SI range, not the group a_max_over_R alone (issue 20)
+    with pytest.raises(ValueError, match=r"^max_half_width must be in \[.*\] m"):
+        CYL.load_curve(max_half_width=value)
+
+
+def test_scales_of_wants_a_cylinder():
+    from linecontact.units import Scales
+
+    with pytest.raises(TypeError, match="Scales.of takes a Cylinder"):
+        Scales.of("x")
+    assert Scales.of(CYL)["R"] == CYL.radius

@@ -250,3 +250,20 @@ def test_masked_input_is_refused(call, name):
         "compress them first",
     ):
         call()
+
+
+@pytest.mark.parametrize(
+    "argv",
+    [
+        ["pulloff", "--R-over-h", "100", "--sigma0-over-E", "0.01"],
+        ["map", "--json"],  # a minute of work, refused before it starts
+    ],
+)
+def test_output_in_a_missing_directory_is_refused_before_the_work(capsys, tmp_path, argv):
+    from linecontact.cli import main
+
+    out = str(tmp_path / "missing" / "x.json")
+    assert main([*argv, "-o", out]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "the directory" in err and "does not exist" in err
+    assert "computing" not in err

@@ -110,7 +110,7 @@ def test_the_steady_contact_is_the_sliding_inverse_at_the_load():
     p = _inputs(F=[0.05, 1.0, 0.05])
     c = P._steady_sliding_contact(p)
     ref = lc.sliding_contact_for_load(p.F, RHO, R, S)
-    np.testing.assert_array_equal(c.a, ref.a_over_R)
+    _close(c.a, ref.a_over_R)
     np.testing.assert_allclose(c.F, p.F, rtol=1e-12)
     np.testing.assert_array_equal(c.Q, 2 * c.a * RHO * TAU + S * (R - 1))
     assert c.converged.all()
@@ -148,7 +148,7 @@ def test_the_contact_at_rest_carries_the_load_and_the_onset_push():
     np.testing.assert_array_equal(c.Q, 2 * c.a * RHO * TAU)
     assert c.converged.all() and np.isnan(c.F).all()
     h = P._contact_at_rest(_inputs(F=[0.05, 1.0], H=[0.5, 0.5]))  # horizontal: at F
-    np.testing.assert_array_equal(h.a, lc.contact_for_load([0.05, 1.0], RHO, S).a_over_R)
+    _close(h.a, lc.contact_for_load([0.05, 1.0], RHO, S).a_over_R)
 
 
 def test_the_rolling_contact_is_the_steady_one_without_a_tip():
@@ -158,7 +158,7 @@ def test_the_rolling_contact_is_the_steady_one_without_a_tip():
     t = _inputs(H=[0.5], mu=0.1)
     Q = np.array([0.02])
     ref = lc.sliding_contact_for_load(t.F + t.k * Q, RHO, R, S).a_over_R
-    np.testing.assert_array_equal(P._rolling_contact(t, np.array([0.1]), Q), ref)
+    _close(P._rolling_contact(t, np.array([0.1]), Q), ref)
 
 
 def test_lift_off_where_the_tip_pulls_the_load_to_the_pull_off_at_rest():
@@ -191,7 +191,7 @@ def test_the_creep_is_steady_rollings_with_the_sign_of_the_shear():
     a = np.full(3, 0.2)
     creep = P._creep(p, S_roll, a, np.array([True, True, True]))
     ref = lc.steady_rolling(TAU, T_over_Ea=0.01 / (RHO * 0.2)).creep_over_V
-    np.testing.assert_array_equal(creep, [-ref, 0.0, ref])
+    _close(creep, [-ref, 0.0, ref])
     assert np.isnan(P._creep(p, S_roll, a, np.zeros(3, bool))).all()
 
 
@@ -241,6 +241,12 @@ def test_the_pulloff_searches_run_once_per_call(monkeypatch):
     assert calls == [1]
 
 
+def _close(got, want):
+    """To rounding, not bit for bit: the kernel and the public function may take the scalar
+    and the array paths (README, "Same answers on every machine")."""
+    np.testing.assert_allclose(got, np.reshape(want, -1), rtol=1e-14, atol=0)
+
+
 @pytest.mark.parametrize("scalar", [False, True])
 def test_the_kernels_give_the_public_answers(scalar):
     F = 0.05 if scalar else [-0.005, 0.05, 1.0]
@@ -249,9 +255,9 @@ def test_the_kernels_give_the_public_answers(scalar):
     a, F, conv = P._slide_at(p, slice(None), load)
     args = (float(load[0]), RHO, R, S) if scalar else (load, RHO, R, S)
     ref = lc.sliding_contact_for_load(*args)
-    np.testing.assert_array_equal(a, np.reshape(ref.a_over_R, -1))
-    np.testing.assert_array_equal(F, np.reshape(ref.F_over_Eh2, -1))
+    _close(a, ref.a_over_R)
+    _close(F, ref.F_over_Eh2)
     assert conv.all()
     a, conv = P._rest_at(p, slice(None), load)
     ref = lc.contact_for_load(args[0], RHO, S, on_failure="report")
-    np.testing.assert_array_equal(a, np.reshape(ref.a_over_R, -1))
+    _close(a, ref.a_over_R)

@@ -66,6 +66,11 @@ class Scales:
 
         Its ``radius``, ``modulus`` and ``adhesion_range`` (or the range ``h`` given).
         """
+        if not all(hasattr(body, k) for k in ("radius", "modulus", "adhesion_range")):
+            raise TypeError(
+                f"Scales.of takes a Cylinder (radius, modulus, adhesion_range), got "
+                f"{type(body).__name__}"
+            )
         return cls(body.radius, body.modulus, body.adhesion_range if h is None else h, a)
 
     def __getitem__(self, name: str) -> Any:

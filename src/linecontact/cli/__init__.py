@@ -203,6 +203,16 @@ def _stdout_failed(prefix: str, exc: OSError) -> int:
     return 2
 
 
+def _check_output_directory(args: argparse.Namespace) -> None:
+    """Refuse ``-o FILE`` in a directory that does not exist before any work is done."""
+    out = getattr(args, "output", None)
+    if isinstance(out, str) and out:
+        parent = os.path.dirname(os.path.abspath(out))
+        if not os.path.isdir(parent):
+            what = "is not a directory" if os.path.exists(parent) else "does not exist"
+            raise ValueError(f"cannot write -o/--output {out!r}: the directory {parent!r} {what}")
+
+
 def _help_not_written(err: OSError) -> int:
     """``--help``/``--version`` output that could not be written: as :func:`main` says."""
     if isinstance(err, BrokenPipeError):
@@ -272,6 +282,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         with warnings.catch_warnings():
             warnings.simplefilter("always")
             warnings.showwarning = once
+            _check_output_directory(args)  # before the work, not after it
             status = int(args.func(args))
         _flush_stdout()  # a write error surfaces here, not in the interpreter's last flush
         return status

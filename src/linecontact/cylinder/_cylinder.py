@@ -652,7 +652,7 @@ class Cylinder(_Problems):
         return np.multiply(value, self.modulus * a)
 
     # the problems as methods (the tangential ones, the pushed fibre and the load histories
-    # stay functions: _problems.py imports Cylinder, a method calling them closes a circle) -
+    # are the methods of _methods._Problems, the base of this class) -------------------------
     def load_curve(
         self,
         *,
@@ -665,7 +665,10 @@ class Cylinder(_Problems):
         Returns the SI :class:`CylinderLoadCurve` (its ``nondimensional`` the
         :class:`~linecontact.normal.LoadCurve`, with the pull-off).
         """
-        a_max = None if max_half_width is None else self.over(max_half_width, "R")
+        a_max = None
+        if max_half_width is not None:
+            _domain.check_si("max_half_width", max_half_width, self.radius, "a_max_over_R", "m")
+            a_max = self.over(max_half_width, "R")
         c = _normal.load_curve(
             self.R_over_h,
             self.sigma0_over_E,
