@@ -36,7 +36,11 @@ DOMAIN: dict[str, tuple[float, bool, float, bool]] = {
     "F_over_Eh2": (-1e12, True, 1e12, True),
     "central_gap_over_h": (0.0, True, 1.0, True),
     "central_gap_over_z0": (0.01, True, 1e6, True),  # the Lennard-Jones law on a rigid cylinder
-    "lj_mu": (0.0, True, 3.0, True),  # w sqrt(R/z0)/(E z0), the group of the Lennard-Jones law
+    # w sqrt(R/z0)/(E z0), the group of the Lennard-Jones law: its curves, states and contacts
+    # are solved self-consistently up to lennard_jones._limit.MU_SELF_CONSISTENT; its pull-off
+    # at every mu (beyond, the corrected JKR limit)
+    "lj_mu": (0.0, True, 400.0, True),
+    "lj_mu_pull_off": (0.0, True, np.inf, False),
     # tangential problems
     "tau0_over_E": (1e-12, True, 1.0, True),
     "friction_tau0_over_E": (0.0, True, 1.0, True),  # the optional shear strength of sliding

@@ -675,7 +675,8 @@ def groups(args: argparse.Namespace) -> tuple[float, float, Cylinder | None]:
         return args.R_over_h, args.sigma0_over_E, None
     cyl = cylinder(args)
     if getattr(args, "law", None) == "lennard-jones":
-        cyl._check_lennard_jones()  # its domain said for this cylinder, in SI units
+        # its domain said for this cylinder, in SI units (the pull-off: every mu)
+        cyl._check_lennard_jones(pull_off=getattr(args, "command", None) == "pulloff")
     return cyl.R_over_h, cyl.sigma0_over_E, cyl
 
 

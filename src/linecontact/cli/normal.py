@@ -239,6 +239,7 @@ def _cmd_pulloff_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinde
         "central_gap_over_h_at_pulloff",
         "F_jump_in_over_Eh",
         "mu",
+        "method",
     ]
     if cyl is not None:
         names = {"pull_off_force": "F_pulloff_N_per_m"}

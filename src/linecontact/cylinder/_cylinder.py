@@ -299,7 +299,7 @@ class Cylinder(_Problems):
         """The single group of the Maugis--Dugdale line contact."""
         return float(_cf.kappa(self.R_over_h, self.sigma0_over_E))
 
-    def _check_lennard_jones(self) -> None:
+    def _check_lennard_jones(self, pull_off: bool = False) -> None:
         """Refuse, in SI terms, a cylinder outside the domain of the Lennard-Jones solver.
 
         The solver's group is the Maugis (Tabor) parameter ``mu = w R^(1/2) / (E z0^(3/2))``
@@ -316,7 +316,7 @@ class Cylinder(_Problems):
                 "(work_of_adhesion and equilibrium_spacing, or cohesive_stress > 0)"
             )
         mu = w * math.sqrt(R / z0) / (E * z0)
-        if mu <= hi:
+        if mu <= hi or pull_off:  # the pull-off has a limit form beyond
             return
         from ..lennard_jones import maugis_parameter_of_mu
 
@@ -582,7 +582,7 @@ class Cylinder(_Problems):
         """:meth:`lennard_jones_pull_off` (its warnings point at the caller of the caller)."""
         from ..laws import lennard_jones as _lj
 
-        self._check_lennard_jones()
+        self._check_lennard_jones(pull_off=True)
         q = _lj.pull_off(self.R_over_h, self.sigma0_over_E)
         si = {k: float(v) for k, v in to_si(q, Scales.of(self)).items()}
         _warn_widths(
@@ -592,7 +592,7 @@ class Cylinder(_Problems):
             "the repulsive region vanishes before the pull-off",
             stacklevel=4,
         )
-        return CylinderLennardJonesPullOff(**si, nondimensional=q)
+        return CylinderLennardJonesPullOff(**si, method=str(q.method), nondimensional=q)
 
     # the SI form of the groups ---
     def scale(self, name: str) -> float:

@@ -162,6 +162,9 @@ class CylinderLennardJonesPullOff(_PerLength, Result):
         [m].
     jump_in_force : float
         The jump-in load where the curve is S-shaped [N/m], else ``nan``.
+    method : str
+        ``"self-consistent"`` or ``"limit"`` (the corrected JKR limit beyond the
+        self-consistent solver's domain; its error estimate the whole correction).
     nondimensional : LennardJonesPullOff
     """
 
@@ -172,6 +175,7 @@ class CylinderLennardJonesPullOff(_PerLength, Result):
     contact_half_width_at_pull_off: float
     central_gap_at_pull_off: float
     jump_in_force: float
+    method: str
     nondimensional: Any = field(repr=False)
 
 

@@ -8,6 +8,7 @@ The conversion of the Dugdale groups ``(R/h, sigma0/E)`` to the law's own units
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 from typing import ClassVar
 
@@ -42,8 +43,10 @@ class LennardJonesPullOff(Result):
     law : str
         ``"lennard-jones"``.
     n : int
-        Nodes of the finest mesh.
+        Nodes of the finest mesh (0 for the limit form).
     converged : bool or ndarray
+    method : str or ndarray
+        ``"self-consistent"`` or ``"limit"`` (:class:`LJPullOff`).
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E")
@@ -67,14 +70,18 @@ class LennardJonesPullOff(Result):
     law: str
     n: NDArray | int
     converged: NDArray | bool
+    method: NDArray | str = "self-consistent"
 
 
-def lj_groups(R_over_h, sigma0_over_E) -> tuple[NDArray, NDArray, NDArray]:
+def lj_groups(
+    R_over_h, sigma0_over_E, *, pull_off: bool = False
+) -> tuple[NDArray, NDArray, NDArray]:
     """``(mu, sqrt(R/z0), load scale w sqrt(R/z0)/(E h))`` at validated Dugdale groups.
 
     Refuses ``sigma0_over_E = 0`` (no work of adhesion) and ``mu`` beyond the domain
-    ``DOMAIN["lj_mu"]``, naming the point. The one conversion of the Dugdale groups to the
-    law's own units (:mod:`linecontact.lennard_jones_groups` re-exports it).
+    ``DOMAIN["lj_mu"]`` of the self-consistent solver, naming the point; with ``pull_off``
+    every ``mu`` (the pull-off has a limit form beyond). The one conversion of the Dugdale
+    groups to the law's own units (:mod:`linecontact.lennard_jones_groups` re-exports it).
     """
     rho = np.asarray(R_over_h, float)
     s = np.asarray(sigma0_over_E, float)
@@ -84,7 +91,7 @@ def lj_groups(R_over_h, sigma0_over_E) -> tuple[NDArray, NDArray, NDArray]:
             f"adhesion w = sigma0 h), got {float(s[s <= 0].flat[0])!r}"
         )
     mu, R_over_z0 = mu_of_dugdale(rho, s)
-    hi = _DOMAIN_MU_HIGH()
+    hi = math.inf if pull_off else _DOMAIN_MU_HIGH()
     if np.any(mu > hi):
         _, at = first_point(mu > hi, rho=rho, s=s, mu=mu)
         raise ValueError(
@@ -99,7 +106,7 @@ def lj_groups(R_over_h, sigma0_over_E) -> tuple[NDArray, NDArray, NDArray]:
 
 def pull_off_of(po: LJPullOff, R_over_h: float, sigma0_over_E: float) -> LennardJonesPullOff:
     """The native pull-off ``po`` in the Dugdale groups (scalars): the one conversion."""
-    mu, root, scale = (float(v) for v in lj_groups(R_over_h, sigma0_over_E))
+    mu, root, scale = (float(v) for v in lj_groups(R_over_h, sigma0_over_E, pull_off=True))
     return LennardJonesPullOff(
         F_pulloff_over_Eh=po.F_pulloff * scale,
         a_over_R_at_pulloff=po.half_width_at_pulloff / root,
@@ -113,6 +120,7 @@ def pull_off_of(po: LJPullOff, R_over_h: float, sigma0_over_E: float) -> Lennard
         law="lennard-jones",
         n=po.n,
         converged=po.converged,
+        method=po.method,
     )
 
 
@@ -128,7 +136,7 @@ def pull_off_in_dugdale_groups(R_over_h, sigma0_over_E) -> LennardJonesPullOff:
     s = np.asarray(sigma0_over_E, float)
     scalar = rho.ndim == 0 and s.ndim == 0
     rho, s = np.broadcast_arrays(rho, s)
-    mu = lj_groups(rho, s)[0]
+    mu = lj_groups(rho, s, pull_off=True)[0]
     fields = {
         "F_pulloff_over_Eh": float,
         "a_over_R_at_pulloff": float,
@@ -136,6 +144,7 @@ def pull_off_in_dugdale_groups(R_over_h, sigma0_over_E) -> LennardJonesPullOff:
         "F_jump_in_over_Eh": float,
         "error_estimate_over_Eh": float,
         "n": int,
+        "method": object,
     }
     vals: dict[str, NDArray] = {k: np.empty(rho.shape, dt) for k, dt in fields.items()}
     for i in np.ndindex(rho.shape):

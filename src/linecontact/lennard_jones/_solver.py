@@ -16,46 +16,63 @@ import numpy as np
 from numpy.typing import NDArray
 
 _FAR = 2000.0  # end of the mesh (the attraction there is ~1e-19 of its peak)
-_RATIO = 1.2  # growth of the coarse elements beyond the uniform band
+_RATIO = 1.3  # growth of the coarse elements beyond the uniform band
 _M = 320  # fine elements per 8 edge lengths in the band (a multiple of 4)
 _BAND = 8.0  # half-width of the uniform band about the edge, in edge lengths
 _EDGE_GAP = 1.5  # the gap over z0 that marks the edge the band follows
 _HMAX = 0.1  # largest coarse element inside the contact at m = _M (scales with 1/m)
 _START = 6.0  # central gap where a curve starts (the load ~2% of the rigid pull-off)
+_SMALL_BAND = 4.0  # the mesh of small edges: uniform on [0, 4 edge lengths]
+_SCALED_FROM = 2.0  # edges beyond this many edge lengths: scaled meshes (_Grid.scaled)
+_E_RATIO = 2.0  # one scaled mesh per this factor of the edge
+_E_BAND = 2.0  # the band a scaled mesh holds about the edge, in edge lengths
+_HMAX_FROM = 4.0  # coarse elements inside a contact wider than this grow with it
 _TOL = 1e-11  # Newton: largest residual of the gap equation relative to the gap
-_CHORD = 0.25  # a chord step is kept while the residual falls at least by this factor
+_CHORD = 0.6  # a chord step is kept while the residual falls at least by this factor
+_MAXIT = 80  # Newton iterations at most
 
 
 # ---------------------------------------------------------------------------------------
 # the discrete operators
 
 
-def _log_antiderivatives(t: NDArray, c: NDArray) -> tuple[NDArray, NDArray]:
-    """``int ln|t - c| dt`` and ``int t ln|t - c| dt`` at ``t`` (0 log 0 = 0)."""
-    s = t - c
-    with np.errstate(divide="ignore", invalid="ignore"):
-        ls = np.where(s == 0, 0.0, np.log(np.abs(s)))
-    a0 = s * ls - s
-    a1 = 0.5 * s * s * ls - 0.25 * s * s + c * (s * ls - s)
-    return a0, a1
+def _log_terms(s: NDArray) -> tuple[NDArray, NDArray]:
+    """``s ln|s|`` (0 at ``s = 0``) and ``s``: the pieces of the antiderivatives below."""
+    with np.errstate(divide="ignore"):
+        ls = np.log(np.abs(s))
+    ls[s == 0] = 0.0
+    return s * ls, s
 
 
 def _kernel(nodes: NDArray) -> NDArray:
     """``K[i, j] = int phi_j(eta) ln(|xi_i^2 - eta^2| / eta^2) d eta`` on the mesh.
 
     ``phi_j`` the hat functions of ``nodes``; the kernel is ``ln|xi - eta| + ln|xi + eta| -
-    2 ln|eta|``, each term integrated exactly against the linear pieces.
+    2 ln|eta|``, each term integrated exactly against the linear pieces: with ``s = t - c``,
+    ``A0 = int ln|s| dt = s ln|s| - s`` and ``A1 = int t ln|s| dt = s^2 ln|s|/2 - s^2/4 + c
+    A0``, summed over the three terms at every node (one logarithm per node pair and term)
+    and differenced over the elements.
     """
+    t = nodes[None, :]
     xi = nodes[:, None]
-    a, b = nodes[None, :-1], nodes[None, 1:]
-    h = b - a
+    sl, s = _log_terms(t - xi)  # c = xi
+    A0 = sl - s
+    A1 = (0.5 * sl - 0.25 * s) * s + xi * A0
+    sl, s = _log_terms(t + xi)  # c = -xi
+    B0 = sl - s
+    A0 += B0
+    A1 += (0.5 * sl - 0.25 * s) * s
+    A1 -= xi * B0
+    sl, s = _log_terms(nodes)  # c = 0, weight -2 (the same in every row)
+    A0 -= 2.0 * (sl - s)
+    A1 -= 2.0 * (0.5 * sl - 0.25 * s) * s
+    i0 = np.diff(A0, axis=1)  # int ln over each element, (nodes, elements)
+    i1 = np.diff(A1, axis=1)  # int t ln
+    a, b = nodes[:-1], nodes[1:]
+    left = (b * i0 - i1) / (b - a)  # phi_left = (b - t)/h
     K = np.zeros((nodes.size, nodes.size))
-    for c, weight in ((xi, 1.0), (-xi, 1.0), (np.zeros_like(xi), -2.0)):
-        A0b, A1b = _log_antiderivatives(b, c)
-        A0a, A1a = _log_antiderivatives(a, c)
-        i0, i1 = A0b - A0a, A1b - A1a  # (nodes, elements)
-        K[:, :-1] += weight * (b * i0 - i1) / h  # phi_left = (b - t)/h
-        K[:, 1:] += weight * (i1 - a * i0) / h  # phi_right = (t - a)/h
+    K[:, :-1] = left
+    K[:, 1:] += i0 - left  # phi_right = 1 - phi_left
     return K
 
 
@@ -71,15 +88,13 @@ def _coarsen(nodes: NDArray, K: NDArray) -> tuple[NDArray, NDArray]:
     """The mesh of every second node and its kernel, exactly, from the fine one.
 
     A coarse hat function is the fine one at its node plus half its two neighbours, so the
-    coarse kernel is ``K[::2] @ T``; no logarithm is evaluated again.
+    coarse kernel is ``K[::2] @ T`` (taken by slices); no logarithm is evaluated again.
     """
-    m = (nodes.size - 1) // 2
-    T = np.zeros((nodes.size, m + 1))
-    j = np.arange(m + 1)
-    T[2 * j, j] = 1.0
-    T[2 * j[1:] - 1, j[1:]] = 0.5
-    T[2 * j[:-1] + 1, j[:-1]] = 0.5
-    return nodes[::2], K[::2] @ T
+    rows = K[::2]
+    Kc = rows[:, ::2].copy()
+    Kc[:, :-1] += 0.5 * rows[:, 1::2]
+    Kc[:, 1:] += 0.5 * rows[:, 1::2]
+    return nodes[::2], Kc
 
 
 @dataclass(frozen=True, eq=False)
@@ -87,7 +102,7 @@ class _Mesh:
     nodes: NDArray
     K: NDArray
     w: NDArray
-    spec: tuple[float, float, float, float]
+    spec: tuple[float, ...]
     #: the last factorised Jacobian ``(mu, lu)``: a chord Newton reuses it from one state
     #: to the next (it only speeds convergence; the residual decides, so a stale one is
     #: never wrong)
@@ -120,14 +135,21 @@ def _graded_nodes(lo: float, hi: float, hb: float, hmax: float) -> NDArray:
     return np.concatenate(parts)
 
 
-@functools.lru_cache(maxsize=4)
-def _meshes(spec: tuple[float, float, float, float]) -> tuple[_Mesh, _Mesh, _Mesh]:
-    """The fine, middle and coarse meshes of ``spec = (lo, hi, hb, hmax)`` (cached).
+@functools.lru_cache(maxsize=12)
+def _meshes(spec: tuple[float, ...]) -> tuple[_Mesh, _Mesh, _Mesh]:
+    """The fine, middle and coarse meshes of ``spec = (lo, hi, hb, hmax[, pin])`` (cached).
 
-    The coarse mesh is :func:`_graded_nodes`; the others bisect it once and twice. The
-    kernel is computed on the fine mesh and derived exactly for the coarser ones.
+    The coarse mesh is :func:`_graded_nodes`, with the node ``pin`` added where given (an
+    edge held between its nodes); the others bisect it once and twice. The kernel is
+    computed on the fine mesh and derived exactly for the coarser ones.
     """
-    fine = _graded_nodes(*spec)
+    fine = _graded_nodes(*spec[:4])
+    if len(spec) > 4:
+        j = int(np.argmin(np.abs(fine - spec[4])))
+        if abs(fine[j] - spec[4]) <= 1e-9 * spec[2]:
+            fine[j] = spec[4]
+        else:
+            fine = np.sort(np.append(fine, spec[4]))
     for _ in range(2):
         fine = np.sort(np.concatenate([fine, 0.5 * (fine[1:] + fine[:-1])]))
     K = _kernel(fine)
@@ -160,6 +182,46 @@ class _Grid:
         lo = 0.0 if lo < 2.0 * self.ell else lo
         return (round(lo, 12), round(c + _BAND * self.ell, 12), self.hb, self.hmax)
 
+    def small(self) -> tuple[float, float, float, float]:
+        """The small mesh, uniform from 0 and graded beyond.
+
+        Uniform over :data:`_SMALL_BAND` edge lengths (twice that for ``mu <= 1``, where the
+        whole curve to its pull-off lies within a few units and the attraction out there
+        carries the load), then graded.
+
+        It holds the far part and the edges up to :meth:`small_end`.
+        """
+        band = _SMALL_BAND * self.ell * (2.0 if self.ell == 1.0 else 1.0)
+        return (0.0, round(band, 12), self.hb, self.hmax)
+
+    def small_end(self) -> float:
+        """The largest edge held on the small mesh.
+
+        ``_SCALED_FROM`` edge lengths, a whole number of its coarse elements (the edges it
+        holds are its coarse nodes).
+        """
+        return self.hb * round(_SCALED_FROM * self.ell / self.hb)
+
+    def scaled(self, e: float) -> tuple[tuple[float, float, float, float], float]:
+        """``(spec, k)``: the meshes of the edge ``e`` are those of ``spec`` scaled by ``k``.
+
+        One mesh per factor :data:`_E_RATIO` of the edge, built about ``e_ref`` (``e/e_ref``
+        within ``_E_RATIO^(+-1/2)``), with ``e_ref`` a node of all three meshes (so the edge
+        held is a node, and the loads of the three meshes differ smoothly): a band of
+        elements at most ``1/sqrt(_E_RATIO)`` of the usual, ``_E_BAND sqrt(_E_RATIO)`` edge
+        lengths either side (from 0 where that comes within 2 edge lengths of it). Scaled by
+        ``k = e/e_ref`` it holds ``e +- _E_BAND`` edge lengths at the usual resolution or
+        finer. The kernel scales with the mesh exactly (:func:`_scaled_mesh`).
+        """
+        r = math.sqrt(_E_RATIO)
+        e_ref = _E_RATIO ** round(math.log(e) / math.log(_E_RATIO))
+        hb = e_ref / math.ceil(e_ref * r / self.hb)  # e_ref is a whole number of elements
+        n = math.ceil(_E_BAND * self.ell * r / hb)
+        lo = e_ref - n * hb
+        lo = 0.0 if lo < 2.0 * self.ell else lo
+        hmax = self.hmax * max(1.0, e_ref / _HMAX_FROM)
+        return (lo, e_ref + n * hb, hb, hmax), e / e_ref
+
     def holds(self, spec: tuple[float, ...], e: float) -> bool:
         lo, hi = spec[0], spec[1]
         half = 0.5 * _BAND * self.ell
@@ -173,62 +235,95 @@ def _law(zeta: NDArray) -> tuple[NDArray, NDArray]:
     return -(8.0 / 3.0) * (z3 - z9), (8.0 / 3.0) * (3.0 * z3 - 9.0 * z9) / zeta
 
 
-def _chord(lu, fresh: bool, ratio: float, mu: float, mesh: _Mesh, dP: NDArray):
-    """The chord step's factorisation: kept while the residual falls by 4 per step.
+def _factor(mu: float, mesh: _Mesh, dP: NDArray) -> tuple:
+    """``(lu, J^-1 1)`` of ``J = I + (2 mu/pi) K diag(P')``, cached on the mesh.
 
-    Refactorises ``I + (2 mu/pi) K diag(P')`` otherwise (and caches it for the next state).
-    Returns ``(lu, fresh, failing)``; failing when a fresh Jacobian did not lower the
-    residual.
+    The next state reuses it (a neighbour's Jacobian only speeds convergence; the residual
+    decides).
     """
-    if lu is not None and ratio <= _CHORD:
-        return lu, False, False
-    if fresh and ratio >= 1.0:
-        return lu, fresh, True
     import scipy.linalg  # here: ``import linecontact`` does not import scipy
 
     J = (2.0 * mu / math.pi) * mesh.K * dP[None, :]
     J[np.diag_indices_from(J)] += 1.0
     lu = scipy.linalg.lu_factor(J, check_finite=False)
+    out = (lu, scipy.linalg.lu_solve(lu, np.ones(J.shape[0]), check_finite=False))
     mesh.lu.clear()
-    mesh.lu[mu] = lu
-    return lu, True, False
+    mesh.lu[mu] = out
+    return out
+
+
+def _iterate(
+    mu: float, mesh: _Mesh, zeta: NDArray, zeta0: float, edge: float | None, tol: float
+) -> tuple[NDArray, float, float, bool]:
+    """Chord Newton on the discrete gap equation, the central gap or the edge held.
+
+    With ``edge`` the unknowns are the gaps and ``zeta0`` and the extra equation
+    ``zeta(edge) = _EDGE_GAP`` (the bordered system by block elimination). A factorisation
+    is reused while each step lowers the residual by :data:`_CHORD`; a step that raises it
+    is taken back and, with a fresh factorisation, halved (up to four times) -- so a poor
+    first guess or a neighbour's factorisation costs iterations, never the solve. Returns
+    ``(zeta, zeta0, residual, ok)``; the residual is the largest of the gap equation's
+    relative to the gap (and of the edge condition).
+    """
+    import scipy.linalg
+
+    nodes, K = mesh.nodes, mesh.K
+    half = 0.5 * nodes * nodes
+    c = 2.0 * mu / math.pi
+    i, t = _edge_row(nodes, edge) if edge is not None else (0, 0.0)
+
+    def residual(z: NDArray, z0: float):
+        P, dP = _law(z)
+        r = z - z0 - half + c * (K @ P)
+        q = (1.0 - t) * z[i] + t * z[i + 1] - _EDGE_GAP if edge is not None else 0.0
+        return r, q, dP, max(float(np.max(np.abs(r) / z)), abs(q))
+
+    r, q, dP, res = residual(zeta, zeta0)
+    cached = mesh.lu.get(mu)
+    fresh = False
+    for _ in range(_MAXIT):
+        if res <= tol:
+            return zeta, zeta0, res, True
+        if not np.isfinite(res):
+            return zeta, zeta0, math.inf, False
+        if cached is None:
+            cached, fresh = _factor(mu, mesh, dP), True
+        lu, y2 = cached
+        y1 = scipy.linalg.lu_solve(lu, -r, check_finite=False)
+        if edge is None:
+            dz, d0 = y1, 0.0
+        else:  # J dz - d0 = -r ; (1 - t) dz_i + t dz_(i+1) = -q
+            d0 = (-q - ((1.0 - t) * y1[i] + t * y1[i + 1])) / ((1.0 - t) * y2[i] + t * y2[i + 1])
+            dz = y1 + d0 * y2
+        lam = 1.0  # the law is singular at contact: keep the gaps positive
+        while np.any(zeta + lam * dz <= 0.05 * zeta) and lam > 1e-6:
+            lam *= 0.5
+        for _ in range(5 if fresh else 1):
+            trial = zeta + lam * dz, zeta0 + lam * d0
+            new = residual(*trial)
+            if new[3] < res:
+                break
+            lam *= 0.5
+        else:  # no descent: refactorise here, or fail with a fresh factorisation
+            if fresh:
+                return zeta, zeta0, res, False
+            cached = None
+            continue
+        ratio = new[3] / res
+        (zeta, zeta0), (r, q, dP, res) = trial, new
+        fresh = False
+        if ratio > _CHORD:
+            cached = None
+    return zeta, zeta0, res, res <= tol
 
 
 def _newton(
     zeta0: float, mu: float, mesh: _Mesh, guess: NDArray, tol: float = _TOL
 ) -> tuple[NDArray, float, bool]:
-    """Gaps at the nodes solving the discrete gap equation (chord Newton, refactored).
-
-    The Jacobian is factorised again only when the residual falls by less than a factor 4
-    per step. Returns the gaps, the largest residual relative to the gap and whether it met
-    ``tol``.
-    """
-    import scipy.linalg
-
-    nodes, K = mesh.nodes, mesh.K
-    rigid = zeta0 + 0.5 * nodes * nodes
-    zeta = guess.copy()
-    c = 2.0 * mu / math.pi
-    lu = mesh.lu.get(mu)
-    res, fresh = math.inf, False
-    for _ in range(60):
-        P, dP = _law(zeta)
-        r = zeta - rigid + c * (K @ P)
-        res_new = float(np.max(np.abs(r) / zeta))
-        if res_new <= tol:
-            return zeta, res_new, True
-        if not np.isfinite(res_new):
-            return zeta, math.inf, False
-        lu, fresh, failing = _chord(lu, fresh, res_new / res, mu, mesh, dP)
-        if failing:
-            return zeta, res_new, False
-        res = res_new
-        step = scipy.linalg.lu_solve(lu, r, check_finite=False)
-        lam = 1.0  # the law is singular at contact: keep the gaps positive
-        while np.any(zeta - lam * step <= 0.05 * zeta) and lam > 1e-6:
-            lam *= 0.5
-        zeta = zeta - lam * step
-    return zeta, res, False
+    """Gaps at the nodes at the central gap ``zeta0`` (:func:`_iterate`): ``(zeta, res, ok)``."""
+    zeta, _, res, ok = _iterate(mu, mesh, guess.copy(), zeta0, None, tol)
+    zeta[0] = zeta0  # the centre's equation is exactly this (the kernel's row there is 0)
+    return zeta, res, ok
 
 
 def _half_width(nodes: NDArray, zeta: NDArray, level: float = 1.0) -> float:
@@ -256,13 +351,18 @@ class _Solved:
     residual: float
     zeta: NDArray  # on the fine mesh
     mesh: _Mesh
+    edge: float = 0.0  # where the gap crosses _EDGE_GAP z0 (the edge held, or found)
+    central_gap: float = math.nan  # reported: zeta0, or its extrapolation at an edge held
 
 
 def _solve(
-    zeta0: float, mu: float, spec: tuple[float, float, float, float], guess: NDArray | None
+    zeta0: float, mu: float, spec: tuple[float, ...] | tuple[_Mesh, _Mesh, _Mesh], guess
 ) -> _Solved | None:
-    """One state on the three meshes of ``spec``; ``None`` where Newton fails."""
-    meshes = _meshes(spec)
+    """One state at the central gap ``zeta0`` on three meshes; ``None`` where Newton fails.
+
+    The meshes of ``spec``, or the meshes given.
+    """
+    meshes = spec if isinstance(spec[0], _Mesh) else _meshes(spec)
     fine = meshes[0]
     g = zeta0 + 0.5 * fine.nodes**2 if guess is None else guess
     zeta, res, ok = _newton(zeta0, mu, fine, g)
@@ -304,19 +404,34 @@ def _follow(mu: float, grid: _Grid, s: _Solved) -> _Solved:
     return s if t is None else t
 
 
-def _finish(zeta0: float, mu: float, meshes, zeta: NDArray) -> _Solved | None:
-    """The state from its fine gaps: the two coarser meshes, Richardson and the estimate."""
+def _finish(
+    zeta0: float, mu: float, meshes, zeta: NDArray, edge: float | None = None
+) -> _Solved | None:
+    """The state from its fine gaps: the two coarser meshes, Richardson and the estimate.
+
+    The coarser meshes hold the same central gap, or with ``edge`` the same edge
+    (:func:`_edge_newton`); then the central gap too is the Richardson extrapolation of the
+    two finer ones (``central_gap``): in contact the load is so stiff in the central gap
+    that the fine mesh's own would not carry the extrapolated load.
+    """
     fine = meshes[0]
     loads = [2.0 * float(fine.w @ _law(zeta)[0])]
+    gaps = [zeta0]
     for k, mesh in enumerate(meshes[1:], start=1):
-        zk, _, okk = _newton(zeta0, mu, mesh, zeta[:: 2**k])
+        if edge is None:
+            zk, _, okk = _newton(zeta0, mu, mesh, zeta[:: 2**k])
+            z0k = zeta0
+        else:
+            zk, z0k, okk = _edge_newton(edge, mu, mesh, zeta[:: 2**k], zeta0)
         if not okk:
             break
         loads.append(2.0 * float(mesh.w @ _law(zk)[0]))
+        gaps.append(z0k)
     if len(loads) == 1:  # the middle mesh cannot hold the state: no estimate
         return None
     f, m = loads[:2]
     r_fine = f + (f - m) / 3.0
+    gap = gaps[0] + (gaps[0] - gaps[1]) / 3.0
     if len(loads) == 3:
         c = loads[2]
         error = max(abs(r_fine - (m + (m - c) / 3.0)), 1e-15 * abs(r_fine))
@@ -325,10 +440,103 @@ def _finish(zeta0: float, mu: float, meshes, zeta: NDArray) -> _Solved | None:
     P = _law(zeta)[0]
     rigid = zeta0 + 0.5 * fine.nodes**2
     res = float(np.max(np.abs(zeta - rigid + (2 * mu / math.pi) * (fine.K @ P)) / zeta))
-    return _Solved(zeta0, r_fine, error, f, _half_width(fine.nodes, zeta), res, zeta, fine)
+    hw = _half_width(fine.nodes, zeta)
+    e = _half_width(fine.nodes, zeta, _EDGE_GAP) if edge is None else edge
+    return _Solved(zeta0, r_fine, error, f, hw, res, zeta, fine, e, gap)
 
 
 def _check_m(m) -> int:
     if not isinstance(m, (int, np.integer)) or m < 16 or m % 4:
         raise ValueError(f"m must be an integer >= 16 and a multiple of 4, got {m!r}")
     return int(m)
+
+
+# ---------------------------------------------------------------------------------------
+# states controlled by the edge
+
+
+def _edge_row(nodes: NDArray, e: float) -> tuple[int, float]:
+    """``(i, t)``: the gap at ``e`` is ``(1 - t) zeta_i + t zeta_(i+1)`` (linear pieces)."""
+    i = int(np.clip(np.searchsorted(nodes, e) - 1, 0, nodes.size - 2))
+    return i, float((e - nodes[i]) / (nodes[i + 1] - nodes[i]))
+
+
+def _edge_newton(
+    e: float, mu: float, mesh: _Mesh, zeta: NDArray, zeta0: float, tol: float = _TOL
+) -> tuple[NDArray, float, bool]:
+    """Gaps and central gap of the state whose gap crosses ``_EDGE_GAP z0`` at ``xi = e``.
+
+    Along the contact branch of a compliant contact the central gap hardly changes while
+    the edge travels: ``zeta0`` is a poor control there, ``e`` a good one
+    (:func:`_iterate`). Returns ``(zeta, zeta0, ok)``.
+    """
+    z, z0, _, ok = _iterate(mu, mesh, zeta, zeta0, e, tol)
+    return z, z0, ok
+
+
+def _scaled_mesh(mesh: _Mesh, k: float) -> _Mesh:
+    """``mesh`` with its nodes times ``k``.
+
+    ``ln(|xi^2 - eta^2|/eta^2)`` is invariant, so the kernel and the weights scale by ``k``
+    exactly. The copies share the chord factorisation
+    (a neighbour's Jacobian speeds convergence; the residual decides).
+    """
+    if k == 1.0:
+        return mesh
+    return _Mesh(mesh.nodes * k, mesh.K * k, mesh.w * k, mesh.spec, mesh.lu)
+
+
+def _edge_meshes(grid: _Grid, e: float) -> tuple[_Mesh, _Mesh, _Mesh]:
+    """The fine, middle and coarse meshes of the state with its edge at ``e``.
+
+    Up to :meth:`_Grid.small_end` the small mesh (``e`` one of its coarse nodes: the states
+    of the far part and of the small edges share one kernel), or the small mesh with ``e``
+    added; beyond, a scaled one.
+    """
+    if e <= grid.small_end() * (1.0 + 1e-12):
+        j = e / grid.hb
+        on_node = abs(j - round(j)) <= 1e-9 * max(1.0, j)
+        return _meshes(grid.small() if on_node else (*grid.small(), e))
+    spec, k = grid.scaled(e)
+    f, m, c = _meshes(spec)
+    return _scaled_mesh(f, k), _scaled_mesh(m, k), _scaled_mesh(c, k)
+
+
+def _solve_edge(
+    e: float, mu: float, meshes: tuple[_Mesh, _Mesh, _Mesh], zeta: NDArray, zeta0: float
+) -> _Solved | None:
+    """The state with its edge at ``e`` on ``meshes``; ``None`` on failure.
+
+    ``meshes`` from :func:`_edge_meshes`; ``zeta`` (on the fine mesh) and ``zeta0`` are the
+    first guess.
+    """
+    z, z0, ok = _edge_newton(e, mu, meshes[0], zeta, zeta0)
+    if not ok:
+        return None
+    return _finish(z0, mu, meshes, z, edge=e)
+
+
+def _md_guess(a: float, mu: float, mesh: _Mesh) -> tuple[NDArray, float]:
+    """A first guess of the state whose contact half-width is about ``a`` (``mu > 0``).
+
+    The gap of the Maugis-Dugdale pressure with the Maugis matching (Hertz and the bounded
+    crack term inside ``a``, the step ``-S w/z0`` out to ``c``, the ``c/a`` of the closed
+    form :func:`linecontact.normal_contact` at the matched groups), through the same kernel,
+    lifted so that the gap is ``z0`` at ``a``; at least ``0.95 z0``. Returns ``(zeta,
+    zeta0)``.
+    """
+    from ..normal import normal_contact
+    from ._matching import MAUGIS_MATCH_SIGMA0 as S
+
+    rho = 1e6  # the matched groups depend on mu alone in these units (docs/lennard-jones.md)
+    st = normal_contact(a * math.sqrt(S / rho), rho, mu * S**1.5 / math.sqrt(rho))
+    c = a * float(st.c_over_R) / float(st.a_over_R)
+    xi = mesh.nodes
+    P = np.where((xi >= a) & (xi < c), -S, 0.0)
+    inside = xi < a
+    d = np.sqrt(a * a - xi[inside] ** 2)
+    with np.errstate(divide="ignore"):
+        P[inside] = d / (2.0 * mu) - (2.0 * S / math.pi) * np.arctan(np.sqrt(c * c - a * a) / d)
+    g = 0.5 * xi * xi - (2.0 * mu / math.pi) * (mesh.K @ P)
+    lift = 1.0 - float(np.interp(a, xi, g))
+    return np.maximum(g + lift, 0.95), lift
