@@ -392,7 +392,10 @@ def fit_pull_off(
     bootstrap : int or "auto"
         Parametric-bootstrap refits for the 95 % intervals (0: none, the linear ones are
         copied; ``"auto"``: 100 where the linear interval is poor, a relative standard
-        uncertainty of a parameter above 10 %, else none).
+        uncertainty of a parameter above 10 %, else none). Solved all at once (batched
+        damped Newton steps through the vectorised model, :func:`_refit_rows`) where the data
+        determine ``(w, z0)``; one by one, as the fit itself, where they do not (the cost
+        may have several minima), and for a refit the batch leaves or ends on a bound.
     seed : int
         Of the bootstrap (``seed + 1``: of the inputs' draws).
     modulus_sd : float
@@ -423,8 +426,6 @@ def fit_pull_off(
     >>> bool(0 < fit.work_of_adhesion_sd_inputs < 0.01), fit.work_of_adhesion_sd_total > 0
     (True, True)
     """
-    from scipy.optimize import least_squares
-
     R = check_array("radius", radius).reshape(-1)
     F = check_array("pull_off_force", pull_off_force, low=-np.inf, high=0.0).reshape(-1)
     if R.size != F.size:
@@ -509,17 +510,7 @@ def fit_pull_off(
     hi = np.log([1e3, 1e-7])[:n_par]
 
     def solve(Fd, start):
-        return least_squares(
-            lambda p: (model(p) - Fd) / sig,
-            np.clip(start, lo + 1e-9, hi - 1e-9),
-            bounds=(lo, hi),
-            method="trf",
-            x_scale=1.0,
-            xtol=1e-15,
-            ftol=1e-15,
-            gtol=1e-15,
-            max_nfev=2000,
-        )
+        return _solve(model, Fd, sig, start, lo, hi)
 
     # start: per point w at trial ranges, the best median
     best = None
@@ -572,22 +563,6 @@ def fit_pull_off(
             unit = np.full((n_par, n_par), np.nan)
     corr = math.nan if fixed else float(unit[0, 1] / math.sqrt(unit[0, 0] * unit[1, 1]))
     ci_w, ci_z = ci_lin_w, ci_lin_z
-    n_boot = (0 if np.all(sd_log <= 0.1) else 100) if bootstrap == "auto" else int(bootstrap)
-    if n_boot > 0 and np.isfinite(scale):
-        rng = np.random.default_rng(seed)
-        noise = sig * (1.0 if have_sd else math.sqrt(scale))
-        fitted = model(p)
-        ws, zs = [], []
-        for _ in range(n_boot):
-            Fb = fitted + noise * rng.standard_normal(F.size)
-            if np.any(Fb >= 0):
-                continue
-            rb = solve(Fb, p)
-            ws.append(math.exp(rb.x[0]))
-            zs.append(z0 if fixed else math.exp(rb.x[1]))
-        if len(ws) >= 20:
-            ci_w = tuple(float(v) for v in np.percentile(ws, [2.5, 97.5]))  # type: ignore[assignment]
-            ci_z = tuple(float(v) for v in np.percentile(zs, [2.5, 97.5]))  # type: ignore[assignment]
     identifiable = True
     note = ""
     exact = not have_sd and chi2 <= 1e-24 * float(np.sum(F * F))
@@ -618,6 +593,27 @@ def fit_pull_off(
             "the fit ended on the bounds of the search (w in [1e-8, 1e3] J/m^2, z0 in "
             "[1e-12, 1e-7] m): these data may not be pull-offs of this model (check units)"
         )
+    n_boot = (0 if np.all(sd_log <= 0.1) else 100) if bootstrap == "auto" else int(bootstrap)
+    if n_boot > 0 and np.isfinite(scale):
+        rng = np.random.default_rng(seed)
+        noise = sig * (1.0 if have_sd else math.sqrt(scale))
+        Fb = model(p) + noise * rng.standard_normal((n_boot, F.size))  # one resample a row
+        Fb = Fb[np.all(Fb < 0, axis=1)]  # a resample with a force >= 0 is skipped
+        pb = np.full((len(Fb), n_par), np.nan)
+        if identifiable and len(Fb):  # all at once; else the cost may have several minima
+            pb = _refit_rows(
+                lambda P: _model_rows(P, R, E, z_fixed if fixed else None), Fb, sig, p, lo, hi
+            )
+            # a refit on a bound: one by one, which may stop inside (where the cost is flat)
+            edge = np.isclose(pb, lo, rtol=0, atol=1e-6) | np.isclose(pb, hi, rtol=0, atol=1e-6)
+            pb[np.any(edge, axis=1)] = np.nan
+        for row in np.flatnonzero(np.isnan(pb[:, 0])):  # the refits left: one by one
+            pb[row] = solve(Fb[row], p).x
+        if len(pb) >= 20:
+            ws = np.exp(pb[:, 0])
+            zs = np.full(len(pb), z0) if fixed else np.exp(pb[:, 1])
+            ci_w = tuple(float(v) for v in np.percentile(ws, [2.5, 97.5]))  # type: ignore[assignment]
+            ci_z = tuple(float(v) for v in np.percentile(zs, [2.5, 97.5]))  # type: ignore[assignment]
     w_sd_in, z_sd_in = 0.0, 0.0
     if modulus_sd or equilibrium_spacing_sd:
         w_sd_in, z_sd_in = _input_refits(
@@ -656,6 +652,162 @@ def fit_pull_off(
         w_sd_in,
         z_sd_in,
     )
+
+
+def _solve(
+    model: Callable[[NDArray], NDArray],
+    Fd: NDArray,
+    sig: NDArray,
+    start: NDArray,
+    lo: NDArray,
+    hi: NDArray,
+):
+    """One weighted least-squares fit of ``model(p)`` to ``Fd`` (trust-region reflective).
+
+    The log parameters ``p`` within ``[lo, hi]``, to round-off; the fit itself, and the
+    bootstrap refits that :func:`_refit_rows` leaves. Returns the
+    :func:`scipy.optimize.least_squares` result.
+    """
+    from scipy.optimize import least_squares
+
+    return least_squares(
+        lambda p: (model(p) - Fd) / sig,
+        np.clip(start, lo + 1e-9, hi - 1e-9),
+        bounds=(lo, hi),
+        method="trf",
+        x_scale=1.0,
+        xtol=1e-15,
+        ftol=1e-15,
+        gtol=1e-15,
+        max_nfev=2000,
+    )
+
+
+def _model_rows(P: NDArray, R: NDArray, E: float, z0: float | None) -> NDArray:
+    """The pull-off forces [N/m] at the radii ``R``, one row per row of log parameters ``P``.
+
+    ``P[:, 0]`` is ``ln w``, ``P[:, 1]`` ``ln z0`` (or ``z0`` is the fixed one given).
+    """
+    shape = (P.shape[0], R.size)
+    w = np.broadcast_to(np.exp(P[:, :1]), shape)
+    z = np.full(shape, z0) if z0 is not None else np.broadcast_to(np.exp(P[:, 1:2]), shape)
+    return pull_off_force_at(np.broadcast_to(R, shape), np.full(shape, E), w, z)
+
+
+#: the bootstrap's batch of refits: the central-difference step in the log parameters, the
+#: step that ends a refit (in the log parameters: relative in w and z0), the most steps, and
+#: the step below which a refit takes Newton steps (Gauss--Newton ones before, as _solve)
+_REFIT_DIFF = 1e-5
+_REFIT_XTOL = 1e-8
+_REFIT_STEPS = 60
+_REFIT_NEWTON = 1e-2
+
+
+def _rows_or_nan(fun: Callable[[NDArray], NDArray], P: NDArray, m: int) -> NDArray:
+    """``fun(P)``, with nan in the rows where it raises ``ValueError`` (found by halving)."""
+    try:
+        return np.asarray(fun(P), float)
+    except ValueError:
+        if len(P) == 1:
+            return np.full((1, m), np.nan)
+        k = len(P) // 2
+        return np.concatenate([_rows_or_nan(fun, P[:k], m), _rows_or_nan(fun, P[k:], m)])
+
+
+def _refit_rows(
+    fun: Callable[[NDArray], NDArray],
+    Fd: NDArray,
+    sig: NDArray,
+    start: NDArray,
+    lo: NDArray,
+    hi: NDArray,
+) -> NDArray:
+    """All the bootstrap refits at once: one least-squares fit per row of ``Fd``, batched.
+
+    Damped Gauss--Newton steps (Levenberg--Marquardt), then Newton steps on the full Hessian
+    of the cost once a row's step is below :data:`_REFIT_NEWTON` and the Hessian positive
+    definite (quadratic convergence at any residual), in the log parameters, every row
+    a step at a time through one call of the vectorised model ``fun`` (``P`` of shape
+    ``(k, n)`` to forces ``(k, m)``) at the rows and their finite differences; a parameter
+    on a bound of ``[lo, hi]`` that the gradient pushes out stays there. A row ends when
+    its step falls below :data:`_REFIT_XTOL` (the optimum to round-off, as :func:`_solve`
+    finds it). Returns the parameters, shape ``(k, n)``; nan in the rows left to
+    :func:`_solve`: a model that raised or gave a non-finite force on the way, a singular
+    step, or more than :data:`_REFIT_STEPS` steps.
+    """
+    k, m = Fd.shape
+    n = start.size
+    eye = np.eye(n)
+    pairs = [(i, j) for i in range(n) for j in range(i + 1, n)]
+    offsets = _REFIT_DIFF * np.concatenate(
+        [np.zeros((1, n)), eye, -eye] + [eye[[i]] + eye[[j]] for i, j in pairs]
+    )
+
+    def forces(P):  # the weighted residuals (k, m), their gradients and Hessians in P
+        Y = _rows_or_nan(fun, (P[:, None, :] + offsets).reshape(-1, n), m)
+        Y = Y.reshape(len(P), len(offsets), m).transpose(0, 2, 1) / sig[:, None]
+        y0, yp, ym = Y[:, :, 0], Y[:, :, 1 : 1 + n], Y[:, :, 1 + n : 1 + 2 * n]
+        Hr = np.zeros((len(P), m, n, n))
+        Hr[:, :, range(n), range(n)] = (yp - 2 * y0[:, :, None] + ym) / _REFIT_DIFF**2
+        for c, (i, j) in enumerate(pairs):
+            Hr[:, :, i, j] = Hr[:, :, j, i] = (
+                Y[:, :, 1 + 2 * n + c] - yp[:, :, i] - yp[:, :, j] + y0
+            ) / _REFIT_DIFF**2
+        return y0, (yp - ym) / (2 * _REFIT_DIFF), Hr
+
+    P = np.tile(np.clip(start, lo + 1e-9, hi - 1e-9), (k, 1))
+    with np.errstate(all="ignore"):
+        y0, j0, h0 = forces(P[:1])  # every row starts at the same point
+    r = y0 - Fd / sig
+    J = np.broadcast_to(j0, (k, m, n)).copy()
+    Hr = np.broadcast_to(h0, (k, m, n, n)).copy()
+    cost = np.sum(r * r, axis=1)
+    lam = np.full(k, 1e-3)
+    near = np.zeros(k, bool)
+    out = np.full((k, n), np.nan)
+    act = np.flatnonzero(np.isfinite(cost) & np.all(np.isfinite(Hr), axis=(1, 2, 3)))
+    for _ in range(_REFIT_STEPS):
+        if act.size == 0:
+            break
+        Pa, ra, Ja = P[act], r[act], J[act]
+        g = np.einsum("kmi,km->ki", Ja, ra)
+        A = np.einsum("kmi,kmj->kij", Ja, Ja)
+        H = A + np.einsum("km,kmij->kij", ra, Hr[act])
+        newton = near[act] & np.all(np.linalg.eigvalsh(H) > 0, axis=1)
+        B = np.where(newton[:, None, None], H, A)
+        free = ~(((Pa <= lo) & (g > 0)) | ((Pa >= hi) & (g < 0)))
+        B = B * free[:, :, None] * free[:, None, :]
+        d = np.diagonal(B, axis1=1, axis2=2)  # the damping, at least 1e-6 of the stiffest
+        d = np.where(free, np.maximum(d, 1e-6 * np.max(d, axis=1, keepdims=True) + 1e-300), 1.0)
+        M = B + (lam[act, None] * d)[:, :, None] * eye
+        try:
+            dp = -np.linalg.solve(M, (g * free)[:, :, None])[:, :, 0]
+        except np.linalg.LinAlgError:  # a singular row: the rows still open go one by one
+            break
+        with np.errstate(all="ignore"):
+            # a step past a bound: that parameter to the bound, the others solved again
+            cut = ((Pa + dp < lo) | (Pa + dp > hi)) & np.any(free, axis=1, keepdims=True)
+            if np.any(cut):
+                dc = np.where(cut, np.clip(Pa + dp, lo, hi) - Pa, 0.0)
+                rhs = -(g * free) - np.einsum("kij,kj->ki", M, dc)
+                keep = ~cut[:, :, None] & ~cut[:, None, :]
+                Mc = np.where(keep, M, 0.0) + cut[:, :, None] * eye
+                dp = dc + np.linalg.solve(Mc, np.where(cut, 0.0, rhs)[:, :, None])[:, :, 0]
+            Pn = np.clip(Pa + dp, lo, hi)
+            rn, Jn, Hn = forces(Pn)
+        rn = rn - Fd[act] / sig
+        cn = np.sum(rn * rn, axis=1)
+        bad = ~(np.isfinite(cn) & np.all(np.isfinite(Hn), axis=(1, 2, 3)))
+        good = ~bad & (cn < cost[act])
+        idx = act[good]
+        P[idx], r[idx], J[idx], cost[idx] = Pn[good], rn[good], Jn[good], cn[good]
+        Hr[idx] = Hn[good]
+        lam[act] = np.where(good, np.maximum(0.1 * lam[act], 1e-12), 10 * lam[act])
+        near[idx] = np.max(np.abs(Pn[good] - Pa[good]), axis=1) < _REFIT_NEWTON
+        done = ~bad & (np.max(np.abs(Pn - Pa), axis=1) <= _REFIT_XTOL)
+        out[act[done]] = P[act[done]]
+        act = act[~done & ~bad]
+    return out
 
 
 def _input_refits(
