@@ -276,22 +276,22 @@ def test_a_tangential_load_beyond_full_slip_is_said_in_newtons_per_metre():
 
 
 def test_the_lennard_jones_domain_is_said_for_the_wire_given():
-    cyl = lc.Cylinder.from_modulus(1e-6, 5.7e8, work_of_adhesion=0.1, equilibrium_spacing=3e-10)
-    for call in (
-        lambda: cyl.lennard_jones_pull_off(),
-        lambda: cyl.lennard_jones_contact(load=0.1),
-    ):
-        with pytest.raises(ValueError) as exc:
-            call()
-        message = str(exc.value)
-        assert message.startswith(
-            "under the Lennard-Jones law the Maugis parameter mu = w R^(1/2) / (E z0^(3/2)) "
-            "of this cylinder is 33.76 (radius=1e-06 m, modulus=570000000.0 Pa, "
-            "work_of_adhesion=0.1 J/m^2, equilibrium_spacing=3e-10 m): the Lennard-Jones "
-            "solver takes mu in [0, 3]"
-        ), message
-        assert "law='dugdale'" in message and "a radius below 7.9e-09 m" in message
-        assert "a modulus above 6.42e+09 Pa" in message and not GROUPS.search(message)
+    cyl = lc.Cylinder.from_modulus(1e-6, 2e7, work_of_adhesion=0.1, equilibrium_spacing=3e-10)
+    with pytest.raises(ValueError) as exc:
+        cyl.lennard_jones_contact(load=0.1)
+    message = str(exc.value)
+    assert message.startswith(
+        "under the Lennard-Jones law the Maugis parameter mu = w R^(1/2) / (E z0^(3/2)) "
+        "of this cylinder is 962.3 (radius=1e-06 m, modulus=20000000.0 Pa, "
+        "work_of_adhesion=0.1 J/m^2, equilibrium_spacing=3e-10 m): the Lennard-Jones "
+        "solver takes mu in [0, 400] for contacts and load curves"
+    ), message
+    assert "the pull-off at every mu" in message and "law='dugdale'" in message
+    assert "a radius below 1.73e-07 m" in message and "a modulus above 4.81e+07 Pa" in message
+    assert not GROUPS.search(message)
+    # the pull-off itself is answered: the corrected JKR limit
+    p = cyl.lennard_jones_pull_off()
+    assert p.method == "limit" and p.error_estimate > 0 and p.pull_off_force < 0
 
 
 def test_a_zero_width_pull_off_is_not_a_width():
@@ -409,29 +409,31 @@ def test_every_si_subcommand_names_the_flag_typed(capsys, cmd, key, value):
         assert code in (0, 1) and warned, err
 
 
-def test_cli_pulloff_lennard_jones_outside_its_domain(capsys):
+def test_cli_lennard_jones_contact_outside_its_domain(capsys):
     code, err = _cli(
         capsys,
         [
-            "pulloff",
+            "normal",
             "--law",
             "lennard-jones",
             "--radius",
             "1e-06",
             "--modulus",
-            "5.7e8",
+            "2e7",
             "--work-of-adhesion",
             "0.1",
             "--z0",
             "3e-10",
+            "--load",
+            "0.1",
         ],
     )
     assert code == 2
     assert err.startswith(
-        "linecontact pulloff: error: under the Lennard-Jones law the Maugis parameter mu = w "
-        "R^(1/2) / (E z0^(3/2)) of this cylinder is 33.76 (--radius=1e-06 m, "
-        "--modulus=570000000.0 Pa, --work-of-adhesion=0.1 J/m^2, --z0=3e-10 m): the "
-        "Lennard-Jones solver takes mu in [0, 3]"
+        "linecontact normal: error: under the Lennard-Jones law the Maugis parameter mu = w "
+        "R^(1/2) / (E z0^(3/2)) of this cylinder is 962.3 (--radius=1e-06 m, "
+        "--modulus=20000000.0 Pa, --work-of-adhesion=0.1 J/m^2, --z0=3e-10 m): the "
+        "Lennard-Jones solver takes mu in [0, 400] for contacts and load curves"
     ), err
     assert "Use the Dugdale law (--law dugdale, any mu)" in err
     assert "R_over_h" not in err and "sigma0_over_E" not in err and err.count("\n") == 1

@@ -59,11 +59,9 @@ __all__ = [
 ]
 
 #: Most compressive load the Lennard-Jones solver is asked for, over ``w sqrt(R/z0)``: ten
-#: times the rigid cylinder's pull-off (2.466), 3.3 times the default end of its curve. A
-#: guard against loads that would grow its mesh without bound: the cost grows with the load
-#: and with ``mu`` (on two shared cores, ``F = 7.5`` took 30 s at ``mu = 1`` and 5 min at
-#: ``mu = 3``; ``F = 25``, 68 s and 9 min). At such loads both laws approach Hertz and the
-#: Dugdale law (the default) gives the contact.
+#: times the rigid cylinder's pull-off (2.466), 3.3 times the default end of its curve. At
+#: such loads both laws approach Hertz and the Dugdale law (the default) gives the contact;
+#: the contact widens with the load (like ``sqrt(mu F)``), and the meshes with it.
 LJ_LOAD_MAX = 25.0
 
 

@@ -337,8 +337,9 @@ class Cylinder(_Problems):
         raise ValueError(
             f"under the Lennard-Jones law the Maugis parameter mu = w R^(1/2) / (E z0^(3/2)) "
             f"of this cylinder is {mu:.4g} (radius={R!r} m, modulus={E!r} Pa, {inputs}): the "
-            f"Lennard-Jones solver takes mu in [0, {hi:g}] (Tabor-Maugis parameter up to "
-            f"{lam:.3g}). Use the Dugdale law (law='dugdale', any mu), or a radius below "
+            f"Lennard-Jones solver takes mu in [0, {hi:g}] for contacts and load curves "
+            f"(Tabor-Maugis parameter up to {lam:.3g}; the pull-off at every mu). Use the "
+            f"Dugdale law (law='dugdale', any mu), or a radius below "
             f"{R * (hi / mu) ** 2:.3g} m, a modulus above {E * mu / hi:.3g} Pa{more}"
         )
 

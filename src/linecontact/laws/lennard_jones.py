@@ -5,12 +5,14 @@ Lennard-Jones law, with the same names and argument order: ``R/h``, ``sigma0/E``
 over ``E h``, widths over ``R``, gaps over ``h`` out. The law keeps the Dugdale step's work
 of adhesion ``w = sigma0 h`` and its peak tension ``sigma0 = S w/z0`` (the Maugis matching,
 ``S`` = :data:`~linecontact.materials.MAUGIS_STRENGTH`), so ``z0 = S h``; its one group is
-``mu = w sqrt(R/z0)/(E z0) = (sigma0/E) sqrt(R/h) S^(-3/2)``, solved for ``mu`` within
-``domain.DOMAIN["lj_mu"]`` (``sigma0_over_E > 0``).
+``mu = w sqrt(R/z0)/(E z0) = (sigma0/E) sqrt(R/h) S^(-3/2)``, solved self-consistently for
+``mu`` within ``domain.DOMAIN["lj_mu"]`` (to 400, Maugis parameter 104; ``sigma0_over_E >
+0``); the pull-off at every ``mu``, beyond that by the JKR limit with a fitted correction.
 
 The solver (:mod:`linecontact.lennard_jones`, in the law's own units: gaps over ``z0``,
-loads over ``w sqrt(R/z0)``) continues the load curve in the central gap: each call costs
-seconds at ``mu <= 0.3``, minutes at ``mu = 3``.
+loads over ``w sqrt(R/z0)``) follows the load curve by the central gap far away and by the
+edge of the contact nearer: a pull-off costs a few tenths of a second, a whole curve about a
+second (``benchmarks/lennard_jones.py``).
 
 This module is not :mod:`linecontact.lennard_jones`: that one is the solver in its own
 units (``lj_pull_off(mu)``, ``lj_curve(mu)``, ...), and :mod:`linecontact.lennard_jones_groups`
@@ -57,7 +59,8 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> LennardJonesPullO
     R_over_h : array_like
         ``> 0``.
     sigma0_over_E : array_like
-        ``> 0`` (it sets the work of adhesion); ``mu`` within ``domain.DOMAIN["lj_mu"]``.
+        ``> 0`` (it sets the work of adhesion); every ``mu`` (beyond
+        ``domain.DOMAIN["lj_mu"]`` the limit form, ``method == "limit"``).
 
     Returns
     -------

@@ -41,7 +41,7 @@ _N_FAR = 9
 #: The step of the edge below ``_SCALED_FROM`` edge lengths, in edge lengths.
 _E_SLOW = 0.25
 #: Beyond, the edge grows by this fraction per step.
-_E_GROWTH = 0.25
+_E_GROWTH = 0.4
 #: The pull-off jumps to the Maugis-Dugdale estimate where that is this far beyond the edge.
 _JUMP = 2.0
 #: Relative half-width of the first bracket about that estimate.

@@ -191,9 +191,10 @@ def lj_curve(mu: float, *, F_max: float | None = None, m: int | None = None) -> 
     if not (np.isfinite(F_max) and F_max > 0):
         raise ValueError(f"F_max must be a finite load > 0, got {F_max!r}")
     grid = _grid_for(mu, m)
-    states = _b.climb(
-        mu, grid, _b.far(mu, grid), lambda st: st[-1].F >= F_max and st[-1].half_width > 0
-    )
+    states = _along(mu, m, grid, lambda st: st[-1].F >= F_max and st[-1].half_width > 0)
+    states = states[
+        : 1 + next(i for i, s in enumerate(states) if s.F >= F_max and s.half_width > 0)
+    ]
     po, jump, turns = _b.turning_points(mu, grid, states)
     z = np.array([s.central_gap for s in states])
     F = np.array([s.F for s in states])
@@ -243,6 +244,26 @@ def lj_pull_off(mu: float, *, m: int | None = None) -> LJPullOff:
     return _pull_off_of(mu, po, jump)
 
 
+#: The states of the last curve followed (far part and edges), by ``(mu, m)``: a state or a
+#: curve at the same ``mu`` goes on from them instead of from far away (the adhesion map asks
+#: for a curve and then for states between its points). Only speed depends on it.
+_LAST: dict[tuple[float, int | None], list[_Solved]] = {}
+
+
+def _along(mu: float, m: int | None, grid, done) -> list[_Solved]:
+    """The states along the curve at ``mu`` until ``done`` holds of one.
+
+    From the last curve followed at ``mu`` where there is one, else from far away.
+    """
+    key = (mu, m)
+    states = _LAST.get(key) or _b.far(mu, grid)
+    if not any(done(states[: i + 1]) for i in range(len(states))):
+        states = _b.climb(mu, grid, states, done)
+    _LAST.clear()
+    _LAST[key] = states
+    return states
+
+
 def lj_state(central_gap_over_z0: float, mu: float, *, m: int | None = None) -> LJState:
     """The equilibrium state at the central gap ``zeta0`` (continued from far away).
 
@@ -263,11 +284,10 @@ def lj_state(central_gap_over_z0: float, mu: float, *, m: int | None = None) -> 
         if t is None:
             raise _b.fail("state", mu, z)
         return _state_of(t, mu)
-    states = _b.climb(mu, grid, _b.far(mu, grid), lambda st: st[-1].zeta0 <= z)
-    a, b = states[-2], states[-1]
-    if b.zeta0 == z:
-        return _state_of(b, mu)
-    pool = list(states)
+    states = _along(mu, m, grid, lambda st: st[-1].zeta0 <= z)
+    k = next(i for i, s in enumerate(states) if s.zeta0 <= z)
+    a, b = states[k - 1], states[k]
+    pool = list(states[: k + 1])
 
     def g(e: float) -> float:
         t = _b.at_edge(mu, grid, pool, e)

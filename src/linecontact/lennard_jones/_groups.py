@@ -95,9 +95,10 @@ def lj_groups(
     if np.any(mu > hi):
         _, at = first_point(mu > hi, rho=rho, s=s, mu=mu)
         raise ValueError(
-            f"the Lennard-Jones law is solved for mu = (sigma0/E) sqrt(R/h) * "
-            f"{MAUGIS_MATCH_SIGMA0**-1.5:.4f} in [0, {hi:g}] (Maugis parameter up to "
-            f"{float(maugis_parameter_of_mu(hi)):.3g}); R_over_h={at['rho']!r}, "
+            f"the Lennard-Jones law's contacts and load curves are solved for mu = "
+            f"(sigma0/E) sqrt(R/h) * {MAUGIS_MATCH_SIGMA0**-1.5:.4f} in [0, {hi:g}] (Maugis "
+            f"parameter up to {float(maugis_parameter_of_mu(hi)):.3g}; its pull-off at every "
+            f"mu); R_over_h={at['rho']!r}, "
             f"sigma0_over_E={at['s']!r} give mu={at['mu']:.6g}"
         )
     root = np.sqrt(R_over_z0)

@@ -50,29 +50,47 @@ def _kernel(nodes: NDArray) -> NDArray:
     ``phi_j`` the hat functions of ``nodes``; the kernel is ``ln|xi - eta| + ln|xi + eta| -
     2 ln|eta|``, each term integrated exactly against the linear pieces: with ``s = t - c``,
     ``A0 = int ln|s| dt = s ln|s| - s`` and ``A1 = int t ln|s| dt = s^2 ln|s|/2 - s^2/4 + c
-    A0``, summed over the three terms at every node (one logarithm per node pair and term)
-    and differenced over the elements.
+    A0``, summed over the three terms at every node (one logarithm per node pair and term,
+    in place: the cost is the passes over ``n^2`` numbers) and differenced over the elements.
     """
-    t = nodes[None, :]
-    xi = nodes[:, None]
-    sl, s = _log_terms(t - xi)  # c = xi
-    A0 = sl - s
-    A1 = (0.5 * sl - 0.25 * s) * s + xi * A0
-    sl, s = _log_terms(t + xi)  # c = -xi
-    B0 = sl - s
-    A0 += B0
-    A1 += (0.5 * sl - 0.25 * s) * s
-    A1 -= xi * B0
-    sl, s = _log_terms(nodes)  # c = 0, weight -2 (the same in every row)
-    A0 -= 2.0 * (sl - s)
-    A1 -= 2.0 * (0.5 * sl - 0.25 * s) * s
+    n = nodes.size
+    t, xi = nodes[None, :], nodes[:, None]
+    A0, A1, s, sl = (np.empty((n, n)) for _ in range(4))
+    for c in (xi, -xi):
+        np.subtract(t, c, out=s)
+        np.abs(s, out=sl)
+        with np.errstate(divide="ignore"):
+            np.log(sl, out=sl)
+        sl[s == 0] = 0.0
+        sl *= s  # s ln|s|
+        if c is xi:
+            np.subtract(sl, s, out=A0)
+            np.multiply(sl, 0.5, out=A1)
+            A1 -= 0.25 * s
+            A1 *= s
+            A1 += c * A0
+        else:
+            sl -= s  # its A0
+            A0 += sl
+            A1 += c * sl
+            sl += s
+            sl *= 0.5
+            sl -= 0.25 * s
+            sl *= s
+            A1 += sl
+    s0l, s0 = _log_terms(nodes)  # c = 0, weight -2 (the same in every row)
+    A0 -= 2.0 * (s0l - s0)
+    A1 -= 2.0 * (0.5 * s0l - 0.25 * s0) * s0
     i0 = np.diff(A0, axis=1)  # int ln over each element, (nodes, elements)
     i1 = np.diff(A1, axis=1)  # int t ln
     a, b = nodes[:-1], nodes[1:]
-    left = (b * i0 - i1) / (b - a)  # phi_left = (b - t)/h
-    K = np.zeros((nodes.size, nodes.size))
-    K[:, :-1] = left
-    K[:, 1:] += i0 - left  # phi_right = 1 - phi_left
+    K = np.zeros((n, n))
+    left = K[:, :-1]
+    np.multiply(b, i0, out=left)
+    left -= i1
+    left /= b - a  # phi_left = (b - t)/h
+    i0 -= left
+    K[:, 1:] += i0  # phi_right = 1 - phi_left
     return K
 
 
