@@ -3,7 +3,11 @@
     python benchmarks/push.py
 
 Prints the best-of-3 wall time of ``push`` over 10,000 random points (the closed forms; the
-sliding inverse dominates), and over the same points the worst relative residuals of
+sliding pull-off search and the sliding inverse take most of it; target under 10 us per
+point, issue 22), then the pull-off search alone against the former one (a grid of 41
+closed forms per point refined by a secant, kept here as the reference: before/after), with
+the worst difference of the pull-off force between them, and over the same points the worst
+relative residuals of
 
 - Kendall's energy balance ``Q_roll H = R dw`` against the moment ``M - e F`` of the
   sliding solution at ``a_slide``;
@@ -21,6 +25,45 @@ import numpy as np
 
 import linecontact as lc
 from _common import best_of
+from linecontact import closed_forms as _cf
+from linecontact.sliding import pulloff as SP
+
+
+def grid_search(kap, r):
+    """The former pull-off search: Phi on 41 widths in ln abar, a secant around the least.
+
+    Returns the minimum of Phi = (2/pi) F/(E h2) and the zero-width Phi (flat arrays).
+    """
+    X1, X2, _ = SP._zero_width(kap, r)
+    phi0 = -0.5 * kap * (X1 + X2)
+    lab_hi = np.log(3.0 + 3.0 * kap)
+    labs = SP._LAB_LO + np.linspace(0.0, 1.0, 41)[:, None] * (lab_hi - SP._LAB_LO)[None, :]
+    G, P = labs.shape
+    ph, dph = SP._phi_at(labs.reshape(-1), np.tile(kap, G), np.tile(r, G))[:2]
+    ph, dph = ph.reshape(G, P), dph.reshape(G, P)
+    k = np.argmin(ph, axis=0)
+    cols = np.arange(P)
+    interior = (k > 0) & (k < G - 1)
+    kk = np.clip(k, 1, G - 2)
+    xp, fp = labs[kk - 1, cols], dph[kk - 1, cols]
+    x, fx = labs[kk + 1, cols], dph[kk + 1, cols]
+    lo, hi, phx = xp.copy(), x.copy(), ph[kk + 1, cols]
+    active = interior.copy()
+    for _ in range(100):
+        if not active.any():
+            break
+        i = np.flatnonzero(active)
+        nx = x[i] - fx[i] * (x[i] - xp[i]) / (fx[i] - fp[i])
+        ok = np.isfinite(nx) & (nx > lo[i]) & (nx < hi[i])
+        nx = np.where(ok, nx, 0.5 * (lo[i] + hi[i]))
+        pn, fn = SP._phi_at(nx, kap[i], r[i])[:2]
+        xp[i], fp[i], x[i], fx[i], phx[i] = x[i], fx[i], nx, fn, pn
+        up = fn > 0
+        hi[i] = np.where(up, nx, hi[i])
+        lo[i] = np.where(up, lo[i], nx)
+        stop = ~(np.abs(nx - xp[i]) > 1e-10 * np.maximum(1.0, np.abs(nx))) | (fn == 0)
+        active[i[stop]] = False
+    return np.where(interior & (phx < phi0), phx, phi0), phi0
 
 
 def sample(n: int, rng: np.random.Generator):
@@ -41,6 +84,16 @@ def main() -> None:
     rho, r, s, tau, F, H = sample(n, rng)
     t, p = best_of(lambda: lc.push(rho, r, s, tau, F, H, 0.5 * tau))
     print(f"push, {n} points (closed forms): {t:.3f} s ({1e6 * t / n:.1f} us/point)")
+    t_new, po = best_of(lambda: lc.sliding_pull_off(rho, r, s))
+    kap = _cf._kappa(rho, s)
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        t_old, (phi_grid, phi0) = best_of(lambda: grid_search(kap, r), repeat=1)
+    dF = np.abs(po.F_pulloff_over_Eh2 - np.pi / 2 * phi_grid) / np.abs(np.pi / 2 * phi0)
+    print(
+        f"  the sliding pull-off search: {1e6 * t_new / n:.1f} us/point (before, the 41-point "
+        f"grid: {1e6 * t_old / n:.1f} us/point); worst |F_pulloff - F_grid| / |F_zero_width|: "
+        f"{dF.max():.1e}"
+    )
     dw = s * (r - 1)
     # Kendall's Q_roll H = R dw against the moment of the steady contact's pressure about
     # the axis, M - e F, from the sliding solution at a_slide

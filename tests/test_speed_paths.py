@@ -5,7 +5,8 @@
 - The per-point iterations (``_numerics._iterate``) drop converged points: a batch with an
   extreme or unconvergeable point returns the other points as when each is alone.
 - The collocation solvers work on chunks of points (``sie._CHUNK_ELEMENTS``): any chunk size
-  gives the same results, to rounding.
+  gives the same results, to rounding. So do the vectorised closed forms (``sie._in_chunks``,
+  bounded memory for any number of points; issue 22).
 
 "To rounding", never bit for bit (README, "Same answers on every machine"): NumPy's SIMD loops
 for ``exp``/``log`` on arrays round differently from its scalar code on some CPUs (AVX-512),
@@ -358,6 +359,56 @@ def test_chunked_collocation_equals_unchunked(monkeypatch):
     for key, r in whole.items():
         for name, col in r.columns().items():
             _close(chunked[key].columns()[name], col, err_msg=f"{key}.{name}")
+
+
+def _closed_form_results():
+    """The vectorised closed forms on a few points (the loads from their pull-off up)."""
+    rng = np.random.default_rng(12)
+    m = 23
+    A = 10 ** rng.uniform(-4, np.log10(0.2), m)
+    rho = 10 ** rng.uniform(1, 4, m)
+    s = 10 ** rng.uniform(-4, np.log10(0.3), m)
+    r = 10 ** rng.uniform(-1, 1, m)
+    po = lc.pull_off(rho, s)
+    F = po.F_pulloff_over_Eh + 10 ** rng.uniform(-6, 1, m) * np.abs(po.F_pulloff_over_Eh)
+    F_unstable = 0.5 * (po.F_pulloff_over_Eh + po.F_zero_width_over_Eh)
+    spo = lc.sliding_pull_off(rho, r, s)
+    Fs = spo.F_pulloff_over_Eh2 + 10 ** rng.uniform(-6, 1, m) * np.abs(spo.F_pulloff_over_Eh2)
+    Fs[:3] = spo.F_pulloff_over_Eh2[:3] - 1.0  # below the pull-off force: reported
+    return dict(
+        normal=lc.normal_contact(A, rho, s),
+        pull_off=po,
+        for_load=lc.contact_for_load(F, rho, s),
+        for_load_unstable=lc.contact_for_load(
+            F_unstable, rho, s, branch="unstable", on_failure="report"
+        ),
+        sliding=lc.sliding_contact(A, rho, r, s),
+        sliding_pull_off=spo,
+        sliding_for_load=lc.sliding_contact_for_load(Fs, rho, r, s, on_failure="report"),
+    )
+
+
+def test_chunked_closed_forms_equal_unchunked(monkeypatch):
+    """The closed forms in chunks of 1 to 7 points give the results of one batch."""
+    whole = _closed_form_results()
+    for size in (1, 7):
+        monkeypatch.setattr(sie, "_CHUNK_ELEMENTS", size)
+        assert len(sie._chunks(23, 0)) == -(-23 // size)
+        chunked = _closed_form_results()
+        for key, r in whole.items():
+            for name, col in r.columns().items():
+                _close(chunked[key].columns()[name], col, err_msg=f"{key}.{name}")
+
+
+def test_in_chunks_joins_arrays_tuples_and_dicts(monkeypatch):
+    monkeypatch.setattr(sie, "_CHUNK_ELEMENTS", 3)
+    x = np.arange(10.0)
+    assert_array_equal(sie._in_chunks(lambda a, k: a * k, 10, x, 2.0), 2 * x)
+    a, b = sie._in_chunks(lambda a: (a + 1, a > 4), 10, x)
+    assert_array_equal(a, x + 1) and assert_array_equal(b, x > 4)
+    assert b.dtype == bool
+    d = sie._in_chunks(lambda a: {"m": np.where(a > 4, "snap-off", "zero-width")}, 10, x)
+    assert list(d["m"]) == ["zero-width"] * 5 + ["snap-off"] * 5
 
 
 def test_chunks_cover_the_points():

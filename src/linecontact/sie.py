@@ -105,6 +105,35 @@ def _chunks(size: int, n: int) -> list[slice]:
     return [slice(i, min(i + step, size)) for i in range(0, size, step)]
 
 
+def _in_chunks(kernel, size: int, *args):
+    """``kernel(*args)`` on the chunks of :func:`_chunks` ``(size, 0)`` of the points, joined.
+
+    For the closed forms, whose kernels hold a few hundred bytes per point while they work:
+    chunk by chunk their memory does not grow with the number of points, and their arrays
+    stay in cache. The arguments that are arrays of shape ``(size,)`` are cut into chunks,
+    the others passed whole; the kernel returns an array, a tuple or a dict of arrays of
+    its chunk's length, and so does this function, for all the points (a single chunk is
+    the kernel's own call). The points are independent, so the values are the kernel's.
+    """
+    parts = _chunks(size, 0)
+    if len(parts) <= 1:
+        return kernel(*args)
+    joined: dict = {}
+    kind: type = dict
+    for c in parts:
+        out = kernel(*(a[c] if np.shape(a) == (size,) else a for a in args))
+        if not isinstance(out, dict):
+            kind = tuple if isinstance(out, tuple) else np.ndarray
+            out = dict(enumerate(out)) if isinstance(out, tuple) else {0: out}
+        for k, v in out.items():
+            if k not in joined:
+                joined[k] = np.empty(size, dtype=np.asarray(v).dtype)
+            joined[k][c] = v
+    if kind is dict:
+        return joined
+    return tuple(joined.values()) if kind is not np.ndarray else joined[0]
+
+
 def _linalg():
     """``scipy.linalg``, imported on first use (not with the package, to keep it light)."""
     import scipy.linalg

@@ -31,7 +31,7 @@ from .._validation import (
 )
 from ..errors import ConvergenceError
 from ..results import Result, as_output
-from ..sie import SIZES, BoundedSolver, _chunks, log_end_moments
+from ..sie import SIZES, BoundedSolver, _chunks, _in_chunks, log_end_moments
 
 #: Collocation sizes tried by ``n="auto"``.
 _SIZES = SIZES[: SIZES.index(2048) + 1]
@@ -441,7 +441,10 @@ def normal_contact(
             else:
                 shape = A.shape
                 flat = (np.reshape(v, -1) for v in (A, rho, s))
-                u, C, F, res, stable = (v.reshape(shape) for v in _closed_form(*flat))
+                # in chunks of points: bounded memory for any number of them
+                u, C, F, res, stable = (
+                    v.reshape(shape) for v in _in_chunks(_closed_form, A.size, *flat)
+                )
                 ncol = np.zeros(shape, dtype=int)
                 cons = np.zeros(shape)
                 err = np.zeros(shape)

@@ -27,6 +27,7 @@ from .._validation import (
 )
 from ..errors import ConvergenceError, NoEquilibriumError
 from ..results import as_output
+from ..sie import _in_chunks
 from ._law import _check_law
 from .contact import NormalContact, _closed_form_from_u
 from .pulloff import _pulloff_arrays, pull_off
@@ -193,6 +194,21 @@ def contact_for_load(
     return _contact_for_load(F, rho, s, branch, policy, scalar)
 
 
+def _solve_on_branch(F, kap, phi_min, F0, us_solve, rho, us, stable: bool):
+    """a/R, c/R, the load found and the stability at the loads ``F`` on a branch.
+
+    Flat arrays (a chunk of the points, :func:`linecontact.sie._in_chunks`) or NumPy
+    scalars.
+    """
+    u = _solve_u_for_phi(F * (2 / np.pi), kap, phi_min, F0 * (2 / np.pi), us_solve, stable=stable)
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
+        return _closed_form_from_u(u, kap, rho, us)
+
+
+#: The parts of the pull-off that the inverse needs (:func:`_pulloff_arrays`).
+_PULLOFF_KEYS = ("F_minimum_over_Eh", "F_zero_width_over_Eh", "us", "kappa", "phi_min")
+
+
 def _contact_for_load(F, rho, s, branch: str, policy: str, scalar: bool, d=None):
     """The kernel of :func:`contact_for_load` (Dugdale): checked inputs, no check again.
 
@@ -202,7 +218,7 @@ def _contact_for_load(F, rho, s, branch: str, policy: str, scalar: bool, d=None)
     """
     report = policy == "report"
     if d is None:
-        d = _pulloff_arrays(rho, s, scalar)
+        d = _pulloff_arrays(rho, s, scalar, _PULLOFF_KEYS)
     Fmin, F0, us, kap = d["F_minimum_over_Eh"], d["F_zero_width_over_Eh"], d["us"], d["kappa"]
     F_asked = F
     if branch == "stable":
@@ -240,16 +256,10 @@ def _contact_for_load(F, rho, s, branch: str, policy: str, scalar: bool, d=None)
     us_solve = np.where(bad & ~np.isfinite(us), 1.0, us) if branch == "unstable" else us
     Fs, rs = _num._scalars(F, rho) if scalar else (F.reshape(-1), rho.reshape(-1))
     flat = (lambda v: np.float64(v)) if scalar else (lambda v: np.reshape(v, -1))
-    u = _solve_u_for_phi(
-        Fs * (2 / np.pi),
-        flat(kap),
-        flat(d["phi_min"]),
-        flat(F0) * (2 / np.pi),
-        flat(us_solve),
-        stable=branch == "stable",
-    )
-    with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
-        A, C, Fc, stable = _closed_form_from_u(u, flat(kap), rs, flat(us))
+    args = (Fs, flat(kap), flat(d["phi_min"]), flat(F0), flat(us_solve), rs, flat(us))
+    solve = functools.partial(_solve_on_branch, stable=branch == "stable")
+    # in chunks of points: bounded memory for any number of them
+    A, C, Fc, stable = solve(*args) if scalar else _in_chunks(solve, Fs.size, *args)
     if not scalar:
         A, C, Fc, stable = (v.reshape(F.shape) for v in (A, C, Fc, stable))
     Fv, rv = (Fs, rs) if scalar else (F, rho)

@@ -6,6 +6,7 @@ per parameter point on the closed form of :mod:`linecontact.normal.contact`.
 
 from __future__ import annotations
 
+import functools
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
@@ -20,6 +21,7 @@ from .._validation import (
     scalar_or_array,
 )
 from ..results import Result, as_output
+from ..sie import _in_chunks
 from ._law import _check_law
 from .contact import _ustar
 
@@ -83,19 +85,26 @@ class PullOff(Result):
     maugis_parameter: NDArray | float
 
 
-def _pulloff_arrays(rho: NDArray, s: NDArray, scalar: bool = False):
-    """:func:`_pulloff_flat` at arrays of any shape, or at NumPy scalars (``scalar``)."""
+def _pulloff_arrays(rho: NDArray, s: NDArray, scalar: bool = False, keys=None):
+    """:func:`_pulloff_flat` at arrays of any shape, or at NumPy scalars (``scalar``).
+
+    ``keys``: the entries wanted (all by default); the arrays are computed in chunks of
+    points (bounded memory for any number of them).
+    """
     if scalar:
         return _pulloff_flat(*_num._scalars(rho, s))
     shape = np.shape(rho)
-    rho = np.atleast_1d(rho).astype(float).reshape(-1)
-    s = np.atleast_1d(s).astype(float).reshape(-1)
-    d = _pulloff_flat(rho, s)
+    rho = np.asarray(rho, dtype=float).reshape(-1)
+    s = np.asarray(s, dtype=float).reshape(-1)
+    d = _in_chunks(functools.partial(_pulloff_flat, keys=keys), rho.size, rho, s)
     return {k: np.reshape(v, shape) for k, v in d.items()}
 
 
-def _pulloff_flat(rho: NDArray, s: NDArray):
-    """Pull-off at flat arrays or NumPy scalars (elementwise; see _numerics._where)."""
+def _pulloff_flat(rho: NDArray, s: NDArray, keys=None):
+    """Pull-off at flat arrays or NumPy scalars (elementwise; see _numerics._where).
+
+    ``keys``: the entries of the dict returned (all by default).
+    """
     where = _num._where
     kap = _cf._kappa(rho, s)
     F0 = _cf._zero_width(rho, s)
@@ -118,7 +127,7 @@ def _pulloff_flat(rho: NDArray, s: NDArray):
     snap = (F_min < F0) & (
         (A_min >= SNAP_OFF_MIN_WIDTH_OVER_H / rho) | (F0 - F_min > ZERO_WIDTH_LOAD_RTOL * abs(F0))
     )
-    return dict(
+    d = dict(
         F_pulloff_over_Eh=F_min,
         a_over_R_at_pulloff=A_min,
         c_over_R_at_pulloff=where(A_min > 0, C_min, zero_c),
@@ -130,6 +139,7 @@ def _pulloff_flat(rho: NDArray, s: NDArray):
         us=us,
         phi_min=phi_min,
     )
+    return d if keys is None else {k: d[k] for k in keys}
 
 
 def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugdale") -> Any:

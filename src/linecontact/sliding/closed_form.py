@@ -20,10 +20,16 @@ def _f1(u):
     """
     small = u < 0.5
     if isinstance(small, np.ndarray):
-        us = np.where(small, u, 0.0)
+        if not small.any():  # (the usual batch: one branch, the same values as np.where's)
+            with np.errstate(over="ignore"):
+                return 0.5 * np.sinh(2 * u) - u
+        if small.all():
+            return _cf._f1_series(u)
         ub = np.where(small, 1.0, u)
         with np.errstate(over="ignore"):
-            return np.where(small, _cf._f1_series(us), 0.5 * np.sinh(2 * ub) - ub)
+            out = 0.5 * np.sinh(2 * ub) - ub
+        out[small] = _cf._f1_series(u[small])  # (the series where it is taken only)
+        return out
     if small:
         return _cf._f1_series(u)
     if u < 350.0:  # sinh(2u) is finite (and no errstate is needed, ~1.5 us each)
@@ -53,17 +59,26 @@ def _cf_parts(u1, u2):
 
 def _cf_eval(ab, kap, r, u1, u2):
     """Residuals E1 (over h1), E2 (over h2) and the 2x2 Jacobian in (u1, u2)."""
-    G1, G2, dG1, dG2, _ = _cf_parts(u1, u2)
+    return _cf_eval_parts(ab, kap, r, u1, u2)[:6]
+
+
+def _cf_eval_parts(ab, kap, r, u1, u2):
+    """:func:`_cf_eval` and the pieces the slope along the branch needs (:func:`_cf_slope`).
+
+    Returns ``E1, E2, J11, J12, J21, J22, (f1(u1), f1(u2), G1, G2, Sb)``.
+    """
+    G1, G2, dG1, dG2, Sb = _cf_parts(u1, u2)
     a2 = ab * ab
-    E1 = (a2 * _f1(u1) + kap * ab * G1) / r - 1
-    E2 = a2 * _f1(u2) + kap * ab * G2 - 1
+    f11, f12 = _f1(u1), _f1(u2)
+    E1 = (a2 * f11 + kap * ab * G1) / r - 1
+    E2 = a2 * f12 + kap * ab * G2 - 1
     # (sh * sh, not sh ** 2: a NumPy scalar's power is pow(), not always the product)
     sh1, sh2 = np.sinh(u1), np.sinh(u2)
     J11 = (a2 * 2 * (sh1 * sh1) + kap * ab * dG1[0]) / r
     J12 = kap * ab * dG1[1] / r
     J21 = kap * ab * dG2[0]
     J22 = a2 * 2 * (sh2 * sh2) + kap * ab * dG2[1]
-    return E1, E2, J11, J12, J21, J22
+    return E1, E2, J11, J12, J21, J22, (f11, f12, G1, G2, Sb)
 
 
 def _initial_u(ab, kap, r):
@@ -174,14 +189,22 @@ def _newton2(evaluate, u1, u2, params, *, nextra=0, maxiter=60, tol=1e-15, floor
     return u1, u2, abs(E1), abs(E2), tuple(rest[4 : 4 + nextra])
 
 
-def _closed_form(A, rho, r, s, u1=None, u2=None):
-    """u1, u2 and residuals of the closed-form separation conditions, flat arrays."""
+def _closed_form(A, rho, r, s, u1=None, u2=None, *, slope=False):
+    """u1, u2 and residuals of the closed-form separation conditions, flat arrays.
+
+    With ``slope`` also ``(dPhi/dabar, du1/dabar, du2/dabar)`` at the solution
+    (:func:`_cf_slope`, from Newton's last evaluation there: the same values, one
+    evaluation fewer).
+    """
     ab = A * np.sqrt(rho / 2)
     kap = _cf._kappa(rho, s)
     if u1 is None or u2 is None:
         u1, u2 = _initial_u(ab, kap, r)
-    u1, u2, e1, e2, _ = _newton2(_cf_evaluate, u1, u2, (ab, kap, r))
-    return u1, u2, e1, e2
+    if not slope:
+        u1, u2, e1, e2, _ = _newton2(_cf_evaluate, u1, u2, (ab, kap, r))
+        return u1, u2, e1, e2
+    u1, u2, e1, e2, ev = _newton2(_cf_evaluate_parts, u1, u2, (ab, kap, r), nextra=9)
+    return u1, u2, e1, e2, _cf_slope(ab, kap, r, u1, u2, (*ev[:4], ev[4:]))
 
 
 def _cf_evaluate(u1, u2, ab, kap, r):
@@ -189,26 +212,50 @@ def _cf_evaluate(u1, u2, ab, kap, r):
     return _cf_eval(ab, kap, r, u1, u2)
 
 
+def _cf_evaluate_parts(u1, u2, ab, kap, r):
+    """:func:`_cf_eval_parts` for :func:`_newton2`: the Jacobian and the pieces as extras."""
+    E1, E2, J11, J12, J21, J22, parts = _cf_eval_parts(ab, kap, r, u1, u2)
+    return E1, E2, J11, J12, J21, J22, J11, J12, J21, J22, *parts
+
+
 def _cf_outputs(A, rho, r, s, u1, u2):
     """e, F, M, dF/da from u1, u2 (closed form; also used for the stability of any method)."""
     ab = A * np.sqrt(rho / 2)
     kap = _cf._kappa(rho, s)
     ecc = (2 * s / np.pi) * (u1 - u2)
-    sh1, sh2 = np.sinh(u1), np.sinh(u2)
-    F = (np.pi / 2) * (ab * ab - kap * ab * 0.5 * (sh1 + sh2))
+    F = _cf_load(ab, kap, u1, u2)
     # M = (sigma0 a^2 / 4)(sinh 2u1 - sinh 2u2) = sigma0 a^2 cosh(2 sigma) sinh(2 delta) / 2
     M = 0.5 * s * A * A * rho * np.cosh(u1 + u2) * np.sinh(u1 - u2)
-    # dF/d(abar) along the branch: implicit differentiation of the separation conditions
-    G1, G2, dG1, dG2, Sb = _cf_parts(u1, u2)
-    _, _, J11, J12, J21, J22 = _cf_eval(ab, kap, r, u1, u2)
-    b1 = (2 * ab * _f1(u1) + kap * G1) / r
-    b2 = 2 * ab * _f1(u2) + kap * G2
+    dPhi, _, _ = _cf_slope(ab, kap, r, u1, u2)
+    return ecc, F, M, dPhi
+
+
+def _cf_load(ab, kap, u1, u2):
+    """F/(E h2) = (pi/2)(abar^2 - kappa abar (sinh u1 + sinh u2)/2) (closed form)."""
+    sh1, sh2 = np.sinh(u1), np.sinh(u2)
+    return (np.pi / 2) * (ab * ab - kap * ab * 0.5 * (sh1 + sh2))
+
+
+def _cf_slope(ab, kap, r, u1, u2, ev=None):
+    """dPhi/dabar along the branch and du1/dabar, du2/dabar (flat arrays or NumPy scalars).
+
+    Implicit differentiation of the closed-form separation conditions at a solution
+    ``(u1, u2)`` at ``abar``; ``Phi = (2/pi) F/(E h2)``. The tangent also predicts the
+    solution at a nearby width (the pull-off and load searches start Newton there).
+    ``ev``: ``(J11, J12, J21, J22, parts)`` of :func:`_cf_eval_parts` at this point, where
+    the caller has them.
+    """
+    if ev is None:
+        ev = _cf_eval_parts(ab, kap, r, u1, u2)[2:]
+    J11, J12, J21, J22, (f11, f12, G1, G2, Sb) = ev
+    b1 = (2 * ab * f11 + kap * G1) / r
+    b2 = 2 * ab * f12 + kap * G2
     det = J11 * J22 - J12 * J21
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         du1 = -(b1 * J22 - b2 * J12) / det
         du2 = -(b2 * J11 - b1 * J21) / det
         dPhi = 2 * ab - kap * Sb - kap * ab * 0.5 * (np.cosh(u1) * du1 + np.cosh(u2) * du2)
-    return ecc, F, M, dPhi
+    return dPhi, du1, du2
 
 
 def _cf_coefficients(A, s, u1, u2, n):

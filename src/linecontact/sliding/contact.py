@@ -28,7 +28,7 @@ from .._validation import (
 )
 from ..errors import ConvergenceError
 from ..results import Result, as_output
-from ..sie import BoundedSolution, BoundedSolver
+from ..sie import BoundedSolution, BoundedSolver, _in_chunks
 from ._checks import _check_common, _check_method
 from .closed_form import _cf_coefficients, _cf_outputs, _closed_form
 from .collocation import _SIZES, _collocation
@@ -300,6 +300,16 @@ def _solve_flat(A, rho, r, s, method, n, tol, u_guess=None):
     return d
 
 
+def _solve_closed_form(A, rho, r, s, u1=None, u2=None):
+    """:func:`_solve_flat` by the closed form, Newton started from ``u1, u2`` if given.
+
+    A kernel for :func:`linecontact.sie._in_chunks` (flat arrays of the points, or NumPy
+    scalars).
+    """
+    guess = None if u1 is None or u2 is None else (u1, u2)
+    return _solve_flat(A, rho, r, s, "closed-form", "auto", 1e-12, u_guess=guess)
+
+
 def _solve_split(A, rho, r, s, n, tol, closed, u_guess):
     """Collocation at flat arrays, but the closed form at the points ``closed``.
 
@@ -466,5 +476,8 @@ def sliding_contact(
     # a contact half-width far outside the solvers' range overflows on the way; _pack's
     # convergence check reports it
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-        d = _solve_flat(A, rho, r, s, method, n, tol)
+        if method == "closed-form":  # in chunks of points: bounded memory for any number
+            d = _in_chunks(_solve_closed_form, np.size(A), A, rho, r, s)
+        else:
+            d = _solve_flat(A, rho, r, s, method, n, tol)
         return _pack(d, A, rho, r, s, tau, method, shape, scalar, policy, "sliding_contact")

@@ -24,8 +24,9 @@ from .._validation import (
     scalar_or_array,
 )
 from ..errors import NoEquilibriumError
+from ..sie import _in_chunks
 from ._checks import _check_common, _check_method
-from .contact import SlidingContact, _pack, _solve_flat, _solve_split
+from .contact import SlidingContact, _pack, _solve_closed_form, _solve_split
 from .pulloff import _LAB_DEEP, _phi_at, _pulloff_flat
 
 
@@ -116,25 +117,30 @@ def _lower_end(F, rho, r, s, kap, phi_t, report: bool = False, ends=None):
     return lab_lo, phi_t, missing, phi_po
 
 
-def _double_step(lab, ph, phi_t, kap, r):
-    """Double abar until the load at it exceeds the target (the upper end of the bracket)."""
-    lab = lab + np.log(2.0)
-    ph, _, _, _ = _phi_at(lab, kap, r)
-    return (lab, ph), ~(ph < phi_t)
+def _double_step(lab, ph, dph, u1, u2, du1, du2, phi_t, kap, r):
+    """Double abar until the load at it exceeds the target (the upper end of the bracket).
+
+    The state is :func:`_phi_at`'s at ``lab`` (each point solved from the tangent at the
+    last).
+    """
+    nxt = lab + np.log(2.0)
+    ph, dph, u1, u2, du1, du2 = _phi_at(nxt, kap, r, (lab, u1, u2, du1, du2))
+    return (nxt, ph, dph, u1, u2, du1, du2), ~(ph < phi_t)
 
 
-def _load_step(lab, lo, hi, u1, u2, phi_t, pmin, kap, r):
+def _load_step(lab, ph, dph, u1, u2, du1, du2, lo, hi, phi_t, pmin, kap, r):
     """One bracketed Newton step in ln abar of Phi(abar) = phi_t along the stable branch.
 
     Newton on ``ln(Phi - pmin) = ln(phi_t - pmin)`` (``pmin`` the load at the lower end),
     which is exact for Hertz (``Phi = abar^2``) and takes loads many decades above the
     lower end in a few steps; on ``Phi - phi_t`` where a difference is not positive.
-    Also returns the u1, u2 of the closed form at the point evaluated (a done point keeps
-    that point, so they belong to the returned ln abar).
+    The state holds :func:`_phi_at`'s solution at ``lab`` (Phi, its slope, u1, u2 and their
+    slopes): a point that is done keeps it, so u1, u2 belong to the returned ln abar;
+    the others are solved at the next ln abar from the tangent there (the points still
+    active only).
     """
     where = _num._where
     mx = _num._maximum
-    ph, dph, u1, u2 = _phi_at(lab, kap, r)
     fx = ph - phi_t
     up = fx > 0
     hi = where(up, lab, hi)
@@ -155,7 +161,38 @@ def _load_step(lab, lo, hi, u1, u2, phi_t, pmin, kap, r):
         | (abs(nxt - lab) <= 1e-15 * mx(1.0, abs(lab)))
         | (hi - lo <= 1e-15 * mx(1.0, abs(hi)))
     )
-    return (where(done, lab, nxt), lo, hi, u1, u2), done
+    state = [lab, ph, dph, u1, u2, du1, du2]
+    if not isinstance(done, np.ndarray):
+        if not done:
+            state = [nxt, *_phi_at(nxt, kap, r, tuple(state[i] for i in (0, 3, 4, 5, 6)))]
+    else:
+        go = np.flatnonzero(~done)
+        if go.size:
+            state = [np.array(v) for v in state]
+            start = tuple(state[i][go] for i in (0, 3, 4, 5, 6))
+            new = (nxt[go], *_phi_at(nxt[go], kap[go], r[go], start))
+            for v, w in zip(state, new, strict=True):
+                v[go] = w
+    return (*state, lo, hi), done
+
+
+def _at_domain_end(near, a_min, rho, kap, r):
+    """Phi, u1, u2 at the domain's end ``a/R = a_min``, at the points ``near`` (NaN elsewhere).
+
+    Flat arrays or NumPy scalars (``near`` a bool then).
+    """
+    lab = np.log(a_min * np.sqrt(rho / 2))
+    if not isinstance(near, np.ndarray):
+        if not near:
+            return np.float64(np.nan), np.float64(np.nan), np.float64(np.nan)
+        ph, _, u1, u2, _, _ = _phi_at(lab, kap, r)
+        return ph, u1, u2
+    out = np.full((3, near.size), np.nan)
+    i = np.flatnonzero(near)
+    if i.size:
+        ph, _, u1, u2, _, _ = _phi_at(lab[i], kap[i], r[i])
+        out[:, i] = ph, u1, u2
+    return out[0], out[1], out[2]
 
 
 def sliding_contact_for_load(
@@ -247,63 +284,28 @@ def _sliding_for_load(F, rho, r, s, tau, method, n, tol, policy, shape, scalar, 
     Flat float arrays (or NumPy scalars with ``scalar``) of the broadcast inputs, kappa
     within range; ``ends`` the lower end of the stable branch at these points
     (:func:`_sliding_ends`, indexed like them) where the caller has it, else it is searched
-    here. Returns the :class:`SlidingContact` of shape ``shape``.
+    here. Returns the :class:`SlidingContact` of shape ``shape``. The closed forms work on
+    chunks of points (:func:`linecontact.sie._in_chunks`: bounded memory).
     """
     report = policy == "report"
-    kap = _cf._kappa(rho, s)
-    phi_t = F * (2 / np.pi)
-    # as in sliding_pull_off: far from h1 = h2 the search overflows on the way; the
-    # convergence check of the state found reports a failure
-    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-        # lower end of the stable branch and its load
-        lab_lo, phi_t, missing, phi_lo = _lower_end(F, rho, r, s, kap, phi_t, report, ends)
-        # upper end: where Phi exceeds the target (Hertz: Phi >= abar^2 - kappa abar sinh ...)
-        lab_hi = np.log(np.sqrt(_num._maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
-        ph_hi, _, _, _ = _phi_at(lab_hi, kap, r)
-        (lab_hi, _), _ = _num._iterate(
-            _double_step, (lab_hi, ph_hi), (phi_t, kap, r), 60, done=~(ph_hi < phi_t)
+    lo_end, po_end = (None, None) if ends is None else ends
+    args = (F, rho, r, s, report, lo_end, po_end)
+    A, u1, u2, missing = _widths(*args) if scalar else _in_chunks(_widths, F.size, *args)
+    if not scalar or method != "closed-form":  # the collocation works on arrays
+        A, rho, r, s, tau, u1, u2, F, missing = (
+            np.reshape(v, -1) for v in (A, rho, r, s, tau, u1, u2, F, missing)
         )
-        # bracketed Newton in ln abar on [lab_lo, lab_hi], where Phi increases
-        lab = 0.5 * (lab_lo + lab_hi)
-        zero = 0.0 * lab
-        (lab, _, _, u1, u2), _ = _num._iterate(
-            _load_step, (lab, lab_lo, lab_hi, zero, zero), (phi_t, phi_lo, kap, r), 200
-        )
-        A = np.exp(lab) * np.sqrt(2 / rho)
-        # narrower than the domain of sliding_contact: the load there is the zero-width one
-        # to round-off (kept at the domain's end), or the point is refused (A = 0 below).
-        # Where the stable branch starts at zero width (or at a minimum within 1e-12 of the
-        # zero-width load), a load that the domain's end already carries to 1e-12 is the
-        # zero-width state too: the load rises like a^2 from there, so the width that Newton
-        # finds for it (anywhere below ~1e-7 R) is set by the last bits of the load, which
-        # differ between machines, and the collocation cannot resolve such widths. The state
-        # at the domain's end is the answer on every machine (docs/sliding.md, "Loads at the
-        # zero-width end").
-        a_min = _domain.DOMAIN["sliding_a_over_R"][0]
-        ph_f, _, u1f, u2f = _phi_at(np.log(a_min * np.sqrt(rho / 2)), kap, r)
-        scale = _num._maximum(abs(phi_t), abs(phi_lo))
-        ok = abs(ph_f - phi_t) <= 1e-12 * scale
-        zero_end = (s > 0) & (abs(ph_f - phi_lo) <= 1e-12 * scale)
-        narrow = ((A < a_min) | (ok & zero_end)) & ~missing
-        if np.any(narrow):
-            where = _num._where
-            # (without adhesion the width found is Hertz's and is said; else it is < a_min)
-            A = where(narrow, where(ok, a_min, where(s == 0, A, 0.0)), A)
-            u1, u2 = where(narrow, u1f, u1), where(narrow, u2f, u2)
-        if not scalar or method != "closed-form":  # the collocation works on arrays
-            A, rho, r, s, tau, u1, u2, F, missing = (
-                np.reshape(v, -1) for v in (A, rho, r, s, tau, u1, u2, F, missing)
-            )
     _domain.check_widths(
         np.where(missing, np.nan, A), F, "F_over_Eh2", "sliding_a_over_R", narrow=True
     )
     _cf._warn_wide(np.where(missing, np.nan, A))
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):  # see sliding_contact
         if method == "closed-form":
-            dd = _solve_flat(A, rho, r, s, method, n, tol, u_guess=(u1, u2))
+            dd = _in_chunks(_solve_closed_form, np.size(A), A, rho, r, s, u1, u2)
         else:
             # the zero-width states (A at the domain's end, above) are the closed form's:
             # no collocation resolves a contact 1e20 times narrower than its adhesive zones
+            a_min = _domain.DOMAIN["sliding_a_over_R"][0]
             dd = _solve_split(A, rho, r, s, n, tol, (A <= a_min) & (s > 0), (u1, u2))
         return _pack(
             dd,
@@ -320,3 +322,54 @@ def _sliding_for_load(F, rho, r, s, tau, method, n, tol, policy, shape, scalar, 
             missing,
             F,
         )
+
+
+def _widths(F, rho, r, s, report, lo_end=None, po_end=None):
+    """The half-widths that carry the loads ``F``, by the closed form: ``A, u1, u2, missing``.
+
+    Flat arrays (a chunk of the points) or NumPy scalars; ``lo_end, po_end`` are
+    :func:`_pulloff_end`'s result at these points where the caller has it (else None).
+    ``missing`` marks the loads below the pull-off force (with ``report``; else they raise).
+    """
+    kap = _cf._kappa(rho, s)
+    phi_t = F * (2 / np.pi)
+    ends = None if lo_end is None else (lo_end, po_end)
+    # as in sliding_pull_off: far from h1 = h2 the search overflows on the way; the
+    # convergence check of the state found reports a failure
+    with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+        # lower end of the stable branch and its load
+        lab_lo, phi_t, missing, phi_lo = _lower_end(F, rho, r, s, kap, phi_t, report, ends)
+        # upper end: where Phi exceeds the target (Hertz: Phi >= abar^2 - kappa abar sinh ...)
+        lab_hi = np.log(np.sqrt(_num._maximum(phi_t, 0.0)) + 2.0 + 2.0 * kap)
+        at_hi = (lab_hi, *_phi_at(lab_hi, kap, r))
+        at_hi, _ = _num._iterate(_double_step, at_hi, (phi_t, kap, r), 60, done=~(at_hi[1] < phi_t))
+        # bracketed Newton in ln abar on [lab_lo, lab_hi], where Phi increases, from lab_hi
+        state = (*at_hi, lab_lo + 0.0 * at_hi[0], at_hi[0])
+        (lab, _, _, u1, u2, _, _, _, _), _ = _num._iterate(
+            _load_step, state, (phi_t, phi_lo, kap, r), 200
+        )
+        A = np.exp(lab) * np.sqrt(2 / rho)
+        # narrower than the domain of sliding_contact: the load there is the zero-width one
+        # to round-off (kept at the domain's end), or the point is refused (A = 0 below).
+        # Where the stable branch starts at zero width (or at a minimum within 1e-12 of the
+        # zero-width load), a load that the domain's end already carries to 1e-12 is the
+        # zero-width state too: the load rises like a^2 from there, so the width that Newton
+        # finds for it (anywhere below ~1e-7 R) is set by the last bits of the load, which
+        # differ between machines, and the collocation cannot resolve such widths. The state
+        # at the domain's end is the answer on every machine (docs/sliding.md, "Loads at the
+        # zero-width end").
+        a_min = _domain.DOMAIN["sliding_a_over_R"][0]
+        scale = _num._maximum(abs(phi_t), abs(phi_lo))
+        # the state at the domain's end, where it can matter: below it, or at a target
+        # within 2e-12 of the lower end's load (ok & zero_end below imply that)
+        near = (A < a_min) | ((s > 0) & (abs(phi_t - phi_lo) <= 2e-12 * scale))
+        ph_f, u1f, u2f = _at_domain_end(near, a_min, rho, kap, r)
+        ok = abs(ph_f - phi_t) <= 1e-12 * scale
+        zero_end = (s > 0) & (abs(ph_f - phi_lo) <= 1e-12 * scale)
+        narrow = ((A < a_min) | (ok & zero_end)) & ~missing
+        if np.any(narrow):
+            where = _num._where
+            # (without adhesion the width found is Hertz's and is said; else it is < a_min)
+            A = where(narrow, where(ok, a_min, where(s == 0, A, 0.0)), A)
+            u1, u2 = where(narrow, u1f, u1), where(narrow, u2f, u2)
+    return A, u1, u2, missing

@@ -24,8 +24,9 @@ from .._validation import (
 from ..errors import ConvergenceError
 from ..normal import ZERO_WIDTH_LOAD_RTOL
 from ..results import Result, as_output
+from ..sie import _in_chunks
 from ._checks import _check_common
-from .closed_form import _cf_outputs, _closed_form, _newton2
+from .closed_form import _cf_load, _closed_form, _newton2
 
 #: As :data:`linecontact.normal.SNAP_OFF_MIN_WIDTH_OVER_H`: the pull-off is a snap-off when
 #: the contact half-width at the load minimum is at least this many times the shorter of the
@@ -91,19 +92,50 @@ def _zero_width(kap, r):
     return X1, X2, np.maximum(e1, e2)
 
 
-def _phi_at(lab, kap, r):
-    """Phi = (2/pi) F/(E h2), dPhi/dabar, u1, u2 at abar = exp(lab) (closed form).
+def _phi_at(lab, kap, r, start=None):
+    """Phi = (2/pi) F/(E h2), dPhi/dabar, u1, u2, du1/dabar, du2/dabar at abar = exp(lab).
 
-    Flat arrays or NumPy scalars. Each call starts from the symmetric guesses (robust; warm
-    starts from a distant abar can lead Newton astray).
+    Flat arrays or NumPy scalars (the closed form). Without ``start`` Newton starts from the
+    symmetric guesses (robust from anywhere). ``start = (lab0, u1, u2, du1, du2)`` is this
+    function's own solution and tangent at a nearby ``lab0``: Newton then starts from the
+    tangent's prediction (a step or two instead of the symmetric guesses' search), and a
+    point where that misses (a separation residual above 1e-12) is solved again from the
+    symmetric guesses, so a start changes the solution by round-off at most.
     """
     ab = np.exp(lab)
     one = _num._full(ab, 1.0)  # the closed form depends on abar and kappa only: R/h2 = 1
     A = ab * np.sqrt(2.0)
     s = kap * (np.pi / 4) / np.sqrt(2.0)
-    u1, u2, _, _ = _closed_form(A, one, r, s)
-    _, F, _, dphi = _cf_outputs(A, one, r, s, u1, u2)
-    return F * (2 / np.pi), dphi, u1, u2
+    if start is None:
+        u1, u2, _, _, sl = _closed_form(A, one, r, s, slope=True)
+    else:
+        u1, u2, e1, e2, sl = _closed_form(A, one, r, s, *_predict(lab, *start), slope=True)
+        miss = ~(_num._maximum(e1, e2) <= 1e-12)
+        if not isinstance(miss, np.ndarray):
+            if miss:
+                u1, u2, _, _, sl = _closed_form(A, one, r, s, slope=True)
+        elif miss.any():
+            i = np.flatnonzero(miss)
+            u1[i], u2[i], _, _, sli = _closed_form(A[i], one[i], r[i], s[i], slope=True)
+            for v, w in zip(sl, sli, strict=True):
+                v[i] = w
+    # as _cf_outputs computes the load (the same arithmetic, the same bits)
+    F = _cf_load(A * np.sqrt(one / 2), _cf._kappa(one, s), u1, u2)
+    return F * (2 / np.pi), *sl[:1], u1, u2, *sl[1:]
+
+
+def _predict(lab, lab0, u1, u2, du1, du2):
+    """The tangent's prediction of ``u1, u2`` at ``lab`` from the solution at ``lab0``.
+
+    Linear in ``ln abar`` (``u ~ -ln abar`` as the width vanishes); where the prediction is
+    not finite or falls below half the known ``u``, the known ``u`` itself.
+    """
+    where = _num._where
+    h = (lab - lab0) * np.exp(lab0)
+    g1, g2 = u1 + h * du1, u2 + h * du2
+    ok1 = (abs(g1) < np.inf) & (g1 > 0.5 * u1)
+    ok2 = (abs(g2) < np.inf) & (g2 > 0.5 * u2)
+    return where(ok1, g1, u1), where(ok2, g2, u2)
 
 
 _LAB_LO = np.log(1e-9)  # abar below which the load is indistinguishable from its a -> 0 limit
@@ -112,83 +144,125 @@ _LAB_LO = np.log(1e-9)  # abar below which the load is indistinguishable from it
 _LAB_DEEP = -300.0  # the lower end of a contact-for-load bracket at a zero-width minimum
 
 
-_GRID = np.linspace(0.0, 1.0, 41)  # the grid in ln abar that brackets the load minimum
+#: Where the load is the zero-width load to this fraction of it, and its slope is below
+#: this fraction of the size of its terms (``2 abar`` and ``kappa (cosh u1 + cosh u2)(1 +
+#: abar)``, as in :func:`linecontact.sliding.contact._stable`), the load is flat to
+#: round-off: as the width vanishes the slope is lost in the cancellation of its terms, and
+#: any width there carries the minimum load to round-off (the search stops).
+_FLAT = 1e-14
+
+#: ... and anywhere, a slope below this fraction of the size of its terms is zero to
+#: round-off: the width is at the minimum to round-off.
+_NOISE = 4e-16
 
 
-def _phi_grid(labs, kap, r):
-    """Phi and dPhi/dabar on the grid ``labs`` (grid, points), as one batch per chunk.
+def _flat(lab, dphi, ph, phi0, kap, u1, u2):
+    """Whether the load is flat to round-off at ``lab`` (see :data:`_FLAT`)."""
+    ab = np.exp(lab)
+    scale = 2 * ab + kap * (np.cosh(u1) + np.cosh(u2)) * (1 + ab)
+    return (~(abs(dphi) > _FLAT * scale) & ~(abs(ph - phi0) > _FLAT * abs(phi0))) | ~(
+        abs(dphi) > _NOISE * scale
+    )
 
-    The grid values of a few points at a time are solved together (a scalar call evaluates
-    its 41 grid values in one vectorised solve instead of 41 scalar ones).
+
+def _guess(kap, r, lab_hi):
+    """A start for the minimum: the wider of the two symmetric minima (ranges h2 and h1).
+
+    The minimum of the sliding load lies near the wider of the load minima of the normal
+    contacts with the leading and the trailing range (found in closed form, a bracketed
+    root per point); without adhesion, or beyond the search's ends, it is clipped to them.
     """
-    G, P = labs.shape
-    phis = np.empty((G, P))
-    dphis = np.empty((G, P))
-    step = max(1, (1 << 16) // G)
-    for c in range(0, P, step):
-        sl = slice(c, min(c + step, P))
-        m = sl.stop - sl.start
-        ph, dph, _, _ = _phi_at(
-            labs[:, sl].reshape(-1),
-            np.broadcast_to(kap[sl], (G, m)).reshape(-1),
-            np.broadcast_to(r[sl], (G, m)).reshape(-1),
-        )
-        phis[:, sl] = ph.reshape(G, m)
-        dphis[:, sl] = dph.reshape(G, m)
-    return phis, dphis
+    sr = np.sqrt(r)
+    if isinstance(kap, np.ndarray):
+        k = np.where(kap > 0, kap, 1.0)
+        kk = np.concatenate([k, k / sr])
+        ab = _cf._branch_point(_cf._u_stationary(kk), kk)["abar"]
+        lab2, lab1 = np.log(ab[: k.size]), np.log(ab[k.size :] * sr)
+    else:
+        k = kap if kap > 0 else np.float64(1.0)
+        lab2 = np.log(_cf._branch_point(_cf._u_stationary(k), k)["abar"])
+        lab1 = np.log(_cf._branch_point(_cf._u_stationary(k / sr), k / sr)["abar"] * sr)
+    g = _num._maximum(lab1, lab2)
+    g = _num._where(g == g, g, 0.5 * (_LAB_LO + lab_hi))
+    return _num._minimum(_num._maximum(g, _LAB_LO), lab_hi)
 
 
-def _secant_step(xp, fp, x, fx, lo, hi, ph, kap, r):
-    """One step of the secant on dPhi inside its bracket (bisection otherwise), per point."""
-    where = _num._where
-    nx = x - fx * (x - xp) / (fx - fp)
-    ok = (abs(nx) < np.inf) & (nx > lo) & (nx < hi)
-    nx = where(ok, nx, 0.5 * (lo + hi))
-    ph, fn, _, _ = _phi_at(nx, kap, r)
-    xp, fp, x, fx = x, fx, nx, fn
-    up = fx > 0
-    hi = where(up, x, hi)
-    lo = where(up, lo, x)
-    stop = ~(abs(x - xp) > 1e-10 * _num._maximum(1.0, abs(x))) | (fx == 0)
-    return (xp, fp, x, fx, lo, hi, ph), stop
+def _minimum_step(x0, D0, x, D, lo, hi, nlo, nhi, ph, u1, u2, du1, du2, kap, r, lab_hi, phi0):
+    """One step of the bracketed secant on dPhi/dabar in ``ln abar``, per point.
+
+    ``lo`` (``nlo`` = 1 once a slope there was negative) and ``hi`` (``nhi`` = 1 once one
+    was positive) bracket the minimum; until both are found the search walks down (or up)
+    from the start, by the secant where it points that way (at most four times the last
+    step) or by doubling steps, never past ``_LAB_LO`` (``lab_hi``, where the load rises
+    as Hertz's). Inside the bracket: the secant, bisection where it would leave it. Each
+    point is solved from the tangent at the last (:func:`_phi_at`). A point stops where
+    the load is flat to round-off (:func:`_flat`), at a step below 1e-10 in ``ln abar``, or at
+    an end of the range that the load still rises (falls) from.
+    """
+    where, mx, mn = _num._where, _num._maximum, _num._minimum
+    dx = x - x0
+    known = abs(dx) < np.inf
+    step = where(known, abs(dx), 0.5)
+    xs = x - D * dx / (D - D0)
+    fin = abs(xs) < np.inf
+    both = (nlo > 0) & (nhi > 0)
+    inside = where(fin & (xs > lo) & (xs < hi), xs, 0.5 * (lo + hi))
+    down = where(fin & (xs < x), mx(xs, x - 4 * step), x - 2 * step)
+    up = where(fin & (xs > x), mn(xs, x + 4 * step), x + 2 * step)
+    nx = where(both, inside, where(nlo > 0, mn(up, lab_hi), mx(down, _LAB_LO)))
+    ph, Dn, u1, u2, du1, du2 = _phi_at(nx, kap, r, (x, u1, u2, du1, du2))
+    neg, pos = Dn < 0, Dn > 0
+    lo, nlo = where(neg, nx, lo), where(neg, 1.0, nlo)
+    hi, nhi = where(pos, nx, hi), where(pos, 1.0, nhi)
+    stop = (
+        _flat(nx, Dn, ph, phi0, kap, u1, u2)
+        | ~(abs(Dn) < np.inf)
+        | (abs(nx - x) <= 1e-10 * mx(1.0, abs(nx)))
+        | (pos & (nlo == 0) & (nx <= _LAB_LO))
+        | (neg & (nhi == 0) & (nx >= lab_hi))
+    )
+    return (x, D, nx, Dn, lo, hi, nlo, nhi, ph, u1, u2, du1, du2), stop
 
 
 def _pulloff_flat(kap, r):
-    """Minimum of Phi(abar) along the branch: grid in ln abar, then a secant on dPhi.
+    """Minimum of Phi(abar) along the branch: a bracketed secant on dPhi in ``ln abar``.
 
-    Flat arrays or NumPy scalars (the grid is solved as a batch either way).
+    Flat arrays or NumPy scalars. The load has one minimum along the branch (or none above
+    the search's lower end ``_LAB_LO``, where it is indistinguishable from its zero-width
+    limit): the search starts near it (:func:`_guess`), walks to a bracket and refines it
+    to round-off (:func:`_minimum_step`); a minimum is interior when it lies inside
+    ``(_LAB_LO, lab_hi)`` below the zero-width load.
     """
-    scalar = not isinstance(kap, np.ndarray)
     X1, X2, _ = _zero_width(kap, r)
     phi0 = -0.5 * kap * (X1 + X2)
     # upper end: Hertz dominates beyond abar ~ 1 + kappa
     lab_hi = np.log(3.0 + 3.0 * kap)
-    kv, rv = np.atleast_1d(kap), np.atleast_1d(r)
-    labs = _LAB_LO + _GRID[:, None] * (np.atleast_1d(lab_hi) - _LAB_LO)[None, :]
-    phis, dphis = _phi_grid(labs, kv, rv)
-    # interior minimum: bracket the smallest grid value
-    k = np.argmin(phis, axis=0)
-    cols = np.arange(kv.size)
-    interior = (k > 0) & (k < _GRID.size - 1)
-    kk = np.clip(k, 1, _GRID.size - 2)
-    # the secant on dPhi starts from the grid values at the bracket's ends (kept inside the
-    # bracket, bisection otherwise); the load is flat at its minimum, so locating it to
-    # 1e-10 in ln(abar) gives the load to rounding
+    x = _guess(kap, r, lab_hi)
+    ph, D, u1, u2, du1, du2 = _phi_at(x, kap, r)
+    nan = _num._full(x, np.nan)
+    one, zero = _num._full(x, 1.0), _num._full(x, 0.0)
+    neg, pos = D < 0, D > 0
     start = (
-        labs[kk - 1, cols],
-        dphis[kk - 1, cols],
-        labs[kk + 1, cols],
-        dphis[kk + 1, cols],
-        labs[kk - 1, cols],
-        labs[kk + 1, cols],
-        phis[kk + 1, cols],
+        nan,
+        nan,
+        x,
+        D,
+        _num._full(x, _LAB_LO),
+        lab_hi + zero,
+        _num._where(neg, one, zero),
+        _num._where(pos, one, zero),
+        ph,
+        u1,
+        u2,
+        du1,
+        du2,
     )
-    if scalar:
-        start, interior = _num._scalars(*(v[0] for v in start)), bool(interior[0])
-    (_, _, lab_min, _, _, _, ph), _ = _num._iterate(
-        _secant_step, start, (kap, r), 100, done=not interior if scalar else ~interior
-    )
-    interior = interior & (ph < phi0)
+    done = ~(kap > 0) | _flat(x, D, ph, phi0, kap, u1, u2) | ~(abs(D) < np.inf)
+    if not isinstance(kap, np.ndarray):
+        start, done = _num._scalars(*start), bool(done)
+    state, _ = _num._iterate(_minimum_step, start, (kap, r, lab_hi, phi0), 100, done=done)
+    lab_min, ph = state[2], state[8]
+    interior = (lab_min > _LAB_LO) & (lab_min < lab_hi) & (ph < phi0)
     phi_min = _num._where(interior, ph, phi0)
     lab_min = _num._where(interior, lab_min, -np.inf)
     return dict(
@@ -241,7 +315,8 @@ def sliding_pull_off(
     # h1/h2 far from 1 (1e-300, 1e12) overflows on the way to a finite answer; a result that
     # is not finite is reported below
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-        d = _pulloff_flat(kap, r)
+        # in chunks of points: bounded memory for any number of them
+        d = _pulloff_flat(kap, r) if scalar else _in_chunks(_pulloff_flat, kap.size, kap, r)
         sq = np.sqrt(2 / rho)
         F0 = (np.pi / 2) * d["phi0"]
         Fmin = (np.pi / 2) * d["phi_min"]
