@@ -21,6 +21,7 @@ from numpy.testing import assert_allclose
 
 import linecontact.adhesion_map as am
 from linecontact import contact_for_load, jkr_load, pull_off
+from linecontact.adhesion_map import _runs
 from linecontact.cli import main
 from linecontact.closed_forms import lennard_jones_rigid_load, lennard_jones_rigid_pull_off
 from linecontact.domain import DOMAIN
@@ -165,7 +166,7 @@ Y = [0.2, 1.0, 3.0, 10.0]
 
 @pytest.fixture(scope="module")
 def small_map():
-    return am.adhesion_map(MU, Y)
+    return am.adhesion_map(MU, Y, workers=1)
 
 
 def test_map_shapes_and_columns(small_map):
@@ -242,6 +243,126 @@ def test_the_domain_end_is_read_at_run_time(monkeypatch):
         am.adhesion_map([0.6], [1.0])
 
 
+@pytest.mark.parametrize(("end", "n", "last"), [(3.0, 11, 3.0), (math.inf, 17, 378.0)])
+def test_the_default_range_is_the_maugis_parameter_capped_by_the_domain(monkeypatch, end, n, last):
+    # Maugis parameters 0.01 ... 100, or to the end of the solver's domain where it is sooner
+    assert maugis_parameter_of_mu(am.MU_MIN) == pytest.approx(am.MAUGIS_RANGE[0], rel=1e-12)
+    assert maugis_parameter_of_mu(am.MU_MAX) == pytest.approx(am.MAUGIS_RANGE[1], rel=1e-12)
+    monkeypatch.setitem(DOMAIN, "lj_mu", (0.0, True, end, True))
+    mu = am.default_mu()
+    assert mu.size == n and mu[0] == am.MU_MIN and mu[-1] == pytest.approx(last, rel=1e-3)
+    lam = maugis_parameter_of_mu(mu)
+    assert lam[0] == pytest.approx(0.01) and np.all(lam <= 100 * (1 + 1e-12))
+    assert_allclose(np.diff(np.log10(lam)), np.log10(lam[-1] / lam[0]) / (n - 1), rtol=1e-9)
+
+
+# --------------------------------------------------------------------------------------------
+# in parallel, resumable, with progress
+
+
+def test_workers_give_the_map_computed_here(small_map):
+    msgs = []
+    m = am.adhesion_map(MU, Y, workers=2, progress=msgs.append)
+    for name, want in small_map.columns().items():
+        got = m.columns()[name]
+        if np.asarray(want).dtype.kind == "f":
+            assert_allclose(got, want, rtol=1e-9, atol=1e-12, err_msg=name)  # other BLAS threads
+        else:
+            assert np.array_equal(got, want), name
+    assert msgs[0].startswith("0/2 curves, ") and msgs[-1].startswith("2/2 curves, ")
+    assert len(msgs) == 3 and all(msg.endswith(" s") for msg in msgs)
+
+
+def _counting(monkeypatch, stop_after=None):
+    """Count the curves computed (``am._map_row``); Ctrl-C after ``stop_after`` of them."""
+    calls = []
+    row = am._map_row
+
+    def counted(mu, y):
+        if stop_after is not None and len(calls) == stop_after:
+            raise KeyboardInterrupt
+        calls.append(mu)
+        return row(mu, y)
+
+    monkeypatch.setattr(am, "_map_row", counted)
+    return calls
+
+
+MU3 = [0.01, 0.02, 0.04]
+Y3 = [0.5, 2.0]
+
+
+@pytest.fixture(scope="module")
+def whole_map():
+    return am.adhesion_map(MU3, Y3, workers=1)
+
+
+def test_a_stopped_map_goes_on_where_it_stopped(tmp_path, monkeypatch, whole_map):
+    store = tmp_path / "partial"
+    calls = _counting(monkeypatch, stop_after=2)
+    with pytest.raises(KeyboardInterrupt):
+        am.adhesion_map(MU3, Y3, workers=1, resume_dir=store)
+    assert calls == MU3[:2] and len(list(store.glob("*.npz"))) == 2
+    assert not list(store.glob(".*"))  # no temporary file left, whatever the moment
+    monkeypatch.undo()
+    calls = _counting(monkeypatch)
+    msgs = []
+    m = am.adhesion_map(MU3, Y3, workers=1, resume_dir=store, progress=msgs.append)
+    assert calls == MU3[2:]  # only the curve not done yet
+    assert msgs[0].startswith("2/3 curves (2 resumed), ") and msgs[-1].startswith("3/3 curves")
+    for name, want in whole_map.columns().items():
+        got = m.columns()[name]
+        if np.asarray(want).dtype.kind == "f":
+            assert_allclose(got, want, rtol=1e-12, err_msg=name)
+        else:
+            assert np.array_equal(got, want), name
+    assert not store.exists()  # removed when the map is done
+
+
+def test_resume_reads_only_whole_entries_of_the_same_inputs(tmp_path, monkeypatch, whole_map):
+    store = tmp_path / "partial"
+    store.mkdir()
+    y = np.unique(Y3)
+    # an entry of other loads (another command), a damaged one, a temporary file
+    other = am._row_key(MU3[0], np.array([0.5, 3.0]))
+    _runs._write_row(am._entry(store, MU3[0], other), other, am._map_row(MU3[0], y))
+    damaged = am._entry(store, MU3[1], am._row_key(MU3[1], y))
+    damaged.write_bytes(b"PK\x03\x04 cut off")
+    right = am._row_key(MU3[2], y)
+    tmp = store / f".{am._entry(store, MU3[2], right).name}.999.tmp"
+    _runs._write_row(am._entry(store, MU3[2], right), right, am._map_row(MU3[2], y))
+    am._entry(store, MU3[2], right).rename(tmp)  # a write stopped before its rename
+    calls = _counting(monkeypatch)
+    m = am.adhesion_map(MU3, Y3, workers=1, resume_dir=store)
+    assert calls == MU3  # none of them counts as done
+    assert_allclose(m.half_width_lj, whole_map.half_width_lj, rtol=1e-12)
+    # the other command's entry stays; this map's files (and their stale temporaries) go
+    assert sorted(p.name for p in store.iterdir()) == [am._entry(store, MU3[0], other).name]
+
+
+def test_a_key_names_mu_the_loads_and_the_code(monkeypatch):
+    y = np.array([0.5, 2.0])
+    k = am._row_key(0.01, y)
+    assert k == am._row_key(0.01, y.copy())
+    assert k != am._row_key(0.01 * (1 + 1e-15), y) and k != am._row_key(0.01, y[:1])
+    assert len(_runs._code_digest()) == 64
+    monkeypatch.setattr(_runs, "_code_digest", lambda: "0" * 64)  # another version, or a change
+    assert am._row_key(0.01, y) != k
+
+
+@pytest.mark.parametrize("workers", [0, -1, 1.5, True, "2"])
+def test_workers_must_be_a_positive_integer(workers):
+    with pytest.raises(ValueError, match=r"^workers must be an integer >= 1"):
+        am.adhesion_map([0.1], [1.0], workers=workers)
+
+
+def test_a_resume_dir_that_cannot_be_made_is_named(tmp_path):
+    blocker = tmp_path / "a-file"
+    blocker.write_text("x")
+    with pytest.raises(ValueError, match=r"^resume_dir "):
+        am.adhesion_map([0.1], [1.0], resume_dir=blocker / "sub")
+
+
 def test_the_figure_clips_nothing_and_keys_every_model(small_map):
     pytest.importorskip("matplotlib")
     from linecontact.figures import MIN_SIZE
@@ -284,9 +405,12 @@ CHEAP = ["--mu-min", "0.01", "--mu-max", "0.02", "--n-mu", "2", "--y-max", "2", 
         (["--format", "gif"], "--format"),
         (["--size", "3x2"], "--size"),
         (["--n-mu", "two"], "--n-mu"),
+        (["--workers", "0"], "--workers"),
+        (["--workers", "two"], "--workers"),
     ],
 )
-def test_cli_bad_flags_one_error_line_exit_2(capsys, tmp_path, argv, flag):
+def test_cli_bad_flags_one_error_line_exit_2(capsys, tmp_path, monkeypatch, argv, flag):
+    monkeypatch.setitem(DOMAIN, "lj_mu", (0.0, True, 3.0, True))  # --mu-max 1e3 beyond it
     try:
         code = main(["map", "--outdir", str(tmp_path), *argv])
     except SystemExit as exc:  # argparse's own errors (not an integer)
@@ -384,6 +508,56 @@ def test_cli_json_is_the_provenance_and_the_cells(cli_run):
     ok = [r["agrees_md"] for r in doc["results"]]
     err = [r["relative_error_md"] for r in doc["results"]]
     assert ok == [e is not None and e <= 0.1 for e in err]
+
+
+def test_cli_stopped_keeps_its_curves_and_the_rerun_goes_on(capsys, tmp_path, monkeypatch):
+    pytest.importorskip("matplotlib")
+    out = tmp_path / "maps"
+    argv = ["map", "--outdir", str(out), "--image-format", "svg", "--workers", "1", *CHEAP]
+    calls = _counting(monkeypatch, stop_after=1)
+    assert main(argv) == 130  # Ctrl-C after the first curve
+    err = capsys.readouterr().err
+    assert "map: 1 finished curves kept in" in err and "adhesion_map.partial" in err
+    assert [p.name for p in out.iterdir()] == ["adhesion_map.partial"]
+    stale = out / "adhesion_map.partial" / "mu5.000000e-01-0123456789abcdef.npz"
+    stale.write_bytes(b"an entry of another grid or version")
+    monkeypatch.undo()
+    calls = _counting(monkeypatch)
+    assert main([*argv, "--progress"]) == 0
+    assert calls == [0.02]  # the second curve only
+    err = capsys.readouterr().err.splitlines()
+    assert err[0].startswith("map: 1/2 curves (1 resumed), ") and err[-1].startswith("map: 2/2")
+    assert sorted(p.name for p in out.iterdir()) == ["adhesion_map.csv", "adhesion_map.svg"]
+
+
+def test_cli_progress_is_off_where_stderr_is_not_a_terminal(capsys, tmp_path, monkeypatch):
+    pytest.importorskip("matplotlib")
+    monkeypatch.setattr(am, "_map_row", lambda mu, y: _fake_row(y))
+    assert main(["map", "--outdir", str(tmp_path), "--image-format", "svg", *CHEAP]) == 0
+    assert capsys.readouterr().err == ""
+
+
+def _fake_row(y):
+    y = np.asarray(y)
+    return am._Row(-2.0, 0.0, np.sqrt(y), 1e-9, 1e-4, 20)
+
+
+def test_cli_progress_line_is_rewritten_in_place_on_a_terminal():
+    from linecontact.cli.adhesion_map import _ProgressLine
+
+    class Tty(io.StringIO):
+        def isatty(self):
+            return True
+
+    s = Tty()
+    line = _ProgressLine(s, force=False)
+    line("0/2 curves, 0.0 s")
+    line("1/2 curves, 1.5 s")
+    line.end()
+    assert s.getvalue() == "\rmap: 0/2 curves, 0.0 s\x1b[K\rmap: 1/2 curves, 1.5 s\x1b[K\n"
+    quiet = io.StringIO()
+    _ProgressLine(quiet, force=False)("0/2 curves, 0.0 s")
+    assert quiet.getvalue() == ""
 
 
 def test_cli_summary_names_the_files_and_each_models_range(

@@ -378,7 +378,10 @@ def test_kappa_limit_over_a_row_and_a_column():
 
 def test_lennard_jones_limit_and_pull_off_over_a_grid():
     with pytest.raises(ValueError, match=r"R_over_h=100\.0, sigma0_over_E=1000000\.0 give mu"):
-        lc.laws.lennard_jones.pull_off([[100.0], [1.0]], [0.1, 1e6])
+        lc.laws.lennard_jones.contact_for_load(0.5, [[100.0], [1.0]], [0.1, 1e6])
+    # the pull-off answers at every mu: beyond the solver's domain, the limit form
+    p = lc.laws.lennard_jones.pull_off([[100.0], [0.01]], [1e-3, 1e6])
+    assert p.method.tolist() == [["self-consistent", "limit"], ["self-consistent", "limit"]]
     with pytest.raises(NoEquilibriumError, match=r"F_over_Eh=-50\.0 .*R_over_h=50\.0"):
         lc.laws.lennard_jones.contact_for_load([[0.5], [-50.0]], [50.0, 100.0], 0.2)
 

@@ -26,6 +26,7 @@ FLOORS = {
     ],
     "core": [
         "linecontact._numerics",
+        "linecontact._least_squares",
         "linecontact.sie",
         "linecontact.closed_forms",
         "linecontact.reference",

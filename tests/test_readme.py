@@ -36,6 +36,7 @@ def test_the_readme_domain_table_is_the_code_s():
     text = README.read_text(encoding="utf-8")
     section = text[text.index("## Validated domain") :]
     section = section[: section.index("\n## ", 5)]
-    rows = re.findall(r"^\| `(\w+)` \| ([\[(])([-+.e\d]+), ([-+.e\d]+)([\])]) \|", section, re.M)
+    num = r"([-+.e\d]+|inf)"
+    rows = re.findall(rf"^\| `(\w+)` \| ([\[(]){num}, {num}([\])]) \|", section, re.M)
     table = {k: (float(lo), b1 == "[", float(hi), b2 == "]") for k, b1, lo, hi, b2 in rows}
     assert table == DOMAIN

@@ -5,7 +5,10 @@ A thin shell over :func:`linecontact.adhesion_map.adhesion_map` and
 and ``adhesion_map.csv`` (one row per cell, the provenance block in its header) into
 ``--outdir``; it prints the files and a summary per ``mu``, or with ``--json`` (``--format
 json|jsonl|csv``, as the other commands) the provenance block and the cells; ``-o FILE``
-writes that output to FILE. The figure's formats are ``--image-format``.
+writes that output to FILE. The figure's formats are ``--image-format``. The curves are
+computed in ``--workers`` processes; each finished one is kept in
+``OUTDIR/adhesion_map.partial/`` (emptied and removed when the map is written), so that the
+same command, rerun after a stop, goes on.
 """
 
 from __future__ import annotations
@@ -14,12 +17,13 @@ import argparse
 import math
 import pathlib
 import sys
-from typing import TYPE_CHECKING, Any
+from contextlib import suppress
+from typing import TYPE_CHECKING, Any, TextIO
 
 import numpy as np
 
 from ..output import FORMATS, Table, table_from_result, write
-from ._options import add_command, add_output_options, command_line, emit
+from ._options import add_command, add_output_options, command_line, emit, show_together
 
 if TYPE_CHECKING:  # linecontact.adhesion_map imports SciPy's linalg: imported where used
     from ..adhesion_map import AdhesionMap
@@ -29,9 +33,12 @@ __all__ = ["register"]
 _DESCRIPTION = (
     "The adhesion map of line contact: over the Maugis parameter and the load above "
     "pull-off, where Hertz, the rigid cylinder, JKR and Maugis-Dugdale give the half-width "
-    "of the full Lennard-Jones law within --tol. The default grid takes minutes, --quick "
-    "seconds (docs/cli.md)."
+    "of the full Lennard-Jones law within --tol. A stopped run keeps its finished curves: "
+    "the same command goes on (docs/cli.md)."
 )
+
+#: The directory in ``--outdir`` where the finished curves are kept until the map is done.
+PARTIAL = "adhesion_map.partial"
 
 
 def _columns() -> dict[str, str]:
@@ -58,7 +65,7 @@ def _columns() -> dict[str, str]:
 
 def register(sub: Any) -> None:
     """Add the ``map`` subcommand to the subparsers ``sub``."""
-    from ..adhesion_map import MU_MIN, Y_RANGE
+    from ..adhesion_map import MAUGIS_RANGE, MU_MAX, MU_MIN, Y_RANGE
 
     p = add_command(
         sub,
@@ -102,21 +109,22 @@ def register(sub: Any) -> None:
         "--mu-min",
         type=float,
         metavar="MU",
-        help=f"smallest mu = w sqrt(R/z0)/(E z0), > 0 (default: {MU_MIN:g})",
+        help=f"smallest mu = w sqrt(R/z0)/(E z0), > 0 (default: {MU_MIN:.2g}, the Maugis "
+        f"parameter {MAUGIS_RANGE[0]:g}; --quick: 0.01)",
     )
     p.add_argument(
         "--mu-max",
         type=float,
         metavar="MU",
-        help="largest mu, at most the end of the Lennard-Jones solver's domain (default: that "
-        "end; --quick: 1)",
+        help=f"largest mu, in the Lennard-Jones solver's domain (default: {MU_MAX:.3g}, the "
+        f"Maugis parameter {MAUGIS_RANGE[1]:g}, or the domain's end; --quick: 1)",
     )
     p.add_argument(
         "--n-mu",
         type=int,
         metavar="N",
-        help="values of mu, geometric, 2 to 64 (default: five per decade and one, 10 to 16; "
-        "--quick: 4)",
+        help="values of mu, geometric, 2 to 64 (default: four per decade of the Maugis "
+        "parameter and one, 10 to 17; --quick: 4)",
     )
     p.add_argument(
         "--y-max",
@@ -135,8 +143,26 @@ def register(sub: Any) -> None:
     p.add_argument(
         "--quick",
         action="store_true",
-        help="a coarse grid: 4 values of mu to 1 (or --mu-max: the curves beyond mu = 1 are "
-        "the dearest), 41 loads from 0.01 to 10 pull-offs (the map of `linecontact figures`)",
+        help="a coarse grid: 4 values of mu from 0.01 to 1 (or --mu-min, --mu-max), 41 loads "
+        "from 0.01 to 10 pull-offs (the map of `linecontact figures`)",
+    )
+    p.add_argument(
+        "--workers",
+        type=int,
+        metavar="N",
+        help="processes computing the curves, >= 1 (1: none; default: the cores)",
+    )
+    p.add_argument(
+        "--progress",
+        action="store_true",
+        help="a progress line on stderr even where it is not a terminal",
+    )
+    show_together(
+        p,
+        "--workers",
+        "--progress",
+        help="processes computing the curves, >= 1 (default: the cores); a progress line "
+        "on stderr also where it is not a terminal (there it is by default)",
     )
     add_output_options(p, image_alias=True)
     p._option_string_actions["--format"].help = (
@@ -148,14 +174,18 @@ def register(sub: Any) -> None:
 
 def _grid(args: argparse.Namespace) -> tuple[np.ndarray, np.ndarray]:
     """The values of mu and of y the flags ask for (ValueError naming the flag)."""
-    from ..adhesion_map import MU_MIN, N_Y, Y_RANGE, default_mu, default_y, domain_mu_max
+    from ..adhesion_map import MU_MAX, MU_MIN, N_Y, Y_RANGE, default_mu, default_y, domain_mu_max
     from ..figures.adhesion_map import COARSE
 
     hi = domain_mu_max()
     if not (0.0 < args.tol < 1.0):  # also refuses nan
         raise ValueError(f"--tol must be a number in (0, 1), got {args.tol!r}")
+    if args.workers is not None and args.workers < 1:
+        raise ValueError(f"--workers must be an integer >= 1, got {args.workers!r}")
     lo = MU_MIN if args.mu_min is None else args.mu_min
-    top = hi if args.mu_max is None else args.mu_max
+    top = min(MU_MAX, hi) if args.mu_max is None else args.mu_max
+    if args.quick and args.mu_min is None:
+        lo = COARSE["mu_min"]
     if args.quick and args.mu_max is None:
         top = min(COARSE["mu_max"], hi)
     for flag, v in (("--mu-min", lo), ("--mu-max", top)):
@@ -189,6 +219,51 @@ def _grid(args: argparse.Namespace) -> tuple[np.ndarray, np.ndarray]:
         default_mu(n, lo, top),
         default_y(N_Y if args.n_y is None else args.n_y, Y_RANGE[1] if y_max is None else y_max),
     )
+
+
+def _clear_partial(partial: pathlib.Path) -> None:
+    """Remove the entries left in ``partial`` (of other grids, other versions), then it."""
+    if not partial.is_dir():
+        return
+    for f in (*partial.glob("mu*.npz"), *partial.glob(".mu*.npz.*.tmp")):
+        with suppress(OSError):
+            f.unlink()
+    with suppress(OSError):
+        partial.rmdir()
+
+
+class _ProgressLine:
+    """The map's progress on ``stream``: one line, rewritten in place on a terminal.
+
+    Off where ``stream`` is not a terminal unless ``force`` (then a line per update).
+    """
+
+    def __init__(self, stream: TextIO, force: bool) -> None:
+        self.stream = stream
+        try:
+            self.tty = stream.isatty()
+        except (AttributeError, ValueError):  # closed, or not a file
+            self.tty = False
+        self.on = self.tty or force
+        self.shown = False
+
+    def __call__(self, msg: str) -> None:
+        if not self.on:
+            return
+        text = f"map: {msg}"
+        if self.tty:
+            self.stream.write(f"\r{text}\x1b[K")
+            self.shown = True
+        else:
+            self.stream.write(text + "\n")
+        self.stream.flush()
+
+    def end(self) -> None:
+        """End the line in place (before other output, or at the end)."""
+        if self.shown:
+            self.stream.write("\n")
+            self.stream.flush()
+            self.shown = False
 
 
 def _table(m: AdhesionMap, args: argparse.Namespace, files: list[str]) -> Table:
@@ -262,15 +337,28 @@ def _cmd_map(args: argparse.Namespace) -> int:
             f"cannot write the map to --outdir {args.outdir!r}: {exc.strerror or exc}"
         ) from None
 
-    def progress(msg: str) -> None:
-        print(f"computing {msg}", file=sys.stderr)
-
-    m = adhesion_map(mu, y, tol=args.tol, progress=progress)
+    line = _ProgressLine(sys.stderr, args.progress)
+    partial = out / PARTIAL
+    try:
+        m = adhesion_map(
+            mu, y, tol=args.tol, progress=line, workers=args.workers, resume_dir=partial
+        )
+    except BaseException:
+        line.end()
+        kept = sorted(partial.glob("*.npz")) if partial.is_dir() else []
+        if kept:
+            print(
+                f"map: {len(kept)} finished curves kept in {partial}/: the same command goes on",
+                file=sys.stderr,
+            )
+        raise
+    line.end()
     try:
         paths = draw(m, out, formats, size)
         data = out / "adhesion_map.csv"
         files = [str(p) for p in (*paths, data)]
         write(_table(m, args, files), "csv", data)
+        _clear_partial(partial)
     except OSError as exc:
         raise ValueError(
             f"cannot write the map to --outdir {args.outdir!r}: {exc.strerror or exc}"

@@ -26,7 +26,6 @@ import numpy as np
 
 from ..adhesion_map import (
     MODELS,
-    MU_MIN,
     AdhesionMap,
     adhesion_map,
     default_mu,
@@ -44,7 +43,7 @@ STEM = "adhesion_map"
 #: values of ``mu`` from ``mu_min`` to ``mu_max`` (or the end of the domain, if lower: a
 #: curve beyond ``mu = 1`` takes minutes), ``n_y`` loads above pull-off from 0.01 to
 #: ``y_max`` pull-offs.
-COARSE: dict[str, Any] = {"n_mu": 4, "mu_min": MU_MIN, "mu_max": 1.0, "n_y": 41, "y_max": 10.0}
+COARSE: dict[str, Any] = {"n_mu": 4, "mu_min": 0.01, "mu_max": 1.0, "n_y": 41, "y_max": 10.0}
 _MARGINS = Margins(left=0.85, right=2.75, top=0.75)
 _LABELS = {
     "hertz": "Hertz",
@@ -63,7 +62,8 @@ def coarse_map(progress: Callable[[str], object] | None = None) -> AdhesionMap:
     return adhesion_map(
         default_mu(COARSE["n_mu"], COARSE["mu_min"], top),
         default_y(COARSE["n_y"], COARSE["y_max"]),
-        progress=progress,
+        progress=None if progress is None else (lambda msg: progress(f"adhesion map: {msg}")),
+        workers=1,  # `linecontact figures` shares its figures between processes already
     )
 
 

@@ -371,13 +371,21 @@ def turning_points(
 
 
 def _md_edge(mu: float) -> float:
-    """The edge of the Maugis-Dugdale pull-off at the matched parameters (0 at zero width)."""
-    from ..normal import pull_off
+    """The half-width of the Maugis-Dugdale load minimum at the matched parameters.
+
+    The closed form's single stationary point of the load along the contact branch
+    (:func:`~linecontact.closed_forms.maugis_dugdale._u_stationary`), whose ``abar =
+    (a/R) sqrt(R/(2h))`` is ``a sqrt(S/2)`` in these units (``z0 = S h``): the start of
+    the pull-off search where the contact is wide.
+    """
+    from ..closed_forms.groups import _kappa
+    from ..closed_forms.maugis_dugdale import _branch_point, _u_stationary
     from ._matching import MAUGIS_MATCH_SIGMA0 as S
 
     rho = 1e6  # the matched groups depend on mu alone in these units
-    po = pull_off(rho, mu * S**1.5 / math.sqrt(rho))
-    return float(po.a_over_R_at_pulloff) / math.sqrt(S / rho)
+    kap = np.float64(_kappa(rho, mu * S**1.5 / math.sqrt(rho)))
+    abar = float(_branch_point(np.asarray(_u_stationary(kap)), np.asarray(kap))["abar"])
+    return abar * math.sqrt(2.0 / S)
 
 
 def _past_hump(states: list[_Solved], grid: _Grid, a_md: float) -> bool:

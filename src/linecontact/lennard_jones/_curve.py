@@ -268,8 +268,9 @@ def lj_state(central_gap_over_z0: float, mu: float, *, m: int | None = None) -> 
     """The equilibrium state at the central gap ``zeta0`` (continued from far away).
 
     Beyond :data:`_START` by Newton from the first state; down to ``_EDGE_GAP`` on the far
-    part's mesh; below, along the edge until the central gap falls below ``zeta0`` and then
-    by a root search in the edge (the central gap falls monotonically along the curve).
+    part's mesh; below, along the edge until the central gap falls below ``zeta0``, then a
+    root search in the edge (the central gap falls monotonically along the curve) and the
+    state held at ``zeta0`` on all three meshes where they hold it.
     """
     from .. import domain as _domain
 
@@ -284,31 +285,32 @@ def lj_state(central_gap_over_z0: float, mu: float, *, m: int | None = None) -> 
         if t is None:
             raise _b.fail("state", mu, z)
         return _state_of(t, mu)
-    states = _along(mu, m, grid, lambda st: st[-1].zeta0 <= z)
-    k = next(i for i, s in enumerate(states) if s.zeta0 <= z)
+    states = _along(mu, m, grid, lambda st: st[-1].central_gap <= z)
+    k = next(i for i, s in enumerate(states) if s.central_gap <= z)
     a, b = states[k - 1], states[k]
     pool = list(states[: k + 1])
+    if a.edge == 0.0:  # between the far part and the first edge: in the central gap
+        t = _solve(z, mu, a.mesh.spec, a.zeta)
+        if t is None:
+            raise _b.fail("state", mu, z)
+        return _state_of(t, mu)
 
     def g(e: float) -> float:
         t = _b.at_edge(mu, grid, pool, e)
         if t is None:
             raise _b.fail("state", mu, z)
         pool.append(t)
-        return t.zeta0 - z
+        return t.central_gap - z
 
-    if a.edge == 0.0:  # between the far part and the first edge: in the central gap
-        t = _solve(z, mu, a.mesh.spec, a.zeta)
-        if t is None:
-            raise _b.fail("state", mu, z)
-        return _state_of(t, mu)
-    e = _b.root(g, a.edge, b.edge, a.zeta0 - z, b.zeta0 - z, 1e-12 * b.edge, 1e-13 * z)
+    ga, gb = a.central_gap - z, b.central_gap - z
+    e = a.edge if ga == 0.0 else _b.root(g, a.edge, b.edge, ga, gb, 1e-12 * b.edge, 1e-13 * z)
     near = min(pool, key=lambda t: abs(t.edge - e))
-    # the state found holds its edge; the one returned holds the central gap on all three
-    # meshes (so that its load's estimate is the error at that central gap)
+    # the state found holds its edge; where it can, the one returned holds the central gap on
+    # all three meshes, so that its load's estimate is the error at that central gap (on the
+    # contact branch of a compliant contact the central gap hardly moves, and a coarse mesh
+    # may hold no state at it: then the state at the edge whose extrapolated gap is zeta0)
     t = _solve(z, mu, _edge_meshes(grid, near.edge), near.zeta)
-    if t is None:
-        raise _b.fail("state", mu, z)
-    return _state_of(t, mu)
+    return _state_of(near if t is None else t, mu)
 
 
 def lj_contact_for_load(F: float, mu: float, *, m: int | None = None) -> LJState:

@@ -25,7 +25,7 @@ _START = 6.0  # central gap where a curve starts (the load ~2% of the rigid pull
 _SMALL_BAND = 4.0  # the mesh of small edges: uniform on [0, 4 edge lengths]
 _SCALED_FROM = 2.0  # edges beyond this many edge lengths: scaled meshes (_Grid.scaled)
 _E_RATIO = 2.0  # one scaled mesh per this factor of the edge
-_E_BAND = 2.0  # the band a scaled mesh holds about the edge, in edge lengths
+_E_BAND = 1.0  # the band a scaled mesh holds about the edge, in edge lengths
 _HMAX_FROM = 4.0  # coarse elements inside a contact wider than this grow with it
 _TOL = 1e-11  # Newton: largest residual of the gap equation relative to the gap
 _CHORD = 0.6  # a chord step is kept while the residual falls at least by this factor
@@ -543,7 +543,7 @@ def _md_guess(a: float, mu: float, mesh: _Mesh) -> tuple[NDArray, float]:
     lifted so that the gap is ``z0`` at ``a``; at least ``0.95 z0``. Returns ``(zeta,
     zeta0)``.
     """
-    from ..normal import normal_contact
+    from ..normal.contact import normal_contact
     from ._matching import MAUGIS_MATCH_SIGMA0 as S
 
     rho = 1e6  # the matched groups depend on mu alone in these units (docs/lennard-jones.md)

@@ -39,11 +39,20 @@ full law's pull-off relative to it, ``y = (F - F_pulloff) / |F_pulloff|``. The e
 model is ``|xi_model - xi| / xi`` against the full law's half-width ``xi``; a model holds
 where it is at most ``tol``. What the map shows, and the accuracy of the full law's widths:
 ``docs/adhesion-map.md``.
+
+The default grid spans the Maugis parameters 0.01 to 100 (:data:`MAUGIS_RANGE`), or to the end
+of the solver's domain where that is sooner (:func:`default_mu`). The full law's branches, one
+per ``mu`` and independent, are computed in ``workers`` processes and assembled in the order of
+``mu``; with ``resume_dir`` each finished one is kept in a file of its own, so that a stopped
+map, run again, computes only those still missing (:func:`adhesion_map`).
 """
 
 from __future__ import annotations
 
 import math
+import os
+import pathlib
+import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import ClassVar
@@ -51,21 +60,23 @@ from typing import ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from . import closed_forms as _cf
-from ._validation import check_array
-from .closed_forms import lennard_jones_rigid_load, lennard_jones_rigid_pull_off
-from .errors import ConvergenceError
-from .lennard_jones import (
+from .. import closed_forms as _cf
+from .._validation import check_array
+from ..closed_forms import lennard_jones_rigid_load, lennard_jones_rigid_pull_off
+from ..errors import ConvergenceError
+from ..lennard_jones import (
     MAUGIS_MATCH_SIGMA0,
     LJCurve,
     lj_curve,
     lj_state,
     maugis_parameter_of_mu,
 )
-from .normal import contact_for_load
-from .results import Result
+from ..normal import contact_for_load
+from ..results import Result
+from ._runs import _check_workers, _clear, _entry, _read_row, _Row, _row_key, _run, _store
 
 __all__ = [
+    "MAUGIS_RANGE",
     "MD_R_OVER_H",
     "MODELS",
     "AdhesionMap",
@@ -96,8 +107,20 @@ MD_R_OVER_H = 1e6
 Y_RANGE = (1e-2, 30.0)
 #: Loads of the default map.
 N_Y = 81
-#: ``mu`` where the default map starts.
-MU_MIN = 0.01
+#: The Maugis parameters (of the matched Dugdale step) where the default map starts and ends;
+#: it ends where the Lennard-Jones solver's domain does if that is sooner (:func:`default_mu`).
+MAUGIS_RANGE = (0.01, 100.0)
+
+
+def _mu_of_maugis(lam: float) -> float:
+    """The inverse of :func:`~linecontact.lennard_jones.maugis_parameter_of_mu`."""
+    return float((lam / float(maugis_parameter_of_mu(1.0))) ** 1.5)
+
+
+#: ``mu`` where the default map starts (the Maugis parameter ``MAUGIS_RANGE[0]``, 3.8e-4) ...
+MU_MIN = _mu_of_maugis(MAUGIS_RANGE[0])
+#: ... and where it ends, unless the solver's domain ends sooner (``MAUGIS_RANGE[1]``, 378).
+MU_MAX = _mu_of_maugis(MAUGIS_RANGE[1])
 #: :func:`full_law_branch` adds a state between two whose loads above pull-off differ by more
 #: than this factor (at most :data:`MAX_EXTRA_STATES` in all) ...
 SPLIT_RATIO = 2.0
@@ -110,7 +133,7 @@ _ONSET_ROUND_OFF = 1e-3  # a width at the central gap z0 below this is the onset
 
 def domain_mu_max() -> float:
     """The largest ``mu`` of the map: the end of the Lennard-Jones solver's domain (read now)."""
-    from .domain import DOMAIN
+    from ..domain import DOMAIN
 
     return DOMAIN["lj_mu"][2]
 
@@ -522,13 +545,16 @@ ndarray, (n_mu, n_y)
 
 
 def default_mu(n: int | None = None, mu_min: float = MU_MIN, mu_max: float | None = None):
-    """The default ``mu`` grid: geometric from ``mu_min`` to the domain's upper end.
+    """The default ``mu`` grid: geometric from ``mu_min`` to ``mu_max``.
 
-    ``n`` defaults to five per decade plus one, at least 10 and at most 16.
+    ``mu_max`` defaults to :data:`MU_MAX` (the Maugis parameter 100) or the upper end of the
+    Lennard-Jones solver's domain (:func:`domain_mu_max`, read now), whichever is lower;
+    ``n`` to four per decade of the Maugis parameter (``lambda ~ mu^(2/3)``) and one, at
+    least 10 and at most 17 (17 over the Maugis parameters 0.01 to 100, 11 to ``mu = 3``).
     """
-    hi = domain_mu_max() if mu_max is None else float(mu_max)
+    hi = min(MU_MAX, domain_mu_max()) if mu_max is None else float(mu_max)
     if n is None:
-        n = int(np.clip(round(5 * math.log10(hi / mu_min)) + 1, 10, 16))
+        n = int(np.clip(round(4 * (2 / 3) * math.log10(hi / mu_min)) + 1, 10, 17))
     return np.geomspace(mu_min, hi, n)
 
 
@@ -560,12 +586,36 @@ def _check_inputs(mu, y, tol) -> tuple[NDArray, NDArray, float]:
     return np.unique(mu), np.unique(y), tol
 
 
+def _map_row(mu: float, y: NDArray) -> _Row:
+    """The full law's branch at ``mu`` to the largest load of ``y``, at the loads ``y``.
+
+    The branch is solved to ``F_max = (max(y) + 1) * _pulloff_bound(mu)``; if that bound of
+    the pull-off fails, again to 1.05 times the largest load asked for.
+    """
+    F_max = (float(y[-1]) + 1.0) * _pulloff_bound(mu)
+    br = full_law_branch(mu, F_max)
+    F = br.F_pulloff + y * abs(br.F_pulloff)
+    if F[-1] > br.F[-1]:  # the bound failed: continue the curve to the loads asked for
+        br = full_law_branch(mu, 1.05 * float(F[-1]))
+        F = br.F_pulloff + y * abs(br.F_pulloff)
+    return _Row(
+        F_pulloff=float(br.F_pulloff),
+        y_onset=float(br.y_onset),
+        half_width=np.asarray(lj_half_width(br, F), float),
+        lj_error_estimate=float(np.max(br.error_estimate)),
+        interpolation_error=interpolation_error(br),
+        n_states=int(br.F.size),
+    )
+
+
 def adhesion_map(
     mu: ArrayLike | None = None,
     y: ArrayLike | None = None,
     *,
     tol: float = 0.05,
     progress: Callable[[str], object] | None = None,
+    workers: int | None = None,
+    resume_dir: str | os.PathLike[str] | None = None,
 ) -> AdhesionMap:
     """The adhesion map of line contact: each simpler model's error against the full law.
 
@@ -574,7 +624,8 @@ def adhesion_map(
     mu : array_like, optional
         Values of ``w sqrt(R/z0)/(E z0)``, ``> 0`` and at most the upper end of the
         Lennard-Jones solver's domain (``linecontact.domain.DOMAIN["lj_mu"]``); sorted,
-        repeats dropped. Default :func:`default_mu` (0.01 to that end).
+        repeats dropped. Default :func:`default_mu` (the Maugis parameters 0.01 to 100, or
+        to the end of that domain if it is sooner).
     y : array_like, optional
         Loads above the full law's pull-off over its magnitude, ``> 0``; sorted, repeats
         dropped. Default :func:`default_y` (81 values from 0.01 to 30).
@@ -582,7 +633,21 @@ def adhesion_map(
         A model agrees where the relative error of its half-width is at most ``tol``, in
         ``(0, 1)``.
     progress : callable, optional
-        Called with a short message before each value of ``mu``.
+        Called with a short message (``"7/13 curves, 12.3 s"``; ``"(3 resumed)"`` after the
+        count where rows came from ``resume_dir``) once before the first curve and after
+        each one.
+    workers : int, optional
+        Processes computing the curves (one per ``mu``, each independently: the map is the
+        one computed in this process, whatever ``workers``), at least 1; 1 computes them in
+        this process. Default: the cores this process may run on. No more are started than
+        there are curves to compute.
+    resume_dir : path, optional
+        A directory (created if missing) where each curve's row is kept in its own file as
+        soon as it is done (written atomically: a run stopped at any moment leaves only
+        whole files), keyed by ``mu``, ``y`` and the library (version and code). Rows found
+        there are not computed again: a stopped run, rerun with the same arguments, goes on
+        where it stopped. The map's files are removed when it is complete, and the
+        directory if it is then empty.
 
     Returns
     -------
@@ -592,7 +657,8 @@ def adhesion_map(
     ------
     ValueError
         If ``mu`` or ``y`` holds a non-positive or non-finite value or is not 1-D, ``mu``
-        lies beyond the domain, or ``tol`` is not in ``(0, 1)``.
+        lies beyond the domain, ``tol`` is not in ``(0, 1)``, ``workers`` is not an integer
+        >= 1, or ``resume_dir`` cannot be created.
     ConvergenceError
         If the Lennard-Jones solver fails.
 
@@ -601,26 +667,47 @@ def adhesion_map(
     Cost: one :func:`~linecontact.lennard_jones.lj_curve` per ``mu``, to
     ``F_max = (max(y) + 1) * min(2.4661, 1.7435 mu^(-1/3))`` (a bound of the pull-off's
     magnitude), and a few states (:func:`full_law_branch`); the models are closed forms,
-    or vectorised (:func:`md_half_width`). Measured on two otherwise idle cores: the default
-    grid (13 values of ``mu`` from 0.01 to 3, 81 loads to ``y = 30``) 2.7 min, most of it
-    beyond ``mu = 1`` (the solver's meshes follow the contact's edge, ``1/mu`` long); the
-    coarse grid of :mod:`linecontact.figures.adhesion_map` (4 values to ``mu = 1``, 41 loads
-    to ``y = 10``) 9 s.
+    or vectorised (:func:`md_half_width`). Measured on two otherwise idle cores before the
+    curves ran in parallel: the grid of 13 values of ``mu`` from 0.01 to 3, 81 loads to
+    ``y = 30``, 56 s, most of it beyond ``mu = 1`` (the solver's meshes follow the
+    contact's edge, ``1/mu`` long); the coarse grid of
+    :mod:`linecontact.figures.adhesion_map` (4 values to ``mu = 1``, 41 loads to ``y = 10``)
+    9 s. ``benchmarks/adhesion_map.py`` times the default map with 1 and 2 workers.
     """
     mu, y, tol = _check_inputs(mu, y, tol)
+    workers = _check_workers(workers)
+    store = _store(resume_dir)
     say = progress if progress is not None else (lambda msg: None)
-    y_max = float(y[-1])
-    rows = []
-    for k, m in enumerate(mu):
-        say(f"the full law at mu = {m:.4g} ({k + 1} of {mu.size})")
-        F_max = (y_max + 1.0) * _pulloff_bound(float(m))
-        br = full_law_branch(float(m), F_max)
-        F = br.F_pulloff + y * abs(br.F_pulloff)
-        if F[-1] > br.F[-1]:  # the bound failed: continue the curve to the loads asked for
-            br = full_law_branch(float(m), 1.05 * float(F[-1]))
-        rows.append((br, F, lj_half_width(br, F)))
-    F = np.array([r[1] for r in rows])
-    xi = np.array([r[2] for r in rows])
+    t0 = time.perf_counter()
+    keys = [_row_key(float(m), y) if store is not None else "" for m in mu]
+    paths: list[pathlib.Path] = []
+    rows: list[_Row | None] = [None] * mu.size
+    if store is not None:
+        paths = [_entry(store, float(m), k) for m, k in zip(mu, keys, strict=True)]
+        rows = [_read_row(p, k, y.size) for p, k in zip(paths, keys, strict=True)]
+    resumed = sum(r is not None for r in rows)
+    count = [resumed]
+
+    def report() -> None:
+        note = f" ({resumed} resumed)" if resumed else ""
+        say(f"{count[0]}/{mu.size} curves{note}, {time.perf_counter() - t0:.1f} s")
+
+    def done(k: int, row: _Row) -> None:
+        rows[k] = row
+        count[0] += 1
+        report()
+
+    tasks = [
+        (k, float(mu[k]), y, str(paths[k]) if store is not None else None, keys[k])
+        for k, r in enumerate(rows)
+        if r is None
+    ]
+    report()
+    _run(tasks, min(workers, len(tasks)), done, _map_row)  # looked up now (tests replace it)
+    full = [r for r in rows if r is not None]
+    F_po = np.array([[r.F_pulloff] for r in full])
+    F = F_po + y * np.abs(F_po)
+    xi = np.array([r.half_width for r in full])
     M = mu[:, None]
     widths = {
         "hertz": hertz_half_width(F, M),
@@ -634,13 +721,13 @@ def adhesion_map(
             e = np.abs(w - xi) / xi
             e = np.where(np.isnan(w), np.inf, e)
             errors[name] = np.where(xi > 0, e, np.nan)
-    return AdhesionMap(
+    result = AdhesionMap(
         mu=M,
         maugis_parameter=np.asarray(maugis_parameter_of_mu(M)),
         y=y,
         F=F,
-        F_pulloff=np.array([[r[0].F_pulloff] for r in rows]),
-        y_onset=np.array([[r[0].y_onset] for r in rows]),
+        F_pulloff=F_po,
+        y_onset=np.array([[r.y_onset] for r in full]),
         half_width_lj=xi,
         half_width_hertz=widths["hertz"],
         half_width_rigid=widths["rigid"],
@@ -652,7 +739,10 @@ def adhesion_map(
         error_md=errors["md"],
         tol=tol,
         R_over_h_md=MD_R_OVER_H,
-        lj_error_estimate=np.array([[float(np.max(r[0].error_estimate))] for r in rows]),
-        interpolation_error=np.array([[interpolation_error(r[0])] for r in rows]),
-        n_states=np.array([[r[0].F.size] for r in rows]),
+        lj_error_estimate=np.array([[r.lj_error_estimate] for r in full]),
+        interpolation_error=np.array([[r.interpolation_error] for r in full]),
+        n_states=np.array([[r.n_states] for r in full]),
     )
+    if store is not None:
+        _clear(store, paths)
+    return result
