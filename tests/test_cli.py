@@ -489,7 +489,7 @@ def test_pulloff_law_lennard_jones_si_json():
             "--R-over-h",
             "100",
             "--sigma0-over-E",
-            "2.0",
+            "inf",
             "--law",
             "lennard-jones",
         ],
@@ -497,4 +497,4 @@ def test_pulloff_law_lennard_jones_si_json():
         text=True,
     )
     assert bad.returncode == 2 and bad.stderr.count("error:") == 1
-    assert "Traceback" not in bad.stderr and "mu" in bad.stderr
+    assert "Traceback" not in bad.stderr and "--sigma0-over-E" in bad.stderr
