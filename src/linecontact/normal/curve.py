@@ -92,9 +92,9 @@ def load_curve(
         :func:`linecontact.laws.lennard_jones.load_curve`. The Dugdale step (default; also
         accepted explicitly, silently), or the Lennard-Jones law of Eq. (1) with the same work
         of adhesion and peak tension (as in :func:`pull_off`): the states of the solver's
-        continuation in the central gap, from far away through the pull-off to
+        curve (by the central gap, then by the edge), from far away through the pull-off to
         ``F_max_over_Eh`` (``a_max_over_R``, ``num`` and ``num_noncontact`` are the Dugdale
-        law's; seconds at ``mu <= 0.3``, minutes at ``mu = 3``).
+        law's; about a second, ``benchmarks/lennard_jones.py``).
     F_max_over_Eh : float, optional
         Under the Lennard-Jones law, the compressive load where the curve ends (default:
         7.5 ``w sqrt(R/z0)``, three times the rigid cylinder's pull-off).

@@ -150,8 +150,7 @@ def contact_for_load(
         (:mod:`linecontact.lennard_jones_groups`; ``sigma0_over_E > 0``, ``mu`` within its
         domain as in :func:`pull_off`, loads up to
         :data:`~linecontact.lennard_jones_groups.LJ_LOAD_MAX` ``w sqrt(R/z0)``, the stable
-        branch only). Each point costs a continuation of the curve: seconds at ``mu <= 0.3``,
-        minutes at ``mu = 3``.
+        branch only). Each point costs the curve up to its load: a few tenths of a second.
 
     Returns
     -------
