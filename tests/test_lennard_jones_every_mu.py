@@ -152,3 +152,26 @@ def test_cli_pull_off_of_a_polymer_and_an_elastomer_fibre(capsys, modulus, mu, m
 def test_bad_mu_is_refused_naming_it(bad):
     with pytest.raises(ValueError, match="mu"):
         lj_pull_off(float(bad))
+
+
+@pytest.mark.parametrize("y", [1.5, 11.0])
+def test_compliant_contact_is_the_jkr_contact_s_compressed_part(y):
+    # in the JKR limit the repulsive region is where the JKR pressure is compressive:
+    # p(x) = E/(2R) sqrt(a^2 - x^2) + (F - F_hertz)/(pi sqrt(a^2 - x^2)) > 0 for
+    # x^2 < a^2 + 2R (F - F_hertz)/(pi E); in these units xi_r^2 = a^2 - 2 sqrt(2 mu a/pi)
+    from scipy.optimize import brentq
+
+    from linecontact.lennard_jones import lj_contact_for_load
+
+    mu = 100.0
+    F_po = lj_pull_off(mu).F_pulloff
+    F = F_po + y * abs(F_po)
+    s = lj_contact_for_load(F, mu)
+
+    def load(a):
+        return math.pi * a * a / (4 * mu) - math.sqrt(2 * math.pi * a / mu) - F
+
+    a = brentq(load, (2 * mu / math.pi) ** (1 / 3), 1e4, xtol=1e-14)
+    xi_r = math.sqrt(a * a - 2 * math.sqrt(2 * mu * a / math.pi))
+    assert s.half_width == pytest.approx(xi_r, rel=5e-4)  # measured 1.3e-4 and 3.6e-5
+    assert s.half_width < a  # narrower than the JKR contact: its edge is in tension
