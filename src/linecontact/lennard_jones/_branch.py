@@ -13,7 +13,9 @@ minimum about it. Derivation and checks: ``docs/lennard-jones.md``.
 
 from __future__ import annotations
 
+import functools
 import math
+import operator
 from collections.abc import Callable
 
 import numpy as np
@@ -174,16 +176,35 @@ def climb(
     e = out[-1].edge
     step = _step(e, grid)
     while not done(out):
-        t = at_edge(mu, grid, out[-2:], _next(e, step, grid))
-        if t is None:
-            step *= 0.5
-            if step < 1e-6 * grid.ell:
-                raise fail("curve", mu, out[-1].zeta0)
-            continue
+        t, step = _advance(
+            mu, grid, out[-2:], functools.partial(_next, e, grid=grid), step, "curve"
+        )
         out.append(t)
         e = t.edge
         step = min(2.0 * step, _step(e, grid))
     return out
+
+
+def _advance(
+    mu: float,
+    grid: _Grid,
+    near: list[_Solved],
+    edge_at: Callable[[float], float],
+    step: float,
+    what: str,
+) -> tuple[_Solved, float]:
+    """The state at the edge ``edge_at(step)`` from ``near``, and the step that reached it.
+
+    A step whose state Newton does not solve is halved; below a millionth of an edge length
+    it raises ``ConvergenceError`` naming ``what``.
+    """
+    while True:
+        t = at_edge(mu, grid, near, edge_at(step))
+        if t is not None:
+            return t, step
+        step *= 0.5
+        if step < 1e-6 * grid.ell:
+            raise fail(what, mu, near[-1].zeta0)
 
 
 # ---------------------------------------------------------------------------------------
@@ -457,12 +478,10 @@ def _bracket(mu: float, grid: _Grid, states: list[_Solved]) -> list[_Solved]:
     out = list(states)
     step = max(_BRACKET * out[-1].edge, 0.25 * grid.ell)
     while out[-1].F <= out[-2].F:
-        t = at_edge(mu, grid, out[-2:], out[-1].edge + step)
-        if t is None:
-            step *= 0.5
-            if step < 1e-6 * grid.ell:
-                raise fail("pull-off search", mu, out[-1].zeta0)
-            continue
+        e = out[-1].edge
+        t, step = _advance(
+            mu, grid, out[-2:], functools.partial(operator.add, e), step, "pull-off search"
+        )
         out.append(t)
         step *= 1.6
     if _jumped(out):  # the estimate overshot: bracket from below
@@ -482,12 +501,11 @@ def _below(mu: float, grid: _Grid, states: list[_Solved]) -> list[_Solved]:
     low = [jumped]
     step = _BRACKET * jumped.edge
     while True:
-        t = at_edge(mu, grid, [low[0], states[-1]], low[0].edge - step)
-        if t is None:
-            step *= 0.5
-            if step < 1e-6 * grid.ell:
-                raise fail("pull-off search", mu, jumped.zeta0)
-            continue
+        e = low[0].edge
+        near = [low[0], states[-1]]
+        t, step = _advance(
+            mu, grid, near, functools.partial(operator.sub, e), step, "pull-off search"
+        )
         low.insert(0, t)
         if t.F > low[1].F or t.edge - step <= states[-3].edge:
             break
