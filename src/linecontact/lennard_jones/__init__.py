@@ -26,22 +26,28 @@ Dugdale step (``sigma0 = 16 w/(9 sqrt(3) z0)``, ``h = w/sigma0``) the Maugis par
 line contact (:func:`linecontact.maugis_parameter`) is a function of ``mu`` alone
 (:func:`maugis_parameter_of_mu`). Derivation and mesh study: ``docs/lennard-jones.md``.
 
-Discretisation: ``P`` piecewise linear on a mesh uniform on ``[0, X]`` (the contact and its
-edge zones; ``X`` follows the widest contact asked for) and geometric beyond, to
-``L = 2000`` where the attraction has decayed like ``xi^-6``; the logarithmic kernel is
-integrated exactly on each element (product integration); collocation at the nodes; a
-Newton (chord) iteration on the gaps. Every state is solved on that mesh and on the meshes
-with every second and every fourth node (their kernels follow from the fine one exactly);
-the load returned is the Richardson extrapolation of the two finer loads, and its error
-estimate the change of that extrapolation from the coarser pair.
+Discretisation: ``P`` piecewise linear on graded meshes out to ``L = 2000`` (the attraction
+there has decayed like ``xi^-6``), uniform about the edge of the contact (where the gap
+crosses ``1.5 z0``) at a fraction of the edge length ``1/mu``; the logarithmic kernel is
+integrated exactly on each element (product integration); collocation at the nodes; a chord
+Newton iteration. Far away the states hold their central gap; from there on they hold their
+edge, on meshes scaled per factor 2 of it (the kernel scales with the mesh exactly). Every
+state is solved on its mesh and on the meshes with every second and every fourth node (their
+kernels follow from the fine one exactly); the load (and for a state held at its edge, the
+central gap) returned is the Richardson extrapolation of the two finer meshes', and the
+load's error estimate the change of that extrapolation from the coarser pair. Self-consistent
+for ``mu <= MU_SELF_CONSISTENT`` (400); the pull-off beyond by the JKR limit with a fitted
+correction (``_limit.py``).
 
 The package: ``_solver.py`` (the meshes, the kernels, Newton, one state on three meshes),
-``_curve.py`` (the continuation, :func:`lj_curve`, :func:`lj_pull_off`, :func:`lj_state`,
-:func:`lj_contact_for_load` and their results), ``_matching.py`` (the Maugis matching:
-:data:`MAUGIS_MATCH_SIGMA0`, :func:`mu_of_dugdale`, :func:`maugis_parameter_of_mu`) and
-``_groups.py`` (the pull-off in the groups of the Dugdale problem). Every public name is
-re-exported here; the private ones are read where they are defined (patch
-``_curve._arc_newton``, not ``lennard_jones._arc_newton``).
+``_branch.py`` (the curve along its edge: the far part, the climb, the extrema, the pull-off
+search), ``_curve.py`` (:func:`lj_curve`, :func:`lj_pull_off`, :func:`lj_state`,
+:func:`lj_contact_for_load` and their results), ``_limit.py`` (the pull-off beyond the
+self-consistent domain), ``_matching.py`` (the Maugis matching: :data:`MAUGIS_MATCH_SIGMA0`,
+:func:`mu_of_dugdale`, :func:`maugis_parameter_of_mu`) and ``_groups.py`` (the pull-off in
+the groups of the Dugdale problem). Every public name is re-exported here; the private ones
+are read where they are defined (patch ``_solver._iterate``, not
+``lennard_jones._iterate``).
 """
 
 from ._curve import F_MAX_DEFAULT as F_MAX_DEFAULT
@@ -55,6 +61,7 @@ from ._curve import (
     lj_state,
 )
 from ._groups import LennardJonesPullOff, lj_groups, pull_off_in_dugdale_groups, pull_off_of
+from ._limit import MU_SELF_CONSISTENT
 from ._matching import (
     MAUGIS_MATCH_H_OVER_Z0,
     MAUGIS_MATCH_SIGMA0,
@@ -69,6 +76,7 @@ __all__ = [
     "LJState",
     "MAUGIS_MATCH_H_OVER_Z0",
     "MAUGIS_MATCH_SIGMA0",
+    "MU_SELF_CONSISTENT",
     "lj_contact_for_load",
     "lj_curve",
     "lj_groups",
