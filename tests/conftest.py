@@ -7,11 +7,24 @@ that needs other settings states them with ``@settings(...)``, which inherit the
 this profile. A failing example is then a property of the code and of the machine's floating
 point alone, and the README's rule holds: no test compares two code paths bit for bit
 (README, "Same answers on every machine").
+
+The Lennard-Jones solver keeps the last curve and pull-off it found at a ``mu`` (speed only);
+each test starts without them, so that no test depends on which ran before it in the same
+process (a test that makes the solver fail must reach the solver).
 """
 
 from __future__ import annotations
 
+import pytest
 from hypothesis import settings
 
 settings.register_profile("linecontact", derandomize=True, database=None, deadline=None)
 settings.load_profile("linecontact")
+
+
+@pytest.fixture(autouse=True)
+def _no_lennard_jones_memory():
+    from linecontact.lennard_jones import _curve
+
+    _curve._LAST.clear()
+    _curve._LAST_PULL_OFF.clear()

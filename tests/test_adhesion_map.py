@@ -260,13 +260,18 @@ def test_the_default_range_is_the_maugis_parameter_capped_by_the_domain(monkeypa
 # in parallel, resumable, with progress
 
 
+#: Columns that are error estimates: computed again, they agree to fewer digits.
+_ESTIMATES = ("interpolation_error", "lj_error_estimate")
+
+
 def test_workers_give_the_map_computed_here(small_map):
     msgs = []
     m = am.adhesion_map(MU, Y, workers=2, progress=msgs.append)
     for name, want in small_map.columns().items():
         got = m.columns()[name]
         if np.asarray(want).dtype.kind == "f":
-            assert_allclose(got, want, rtol=1e-9, atol=1e-12, err_msg=name)  # other BLAS threads
+            rtol = 1e-6 if name in _ESTIMATES else 1e-9  # other BLAS threads
+            assert_allclose(got, want, rtol=rtol, atol=1e-12, err_msg=name)
         else:
             assert np.array_equal(got, want), name
     assert msgs[0].startswith("0/2 curves, ") and msgs[-1].startswith("2/2 curves, ")
@@ -313,7 +318,11 @@ def test_a_stopped_map_goes_on_where_it_stopped(tmp_path, monkeypatch, whole_map
     for name, want in whole_map.columns().items():
         got = m.columns()[name]
         if np.asarray(want).dtype.kind == "f":
-            assert_allclose(got, want, rtol=1e-12, err_msg=name)
+            # the solver iterates to a relative residual of 1e-11 from whatever it
+            # factorised last: a curve computed again agrees to that, not bit for bit (and
+            # the error estimates, differences of nearly equal numbers, to less)
+            rtol = 1e-6 if name in _ESTIMATES else 1e-9
+            assert_allclose(got, want, rtol=rtol, atol=1e-12, err_msg=name)
         else:
             assert np.array_equal(got, want), name
     assert not store.exists()  # removed when the map is done
@@ -335,7 +344,7 @@ def test_resume_reads_only_whole_entries_of_the_same_inputs(tmp_path, monkeypatc
     calls = _counting(monkeypatch)
     m = am.adhesion_map(MU3, Y3, workers=1, resume_dir=store)
     assert calls == MU3  # none of them counts as done
-    assert_allclose(m.half_width_lj, whole_map.half_width_lj, rtol=1e-12)
+    assert_allclose(m.half_width_lj, whole_map.half_width_lj, rtol=1e-9)
     # the other command's entry stays; this map's files (and their stale temporaries) go
     assert sorted(p.name for p in store.iterdir()) == [am._entry(store, MU3[0], other).name]
 

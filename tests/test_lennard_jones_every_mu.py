@@ -175,3 +175,16 @@ def test_compliant_contact_is_the_jkr_contact_s_compressed_part(y):
     xi_r = math.sqrt(a * a - 2 * math.sqrt(2 * mu * a / math.pi))
     assert s.half_width == pytest.approx(xi_r, rel=5e-4)  # measured 1.3e-4 and 3.6e-5
     assert s.half_width < a  # narrower than the JKR contact: its edge is in tension
+
+
+def test_the_memory_of_the_last_search_changes_no_answer():
+    from linecontact.lennard_jones import _curve, lj_contact_for_load
+
+    first = lj_contact_for_load(0.2, 30.0)
+    assert (30.0, None) in _curve._LAST_PULL_OFF
+    again = lj_contact_for_load(0.2, 30.0)  # from the remembered pull-off
+    _curve._LAST_PULL_OFF.clear()
+    fresh = lj_contact_for_load(0.2, 30.0)
+    for s in (again, fresh):
+        assert s.half_width == pytest.approx(first.half_width, rel=1e-9)
+        assert s.central_gap_over_z0 == pytest.approx(first.central_gap_over_z0, rel=1e-9)

@@ -240,7 +240,7 @@ def lj_pull_off(mu: float, *, m: int | None = None) -> LJPullOff:
             converged=True,
             method="limit",
         )
-    po, jump = _b.pull_off_search(mu, _grid_for(mu, m))
+    po, jump = _pull_off(mu, m, _grid_for(mu, m))
     return _pull_off_of(mu, po, jump)
 
 
@@ -248,6 +248,22 @@ def lj_pull_off(mu: float, *, m: int | None = None) -> LJPullOff:
 #: curve at the same ``mu`` goes on from them instead of from far away (the adhesion map asks
 #: for a curve and then for states between its points). Only speed depends on it.
 _LAST: dict[tuple[float, int | None], list[_Solved]] = {}
+
+
+#: The last pull-off found, by ``(mu, m)``: the contacts for several loads at one ``mu`` (the
+#: groups' ``contact_for_load`` solves them one by one) search it once. Only speed depends on
+#: it.
+_LAST_PULL_OFF: dict[tuple[float, int | None], tuple[_Solved, _Solved | None]] = {}
+
+
+def _pull_off(mu: float, m: int | None, grid) -> tuple[_Solved, _Solved | None]:
+    """:func:`~._branch.pull_off_search` at ``mu``, or the last one found there."""
+    key = (mu, m)
+    if key not in _LAST_PULL_OFF:
+        found = _b.pull_off_search(mu, grid)
+        _LAST_PULL_OFF.clear()
+        _LAST_PULL_OFF[key] = found
+    return _LAST_PULL_OFF[key]
 
 
 def _along(mu: float, m: int | None, grid, done) -> list[_Solved]:
@@ -323,7 +339,7 @@ def lj_contact_for_load(F: float, mu: float, *, m: int | None = None) -> LJState
         raise ValueError(f"F must be finite, got {F!r}")
     mu = _check_mu(mu)
     grid = _grid_for(mu, m)
-    po, _ = _b.pull_off_search(mu, grid)
+    po, _ = _pull_off(mu, m, grid)
     if F < po.F:
         raise NoEquilibriumError(
             f"no equilibrium: the load F={F!r} is below the pull-off force {po.F!r} "
