@@ -50,7 +50,13 @@ FLOORS = {
         "linecontact.uncertainty",
         "linecontact.measurements",
     ],
-    "shells": ["linecontact.output", "linecontact.cli", "linecontact.figures"],
+    "shells": [
+        "linecontact.output",
+        "linecontact.reading",
+        "linecontact.cli",
+        "linecontact.figures",
+        "linecontact.sweeps",
+    ],
     "front": ["linecontact", "linecontact.__main__"],
 }
 ORDER = list(FLOORS)

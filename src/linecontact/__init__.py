@@ -23,7 +23,11 @@ length over ``E h``, stresses over ``E``; compressive load positive):
   method per problem (``contact``, ``pull_off``, ``sliding``, ``sliding_initiation``,
   ``steady_rolling``, ``push``, ``tangential_history``, ``cyclic_loss``); the ``cylinder_*``
   functions are its deprecated aliases;
-- :mod:`linecontact.output` -- results to JSON, JSON Lines, CSV or tables, with provenance.
+- :mod:`linecontact.output` -- results to JSON, JSON Lines, CSV or tables, with provenance;
+  :func:`read` -- any of those files back as a ``pandas.DataFrame`` (provenance in ``.attrs``);
+- :func:`sweep`, :func:`open_sweep` -- parameter studies: a subcommand over every combination
+  of its flags' values, as an ``xarray.Dataset``, resumable, on Dask
+  (:mod:`linecontact.sweeps`; the extra ``[sweep]``).
 """
 
 # Ctrl-C during these imports (about a second) ends the command line with status 130 and
@@ -69,6 +73,7 @@ with _imports_interruptible():
     )
     from .presets import Material
     from .push import Push, TipPush, push, tip_push
+    from .reading import read
     from .sliding import (
         SlidingContact,
         SlidingPullOff,
@@ -76,6 +81,7 @@ with _imports_interruptible():
         sliding_contact_for_load,
         sliding_pull_off,
     )
+    from .sweeps import open_sweep, sweep
     from .tangential import (
         cyclic_loss,
         cyclic_loss_coulomb,
@@ -123,8 +129,10 @@ __all__ = [
     "maugis_parameter",
     "non_contact",
     "normal_contact",
+    "open_sweep",
     "pull_off",
     "propagate",
+    "read",
     "read_measurements",
     "push",
     "sliding_contact",
@@ -135,6 +143,7 @@ __all__ = [
     "sliding_pull_off",
     "steady_rolling",
     "steady_rolling_coulomb",
+    "sweep",
     "tangential_history",
     "tangential_history_coulomb",
     "tip_push",

@@ -92,11 +92,15 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "materials",
         "the material presets (E, nu, range, source) of --cylinder-material",
     ),
+    "sweep": (
+        "sweep",
+        "run a subcommand over every combination of its flags' values: labelled arrays out",
+    ),
 }
 
 _COMMANDS = (
     "normal, pulloff, curve, slide-init, roll, cycle, history, slide, push, fit-adhesion, "
-    "fit-friction, paper, figures, map, materials or cite"
+    "fit-friction, paper, figures, map, materials, sweep or cite"
 )
 
 

@@ -306,25 +306,24 @@ def coupling_effect(text: str) -> str:
 
 
 def emit(args: argparse.Namespace, table: Table) -> None:
-    """Write ``table`` as the arguments ask (stdout, or ``-o FILE``)."""
+    """Write ``table`` as asked (stdout, ``-o FILE``; a sweep's ``args._capture`` list)."""
     if args.indent is not None and not 0 <= args.indent <= 16:
         raise ValueError(f"--indent must be an integer in [0, 16], got {args.indent}")
     _check_widths(table)
-    fmt = args.format
-    if fmt is None:
-        ext = "" if args.output is None else args.output.rsplit(".", 1)[-1].lower()
-        fmt = ext if ext in FORMATS and ext != "table" else "table"
-    if args.output is None:
+    ext = "" if args.output is None else args.output.rsplit(".", 1)[-1].lower()
+    fmt = args.format or (ext if ext in FORMATS and ext != "table" else "table")
+    if getattr(args, "_capture", None) is not None:  # linecontact.sweeps: kept, not written
+        args._capture.append(table)
+    elif args.output is None:
         write(table, fmt, indent=args.indent)
-        return
-    try:
-        write(table, fmt, args.output, indent=args.indent)
-    except OSError as exc:
-        raise ValueError(
-            f"cannot write -o/--output {args.output!r}: {exc.strerror or exc}"
-        ) from None
-    if not args.quiet:
-        print(f"wrote {args.output}", file=sys.stderr)
+    else:
+        try:
+            write(table, fmt, args.output, indent=args.indent)
+        except OSError as exc:
+            why = exc.strerror or exc
+            raise ValueError(f"cannot write -o/--output {args.output!r}: {why}") from None
+        if not args.quiet:
+            print(f"wrote {args.output}", file=sys.stderr)
 
 
 #: The SI contact half-width columns [m] whose values are checked by :func:`_check_widths`.

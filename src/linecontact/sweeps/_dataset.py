@@ -1,0 +1,227 @@
+"""A sweep's blocks as one labelled dataset (xarray), written to Zarr or netCDF, read back.
+
+One dimension per swept flag (its values the coordinate, in the flag's units), one data
+variable per record key of the subcommand (the names and units of its JSON records), and
+``state`` and ``reason`` for every point; a subcommand that gives several records per point
+(``curve``) adds the dimension ``record``. The attributes hold the provenance block
+(``linecontact``, ``command``, ``parameters``, ``units``) as the JSON output has it, and
+``sweep_key``; in a file they are JSON text, which :func:`open_sweep` decodes.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import tempfile
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .._version import __version__
+from ._plan import Plan, blocks
+from ._store import Partial, format_of, need
+
+__all__ = ["JSON_ATTRS", "build", "open_sweep", "write"]
+
+#: The attributes kept as JSON text in a file.
+JSON_ATTRS = ("linecontact", "command", "parameters", "units", "swept", "variables")
+
+
+#: The dtype of text variables: NumPy's variable-width strings (NumPy 2), else objects.
+_STRINGS: Any = getattr(np.dtypes, "StringDType", None)
+TEXT: Any = np.dtype(object) if _STRINGS is None else _STRINGS()
+
+
+def _fill(kind: str) -> Any:
+    return {"b": False, "f": np.nan}.get(kind, "")
+
+
+def _layout(p: Plan) -> tuple[list[tuple[slice, ...]], tuple[tuple[int, ...], ...], dict]:
+    """The blocks, the chunks of each axis and each block's position among the chunks."""
+    bl = blocks(p.shape, p.chunk_points)
+    starts = [sorted({b[i].start for b in bl}) for i in range(len(p.shape))]
+    chunks = tuple(tuple(np.diff([*s, n]).tolist()) for s, n in zip(starts, p.shape, strict=True))
+    where = {tuple(s.index(b[i].start) for i, s in enumerate(starts)): k for k, b in enumerate(bl)}
+    return bl, chunks, where
+
+
+def build(p: Plan, partial: Partial, parameters: dict[str, Any]) -> Any:
+    """The dataset of a sweep whose blocks are all kept (lazy where they are on disk)."""
+    import xarray as xr
+
+    bl, chunks, where = _layout(p)
+    metas = [partial.meta(k) for k in range(len(bl))]
+    names: list[str] = []
+    kinds: dict[str, str] = {}
+    units: dict[str, str] = {}
+    records = 1
+    nd = len(p.shape)
+    for m in metas:
+        for name, shape in m["shapes"].items():
+            if name not in kinds:
+                names.append(name)
+            kind = m["kinds"][name]
+            old = kinds.get(name, kind)
+            kinds[name] = "O" if "O" in (old, kind) else ("f" if "f" in (old, kind) else kind)
+            if len(shape) > nd:
+                records = max(records, shape[-1])
+        for name, u in m["units"].items():
+            units.setdefault(name, u)
+    for name in ("state", "reason"):  # last, as in the records
+        if name in names:
+            names.remove(name)
+            names.append(name)
+    names = [n for n in names if n not in p.dims]  # a record that is a swept input: its axis
+    dims = list(p.dims) + (["record"] if records > 1 else [])
+    lazy = partial.dir is not None
+    data_vars = {}
+    for name in names:
+        dtype = TEXT if kinds[name] == "O" else np.dtype(bool if kinds[name] == "b" else float)
+        fill = _fill(kinds[name])
+
+        def piece(k: int, name: str = name, dtype: Any = dtype, fill: Any = fill) -> np.ndarray:
+            shape = tuple(s.stop - s.start for s in bl[k])
+            v = partial.load(k, name)
+            full = (*shape, records) if records > 1 else shape
+            if v is None:
+                return np.full(full, fill, dtype=dtype)
+            v = np.asarray(v)
+            if v.dtype != dtype:
+                v = v.astype(str).astype(dtype) if kinds[name] == "O" else v.astype(dtype)
+            if records == 1:
+                return v.reshape(shape)
+            if v.ndim == len(shape):  # one record per point in this block
+                v = (
+                    np.repeat(v[..., None], records, axis=-1)
+                    if name in ("state", "reason")
+                    else (
+                        np.concatenate(
+                            [v[..., None], np.full((*shape, records - 1), fill, dtype)], -1
+                        )
+                    )
+                )
+            if v.shape[-1] < records:
+                pad = np.full((*shape, records - v.shape[-1]), fill, dtype=dtype)
+                v = np.concatenate([v, pad], axis=-1)
+            return v
+
+        if lazy:
+            import dask.array as da
+
+            def fn(block_id: tuple[int, ...] | None = None, piece: Any = piece) -> np.ndarray:
+                assert block_id is not None
+                return piece(where[block_id[: len(p.shape)]])
+
+            allchunks = chunks + (((records,),) if records > 1 else ())
+            arr: Any = da.map_blocks(
+                fn, chunks=allchunks, dtype=dtype, meta=np.empty((0,) * len(dims), dtype)
+            )
+        else:
+            arr = np.empty((*p.shape, records) if records > 1 else p.shape, dtype=dtype)
+            for k, b in enumerate(bl):
+                arr[b] = piece(k)
+        var_attrs = {"units": units[name]} if name in units and kinds[name] in "fb" else {}
+        data_vars[name] = (dims, arr, var_attrs)
+    coords = {}
+    for a in p.axes:
+        vals = np.asarray(a.values, float) if a.unit else np.asarray(a.values, dtype=object)
+        coords[a.name] = (
+            a.name,
+            vals,
+            {"units": a.unit, "flag": a.flag} if a.unit else {"flag": a.flag},
+        )
+    all_units = {a.name: a.unit for a in p.axes if a.unit}
+    all_units.update({n: units[n] for n in names if n in units and kinds[n] in "f"})
+    attrs: dict[str, Any] = {
+        "linecontact": {"version": __version__},
+        "command": list(p.argv),
+        "parameters": parameters,
+        "units": all_units,
+        "swept": [a.flag for a in p.axes],
+        "variables": names,
+        "sweep_key": p.key(),
+    }
+    return xr.Dataset(data_vars, coords=coords, attrs=attrs)
+
+
+def write(ds: Any, output: str | os.PathLike[str], overwrite: bool) -> None:
+    """Write ``ds`` to ``output`` (Zarr or netCDF) whole or not at all."""
+    import dask
+
+    fmt = format_of(output)
+    out = Path(output)
+    enc = ds.copy()
+    enc.attrs = {k: json.dumps(v) if k in JSON_ATTRS else v for k, v in ds.attrs.items()}
+    tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-", dir=out.parent))
+    target = tmp / out.name
+    try:
+        with dask.config.set(scheduler="synchronous"):  # one block at a time: bounded memory
+            if fmt == "zarr":
+                enc.to_zarr(target, mode="w", consolidated=False)
+            else:
+                enc.to_netcdf(target, engine=_netcdf_engine())
+        if out.exists():
+            if not overwrite:
+                raise ValueError(f"-o/--output {str(out)!r} exists: give --overwrite to replace it")
+            if out.is_dir() and not out.is_symlink():
+                shutil.rmtree(out)
+            else:
+                out.unlink()
+        os.replace(target, out)
+    finally:
+        shutil.rmtree(tmp, ignore_errors=True)
+
+
+def _netcdf_engine() -> str:
+    for engine, module in (("netcdf4", "netCDF4"), ("h5netcdf", "h5netcdf")):
+        try:
+            __import__(module)
+        except ImportError:
+            continue
+        return engine
+    raise ImportError("a netCDF store needs netCDF4: pip install 'linecontact[sweep]'")
+
+
+def open_sweep(path: str | os.PathLike[str]) -> Any:
+    """Open the store of a sweep (``.zarr`` or ``.nc``) as an :class:`xarray.Dataset`.
+
+    The values are read when used (lazily); the attributes ``linecontact``, ``command``,
+    ``parameters``, ``units`` and ``swept`` come back as the Python objects the sweep wrote.
+
+    Parameters
+    ----------
+    path : str or path-like
+        The store a sweep wrote (``linecontact sweep ... -o PATH``, or
+        :func:`linecontact.sweep` with ``output=PATH``).
+
+    Returns
+    -------
+    xarray.Dataset
+    """
+    need()
+    import xarray as xr
+
+    p = Path(path)
+    if not p.exists():
+        partial = Path(f"{path}.partial")
+        more = " (its blocks so far are in it: run the sweep again to finish it)"
+        raise FileNotFoundError(
+            f"no sweep store at {str(path)!r}{more if partial.exists() else ''}"
+        )
+    if format_of(p) == "zarr":
+        ds = xr.open_zarr(p, consolidated=False)
+    else:
+        ds = xr.open_dataset(p)
+    if "sweep_key" not in ds.attrs:
+        ds.close()
+        raise ValueError(f"{str(path)!r} is not the store of a linecontact sweep")
+    attrs = {
+        k: json.loads(v) if k in JSON_ATTRS and isinstance(v, str) else v
+        for k, v in ds.attrs.items()
+    }
+    order = [n for n in attrs.get("variables", []) if n in ds.data_vars]
+    ds = ds[order + [n for n in ds.data_vars if n not in order]]
+    ds.attrs = attrs
+    return ds

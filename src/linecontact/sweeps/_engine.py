@@ -1,0 +1,224 @@
+"""Running a sweep: its blocks in this process, or on Dask workers; kept as they finish.
+
+``workers=1`` (and no scheduler) computes the blocks here, one after the other. More workers
+start a :class:`dask.distributed.LocalCluster` of processes; ``scheduler="tcp://host:port"``
+sends the blocks to a running ``dask.distributed`` cluster (its workers need linecontact
+installed; they return the blocks here, so they need no shared disk). Either way the blocks
+are the same computations and give the same dataset. A progress bar on stderr (tqdm) counts
+the points.
+"""
+
+from __future__ import annotations
+
+import logging
+import os
+import re
+import sys
+import warnings
+from collections.abc import Iterator
+from pathlib import Path
+from typing import Any
+
+from .. import errors as _errors
+from ._dataset import build, open_sweep, write
+from ._plan import Plan, blocks
+from ._points import Block, _call, evaluate
+from ._store import Partial, format_of, need, store_key
+
+__all__ = ["need", "progress_bar", "run"]
+
+
+class _Bar:
+    """A minimal progress line, where tqdm is not installed."""
+
+    def __init__(self, total: int, initial: int, desc: str, disable: bool) -> None:
+        self.total, self.n, self.desc, self.disable = total, initial, desc, disable
+
+    def update(self, n: int) -> None:
+        self.n += n
+        if not self.disable:
+            print(f"\r{self.desc}: {self.n}/{self.total}", end="", file=sys.stderr, flush=True)
+
+    def close(self) -> None:
+        if not self.disable:
+            print(file=sys.stderr)
+
+
+def progress_bar(total: int, desc: str, progress: bool | None, initial: int = 0) -> Any:
+    """A progress bar on stderr: on where stderr is a terminal, or where ``progress``."""
+    show = sys.stderr.isatty() if progress is None else bool(progress)
+    try:
+        from tqdm import tqdm
+    except ImportError:
+        return _Bar(total, initial, desc, not show)
+    return tqdm(
+        total=total,
+        initial=initial,
+        desc=desc,
+        disable=not show,
+        file=sys.stderr,
+        unit=" points",
+        dynamic_ncols=True,
+        mininterval=0.5,
+    )
+
+
+def _check_output(output: str | os.PathLike[str]) -> None:
+    fmt = format_of(output)
+    need("zarr" if fmt == "zarr" else "netCDF4")
+    parent = Path(output).absolute().parent
+    if not parent.is_dir():
+        raise ValueError(
+            f"cannot write -o/--output {str(output)!r}: {str(parent)!r} is no directory"
+        )
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise ValueError(
+            f"cannot write -o/--output {str(output)!r}: {str(parent)!r} is not writable"
+        )
+
+
+def _corners(p: Plan) -> dict[str, Any]:
+    """The parameters that the corners of the grid (at most 16) share.
+
+    A sweep whose every corner is refused is refused: a usage error, not points outside the
+    domain.
+    """
+    import itertools
+
+    ends = [sorted({0, len(a.values) - 1}) for a in p.axes]
+    tables, reasons = [], []
+    for ix in itertools.islice(itertools.product(*ends), 16):
+        values = {a.dest: a.values[i] for a, i in zip(p.axes, ix, strict=True)}
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            table, state, reason = _call(p, values, [])
+        if table is not None:
+            tables.append(table.provenance()["parameters"])
+        elif state == "invalid":
+            reasons.append(reason)
+    if not tables:
+        if reasons:
+            raise ValueError(reasons[0])
+        return {}
+    first = tables[0]
+    return {k: v for k, v in first.items() if all(t.get(k) == v for t in tables[1:])}
+
+
+def _say(metas: list[dict[str, Any]]) -> None:
+    """The blocks' warnings, each kind once (numbers aside), with how many points gave it."""
+    kinds: dict[str, tuple[str, str, int]] = {}
+    for m in metas:
+        for cat, text in m.get("warnings", []):
+            shape = re.sub(r"[-+]?\d[\d.]*(e[-+]?\d+)?", "#", text)
+            c, t, n = kinds.get(shape, (cat, text, 0))
+            kinds[shape] = (c, t, n + 1)
+    for cat, text, n in kinds.values():
+        category = getattr(_errors, cat, UserWarning)
+        if not (isinstance(category, type) and issubclass(category, Warning)):
+            category = UserWarning
+        more = f" [and {n - 1} more like it in this sweep]" if n > 1 else ""
+        warnings.warn(text + more, category, stacklevel=3)
+
+
+def _local(p: Plan, todo: list[int], bl: list[tuple[slice, ...]]) -> Iterator[Block]:
+    for k in todo:
+        yield evaluate(p, k, bl[k])
+
+
+def _dask(
+    p: Plan, todo: list[int], bl: list[tuple[slice, ...]], workers: int, scheduler: str | None
+) -> Iterator[Block]:
+    need("distributed")
+    from dask.distributed import Client, LocalCluster, as_completed
+
+    cluster = None
+    if scheduler is None:
+        cluster = LocalCluster(
+            n_workers=workers,
+            threads_per_worker=1,
+            processes=True,
+            dashboard_address=None,
+            silence_logs=logging.ERROR,
+        )
+        client = Client(cluster)
+    else:
+        try:
+            client = Client(scheduler, timeout="20s")
+        except (OSError, TimeoutError, ValueError) as exc:
+            raise ValueError(f"--scheduler {scheduler!r}: cannot connect ({exc})") from None
+    try:
+        nworkers = max(1, len(client.scheduler_info().get("workers", {})) or workers)
+        queue = list(todo)
+        running = as_completed()
+        for _ in range(min(len(queue), 2 * nworkers)):
+            k = queue.pop(0)
+            running.add(client.submit(evaluate, p, k, bl[k], pure=False))
+        for fut in running:
+            block = fut.result()
+            fut.release()
+            if queue:
+                k = queue.pop(0)
+                running.add(client.submit(evaluate, p, k, bl[k], pure=False))
+            yield block
+    finally:
+        client.close()
+        if cluster is not None:
+            cluster.close()
+
+
+def run(
+    p: Plan,
+    output: str | os.PathLike[str] | None = None,
+    *,
+    workers: int = 1,
+    scheduler: str | None = None,
+    progress: bool | None = None,
+    overwrite: bool = False,
+) -> Any:
+    """Compute the plan ``p`` (resuming the blocks kept at ``output``); its dataset."""
+    need()
+    if not (isinstance(workers, int) and workers >= 1):
+        raise ValueError(f"--workers must be an integer >= 1, got {workers!r}")
+    if output is not None:
+        _check_output(output)
+        if Path(output).exists():
+            if store_key(output) == p.key() and not overwrite:
+                return open_sweep(output)  # finished before: nothing to do
+            if not overwrite:
+                raise ValueError(
+                    f"-o/--output {str(output)!r} exists and is not this sweep's store (another "
+                    "command, flags or version, or not a sweep): give --overwrite to replace it"
+                )
+    parameters = _corners(p)  # before anything is written
+    partial = Partial(p, output)
+    partial.open(overwrite)
+    bl = blocks(p.shape, p.chunk_points)
+    done = partial.done()
+    todo = [k for k in range(len(bl)) if k not in done]
+    size = {k: _points(b) for k, b in enumerate(bl)}
+    bar = progress_bar(p.size, f"sweep {p.command}", progress, initial=sum(size[k] for k in done))
+    try:
+        if scheduler is None and (workers == 1 or len(todo) <= 1):
+            stream = _local(p, todo, bl)
+        else:
+            stream = _dask(p, todo, bl, workers, scheduler)
+        for block in stream:
+            partial.put(block)
+            bar.update(size[block.index])
+    finally:
+        bar.close()
+    metas = [partial.meta(k) for k in range(len(bl))]
+    _say(metas)
+    ds = build(p, partial, parameters)
+    if output is None:
+        return ds
+    write(ds, output, overwrite=True)
+    partial.remove()
+    return open_sweep(output)
+
+
+def _points(b: tuple[slice, ...]) -> int:
+    n = 1
+    for s in b:
+        n *= s.stop - s.start
+    return n

@@ -1,0 +1,161 @@
+"""The pull-off of a sweep over whole blocks at once: the vectorised API, not point by point.
+
+``linecontact pulloff`` under the Dugdale law is a closed form: a block of a million points
+is one call of :func:`linecontact.pull_off`. Each value of each swept flag is first checked
+as the command line checks it (the cylinder built with that value alone, its warnings kept);
+the records are then built as ``linecontact pulloff`` builds them (the same keys, the same
+units), which ``tests/test_sweep.py`` checks against the point-by-point path.
+"""
+
+from __future__ import annotations
+
+import copy
+import functools
+import math
+import warnings
+from typing import Any
+
+import numpy as np
+
+from .. import materials as _materials
+from ..cylinder import _ZERO_WIDTH, _warn_widths
+from ..normal import pull_off
+from ..output import table_from_result, unit_of
+from ._plan import Plan
+
+__all__ = ["pulloff_block"]
+
+#: The SI flags whose values the fast path sweeps (words, such as presets: point by point).
+_SI = ("radius", "modulus", "E1", "nu1", "E2", "nu2", "sigma0", "h", "work_of_adhesion", "z0")
+_GROUPS = ("R_over_h", "sigma0_over_E")
+
+
+@functools.lru_cache(maxsize=4)
+def _checked(p: Plan) -> tuple[Any, dict[str, np.ndarray], list[tuple[str, str]]]:
+    """The template, each axis's values refused (their messages), the warnings said."""
+    from ..cli._options import flag_message, groups
+    from ._block import template as _template
+
+    template = _template(p)
+    bad: dict[str, np.ndarray] = {}
+    said: list[tuple[str, str]] = []
+    for a in p.axes:
+        msgs = np.full(len(a.values), "", dtype=object)
+        for i, v in enumerate(a.values):
+            args = copy.copy(template)
+            setattr(args, a.dest, v)
+            args.argv = [p.command, *p.fixed, a.flag, repr(v)]
+            with warnings.catch_warnings(record=True) as caught:
+                warnings.simplefilter("always")
+                try:
+                    groups(args)
+                except (ValueError, OverflowError) as exc:
+                    msgs[i] = flag_message(str(exc), args)
+            for w in caught:
+                item = (w.category.__name__, flag_message(str(w.message), args))
+                if item not in said:
+                    said.append(item)
+        bad[a.dest] = msgs
+    return template, bad, said
+
+
+def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
+    """The block of a ``pulloff`` sweep, or None where it must go point by point."""
+    from ._block import Block, assemble
+
+    if p.command != "pulloff" or not p.axes:
+        return None
+    if any(a.dest not in _SI + _GROUPS + ("length",) or not a.unit for a in p.axes):
+        return None
+    template, bad, said = _checked(p)
+    if template.law != "dugdale":
+        return None
+    shape = tuple(sl.stop - sl.start for sl in block)
+    grids = np.meshgrid(
+        *(np.asarray(a.values[s], float) for a, s in zip(p.axes, block, strict=True)), indexing="ij"
+    )
+    v = {a.dest: g.reshape(-1) for a, g in zip(p.axes, grids, strict=True)}
+    n = math.prod(shape)
+    reason = np.full(n, "", dtype=object)
+    for a, sl in zip(p.axes, block, strict=True):
+        msgs = bad[a.dest][sl]
+        if np.any(msgs != ""):
+            lookup = dict(zip(a.values[sl], msgs, strict=True))
+            m = np.array([lookup[x] for x in v[a.dest]], dtype=object)
+            reason = np.where(reason == "", m, reason)
+    ok = reason == ""
+
+    def get(dest: str) -> Any:
+        return v[dest][ok] if dest in v else getattr(template, dest)
+
+    si = template.R_over_h is None
+    if si:
+        try:
+            R, E, s0, h = _si_inputs(get, template)
+        except (ValueError, OverflowError):
+            return None
+        rho, s = R / h, s0 / E
+    else:
+        rho = np.broadcast_to(get("R_over_h"), (int(ok.sum()),)).astype(float)
+        s = np.broadcast_to(get("sigma0_over_E"), rho.shape).astype(float)
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            r = pull_off(rho, s)
+        except (ValueError, OverflowError):
+            return None  # a point outside the domain: the points one by one say which
+    for w in caught:
+        item = (w.category.__name__, str(w.message))
+        if item not in said:
+            said.append(item)
+    extra: dict[str, Any] = {}
+    if si:
+        Eh = E * h
+        extra["F_pulloff_N_per_m"] = np.multiply(r.F_pulloff_over_Eh, Eh)
+        extra["a_at_pulloff_m"] = np.multiply(r.a_over_R_at_pulloff, R)
+        extra["F_zero_width_N_per_m"] = np.multiply(r.F_zero_width_over_Eh, Eh)
+        zero = np.asarray(r.mechanism) == "zero-width"
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            for m, why in ((zero, _ZERO_WIDTH), (~zero, "")):
+                _warn_widths(
+                    extra["a_at_pulloff_m"][m], R[m], "the contact half-width at pull-off", why
+                )
+        for w in caught:
+            item = (w.category.__name__, str(w.message))
+            if item not in said:
+                said.append(item)
+        length = get("length")
+        if length is not None:
+            extra["F_pulloff_total_N"] = np.multiply(extra["F_pulloff_N_per_m"], length)
+    table = table_from_result(r, columns=extra, drop=r.inputs)  # inputs: parameters
+    cols = {k: np.asarray(c) for k, c in table.columns.items()}
+    idx = np.flatnonzero(ok)
+    failed = {int(i): ("invalid", str(reason[i])) for i in np.flatnonzero(~ok)}
+    data = assemble(shape, n, [(idx, cols, 1)], failed) if idx.size else None
+    if data is None:
+        return None
+    units = {k: table.units.get(k) or unit_of(k) for k in cols}
+    return Block(index, data, units, {}, list(said))
+
+
+def _si_inputs(get: Any, t: Any) -> tuple[Any, Any, Any, Any]:
+    """Radius, composite modulus, sigma0 and h [SI] of the valid points, as arrays."""
+    from ..cli._options import _presets
+
+    R = np.asarray(get("radius"), float)
+    if t.modulus is not None or get("modulus") is not None and t.E1 is None:
+        E = np.asarray(get("modulus"), float)
+    else:
+        m1, m2 = _presets(t)
+        E1 = get("E1") if m1 is None else m1.E
+        nu1 = get("nu1") if m1 is None else m1.nu
+        E2 = get("E2") if m2 is None else m2.E
+        nu2 = get("nu2") if m2 is None else m2.nu
+        E = np.asarray(_materials.composite_modulus(E1, nu1, E2, nu2), float)
+    if t.work_of_adhesion is not None or t.z0 is not None:
+        s0, h = _materials.adhesion_from_work(get("work_of_adhesion"), get("z0"))
+    else:
+        s0, h = get("sigma0"), get("h")
+    R, E, s0, h = np.broadcast_arrays(R, E, np.asarray(s0, float), np.asarray(h, float))
+    return R, E, s0, h

@@ -1,0 +1,131 @@
+"""Computing one block of a sweep by the subcommand's own code, in this process.
+
+Each point runs the subcommand as the command line would (the same checks, the same
+records), its table captured instead of written (:func:`linecontact.cli._options.emit`).
+Where the innermost swept flag is one the subcommand takes several values of (``--load``,
+``--tangential-load``), a row of points is one call. A point without a state (a load below
+the pull-off, a solver that missed its tolerance, an input outside the domain) is a record of
+NaN with its ``state`` and ``reason``; it never fails the block.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+import warnings
+from typing import Any
+
+import numpy as np
+
+from ..errors import ConvergenceError
+from ._block import Block, assemble, meta, template
+from ._plan import Plan
+
+__all__ = ["Block", "evaluate"]
+
+
+def _words(p: Plan, values: dict[str, Any]) -> list[str]:
+    words = list(p.fixed)
+    for a in p.axes:
+        v = values[a.dest]
+        if isinstance(v, list):
+            words += [a.flag, *(repr(x) for x in v)]
+        else:
+            words += [a.flag, repr(v) if a.unit else str(v)]
+    return words
+
+
+def _call(p: Plan, values: dict[str, Any], said: list[tuple[str, str]]) -> tuple[Any, str, str]:
+    """Run the subcommand at ``values`` (dest: value): (its table or None, state, reason)."""
+    from ..cli._options import NoPointError, flag_message
+
+    args = copy.copy(template(p))
+    for a in p.axes:
+        v = values[a.dest]
+        setattr(args, a.dest, v if isinstance(v, list) or not a.many else [v])
+    args.argv = [p.command, *_words(p, values)]
+    args._capture = []
+    state, reason = "", ""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            args.func(args)
+        except NoPointError:
+            pass  # the table is captured: its points carry state and reason
+        except ConvergenceError as exc:
+            state, reason = "not-converged", flag_message(str(exc), args)
+        except (ValueError, OverflowError, ZeroDivisionError) as exc:
+            state, reason = "invalid", flag_message(str(exc), args)
+    for w in caught:
+        item = (w.category.__name__, flag_message(str(w.message), args))
+        if item not in said:
+            said.append(item)
+    table = args._capture[0] if args._capture and not state else None
+    return table, state, reason
+
+
+def evaluate(p: Plan, index: int, block: tuple[slice, ...], *, fast: bool = True) -> Block:
+    """The records of the block ``block`` (number ``index``) of the plan ``p``.
+
+    ``fast=False``: point by point even where a whole block is one call (for the tests that
+    compare the two).
+    """
+    from ._fast import pulloff_block
+
+    if fast:
+        whole = pulloff_block(p, index, block)
+        if whole is not None:
+            return whole
+    shape = tuple(s.stop - s.start for s in block)
+    n = math.prod(shape)
+    said: list[tuple[str, str]] = []
+    pieces: list[tuple[np.ndarray, dict[str, np.ndarray], int]] = []  # flat idx, columns, recs
+    failed: dict[int, tuple[str, str]] = {}
+    units: dict[str, str] = {}
+    parameters: dict[str, Any] = {}
+    axis_values = [a.values[s] for a, s in zip(p.axes, block, strict=True)]
+    flat = np.arange(n).reshape(shape) if shape else np.zeros((), int)
+    vec = next((k for k, a in enumerate(p.axes) if a.dest == p.vector), None)
+    rows: list[tuple[Any, Any]] | None = [((), flat)] if not shape else None
+    if rows is None:
+        if vec is None:
+            rows = [(ix, flat[ix]) for ix in np.ndindex(*shape)]
+        else:
+            moved = np.moveaxis(flat, vec, -1)
+            rows = [(ix, moved[ix]) for ix in np.ndindex(*moved.shape[:-1])]
+    for ix, idx in rows:
+        values: dict[str, Any] = {}
+        idx = np.atleast_1d(idx)
+        if vec is None:
+            for k, a in enumerate(p.axes):
+                values[a.dest] = axis_values[k][ix[k]]
+        else:
+            others = [k for k in range(len(p.axes)) if k != vec]
+            for k, at in zip(others, list(ix), strict=True):
+                values[p.axes[k].dest] = axis_values[k][int(at)]
+            values[p.axes[vec].dest] = list(axis_values[vec])
+        table, state, reason = _call(p, values, said)
+        if table is None and vec is not None and len(idx) > 1:  # find the point(s) at fault
+            for j, i in enumerate(idx.tolist()):
+                one = dict(values)
+                one[p.axes[vec].dest] = axis_values[vec][j]
+                t1, s1, r1 = _call(p, one, said)
+                if t1 is None:
+                    failed[int(i)] = (s1, r1)
+                else:
+                    pieces.append((np.array([i]), dict(t1.columns), 1))
+                    meta(t1, units, parameters)
+            continue
+        if table is None:
+            for i in idx:
+                failed[int(i)] = (state, reason)
+            continue
+        meta(table, units, parameters)
+        recs = table.size if vec is None else 1
+        if vec is not None and table.size != len(idx):
+            raise RuntimeError(
+                f"linecontact {p.command} gave {table.size} records for {len(idx)} values of "
+                f"{p.axes[vec].flag}"
+            )
+        pieces.append((idx, dict(table.columns), recs))
+    return Block(index, assemble(shape, n, pieces, failed), units, parameters, said)

@@ -1,0 +1,85 @@
+"""The values of a swept flag: numbers, ranges ``start:stop:num[:log]``, or words."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+
+__all__ = ["MAX_SWEEP_POINTS", "flag_values", "is_range"]
+
+#: Most points one sweep may ask for (the outer product of its swept flags).
+MAX_SWEEP_POINTS = 10**9
+
+
+def is_range(word: str) -> bool:
+    """True when ``word`` is a range ``start:stop:num[:log]`` (not a number or a word)."""
+    return ":" in word
+
+
+def _number(flag: str, text: str, kind: type) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise ValueError(
+            f"{flag} takes numbers or ranges start:stop:num[:log], got {text!r}"
+        ) from None
+    if kind is int:
+        if not (math.isfinite(value) and value.is_integer()):
+            raise ValueError(f"{flag} takes integers, got {text!r}")
+    return value
+
+
+def _range(flag: str, text: str, kind: type) -> np.ndarray:
+    parts = text.split(":")
+    log = len(parts) == 4 and parts[3].strip().lower() == "log"
+    if len(parts) not in (3, 4) or (len(parts) == 4 and not log):
+        raise ValueError(f"{flag}: a range is start:stop:num or start:stop:num:log, got {text!r}")
+    start = _number(flag, parts[0], float)
+    stop = _number(flag, parts[1], float)
+    try:
+        num_f = float(parts[2])
+    except ValueError:
+        num_f = math.nan
+    if not (math.isfinite(num_f) and num_f.is_integer() and num_f >= 1):
+        raise ValueError(f"{flag}: the range {text!r} needs num an integer >= 1, got {parts[2]!r}")
+    num = int(num_f)
+    if num > MAX_SWEEP_POINTS:
+        raise ValueError(f"{flag}: the range {text!r} asks for more than {MAX_SWEEP_POINTS} points")
+    for name, v in (("start", start), ("stop", stop)):
+        if not math.isfinite(v):
+            raise ValueError(f"{flag}: the range {text!r} needs a finite {name}")
+    if log:
+        if start <= 0 or stop <= 0:
+            raise ValueError(f"{flag}: a log range needs start and stop > 0, got {text!r}")
+        if stop < start:
+            raise ValueError(f"{flag}: a log range needs stop >= start, got {text!r}")
+        values = np.geomspace(start, stop, num) if num > 1 else np.array([start])
+    else:
+        values = np.linspace(start, stop, num)
+    if kind is int:
+        rounded = np.round(values)
+        if not np.all(rounded == values):
+            raise ValueError(f"{flag} takes integers: the range {text!r} gives non-integers")
+    return values
+
+
+def flag_values(flag: str, words: Sequence[str], kind: Any) -> list[Any]:
+    """The values of ``flag`` that ``words`` give: each a number, a range, or a word.
+
+    ``kind`` is the flag's type (``float``, ``int``; anything else: the words themselves).
+    Numbers come back as Python floats or ints, in the order given, ranges expanded.
+    """
+    if not words:
+        raise ValueError(f"{flag} needs at least one value")
+    if kind not in (float, int):
+        return list(words)
+    out: list[Any] = []
+    for w in words:
+        vals = _range(flag, w, kind) if is_range(w) else np.array([_number(flag, w, kind)])
+        out.extend(int(v) if kind is int else float(v) for v in vals)
+    if len(out) > MAX_SWEEP_POINTS:
+        raise ValueError(f"{flag} asks for more than {MAX_SWEEP_POINTS} values")
+    return out
