@@ -18,6 +18,7 @@ FLOORS = {
     "base": [
         "linecontact._version",
         "linecontact._interrupt",
+        "linecontact._progress",
         "linecontact.errors",
         "linecontact._validation",
         "linecontact.domain",

@@ -20,17 +20,15 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import ClassVar, Literal
+from typing import Any, ClassVar, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import closed_forms as _cf
 from . import normal as _normal
-from ._least_squares import (
-    _refit_rows,
-    _solve,
-)
+from ._least_squares import _refit_rows, _solve
+from ._progress import progress_bar
 from ._validation import broadcast, check_array, first_point
 from .cylinder import _check_cylinder_si, _plausible
 from .materials import MAUGIS_STRENGTH
@@ -372,6 +370,7 @@ def fit_pull_off(
     modulus_sd: float = 0.0,
     equilibrium_spacing_sd: float = 0.0,
     samples: int = 100,
+    progress: bool | None = False,
 ) -> AdhesionFit:
     r"""Fit the work of adhesion (and the range) to pull-off forces at several radii.
 
@@ -411,6 +410,9 @@ def fit_pull_off(
         the uncertainty they add (``work_of_adhesion_sd_inputs``, ...; draws at or below
         zero and refits without a solution are skipped). Only with ``modulus_sd`` or
         ``equilibrium_spacing_sd``.
+    progress : bool or None, default False
+        A progress bar of the refits (bootstrap and ``samples``) on stderr: shown (True),
+        not (False), or where stderr is a terminal (None).
 
     Returns
     -------
@@ -456,11 +458,7 @@ def fit_pull_off(
         raise ValueError(
             "equilibrium_spacing_sd needs a fixed equilibrium_spacing (a joint fit estimates z0)"
         )
-    if (
-        isinstance(samples, bool)
-        or not isinstance(samples, (int, np.integer))
-        or not 2 <= samples <= 100_000
-    ):
+    if not _is_count(samples, 2):
         raise ValueError(f"samples must be an integer in [2, 1e5], got {samples!r}")
     n_par = 1 if fixed else 2
     if R.size < n_par + (0 if fixed else 1):
@@ -490,11 +488,7 @@ def fit_pull_off(
                 "N/m: the weights need sd between 1e-12 and 1e6 times the force"
             )
         have_sd = True
-    if bootstrap != "auto" and (
-        isinstance(bootstrap, bool)
-        or not isinstance(bootstrap, (int, np.integer))
-        or not 0 <= bootstrap <= 100_000
-    ):
+    if bootstrap != "auto" and not _is_count(bootstrap, 0):
         raise ValueError(f"bootstrap must be 'auto' or an integer in [0, 1e5], got {bootstrap!r}")
     z_fixed = 0.0
     if equilibrium_spacing is not None:
@@ -598,7 +592,10 @@ def fit_pull_off(
             "[1e-12, 1e-7] m): these data may not be pull-offs of this model (check units)"
         )
     n_boot = (0 if np.all(sd_log <= 0.1) else 100) if bootstrap == "auto" else int(bootstrap)
-    if n_boot > 0 and np.isfinite(scale):
+    n_boot = n_boot if np.isfinite(scale) else 0
+    n_in = int(samples) if modulus_sd or equilibrium_spacing_sd else 0
+    bar = progress_bar(n_boot + n_in, "fit", progress if n_boot + n_in else False, unit=" refits")
+    if n_boot > 0:
         rng = np.random.default_rng(seed)
         noise = sig * (1.0 if have_sd else math.sqrt(scale))
         Fb = model(p) + noise * rng.standard_normal((n_boot, F.size))  # one resample a row
@@ -611,26 +608,22 @@ def fit_pull_off(
             # a refit on a bound: one by one, which may stop inside (where the cost is flat)
             edge = np.isclose(pb, lo, rtol=0, atol=1e-6) | np.isclose(pb, hi, rtol=0, atol=1e-6)
             pb[np.any(edge, axis=1)] = np.nan
-        for row in np.flatnonzero(np.isnan(pb[:, 0])):  # the refits left: one by one
+        left = np.flatnonzero(np.isnan(pb[:, 0]))
+        bar.update(n_boot - left.size)  # the skipped and the batched ones
+        for row in left:  # the refits left: one by one
             pb[row] = solve(Fb[row], p).x
+            bar.update(1)
         if len(pb) >= 20:
             ws = np.exp(pb[:, 0])
             zs = np.full(len(pb), z0) if fixed else np.exp(pb[:, 1])
             ci_w = tuple(float(v) for v in np.percentile(ws, [2.5, 97.5]))  # type: ignore[assignment]
             ci_z = tuple(float(v) for v in np.percentile(zs, [2.5, 97.5]))  # type: ignore[assignment]
     w_sd_in, z_sd_in = 0.0, 0.0
-    if modulus_sd or equilibrium_spacing_sd:
-        w_sd_in, z_sd_in = _input_refits(
-            R,
-            F,
-            E,
-            sd,
-            z_fixed if fixed else None,
-            float(modulus_sd),
-            float(equilibrium_spacing_sd),
-            int(samples),
-            int(seed) + 1,
-        )
+    if n_in:
+        sds = (float(modulus_sd), float(equilibrium_spacing_sd))
+        z_in = z_fixed if fixed else None
+        w_sd_in, z_sd_in = _input_refits(R, F, E, sd, z_in, *sds, n_in, int(seed) + 1, bar)
+    bar.close()
     return AdhesionFit(
         w,
         z0,
@@ -658,6 +651,11 @@ def fit_pull_off(
     )
 
 
+def _is_count(v: object, lo: int) -> bool:
+    """Whether ``v`` is an integer (not a bool) in ``[lo, 1e5]``."""
+    return not isinstance(v, bool) and isinstance(v, (int, np.integer)) and bool(lo <= v <= 1e5)
+
+
 def _model_rows(P: NDArray, R: NDArray, E: float, z0: float | None) -> NDArray:
     """The pull-off forces [N/m] at the radii ``R``, one row per row of log parameters ``P``.
 
@@ -679,24 +677,27 @@ def _input_refits(
     z0_sd: float,
     samples: int,
     seed: int,
+    bar: Any,
 ) -> tuple[float, float]:
     """The standard uncertainties of ``(w, z0)`` from the modulus (and a fixed ``z0``) drawn.
 
     ``samples`` refits without bootstrap, each with ``E`` (and a fixed ``z0``) drawn from
     normal distributions; a draw at or below zero, or one no fit reproduces, is skipped. For
-    a fixed ``z0`` the second value is ``z0_sd`` itself.
+    a fixed ``z0`` the second value is ``z0_sd`` itself. ``bar`` counts the refits.
     """
     rng = np.random.default_rng(seed)
     ws, zs = [], []
     for _ in range(samples):  # the draws in this order: E, then a fixed z0, per refit
         Ei = E + E_sd * rng.standard_normal()
         zi = (z0 + z0_sd * rng.standard_normal()) if z0 is not None else None
-        if Ei <= 0 or (zi is not None and zi <= 0):
-            continue
         try:
+            if Ei <= 0 or (zi is not None and zi <= 0):
+                continue
             fi = fit_pull_off(R, F, Ei, sd=sd, equilibrium_spacing=zi, bootstrap=0)
         except ValueError:
             continue
+        finally:
+            bar.update(1)
         ws.append(fi.work_of_adhesion)
         zs.append(fi.equilibrium_spacing)
     if len(ws) < 2:

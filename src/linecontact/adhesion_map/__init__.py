@@ -61,6 +61,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import closed_forms as _cf
+from .._progress import progress_bar
 from .._validation import check_array
 from ..closed_forms import lennard_jones_rigid_load, lennard_jones_rigid_pull_off
 from ..errors import ConvergenceError
@@ -613,7 +614,7 @@ def adhesion_map(
     y: ArrayLike | None = None,
     *,
     tol: float = 0.05,
-    progress: Callable[[str], object] | None = None,
+    progress: Callable[[str], object] | bool | None = None,
     workers: int | None = None,
     resume_dir: str | os.PathLike[str] | None = None,
 ) -> AdhesionMap:
@@ -632,10 +633,12 @@ def adhesion_map(
     tol : float, default 0.05
         A model agrees where the relative error of its half-width is at most ``tol``, in
         ``(0, 1)``.
-    progress : callable, optional
-        Called with a short message (``"7/13 curves, 12.3 s"``; ``"(3 resumed)"`` after the
-        count where rows came from ``resume_dir``) once before the first curve and after
-        each one.
+    progress : callable or bool, optional
+        A callable is called with a short message (``"7/13 curves, 12.3 s"``; ``"(3
+        resumed)"`` after the count where rows came from ``resume_dir``) once before the
+        first curve and after each one. ``True``: a progress bar of the curves done (those
+        resumed included) on stderr (tqdm where installed, else a plain line). ``False`` or
+        None (the default): nothing.
     workers : int, optional
         Processes computing the curves (one per ``mu``, each independently: the map is the
         one computed in this process, whatever ``workers``), at least 1; 1 computes them in
@@ -677,7 +680,7 @@ def adhesion_map(
     mu, y, tol = _check_inputs(mu, y, tol)
     workers = _check_workers(workers)
     store = _store(resume_dir)
-    say = progress if progress is not None else (lambda msg: None)
+    say = progress if callable(progress) else (lambda msg: None)
     t0 = time.perf_counter()
     keys = [_row_key(float(m), y) if store is not None else "" for m in mu]
     paths: list[pathlib.Path] = []
@@ -696,6 +699,7 @@ def adhesion_map(
         rows[k] = row
         count[0] += 1
         report()
+        bar.update(1)
 
     tasks = [
         (k, float(mu[k]), y, str(paths[k]) if store is not None else None, keys[k])
@@ -703,7 +707,9 @@ def adhesion_map(
         if r is None
     ]
     report()
-    _run(tasks, min(workers, len(tasks)), done, _map_row)  # looked up now (tests replace it)
+    show = progress is True  # a bar of the curves done, the resumed ones as its start
+    with progress_bar(mu.size, "map", show, initial=resumed, unit=" curves") as bar:
+        _run(tasks, min(workers, len(tasks)), done, _map_row)  # looked up now (tests replace it)
     full = [r for r in rows if r is not None]
     F_po = np.array([[r.F_pulloff] for r in full])
     F = F_po + y * np.abs(F_po)

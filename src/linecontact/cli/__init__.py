@@ -269,9 +269,9 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"{prefix}: warning: {note}", file=sys.stderr)
     seen: set[str] = set()
     said: list[str] = []
-    quiet = bool(getattr(args, "quiet", False))
 
     def once(message, category, filename, lineno, file=None, line=None):
+        quiet = bool(getattr(args, "quiet", False))  # read when said (sweep sets it late)
         if quiet and not is_units_warning(message, category):  # --quiet: model notes only
             return
         text = str(message)

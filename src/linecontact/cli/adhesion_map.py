@@ -18,10 +18,11 @@ import math
 import pathlib
 import sys
 from contextlib import suppress
-from typing import TYPE_CHECKING, Any, TextIO
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._progress import _isatty
 from ..output import FORMATS, Table, table_from_result, write
 from ._options import add_command, add_output_options, command_line, emit, show_together
 
@@ -155,13 +156,13 @@ def register(sub: Any) -> None:
     p.add_argument(
         "--progress",
         action="store_true",
-        help="a progress line on stderr even where it is not a terminal",
+        help="a progress bar on stderr even where it is not a terminal",
     )
     show_together(
         p,
         "--workers",
         "--progress",
-        help="processes computing the curves, >= 1 (default: the cores); a progress line "
+        help="processes computing the curves, >= 1 (default: the cores); a progress bar "
         "on stderr also where it is not a terminal (there it is by default)",
     )
     add_output_options(p, image_alias=True)
@@ -230,40 +231,6 @@ def _clear_partial(partial: pathlib.Path) -> None:
             f.unlink()
     with suppress(OSError):
         partial.rmdir()
-
-
-class _ProgressLine:
-    """The map's progress on ``stream``: one line, rewritten in place on a terminal.
-
-    Off where ``stream`` is not a terminal unless ``force`` (then a line per update).
-    """
-
-    def __init__(self, stream: TextIO, force: bool) -> None:
-        self.stream = stream
-        try:
-            self.tty = stream.isatty()
-        except (AttributeError, ValueError):  # closed, or not a file
-            self.tty = False
-        self.on = self.tty or force
-        self.shown = False
-
-    def __call__(self, msg: str) -> None:
-        if not self.on:
-            return
-        text = f"map: {msg}"
-        if self.tty:
-            self.stream.write(f"\r{text}\x1b[K")
-            self.shown = True
-        else:
-            self.stream.write(text + "\n")
-        self.stream.flush()
-
-    def end(self) -> None:
-        """End the line in place (before other output, or at the end)."""
-        if self.shown:
-            self.stream.write("\n")
-            self.stream.flush()
-            self.shown = False
 
 
 def _table(m: AdhesionMap, args: argparse.Namespace, files: list[str]) -> Table:
@@ -337,14 +304,13 @@ def _cmd_map(args: argparse.Namespace) -> int:
             f"cannot write the map to --outdir {args.outdir!r}: {exc.strerror or exc}"
         ) from None
 
-    line = _ProgressLine(sys.stderr, args.progress)
     partial = out / PARTIAL
+    bar = bool(args.progress) or _isatty()  # the bar of the curves done, resumed ones too
     try:
         m = adhesion_map(
-            mu, y, tol=args.tol, progress=line, workers=args.workers, resume_dir=partial
+            mu, y, tol=args.tol, progress=bar, workers=args.workers, resume_dir=partial
         )
-    except BaseException:
-        line.end()
+    except BaseException:  # the bar is closed: a line of its own
         kept = sorted(partial.glob("*.npz")) if partial.is_dir() else []
         if kept:
             print(
@@ -352,7 +318,6 @@ def _cmd_map(args: argparse.Namespace) -> int:
                 file=sys.stderr,
             )
         raise
-    line.end()
     try:
         paths = draw(m, out, formats, size)
         data = out / "adhesion_map.csv"

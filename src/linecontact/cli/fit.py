@@ -138,6 +138,12 @@ def register(sub: Any) -> None:
                 metavar="N",
                 help="bootstrap refits of a joint fit, or auto (default: %(default)s)",
             )
+            p.add_argument(
+                "--progress",
+                action="store_true",
+                default=None,
+                help="a bar of the refits on stderr (default: where it is a terminal)",
+            )
         else:
             si.add_argument("--work-of-adhesion", type=float, metavar="W", help="w [J/m^2]")
             si.add_argument("--work-of-adhesion-sd", metavar="SD", help="[J/m^2] or N%%")
@@ -406,6 +412,7 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
             seed=args.seed,
             modulus_sd=E_sd,
             equilibrium_spacing_sd=z_sd,
+            progress=args.progress,  # None: where stderr is a terminal
         )
         z_ref = fit.equilibrium_spacing
         simple = inv.simple_model_work_of_adhesion(R, F, E, z_ref, sd)

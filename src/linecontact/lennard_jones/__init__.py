@@ -60,6 +60,7 @@ from ._curve import (
     lj_pull_off,
     lj_state,
 )
+from ._curve import forget as _forget  # noqa: F401 - for linecontact.sweeps
 from ._groups import LennardJonesPullOff, lj_groups, pull_off_in_dugdale_groups, pull_off_of
 from ._limit import MU_SELF_CONSISTENT
 from ._matching import (

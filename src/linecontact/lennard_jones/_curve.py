@@ -19,7 +19,16 @@ from ..results import Result
 from . import _branch as _b
 from ._limit import MU_SELF_CONSISTENT, limit_pull_off
 from ._matching import maugis_parameter_of_mu
-from ._solver import _EDGE_GAP, _check_m, _edge_meshes, _grid_for, _law, _solve, _Solved
+from ._solver import (
+    _EDGE_GAP,
+    _check_m,
+    _edge_meshes,
+    _grid_for,
+    _law,
+    _meshes,
+    _solve,
+    _Solved,
+)
 
 # ---------------------------------------------------------------------------------------
 # results
@@ -254,6 +263,18 @@ _LAST: dict[tuple[float, int | None], list[_Solved]] = {}
 #: groups' ``contact_for_load`` solves them one by one) search it once. Only speed depends on
 #: it.
 _LAST_PULL_OFF: dict[tuple[float, int | None], tuple[_Solved, _Solved | None]] = {}
+
+
+def forget() -> None:
+    """Forget the last curve and pull-off: the next call starts as a fresh process does.
+
+    They (and the factorisations the meshes keep) change a result only within the solver's
+    tolerance, but a sweep's points must not depend on the order in which a process met
+    them (:mod:`linecontact.sweeps`).
+    """
+    _LAST.clear()
+    _LAST_PULL_OFF.clear()
+    _meshes.cache_clear()
 
 
 def _pull_off(mu: float, m: int | None, grid) -> tuple[_Solved, _Solved | None]:

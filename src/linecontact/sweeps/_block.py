@@ -52,28 +52,27 @@ def template(p: Plan) -> Any:
 
 
 def _column(v: np.ndarray) -> np.ndarray:
-    """A record column as a sweep stores it: float, bool, or str."""
+    """A record column as a sweep stores it: float, bool, or text (objects)."""
     kind = v.dtype.kind
     if kind == "b":
         return v.astype(bool)
     if kind in "fiu":
         return v.astype(float)
-    out: list[Any] = []
-    numeric = True
-    for x in v.tolist():
-        if x is None:
-            out.append(None)
-        elif isinstance(x, str):
-            numeric = False
-            out.append(x)
-        elif isinstance(x, (list, tuple, dict)):
-            numeric = False
-            out.append(json.dumps(x))
-        else:
-            out.append(x)
-    if numeric:
-        return np.array([math.nan if x is None else float(x) for x in out], float)
-    return np.array(["" if x is None else str(x) for x in out], dtype=object)
+    try:
+        kinds = {type(x) for x in set(v.tolist())}  # few distinct values: cheap
+    except TypeError:  # lists (unhashable): JSON text
+        kinds = {list}
+    none = v == np.array(None)
+    if kinds <= {str, type(None)}:
+        out = v.astype(object)
+        out[none] = ""
+        return out
+    if kinds <= {int, float, type(None)}:
+        return np.where(none, math.nan, v).astype(float)
+    return np.array(
+        ["" if x is None else x if isinstance(x, str) else json.dumps(x) for x in v.tolist()],
+        dtype=object,
+    )
 
 
 def _fill(kind: str) -> Any:

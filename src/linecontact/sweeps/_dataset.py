@@ -157,7 +157,8 @@ def write(ds: Any, output: str | os.PathLike[str], overwrite: bool) -> None:
     tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-", dir=out.parent))
     target = tmp / out.name
     try:
-        with dask.config.set(scheduler="synchronous"):  # one block at a time: bounded memory
+        threads = min(4, os.cpu_count() or 1)  # a few blocks at a time: bounded memory
+        with dask.config.set(scheduler="threads", num_workers=threads):
             if fmt == "zarr":
                 enc.to_zarr(target, mode="w", consolidated=False)
             else:

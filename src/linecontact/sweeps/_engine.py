@@ -13,54 +13,19 @@ from __future__ import annotations
 import logging
 import os
 import re
-import sys
 import warnings
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
 from .. import errors as _errors
+from .._progress import progress_bar
 from ._dataset import build, open_sweep, write
 from ._plan import Plan, blocks
 from ._points import Block, _call, evaluate
 from ._store import Partial, format_of, need, store_key
 
-__all__ = ["need", "progress_bar", "run"]
-
-
-class _Bar:
-    """A minimal progress line, where tqdm is not installed."""
-
-    def __init__(self, total: int, initial: int, desc: str, disable: bool) -> None:
-        self.total, self.n, self.desc, self.disable = total, initial, desc, disable
-
-    def update(self, n: int) -> None:
-        self.n += n
-        if not self.disable:
-            print(f"\r{self.desc}: {self.n}/{self.total}", end="", file=sys.stderr, flush=True)
-
-    def close(self) -> None:
-        if not self.disable:
-            print(file=sys.stderr)
-
-
-def progress_bar(total: int, desc: str, progress: bool | None, initial: int = 0) -> Any:
-    """A progress bar on stderr: on where stderr is a terminal, or where ``progress``."""
-    show = sys.stderr.isatty() if progress is None else bool(progress)
-    try:
-        from tqdm import tqdm
-    except ImportError:
-        return _Bar(total, initial, desc, not show)
-    return tqdm(
-        total=total,
-        initial=initial,
-        desc=desc,
-        disable=not show,
-        file=sys.stderr,
-        unit=" points",
-        dynamic_ncols=True,
-        mininterval=0.5,
-    )
+__all__ = ["run"]
 
 
 def _check_output(output: str | os.PathLike[str]) -> None:

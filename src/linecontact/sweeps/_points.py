@@ -18,6 +18,7 @@ from typing import Any
 import numpy as np
 
 from ..errors import ConvergenceError
+from ..lennard_jones import _forget
 from ._block import Block, assemble, meta, template
 from ._plan import Plan
 
@@ -39,6 +40,7 @@ def _call(p: Plan, values: dict[str, Any], said: list[tuple[str, str]]) -> tuple
     """Run the subcommand at ``values`` (dest: value): (its table or None, state, reason)."""
     from ..cli._options import NoPointError, flag_message
 
+    _forget()  # each point as a fresh process computes it, whatever came before
     args = copy.copy(template(p))
     for a in p.axes:
         v = values[a.dest]

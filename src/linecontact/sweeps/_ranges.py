@@ -56,7 +56,10 @@ def _range(flag: str, text: str, kind: type) -> np.ndarray:
             raise ValueError(f"{flag}: a log range needs start and stop > 0, got {text!r}")
         if stop < start:
             raise ValueError(f"{flag}: a log range needs stop >= start, got {text!r}")
-        values = np.geomspace(start, stop, num) if num > 1 else np.array([start])
+        if num == 1 or start == stop:
+            values = np.full(num, start)
+        else:  # increasing to the last bit, whatever the rounding of the powers
+            values = np.maximum.accumulate(np.geomspace(start, stop, num))
     else:
         values = np.linspace(start, stop, num)
     if kind is int:
