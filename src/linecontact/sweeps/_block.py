@@ -18,7 +18,46 @@ import numpy as np
 from ..output import unit_of
 from ._plan import Plan, parse
 
-__all__ = ["Block", "assemble", "template"]
+__all__ = ["TEXT", "Block", "assemble", "codes", "is_text", "template", "to_text"]
+
+#: The dtype of text in a store: NumPy's variable-width strings (NumPy 2), else objects.
+#: In a block, text is an array of Python strings (objects): cheap to fill and to compare.
+_STRINGS: Any = getattr(np.dtypes, "StringDType", None)
+TEXT: Any = np.dtype(object) if _STRINGS is None else _STRINGS()
+
+
+def is_text(dtype: Any) -> bool:
+    """True for a dtype of text (objects, NumPy strings)."""
+    return np.dtype(dtype).kind in "OTUS"
+
+
+def to_text(v: np.ndarray) -> np.ndarray:
+    """``v`` as text of a store (:data:`TEXT`)."""
+    if v.dtype == TEXT:
+        return v
+    if TEXT.kind == "O":  # NumPy 1: objects that are str
+        return v.astype(str).astype(object)
+    return v.astype(TEXT)
+
+
+def codes(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(categories, codes)`` of text ``v``: ``categories[codes] == v``."""
+    flat = v.ravel()
+    cats = list(dict.fromkeys(str(x) for x in set(flat.tolist())))
+    if len(cats) <= 32:  # a few labels (state, mechanism): one comparison each
+        at = np.zeros(flat.shape, np.int32)
+        for i, c in enumerate(cats[1:], 1):
+            at[flat == c] = i
+    else:  # many (reasons with numbers in them)
+        index = {c: i for i, c in enumerate(cats)}
+        at = np.fromiter((index[str(x)] for x in flat.tolist()), np.int32, count=flat.size)
+    return np.array(cats, dtype=object), at.reshape(v.shape)
+
+
+def _objects(v: np.ndarray) -> np.ndarray:
+    """NumPy strings as an array of Python strings, each distinct one made once."""
+    cats, at = codes(v)
+    return cats[at] if cats.size else np.empty(v.shape, dtype=object)
 
 
 @dataclass
@@ -52,27 +91,27 @@ def template(p: Plan) -> Any:
 
 
 def _column(v: np.ndarray) -> np.ndarray:
-    """A record column as a sweep stores it: float, bool, or text (objects)."""
+    """A record column as a sweep stores it: float, bool, or text (:data:`TEXT`)."""
     kind = v.dtype.kind
     if kind == "b":
-        return v.astype(bool)
+        return np.asarray(v, bool)
     if kind in "fiu":
-        return v.astype(float)
+        return np.asarray(v, float)  # no copy of floats
+    if kind in "TUS":
+        return _objects(v)
     try:
         kinds = {type(x) for x in set(v.tolist())}  # few distinct values: cheap
     except TypeError:  # lists (unhashable): JSON text
         kinds = {list}
     none = v == np.array(None)
     if kinds <= {str, type(None)}:
-        out = v.astype(object)
+        out = v.copy()
         out[none] = ""
         return out
     if kinds <= {int, float, type(None)}:
         return np.where(none, math.nan, v).astype(float)
-    return np.array(
-        ["" if x is None else x if isinstance(x, str) else json.dumps(x) for x in v.tolist()],
-        dtype=object,
-    )
+    text = ["" if x is None else x if isinstance(x, str) else json.dumps(x) for x in v.tolist()]
+    return np.array(text, dtype=object)
 
 
 def _fill(kind: str) -> Any:
@@ -95,15 +134,22 @@ def assemble(
 ) -> dict[str, np.ndarray]:
     recs = max([r for _, _, r in pieces], default=1)
     cols: dict[str, np.ndarray] = {}
+    if len(pieces) == 1 and not failed and recs == 1 and np.array_equal(pieces[0][0], np.arange(n)):
+        # one call gave every point in order (a block at once): its columns, not copies
+        out = {k: _column(np.asarray(v)).reshape(shape) for k, v in pieces[0][1].items()}
+        for k, fill in (("state", "ok"), ("reason", "")):
+            out[k] = _objects(out[k]) if k in out else np.full(shape, fill, dtype=object)
+        return out
     for idx, columns, r in pieces:
         for k, v in columns.items():
             v = _column(np.asarray(v))
             if k not in cols:
                 cols[k] = np.full((n, recs), _fill(v.dtype.kind), dtype=v.dtype)
             target = cols[k]
-            if target.dtype != v.dtype and target.dtype.kind != "O":
-                if v.dtype.kind == "O":
-                    cols[k] = target = target.astype(object)
+            if target.dtype != v.dtype:
+                if is_text(v.dtype) or is_text(target.dtype):
+                    cols[k] = target = target.astype(str).astype(object)
+                    v = v.astype(str).astype(object)
                 else:
                     v = v.astype(target.dtype)
             if r == 1:
@@ -115,7 +161,7 @@ def assemble(
             fill = "ok" if k == "state" else ""
             cols[k] = np.full((n, recs), fill, dtype=object)
         if cols[k].dtype.kind != "O":
-            cols[k] = cols[k].astype(object)
+            cols[k] = cols[k].astype(str).astype(object)
     for i, (state, reason) in failed.items():
         for v in cols.values():
             v[i, :] = _fill(v.dtype.kind)

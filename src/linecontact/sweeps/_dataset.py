@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 
 from .._version import __version__
+from ._block import TEXT, to_text
 from ._plan import Plan, blocks
 from ._store import Partial, format_of, need
 
@@ -27,11 +28,6 @@ __all__ = ["JSON_ATTRS", "build", "open_sweep", "write"]
 
 #: The attributes kept as JSON text in a file.
 JSON_ATTRS = ("linecontact", "command", "parameters", "units", "swept", "variables")
-
-
-#: The dtype of text variables: NumPy's variable-width strings (NumPy 2), else objects.
-_STRINGS: Any = getattr(np.dtypes, "StringDType", None)
-TEXT: Any = np.dtype(object) if _STRINGS is None else _STRINGS()
 
 
 def _fill(kind: str) -> Any:
@@ -78,7 +74,8 @@ def build(p: Plan, partial: Partial, parameters: dict[str, Any]) -> Any:
     lazy = partial.dir is not None
     data_vars = {}
     for name in names:
-        dtype = TEXT if kinds[name] == "O" else np.dtype(bool if kinds[name] == "b" else float)
+        text = TEXT if lazy else np.dtype(object)  # in memory: Python strings, no copies
+        dtype = text if kinds[name] == "O" else np.dtype(bool if kinds[name] == "b" else float)
         fill = _fill(kinds[name])
 
         def piece(k: int, name: str = name, dtype: Any = dtype, fill: Any = fill) -> np.ndarray:
@@ -89,7 +86,11 @@ def build(p: Plan, partial: Partial, parameters: dict[str, Any]) -> Any:
                 return np.full(full, fill, dtype=dtype)
             v = np.asarray(v)
             if v.dtype != dtype:
-                v = v.astype(str).astype(dtype) if kinds[name] == "O" else v.astype(dtype)
+                v = (
+                    (to_text(v) if lazy else v.astype(str).astype(object))
+                    if kinds[name] == "O"
+                    else v.astype(dtype)
+                )
             if records == 1:
                 return v.reshape(shape)
             if v.ndim == len(shape):  # one record per point in this block

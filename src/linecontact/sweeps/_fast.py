@@ -32,8 +32,13 @@ _GROUPS = ("R_over_h", "sigma0_over_E")
 
 @functools.lru_cache(maxsize=4)
 def _checked(p: Plan) -> tuple[Any, dict[str, np.ndarray], list[tuple[str, str]]]:
-    """The template, each axis's values refused (their messages), the warnings said."""
-    from ..cli._options import flag_message, groups
+    """The template, each axis's values refused (their messages), the warnings said.
+
+    Every check of a single input, the others fixed, is an interval (a range, a bound, a
+    threshold of a monotone group such as R/h or Dundurs' beta): where the smallest and the
+    largest value of an axis pass, so do those between. Only an axis whose ends do not is
+    checked value by value.
+    """
     from ._block import template as _template
 
     template = _template(p)
@@ -41,22 +46,37 @@ def _checked(p: Plan) -> tuple[Any, dict[str, np.ndarray], list[tuple[str, str]]
     said: list[tuple[str, str]] = []
     for a in p.axes:
         msgs = np.full(len(a.values), "", dtype=object)
-        for i, v in enumerate(a.values):
-            args = copy.copy(template)
-            setattr(args, a.dest, v)
-            args.argv = [p.command, *p.fixed, a.flag, repr(v)]
-            with warnings.catch_warnings(record=True) as caught:
-                warnings.simplefilter("always")
-                try:
-                    groups(args)
-                except (ValueError, OverflowError) as exc:
-                    msgs[i] = flag_message(str(exc), args)
-            for w in caught:
-                item = (w.category.__name__, flag_message(str(w.message), args))
-                if item not in said:
-                    said.append(item)
+        vals = np.asarray(a.values, float)
+        ends = sorted({int(np.argmin(vals)), int(np.argmax(vals))})
+        for i in ends:
+            msgs[i] = _check_one(p, template, a, a.values[i], said)
+        if any(msgs[i] for i in ends):
+            for i, v in enumerate(a.values):
+                if i not in ends:
+                    msgs[i] = _check_one(p, template, a, v, said)
         bad[a.dest] = msgs
     return template, bad, said
+
+
+def _check_one(p: Plan, template: Any, a: Any, v: Any, said: list[tuple[str, str]]) -> str:
+    """The message refusing the value ``v`` of the axis ``a`` ("" where it passes)."""
+    from ..cli._options import flag_message, groups
+
+    args = copy.copy(template)
+    setattr(args, a.dest, v)
+    args.argv = [p.command, *p.fixed, a.flag, repr(v)]
+    msg = ""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            groups(args)
+        except (ValueError, OverflowError) as exc:
+            msg = flag_message(str(exc), args)
+    for w in caught:
+        item = (w.category.__name__, flag_message(str(w.message), args))
+        if item not in said:
+            said.append(item)
+    return msg
 
 
 def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
@@ -76,14 +96,17 @@ def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
     )
     v = {a.dest: g.reshape(-1) for a, g in zip(p.axes, grids, strict=True)}
     n = math.prod(shape)
-    reason = np.full(n, "", dtype=object)
+    ok = np.ones(n, bool)
+    reasons: dict[int, str] = {}  # the points an axis's value refuses: the first reason
     for a, sl in zip(p.axes, block, strict=True):
         msgs = bad[a.dest][sl]
         if np.any(msgs != ""):
             lookup = dict(zip(a.values[sl], msgs, strict=True))
             m = np.array([lookup[x] for x in v[a.dest]], dtype=object)
-            reason = np.where(reason == "", m, reason)
-    ok = reason == ""
+            refused = m != ""
+            for i in np.flatnonzero(refused & ok):
+                reasons[int(i)] = str(m[i])
+            ok &= ~refused
 
     def get(dest: str) -> Any:
         return v[dest][ok] if dest in v else getattr(template, dest)
@@ -131,7 +154,7 @@ def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
     table = table_from_result(r, columns=extra, drop=r.inputs)  # inputs: parameters
     cols = {k: np.asarray(c) for k, c in table.columns.items()}
     idx = np.flatnonzero(ok)
-    failed = {int(i): ("invalid", str(reason[i])) for i in np.flatnonzero(~ok)}
+    failed = {i: ("invalid", why) for i, why in reasons.items()}
     data = assemble(shape, n, [(idx, cols, 1)], failed) if idx.size else None
     if data is None:
         return None

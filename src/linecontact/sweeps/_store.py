@@ -20,8 +20,8 @@ from typing import Any
 
 import numpy as np
 
+from ._block import TEXT, Block, codes, is_text
 from ._plan import Plan
-from ._points import Block
 
 __all__ = ["FORMATS", "Partial", "format_of", "need", "store_key"]
 
@@ -73,19 +73,24 @@ def _encode(data: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
     """Arrays for ``np.savez``: strings as codes into their categories (no pickles)."""
     out: dict[str, np.ndarray] = {}
     for k, v in data.items():
-        if v.dtype.kind == "O":
-            cats, codes = np.unique(v.astype(str), return_inverse=True)
-            out[f"{k}.codes"] = codes.reshape(v.shape).astype(np.int32)
-            out[f"{k}.cats"] = cats
+        if is_text(v.dtype):
+            cats, at = codes(v)
+            out[f"{k}.codes"] = at
+            out[f"{k}.cats"] = np.array([str(c) for c in cats.tolist()] or [""])  # no pickle
         else:
             out[k] = v
     return out
 
 
+def _kind(v: np.ndarray) -> str:
+    """``"O"`` for text, else the dtype's kind (``"f"``, ``"b"``)."""
+    return "O" if is_text(v.dtype) else v.dtype.kind
+
+
 def _decode(z: Any, name: str) -> np.ndarray:
     if name in z.files:
         return np.asarray(z[name])
-    cats = np.asarray(z[f"{name}.cats"]).astype(object)
+    cats = np.asarray(z[f"{name}.cats"]).astype(TEXT)
     return cats[np.asarray(z[f"{name}.codes"])]
 
 
@@ -150,7 +155,7 @@ class Partial:
         meta: dict[str, Any] = {"units": block.units, "parameters": block.parameters}
         meta["warnings"] = block.warnings
         meta["shapes"] = {k: v.shape for k, v in block.data.items()}
-        meta["kinds"] = {k: v.dtype.kind for k, v in block.data.items()}
+        meta["kinds"] = {k: _kind(v) for k, v in block.data.items()}
         arrays = _encode(block.data)
         arrays[_META] = np.array(json.dumps(meta))
         fd, tmp = tempfile.mkstemp(prefix=".tmp-", suffix=".npz", dir=self.dir)
@@ -173,7 +178,7 @@ class Partial:
                 "parameters": b.parameters,
                 "warnings": b.warnings,
                 "shapes": {k: v.shape for k, v in b.data.items()},
-                "kinds": {k: v.dtype.kind for k, v in b.data.items()},
+                "kinds": {k: _kind(v) for k, v in b.data.items()},
             }
         with np.load(self.dir / f"block-{index:06d}.npz") as z:
             return json.loads(str(z[_META]))
