@@ -59,3 +59,11 @@ def test_fit_pull_off(tmp_path):
     rows = [[float(v) for v in r.split(",")] for r in lines[2:]]
     assert len(rows) == 5 and all(F < 0 < sd for _, F, sd in rows)
     assert (tmp_path / "fit.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_sweep_pulloff(tmp_path):
+    pytest.importorskip("xarray")
+    out = run(tmp_path, "sweep_pulloff.py", "sweep.png")
+    assert "{'radius': 40, 'work_of_adhesion': 3} points" in out
+    assert out.count("pull-off") == 3 and "snap-off" in out
+    assert (tmp_path / "sweep.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

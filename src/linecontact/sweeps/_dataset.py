@@ -153,7 +153,7 @@ def write(ds: Any, output: str | os.PathLike[str], overwrite: bool) -> None:
 
     fmt = format_of(output)
     out = Path(output)
-    enc = ds.copy()
+    enc = ds.chunk(_store_chunks(ds)) if ds.chunks else ds.copy()
     enc.attrs = {k: json.dumps(v) if k in JSON_ATTRS else v for k, v in ds.attrs.items()}
     tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-", dir=out.parent))
     target = tmp / out.name
@@ -174,6 +174,23 @@ def write(ds: Any, output: str | os.PathLike[str], overwrite: bool) -> None:
         os.replace(target, out)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
+
+
+#: The most values of one chunk of a store (8 MB of floats): blocks of a few points (a
+#: point-by-point sweep) are joined, a block of a million points is cut.
+STORE_CHUNK = 1_000_000
+
+
+def _store_chunks(ds: Any) -> dict[str, int]:
+    """Chunks of about :data:`STORE_CHUNK` values: whole inner dimensions, outer ones cut."""
+    sizes = list(ds.sizes.items())
+    out: dict[str, int] = {}
+    inner = 1
+    for name, n in reversed(sizes):
+        take = max(1, min(n, STORE_CHUNK // inner))
+        out[name] = take
+        inner *= take
+    return out
 
 
 def _netcdf_engine() -> str:
