@@ -30,8 +30,10 @@ GROUPS = {"SI": SI, "data": SI + ", map, materials"}
 
 
 def _commands(cell: str) -> set[str]:
-    cell = GROUPS.get(cell.strip(), cell)
-    return {c.strip() for c in cell.split(",") if c.strip()}
+    out: set[str] = set()
+    for c in (c.strip() for c in cell.split(",") if c.strip()):  # a group (SI, data) or one
+        out |= {x.strip() for x in GROUPS[c].split(",")} if c in GROUPS else {c}
+    return out
 
 
 def _table() -> list[dict]:
