@@ -1,11 +1,13 @@
-"""A parameter study: the pull-off of a ZnO nanowire on silica against its radius, for three
-works of adhesion, from one sweep, plotted from the labelled dataset.
+"""A parameter study: the pull-off of a nanowire against its radius, one sweep.
+
+A ZnO nanowire on silica, over 40 radii for three works of adhesion, plotted from the
+labelled dataset::
 
     python examples/sweep_pulloff.py [sweep.png]
 
 The same sweep on the command line (``-o pulloff.zarr`` keeps it, resumable)::
 
-    linecontact sweep pulloff --radius 10e-9:1e-6:40:log --cylinder-material ZnO \\
+    linecontact sweep pulloff --radius 10e-9:1e-6:40:log --cylinder-material ZnO
         --substrate-material SiO2 --work-of-adhesion 0.05 0.2 1 --z0 3e-10 -o pulloff.zarr
 
 Needs the extra ``[sweep]`` (xarray, dask) and, for the figure, matplotlib.
