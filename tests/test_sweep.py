@@ -242,9 +242,12 @@ def _pairs(words):
     ],
 )
 def test_the_pull_off_a_block_at_a_time_equals_it_point_by_point(words):
+    from linecontact.sweeps._fast import pulloff_block
+
     p = plan("pulloff", words)
     bl = blocks(p.shape, p.chunk_points)
     assert len(bl) == 1
+    assert pulloff_block(p, 0, bl[0]) is not None  # a block at once, refused points and all
     whole = evaluate(p, 0, bl[0])
     one = evaluate(p, 0, bl[0], fast=False)
     assert list(whole.data) == list(one.data)
@@ -255,6 +258,18 @@ def test_the_pull_off_a_block_at_a_time_equals_it_point_by_point(words):
         else:
             assert (a == b).all(), k
     assert whole.units == one.units
+
+
+def test_many_points_outside_the_domain_name_the_groups(monkeypatch):
+    from linecontact.sweeps import _fast
+
+    monkeypatch.setattr(_fast, "_SAID_ONE_BY_ONE", 2)
+    ds = lc.sweep("pulloff", R_over_h=[1e-9, 2e-9, 3e-9, 100.0], sigma0_over_E=0.01)
+    assert list(ds.state.values) == ["invalid"] * 3 + ["ok"]
+    first, _, third = (str(r) for r in ds.reason.values[:3])
+    assert "--R-over-h" in first and "1e-09" in first
+    assert third.startswith("R/h = 3e-09, sigma0/E = 0.01: outside the domain") and first in third
+    assert np.isnan(ds.F_pulloff_over_Eh.values[:3]).all() and ds.F_pulloff_over_Eh.values[3] < 0
 
 
 def test_a_point_without_a_state_is_nan_with_its_state_and_reason():
@@ -435,6 +450,16 @@ def test_bad_input_is_one_error_line_exit_2_and_nothing_written(tmp_path, capsys
     lines = err.strip().splitlines()
     assert code == 2 and len(lines) == 1, err
     assert lines[0].startswith("linecontact sweep: error:") and named in lines[0], lines[0]
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_scheduler_that_does_not_answer_is_one_error_line(tmp_path, capsys):
+    pytest.importorskip("distributed")
+    out = tmp_path / "x.zarr"
+    argv = ["sweep", "pulloff", "--R-over-h", "10", "100", "--sigma0-over-E", "0.01"]
+    code = main([*argv, "--scheduler", "tcp://127.0.0.1:9", "-o", str(out)])
+    err = capsys.readouterr().err.strip().splitlines()
+    assert code == 2 and len(err) == 1 and "--scheduler" in err[0], err
     assert list(tmp_path.iterdir()) == []
 
 

@@ -7,18 +7,22 @@ record of NaN with its ``state`` and ``reason``.
 
 from __future__ import annotations
 
+import copy
 import functools
 import json
 import math
+import warnings
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
+from ..errors import ConvergenceError
+from ..lennard_jones import _forget
 from ..output import unit_of
 from ._plan import Plan, parse
 
-__all__ = ["TEXT", "Block", "assemble", "codes", "is_text", "template", "to_text"]
+__all__ = ["TEXT", "Block", "assemble", "call", "codes", "is_text", "template", "to_text"]
 
 #: The dtype of text in a store: NumPy's variable-width strings (NumPy 2), else objects.
 #: In a block, text is an array of Python strings (objects): cheap to fill and to compare.
@@ -88,6 +92,47 @@ class Block:
 @functools.lru_cache(maxsize=8)
 def template(p: Plan) -> Any:
     return parse(p.command, p.template_words())
+
+
+def _words(p: Plan, values: dict[str, Any]) -> list[str]:
+    words = list(p.fixed)
+    for a in p.axes:
+        v = values[a.dest]
+        if isinstance(v, list):
+            words += [a.flag, *(repr(x) for x in v)]
+        else:
+            words += [a.flag, repr(v) if a.unit else str(v)]
+    return words
+
+
+def call(p: Plan, values: dict[str, Any], said: list[tuple[str, str]]) -> tuple[Any, str, str]:
+    """Run the subcommand at ``values`` (dest: value): (its table or None, state, reason)."""
+    from ..cli._options import NoPointError, flag_message
+
+    _forget()  # each point as a fresh process computes it, whatever came before
+    args = copy.copy(template(p))
+    for a in p.axes:
+        v = values[a.dest]
+        setattr(args, a.dest, v if isinstance(v, list) or not a.many else [v])
+    args.argv = [p.command, *_words(p, values)]
+    args._capture = []
+    state, reason = "", ""
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            args.func(args)
+        except NoPointError:
+            pass  # the table is captured: its points carry state and reason
+        except ConvergenceError as exc:
+            state, reason = "not-converged", flag_message(str(exc), args)
+        except (ValueError, OverflowError, ZeroDivisionError) as exc:
+            state, reason = "invalid", flag_message(str(exc), args)
+    for w in caught:
+        item = (w.category.__name__, flag_message(str(w.message), args))
+        if item not in said:
+            said.append(item)
+    table = args._capture[0] if args._capture and not state else None
+    return table, state, reason
 
 
 def _column(v: np.ndarray) -> np.ndarray:

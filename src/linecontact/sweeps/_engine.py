@@ -20,9 +20,10 @@ from typing import Any
 
 from .. import errors as _errors
 from .._progress import progress_bar
+from ._block import Block, call
 from ._dataset import build, open_sweep, write
 from ._plan import Plan, blocks
-from ._points import Block, _call, evaluate
+from ._points import evaluate
 from ._store import Partial, format_of, need, store_key
 
 __all__ = ["run"]
@@ -53,7 +54,7 @@ def _usage(p: Plan) -> None:
         values = {a.dest: a.values[at] for a in p.axes}
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
-            table, state, reason = _call(p, values, [])
+            table, state, reason = call(p, values, [])
         if table is not None or state != "invalid":
             return
         reasons.append(reason)
@@ -76,7 +77,7 @@ def _shared(p: Plan, metas: list[dict[str, Any]]) -> dict[str, Any]:
             values = {a.dest: a.values[i] for a, i in zip(p.axes, ix, strict=True)}
             with warnings.catch_warnings():
                 warnings.simplefilter("ignore")
-                table, _, _ = _call(p, values, [])
+                table, _, _ = call(p, values, [])
             if table is not None:
                 found.append(table.provenance()["parameters"])
     if not found:
@@ -120,15 +121,27 @@ def _local(p: Plan, todo: list[int], bl: list[tuple[slice, ...]]) -> Iterator[Bl
         yield evaluate(p, k, bl[k])
 
 
+def _connect(scheduler: str) -> Any:
+    """A client of the ``dask.distributed`` scheduler at ``scheduler`` (ValueError: none)."""
+    need("distributed")
+    from dask.distributed import Client
+
+    try:
+        return Client(scheduler, timeout="5s")
+    except (OSError, TimeoutError, ValueError) as exc:
+        raise ValueError(f"--scheduler {scheduler!r}: cannot connect ({exc})") from None
+
+
 def _dask(
-    p: Plan, todo: list[int], bl: list[tuple[slice, ...]], workers: int, scheduler: str | None
+    p: Plan, todo: list[int], bl: list[tuple[slice, ...]], workers: int, client: Any
 ) -> Iterator[Block]:
+    """The blocks ``todo`` on Dask: on ``client``'s cluster, or a local one of ``workers``."""
     need("distributed")
     import dask
     from dask.distributed import Client, LocalCluster, as_completed
 
     cluster = None
-    if scheduler is None:
+    if client is None:
         with dask.config.set(_WORKER_CONFIG):
             cluster = LocalCluster(
                 n_workers=workers,
@@ -139,11 +152,6 @@ def _dask(
                 memory_limit=0,  # a block's memory is bounded; no monitor polling the workers
             )
         client = Client(cluster)
-    else:
-        try:
-            client = Client(scheduler, timeout="20s")
-        except (OSError, TimeoutError, ValueError) as exc:
-            raise ValueError(f"--scheduler {scheduler!r}: cannot connect ({exc})") from None
     try:
         nworkers = max(1, len(client.scheduler_info().get("workers", {})) or workers)
         queue = list(todo)
@@ -188,8 +196,14 @@ def run(
                     "command, flags or version, or not a sweep): give --overwrite to replace it"
                 )
     _usage(p)  # before anything is written
+    client = None if scheduler is None else _connect(scheduler)
     partial = Partial(p, output)
-    partial.open(overwrite)
+    try:
+        partial.open(overwrite)
+    except BaseException:
+        if client is not None:
+            client.close()
+        raise
     bl = blocks(p.shape, p.chunk_points)
     done = partial.done()
     todo = [k for k in range(len(bl)) if k not in done]
@@ -199,7 +213,7 @@ def run(
         if scheduler is None and (workers == 1 or len(todo) <= 1):
             stream = _local(p, todo, bl)
         else:
-            stream = _dask(p, todo, bl, workers, scheduler)
+            stream = _dask(p, todo, bl, workers, client)
         for block in stream:
             partial.put(block)
             bar.update(size[block.index])

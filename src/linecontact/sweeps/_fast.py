@@ -19,6 +19,7 @@ import numpy as np
 
 from .. import materials as _materials
 from ..cylinder import _ZERO_WIDTH, _warn_widths
+from ..domain import DOMAIN
 from ..normal import pull_off
 from ..output import table_from_result, unit_of
 from ._plan import Plan
@@ -34,37 +35,51 @@ _GROUPS = ("R_over_h", "sigma0_over_E")
 def _checked(p: Plan) -> tuple[Any, dict[str, np.ndarray], list[tuple[str, str]]]:
     """The template, each axis's values refused (their messages), the warnings said.
 
-    Every check of a single input, the others fixed, is an interval (a range, a bound, a
-    threshold of a monotone group such as R/h or Dundurs' beta): where the smallest and the
-    largest value of an axis pass, so do those between. Only an axis whose ends do not is
-    checked value by value.
+    Each axis is checked with the other axes at a value that passes (found in a first round
+    at their first values). Every check of a single input, the others fixed, is an interval
+    (a range, a bound, a threshold of a monotone group such as R/h or Dundurs' beta): where
+    the smallest and the largest value of an axis pass, so do those between. Only an axis
+    whose ends do not is checked value by value.
     """
     from ._block import template as _template
 
     template = _template(p)
+    base = {a.dest: a.values[0] for a in p.axes}
     bad: dict[str, np.ndarray] = {}
     said: list[tuple[str, str]] = []
-    for a in p.axes:
-        msgs = np.full(len(a.values), "", dtype=object)
-        vals = np.asarray(a.values, float)
-        ends = sorted({int(np.argmin(vals)), int(np.argmax(vals))})
-        for i in ends:
-            msgs[i] = _check_one(p, template, a, a.values[i], said)
-        if any(msgs[i] for i in ends):
-            for i, v in enumerate(a.values):
-                if i not in ends:
-                    msgs[i] = _check_one(p, template, a, v, said)
-        bad[a.dest] = msgs
+    for _ in range(2):
+        said.clear()
+        for a in p.axes:
+            msgs = np.full(len(a.values), "", dtype=object)
+            vals = np.asarray(a.values, float)
+            ends = sorted({int(np.argmin(vals)), int(np.argmax(vals))})
+            for i in ends:
+                msgs[i] = _check_one(p, template, base, a, a.values[i], said)
+            if any(msgs[i] for i in ends):
+                for i, v in enumerate(a.values):
+                    if i not in ends:
+                        msgs[i] = _check_one(p, template, base, a, v, said)
+            bad[a.dest] = msgs
+        good = {a.dest: a.values[int(np.argmax(bad[a.dest] == ""))] for a in p.axes}
+        if good == base:
+            break
+        base = good
     return template, bad, said
 
 
-def _check_one(p: Plan, template: Any, a: Any, v: Any, said: list[tuple[str, str]]) -> str:
+def _check_one(
+    p: Plan, template: Any, base: dict[str, Any], a: Any, v: Any, said: list[tuple[str, str]]
+) -> str:
     """The message refusing the value ``v`` of the axis ``a`` ("" where it passes)."""
     from ..cli._options import flag_message, groups
 
     args = copy.copy(template)
-    setattr(args, a.dest, v)
-    args.argv = [p.command, *p.fixed, a.flag, repr(v)]
+    words = list(p.fixed)
+    for b in p.axes:
+        value = v if b is a else base[b.dest]
+        setattr(args, b.dest, value)
+        words += [b.flag, repr(value)]
+    args.argv = [p.command, *words]
     msg = ""
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
@@ -121,12 +136,20 @@ def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
     else:
         rho = np.broadcast_to(get("R_over_h"), (int(ok.sum()),)).astype(float)
         s = np.broadcast_to(get("sigma0_over_E"), rho.shape).astype(float)
+    inside = _inside(rho, s)
+    if not inside.all():  # outside the solvers' domain (R/h, sigma0/E): said as the CLI says
+        at = np.flatnonzero(ok)[~inside]
+        reasons.update(_outside(p, v, at, rho[~inside], s[~inside]))
+        ok[at] = False
+        rho, s = rho[inside], s[inside]
+        if si:
+            R, E, s0, h = R[inside], E[inside], s0[inside], h[inside]
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:
             r = pull_off(rho, s)
         except (ValueError, OverflowError):
-            return None  # a point outside the domain: the points one by one say which
+            return None  # refused otherwise: the points one by one say which
     for w in caught:
         item = (w.category.__name__, str(w.message))
         if item not in said:
@@ -160,6 +183,47 @@ def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
         return None
     units = {k: table.units.get(k) or unit_of(k) for k in cols}
     return Block(index, data, units, {}, list(said))
+
+
+#: The points outside the domain of a block that are said as the command line says them (each
+#: one run of the subcommand); the others name the groups and the first one's message.
+_SAID_ONE_BY_ONE = 256
+
+
+def _inside(rho: np.ndarray, s: np.ndarray) -> np.ndarray:
+    """The points whose ``R/h`` and ``sigma0/E`` are inside the domain of the solvers."""
+    out = np.ones(rho.shape, bool)
+    for key, x in (("R_over_h", rho), ("sigma0_over_E", s)):
+        lo, lo_in, hi, hi_in = DOMAIN[key]
+        with np.errstate(invalid="ignore"):
+            out &= (x >= lo if lo_in else x > lo) & (x <= hi if hi_in else x < hi)
+    return out
+
+
+def _outside(
+    p: Plan, v: dict[str, np.ndarray], at: np.ndarray, rho: np.ndarray, s: np.ndarray
+) -> dict[int, str]:
+    """The reasons of the points ``at`` (flat indices) outside the domain of the solvers."""
+    from ._block import call
+
+    out: dict[int, str] = {}
+    first = ""
+    for j, i in enumerate(at.tolist()):
+        if j < _SAID_ONE_BY_ONE:
+            values = {a.dest: float(v[a.dest][i]) for a in p.axes}
+            with warnings.catch_warnings():
+                warnings.simplefilter("ignore")
+                _, _, reason = call(p, values, [])
+            out[i] = reason or "outside the domain of the solvers"
+            first = first or out[i]
+        else:
+            (lo1, _, hi1, _), (lo2, _, hi2, _) = DOMAIN["R_over_h"], DOMAIN["sigma0_over_E"]
+            out[i] = (
+                f"R/h = {rho[j]:.6g}, sigma0/E = {s[j]:.6g}: outside the domain of the solvers "
+                f"(R/h in [{lo1:g}, {hi1:g}], sigma0/E in [{lo2:g}, {hi2:g}]), as the first such "
+                f"point of its block: {first}"
+            )
+    return out
 
 
 def _si_inputs(get: Any, t: Any) -> tuple[Any, Any, Any, Any]:

@@ -10,60 +10,15 @@ NaN with its ``state`` and ``reason``; it never fails the block.
 
 from __future__ import annotations
 
-import copy
 import math
-import warnings
 from typing import Any
 
 import numpy as np
 
-from ..errors import ConvergenceError
-from ..lennard_jones import _forget
-from ._block import Block, assemble, meta, template
+from ._block import Block, assemble, call, meta
 from ._plan import Plan
 
 __all__ = ["Block", "evaluate"]
-
-
-def _words(p: Plan, values: dict[str, Any]) -> list[str]:
-    words = list(p.fixed)
-    for a in p.axes:
-        v = values[a.dest]
-        if isinstance(v, list):
-            words += [a.flag, *(repr(x) for x in v)]
-        else:
-            words += [a.flag, repr(v) if a.unit else str(v)]
-    return words
-
-
-def _call(p: Plan, values: dict[str, Any], said: list[tuple[str, str]]) -> tuple[Any, str, str]:
-    """Run the subcommand at ``values`` (dest: value): (its table or None, state, reason)."""
-    from ..cli._options import NoPointError, flag_message
-
-    _forget()  # each point as a fresh process computes it, whatever came before
-    args = copy.copy(template(p))
-    for a in p.axes:
-        v = values[a.dest]
-        setattr(args, a.dest, v if isinstance(v, list) or not a.many else [v])
-    args.argv = [p.command, *_words(p, values)]
-    args._capture = []
-    state, reason = "", ""
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        try:
-            args.func(args)
-        except NoPointError:
-            pass  # the table is captured: its points carry state and reason
-        except ConvergenceError as exc:
-            state, reason = "not-converged", flag_message(str(exc), args)
-        except (ValueError, OverflowError, ZeroDivisionError) as exc:
-            state, reason = "invalid", flag_message(str(exc), args)
-    for w in caught:
-        item = (w.category.__name__, flag_message(str(w.message), args))
-        if item not in said:
-            said.append(item)
-    table = args._capture[0] if args._capture and not state else None
-    return table, state, reason
 
 
 def evaluate(p: Plan, index: int, block: tuple[slice, ...], *, fast: bool = True) -> Block:
@@ -106,12 +61,12 @@ def evaluate(p: Plan, index: int, block: tuple[slice, ...], *, fast: bool = True
             for k, at in zip(others, list(ix), strict=True):
                 values[p.axes[k].dest] = axis_values[k][int(at)]
             values[p.axes[vec].dest] = list(axis_values[vec])
-        table, state, reason = _call(p, values, said)
+        table, state, reason = call(p, values, said)
         if table is None and vec is not None and len(idx) > 1:  # find the point(s) at fault
             for j, i in enumerate(idx.tolist()):
                 one = dict(values)
                 one[p.axes[vec].dest] = axis_values[vec][j]
-                t1, s1, r1 = _call(p, one, said)
+                t1, s1, r1 = call(p, one, said)
                 if t1 is None:
                     failed[int(i)] = (s1, r1)
                 else:
