@@ -518,3 +518,13 @@ def test_blocks_tile_the_grid():
             seen[b] += 1
             assert math.prod(s.stop - s.start for s in b) <= max(n, shape[-1])
         assert (seen == 1).all()
+
+
+def test_the_progress_bar_is_on_stderr_when_asked(tmp_path, capsys):
+    argv = ["sweep", "pulloff", "--R-over-h", "10:1000:5:log", "--sigma0-over-E", "0.01"]
+    assert main([*argv, "-o", str(tmp_path / "a.zarr"), "--progress"]) == 0
+    out, err = capsys.readouterr()
+    assert out == "" and "sweep pulloff" in err and "5/5" in err
+    assert main([*argv, "-o", str(tmp_path / "b.zarr")]) == 0  # not a terminal: no bar
+    out, err = capsys.readouterr()
+    assert out == "" and "sweep pulloff" not in err and err.startswith("wrote ")
