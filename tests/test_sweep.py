@@ -170,14 +170,8 @@ def test_each_point_is_what_the_subcommand_gives(capsys, command, words):
 
 def _split(words):
     """The fixed words (one value) and the swept flags (several) of ``words``."""
-    out, fixed, swept, i = [], [], [], 0
-    while i < len(words):
-        j = i + 1
-        while j < len(words) and not words[j].startswith("--"):
-            j += 1
-        out.append((words[i], words[i + 1 : j]))
-        i = j
-    for flag, vals in out:
+    fixed, swept = [], []
+    for flag, vals in _pairs(words):
         if len(vals) > 1 or any(":" in v for v in vals):
             swept.append(flag)
         else:
