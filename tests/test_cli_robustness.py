@@ -39,7 +39,8 @@ def strict_json(text):
         (
             [],
             r"give a command: normal, pulloff, curve, slide-init, roll, cycle, history, slide, "
-            r"push, fit-adhesion, fit-friction, paper, figures, map, materials, sweep or cite",
+            r"push, fit-adhesion, fit-friction, paper, figures, map, materials, sweep, serve or "
+            r"cite",
         ),
         (
             ["curve", *G, "-o", "/nonexistent-dir/curve.csv"],

@@ -57,6 +57,7 @@ FLOORS = {
         "linecontact.cli",
         "linecontact.figures",
         "linecontact.sweeps",
+        "linecontact.web",
     ],
     "front": ["linecontact", "linecontact.__main__"],
 }

@@ -96,11 +96,12 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "sweep",
         "run a subcommand over every combination of its flags' values: labelled arrays out",
     ),
+    "serve": ("serve", "a calculator in the browser and an HTTP API (local web server)"),
 }
 
 _COMMANDS = (
     "normal, pulloff, curve, slide-init, roll, cycle, history, slide, push, fit-adhesion, "
-    "fit-friction, paper, figures, map, materials, sweep or cite"
+    "fit-friction, paper, figures, map, materials, sweep, serve or cite"
 )
 
 

@@ -1,0 +1,298 @@
+"""The web calculator (linecontact serve): its API equals the command line, its limits hold,
+and its pages work in a real headless browser (Chromium from the system, driven by Playwright).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import socket
+import subprocess
+import sys
+import time
+import urllib.request
+import warnings
+
+import pytest
+
+pytest.importorskip("starlette")
+pytest.importorskip("httpx")
+with warnings.catch_warnings():
+    warnings.simplefilter("ignore")  # starlette's note on httpx versions
+    from starlette.testclient import TestClient
+
+from linecontact.cli import main  # noqa: E402
+from linecontact.web import create_app  # noqa: E402
+
+WIRE = "radius=50e-9&modulus=1.2e11&work_of_adhesion=0.3&z0=3e-10"
+
+
+@pytest.fixture(scope="module")
+def client():
+    with TestClient(create_app(workers=2, time_limit=60)) as c:
+        yield c
+
+
+def _cli(capsys, argv):
+    capsys.readouterr()
+    main([*argv, "--json"])
+    return json.loads(capsys.readouterr().out)
+
+
+@pytest.mark.parametrize(
+    ("command", "query", "argv"),
+    [
+        (
+            "pulloff",
+            WIRE,
+            ["--radius", "50e-9", "--modulus", "1.2e11", "--work-of-adhesion", "0.3", "--z0", "3e-10"],
+        ),
+        (
+            "normal",
+            "R_over_h=100&sigma0_over_E=0.2&F_over_Eh=-1,0,1",
+            ["--R-over-h", "100", "--sigma0-over-E", "0.2", "--F-over-Eh", "-1", "0", "1"],
+        ),
+        ("curve", "R_over_h=100&sigma0_over_E=0.05", ["--R-over-h", "100", "--sigma0-over-E", "0.05"]),
+        (
+            "push",
+            "R_over_h2=100&h1_over_h2=2&sigma0_over_E=0.01&tau0_over_E=1e-3&H_over_R=0.25&H_over_R=1",
+            ["--R-over-h2", "100", "--h1-over-h2", "2", "--sigma0-over-E", "0.01",
+             "--tau0-over-E", "1e-3", "--H-over-R", "0.25", "1"],
+        ),
+        (
+            "pulloff",
+            "R_over_h=100&sigma0_over_E=0.01&law=lennard-jones",
+            ["--R-over-h", "100", "--sigma0-over-E", "0.01", "--law", "lennard-jones"],
+        ),
+        (
+            "pulloff",
+            "cylinder_material=ZnO&substrate_material=SiO2&radius=50e-9&work_of_adhesion=0.3&z0=3e-10",
+            ["--cylinder-material", "ZnO", "--substrate-material", "SiO2", "--radius", "50e-9",
+             "--work-of-adhesion", "0.3", "--z0", "3e-10"],
+        ),
+    ],
+)  # fmt: skip
+def test_the_api_returns_what_the_command_line_prints(client, capsys, command, query, argv):
+    r = client.get(f"/api/v1/{command}?{query}")
+    assert r.status_code == 200, r.text
+    assert r.headers["content-type"].startswith("application/json")
+    got = r.json()
+    want = _cli(capsys, [command, *argv])
+    # the same keys, units, parameters and results; the command line as the API built it
+    assert got["command"][:2] == ["linecontact", command] and got["command"][-1] == "--json"
+    got.pop("command")
+    want.pop("command")
+    assert got == want
+
+
+def test_post_takes_json_and_forms(client):
+    a = client.get("/api/v1/normal?R_over_h=100&sigma0_over_E=0.01&F_over_Eh=0,1").json()
+    b = client.post(
+        "/api/v1/normal", json={"R_over_h": 100, "sigma0_over_E": 0.01, "F_over_Eh": [0, 1]}
+    ).json()
+    c = client.post(
+        "/api/v1/normal", data={"R_over_h": "100", "sigma0_over_E": "0.01", "F_over_Eh": "0,1"}
+    ).json()
+    assert a["results"] == b["results"] == c["results"]
+
+
+@pytest.mark.parametrize(
+    ("url", "parameter"),
+    [
+        (f"/api/v1/pulloff?{WIRE.replace('radius=50e-9', 'radius=-1')}", "radius"),
+        ("/api/v1/pulloff?radious=1", "radious"),
+        ("/api/v1/pulloff?R_over_h=100", None),
+        (f"/api/v1/pulloff?{WIRE}&work_of_adhesion=abc", "work_of_adhesion"),
+        ("/api/v1/pulloff?output=/etc/passwd&R_over_h=1&sigma0_over_E=0.1", "output"),
+        ("/api/v1/fit-adhesion?data=/etc/passwd", "data"),
+    ],
+)
+def test_bad_input_is_422_naming_the_field(client, url, parameter):
+    r = client.get(url)
+    assert r.status_code == 422, r.text
+    err = r.json()["error"]
+    assert set(err) == {"parameter", "message"} and err["message"]
+    if parameter is not None:
+        assert err["parameter"] == parameter
+    assert "Traceback" not in r.text
+
+
+def test_limits_headers_and_description(client):
+    r = client.post(
+        "/api/v1/normal", content=b"{" + b" " * 70000 + b"}",
+        headers={"content-type": "application/json"},
+    )  # fmt: skip
+    assert r.status_code == 413 and r.json()["error"]["parameter"] == "body"
+    r = client.get("/api/v1/paper")
+    assert r.status_code == 404
+    for path in ("/", "/pulloff", "/api/v1/openapi.json", f"/api/v1/pulloff?{WIRE}"):
+        h = client.get(path).headers
+        assert "script-src 'self'" in h["content-security-policy"], path
+        assert h["x-content-type-options"] == "nosniff" and h["x-frame-options"] == "DENY"
+    spec = client.get("/api/v1/openapi.json").json()
+    names = [p["name"] for p in spec["paths"]["/api/v1/pulloff"]["get"]["parameters"]]
+    assert {"radius", "work_of_adhesion", "z0", "R_over_h", "law"} <= set(names)
+    assert "output" not in names and "data" not in names
+
+
+def test_an_uploaded_csv_is_fitted_or_refused(client, capsys, tmp_path):
+    csv = "radius_nm,pull_off_force_N_per_m\n20,-2.9\n50,-4.6\n100,-6.4\n"
+    r = client.post(
+        "/api/v1/fit-adhesion",
+        data={"cylinder_material": "SiO2", "substrate_material": "Si", "z0": "3e-10"},
+        files={"data": ("m.csv", csv.encode(), "text/csv")},
+    )
+    assert r.status_code == 200, r.text
+    path = tmp_path / "m.csv"
+    path.write_text(csv)
+    want = _cli(capsys, ["fit-adhesion", "--cylinder-material", "SiO2", "--substrate-material",
+                         "Si", "--z0", "3e-10", "--data", str(path)])  # fmt: skip
+    assert r.json()["results"] == want["results"]
+    bad = client.post(
+        "/api/v1/fit-adhesion",
+        data={"cylinder_material": "SiO2", "substrate_material": "Si"},
+        files={"data": ("m.csv", b"radius_furlong,force\n1,2\n", "text/csv")},
+    )
+    assert bad.status_code == 422 and bad.json()["error"]["message"]
+    big = client.post(
+        "/api/v1/fit-adhesion", files={"data": ("m.csv", b"x" * (2 << 20), "text/csv")}
+    )
+    assert big.status_code == 413
+
+
+def test_a_computation_over_its_limit_is_stopped_and_frees_its_worker():
+    with TestClient(create_app(workers=2, time_limit=1.0)) as c:
+        t = time.monotonic()
+        r = c.get("/api/v1/map?quick=true")  # about ten seconds
+        assert r.status_code == 504 and "limit" in r.json()["error"]["message"]
+        assert time.monotonic() - t < 8
+        for _ in range(3):  # the workers are there again
+            assert c.get(f"/api/v1/pulloff?{WIRE}").status_code == 200
+
+
+def test_a_long_job_reports_and_can_be_cancelled(client):
+    r = client.post("/api/v1/jobs/map?quick=true")
+    assert r.status_code == 202
+    job = r.json()
+    assert job["state"] == "running"
+    time.sleep(0.5)
+    assert client.get(f"/api/v1/pulloff?{WIRE}").status_code == 200  # quick ones still go
+    state = client.delete(f"/api/v1/jobs/id/{job['id']}").json()
+    assert state["state"] == "cancelled"
+    for _ in range(50):
+        if client.get(f"/api/v1/pulloff?{WIRE}").status_code == 200:
+            break
+        time.sleep(0.1)
+    done = client.post(f"/api/v1/jobs/pulloff?{WIRE}").json()
+    for _ in range(100):
+        state = client.get(f"/api/v1/jobs/id/{done['id']}").json()
+        if state["state"] != "running":
+            break
+        time.sleep(0.1)
+    assert state["state"] == "done" and state["result"]["results"][0]["F_pulloff_N_per_m"] < 0
+
+
+# ------------------------------------------------------------------------------------------
+# in a real browser
+
+CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@pytest.fixture(scope="module")
+def server():
+    port = _free_port()
+    env = {**os.environ, "OPENBLAS_NUM_THREADS": "1"}
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "linecontact", "serve", "--port", str(port)],
+        env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+    )  # fmt: skip
+    url = f"http://127.0.0.1:{port}"
+    for _ in range(200):
+        try:
+            urllib.request.urlopen(url + "/", timeout=1)
+            break
+        except OSError:
+            time.sleep(0.1)
+    yield url
+    proc.terminate()
+    proc.wait(10)
+
+
+@pytest.fixture(scope="module")
+def browser():
+    pw = pytest.importorskip("playwright.sync_api")
+    if CHROMIUM is None:
+        pytest.skip("no chromium (apt-get install chromium)")
+    with pw.sync_playwright() as p:
+        b = p.chromium.launch(executable_path=CHROMIUM, args=["--no-sandbox"])
+        yield b
+        b.close()
+
+
+def _value(page, key, row=0):
+    sel = f"#results tbody tr[data-index='{row}'] td[data-key='{key}']"
+    page.wait_for_selector(sel, timeout=30_000)
+    return page.get_attribute(sel, "data-value")
+
+
+def test_a_shared_link_computes_what_the_api_gives(server, browser):
+    page = browser.new_page()
+    query = (
+        "cylinder_material=ZnO&substrate_material=SiO2&radius=5e-08&work_of_adhesion=0.3&z0=3e-10"
+    )
+    page.goto(f"{server}/pulloff?{query}")
+    got = float(_value(page, "F_pulloff_N_per_m"))
+    api = json.load(urllib.request.urlopen(f"{server}/api/v1/pulloff?{query}"))
+    assert got == api["results"][0]["F_pulloff_N_per_m"]
+    assert page.input_value("#f-radius") == "50"  # shown in nm, the default unit
+    assert "linecontact pulloff --cylinder-material ZnO" in page.inner_text("#cli")
+    page.close()
+
+
+def test_the_form_switches_units_and_submits(server, browser):
+    page = browser.new_page()
+    page.goto(f"{server}/pulloff")
+    page.select_option("#u-radius", label="um")
+    assert page.input_value("#f-radius") == "0.05"
+    page.fill("#f-radius", "0.1")
+    page.click("#go")
+    got = float(_value(page, "F_pulloff_N_per_m"))
+    assert "radius=1e-7" in page.url  # SI in the link
+    api = json.load(urllib.request.urlopen(f"{server}/api/v1/pulloff?{page.url.split('?')[1]}"))
+    assert got == api["results"][0]["F_pulloff_N_per_m"]
+    page.fill("#f-radius", "-3")
+    page.click("#go")
+    page.wait_for_selector("#m-radius:not(:empty)")  # (the page's CSP forbids eval)
+    assert "--radius" in page.inner_text("#m-radius")
+    page.close()
+
+
+def test_a_plot_page_draws_and_downloads(server, browser):
+    page = browser.new_page(accept_downloads=True)
+    page.goto(f"{server}/contact")
+    page.click("#go")
+    _value(page, "a_m", row=3)
+    assert page.locator("#plot-svg circle").count() == 4
+    with page.expect_download() as d:
+        page.click("#download-csv")
+    text = open(d.value.path()).read()
+    assert text.startswith("# linecontact: ") and "a_m" in text
+    page.close()
+
+
+@pytest.mark.parametrize("width", [1280, 390])
+def test_pages_fit_desktop_and_phone_widths(server, browser, tmp_path, width):
+    page = browser.new_page(viewport={"width": width, "height": 900})
+    for name in ("pulloff", "contact", "push", "cycle", "fit", "lennard-jones", "map", "curve"):
+        page.goto(f"{server}/{name}")
+        over = page.evaluate("document.documentElement.scrollWidth - window.innerWidth")
+        assert over <= 0, (name, width, over)
+        page.screenshot(path=str(tmp_path / f"{name}-{width}.png"))
+    page.close()
