@@ -46,14 +46,19 @@ def _cli(capsys, argv):
         (
             "pulloff",
             WIRE,
-            ["--radius", "50e-9", "--modulus", "1.2e11", "--work-of-adhesion", "0.3", "--z0", "3e-10"],
+            ["--radius", "50e-9", "--modulus", "1.2e11", "--work-of-adhesion", "0.3",
+             "--z0", "3e-10"],
         ),
         (
             "normal",
             "R_over_h=100&sigma0_over_E=0.2&F_over_Eh=-1,0,1",
             ["--R-over-h", "100", "--sigma0-over-E", "0.2", "--F-over-Eh", "-1", "0", "1"],
         ),
-        ("curve", "R_over_h=100&sigma0_over_E=0.05", ["--R-over-h", "100", "--sigma0-over-E", "0.05"]),
+        (
+            "curve",
+            "R_over_h=100&sigma0_over_E=0.05",
+            ["--R-over-h", "100", "--sigma0-over-E", "0.05"],
+        ),
         (
             "push",
             "R_over_h2=100&h1_over_h2=2&sigma0_over_E=0.01&tau0_over_E=1e-3&H_over_R=0.25&H_over_R=1",
@@ -284,6 +289,10 @@ def test_a_plot_page_draws_and_downloads(server, browser):
         page.click("#download-csv")
     text = open(d.value.path()).read()
     assert text.startswith("# linecontact: ") and "a_m" in text
+    snippet = page.inner_text("#py")  # the page's Python lines run
+    p = subprocess.run([sys.executable, "-c", snippet], capture_output=True, text=True)
+    assert p.returncode == 0, p.stderr
+    assert "--radius 5e-08" in page.inner_text("#cli") or "--radius 5e-8" in page.inner_text("#cli")
     page.close()
 
 

@@ -48,7 +48,7 @@
       const vals = raw.split(",").map((x) => x.trim()).filter((x) => x !== "");
       const si = vals.map((x) => {
         const v = Number(x);
-        return Number.isFinite(v) ? String(v * factor(f.name)) : x; // the server names a bad one
+        return Number.isFinite(v) ? String(Number((v * factor(f.name)).toPrecision(15))) : x; // the server names a bad one
       });
       p.append(f.name, si.join(","));
     }
