@@ -11,6 +11,7 @@ import socket
 import subprocess
 import sys
 import time
+import urllib.error
 import urllib.request
 import warnings
 
@@ -257,6 +258,7 @@ def test_a_shared_link_computes_what_the_api_gives(server, browser):
     api = json.load(urllib.request.urlopen(f"{server}/api/v1/pulloff?{query}"))
     assert got == api["results"][0]["F_pulloff_N_per_m"]
     assert page.input_value("#f-radius") == "50"  # shown in nm, the default unit
+    assert "Maugis parameter" in page.inner_text("#regime")
     assert "linecontact pulloff --cylinder-material ZnO" in page.inner_text("#cli")
     page.close()
 
@@ -276,6 +278,7 @@ def test_the_form_switches_units_and_submits(server, browser):
     page.click("#go")
     page.wait_for_selector("#m-radius:not(:empty)")  # (the page's CSP forbids eval)
     assert "--radius" in page.inner_text("#m-radius")
+    assert "you gave -3 um" in page.inner_text("#m-radius")  # in the unit the user chose
     page.close()
 
 
@@ -305,3 +308,29 @@ def test_pages_fit_desktop_and_phone_widths(server, browser, tmp_path, width):
         assert over <= 0, (name, width, over)
         page.screenshot(path=str(tmp_path / f"{name}-{width}.png"))
     page.close()
+
+
+def test_a_bounded_load_gives_no_error_while_a_slow_job_runs(server):
+    """200 API requests from 20 concurrent clients with the map in flight: all answered 200
+    (the times are benchmarks/web.py's, not a test's)."""
+    from concurrent.futures import ThreadPoolExecutor
+
+    req = urllib.request.Request(server + "/api/v1/jobs/map?quick=true", method="POST")
+    job = json.load(urllib.request.urlopen(req))
+
+    def one(i: int) -> int:
+        q = f"radius={20e-9 * (1 + i % 7)!r}&modulus=1.2e11&work_of_adhesion=0.3&z0=3e-10"
+        try:
+            with urllib.request.urlopen(f"{server}/api/v1/pulloff?{q}", timeout=60) as r:
+                return r.status
+        except urllib.error.HTTPError as exc:
+            return exc.code
+
+    with ThreadPoolExecutor(20) as ex:
+        codes = list(ex.map(one, range(200)))
+    assert codes == [200] * 200
+    state = json.load(urllib.request.urlopen(f"{server}/api/v1/jobs/id/{job['id']}"))
+    assert state["state"] in ("running", "done")
+    urllib.request.urlopen(
+        urllib.request.Request(f"{server}/api/v1/jobs/id/{job['id']}", method="DELETE")
+    )

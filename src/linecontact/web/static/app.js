@@ -67,7 +67,9 @@
     const box = e.parameter && $("m-" + e.parameter);
     if (box) {
       const u = $("u-" + e.parameter);
-      box.textContent = e.message + (u ? " (SI units; the field is in " + u.selectedOptions[0].textContent + ")" : "");
+      const typed = $("f-" + e.parameter).value;
+      const unit = u ? " " + u.selectedOptions[0].textContent : "";
+      box.textContent = e.message + (u ? ` (in SI units; you gave ${typed}${unit})` : "");
       $("f-" + e.parameter).classList.add("invalid");
     } else {
       $("form-error").textContent = e.message;
@@ -270,9 +272,26 @@
     $("py").textContent = "import linecontact as lc\n" + py;
   }
 
+  // the regime of the Maugis parameter (Johnson and Greenwood's map for line contact)
+  function regime(doc) {
+    const r = (doc.results || [])[0] || {};
+    const lam = "maugis_parameter" in r ? r.maugis_parameter : (doc.parameters || {}).maugis_parameter;
+    if (!Number.isFinite(lam)) return;
+    const name = lam < 0.1 ? "rigid (DMT-like): adhesion outside the contact"
+      : lam > 5 ? "JKR: a compliant contact, adhesion at its edge"
+      : "Maugis-Dugdale transition between DMT and JKR";
+    const p = document.createElement("p");
+    p.id = "regime";
+    p.dataset.key = "maugis_parameter";
+    p.dataset.value = String(lam);
+    p.textContent = `Maugis parameter ${show(lam)}: ${name}`;
+    $("results").prepend(p);
+  }
+
   function done(doc) {
     last = doc;
     results(doc);
+    regime(doc);
     plot(doc);
     downloads(doc);
     $("status").textContent = `done: ${(doc.results || []).length} record(s)`;
