@@ -334,3 +334,28 @@ def test_a_bounded_load_gives_no_error_while_a_slow_job_runs(server):
     urllib.request.urlopen(
         urllib.request.Request(f"{server}/api/v1/jobs/id/{job['id']}", method="DELETE")
     )
+
+
+def test_the_map_page_marks_your_wire(server, browser):
+    page = browser.new_page()
+    query = (
+        "cylinder_material=ZnO&substrate_material=SiO2&radius=5e-08&work_of_adhesion=0.3&z0=3e-10"
+    )
+    page.goto(f"{server}/map?{query}")  # a shared link: it computes (a job, with its progress)
+    page.wait_for_selector("#plot-svg", timeout=120_000)
+    got = float(page.get_attribute("#mark-value", "data-value"))
+    api = json.load(urllib.request.urlopen(f"{server}/api/v1/pulloff?{query}"))
+    assert got == api["results"][0]["maugis_parameter"]
+    inside = page.locator("#mark").count() == 1
+    assert inside or "outside this map" in page.inner_text("#plot figcaption")
+    assert page.locator("#plot-svg circle").count() > 100
+    page.close()
+
+
+def test_the_push_page_draws_the_push_against_height(server, browser):
+    page = browser.new_page()
+    page.goto(f"{server}/push")
+    page.click("#go")
+    assert _value(page, "first_motion", row=3) in ("roll", "slide")
+    assert page.locator("#plot-svg circle").count() == 4
+    page.close()

@@ -88,8 +88,9 @@ PAGES: dict[str, dict[str, Any]] = {
             _f("radius", "radius R", "length", "5e-08"),
             _f("work_of_adhesion_advancing", "work of adhesion w", "work", "0.3"),
             _f("z0", "equilibrium spacing z0", "length", "3e-10"),
+            _f("h1_over_h2", "receding over advancing range h1/h2", "none", "1"),
             _f("tau0", "interfacial shear strength tau0", "stress", "1e7"),
-            _f("height", "push heights H (comma-separated)", "length", "1e-08,5e-08,1e-07"),
+            _f("height", "push heights H (comma-separated)", "length", "5e-09,2.5e-08,5e-08,1e-07"),
         ],
         "python": (
             "cyl = lc.Cylinder.from_presets({radius}, {cylinder_material!r}, "
@@ -97,7 +98,12 @@ PAGES: dict[str, dict[str, Any]] = {
             "equilibrium_spacing={z0})\nprint(cyl.push(friction_stress={tau0}, "
             "height=[{height}]))"
         ),
-        "plot": None,
+        "plot": {
+            "x": "H_m",
+            "y": "Q_onset_N_per_m",
+            "xlabel": "push height H [m]",
+            "ylabel": "push to start moving Q [N/m]",
+        },
     },
     "cycle": {
         "title": "Energy lost per cycle",
@@ -106,7 +112,7 @@ PAGES: dict[str, dict[str, Any]] = {
             *_WIRE,
             _f("load", "normal load F", "force", "1"),
             _f("tau0", "interfacial shear strength tau0", "stress", "1e7"),
-            _f("tangential_amplitude", "amplitudes T* (comma-separated)", "force", "0.1,0.2,0.4"),
+            _f("tangential_amplitude", "amplitudes T*", "force", "0.01,0.02,0.04,0.06"),
         ],
         "python": (
             "cyl = lc.Cylinder.from_presets({radius}, {cylinder_material!r}, "
@@ -114,7 +120,12 @@ PAGES: dict[str, dict[str, Any]] = {
             "equilibrium_spacing={z0})\nprint(cyl.cyclic_loss(normal_load={load}, "
             "friction_stress={tau0}, amplitude=[{tangential_amplitude}]))"
         ),
-        "plot": None,
+        "plot": {
+            "x": "T_amplitude_N_per_m",
+            "y": "W_J_per_m",
+            "xlabel": "amplitude T* [N/m]",
+            "ylabel": "energy lost per cycle W [J/m]",
+        },
     },
     "lennard-jones": {
         "title": "The Lennard-Jones law: pull-off",
@@ -140,11 +151,11 @@ PAGES: dict[str, dict[str, Any]] = {
         "plot": None,
     },
     "map": {
-        "title": "The adhesion map (quick grid)",
+        "title": "The adhesion map (quick grid), your wire marked",
         "command": "map",
         "fixed": {"quick": "true"},
         "job": True,
-        "fields": [],
+        "fields": [{**f, "aux": True} for f in _WIRE],
         "python": "from linecontact.adhesion_map import adhesion_map",
         "plot": {
             "x": "maugis_parameter",
@@ -154,6 +165,7 @@ PAGES: dict[str, dict[str, Any]] = {
             "points": True,
             "color": "agrees_md",
         },
+        "mark": {"command": "pulloff", "key": "maugis_parameter", "label": "your wire"},
     },
 }
 
@@ -213,8 +225,10 @@ def _field(f: dict[str, Any]) -> str:
 def page_html(name: str) -> str:
     """The page ``name``: its form, and empty places for the results."""
     p = PAGES[name]
-    spec = {k: p.get(k) for k in ("command", "fixed", "plot", "python", "job", "upload")}
-    spec["fields"] = [{k: f[k] for k in ("name", "kind", "default")} for f in p["fields"]]
+    spec = {k: p.get(k) for k in ("command", "fixed", "plot", "python", "job", "upload", "mark")}
+    spec["fields"] = [
+        {k: f.get(k) for k in ("name", "kind", "default", "aux")} for f in p["fields"]
+    ]
     fields = "".join(_field(f) for f in p["fields"])
     upload = (
         "<div class='field'><label for='f-data'>measurements (CSV, units in the header)</label>"

@@ -38,9 +38,10 @@
     });
   }
 
-  function params() {
+  function params(aux) {
     const p = new URLSearchParams();
     for (const f of spec.fields) {
+      if (Boolean(f.aux) !== Boolean(aux)) continue; // a field of the marked point, or of the page's command
       const el = $("f-" + f.name);
       const raw = el.value.trim();
       if (raw === "") continue;
@@ -52,7 +53,7 @@
       });
       p.append(f.name, si.join(","));
     }
-    for (const [k, v] of Object.entries(spec.fixed || {})) p.append(k, v);
+    if (!aux) for (const [k, v] of Object.entries(spec.fixed || {})) p.append(k, v);
     return p;
   }
 
@@ -127,7 +128,7 @@
   }
 
   const NS = "http://www.w3.org/2000/svg";
-  function plot(doc) {
+  function plot(doc, mark) {
     const fig = $("plot");
     fig.textContent = "";
     if (!spec.plot) return;
@@ -171,6 +172,11 @@
       if (!P.points) {
         add("polyline", { points: inside.map((p) => `${sx(p[0])},${sy(p[1])}`).join(" "), fill: "none", stroke: "#1f77b4", "stroke-width": 2 });
       }
+      if (mark && mark.x >= view.x0 && mark.x <= view.x1) {
+        add("line", { x1: sx(mark.x), y1: T, x2: sx(mark.x), y2: H - B, stroke: "#d62728",
+          "stroke-width": 2, "stroke-dasharray": "6 4", id: "mark" });
+        add("text", { x: sx(mark.x) + 4, y: T + 12, "font-size": 12, fill: "#d62728" }, mark.label);
+      }
       for (const p of inside) {
         const c = add("circle", { cx: sx(p[0]), cy: sy(p[1]), r: P.points ? 4 : 3,
           fill: p[2] === false ? "#bbbbbb" : "#1f77b4", "data-x": p[0], "data-y": p[1] });
@@ -196,6 +202,9 @@
     fig.appendChild(svg);
     const cap = document.createElement("figcaption");
     cap.textContent = "hover a point for its values; the wheel zooms, a double-click resets";
+    if (mark && !(mark.x >= x0 && mark.x <= x1)) {
+      cap.textContent += `; ${mark.label}: ${P.xlabel} ${show(mark.x)}, outside this map`;
+    }
     fig.appendChild(cap);
   }
 
@@ -288,11 +297,28 @@
     $("results").prepend(p);
   }
 
-  function done(doc) {
+  async function marked() {
+    if (!spec.mark) return null;
+    const r = await fetch("/api/v1/" + spec.mark.command + "?" + params(true).toString());
+    const doc = await r.json().catch(() => null);
+    if (r.status !== 200) { error(doc); return null; }
+    const v = doc.results[0][spec.mark.key];
+    const p = document.createElement("p");
+    p.id = "mark-value";
+    p.dataset.key = spec.mark.key;
+    p.dataset.value = String(v);
+    p.textContent = `${spec.mark.label}: ${spec.mark.key} = ${show(v)}`;
+    $("status").after(p);
+    return { x: v, label: spec.mark.label };
+  }
+
+  async function done(doc) {
     last = doc;
     results(doc);
     regime(doc);
-    plot(doc);
+    const old = $("mark-value");
+    if (old) old.remove();
+    plot(doc, await marked());
     downloads(doc);
     $("status").textContent = `done: ${(doc.results || []).length} record(s)`;
   }
@@ -316,7 +342,8 @@
     ev.preventDefault();
     clearMessages();
     const p = params();
-    history.replaceState(null, "", location.pathname + "?" + p.toString());
+    const all = new URLSearchParams([...p.entries(), ...params(true).entries()]);
+    history.replaceState(null, "", location.pathname + "?" + all.toString());
     equivalent(p);
     $("status").textContent = "computing...";
     let r;
