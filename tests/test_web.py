@@ -359,3 +359,36 @@ def test_the_push_page_draws_the_push_against_height(server, browser):
     assert _value(page, "first_motion", row=3) in ("roll", "slide")
     assert page.locator("#plot-svg circle").count() == 4
     page.close()
+
+
+@pytest.mark.parametrize("host", ["127.0.0.1", "0.0.0.0"])
+def test_serve_prints_its_url_and_stops_cleanly_on_ctrl_c(host):
+    import signal
+
+    port = _free_port()
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "linecontact", "serve", "--host", host, "--port", str(port)],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )  # fmt: skip
+    try:
+        for _ in range(200):
+            try:
+                urllib.request.urlopen(f"http://127.0.0.1:{port}/", timeout=1)
+                break
+            except OSError:
+                time.sleep(0.1)
+        proc.send_signal(signal.SIGINT)
+        out, err = proc.communicate(timeout=30)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+    assert f"http://{host}:{port}/" in err
+    assert ("warning" in err) == (host != "127.0.0.1")
+    assert "Traceback" not in err and proc.returncode in (0, -signal.SIGINT, 130)
+
+
+def test_serve_refuses_bad_flags(capsys):
+    assert main(["serve", "--workers", "1"]) == 2
+    assert "--workers" in capsys.readouterr().err
+    assert main(["serve", "--port", "70000"]) == 2
+    assert "--port" in capsys.readouterr().err
