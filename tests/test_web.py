@@ -184,6 +184,12 @@ def test_a_long_job_reports_and_can_be_cancelled(client):
     assert job["state"] == "running"
     time.sleep(0.5)
     assert client.get(f"/api/v1/pulloff?{WIRE}").status_code == 200  # quick ones still go
+    for _ in range(100):  # it reports how many of its curves are done
+        state = client.get(f"/api/v1/jobs/id/{job['id']}").json()
+        if "progress" in state:
+            break
+        time.sleep(0.1)
+    assert state["progress"]["total"] == 4 and 0 <= state["progress"]["done"] <= 4
     state = client.delete(f"/api/v1/jobs/id/{job['id']}").json()
     assert state["state"] == "cancelled"
     for _ in range(50):

@@ -123,6 +123,7 @@ class _Job:
         self.outcome: Outcome | None = None
         self.cancelled = False
         self.worker: Any = None
+        self.progress: tuple[int, int] | None = None  # (done, total), where the job says
         self.task: asyncio.Task[Any] | None = None
 
     def state(self) -> dict[str, Any]:
@@ -138,6 +139,8 @@ class _Job:
             "state": state,
             "elapsed_s": round(time.monotonic() - self.started, 3),
         }
+        if self.progress is not None:
+            doc["progress"] = {"done": self.progress[0], "total": self.progress[1]}
         if self.outcome is not None and not self.cancelled:
             if self.outcome.status == 200:
                 doc["result"] = json.loads(self.outcome.body)

@@ -44,11 +44,32 @@ class Outcome:
     seconds: float = 0.0
 
 
-def compute(command: str, argv: list[str]) -> Outcome:
-    """``linecontact COMMAND ARGV --json`` in this process (a worker's job)."""
+class _Progress(io.TextIOBase):
+    """stderr of a computation: each ``n/total`` of its progress bar, sent to ``report``."""
+
+    def __init__(self, report: Any) -> None:
+        self.report, self.last = report, None
+
+    def write(self, text: str) -> int:
+        found = re.findall(r"(\d+)/(\d+)", text)
+        if found and found[-1] != self.last:
+            self.last = found[-1]
+            self.report(int(found[-1][0]), int(found[-1][1]))
+        return len(text)
+
+
+def compute(command: str, argv: list[str], report: Any = None) -> Outcome:
+    """``linecontact COMMAND ARGV --json`` in this process (a worker's job).
+
+    ``report(done, total)``, where given, hears the progress of a map (its curves).
+    """
     if command == "map":  # its figure and CSV into a directory of its own, one process
         with tempfile.TemporaryDirectory(prefix="linecontact-map-") as tmp:
-            return _compute(command, [*argv, "--outdir", tmp, "--workers", "1"])
+            words = [*argv, "--outdir", tmp, "--workers", "1"]
+            if report is None:
+                return _compute(command, words)
+            with contextlib.redirect_stderr(_Progress(report)):
+                return _compute(command, [*words, "--progress"])
     return _compute(command, argv)
 
 
@@ -114,7 +135,9 @@ def _serve(conn: Any) -> None:  # pragma: no cover - runs in the worker process
         if job is None:
             return
         try:
-            conn.send(compute(*job))
+            command, argv = job
+            report = lambda n, total: conn.send(("progress", n, total))  # noqa: E731
+            conn.send(compute(command, argv, report=report))
         except Exception as exc:  # noqa: BLE001 - the server never shows a traceback
             conn.send(Outcome(500, message=f"internal error ({type(exc).__name__}: {exc})"))
 
@@ -201,7 +224,20 @@ class Pool:
                         message=f"the computation took longer than its limit of {limit:g} s and "
                         "was stopped",
                     )
-                out: Outcome = await asyncio.to_thread(worker.conn.recv)
+                deadline = time.monotonic() + limit
+                while True:  # progress reports, then the outcome
+                    out: Any = await asyncio.to_thread(worker.conn.recv)
+                    if not (isinstance(out, tuple) and out[:1] == ("progress",)):
+                        break
+                    if job is not None:
+                        job.progress = out[1:]
+                    left = deadline - time.monotonic()
+                    if left <= 0 or not await asyncio.to_thread(worker.conn.poll, left):
+                        return Outcome(
+                            504,
+                            message=f"the computation took longer than its limit of {limit:g} s "
+                            "and was stopped",
+                        )
                 ok = True
                 return out
             except (EOFError, OSError):  # the worker was ended (a cancelled job)

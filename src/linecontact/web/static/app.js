@@ -327,7 +327,8 @@
     const r = await fetch("/api/v1/jobs/id/" + id);
     const doc = await r.json();
     if (doc.state === "running") {
-      $("status").textContent = `computing... ${doc.elapsed_s.toFixed(1)} s`;
+      const pr = doc.progress ? `${doc.progress.done}/${doc.progress.total} curves, ` : "";
+      $("status").textContent = `computing... ${pr}${doc.elapsed_s.toFixed(1)} s`;
       job = setTimeout(() => poll(id), 500);
       return;
     }
