@@ -364,6 +364,13 @@ def test_the_push_page_draws_the_push_against_height(server, browser):
     page.click("#go")
     assert _value(page, "first_motion", row=3) in ("roll", "slide")
     assert page.locator("#plot-svg circle").count() == 4
+    page.wait_for_selector("#motion-svg", timeout=60_000)  # the motion map, your wire marked
+    assert page.locator("#motion-svg circle").count() > 100
+    assert page.locator("#motion-mark").count() == 1
+    page.fill("#f-push", "0.5")
+    page.click("#go")
+    page.wait_for_selector("#results td[data-key='state']")
+    assert _value(page, "state") in ("rest", "roll", "slide", "roll+slide")
     page.close()
 
 

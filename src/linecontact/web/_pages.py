@@ -91,7 +91,9 @@ PAGES: dict[str, dict[str, Any]] = {
             _f("h1_over_h2", "receding over advancing range h1/h2", "none", "1"),
             _f("tau0", "interfacial shear strength tau0", "stress", "1e7"),
             _f("height", "push heights H (comma-separated)", "length", "5e-09,2.5e-08,5e-08,1e-07"),
+            _f("push", "a push Q (optional): stay, roll or slide?", "force", ""),
         ],
+        "motion": True,
         "python": (
             "cyl = lc.Cylinder.from_presets({radius}, {cylinder_material!r}, "
             "{substrate_material!r}, work_of_adhesion={work_of_adhesion_advancing}, "
@@ -225,7 +227,8 @@ def _field(f: dict[str, Any]) -> str:
 def page_html(name: str) -> str:
     """The page ``name``: its form, and empty places for the results."""
     p = PAGES[name]
-    spec = {k: p.get(k) for k in ("command", "fixed", "plot", "python", "job", "upload", "mark")}
+    keys = ("command", "fixed", "plot", "python", "job", "upload", "mark", "motion")
+    spec = {k: p.get(k) for k in keys}
     spec["fields"] = [
         {k: f.get(k) for k in ("name", "kind", "default", "aux")} for f in p["fields"]
     ]
@@ -245,7 +248,7 @@ def page_html(name: str) -> str:
         "<div class='buttons'><button type='submit' id='go'>Compute</button>"
         "<button type='button' id='cancel' hidden>Cancel</button></div></form>"
         "<div id='status' role='status'></div><div id='form-error' class='error'></div>"
-        "<section id='results'></section><figure id='plot'></figure>"
+        "<section id='results'></section><figure id='plot'></figure><figure id='motion'></figure>"
         "<div id='downloads'></div>"
         "<section id='equivalent'><h2>The same elsewhere</h2><pre id='cli'></pre>"
         "<pre id='py'></pre></section>"

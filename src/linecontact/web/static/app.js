@@ -128,11 +128,10 @@
   }
 
   const NS = "http://www.w3.org/2000/svg";
-  function plot(doc, mark) {
-    const fig = $("plot");
+  function plot(doc, mark, P = spec.plot, figId = "plot", svgId = "plot-svg") {
+    const fig = $(figId);
     fig.textContent = "";
-    if (!spec.plot) return;
-    const P = spec.plot;
+    if (!P) return;
     const pts = (doc.results || []).map((r) => [r[P.x], r[P.y], P.color ? r[P.color] : null])
       .filter((p) => Number.isFinite(p[0]) && Number.isFinite(p[1]));
     if (!pts.length) return;
@@ -145,7 +144,7 @@
     const svg = document.createElementNS(NS, "svg");
     svg.setAttribute("viewBox", `0 0 ${W} ${H}`);
     svg.setAttribute("role", "img");
-    svg.setAttribute("id", "plot-svg");
+    svg.setAttribute("id", svgId);
     function draw() {
       svg.textContent = "";
       const sx = (x) => L + (x - view.x0) / (view.x1 - view.x0) * (W - L - R);
@@ -172,14 +171,19 @@
       if (!P.points) {
         add("polyline", { points: inside.map((p) => `${sx(p[0])},${sy(p[1])}`).join(" "), fill: "none", stroke: "#1f77b4", "stroke-width": 2 });
       }
-      if (mark && mark.x >= view.x0 && mark.x <= view.x1) {
+      if (mark && mark.y !== undefined && mark.y >= view.y0 && mark.y <= view.y1) {
+        add("line", { x1: L, y1: sy(mark.y), x2: W - R, y2: sy(mark.y), stroke: "#d62728",
+          "stroke-width": 2, "stroke-dasharray": "6 4", id: figId + "-mark" });
+        add("text", { x: L + 4, y: sy(mark.y) - 4, "font-size": 12, fill: "#d62728" }, mark.label);
+      }
+      if (mark && mark.x !== undefined && mark.x >= view.x0 && mark.x <= view.x1) {
         add("line", { x1: sx(mark.x), y1: T, x2: sx(mark.x), y2: H - B, stroke: "#d62728",
           "stroke-width": 2, "stroke-dasharray": "6 4", id: "mark" });
         add("text", { x: sx(mark.x) + 4, y: T + 12, "font-size": 12, fill: "#d62728" }, mark.label);
       }
       for (const p of inside) {
         const c = add("circle", { cx: sx(p[0]), cy: sy(p[1]), r: P.points ? 4 : 3,
-          fill: p[2] === false ? "#bbbbbb" : "#1f77b4", "data-x": p[0], "data-y": p[1] });
+          fill: p[2] === false ? (P.falseColor || "#bbbbbb") : "#1f77b4", "data-x": p[0], "data-y": p[1] });
         const t = document.createElementNS(NS, "title");
         t.textContent = `${P.xlabel} = ${show(p[0])}\n${P.ylabel} = ${show(p[1])}`;
         c.appendChild(t);
@@ -202,7 +206,8 @@
     fig.appendChild(svg);
     const cap = document.createElement("figcaption");
     cap.textContent = "hover a point for its values; the wheel zooms, a double-click resets";
-    if (mark && !(mark.x >= x0 && mark.x <= x1)) {
+    if (P.legend) cap.textContent = P.legend + "; " + cap.textContent;
+    if (mark && mark.x !== undefined && !(mark.x >= x0 && mark.x <= x1)) {
       cap.textContent += `; ${mark.label}: ${P.xlabel} ${show(mark.x)}, outside this map`;
     }
     fig.appendChild(cap);
@@ -312,6 +317,31 @@
     return { x: v, label: spec.mark.label };
   }
 
+  // the motion map of the pushed wire: first motion over push height and friction stress
+  async function motion(p) {
+    const fig = $("motion");
+    if (!spec.motion || !fig) return;
+    const R = parseFloat(p.get("radius")), tau = parseFloat(p.get("tau0"));
+    if (!(R > 0 && tau > 0)) return;
+    const hs = Array.from({ length: 21 }, (_, i) => String(Number((2 * R * i / 20).toPrecision(12))));
+    const pts = [];
+    for (const f of [0.01, 0.03, 0.1, 0.3, 1, 3, 10, 30, 100]) {
+      const q = new URLSearchParams(p);
+      q.set("tau0", String(Number((tau * f).toPrecision(12))));
+      q.set("height", hs.join(","));
+      const r = await fetch("/api/v1/push?" + q.toString());
+      if (r.status !== 200) continue;
+      const doc = await r.json();
+      for (const rec of doc.results) {
+        pts.push({ H_m: rec.H_m, log10_tau0: Math.log10(tau * f), rolls: rec.first_motion === "roll" });
+      }
+    }
+    const P = { x: "H_m", y: "log10_tau0", xlabel: "push height H [m]",
+      ylabel: "log10 tau0 [Pa]", points: true, color: "rolls", falseColor: "#ff7f0e",
+      legend: "blue: rolls first, orange: slides first" };
+    plot({ results: pts }, { y: Math.log10(tau), label: "your wire" }, P, "motion", "motion-svg");
+  }
+
   async function done(doc) {
     last = doc;
     results(doc);
@@ -319,6 +349,7 @@
     const old = $("mark-value");
     if (old) old.remove();
     plot(doc, await marked());
+    motion(params());
     downloads(doc);
     $("status").textContent = `done: ${(doc.results || []).length} record(s)`;
   }
