@@ -405,3 +405,24 @@ def test_serve_refuses_bad_flags(capsys):
     assert "--workers" in capsys.readouterr().err
     assert main(["serve", "--port", "70000"]) == 2
     assert "--port" in capsys.readouterr().err
+
+
+def test_the_fit_page_takes_a_good_csv_and_says_what_is_wrong_with_a_bad_one(
+    server, browser, tmp_path
+):
+    good = tmp_path / "good.csv"
+    good.write_text("radius_nm,pull_off_force_N_per_m\n20,-2.9\n50,-4.6\n100,-6.4\n")
+    bad = tmp_path / "bad.csv"
+    bad.write_text("radius_furlong,force\n1,2\n")
+    page = browser.new_page()
+    page.goto(f"{server}/fit")
+    page.set_input_files("#f-data", str(good))
+    page.click("#go")
+    w = float(_value(page, "work_of_adhesion"))
+    assert 0 < w < 10
+    page.set_input_files("#f-data", str(bad))
+    page.click("#go")
+    page.wait_for_selector("#form-error:not(:empty), #m-data:not(:empty)")
+    text = page.inner_text("#form-error") + page.inner_text("#m-data")
+    assert "radius" in text or "column" in text, text
+    page.close()
