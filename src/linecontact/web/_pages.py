@@ -29,7 +29,11 @@ UNITS: dict[str, list[tuple[str, float]]] = {
     "none": [("", 1.0)],
 }
 
-_MATERIALS = {"kind": "material"}
+#: The Python line that builds the wire of a page (its fields by name).
+_CYL = (
+    "cyl = lc.Cylinder.from_presets({radius}, {cylinder_material!r}, {substrate_material!r}, "
+    "work_of_adhesion={work_of_adhesion}, equilibrium_spacing={z0})\n"
+)
 
 
 def _f(name: str, label: str, kind: str = "none", default: str = "", **kw: Any) -> dict[str, Any]:
@@ -50,33 +54,21 @@ PAGES: dict[str, dict[str, Any]] = {
         "title": "Contact and pull-off of a wire",
         "command": "pulloff",
         "fields": [*_WIRE, _f("length", "wire length (optional)", "length", "")],
-        "python": (
-            "cyl = lc.Cylinder.from_presets({radius}, {cylinder_material!r}, "
-            "{substrate_material!r}, work_of_adhesion={work_of_adhesion}, "
-            "equilibrium_spacing={z0})\nprint(cyl.pull_off())"
-        ),
+        "python": (_CYL + "print(cyl.pull_off())"),
         "plot": None,
     },
     "contact": {
         "title": "Contact width under a load",
         "command": "normal",
         "fields": [*_WIRE, _f("load", "normal loads F (comma-separated)", "force", "0,1,5,10")],
-        "python": (
-            "cyl = lc.Cylinder.from_presets({radius}, {cylinder_material!r}, "
-            "{substrate_material!r}, work_of_adhesion={work_of_adhesion}, "
-            "equilibrium_spacing={z0})\nprint(cyl.contact(load=[{load}]))"
-        ),
+        "python": (_CYL + "print(cyl.contact(load=[{load}]))"),
         "plot": {"x": "F_N_per_m", "y": "a_m", "xlabel": "load F [N/m]", "ylabel": "a [m]"},
     },
     "curve": {
         "title": "The load curve",
         "command": "curve",
         "fields": list(_WIRE),
-        "python": (
-            "cyl = lc.Cylinder.from_presets({radius}, {cylinder_material!r}, "
-            "{substrate_material!r}, work_of_adhesion={work_of_adhesion}, "
-            "equilibrium_spacing={z0})\nprint(cyl.load_curve())"
-        ),
+        "python": (_CYL + "print(cyl.load_curve())"),
         "plot": {"x": "a_m", "y": "F_N_per_m", "xlabel": "a [m]", "ylabel": "load F [N/m]"},
     },
     "push": {
@@ -117,9 +109,7 @@ PAGES: dict[str, dict[str, Any]] = {
             _f("tangential_amplitude", "amplitudes T*", "force", "0.01,0.02,0.04,0.06"),
         ],
         "python": (
-            "cyl = lc.Cylinder.from_presets({radius}, {cylinder_material!r}, "
-            "{substrate_material!r}, work_of_adhesion={work_of_adhesion}, "
-            "equilibrium_spacing={z0})\nprint(cyl.cyclic_loss(normal_load={load}, "
+            _CYL + "print(cyl.cyclic_loss(normal_load={load}, "
             "friction_stress={tau0}, amplitude=[{tangential_amplitude}]))"
         ),
         "plot": {
@@ -134,11 +124,7 @@ PAGES: dict[str, dict[str, Any]] = {
         "command": "pulloff",
         "fixed": {"law": "lennard-jones"},
         "fields": list(_WIRE),
-        "python": (
-            "cyl = lc.Cylinder.from_presets({radius}, {cylinder_material!r}, "
-            "{substrate_material!r}, work_of_adhesion={work_of_adhesion}, "
-            "equilibrium_spacing={z0})\nprint(cyl.lennard_jones_pull_off())"
-        ),
+        "python": (_CYL + "print(cyl.lennard_jones_pull_off())"),
         "plot": None,
     },
     "fit": {

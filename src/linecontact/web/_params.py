@@ -15,23 +15,14 @@ import re
 from collections.abc import Iterable
 from typing import Any
 
+from ..cli import COMMANDS as _CLI_COMMANDS
+
 __all__ = ["COMMANDS", "ParameterError", "argv_of", "parameters_of"]
 
-#: The subcommands the API runs (those that compute and print records).
-COMMANDS = (
-    "normal",
-    "pulloff",
-    "curve",
-    "slide-init",
-    "roll",
-    "cycle",
-    "history",
-    "slide",
-    "push",
-    "fit-adhesion",
-    "fit-friction",
-    "map",
-    "materials",
+#: The subcommands the API runs: those that compute and print records (not the figures, the
+#: citation, the sweeps or the server itself).
+COMMANDS = tuple(
+    c for c in _CLI_COMMANDS if c not in ("paper", "figures", "cite", "sweep", "serve")
 )
 
 #: Flags that name files or shape the output: never request parameters.
