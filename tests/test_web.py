@@ -265,6 +265,8 @@ def test_a_shared_link_computes_what_the_api_gives(server, browser):
     assert got == api["results"][0]["F_pulloff_N_per_m"]
     assert page.input_value("#f-radius") == "50"  # shown in nm, the default unit
     assert "Maugis parameter" in page.inner_text("#regime")
+    head = page.get_attribute("#headline dd[data-key='F_pulloff_N_per_m']", "data-value")
+    assert float(head) == got
     assert "linecontact pulloff --cylinder-material ZnO" in page.inner_text("#cli")
     page.close()
 

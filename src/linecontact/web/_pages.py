@@ -54,6 +54,12 @@ PAGES: dict[str, dict[str, Any]] = {
         "title": "Contact and pull-off of a wire",
         "command": "pulloff",
         "fields": [*_WIRE, _f("length", "wire length (optional)", "length", "")],
+        "headline": {
+            "F_pulloff_N_per_m": "pull-off force per length",
+            "F_pulloff_total_N": "pull-off force on the wire",
+            "a_at_pulloff_m": "contact half-width at pull-off",
+            "mechanism": "mechanism",
+        },
         "python": (_CYL + "print(cyl.pull_off())"),
         "plot": None,
     },
@@ -124,6 +130,11 @@ PAGES: dict[str, dict[str, Any]] = {
         "command": "pulloff",
         "fixed": {"law": "lennard-jones"},
         "fields": list(_WIRE),
+        "headline": {
+            "F_pulloff_N_per_m": "pull-off force per length",
+            "mu": "Tabor-like parameter mu of the law",
+            "method": "method",
+        },
         "python": (_CYL + "print(cyl.lennard_jones_pull_off())"),
         "plot": None,
     },
@@ -213,7 +224,7 @@ def _field(f: dict[str, Any]) -> str:
 def page_html(name: str) -> str:
     """The page ``name``: its form, and empty places for the results."""
     p = PAGES[name]
-    keys = ("command", "fixed", "plot", "python", "job", "upload", "mark", "motion")
+    keys = ("command", "fixed", "plot", "python", "job", "upload", "mark", "motion", "headline")
     spec = {k: p.get(k) for k in keys}
     spec["fields"] = [
         {k: f.get(k) for k in ("name", "kind", "default", "aux")} for f in p["fields"]

@@ -342,9 +342,31 @@
     plot({ results: pts }, { y: Math.log10(tau), label: "your wire" }, P, "motion", "motion-svg");
   }
 
+  // the few values a page is for, above its table (each with its key and full value)
+  function headline(doc) {
+    if (!spec.headline) return;
+    const r = (doc.results || [])[0] || {};
+    const dl = document.createElement("dl");
+    dl.className = "headline";
+    dl.id = "headline";
+    for (const [k, label] of Object.entries(spec.headline)) {
+      if (!(k in r)) continue;
+      const dt = document.createElement("dt");
+      const unit = doc.units && doc.units[k];
+      dt.textContent = label + (unit && unit !== "1" ? ` [${unit}]` : "");
+      const dd = document.createElement("dd");
+      dd.dataset.key = k;
+      dd.dataset.value = r[k] === null ? "null" : String(r[k]);
+      dd.textContent = r[k] === null ? "—" : typeof r[k] === "number" ? show(r[k]) : String(r[k]);
+      dl.append(dt, dd);
+    }
+    $("results").prepend(dl);
+  }
+
   async function done(doc) {
     last = doc;
     results(doc);
+    headline(doc);
     regime(doc);
     const old = $("mark-value");
     if (old) old.remove();
