@@ -92,6 +92,11 @@ def test_the_api_returns_what_the_command_line_prints(client, capsys, command, q
     assert got == want
 
 
+def test_negative_numbers_are_values(client):
+    r = client.get("/api/v1/normal?R_over_h=100&sigma0_over_E=0.2&F_over_Eh=-1,-0.5e-1,1")
+    assert r.status_code == 200 and len(r.json()["results"]) == 3
+
+
 def test_post_takes_json_and_forms(client):
     a = client.get("/api/v1/normal?R_over_h=100&sigma0_over_E=0.01&F_over_Eh=0,1").json()
     b = client.post(
@@ -112,6 +117,8 @@ def test_post_takes_json_and_forms(client):
         (f"/api/v1/pulloff?{WIRE}&work_of_adhesion=abc", "work_of_adhesion"),
         ("/api/v1/pulloff?output=/etc/passwd&R_over_h=1&sigma0_over_E=0.1", "output"),
         ("/api/v1/fit-adhesion?data=/etc/passwd", "data"),
+        ("/api/v1/normal?R_over_h=100&sigma0_over_E=0.01&F_over_Eh=1 -o /tmp/x.json", "F_over_Eh"),
+        ("/api/v1/normal?R_over_h=100&sigma0_over_E=0.01&F_over_Eh=1,--output,/tmp/x", "F_over_Eh"),
     ],
 )
 def test_bad_input_is_422_naming_the_field(client, url, parameter):

@@ -221,6 +221,12 @@ def _field(f: dict[str, Any]) -> str:
     )
 
 
+def _json_in_html(obj: Any) -> str:
+    """JSON inside a ``<script>`` element: no ``<``, ``>`` or ``&`` that HTML would read."""
+    text = json.dumps(obj)
+    return text.replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026")
+
+
 def page_html(name: str) -> str:
     """The page ``name``: its form, and empty places for the results."""
     p = PAGES[name]
@@ -239,8 +245,7 @@ def page_html(name: str) -> str:
     )
     return (
         _head(p["title"]) + f"<h1>{html.escape(p['title'])}</h1>"
-        f"<script type='application/json' id='spec'>{html.escape(json.dumps(spec), quote=False)}"
-        "</script>"
+        f"<script type='application/json' id='spec'>{_json_in_html(spec)}</script>"
         f"<form id='form' novalidate>{fields}{upload}"
         "<div class='buttons'><button type='submit' id='go'>Compute</button>"
         "<button type='button' id='cancel' hidden>Cancel</button></div></form>"

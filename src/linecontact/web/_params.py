@@ -44,6 +44,10 @@ _NOT_PARAMETERS = frozenset(
 )
 
 
+#: A negative number (``-1``, ``-.5``, ``-1e-3``, ``-inf``): the only values that start with '-'.
+_NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.IGNORECASE)
+
+
 class ParameterError(ValueError):
     """A request parameter that is no parameter of the command, named as the user typed it."""
 
@@ -121,6 +125,11 @@ def argv_of(command: str, items: Iterable[tuple[str, str]]) -> list[str]:
     for flag in order:
         a, vals = actions[flag], values[flag]
         name = flag[2:].replace("-", "_")
+        for v in vals:  # a value is never read as a flag (``load=1 -o /etc/x``)
+            if v.startswith("-") and not _NUMBER.match(v):
+                raise ParameterError(
+                    name, f"{name}: a value may start with '-' only as a number, got {v!r}"
+                )
         if a.nargs == 0:
             if not vals or vals[-1].lower() in ("1", "true", "yes", "on"):
                 argv.append(flag)
