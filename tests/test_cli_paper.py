@@ -119,12 +119,13 @@ def test_cite_text(capsys):
     for ref in CLOSED_FORMS:
         assert ref in out
     assert "doi:10.1163/156856197X00796" in out and "doi:10.1088/0022-3727/41/15/155315" in out
-    # every confirmed detail of the paper is printed; the others are said to be missing
-    for key in ("journal", "year", "volume", "pages", "doi"):
+    # every confirmed detail of the paper is printed; the pages and DOI are said to be missing
+    for key in ("booktitle", "publisher", "year", "url", "pages", "doi"):
         if PAPER[key]:
             assert str(PAPER[key]) in out, key
         else:
             assert re.search(rf"\b{key}\b[^\n]*not confirmed", out), key
+    assert "TRIB2004" in out and "(2004)" in out
 
 
 def _bib_entries(text):
@@ -149,11 +150,12 @@ def test_cite_bibtex(capsys):
     assert len(chunks) == 2 and all(c.startswith("@") and c.endswith("}") for c in chunks)
     entries = _bib_entries(out)
     kind, paper = entries["sari_adams_muftu"]
-    assert kind == "article"
+    assert kind == "inproceedings"  # TRIB2004; no journal version confirmed
     assert paper["author"] == r"Sari, I. and Adams, G. G. and M{\"u}ft{\"u}, S."
     assert PAPER["title"] in paper["title"]
-    for key in ("journal", "year", "volume", "pages", "doi"):
+    for key in ("booktitle", "publisher", "year", "pages", "doi"):
         assert (key in paper) == bool(PAPER[key]), key
+    assert paper["url"] == PAPER["url"] and paper["note"] == "pages, doi not confirmed"
     kind, lib = entries["linecontact"]
     assert kind == "software"
     assert lib["version"] == __version__ and lib["year"] == "2026"
@@ -176,12 +178,14 @@ def test_citation_cff_matches():
     assert str(cff["version"]) == __version__
     assert cff["license"] == "MIT" and cff["authors"] == [{"name": "linecontact developers"}]
     pref = cff["preferred-citation"]
-    assert pref["type"] == "article" and pref["title"] == PAPER["title"]
+    assert pref["type"] == "conference-paper" and pref["title"] == PAPER["title"]
     assert [(a["family-names"], a["given-names"]) for a in pref["authors"]] == list(
         PAPER["authors"]
     )
     for key, cff_key in (("journal", "journal"), ("year", "year"), ("doi", "doi")):
         assert pref.get(cff_key) == PAPER[key], key
+    assert pref["url"] == PAPER["url"] and "TRIB2004" in pref["conference"]["name"]
+    assert PAPER["booktitle"].endswith("(TRIB2004)") and pref["publisher"]["name"] == "ASME"
 
 
 def test_cite_once_the_details_are_confirmed(capsys, monkeypatch):

@@ -14,18 +14,24 @@ from .._version import __version__
 # --------------------------------------------------------------------------------------------
 # citation data: one place for ``cite``, ``cite --bibtex`` and ``--version``
 
-#: The founding paper. Only fields confirmed from a source are filled in; journal, year,
-#: volume, pages and DOI could not be confirmed when this was written (see CITATION.cff)
-#: and are left out rather than guessed: fill them in here and in CITATION.cff together.
+#: The founding paper. Only fields confirmed from a source are filled in: a stored copy of the
+#: ASME Digital Collection's abstract page (whose abstract is the paper's) gives the venue,
+#: the proceedings of the ASME/STLE International Joint Tribology Conference 2004 (TRIB2004).
+#: No stored source confirmed a journal version, pages or a DOI: they are left out rather
+#: than guessed (fill them in here and in CITATION.cff together).
 PAPER: dict[str, Any] = {
     "authors": (("Sari", "I."), ("Adams", "G. G."), ("Müftü", "S.")),
     "title": "Nano-scale effects in the adherence, sliding and rolling of a cylinder on a "
     "substrate",
+    "booktitle": "Proceedings of the ASME/STLE International Joint Tribology Conference (TRIB2004)",
+    "publisher": "ASME",
     "journal": None,
-    "year": None,
+    "year": 2004,
     "volume": None,
     "pages": None,
     "doi": None,
+    "url": "https://asmedigitalcollection.asme.org/IJTC/proceedings-abstract/TRIB2004/41812/"
+    "59/306869",
 }
 
 #: The closed forms the library uses besides the paper's own equations.
@@ -36,7 +42,7 @@ CLOSED_FORMS = (
 )
 
 _LIBRARY_YEAR = 2026
-_PAPER_FIELDS = ("journal", "year", "volume", "pages", "doi")
+_PAPER_FIELDS = ("pages", "doi")  # not confirmed: said so (a journal version: none found)
 
 
 def _paper_authors(sep: str = ", ") -> str:
@@ -55,10 +61,18 @@ def _paper_line() -> str:
             ref += f" ({year})"
         if pages:
             ref += f" {pages}"
+    elif PAPER.get("booktitle"):
+        ref += f", in: {PAPER['booktitle']}, {PAPER['publisher']}"
+        if year:
+            ref += f" ({year})"
+        if pages:
+            ref += f" {pages}"
     elif year:
         ref += f" ({year})"
     if PAPER["doi"]:
         ref += f", doi:{PAPER['doi']}"
+    elif PAPER.get("url"):
+        ref += f", {PAPER['url']}"
     return ref
 
 
@@ -97,7 +111,7 @@ def _bib_escape(text: str) -> str:
 def _bib_entry(kind: str, key: str, fields: list[tuple[str, object]]) -> str:
     """One BibTeX entry; empty fields are left out, a DOI is not escaped (it is a link)."""
     body = ",\n".join(
-        f"  {name:<9} = {{{value if name == 'doi' else _bib_escape(str(value))}}}"
+        f"  {name:<9} = {{{value if name in ('doi', 'url') else _bib_escape(str(value))}}}"
         for name, value in fields
         if value
     )
@@ -105,18 +119,31 @@ def _bib_entry(kind: str, key: str, fields: list[tuple[str, object]]) -> str:
 
 
 def citation_bibtex() -> str:
-    """What ``linecontact cite --bibtex`` prints: @article (the paper), @software (library)."""
+    """What ``linecontact cite --bibtex`` prints: the paper and the library (@software).
+
+    The paper is an @inproceedings (TRIB2004), or an @article once a journal version is
+    confirmed.
+    """
     authors = " and ".join(f"{surname}, {initials}" for surname, initials in PAPER["authors"])
     missing = _missing_paper_fields()
+    proceedings = not PAPER["journal"] and PAPER.get("booktitle")
     paper = _bib_entry(
-        "article",
+        "inproceedings" if proceedings else "article",
         "sari_adams_muftu",
         [
             ("author", authors),
             ("title", f"{{{PAPER['title']}}}"),
-            *((k, PAPER[k]) for k in ("journal", "year", "volume")),
+            *(
+                (k, PAPER[k])
+                for k in (
+                    ("booktitle", "publisher", "year")
+                    if proceedings
+                    else ("journal", "year", "volume")
+                )
+            ),
             ("pages", re.sub(r"(?<!-)-(?!-)", "--", str(PAPER["pages"] or "")) or None),
             ("doi", PAPER["doi"]),
+            ("url", None if PAPER["doi"] else PAPER.get("url")),
             ("note", f"{', '.join(missing)} not confirmed" if missing else None),
         ],
     )
@@ -211,7 +238,10 @@ def _draw_and_list(draw, args, formats, size) -> None:
     """Run a figure function into ``--outdir`` (progress on stderr) and list the files."""
 
     def progress(msg: str) -> None:
-        print(msg, file=sys.stderr)
+        # the function's own summary ("wrote N files to DIR") is printed once, below, with
+        # the files in figure order
+        if not msg.startswith("wrote "):
+            print(msg, file=sys.stderr)
 
     try:
         paths = draw(args.outdir, formats=formats, size=size, progress=progress)
@@ -266,8 +296,8 @@ def register(sub) -> None:
         "--size",
         default="9.6x5.4",
         metavar="WxH",
-        help="width x height of the figures in inches, from 9.5x5.2 to 30x20 (fonts stay "
-        "the same size); the two-panel Fig. 8 is a third taller (default: %(default)s)",
+        help="width x height of every figure in inches, from 9.5x5.2 to 30x20 (fonts stay "
+        "the same size; the two-panel Fig. 8 too) (default: %(default)s)",
     )
     deprecated_alias(pa, "--format", "--image-format")
     pa.set_defaults(func=_cmd_paper)

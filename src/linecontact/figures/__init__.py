@@ -53,8 +53,11 @@ __all__ = [
 
 
 def _jobs() -> list[Job]:
-    """Every figure, in the order of the files returned."""
-    return _normal.jobs() + _tangential.jobs() + _sliding.jobs()
+    """Every figure, in the order of the files returned: figure order, Fig. 2 to Fig. 14.
+
+    The stems begin ``figNN_`` (two digits), so their order is the figures' order.
+    """
+    return sorted(_normal.jobs() + _tangential.jobs() + _sliding.jobs(), key=lambda j: j.stem)
 
 
 def paper_figures(
@@ -78,14 +81,15 @@ def paper_figures(
         written at 150 dpi (:data:`DPI`); every file carries ``Creator: linecontact
         <version>`` in its metadata and the version in its lower right corner.
     size : (float, float), default (9.6, 5.4)
-        Width and height of the one-panel figures, inches (:data:`DEFAULT_SIZE`); the
-        two-panel Fig. 8 has the same width and is a third taller. Each must lie between
+        Width and height of every figure, inches (:data:`DEFAULT_SIZE`; the two-panel
+        Fig. 8 too, so that all print at one size). Each must lie between
         :data:`MIN_SIZE` = (9.5, 5.2) and :data:`MAX_SIZE` = (30, 20): fonts and the
         margins around the axes (legends on the right) are fixed, so a larger figure gives
         the plot more room, and below the smallest size the longest titles and labels no
         longer fit.
     progress : callable, optional
-        Called with a short message (a str) before each step; nothing is printed otherwise.
+        Called with a short message (a str) before each step, and last with the summary
+        ``"wrote N files to DIR"``; nothing is printed otherwise.
     processes : int, optional
         Number of processes that draw: 1 draws everything in this process; 2 (the default
         where ``os.fork`` is safe to use, Linux, and at least two CPUs are available) also
@@ -95,8 +99,8 @@ def paper_figures(
     Returns
     -------
     list of pathlib.Path
-        The files written, figure by figure (Fig. 2 to 6, 7, 13, 14, 8 to 12), each in the
-        order of ``formats``.
+        The files written, figure by figure in figure order (Fig. 2 to Fig. 14, whichever
+        process drew them), each in the order of ``formats``.
 
     Raises
     ------

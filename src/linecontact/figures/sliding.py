@@ -27,10 +27,12 @@ fig11_moment_s001, fig12_moment_s004
     ``(w1 - w2) R`` with ``w_i = sigma0 h_i``, at every contact width.
 
 In Figs. 9--12 solid lines are the closed form (dense), dotted their part with
-``dF/da < 0`` (unstable under load control), square markers the paper's route
-(Gauss--Chebyshev collocation of Eqs. 20--22) at :data:`N_COLLOCATION_MARKERS` widths, open
-circles the pull-off state under load control; lines are continued to their ``a -> 0``
-limit. ``a/R`` runs up to :data:`A_MAX_OVER_R` = 0.1, as in Figs. 2--5.
+``dF/da < 0`` (unstable under load control; listed in the key only where it is visible, not
+at ``sigma0/E = 0.01``, Figs. 9 and 11, where it lies below ``a/R = 4e-6``), square markers
+the paper's route (Gauss--Chebyshev collocation of Eqs. 20--22) at
+:data:`N_COLLOCATION_MARKERS` widths, open circles the pull-off state under load control;
+lines are continued to their ``a -> 0`` limit. ``a/R`` runs up to :data:`A_MAX_OVER_R` = 0.1,
+as in Figs. 2--5.
 """
 
 from __future__ import annotations
@@ -164,9 +166,25 @@ def _r_colors(n: int) -> list:
     return _colors(n)
 
 
+#: Shortest unstable part (dotted) that the line-style key lists, as a fraction of the
+#: ``a/R`` range drawn: at ``sigma0/E = 0.01`` the load minimum lies below ``a/R = 4e-6``,
+#: a dotted part far under a pixel wide, which the key then does not list.
+_MIN_DOTTED = 0.01
+
+
+def _unstable_visible(d: dict) -> bool:
+    """Whether the dotted (unstable) part of the curve ``d`` spans a visible width."""
+    unstable = np.asarray(d["unstable"])
+    if not unstable.any():
+        return False
+    k = int(np.flatnonzero(unstable)[-1])  # as in _branch_lines: the dotted part is [:k + 1]
+    return bool(d["a"][k] - d["a"][0] >= _MIN_DOTTED * A_MAX_OVER_R)
+
+
 def _curve_figure(run: Run, number: int, s: float, key: str):
     data = _data(run, s)
-    margins = Margins(0.873 if number == 11 else 0.783, 2.214)
+    # the moment's label takes two lines (Figs. 11, 12), and Fig. 11's ticks are wider
+    margins = Margins(1.08 if key == "M" else 0.783, 2.214)
     if key == "d":
         fig, ax = _new_axes(
             run,
@@ -183,7 +201,7 @@ def _curve_figure(run: Run, number: int, s: float, key: str):
             f"Fig. {number} ({_CITE}): moment in steady sliding, "
             f"$R/h_2 = {R_OVER_H2:g}$, $\\sigma_0/E = {s:g}$",
             r"contact half-width $a/R$",
-            r"moment $M/(E h_2 R)$ about the contact centre, clockwise $+$",
+            "moment $M/(E h_2 R)$ about the\ncontact centre, clockwise $+$",
         )
     colors = _r_colors(len(data))
     ax.axhline(0.0, color="0.3", lw=0.8)
@@ -195,9 +213,12 @@ def _curve_figure(run: Run, number: int, s: float, key: str):
         a_po, d_po, M_po = d["po"]
         ax.plot(a_po, d_po if key == "d" else M_po, color=col, mec=col, **_PO_KW, zorder=6)
     ax.set_xlim(-0.03 * A_MAX_OVER_R, A_MAX_OVER_R * 1.02)
-    entries = [
-        ("closed form", dict(color="0.2", lw=1.8)),
-        ("closed form, unstable\n($dF/da<0$, load control)", dict(color="0.2", lw=1.6, ls=":")),
+    entries = [("closed form", dict(color="0.2", lw=1.8))]
+    if any(_unstable_visible(d) for d in data):
+        entries.append(
+            ("closed form, unstable\n($dF/da<0$, load control)", dict(color="0.2", lw=1.6, ls=":"))
+        )
+    entries += [
         ("collocation of Eqs. 20-22", dict(color="0.6", **_COL_KW)),
         ("pull-off (load control)", dict(color="0.2", **_PO_KW)),
     ]
@@ -225,8 +246,8 @@ def _schematic(run: Run):
     gap = st.gap(x)
     p = st.pressure(x)
 
-    # two panels: as wide as the other figures and a third taller
-    fig = _new_figure(run, Margins(0.903, 0.15, bottom=0.756, top=0.502), height_scale=4 / 3)
+    # two panels, the size of the other figures
+    fig = _new_figure(run, Margins(1.07, 0.15, bottom=0.756, top=0.42))
     ax1, ax2 = fig.subplots(
         2, 1, sharex=True, gridspec_kw=dict(height_ratios=(1.0, 1.25), hspace=0.07)
     )
@@ -272,11 +293,11 @@ def _schematic(run: Run):
     ax1.set_ylim(-0.15 * r, 1.45 * r)
     ax1.annotate(
         "",
-        xy=(hi * 0.95, 0.92 * 1.45 * r),
-        xytext=(hi * 0.55, 0.92 * 1.45 * r),
+        xy=(hi * 0.95, 0.84 * 1.45 * r),
+        xytext=(hi * 0.55, 0.84 * 1.45 * r),
         arrowprops=dict(arrowstyle="-|>", color="k", lw=1.5),
     )
-    ax1.text(hi * 0.75, 0.95 * 1.45 * r, "sliding", ha="center", va="bottom", fontsize=10)
+    ax1.text(hi * 0.75, 0.87 * 1.45 * r, "sliding", ha="center", va="bottom", fontsize=10)
     ax1.text(
         -0.5 * (c1 + a), -0.1 * r, "trailing zone", ha="center", fontsize=9, color="tab:orange"
     )
@@ -326,7 +347,8 @@ def _schematic(run: Run):
         fontsize=9,
         bbox=dict(boxstyle="round", fc="white", ec="0.7"),
     )
-    ax2.set_ylabel("pressure $p/E$ (compressive $+$)", fontsize=12)
+    ax2.set_ylabel("pressure $p/E$\n(compressive $+$)", fontsize=12)
+    fig.align_ylabels((ax1, ax2))
     ax2.set_xlabel("$x/R$ (origin at the contact centre; the cylinder moves to $+x$)", fontsize=12)
     ax2.set_ylim(-1.6 * s, 1.35 * top)
     ax2.set_xlim(lo, hi)
