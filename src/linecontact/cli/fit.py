@@ -436,7 +436,7 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
         if args.plot:
             from ..figures.fit import draw_adhesion_fit
 
-            draw_adhesion_fit(fit, args.plot)
+            draw_adhesion_fit(fit, args.plot, units=args.data)  # the axes in the file's units
     else:
         rec, title = _adhesion_one(args, E, params)
     units = {

@@ -12,8 +12,10 @@ adhesion_map
     region where each simpler model -- Hertz, the rigid cylinder, JKR, Maugis--Dugdale --
     gives the half-width of the full law's repulsive region within ``tol`` (filled and
     hatched in the model's colour), the contours of each model's error (1 %, ``tol``,
-    20 %, labelled), and in grey the loads where the full law has no repulsive region yet
-    (the central gap above ``z0``; the error is not defined there).
+    20 %, labelled where no two labels meet), and, lightly dotted in grey, the loads where
+    the full law has no repulsive region yet (the central gap above ``z0``; the error is
+    not defined there). A model without a region on the map (no cell within ``tol``) is
+    neither drawn nor keyed; the legend keys only what is drawn.
 """
 
 from __future__ import annotations
@@ -54,6 +56,11 @@ _LABELS = {
 _COLORS = {"hertz": "#3b75af", "rigid": "#d9731a", "jkr": "#8e5bb0", "md": "#2e9a52"}
 _HATCHES = {"hertz": "\\\\\\", "rigid": "///", "jkr": "|||", "md": "---"}
 _OFF_SCALE = 1e3  # the error drawn where a model has no contact (its own pull-off is above)
+_BAND = "0.965"  # the loads without a repulsive region: a light fill, sparsely dotted
+_BAND_HATCH = "0.78"
+_LABEL_SIZE = 7.0  # points, the contour labels
+_LABEL_PAD = 3.0  # pixels kept free around each contour label
+_LABEL_AT = (0.5, 0.3, 0.7, 0.15, 0.85)  # tried in turn: fractions of a line's length
 
 
 def coarse_map(progress: Callable[[str], object] | None = None) -> AdhesionMap:
@@ -78,6 +85,70 @@ def _style(level: float, tol: float) -> str:
 
 def _pct(v: float) -> str:
     return f"{100 * v:g} %"
+
+
+def _segments(path) -> list[np.ndarray]:
+    """The connected pieces of a contour path (each an (n, 2) array, n >= 2)."""
+    out = []
+    for piece in path.to_polygons(closed_only=False):
+        if len(piece) >= 2:
+            out.append(np.asarray(piece, float))
+    return out
+
+
+def _label_contours(ax, sets: Sequence[tuple[Any, Sequence[float]]], tol: float) -> None:
+    """Label the contour sets ``(cs, levels)`` where no two labels' boxes can meet.
+
+    Each label is kept inside a square of half-side ``r`` (half the diagonal of its
+    unrotated box, plus a pad) about its centre, whatever the angle matplotlib gives it;
+    a position is taken only where that square stays in the axes and off the squares
+    already taken. One label at most per connected piece of line, the ``tol`` level and
+    the longer pieces first, at the middle of the piece or, where that is taken, further
+    along (:data:`_LABEL_AT`).
+    """
+    renderer = ax.figure.canvas.get_renderer()
+    to_px = ax.transData
+    box = ax.get_window_extent(renderer)
+    taken: list[tuple[float, float, float]] = []  # centre x, y and half-side, pixels
+
+    def half_side(text: str) -> float:
+        probe = ax.text(0, 0, text, fontsize=_LABEL_SIZE)
+        ext = probe.get_window_extent(renderer)
+        probe.remove()
+        return 0.5 * float(np.hypot(ext.width, ext.height)) + _LABEL_PAD
+
+    for cs, shown in sets:
+        positions: list[tuple[float, float]] = []
+        pieces = []
+        for lv, path in zip(cs.levels, cs.get_paths(), strict=True):
+            if lv not in shown:
+                continue
+            r = half_side(_pct(lv))
+            for seg in _segments(path):
+                px = to_px.transform(seg)
+                steps = np.hypot(*np.diff(px, axis=0).T)
+                length = float(steps.sum())
+                if length >= 3 * r:  # too short a piece keeps no label readably
+                    pieces.append((lv, r, seg, px, np.concatenate([[0.0], np.cumsum(steps)])))
+        pieces.sort(key=lambda p: (p[0] != tol, -p[4][-1]))
+        for _, r, seg, px, s in pieces:
+            for frac in _LABEL_AT:
+                k = int(np.argmin(np.abs(s - frac * s[-1])))
+                cx, cy = px[k]
+                inside = box.x0 + r <= cx <= box.x1 - r and box.y0 + r <= cy <= box.y1 - r
+                if inside and all(max(abs(cx - x), abs(cy - y)) > r + q for x, y, q in taken):
+                    taken.append((float(cx), float(cy), r))
+                    positions.append((float(seg[k, 0]), float(seg[k, 1])))
+                    break
+        if positions:
+            ax.clabel(
+                cs,
+                levels=list(shown),
+                fmt={lv: _pct(lv) for lv in shown},
+                fontsize=_LABEL_SIZE,
+                inline=True,
+                manual=positions,
+            )
 
 
 def figure(m: AdhesionMap, run: Run):
@@ -110,17 +181,27 @@ def figure(m: AdhesionMap, run: Run):
     labels: list[str] = []
     # the full law has no repulsive region below the onset load: no width to compare
     onset = np.asarray(m.y_onset, float).ravel()
-    ax.fill_between(lam, y[0], np.clip(onset, y[0], y[-1]), color="0.82", lw=0, zorder=0.5)
-    handles.append(Patch(facecolor="0.82", edgecolor="none"))
-    labels.append("no repulsive region\n(full law's gap > $z_0$)")
+    band_top = np.clip(onset, y[0], y[-1])
+    if np.any(band_top > y[0]):
+        with rc_context({"hatch.color": _BAND_HATCH, "hatch.linewidth": 0.5}):
+            band = ax.fill_between(
+                lam, y[0], band_top, facecolor=_BAND, edgecolor="none", hatch=".", zorder=0.5
+            )
+        band.set_gid("no-repulsive-region")
+        handles.append(Patch(facecolor=_BAND, edgecolor=_BAND_HATCH, hatch=".", lw=0))
+        labels.append("no repulsive region\n(full law's gap > $z_0$)")
     levels = _levels(m.tol)
+    drawn_levels: set[float] = set()
+    sets: list = []  # (contour set, its levels) whose labels are placed below
     for name in MODELS:
+        if not np.any(m.agrees(name)):
+            continue  # no region: neither drawn nor keyed
         err = np.asarray(m.error(name), float)
         drawn = np.where(np.isinf(err), _OFF_SCALE, err)  # NaN (no width) stays blank
         color = _COLORS[name]
         if np.any(drawn <= m.tol):
             with rc_context({"hatch.color": color, "hatch.linewidth": 0.8}):
-                ax.contourf(
+                region = ax.contourf(
                     X,
                     Y,
                     drawn,
@@ -130,6 +211,7 @@ def figure(m: AdhesionMap, run: Run):
                     hatches=[_HATCHES[name]],
                     zorder=1,
                 )
+            region.set_gid(f"region-{name}")
         finite = drawn[np.isfinite(drawn)]
         shown = [lv for lv in levels if finite.size and finite.min() < lv < finite.max()]
         if shown:
@@ -143,12 +225,17 @@ def figure(m: AdhesionMap, run: Run):
                 linewidths=[1.7 if lv == m.tol else 1.0 for lv in shown],
                 zorder=2,
             )
-            ax.clabel(cs, fmt={lv: _pct(lv) for lv in shown}, fontsize=7, inline=True)
+            cs.set_gid(f"error-{name}")
+            sets.append((cs, shown))
+            drawn_levels.update(shown)
         handles.append(
             Patch(facecolor=color, alpha=0.35, hatch=_HATCHES[name], edgecolor=color, lw=0)
         )
         labels.append(f"{_LABELS[name]}")
+    _label_contours(ax, sets, m.tol)
     for lv in levels:
+        if lv not in drawn_levels:
+            continue
         ls = _style(lv, m.tol)
         handles.append(Line2D([], [], color="0.25", ls=ls, lw=1.7 if lv == m.tol else 1.0))
         labels.append(f"error {_pct(lv)}" + (" (tol)" if lv == m.tol else ""))

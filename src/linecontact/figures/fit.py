@@ -5,7 +5,8 @@ Two figures, each written to one file (the format follows the extension: ``.png`
 curve comes from :mod:`linecontact.inverse`.
 
 :func:`draw_adhesion_fit`
-    The pull-off force magnitude ``|F|`` [N/m] against the radius [m], log-log: the data
+    The pull-off force magnitude ``|F|`` against the radius, log-log, in the units given
+    (SI by default, or those of the measurements file; plain-number tick labels): the data
     with their standard uncertainties, the fitted Maugis--Dugdale curve
     (:func:`~linecontact.inverse.pull_off_force` at the fitted ``w``, ``z0``) from half the
     smallest radius to twice the largest, its 95 % band (the fit's covariance of
@@ -50,7 +51,10 @@ from ._style import (
 __all__ = [
     "BAND_SAMPLES",
     "BAND_SEED",
+    "FORCE_UNITS",
+    "LENGTH_UNITS",
     "combined_shear_strength",
+    "csv_units",
     "draw_adhesion_fit",
     "draw_friction_fit",
 ]
@@ -113,8 +117,78 @@ def _fmt_interval(lo: float, hi: float, scale: float = 1.0) -> str:
     return f"[{lo * scale:.3g}, {hi * scale:.3g}]"
 
 
+#: The display units of the pull-off figure: unit -> factor to SI (as the CSV reader's).
+LENGTH_UNITS = {"m": 1.0, "nm": 1e-9, "um": 1e-6}
+FORCE_UNITS = {"N/m": 1.0, "nN/um": 1e-3, "uN/m": 1e-6}
+_UNIT_TEXT = {"um": r"$\mu$m", "nN/um": r"nN/$\mu$m", "uN/m": r"$\mu$N/m"}
+# the CSV header's unit suffixes (linecontact.measurements) -> display units; forces given
+# as totals (N, nN) are read per unit length in N/m
+_CSV_FORCE = {"N_per_m": "N/m", "nN_per_um": "nN/um", "uN_per_m": "uN/m", "N": "N/m", "nN": "N/m"}
+
+
+def csv_units(path: str | os.PathLike) -> tuple[str, str]:
+    """The units of a pull-off CSV file's header as display units ``(length, force)``.
+
+    ``radius_nm`` gives ``"nm"``, ``pull_off_force_nN_per_um`` ``"nN/um"``; a unit not
+    found (or forces given as totals, read per unit length) gives the SI unit. Only the
+    header is read: the file itself is checked by :func:`linecontact.read_measurements`.
+    """
+    length, force = "m", "N/m"
+    try:
+        with open(path, encoding="utf-8-sig") as fh:
+            lines = (ln for ln in fh if ln.strip() and not ln.lstrip().startswith("#"))
+            header = next(lines, "")
+    except (OSError, UnicodeDecodeError):
+        return length, force
+    for col in (c.strip() for c in header.split(",")):
+        if col.startswith("radius_") and col[7:] in LENGTH_UNITS:
+            length = col[7:]
+        elif col.startswith("pull_off_force_") and col[15:] in _CSV_FORCE:
+            force = _CSV_FORCE[col[15:]]
+    return length, force
+
+
+def _units(units) -> tuple[str, str]:
+    """``units`` as a checked ``(length, force)`` pair; a path: the units of that CSV."""
+    if isinstance(units, str | os.PathLike):
+        return csv_units(units)
+    try:
+        length, force = units
+    except (TypeError, ValueError):
+        raise ValueError(f"units must be (length unit, force unit), got {units!r}") from None
+    if length not in LENGTH_UNITS or force not in FORCE_UNITS:
+        raise ValueError(
+            f"units {units!r}: the length in one of {', '.join(LENGTH_UNITS)}, the force in "
+            f"one of {', '.join(FORCE_UNITS)}"
+        )
+    return length, force
+
+
+def _plain_log_ticks(axis, lo: float, hi: float) -> None:
+    """Plain-number labels (2, 5, 20; no ``2x10^0``) on a log axis spanning ``lo..hi``.
+
+    Labelled ticks at 1 per decade over wide spans, at 1, 2, 5 over a few decades and at
+    every integer multiple within a decade or so; the other ticks unlabelled.
+    """
+    from matplotlib.ticker import FuncFormatter, LogLocator, NullFormatter
+
+    decades = math.log10(hi / lo) if lo > 0 and hi > lo else 1.0
+    subs: tuple[float, ...] = (1.0,)
+    if decades <= 0.9:
+        subs = tuple(float(k) for k in range(1, 10))
+    elif decades <= 3.2:
+        subs = (1.0, 2.0, 5.0)
+    axis.set_major_locator(LogLocator(base=10.0, subs=subs))
+    axis.set_major_formatter(FuncFormatter(lambda v, _pos: f"{v:.6g}"))
+    axis.set_minor_formatter(NullFormatter())
+
+
 def draw_adhesion_fit(
-    fit: AdhesionFit, path: str | os.PathLike, *, size=DEFAULT_SIZE
+    fit: AdhesionFit,
+    path: str | os.PathLike,
+    *,
+    size=DEFAULT_SIZE,
+    units: tuple[str, str] | str | os.PathLike = ("m", "N/m"),
 ) -> pathlib.Path:
     """Draw a pull-off fit (:func:`linecontact.inverse.fit_pull_off`) into one file.
 
@@ -128,6 +202,11 @@ def draw_adhesion_fit(
     size : (float, float)
         Inches, between :data:`~linecontact.figures.MIN_SIZE` and
         :data:`~linecontact.figures.MAX_SIZE`.
+    units : (str, str) or path
+        The axes' units ``(length, force)``: the length in one of :data:`LENGTH_UNITS`
+        (``"m"``, ``"nm"``, ``"um"``), the force per length in one of :data:`FORCE_UNITS`
+        (``"N/m"``, ``"nN/um"``, ``"uN/m"``); SI by default. A path: the measurements CSV
+        file the fit came from, whose header's units are used (:func:`csv_units`).
 
     Returns
     -------
@@ -137,16 +216,17 @@ def draw_adhesion_fit(
     Raises
     ------
     ValueError
-        For an extension that names no format, or a size outside the accepted range.
+        For an extension that names no format, a size outside the accepted range or units
+        not listed.
     """
     target, fmt = _target(path)
-    fig = _adhesion_figure(fit, Run(size=check_size(size)))
+    fig = _adhesion_figure(fit, Run(size=check_size(size)), _units(units))
     return _write(fig, target, fmt)
 
 
-def _adhesion_figure(fit: AdhesionFit, run: Run):
-    from matplotlib.ticker import NullFormatter
-
+def _adhesion_figure(fit: AdhesionFit, run: Run, units: tuple[str, str] = ("m", "N/m")):
+    length, force = units
+    kx, ky = 1.0 / LENGTH_UNITS[length], 1.0 / FORCE_UNITS[force]  # SI -> display
     R = np.asarray(fit.radius, float)
     F = np.abs(np.asarray(fit.pull_off_force, float))
     sd = np.asarray(fit.sd, float)
@@ -156,32 +236,40 @@ def _adhesion_figure(fit: AdhesionFit, run: Run):
         _MARGINS,
         f"pull-off force against radius: Maugis–Dugdale fit (composite modulus "
         f"$E$ = {E / 1e9:.4g} GPa)",
-        r"radius $R$ [m]",
-        r"pull-off force magnitude $|F_{po}|$ [N/m]",
+        rf"radius $R$ [{_UNIT_TEXT.get(length, length)}]",
+        rf"pull-off force magnitude $|F_{{po}}|$ [{_UNIT_TEXT.get(force, force)}]",
     )
     col_md, col_jkr, col_dmt = _colors(3)
     Rc = np.geomspace(0.5 * R.min(), 2.0 * R.max(), _N_CURVE)
     band = _band(fit, Rc)
     if band is not None:
-        ax.fill_between(Rc, *band, color=col_md, alpha=0.22, lw=0, label="95 % band of the fit")
+        ax.fill_between(
+            Rc * kx,
+            band[0] * ky,
+            band[1] * ky,
+            color=col_md,
+            alpha=0.22,
+            lw=0,
+            label="95 % band of the fit",
+        )
     ax.plot(
-        Rc,
-        np.abs(pull_off_force(Rc, E, w, z0)),
+        Rc * kx,
+        np.abs(pull_off_force(Rc, E, w, z0)) * ky,
         color=col_md,
         lw=2,
         label="Maugis–Dugdale, fitted",
     )
     ax.plot(
-        Rc,
-        np.abs(jkr_pull_off_force(Rc, E, w)),
+        Rc * kx,
+        np.abs(jkr_pull_off_force(Rc, E, w)) * ky,
         color=col_jkr,
         lw=1.4,
         ls="--",
         label=r"JKR ($\propto R^{1/3}$), fitted $w$",
     )
     ax.plot(
-        Rc,
-        np.abs(dmt_pull_off_force(Rc, w, z0)),
+        Rc * kx,
+        np.abs(dmt_pull_off_force(Rc, w, z0)) * ky,
         color=col_dmt,
         lw=1.4,
         ls=(0, (6, 2, 1, 2)),
@@ -189,9 +277,9 @@ def _adhesion_figure(fit: AdhesionFit, run: Run):
     )
     have_sd = np.isfinite(sd)
     ax.errorbar(
-        R,
-        F,
-        yerr=np.where(have_sd, sd, 0.0) if have_sd.any() else None,
+        R * kx,
+        F * ky,
+        yerr=np.where(have_sd, sd, 0.0) * ky if have_sd.any() else None,
         ls="none",
         marker="o",
         ms=6,
@@ -206,8 +294,10 @@ def _adhesion_figure(fit: AdhesionFit, run: Run):
     )
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xlim(Rc[0], Rc[-1])
-    ax.xaxis.set_minor_formatter(NullFormatter())  # labelled minor ticks collide on x
+    ax.set_xlim(Rc[0] * kx, Rc[-1] * kx)
+    # plain numbers (2, 5, 20), never 2x10^0; unlabelled minor ticks (they collided on x)
+    _plain_log_ticks(ax.xaxis, *ax.get_xlim())
+    _plain_log_ticks(ax.yaxis, *ax.get_ylim())
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8.5, frameon=False)
     lines = [
         rf"$w$ = {w:.4g} J/m$^2$ (sd {fit.work_of_adhesion_sd:.2g})",

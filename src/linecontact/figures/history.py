@@ -79,6 +79,33 @@ def _title(what: str) -> str:
     )
 
 
+_INC = "incremental collocation"
+_LIMIT = "full-slip limit"
+
+
+def _legend(ax) -> None:
+    """The legend: each curve, then one entry for the markers and one for the limits.
+
+    Every entry's handle is an artist drawn with data (the first of its kind), not an
+    empty stand-in; the curves keep their order, the shared entries come last.
+    """
+    handles, labels = ax.get_legend_handles_labels()
+    first: dict[str, object] = {}
+    for hnd, lab in zip(handles, labels, strict=True):
+        first.setdefault(lab, hnd)
+    order = [k for k in first if k not in (_INC, _LIMIT)] + [
+        k for k in (_INC, _LIMIT) if k in first
+    ]
+    ax.legend(
+        [first[k] for k in order],
+        order,
+        loc="upper left",
+        bbox_to_anchor=(1.01, 1.0),
+        fontsize=9,
+        frameon=False,
+    )
+
+
 def _loops(run: Run):
     fig, ax = _new_axes(
         run,
@@ -101,11 +128,10 @@ def _loops(run: Run):
             label=f"{label}\n$W/(Ea^2)$ = {w.W_over_Ea2:.3g}",
         )
         h = run.data(("history-loop", label), partial(history, path, method="incremental"))
-        ax.plot(h.displacement_over_a[1:], h.T_over_Ea[1:], color=col, **_MARK)
-    ax.plot([], [], color="0.3", **_MARK, label="incremental collocation")
+        ax.plot(h.displacement_over_a[1:], h.T_over_Ea[1:], color=col, **_MARK, label=_INC)
     ax.axhline(0, color="0.6", lw=0.6)
     ax.axvline(0, color="0.6", lw=0.6)
-    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=9, frameon=False)
+    _legend(ax)
     return fig
 
 
@@ -126,14 +152,12 @@ def _loss(run: Run):
     for (label, loss, _), col, slope, lim in zip(_laws(), _colors(2), (4, 3), limits, strict=True):
         ax.plot(r, loss(r).W_over_Ea2, color=col, lw=2, label=f"{label}: slope {slope}")
         marks = run.data(("history-loss", label), partial(loss, r_marks, method="incremental"))
-        ax.plot(r_marks, marks.W_over_Ea2, color=col, **_MARK)
-        ax.axhline(lim, color=col, lw=0.8, ls=":")
-    ax.plot([], [], color="0.3", **_MARK, label="incremental collocation")
-    ax.plot([], [], color="0.3", lw=0.8, ls=":", label="full-slip limit")
+        ax.plot(r_marks, marks.W_over_Ea2, color=col, **_MARK, label=_INC)
+        ax.axhline(lim, color=col, lw=0.8, ls=":", label=_LIMIT)
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlim(1e-3, 1)
-    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=9, frameon=False)
+    _legend(ax)
     return fig
 
 
@@ -158,15 +182,14 @@ def _reversal(run: Run, what: str):
     for j, (T, col) in enumerate(zip(HISTORY, cols, strict=True)):
         lab = "loaded to" if j == 0 else "then to"
         ax.plot(x, vals[j] / scale, color=col, lw=2, label=f"{lab} $T/T_{{full}}$ = {T:g}")
-        ax.plot(x[::40], vals_i[j] / scale, color=col, **_MARK)
-    ax.plot([], [], color="0.3", **_MARK, label="incremental collocation")
+        ax.plot(x[::40], vals_i[j] / scale, color=col, **_MARK, label=_INC)
     for zs, col in zip(h.zones(), cols, strict=True):
         for _, hi_end, _ in zs[:-1]:
             ax.axvline(hi_end, color=col, lw=0.6, ls=":")
             ax.axvline(-hi_end, color=col, lw=0.6, ls=":")
     ax.axhline(0, color="0.6", lw=0.6)
     ax.set_xlim(-1, 1)
-    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=9, frameon=False)
+    _legend(ax)
     return fig
 
 
