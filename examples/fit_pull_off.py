@@ -1,4 +1,5 @@
 """Work of adhesion and range of silica-on-silicon nanowires, fitted to pull-off forces.
+=====================================================================================
 
 The data are SYNTHETIC: pull-off forces per unit length of silica (SiO2) nanowires on
 silicon at five radii, 10 nm to 2.56 um, computed with the library's forward model

@@ -1,4 +1,5 @@
 """The whole load curve of an adhesive line contact, plotted: stable, unstable, pull-off.
+======================================================================================
 
 Two parameter sets of the paper's groups (R/h = 100): weak adhesion, which peels to zero
 width at the load of Eq 14, and strong adhesion, which snaps off at a finite width. Solid:

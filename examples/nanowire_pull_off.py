@@ -1,4 +1,5 @@
 """Pull-off force and contact width of a silica nanowire on a silicon wafer, in SI units.
+======================================================================================
 
 A 50 nm fused-silica wire lies on a (100) silicon wafer, adhesion by van der Waals forces.
 The moduli are handbook values: fused silica E = 72.7 GPa, nu = 0.16 (Corning HPFS 7980

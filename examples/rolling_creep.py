@@ -1,4 +1,5 @@
 """Creep of a rolling nanowire against the normal load, with constant interfacial shear.
+=====================================================================================
 
 The silica wire on silicon of ``nanowire_pull_off.py`` is driven in steady rolling (a torque
 turns it) by a fixed tractive force T = 0.03 N/m, at normal loads from near the pull-off

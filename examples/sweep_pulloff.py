@@ -1,4 +1,5 @@
 """A parameter study: the pull-off of a nanowire against its radius, one sweep.
+============================================================================
 
 A ZnO nanowire on silica, over 40 radii for three works of adhesion, plotted from the
 labelled dataset::

@@ -67,3 +67,18 @@ def test_sweep_pulloff(tmp_path):
     assert "{'radius': 40, 'work_of_adhesion': 3} points" in out
     assert out.count("pull-off") == 3 and "snap-off" in out
     assert (tmp_path / "sweep.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.mark.parametrize(
+    ("name", "says"),
+    [
+        ("push_resistance.py", ["critical height H* =", "slide", "roll"]),
+        ("cyclic_loss.py", ["full slip at T* =", "J/m per cycle"]),
+        ("lennard_jones_curve.py", ["pull-off F/(Eh): Maugis-Dugdale", "Lennard-Jones"]),
+    ],
+)
+def test_the_plotting_examples(tmp_path, name, says):
+    out = run(tmp_path, name, "fig.png")
+    for text in says:
+        assert text in out, (name, text)
+    assert (tmp_path / "fig.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
