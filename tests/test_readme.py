@@ -1,22 +1,65 @@
-"""The Python examples of the README run as printed (in a fresh process, a temporary folder)."""
+"""The README's tour and the details page run as printed.
+
+Every Python block of README.md and docs/usage.md runs (in a fresh process, a temporary
+folder); every command of the README's tour parses, and those that compute run; the domain
+table of docs/usage.md is the code's.
+"""
 
 import re
+import shlex
 import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
-README = Path(__file__).resolve().parents[1] / "README.md"
-BLOCKS = (
-    re.findall(r"```python\n(.*?)```", README.read_text(encoding="utf-8"), re.S)
-    if README.exists()
-    else []
-)
+ROOT = Path(__file__).resolve().parents[1]
+README = ROOT / "README.md"
+USAGE = ROOT / "docs" / "usage.md"
+BLOCKS = [
+    block
+    for page in (README, USAGE)
+    if page.exists()
+    for block in re.findall(r"```python\n(.*?)```", page.read_text(encoding="utf-8"), re.S)
+]
+
+
+def _tour() -> list[list[str]]:
+    if not README.exists():
+        return []
+    text = README.read_text(encoding="utf-8")
+    section = text[text.index("## A tour in 60 seconds") :]
+    block = re.search(r"```bash\n(.*?)```", section, re.S).group(1)
+    return [shlex.split(line)[1:] for line in block.splitlines() if line.startswith("linecontact ")]
+
+
+TOUR = _tour()
 
 
 @pytest.mark.skipif(not README.exists(), reason="README.md is not beside the tests")
-def test_the_readme_has_python_examples():
+def test_the_tour_touches_every_capability():
+    commands = {words[0] for words in TOUR}
+    assert {
+        "pulloff", "normal", "slide-init", "roll", "slide", "push", "map", "cycle",
+        "fit-adhesion", "sweep", "serve",
+    } <= commands  # fmt: skip
+    assert any("lennard-jones" in words for words in TOUR)
+    assert len(README.read_text(encoding="utf-8").splitlines()) < 250
+
+
+@pytest.mark.parametrize("words", TOUR, ids=[" ".join(w[:1]) for w in TOUR])
+def test_each_tour_command_runs(words, tmp_path, monkeypatch, capsys):
+    from linecontact.cli import build_parser, main
+
+    build_parser(words).parse_args(words)  # every line parses
+    if words[0] in ("serve", "map"):  # a server; a map of some seconds (tests/test_adhesion_map)
+        return
+    monkeypatch.chdir(tmp_path)
+    assert main(words) == 0, capsys.readouterr().err
+
+
+@pytest.mark.skipif(not USAGE.exists(), reason="docs/usage.md is not beside the tests")
+def test_the_pages_have_python_examples():
     assert len(BLOCKS) >= 3
 
 
@@ -29,11 +72,11 @@ def test_readme_python_block_runs(block, tmp_path):
     assert "Traceback" not in p.stderr
 
 
-@pytest.mark.skipif(not README.exists(), reason="README.md is not beside the tests")
-def test_the_readme_domain_table_is_the_code_s():
+@pytest.mark.skipif(not USAGE.exists(), reason="docs/usage.md is not beside the tests")
+def test_the_domain_table_is_the_code_s():
     from linecontact.domain import DOMAIN
 
-    text = README.read_text(encoding="utf-8")
+    text = USAGE.read_text(encoding="utf-8")
     section = text[text.index("## Validated domain") :]
     section = section[: section.index("\n## ", 5)]
     num = r"([-+.e\d]+|inf)"
