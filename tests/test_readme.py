@@ -83,3 +83,30 @@ def test_the_domain_table_is_the_code_s():
     rows = re.findall(rf"^\| `(\w+)` \| ([\[(]){num}, {num}([\])]) \|", section, re.M)
     table = {k: (float(lo), b1 == "[", float(hi), b2 == "]") for k, b1, lo, hi, b2 in rows}
     assert table == DOMAIN
+
+
+GUIDE = ROOT / "docs" / "guide.md"
+
+
+def _guide() -> list[list[str]]:
+    if not GUIDE.exists():
+        return []
+    text = GUIDE.read_text(encoding="utf-8")
+    out = []
+    for block in re.findall(r"```bash\n(.*?)```", text, re.S):
+        for line in block.replace("\\\n", " ").splitlines():
+            if line.startswith("linecontact "):
+                out.append(shlex.split(line)[1:])
+    return out
+
+
+@pytest.mark.parametrize("words", _guide(), ids=[" ".join(w[:1]) for w in _guide()])
+def test_each_command_of_the_guide_runs(words, tmp_path, monkeypatch, capsys):
+    """The user guide's commands parse; those that need no file, server or minutes run."""
+    from linecontact.cli import build_parser, main
+
+    build_parser(words).parse_args(words)
+    if words[0] in ("serve", "map") or "--data" in words:
+        return
+    monkeypatch.chdir(tmp_path)
+    assert main(words) == 0, capsys.readouterr().err
