@@ -35,6 +35,25 @@ def client():
         yield c
 
 
+def _close(got, want, path="doc"):
+    """Equal JSON, numbers to 1e-9: the API's workers run one BLAS thread, this process may
+    run more, which moves the last bits of the Lennard-Jones solver and the fits (never
+    compared bit for bit: README's rule)."""
+    if isinstance(want, dict):
+        assert isinstance(got, dict) and got.keys() == want.keys(), path
+        for k in want:
+            _close(got[k], want[k], f"{path}.{k}")
+    elif isinstance(want, list):
+        assert isinstance(got, list) and len(got) == len(want), path
+        for i, (g, w) in enumerate(zip(got, want, strict=True)):
+            _close(g, w, f"{path}[{i}]")
+    elif isinstance(want, float) and not isinstance(want, bool):
+        rel = 1e-6 if "error_estimate" in path else 1e-9  # a difference: fewer digits
+        assert got == pytest.approx(want, rel=rel, abs=1e-300), path
+    else:
+        assert got == want, path
+
+
 def _cli(capsys, argv):
     capsys.readouterr()
     main([*argv, "--json"])
@@ -89,7 +108,7 @@ def test_the_api_returns_what_the_command_line_prints(client, capsys, command, q
     assert got["command"][:2] == ["linecontact", command] and got["command"][-1] == "--json"
     got.pop("command")
     want.pop("command")
-    assert got == want
+    _close(got, want)
 
 
 def test_negative_numbers_are_values(client):
@@ -161,7 +180,7 @@ def test_an_uploaded_csv_is_fitted_or_refused(client, capsys, tmp_path):
     path.write_text(csv)
     want = _cli(capsys, ["fit-adhesion", "--cylinder-material", "SiO2", "--substrate-material",
                          "Si", "--z0", "3e-10", "--data", str(path)])  # fmt: skip
-    assert r.json()["results"] == want["results"]
+    _close(r.json()["results"], want["results"])
     bad = client.post(
         "/api/v1/fit-adhesion",
         data={"cylinder_material": "SiO2", "substrate_material": "Si"},
