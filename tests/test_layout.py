@@ -18,6 +18,8 @@ FLOORS = {
     "base": [
         "linecontact._version",
         "linecontact._interrupt",
+        "linecontact._files",
+        "linecontact._fingerprint",
         "linecontact._progress",
         "linecontact.errors",
         "linecontact._validation",

@@ -32,9 +32,7 @@ from __future__ import annotations
 
 import json
 import os
-import stat
 import sys
-import tempfile
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import IO, Any
@@ -42,6 +40,7 @@ from typing import IO, Any
 import numpy as np
 from numpy.typing import NDArray
 
+from ._files import atomic_file
 from ._version import __version__
 from .results import Result
 
@@ -423,37 +422,6 @@ def _format_table(table: Table) -> str:
 # writing
 
 
-def _umask() -> int:
-    """The process's umask, read without changing it where the system says it (Linux)."""
-    try:
-        with open("/proc/self/status", encoding="ascii") as fh:
-            for line in fh:
-                if line.startswith("Umask:"):
-                    return int(line.split()[1], 8)
-    except (OSError, ValueError, IndexError):
-        pass
-    mask = os.umask(0o022)  # elsewhere: set and restore (not thread-safe, but brief)
-    os.umask(mask)
-    return mask
-
-
-def new_file_mode(target: str | os.PathLike[str]) -> int:
-    """The permission bits an atomically written ``target`` gets: those of a plain ``open``.
-
-    A temporary file from :func:`tempfile.mkstemp` is ``0600`` whatever the umask; before it
-    is renamed over ``target`` it gets the mode a file created with ``open(target, "w")``
-    would have: ``0666`` less the umask for a new file (``0644`` under umask ``022``), the
-    mode of the file replaced for an existing regular file.
-    """
-    try:
-        st = os.stat(target)
-    except OSError:
-        st = None
-    if st is not None and stat.S_ISREG(st.st_mode):
-        return stat.S_IMODE(st.st_mode)
-    return 0o666 & ~_umask()
-
-
 def write(
     table: Table,
     fmt: str,
@@ -461,16 +429,34 @@ def write(
     *,
     indent: int | None = None,
     stream: IO[str] | None = None,
+    name: str = "output",
 ) -> None:
     """Write ``table`` in format ``fmt`` to the file ``path``, or to ``stream`` (stdout).
 
     A file is written atomically: to a temporary file in its directory, then renamed over
-    ``path``; on any failure the temporary file is removed and nothing is left behind.
+    ``path``; on any failure the temporary file is removed and nothing is left behind. Only
+    a regular file is replaced (a symbolic link is written through); a directory, FIFO,
+    device or socket at ``path`` is refused (:mod:`linecontact._files`).
+
+    Parameters
+    ----------
+    table : Table
+        The records and their provenance.
+    fmt : str
+        ``"table"``, ``"csv"``, ``"json"`` or ``"jsonl"``.
+    path : str or path-like, optional
+        The file to write; None: ``stream``.
+    indent : int, optional
+        The indentation of JSON.
+    stream : file object, optional
+        Where to write without ``path`` (default: standard output).
+    name : str
+        How messages name ``path`` (``"-o/--output"`` on the command line).
 
     Raises
     ------
     ValueError
-        If ``fmt`` or ``indent`` is invalid.
+        If ``fmt`` or ``indent`` is invalid, or ``path`` is not a regular file.
     OSError
         If the file cannot be written (missing directory, no permission, ...).
     """
@@ -480,19 +466,7 @@ def write(
             out.write(chunk)
         out.flush()
         return
-    target = os.fspath(path)
-    directory = os.path.dirname(os.path.abspath(target))
     chunks = list(_chunks(table, fmt, indent))  # format errors before touching the disk
-    fd, tmp = tempfile.mkstemp(prefix=".linecontact-", suffix=".tmp", dir=directory)
-    try:
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as fh:
-            for chunk in chunks:
-                fh.write(chunk)
-        os.chmod(tmp, new_file_mode(target))  # mkstemp made it 0600
-        os.replace(tmp, target)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
+    with atomic_file(path, "w", name=name, encoding="utf-8", newline="") as fh:
+        for chunk in chunks:
+            fh.write(chunk)

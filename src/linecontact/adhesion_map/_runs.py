@@ -8,7 +8,6 @@ determines it (:func:`_row_key`).
 
 from __future__ import annotations
 
-import functools
 import hashlib
 import json
 import os
@@ -23,6 +22,8 @@ from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
+
+from .._fingerprint import code_digest
 
 
 def _check_workers(workers) -> int:
@@ -60,20 +61,9 @@ _ENTRY_FORMAT = 1  # of the files in the resume directory; part of their key
 _READ_ERRORS = (OSError, ValueError, KeyError, EOFError, zipfile.BadZipFile)
 
 
-@functools.lru_cache(maxsize=1)
 def _code_digest() -> str:
-    """The library's version and a digest of its modules (a row depends on the solver's code)."""
-    from .._version import __version__
-
-    root = pathlib.Path(__file__).resolve().parents[1]
-    h = hashlib.sha256(f"{_ENTRY_FORMAT} {__version__}".encode())
-    for f in sorted(root.rglob("*.py")):
-        h.update(f.relative_to(root).as_posix().encode())
-        try:
-            h.update(f.read_bytes())
-        except OSError:
-            h.update(b"?")
-    return h.hexdigest()
+    """The digest of the code and the entry format (a row depends on the solver's code)."""
+    return hashlib.sha256(f"{_ENTRY_FORMAT} {code_digest()}".encode()).hexdigest()
 
 
 def _row_key(mu: float, y: NDArray) -> str:

@@ -103,8 +103,9 @@ def _cmd_sweep(args: argparse.Namespace) -> int:
             reason = reason.isel(record=0)
         missing = int((reason != "").sum())
         dims = " x ".join(f"{d} ({n})" for d, n in ds.sizes.items() if d != "record")
+        over = f"over {dims}" if dims else "with nothing swept (every flag one value)"
         print(
-            f"wrote {args.output}: {args.sweep_command} over {dims}, {p.size} points "
+            f"wrote {args.output}: {args.sweep_command} {over}, {p.size} points "
             f"({missing} without a state: see the variables state and reason) in "
             f"{time.perf_counter() - start:.3g} s",
             file=sys.stderr,

@@ -12,18 +12,16 @@ measured once.
 
 from __future__ import annotations
 
-import contextlib
 import math
 import os
 import pathlib
-import tempfile
 from collections.abc import Callable, Hashable
 from dataclasses import dataclass, field
 
 import numpy as np
 
+from .._files import atomic_file
 from .._version import __version__
-from ..output import new_file_mode
 
 _MISSING_MPL = "linecontact paper needs matplotlib: pip install 'linecontact[plot]'"
 _CITE = "Sari, Adams & Müftü"
@@ -213,27 +211,6 @@ def check_size(size) -> tuple[float, float]:
     return w, h
 
 
-@contextlib.contextmanager
-def _atomic(path: pathlib.Path):
-    """A binary file object for ``path`` that appears there only once complete.
-
-    The data go to a temporary file in the same directory, renamed over ``path``
-    (``os.replace``) after a successful write; on any error the temporary file is removed
-    and ``path`` is left as it was.
-    """
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".part")
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            yield fh
-        # mkstemp creates the file 0600; give it the permissions of a normal new file
-        os.chmod(tmp, new_file_mode(path))
-        os.replace(tmp, path)
-    except BaseException:
-        with contextlib.suppress(OSError):
-            os.unlink(tmp)
-        raise
-
-
 def _write_png(fig, fh, tag: str) -> None:
     """Draw ``fig`` and write it as an RGB PNG (the figure is opaque) with its metadata."""
     import matplotlib
@@ -263,7 +240,7 @@ def _save(fig, outdir: pathlib.Path, stem: str, formats: tuple[str, ...]) -> lis
     with rc_context({"svg.hashsalt": "linecontact"}):
         for fmt in formats:
             path = outdir / f"{stem}.{fmt}"
-            with _atomic(path) as fh:
+            with atomic_file(path, name="figure") as fh:
                 if fmt == "png":
                     _write_png(fig, fh, tag)
                 else:

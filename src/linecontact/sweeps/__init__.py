@@ -42,6 +42,14 @@ def _words(flags: Mapping[str, Any]) -> list[str]:
         if isinstance(value, str):
             words += [flag, value]
             continue
+        if np.ma.isMaskedArray(value):
+            masked = int(np.ma.count_masked(value))
+            if masked:
+                raise ValueError(
+                    f"{key}: a masked array with {masked} masked values; a sweep computes "
+                    f"every value it is given: pass {key}.compressed() to sweep the others"
+                )
+            value = np.ma.getdata(value)
         vals = np.atleast_1d(np.asarray(value, dtype=object)).ravel().tolist()
         words.append(flag)
         for v in vals:
@@ -97,8 +105,10 @@ def sweep(
     Raises
     ------
     ValueError
-        A flag the subcommand does not have, a bad range, a subcommand that cannot be swept,
-        a store of another sweep at ``output``.
+        A flag the subcommand does not have, a bad range, a masked array with masked values,
+        a subcommand that cannot be swept, a store of another sweep (or of this sweep by
+        another build of linecontact) at ``output``, another process writing ``output``, a
+        sweep larger than the memory or the disk it needs.
     ImportError
         The extra ``[sweep]`` is not installed.
 

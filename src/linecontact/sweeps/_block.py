@@ -61,7 +61,10 @@ def codes(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 def _objects(v: np.ndarray) -> np.ndarray:
     """NumPy strings as an array of Python strings, each distinct one made once."""
     cats, at = codes(v)
-    return cats[at] if cats.size else np.empty(v.shape, dtype=object)
+    if not cats.size:
+        return np.empty(v.shape, dtype=object)
+    out = cats[at]
+    return out if isinstance(out, np.ndarray) else np.array(out, dtype=object)  # 0-d: a str
 
 
 @dataclass
@@ -80,6 +83,12 @@ class Block:
         The provenance parameters of the block's first computed point.
     warnings : list of (str, str)
         The distinct warnings its points gave: the category's name and the message.
+    at : dict
+        The values of the axes (dest: value, or the list of a row's values) at the point
+        whose provenance is ``parameters``.
+    code : str
+        The digest of the build that computed it (:func:`linecontact._fingerprint
+        .code_digest`).
     """
 
     index: int
@@ -87,6 +96,8 @@ class Block:
     units: dict[str, str] = field(default_factory=dict)
     parameters: dict[str, Any] = field(default_factory=dict)
     warnings: list[tuple[str, str]] = field(default_factory=list)
+    at: dict[str, Any] = field(default_factory=dict)
+    code: str = ""
 
 
 @functools.lru_cache(maxsize=8)

@@ -19,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from .._fingerprint import code_identity
 from .._version import __version__
 from ._block import TEXT, to_text
 from ._plan import Plan, blocks
@@ -27,7 +28,15 @@ from ._store import Partial, format_of, need
 __all__ = ["JSON_ATTRS", "build", "open_sweep", "write"]
 
 #: The attributes kept as JSON text in a file.
-JSON_ATTRS = ("linecontact", "command", "parameters", "units", "swept", "variables")
+JSON_ATTRS = (
+    "linecontact",
+    "command",
+    "parameters",
+    "units",
+    "swept",
+    "variables",
+    "sweep_code",
+)
 
 
 def _fill(kind: str) -> Any:
@@ -143,6 +152,8 @@ def build(p: Plan, partial: Partial, parameters: dict[str, Any]) -> Any:
         "swept": [a.flag for a in p.axes],
         "variables": names,
         "sweep_key": p.key(),
+        "sweep_identity": p.identity(),
+        "sweep_code": code_identity(),
     }
     return xr.Dataset(data_vars, coords=coords, attrs=attrs)
 

@@ -13,18 +13,24 @@ from __future__ import annotations
 import logging
 import os
 import re
+import shutil
+import socket
+import threading
 import warnings
 from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from .. import errors as _errors
+from .._fingerprint import code_digest
 from .._progress import progress_bar
 from ._block import Block, call
 from ._dataset import build, open_sweep, write
 from ._plan import Plan, blocks
 from ._points import evaluate
-from ._store import Partial, format_of, need, store_key
+from ._store import Partial, format_of, need, store_identity, store_key
 
 __all__ = ["run"]
 
@@ -43,11 +49,11 @@ def _check_output(output: str | os.PathLike[str]) -> None:
         )
 
 
-def _usage(p: Plan) -> None:
-    """Refuse a sweep whose first and last points are both refused.
+def _usage(p: Plan) -> Any:
+    """Refuse a sweep whose first and last points are both refused; a table of one that passes.
 
-    That is a usage error (a missing or conflicting flag), not points outside the domain.
-    Only the first point is computed where it passes.
+    Both refused is a usage error (a missing or conflicting flag), not points outside the
+    domain. Only the first point is computed where it passes.
     """
     reasons: list[str] = []
     for at in (0, -1):
@@ -55,22 +61,112 @@ def _usage(p: Plan) -> None:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             table, state, reason = call(p, values, [])
-        if table is not None or state != "invalid":
-            return
+        if table is not None:
+            return table
+        if state != "invalid":
+            return None
         reasons.append(reason)
     raise ValueError(reasons[0])
+
+
+def _bytes_per_point(p: Plan, table: Any) -> tuple[int, int]:
+    """Bytes a point takes (in a block on disk, in memory), from the table of one point.
+
+    A table of one call holds one point's records, or a row of points where the innermost
+    axis is one the subcommand takes at once (then one record each).
+    """
+    per_record_disk = per_record_memory = 0
+    for v in table.columns.values():
+        kind = np.asarray(v).dtype.kind
+        per_record_disk += 1 if kind == "b" else 8 if kind in "fiuc" else 4  # text: codes
+        per_record_memory += 1 if kind == "b" else 8  # text: a pointer each
+    per_record_disk += 8  # state and reason, as codes
+    per_record_memory += 16
+    records = 1 if p.vector is not None else max(1, int(table.size))
+    return per_record_disk * records, per_record_memory * records
+
+
+def _available_memory() -> int | None:
+    """The memory the system can give [bytes] (``MemAvailable``), where it says it."""
+    try:
+        with open("/proc/meminfo", encoding="ascii") as fh:
+            for line in fh:
+                if line.startswith("MemAvailable:"):
+                    return int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    try:
+        return int(os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE"))
+    except (ValueError, OSError, AttributeError):
+        return None
+
+
+def _gb(n: float) -> str:
+    return f"{n / 1e9:.3g} GB"
+
+
+def _check_fits(p: Plan, table: Any, output: str | os.PathLike[str] | None) -> None:
+    """Refuse a sweep whose estimated memory or disk is more than the machine has.
+
+    In memory, the dataset and the blocks it is built from; on disk, the kept blocks and then
+    the store beside them (the store's compression not counted: an upper bound).
+    """
+    if table is None:
+        return
+    disk, memory = _bytes_per_point(p, table)
+    points = " x ".join(f"{a.name} ({len(a.values)})" for a in p.axes) or "one point"
+    size = f"the sweep has {p.size} points ({points})"
+    if output is None:
+        need_mem = 2 * memory * p.size
+        have = _available_memory()
+        if have is not None and need_mem > 0.8 * have:
+            raise ValueError(
+                f"{size}: about {_gb(need_mem)} in memory, more than the {_gb(have)} this "
+                "machine has free; write it to a store (-o OUT / output=) or sweep fewer points"
+            )
+        return
+    need_disk = 2 * disk * p.size
+    parent = Path(output).absolute().parent
+    try:
+        free = shutil.disk_usage(parent).free
+    except OSError:
+        return
+    if need_disk > free:
+        raise ValueError(
+            f"{size}: about {_gb(need_disk)} on disk (its blocks, then the store), more than "
+            f"the {_gb(free)} free at {str(parent)!r}; sweep fewer points or write elsewhere"
+        )
+
+
+def _names(key: str, name: str) -> bool:
+    """True where the provenance key ``key`` is the flag ``name`` (``radius_m``: ``radius``)."""
+    return key == name or (key.startswith(name + "_") and "over" not in key[len(name) + 1 :])
+
+
+def _covers(p: Plan, ats: list[dict[str, Any]]) -> bool:
+    """True where the points ``ats`` take two values or more of every axis."""
+    for a in p.axes:
+        seen: set[str] = set()
+        for at in ats:
+            v = at.get(a.dest)
+            seen.update(repr(x) for x in (v if isinstance(v, list) else [v]) if x is not None)
+        if len(seen) < 2:
+            return False
+    return True
 
 
 def _shared(p: Plan, metas: list[dict[str, Any]]) -> dict[str, Any]:
     """The provenance parameters the same at every point.
 
-    Those the blocks' first points share; the corners of the grid (at most 16) where fewer
-    than two blocks computed points one by one.
+    Those that the blocks' first points share, where those points take two values or more of
+    every swept flag; else those that the corners of the grid (at most 16) share. A parameter
+    that is a swept flag is never among them; where the points computed do not vary every
+    swept flag (points refused), only the fixed flags are.
     """
     import itertools
 
-    found = [m["parameters"] for m in metas if m.get("parameters")]
-    if len(found) < 2:  # one block, or blocks at once (no table): the corners, at most 16
+    found = [(m["parameters"], m.get("at") or {}) for m in metas if m.get("parameters")]
+    if not _covers(p, [at for _, at in found]):
         ends = [sorted({0, len(a.values) - 1}) for a in p.axes]
         found = []
         for ix in itertools.islice(itertools.product(*ends), 16):
@@ -79,10 +175,16 @@ def _shared(p: Plan, metas: list[dict[str, Any]]) -> dict[str, Any]:
                 warnings.simplefilter("ignore")
                 table, _, _ = call(p, values, [])
             if table is not None:
-                found.append(table.provenance()["parameters"])
+                found.append((table.provenance()["parameters"], values))
     if not found:
         return {}
-    return {k: v for k, v in found[0].items() if all(t.get(k) == v for t in found[1:])}
+    first = found[0][0]
+    out = {k: v for k, v in first.items() if all(t.get(k) == v for t, _ in found[1:])}
+    out = {k: v for k, v in out.items() if not any(_names(k, a.name) for a in p.axes)}
+    if not _covers(p, [at for _, at in found]):
+        fixed = [w.lstrip("-").replace("-", "_") for w in p.fixed if w.startswith("--")]
+        out = {k: v for k, v in out.items() if any(_names(k, n) for n in fixed)}
+    return out
 
 
 def _say(metas: list[dict[str, Any]]) -> None:
@@ -121,15 +223,66 @@ def _local(p: Plan, todo: list[int], bl: list[tuple[slice, ...]]) -> Iterator[Bl
         yield evaluate(p, k, bl[k])
 
 
-def _connect(scheduler: str) -> Any:
-    """A client of the ``dask.distributed`` scheduler at ``scheduler`` (ValueError: none)."""
+#: Seconds to wait for a scheduler to answer (a TCP connection, then Dask's handshake).
+CONNECT_TIMEOUT = 10.0
+
+
+def _address(scheduler: str) -> tuple[str, str | None, int | None]:
+    """``scheduler`` as Dask's address, and its host and port where it is TCP or TLS."""
+    address = scheduler if "://" in scheduler else f"tcp://{scheduler}"
+    scheme, _, rest = address.partition("://")
+    if scheme not in ("tcp", "tls"):
+        return address, None, None
+    host, colon, port = rest.rpartition(":")
+    host = host.strip("[]")
+    if not (colon and host and port.isdigit() and 0 < int(port) < 65536):
+        raise ValueError(
+            f"--scheduler {scheduler!r}: give the scheduler's address as tcp://HOST:PORT "
+            "(the port in 1-65535)"
+        )
+    return address, host, int(port)
+
+
+def _connect(scheduler: str, timeout: float = CONNECT_TIMEOUT) -> Any:
+    """A client of the ``dask.distributed`` scheduler at ``scheduler`` (ValueError: none).
+
+    Bounded: nothing listening, a server that is not a Dask scheduler (which Dask may read as
+    a message of exabytes, or wait on past its own timeout) and a scheduler that does not
+    answer within ``timeout`` seconds are each one ValueError naming the flag.
+    """
     need("distributed")
     from dask.distributed import Client
 
-    try:
-        return Client(scheduler, timeout="5s")
-    except (OSError, TimeoutError, ValueError) as exc:
-        raise ValueError(f"--scheduler {scheduler!r}: cannot connect ({exc})") from None
+    address, host, port = _address(scheduler)
+    if host is not None and port is not None:
+        try:
+            socket.create_connection((host, port), timeout=timeout).close()
+        except OSError as exc:
+            why = exc.strerror or str(exc) or type(exc).__name__
+            raise ValueError(f"--scheduler {scheduler!r}: cannot connect ({why})") from None
+    found: dict[str, Any] = {}
+
+    def connect() -> None:
+        try:
+            found["client"] = Client(address, timeout=f"{timeout}s")
+        except BaseException as exc:  # noqa: BLE001 - anything is: no scheduler there
+            found["error"] = exc
+
+    thread = threading.Thread(target=connect, name="linecontact-scheduler", daemon=True)
+    thread.start()
+    thread.join(timeout + 2.0)
+    if "client" in found:
+        return found["client"]
+    if thread.is_alive():
+        raise ValueError(
+            f"--scheduler {scheduler!r}: no dask.distributed scheduler answered within "
+            f"{timeout:g} s (is it one?)"
+        )
+    err = found.get("error")
+    why = f"{type(err).__name__}: {str(err)[:200]}" if err is not None else "no answer"
+    raise ValueError(
+        f"--scheduler {scheduler!r}: no dask.distributed scheduler answered there ({why})"
+    )
 
 
 def _dask(
@@ -181,52 +334,115 @@ def run(
     progress: bool | None = None,
     overwrite: bool = False,
 ) -> Any:
-    """Compute the plan ``p`` (resuming the blocks kept at ``output``); its dataset."""
+    """Compute the plan ``p`` (resuming the blocks kept at ``output``); its dataset.
+
+    Before anything is written: the output's path, the first (or last) point, the memory or
+    disk the sweep needs, and the scheduler. Then, holding the lock of ``output``: a
+    finished store of this sweep and this build is read back; the kept blocks of this build
+    are reused, the rest computed; each block from a Dask worker must come from this build.
+    """
     need()
-    if not (isinstance(workers, int) and workers >= 1):
+    if isinstance(workers, bool) or not (isinstance(workers, int) and workers >= 1):
         raise ValueError(f"--workers must be an integer >= 1, got {workers!r}")
     if output is not None:
         _check_output(output)
-        if Path(output).exists():
-            if store_key(output) == p.key() and not overwrite:
-                return open_sweep(output)  # finished before: nothing to do
-            if not overwrite:
-                raise ValueError(
-                    f"-o/--output {str(output)!r} exists and is not this sweep's store (another "
-                    "command, flags or version, or not a sweep): give --overwrite to replace it"
-                )
-    _usage(p)  # before anything is written
+        _check_store(p, output, overwrite)
+    _check_fits(p, _usage(p), output)  # before anything is written
     client = None if scheduler is None else _connect(scheduler)
     partial = Partial(p, output)
     try:
-        partial.open(overwrite)
-    except BaseException:
+        with partial.locked():
+            if output is not None:
+                if _check_store(p, output, overwrite):  # done by a run that held the lock
+                    partial.remove()
+                    return open_sweep(output)
+            partial.open(overwrite)
+            _compute(p, partial, workers, client, scheduler, progress)
+            client = None  # closed by _dask
+            metas = [partial.meta(k) for k in range(len(blocks(p.shape, p.chunk_points)))]
+            _say(metas)
+            ds = build(p, partial, _shared(p, metas))
+            if output is None:
+                return ds
+            write(ds, output, overwrite=True)
+            partial.remove()
+    finally:
         if client is not None:
             client.close()
-        raise
+    return open_sweep(output)
+
+
+def _check_store(p: Plan, output: str | os.PathLike[str], overwrite: bool) -> bool:
+    """True where ``output`` is this sweep's finished store (of this build); else a check.
+
+    A store of another sweep, or of this sweep computed by another build, or anything else
+    at the path, is refused unless ``overwrite``; even then only a store is replaced.
+    """
+    out = Path(output)
+    if not (out.exists() or out.is_symlink()):
+        return False
+    key = store_key(output)
+    if key == p.key() and not overwrite:
+        return True  # finished before: nothing to do
+    if key is None:
+        what = "is not the store of a linecontact sweep"
+        if out.is_symlink() or not (out.is_dir() if format_of(output) == "zarr" else out.is_file()):
+            raise ValueError(
+                f"-o/--output {str(output)!r} {what}: linecontact replaces only a sweep's store "
+                "(give another path)"
+            )
+        if not overwrite:
+            raise ValueError(f"-o/--output {str(output)!r} {what}: give --overwrite to replace it")
+        return False
+    if overwrite:
+        return False
+    ours = p.identity() == store_identity(output)
+    raise ValueError(
+        f"-o/--output {str(output)!r} holds "
+        + (
+            "this sweep computed by another build of linecontact (another version, an edited "
+            "module, or another NumPy or SciPy): give --overwrite to compute it again"
+            if ours
+            else "the store of another sweep (another command or flags)"
+            ": give --overwrite to replace it"
+        )
+    )
+
+
+def _compute(
+    p: Plan,
+    partial: Partial,
+    workers: int,
+    client: Any,
+    scheduler: str | None,
+    progress: bool | None,
+) -> None:
+    """Compute the blocks not yet kept, keeping each as it finishes."""
     bl = blocks(p.shape, p.chunk_points)
     done = partial.done()
     todo = [k for k in range(len(bl)) if k not in done]
     size = {k: _points(b) for k, b in enumerate(bl)}
     bar = progress_bar(p.size, f"sweep {p.command}", progress, initial=sum(size[k] for k in done))
+    code = code_digest()
     try:
         if scheduler is None and (workers == 1 or len(todo) <= 1):
+            if client is not None:
+                client.close()
             stream = _local(p, todo, bl)
         else:
             stream = _dask(p, todo, bl, workers, client)
         for block in stream:
+            if block.code != code:
+                raise ValueError(
+                    f"--scheduler {scheduler!r}: a worker computed block {block.index} with "
+                    "another build of linecontact (another version, an edited module, or "
+                    "another NumPy or SciPy): install this build on the workers (nothing of "
+                    "theirs was kept)"
+                )
             partial.put(block)
             bar.update(size[block.index])
     finally:
         bar.close()
-    metas = [partial.meta(k) for k in range(len(bl))]
-    _say(metas)
-    ds = build(p, partial, _shared(p, metas))
-    if output is None:
-        return ds
-    write(ds, output, overwrite=True)
-    partial.remove()
-    return open_sweep(output)
 
 
 def _points(b: tuple[slice, ...]) -> int:

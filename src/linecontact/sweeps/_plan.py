@@ -20,10 +20,14 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
-from .._version import __version__
-from ._ranges import MAX_SWEEP_POINTS, flag_values
+from .._fingerprint import code_digest
+from ._ranges import MAX_SWEEP_POINTS, count_values, flag_values
 
-__all__ = ["SWEEPABLE", "Axis", "Plan", "blocks", "plan"]
+__all__ = ["MAX_BLOCKS", "SWEEPABLE", "Axis", "Plan", "blocks", "count_blocks", "plan"]
+
+#: Most blocks one sweep is cut into (each is kept, resumed and scheduled as a whole): a
+#: point-by-point sweep of many points gets larger blocks.
+MAX_BLOCKS = 100_000
 
 #: The subcommands a sweep runs, and for each the flags whose several values its own code
 #: takes in one call, one record per value (the sweep hands it a row of points at once).
@@ -123,17 +127,26 @@ class Plan:
         """The names of the axes."""
         return tuple(a.name for a in self.axes)
 
-    def key(self) -> str:
-        """What makes two runs the same sweep (a store written by another is refused)."""
+    def identity(self) -> str:
+        """What makes two runs the same sweep: the command, its values, the blocks."""
         text = json.dumps(
             {
-                "version": __version__,
                 "command": self.command,
                 "fixed": self.fixed,
                 "axes": [(a.flag, [repr(v) for v in a.values]) for a in self.axes],
                 "chunk_points": self.chunk_points,
             }
         )
+        return hashlib.sha256(text.encode()).hexdigest()
+
+    def key(self) -> str:
+        """What makes two runs give the same numbers: the sweep and the code that computes it.
+
+        :meth:`identity` and the digest of the code (:func:`linecontact._fingerprint
+        .code_digest`: the package's modules, its version, Python, NumPy and SciPy). Blocks
+        or a store of another key are never combined with this sweep's.
+        """
+        text = json.dumps({"sweep": self.identity(), "code": code_digest()})
         return hashlib.sha256(text.encode()).hexdigest()
 
     def template_words(self) -> list[str]:
@@ -212,7 +225,9 @@ def plan(
     actions = sp._option_string_actions
     fixed: list[str] = []
     axes: list[Axis] = []
-    for flag, values in _split(words):
+    split = _split(words)
+    _check_size(split, actions)  # before any range is expanded
+    for flag, values in split:
         if flag in _OUTPUT_FLAGS:
             raise ValueError(
                 f"{flag} is not for a sweep: it writes its labelled arrays to -o OUT (.zarr or .nc)"
@@ -250,8 +265,6 @@ def plan(
             )
         )
     size = math.prod(len(a.values) for a in axes)
-    if size > MAX_SWEEP_POINTS:
-        raise ValueError(f"the sweep has {size} points, more than {MAX_SWEEP_POINTS}")
     vector = None
     for a in reversed(axes):
         if a.flag in SWEEPABLE[command]:
@@ -259,10 +272,20 @@ def plan(
             break
     whole = command == "pulloff" and "lennard-jones" not in fixed and all(a.unit for a in axes)
     if chunk_points is None:  # never the number of workers: a resumed run has the same blocks
-        point_by_point = max(1, min(64, size // 64))
+        point_by_point = max(1, min(64, size // 64), -(-size // MAX_BLOCKS))
         chunk_points = 200_000 if vector is not None or whole else point_by_point
-    elif not (isinstance(chunk_points, int) and chunk_points >= 1):
+        shape = tuple(len(a.values) for a in axes)
+        while count_blocks(shape, chunk_points) > MAX_BLOCKS:
+            chunk_points *= 2
+    elif isinstance(chunk_points, bool) or not (
+        isinstance(chunk_points, int) and chunk_points >= 1
+    ):
         raise ValueError(f"--chunk-points must be an integer >= 1, got {chunk_points!r}")
+    elif (nb := count_blocks(tuple(len(a.values) for a in axes), chunk_points)) > MAX_BLOCKS:
+        raise ValueError(
+            f"--chunk-points {chunk_points}: the sweep's {size} points would make {nb} blocks, "
+            f"more than {MAX_BLOCKS}: give a larger --chunk-points"
+        )
     p = Plan(
         command,
         tuple(fixed),
@@ -275,6 +298,52 @@ def plan(
     return p
 
 
+def _check_size(split: list[tuple[str, list[str]]], actions: dict[str, Any]) -> None:
+    """Refuse a sweep of more than :data:`MAX_SWEEP_POINTS` points before building its values.
+
+    The values of each flag are counted from its words (a range ``start:stop:num`` counts
+    ``num``), so that a sweep too large to plan is said at once, with its size.
+    """
+    counts: list[tuple[str, int]] = []
+    for flag, values in split:
+        action = actions.get(flag)
+        if action is None or action.nargs not in (None, "+") or not values:
+            continue
+        kind = action.type if action.type in (float, int) else str
+        n = count_values(flag, values, kind)
+        if n > 1:
+            counts.append((flag, n))
+    size = math.prod(n for _, n in counts)
+    if size > MAX_SWEEP_POINTS:
+        dims = " x ".join(f"{f} ({n})" for f, n in counts)
+        raise ValueError(
+            f"the sweep has {size:.3g} points ({dims}), more than {MAX_SWEEP_POINTS:.0e}: "
+            "sweep fewer values, or split it into several sweeps"
+        )
+
+
+def _cut(shape: tuple[int, ...], chunk_points: int) -> tuple[int, int]:
+    """Where :func:`blocks` cuts a grid: the axis sliced and the slab's length on it."""
+    inner = 1
+    j = len(shape) - 1
+    while j > 0 and inner * shape[j] <= chunk_points:
+        inner *= shape[j]
+        j -= 1
+    if inner * shape[j] <= chunk_points:  # the whole grid is one block
+        return -1, 0
+    return j, max(1, chunk_points // inner)
+
+
+def count_blocks(shape: tuple[int, ...], chunk_points: int) -> int:
+    """The number of blocks :func:`blocks` makes, without making them."""
+    if not shape:
+        return 1
+    j, step = _cut(shape, chunk_points)
+    if j < 0:
+        return 1
+    return math.prod(shape[:j]) * -(-shape[j] // step)
+
+
 def blocks(shape: tuple[int, ...], chunk_points: int) -> list[tuple[slice, ...]]:
     """The blocks of a grid of ``shape``: at most ``chunk_points`` points each.
 
@@ -283,14 +352,9 @@ def blocks(shape: tuple[int, ...], chunk_points: int) -> list[tuple[slice, ...]]
     """
     if not shape:
         return [()]
-    inner = 1
-    j = len(shape) - 1
-    while j > 0 and inner * shape[j] <= chunk_points:
-        inner *= shape[j]
-        j -= 1
-    if inner * shape[j] <= chunk_points:  # the whole grid is one block
+    j, step = _cut(shape, chunk_points)
+    if j < 0:
         return [tuple(slice(0, n) for n in shape)]
-    step = max(1, chunk_points // inner)
     out = []
     for outer in _product(shape[:j]):
         for start in range(0, shape[j], step):

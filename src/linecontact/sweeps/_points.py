@@ -15,6 +15,7 @@ from typing import Any
 
 import numpy as np
 
+from .._fingerprint import code_digest
 from ._block import Block, assemble, call, meta
 from ._plan import Plan
 
@@ -27,6 +28,12 @@ def evaluate(p: Plan, index: int, block: tuple[slice, ...], *, fast: bool = True
     ``fast=False``: point by point even where a whole block is one call (for the tests that
     compare the two).
     """
+    block_ = _evaluate(p, index, block, fast)
+    block_.code = code_digest()
+    return block_
+
+
+def _evaluate(p: Plan, index: int, block: tuple[slice, ...], fast: bool) -> Block:
     from ._fast import pulloff_block
 
     if fast:
@@ -38,6 +45,7 @@ def evaluate(p: Plan, index: int, block: tuple[slice, ...], *, fast: bool = True
     said: list[tuple[str, str]] = []
     pieces: list[tuple[np.ndarray, dict[str, np.ndarray], int]] = []  # flat idx, columns, recs
     failed: dict[int, tuple[str, str]] = {}
+    first_at: dict[str, Any] = {}
     units: dict[str, str] = {}
     parameters: dict[str, Any] = {}
     axis_values = [a.values[s] for a, s in zip(p.axes, block, strict=True)]
@@ -71,12 +79,16 @@ def evaluate(p: Plan, index: int, block: tuple[slice, ...], *, fast: bool = True
                     failed[int(i)] = (s1, r1)
                 else:
                     pieces.append((np.array([i]), dict(t1.columns), 1))
+                    if not parameters:
+                        first_at = dict(one)
                     meta(t1, units, parameters)
             continue
         if table is None:
             for i in idx:
                 failed[int(i)] = (state, reason)
             continue
+        if not parameters:
+            first_at = dict(values)
         meta(table, units, parameters)
         recs = table.size if vec is None else 1
         if vec is not None and table.size != len(idx):
@@ -85,4 +97,5 @@ def evaluate(p: Plan, index: int, block: tuple[slice, ...], *, fast: bool = True
                 f"{p.axes[vec].flag}"
             )
         pieces.append((idx, dict(table.columns), recs))
-    return Block(index, assemble(shape, n, pieces, failed), units, parameters, said)
+    data = assemble(shape, n, pieces, failed)
+    return Block(index, data, units, parameters, said, first_at)

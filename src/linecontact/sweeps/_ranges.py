@@ -8,10 +8,14 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["MAX_SWEEP_POINTS", "flag_values", "is_range"]
+__all__ = ["MAX_AXIS_VALUES", "MAX_SWEEP_POINTS", "count_values", "flag_values", "is_range"]
 
-#: Most points one sweep may ask for (the outer product of its swept flags).
+#: Most points one sweep may ask for (the outer product of its swept flags); whether they fit
+#: in memory or on disk is estimated before the sweep starts (``sweeps._engine``).
 MAX_SWEEP_POINTS = 10**9
+
+#: Most values of one swept flag (its coordinate is held in memory while planning).
+MAX_AXIS_VALUES = 10**7
 
 
 def is_range(word: str) -> bool:
@@ -46,8 +50,11 @@ def _range(flag: str, text: str, kind: type) -> np.ndarray:
     if not (math.isfinite(num_f) and num_f.is_integer() and num_f >= 1):
         raise ValueError(f"{flag}: the range {text!r} needs num an integer >= 1, got {parts[2]!r}")
     num = int(num_f)
-    if num > MAX_SWEEP_POINTS:
-        raise ValueError(f"{flag}: the range {text!r} asks for more than {MAX_SWEEP_POINTS} points")
+    if num > MAX_AXIS_VALUES:
+        raise ValueError(
+            f"{flag}: the range {text!r} asks for {num} values, more than {MAX_AXIS_VALUES} "
+            "for one flag"
+        )
     for name, v in (("start", start), ("stop", stop)):
         if not math.isfinite(v):
             raise ValueError(f"{flag}: the range {text!r} needs a finite {name}")
@@ -69,6 +76,26 @@ def _range(flag: str, text: str, kind: type) -> np.ndarray:
     return values
 
 
+def count_values(flag: str, words: Sequence[str], kind: Any) -> int:
+    """How many values ``words`` give ``flag``, without making them (a range: its ``num``).
+
+    A range whose ``num`` is not a number counts one: :func:`flag_values` says what is wrong.
+    """
+    if kind not in (float, int):
+        return len(words)
+    n = 0
+    for w in words:
+        parts = w.split(":") if is_range(w) else []
+        try:
+            num = float(parts[2]) if len(parts) >= 3 else 1.0
+        except ValueError:
+            num = 1.0
+        n += int(num) if math.isfinite(num) and num >= 1 else 1
+    if n > MAX_AXIS_VALUES:
+        raise ValueError(f"{flag} asks for {n} values, more than {MAX_AXIS_VALUES} for one flag")
+    return n
+
+
 def flag_values(flag: str, words: Sequence[str], kind: Any) -> list[Any]:
     """The values of ``flag`` that ``words`` give: each a number, a range, or a word.
 
@@ -83,6 +110,8 @@ def flag_values(flag: str, words: Sequence[str], kind: Any) -> list[Any]:
     for w in words:
         vals = _range(flag, w, kind) if is_range(w) else np.array([_number(flag, w, kind)])
         out.extend(int(v) if kind is int else float(v) for v in vals)
-    if len(out) > MAX_SWEEP_POINTS:
-        raise ValueError(f"{flag} asks for more than {MAX_SWEEP_POINTS} values")
+    if len(out) > MAX_AXIS_VALUES:
+        raise ValueError(
+            f"{flag} asks for {len(out)} values, more than {MAX_AXIS_VALUES} for one flag"
+        )
     return out

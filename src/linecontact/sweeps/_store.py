@@ -3,27 +3,42 @@
 A sweep with ``-o OUT`` keeps each finished block in ``OUT.partial/`` as its own ``.npz``
 file, written under a temporary name and renamed when whole: a file there is a whole block,
 so a run stopped at any moment (Ctrl-C, ``kill -9``) goes on from the blocks it finished.
-``OUT.partial/sweep.json`` holds the sweep's key (:meth:`Plan.key`): a store of another
-sweep is refused. When every block is there, the dataset is written, block by block, to
-``OUT`` (Zarr for ``.zarr``, netCDF for ``.nc``) under a temporary name and renamed, and
-``OUT.partial/`` removed.
+``OUT.partial/sweep.json`` holds the sweep's identity (:meth:`Plan.identity`: the command
+and its values) and its key (:meth:`Plan.key`: the identity and the digest of the code):
+blocks of another sweep are refused (unless ``overwrite``), blocks of this sweep kept by
+another build of linecontact (another version, an edited module, another NumPy) are
+discarded and computed again, with a warning, so that a store never mixes the numbers of two
+builds. One process writes ``OUT`` at a time: it holds a lock on ``OUT.partial/`` (where the
+system has ``flock``), and a second is refused with a message. When every block is there,
+the dataset is written, block by block, to ``OUT`` (Zarr for ``.zarr``, netCDF for ``.nc``)
+under a temporary name and renamed, and ``OUT.partial/`` removed. The files follow the
+umask, as files written by ``open`` do.
 """
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import shutil
-import tempfile
+import warnings
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from .._files import atomic_file
+from .._fingerprint import code_identity
 from ._block import TEXT, Block, codes, is_text
 from ._plan import Plan
 
-__all__ = ["FORMATS", "Partial", "format_of", "need", "store_key"]
+try:  # POSIX
+    import fcntl
+except ImportError:  # pragma: no cover - Windows: no lock, one writer is the user's care
+    fcntl = None  # type: ignore[assignment]
+
+__all__ = ["FORMATS", "Partial", "format_of", "need", "store_identity", "store_key"]
 
 #: The store formats, by the extension of ``-o``.
 FORMATS = {".zarr": "zarr", ".nc": "netcdf", ".nc4": "netcdf"}
@@ -53,8 +68,8 @@ def format_of(path: str | os.PathLike[str]) -> str:
     return FORMATS[ext]
 
 
-def store_key(path: str | os.PathLike[str]) -> str | None:
-    """The sweep key of a finished store at ``path`` (None: not a store of a sweep)."""
+def _store_attrs(path: str | os.PathLike[str]) -> dict[str, Any] | None:
+    """The attributes of a finished store at ``path`` (None: not a store of a sweep)."""
     import xarray as xr
 
     try:
@@ -65,8 +80,21 @@ def store_key(path: str | os.PathLike[str]) -> str | None:
     except Exception:  # noqa: BLE001 - whatever is there, it is not a sweep's store
         return None
     with ds:
-        key = ds.attrs.get("sweep_key")
-    return key if isinstance(key, str) else None
+        attrs = dict(ds.attrs)
+    return attrs if isinstance(attrs.get("sweep_key"), str) else None
+
+
+def store_key(path: str | os.PathLike[str]) -> str | None:
+    """The sweep key of a finished store at ``path`` (None: not a store of a sweep)."""
+    attrs = _store_attrs(path)
+    return None if attrs is None else attrs["sweep_key"]
+
+
+def store_identity(path: str | os.PathLike[str]) -> str | None:
+    """The sweep identity of a finished store at ``path`` (None: none said)."""
+    attrs = _store_attrs(path)
+    ident = None if attrs is None else attrs.get("sweep_identity")
+    return ident if isinstance(ident, str) else None
 
 
 def _encode(data: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
@@ -111,29 +139,114 @@ class Partial:
         self.dir = None if output is None else Path(f"{output}.partial")
         self.memory: dict[int, Block] = {}
 
+    @contextlib.contextmanager
+    def locked(self) -> Iterator[None]:
+        """Hold the lock of ``OUT.partial/`` (made if need be) while the block runs.
+
+        A second process writing the same ``OUT`` is refused with a ValueError. On the way
+        out, an ``OUT.partial/`` left empty (nothing kept) is removed.
+        """
+        if self.dir is None:
+            yield
+            return
+        fd = self._lock()
+        try:
+            yield
+        finally:
+            with contextlib.suppress(OSError):
+                self.dir.rmdir()  # only when empty: nothing of this sweep is kept there
+            os.close(fd)
+
+    def _lock(self) -> int:
+        assert self.dir is not None
+        for _ in range(8):
+            try:
+                self.dir.mkdir(exist_ok=True)
+                fd = os.open(self.dir, os.O_RDONLY | getattr(os, "O_DIRECTORY", 0))
+            except OSError as exc:
+                raise ValueError(
+                    f"-o/--output {str(self.output)!r}: cannot keep its blocks in "
+                    f"{str(self.dir)!r}: {exc.strerror or exc}"
+                ) from None
+            if fcntl is None:
+                return fd
+            try:
+                fcntl.flock(fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
+            except OSError:
+                os.close(fd)
+                raise ValueError(
+                    f"-o/--output {str(self.output)!r}: another linecontact sweep is writing "
+                    f"it now (it holds {str(self.dir)!r}); wait for it to end, or stop it, "
+                    "then run the command again"
+                ) from None
+            try:  # the directory locked is still the one at the path (not one just removed)
+                here, held = os.stat(self.dir), os.fstat(fd)
+                if (here.st_dev, here.st_ino) == (held.st_dev, held.st_ino):
+                    return fd
+            except OSError:
+                pass
+            os.close(fd)
+        raise ValueError(
+            f"-o/--output {str(self.output)!r}: {str(self.dir)!r} keeps being replaced by "
+            "another process; run the command again once it has ended"
+        )
+
     def open(self, overwrite: bool) -> None:
-        """Start or resume: a directory of another sweep is refused unless ``overwrite``."""
+        """Start or resume (under :meth:`locked`).
+
+        Blocks of another sweep are refused unless ``overwrite``; blocks of this sweep kept
+        by another build of linecontact are discarded, with a warning.
+        """
         if self.dir is None:
             return
-        key = self.plan.key()
+        key, identity = self.plan.key(), self.plan.identity()
         manifest = self.dir / "sweep.json"
-        if self.dir.exists():
-            try:
-                theirs = json.loads(manifest.read_text()).get("key")
-            except (OSError, ValueError):
-                theirs = None
-            if theirs != key:
+        try:
+            theirs = json.loads(manifest.read_text())
+        except (OSError, ValueError):
+            theirs = None
+        if not isinstance(theirs, dict):
+            theirs = None
+        kept = self.done()
+        if theirs is not None and theirs.get("key") != key:
+            if theirs.get("identity") != identity:
                 if not overwrite:
                     raise ValueError(
                         f"-o/--output {str(self.output)!r}: {str(self.dir)!r} holds the blocks "
-                        "of another sweep (another command, flags or version); give "
-                        "--overwrite to replace it"
+                        "of another sweep (another command or flags); give --overwrite to "
+                        "replace it"
                     )
-                shutil.rmtree(self.dir)
-        self.dir.mkdir(exist_ok=True)
-        if not manifest.exists():
-            info = {"key": key, "command": list(self.plan.argv), "shape": self.plan.shape}
-            _atomic_write(manifest, json.dumps(info).encode())
+            elif kept:
+                warnings.warn(
+                    f"{str(self.dir)!r} held {len(kept)} blocks of this sweep computed by "
+                    f"another build of linecontact ({_build(theirs.get('code'))}; this one: "
+                    f"{_build(code_identity())}): they were discarded and are computed "
+                    "again, so that the store holds the numbers of one build",
+                    UserWarning,
+                    stacklevel=4,
+                )
+            theirs = None
+        elif theirs is None and kept:  # blocks without a manifest: not known to be ours
+            if not overwrite:
+                raise ValueError(
+                    f"-o/--output {str(self.output)!r}: {str(self.dir)!r} holds blocks of an "
+                    "unknown sweep; give --overwrite to replace them"
+                )
+        if theirs is None:
+            for f in self.dir.iterdir():  # the directory stays: it is the lock
+                if f.is_dir() and not f.is_symlink():
+                    shutil.rmtree(f)
+                else:
+                    f.unlink()
+            info = {
+                "key": key,
+                "identity": identity,
+                "code": code_identity(),
+                "command": list(self.plan.argv),
+                "shape": self.plan.shape,
+            }
+            with atomic_file(manifest, name="the sweep's manifest") as fh:
+                fh.write(json.dumps(info).encode())
 
     def done(self) -> set[int]:
         """The numbers of the blocks kept whole."""
@@ -154,20 +267,15 @@ class Partial:
             return
         meta: dict[str, Any] = {"units": block.units, "parameters": block.parameters}
         meta["warnings"] = block.warnings
+        meta["at"] = block.at
         meta["shapes"] = {k: v.shape for k, v in block.data.items()}
         meta["kinds"] = {k: _kind(v) for k, v in block.data.items()}
         arrays = _encode(block.data)
         arrays[_META] = np.array(json.dumps(meta))
-        fd, tmp = tempfile.mkstemp(prefix=".tmp-", suffix=".npz", dir=self.dir)
-        try:
-            with os.fdopen(fd, "wb") as f:
-                np.savez(f, **arrays)  # type: ignore[arg-type]
-                f.flush()
-                os.fsync(f.fileno())
-            os.replace(tmp, self.dir / f"block-{block.index:06d}.npz")
-        except BaseException:
-            Path(tmp).unlink(missing_ok=True)
-            raise
+        with atomic_file(
+            self.dir / f"block-{block.index:06d}.npz", name="a block of the sweep"
+        ) as f:
+            np.savez(f, **arrays)  # type: ignore[arg-type]
 
     def meta(self, index: int) -> dict[str, Any]:
         """The units, parameters, warnings, shapes and kinds of a kept block."""
@@ -177,6 +285,7 @@ class Partial:
                 "units": b.units,
                 "parameters": b.parameters,
                 "warnings": b.warnings,
+                "at": b.at,
                 "shapes": {k: v.shape for k, v in b.data.items()},
                 "kinds": {k: _kind(v) for k, v in b.data.items()},
             }
@@ -199,12 +308,9 @@ class Partial:
         self.memory.clear()
 
 
-def _atomic_write(path: Path, data: bytes) -> None:
-    fd, tmp = tempfile.mkstemp(prefix=".tmp-", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+def _build(ident: Any) -> str:
+    """A build of linecontact in words: its version and the start of its code digest."""
+    if not isinstance(ident, dict):
+        return "a build that did not say which"
+    words = f"version {ident.get('version', '?')}, code {str(ident.get('code', '?'))[:12]}"
+    return words + f", NumPy {ident.get('numpy', '?')}, SciPy {ident.get('scipy', '?')}"
