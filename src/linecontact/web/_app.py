@@ -1,18 +1,22 @@
-"""The ASGI application: pages, the HTTP API, jobs, limits and security headers."""
+"""The ASGI application: pages, the HTTP API, jobs, limits and security checks and headers."""
 
 from __future__ import annotations
 
 import asyncio
 import contextlib
+import ipaddress
 import json
-import os
+import socket
 import tempfile
 import time
+import urllib.parse
 import uuid
 from pathlib import Path
 from typing import Any
 
 from starlette.applications import Starlette
+from starlette.exceptions import HTTPException
+from starlette.formparsers import MultiPartException
 from starlette.requests import Request
 from starlette.responses import HTMLResponse, JSONResponse, Response
 from starlette.routing import Mount, Route
@@ -20,8 +24,16 @@ from starlette.staticfiles import StaticFiles
 
 from .._version import __version__
 from ._pages import PAGES, index_html, page_html
-from ._params import COMMANDS, ParameterError, argv_of, parameters_of
-from ._workers import Outcome, Pool
+from ._params import (
+    COMMANDS,
+    MAX_POINTS,
+    ParameterError,
+    argv_of,
+    parameters_of,
+    points_of,
+    sweep_hint,
+)
+from ._workers import MAX_RESULT_BYTES, Outcome, Pool, is_slow
 
 __all__ = ["create_app"]
 
@@ -40,53 +52,217 @@ HEADERS = {
     "Cross-Origin-Opener-Policy": "same-origin",
 }
 
+#: A request over this many points holds only a slow worker (half a second and more).
+SLOW_POINTS = 1_000
+
+#: Finished jobs kept: the last 100, for an hour, their results 128 MiB in all.
+MAX_JOBS = 100
+JOB_MAX_AGE = 3600.0
+MAX_JOB_BYTES = 128 * 1024 * 1024
+
+#: Bytes of an oversized body read and dropped before the 413, so that a client still
+#: sending it reads the answer rather than a reset connection.
+_DRAIN = 4 * 1024 * 1024
+
+#: Methods that change state: their Origin must be this server's.
+_UNSAFE = frozenset({"POST", "PUT", "PATCH", "DELETE"})
+
+
+class _Hosts:
+    """The host names a request may give in its Host header (DNS rebinding fails).
+
+    Loopback names and addresses, and the address the server listens on; on a wildcard
+    address (``0.0.0.0``, ``::``) also any IP address and this machine's name, as the server
+    is then reached by them (a rebinding attack names a host by a domain of its own).
+    """
+
+    def __init__(self, host: str) -> None:
+        bound = host.strip().strip("[]").lower().rstrip(".")
+        self.wildcard = bound in ("", "0.0.0.0", "::")
+        self.names = {"localhost"}
+        if self.wildcard:
+            self.names.add(socket.gethostname().lower())
+        else:
+            self.names.add(bound)
+        self.bound = host
+
+    def allows(self, name: str) -> bool:
+        name = name.rstrip(".")
+        if name in self.names:
+            return True
+        try:
+            ip = ipaddress.ip_address(name)
+        except ValueError:
+            return False
+        return ip.is_loopback or self.wildcard
+
+
+def _split_host(value: str) -> str | None:
+    """The host of a Host header, lower case, without its port (None: not a host[:port])."""
+    v = value.strip().lower()
+    if v.startswith("["):
+        end = v.find("]")
+        rest = v[end + 1 :] if end > 0 else "x"
+        if rest and not (rest.startswith(":") and rest[1:].isdigit()):
+            return None
+        return v[1:end]
+    name, sep, port = v.partition(":")
+    if ":" in port or (sep and not port.isdigit()) or not name:
+        return None
+    return name
+
+
+def _same_origin(origin: str, scheme: str, host: str) -> bool:
+    """Whether the Origin header names this server, as the request's Host header does."""
+    defaults = {"http": 80, "https": 443}
+    try:
+        o = urllib.parse.urlsplit(origin.strip())
+        h = urllib.parse.urlsplit(f"{scheme}://{host.strip()}")
+        return (
+            o.scheme == scheme
+            and o.scheme in defaults
+            and o.hostname is not None
+            and o.hostname == h.hostname
+            and (o.port or defaults[o.scheme]) == (h.port or defaults[scheme])
+            and o.path in ("", "/")
+        )
+    except ValueError:  # a port that is no number
+        return False
+
 
 class _Limits:
-    """Security headers, and bodies over their limit refused with 413 before they are read."""
+    """The checks before the application, and the security headers of every response.
 
-    def __init__(self, app: Any, max_body: int, max_upload: int) -> None:
-        self.app, self.max_body, self.max_upload = app, max_body, max_upload
+    The Host header must name this server (403), a state-changing request's Origin, where
+    given, must be this server's (403), and a body over its limit is refused (413), however it
+    comes (Content-Length or chunked), before the application reads it: the body is read here,
+    within its limit, and handed on.
+    """
+
+    def __init__(self, app: Any, max_body: int, max_upload: int, hosts: _Hosts, pool: Pool) -> None:
+        self.app, self.max_body, self.max_upload, self.hosts = app, max_body, max_upload, hosts
+        self.pool = pool  # the workers (their count of computations started, for tests)
 
     async def __call__(self, scope: Any, receive: Any, send: Any) -> None:
         if scope["type"] != "http":
             await self.app(scope, receive, send)
             return
-        headers = dict(scope.get("headers") or [])
-        multipart = b"multipart/form-data" in headers.get(b"content-type", b"")
-        limit = self.max_upload if multipart else self.max_body
-        length = headers.get(b"content-length")
-        if length is not None and length.isdigit() and int(length) > limit:
-            await _send_json(send, 413, _error("body", f"the request body is over {limit} bytes"))
+        refused = self._refusal(scope)
+        if refused is not None:
+            await _send_json(send, *refused)
             return
-        seen = 0
-
-        async def limited() -> Any:
-            nonlocal seen
-            message = await receive()
-            if message["type"] == "http.request":
-                seen += len(message.get("body", b""))
-                if seen > limit:
-                    raise _TooLarge(limit)
-            return message
+        if scope["method"] in _UNSAFE:
+            headers = _headers(scope)
+            multipart = b"multipart/form-data" in (headers.get(b"content-type") or [b""])[0]
+            limit = self.max_upload if multipart else self.max_body
+            got = await _read_body(receive, limit, headers)
+            if isinstance(got, tuple):
+                await _send_json(send, *got)
+                return
+            if got is None:  # the client went away
+                return
+            receive = _replay(got, receive)
 
         async def secured(message: Any) -> None:
             if message["type"] == "http.response.start":
                 message.setdefault("headers", [])
-                for k, v in HEADERS.items():
-                    message["headers"].append((k.lower().encode(), v.encode()))
+                message["headers"] = list(message["headers"]) + [
+                    (k.lower().encode(), v.encode()) for k, v in HEADERS.items()
+                ]
             await send(message)
 
-        try:
-            await self.app(scope, limited, secured)
-        except _TooLarge as exc:
-            await _send_json(
-                send, 413, _error("body", f"the request body is over {exc.limit} bytes")
+        await self.app(scope, receive, secured)
+
+    def _refusal(self, scope: Any) -> tuple[int, dict[str, Any]] | None:
+        headers = _headers(scope)
+        hosts = headers.get(b"host", [])
+        if len(hosts) != 1:
+            return 403, _error("Host", "a request needs exactly one Host header")
+        raw = hosts[0].decode("latin-1")
+        name = _split_host(raw)
+        if name is None or not self.hosts.allows(name):
+            return 403, _error(
+                "Host",
+                f"the Host header {raw!r} does not name this server (a loopback name or "
+                f"address, or {self.hosts.bound}): refused, as a DNS rebinding attack would be",
             )
+        if scope["method"] not in _UNSAFE:
+            return None
+        origins = headers.get(b"origin", [])
+        if len(origins) > 1:
+            return 403, _error("Origin", "a request may have one Origin header")
+        if origins:
+            origin = origins[0].decode("latin-1")
+            if not _same_origin(origin, scope.get("scheme", "http"), raw):
+                return 403, _error(
+                    "Origin",
+                    f"a {scope['method']} from the page of another site ({origin!r}) is refused: "
+                    "only this server's pages may change its state",
+                )
+        site = headers.get(b"sec-fetch-site", [b""])[0].decode("latin-1").lower()
+        if site in ("cross-site", "same-site"):
+            return 403, _error(
+                "Origin",
+                f"a {scope['method']} from the page of another site (Sec-Fetch-Site: {site}) "
+                "is refused: only this server's pages may change its state",
+            )
+        return None
 
 
-class _TooLarge(Exception):
-    def __init__(self, limit: int) -> None:
-        self.limit = limit
+def _headers(scope: Any) -> dict[bytes, list[bytes]]:
+    out: dict[bytes, list[bytes]] = {}
+    for k, v in scope.get("headers") or []:
+        out.setdefault(bytes(k).lower(), []).append(bytes(v))
+    return out
+
+
+async def _read_body(
+    receive: Any, limit: int, headers: dict[bytes, list[bytes]]
+) -> bytes | tuple[int, dict[str, Any]] | None:
+    """The body within ``limit`` bytes, a refusal (status, document), or None (disconnected)."""
+    lengths = headers.get(b"content-length", [])
+    if lengths:
+        text = lengths[0].strip()
+        if len(lengths) > 1 or not text.isdigit():
+            return 400, _error("body", "the Content-Length header is not a number of bytes")
+        if int(text) > limit:
+            return 413, _error(
+                "body", f"the request body is {int(text):,} bytes, over the limit of {limit:,}"
+            )
+    chunks: list[bytes] = []
+    seen = 0
+    more = True
+    while more:
+        message = await receive()
+        if message["type"] == "http.disconnect":
+            return None
+        chunk = message.get("body", b"")
+        seen += len(chunk)
+        more = bool(message.get("more_body", False))
+        if seen > limit:
+            dropped = seen
+            while more and dropped < limit + _DRAIN:  # read on a little, then answer
+                message = await receive()
+                if message["type"] == "http.disconnect":
+                    return None
+                dropped += len(message.get("body", b""))
+                more = bool(message.get("more_body", False))
+            return 413, _error("body", f"the request body is over the limit of {limit:,} bytes")
+        chunks.append(chunk)
+    return b"".join(chunks)
+
+
+def _replay(body: bytes, receive: Any) -> Any:
+    sent = False
+
+    async def replayed() -> Any:
+        nonlocal sent
+        if not sent:
+            sent = True
+            return {"type": "http.request", "body": body, "more_body": False}
+        return await receive()  # the disconnect, in time
+
+    return replayed
 
 
 async def _send_json(send: Any, status: int, doc: dict[str, Any]) -> None:
@@ -115,38 +291,138 @@ def _respond(out: Outcome) -> Response:
     return JSONResponse(_error(_name(out.flag), out.message), status_code=out.status)
 
 
+class _RequestError(Exception):
+    """A request refused before it is computed: its status, parameter and message."""
+
+    def __init__(self, status: int, parameter: str | None, message: str) -> None:
+        super().__init__(message)
+        self.status, self.parameter, self.message = status, parameter, message
+
+    def response(self) -> Response:
+        return JSONResponse(_error(self.parameter, self.message), status_code=self.status)
+
+
 class _Job:
+    """A computation of the jobs API: queued, running, then done, failed or cancelled.
+
+    Once it ends its document is written once (the result's JSON text spliced in, never
+    parsed again) and its elapsed time stops.
+    """
+
     def __init__(self, command: str, argv: list[str]) -> None:
         self.id = uuid.uuid4().hex
         self.command, self.argv = command, argv
-        self.started = time.monotonic()
-        self.outcome: Outcome | None = None
+        self.created = time.monotonic()
+        self.started: float | None = None
+        self.ended: float | None = None
         self.cancelled = False
-        self.worker: Any = None
         self.progress: tuple[int, int] | None = None  # (done, total), where the job says
         self.task: asyncio.Task[Any] | None = None
+        self._text: bytes | None = None  # the document, once ended
 
-    def state(self) -> dict[str, Any]:
-        if self.cancelled:
-            state = "cancelled"
-        elif self.outcome is None:
-            state = "running"
-        else:
-            state = "done" if self.outcome.status == 200 else "failed"
+    @property
+    def size(self) -> int:
+        """Bytes the job keeps (its document once ended)."""
+        return len(self._text) if self._text is not None else 0
+
+    def mark_started(self) -> None:
+        self.started = time.monotonic()
+
+    def report(self, done: int, total: int) -> None:
+        self.progress = (done, total)
+
+    def _doc(self, state: str) -> dict[str, Any]:
+        end = time.monotonic() if self.ended is None else self.ended
         doc: dict[str, Any] = {
             "id": self.id,
             "command": self.command,
             "state": state,
-            "elapsed_s": round(time.monotonic() - self.started, 3),
+            "elapsed_s": round(end - self.created, 3),
         }
         if self.progress is not None:
             doc["progress"] = {"done": self.progress[0], "total": self.progress[1]}
-        if self.outcome is not None and not self.cancelled:
-            if self.outcome.status == 200:
-                doc["result"] = json.loads(self.outcome.body)
-            else:
-                doc.update(_error(_name(self.outcome.flag), self.outcome.message))
         return doc
+
+    def finish(self, out: Outcome) -> None:
+        """Record the outcome (nothing where the job was cancelled first)."""
+        if self.ended is not None:
+            return
+        self.ended = time.monotonic()
+        doc = self._doc("done" if out.status == 200 else "failed")
+        doc["status"] = out.status
+        if out.status != 200:
+            doc.update(_error(_name(out.flag), out.message))
+            self._text = json.dumps(doc).encode()
+            return
+        if out.warnings:
+            doc["warnings"] = out.warnings
+        head = json.dumps(doc)  # the result's text spliced in: never parsed here
+        self._text = (head[:-1] + ', "result": ' + out.body.strip() + "}").encode()
+
+    def cancel(self) -> None:
+        """Cancel it: a queued job never runs, a running one's worker is ended and replaced."""
+        if self.ended is not None:
+            return
+        self.cancelled = True
+        self.ended = time.monotonic()
+        doc = self._doc("cancelled")
+        doc["status"] = 499
+        doc.update(_error(None, "the computation was cancelled (DELETE)"))
+        self._text = json.dumps(doc).encode()
+        if self.task is not None:
+            self.task.cancel()
+
+    def document(self) -> bytes:
+        """Its state as JSON: the text written when it ended, or its state now."""
+        if self._text is not None:
+            return self._text
+        return json.dumps(self._doc("queued" if self.started is None else "running")).encode()
+
+
+class _JobStore:
+    """The jobs, within a size and an age limit.
+
+    The oldest finished ones are evicted first; a queued or running one never is.
+    """
+
+    def __init__(self, max_jobs: int, max_age: float, max_bytes: int) -> None:
+        self.max_jobs, self.max_age, self.max_bytes = max_jobs, max_age, max_bytes
+        self._jobs: dict[str, _Job] = {}
+
+    def __iter__(self) -> Any:
+        return iter(list(self._jobs.values()))
+
+    def __len__(self) -> int:
+        return len(self._jobs)
+
+    def add(self, job: _Job) -> bool:
+        """Keep ``job`` (False: the store is full of jobs in progress)."""
+        self.prune(room=1)
+        if len(self._jobs) + 1 > self.max_jobs:
+            return False
+        self._jobs[job.id] = job
+        return True
+
+    def get(self, job_id: str) -> _Job | None:
+        self.prune()
+        return self._jobs.get(job_id)
+
+    def prune(self, room: int = 0) -> None:
+        """Evict the finished jobs over the age limit, then the oldest over the size limit."""
+        now = time.monotonic()
+        ended = sorted(
+            (j for j in self._jobs.values() if j.ended is not None),
+            key=lambda j: j.ended or 0.0,
+        )
+        count = len(self._jobs) + room
+        total = sum(j.size for j in ended)
+        for j in ended:
+            old = now - (j.ended or now) > self.max_age
+            if not (old or count > self.max_jobs or total > self.max_bytes):
+                break
+            del self._jobs[j.id]
+            count -= 1
+            total -= j.size
 
 
 def create_app(
@@ -155,102 +431,186 @@ def create_app(
     time_limit: float = 60.0,
     max_body: int = 64 * 1024,
     max_upload: int = 1024 * 1024,
+    host: str = "127.0.0.1",
+    max_points: int = MAX_POINTS,
+    max_result_bytes: int = MAX_RESULT_BYTES,
+    max_jobs: int = MAX_JOBS,
+    job_max_age: float = JOB_MAX_AGE,
+    max_job_bytes: int = MAX_JOB_BYTES,
 ) -> Any:
     """The web application of ``linecontact serve`` (an ASGI app).
 
     Parameters
     ----------
     workers : int
-        Worker processes computing the requests (>= 2; slow computations use at most all but
-        one, so that quick requests always find one).
+        Worker processes computing the requests, from 2 (slow computations use at most all
+        but one, so that quick requests always find one) to twice the CPUs (at least 4).
     time_limit : float
         Seconds a computation may take before it is stopped (504) and its worker replaced.
     max_body, max_upload : int
         The largest request body and uploaded file [bytes] (413 beyond them).
-    """
-    pool = Pool(workers, time_limit)
-    jobs: dict[str, _Job] = {}
+    host : str
+        The address the server listens on: a request's Host header must name it, or a
+        loopback name or address (403 otherwise).
+    max_points : int
+        The most points one request may ask for (413 beyond it: a larger study is a sweep).
+    max_result_bytes : int
+        The largest result of a computation [bytes] (413 beyond it, never shipped).
+    max_jobs, job_max_age, max_job_bytes : int, float, int
+        Jobs kept, seconds a finished job is kept, and bytes of finished jobs' results kept:
+        the oldest finished jobs are evicted first (a job in progress never is).
 
-    async def params_of(request: Request) -> list[tuple[str, str]]:
+    Returns
+    -------
+    ASGI application
+        Starlette's, behind the Host, Origin and body checks and the security headers.
+    """
+    for name, value in (
+        ("max_body", max_body),
+        ("max_upload", max_upload),
+        ("max_points", max_points),
+        ("max_jobs", max_jobs),
+        ("max_job_bytes", max_job_bytes),
+    ):
+        if not (isinstance(value, int) and value > 0):
+            raise ValueError(f"{name} must be an integer > 0, got {value!r}")
+    if not (isinstance(job_max_age, int | float) and job_max_age > 0):
+        raise ValueError(f"job_max_age must be a number of seconds > 0, got {job_max_age!r}")
+    pool = Pool(workers, time_limit, max_result_bytes)
+    jobs = _JobStore(max_jobs, float(job_max_age), max_job_bytes)
+    limits = {
+        "max_points": max_points,
+        "max_result_bytes": max_result_bytes,
+        "max_body_bytes": max_body,
+        "max_upload_bytes": max_upload,
+        "time_limit_s": pool.time_limit,
+        "max_jobs": max_jobs,
+        "job_max_age_s": float(job_max_age),
+    }
+
+    async def items_of(request: Request) -> list[tuple[str, str]]:
+        """The request's parameters: the query's, then the body's (JSON, form or multipart)."""
         items = list(request.query_params.multi_items())
-        if request.method == "POST":
-            ctype = request.headers.get("content-type", "")
-            if ctype.startswith("application/json"):
-                try:
-                    doc = await request.json()
-                except ValueError:
-                    raise ParameterError("body", "the body is not JSON") from None
-                if not isinstance(doc, dict):
-                    raise ParameterError("body", "the JSON body must be an object of parameters")
-                for k, v in doc.items():
-                    vals = v if isinstance(v, list) else [v]
-                    items += [
-                        (k, "true" if x is True else "false" if x is False else str(x))
-                        for x in vals
-                    ]
-            elif ctype.startswith(("application/x-www-form-urlencoded", "multipart/form-data")):
-                form = await request.form()
-                for k, v in form.multi_items():
-                    if isinstance(v, str):
-                        items.append((k, v))
-        return items
+        if request.method != "POST":
+            return items
+        body = await request.body()
+        mime = request.headers.get("content-type", "").split(";")[0].strip().lower()
+        if not body:
+            return items
+        if mime == "application/json":
+            return items + _json_items(body)
+        if mime in ("application/x-www-form-urlencoded", "multipart/form-data"):
+            try:
+                form = await request.form(max_files=1, max_fields=1000)
+            except (HTTPException, MultiPartException) as exc:
+                detail = getattr(exc, "detail", None) or getattr(exc, "message", "")
+                raise _RequestError(400, "body", f"the form is malformed ({detail})") from None
+            except (ValueError, UnicodeDecodeError) as exc:
+                raise _RequestError(400, "body", f"the form is malformed ({exc})") from None
+            return items + [(k, v) for k, v in form.multi_items() if isinstance(v, str)]
+        raise _RequestError(
+            415,
+            "body",
+            f"a body of type {mime or 'none'!r} is not read: send application/json, "
+            "application/x-www-form-urlencoded or multipart/form-data",
+        )
+
+    def checked(command: str, argv: list[str]) -> bool:
+        """Refuse a request over its points (413); True where it gets a slow worker."""
+        points, parameter = points_of(command, argv)
+        if points > max_points:
+            raise _RequestError(
+                413,
+                parameter,
+                f"this request asks for {points:,} points"
+                + (f" ({parameter})" if parameter else "")
+                + f", over the limit of {max_points:,} points of one request; "
+                + sweep_hint(command),
+            )
+        return is_slow(command, argv) or points > SLOW_POINTS
 
     async def upload(request: Request, tmpdir: str) -> list[str]:
         """``--data FILE`` for an uploaded CSV (a temporary file of the server's)."""
-        if not request.headers.get("content-type", "").startswith("multipart/form-data"):
-            return []
         form = await request.form()
         f = form.get("data")
         if f is None or isinstance(f, str):
             return []
         data = await f.read()
-        path = os.path.join(tmpdir, "data.csv")
-        with open(path, "wb") as out:
-            out.write(data)
-        return ["--data", path]
+        path = Path(tmpdir) / "data.csv"
+        path.write_bytes(data)
+        return ["--data", str(path)]
+
+    async def parsed(request: Request) -> tuple[str, list[str], bool]:
+        command = request.path_params["command"]
+        if command not in COMMANDS:
+            raise _RequestError(404, "command", f"no such command {command!r}")
+        try:
+            argv = argv_of(command, await items_of(request))
+        except ParameterError as exc:
+            raise _RequestError(422, exc.parameter, str(exc)) from None
+        return command, argv, checked(command, argv)
 
     async def api(request: Request) -> Response:
-        command = request.path_params["command"]
-        if command not in COMMANDS:
-            return JSONResponse(_error("command", f"no such command {command!r}"), status_code=404)
-        with tempfile.TemporaryDirectory(prefix="linecontact-web-") as tmpdir:
-            try:
-                argv = argv_of(command, await params_of(request))
-                argv += await upload(request, tmpdir)
-            except ParameterError as exc:
-                return JSONResponse(_error(exc.parameter, str(exc)), status_code=422)
-            return _respond(await pool.run(command, argv))
+        try:
+            command, argv, slow = await parsed(request)
+        except _RequestError as exc:
+            return exc.response()
+        if not request.headers.get("content-type", "").startswith("multipart/form-data"):
+            return _respond(await pool.run(command, argv, slow=slow))
+        with tempfile.TemporaryDirectory(prefix="upload-", dir=pool.root) as tmpdir:
+            argv += await upload(request, tmpdir)
+            return _respond(await pool.run(command, argv, slow=slow))
 
     async def start_job(request: Request) -> Response:
-        command = request.path_params["command"]
-        if command not in COMMANDS:
-            return JSONResponse(_error("command", f"no such command {command!r}"), status_code=404)
         try:
-            argv = argv_of(command, await params_of(request))
-        except ParameterError as exc:
-            return JSONResponse(_error(exc.parameter, str(exc)), status_code=422)
+            command, argv, slow = await parsed(request)
+        except _RequestError as exc:
+            return exc.response()
         job = _Job(command, argv)
-        jobs[job.id] = job
+        if not jobs.add(job):
+            return JSONResponse(
+                _error(
+                    None,
+                    f"the server holds {max_jobs} jobs in progress, its limit: try again when "
+                    "one has ended",
+                ),
+                status_code=503,
+                headers={"Retry-After": "10"},
+            )
 
         async def run() -> None:
-            job.outcome = await pool.run(command, argv, job=job)
+            try:
+                out = await pool.run(
+                    command, argv, slow=slow, on_start=job.mark_started, on_progress=job.report
+                )
+            except asyncio.CancelledError:
+                job.cancel()  # cancelled by the server's end (a DELETE cancelled it first)
+                raise
+            except Exception as exc:  # noqa: BLE001 - never a traceback
+                out = Outcome(500, message=f"internal error ({type(exc).__name__}: {exc})")
+            job.finish(out)
 
         job.task = asyncio.create_task(run())
-        return JSONResponse(job.state(), status_code=202)
+        return Response(job.document(), status_code=202, media_type="application/json")
 
     async def job_state(request: Request) -> Response:
-        job = jobs.get(request.path_params["id"])
+        job_id = request.path_params["id"]
+        job = jobs.get(job_id)
         if job is None:
-            return JSONResponse(_error("id", "no such job"), status_code=404)
+            return JSONResponse(
+                _error(
+                    "id",
+                    f"no job {job_id!r}: it expired (a finished job is kept "
+                    f"{job_max_age:g} s, and only the last {max_jobs}) or never existed",
+                ),
+                status_code=404,
+            )
         if request.method == "DELETE":
-            job.cancelled = True
-            if job.worker is not None:
-                with contextlib.suppress(OSError, ValueError):
-                    job.worker.proc.kill()
-        return JSONResponse(job.state())
+            job.cancel()
+        return Response(job.document(), media_type="application/json")
 
     async def openapi(request: Request) -> Response:
-        return JSONResponse(_openapi())
+        return JSONResponse(_openapi(limits))
 
     async def index(request: Request) -> Response:
         return HTMLResponse(index_html())
@@ -261,15 +621,30 @@ def create_app(
             return HTMLResponse(index_html(f"no page {name!r}"), status_code=404)
         return HTMLResponse(page_html(name))
 
+    async def http_error(request: Request, exc: Exception) -> Response:
+        assert isinstance(exc, HTTPException)
+        message = {404: f"no such path {request.url.path!r} (the API: /api/v1/openapi.json)"}
+        text = message.get(exc.status_code, str(exc.detail))
+        return JSONResponse(
+            _error(None, text), status_code=exc.status_code, headers=dict(exc.headers or {})
+        )
+
+    async def internal_error(request: Request, exc: Exception) -> Response:
+        return JSONResponse(
+            _error(None, f"internal error ({type(exc).__name__}); please report it"),
+            status_code=500,
+        )
+
     @contextlib.asynccontextmanager
     async def lifespan(app: Any) -> Any:
         await pool.start()
         try:
             yield
         finally:
-            for job in jobs.values():
-                if job.task is not None:
-                    job.task.cancel()
+            tasks = [j.task for j in jobs if j.task is not None and not j.task.done()]
+            for task in tasks:
+                task.cancel()
+            await asyncio.gather(*tasks, return_exceptions=True)
             await pool.stop()
 
     app = Starlette(
@@ -282,13 +657,70 @@ def create_app(
             Mount("/static", StaticFiles(directory=STATIC), name="static"),
             Route("/{page}", page),
         ],
+        exception_handlers={HTTPException: http_error, Exception: internal_error},
         lifespan=lifespan,
     )
-    return _Limits(app, max_body, max_upload)
+    return _Limits(app, max_body, max_upload, _Hosts(host), pool)
 
 
-def _openapi() -> dict[str, Any]:
+def _json_items(body: bytes) -> list[tuple[str, str]]:
+    """The parameters of a JSON object body (400 where it is no JSON, 422 a bad value)."""
+    try:
+        doc = json.loads(body.decode("utf-8"))
+    except UnicodeDecodeError:
+        raise _RequestError(400, "body", "the body is not UTF-8 text") from None
+    except RecursionError:
+        raise _RequestError(400, "body", "the JSON body is nested too deeply") from None
+    except ValueError as exc:
+        raise _RequestError(400, "body", f"the body is not JSON ({exc})") from None
+    if not isinstance(doc, dict):
+        raise _RequestError(422, "body", "the JSON body must be an object of parameters")
+    items = []
+    for k, v in doc.items():
+        for x in v if isinstance(v, list) else [v]:
+            if isinstance(x, bool):
+                items.append((k, "true" if x else "false"))
+            elif isinstance(x, int | float | str):
+                items.append((k, str(x)))
+            else:
+                raise _RequestError(
+                    422,
+                    k,
+                    f"{k}: a value is a number, a string or true/false (or a list of them), "
+                    f"got {type(x).__name__ if x is not None else 'null'}",
+                )
+    return items
+
+
+def _openapi(limits: dict[str, Any]) -> dict[str, Any]:
     paths: dict[str, Any] = {}
+    limit_text = (
+        f"At most {limits['max_points']:,} points a request (the values of a flag that takes "
+        f"several, a range's NUM, a curve's or a map's counts; a larger study is a sweep, "
+        f"`linecontact sweep`), a result of at most {limits['max_result_bytes']:,} bytes, a "
+        f"body of {limits['max_body_bytes']:,} bytes, an upload of "
+        f"{limits['max_upload_bytes']:,} bytes, {limits['time_limit_s']:g} s a computation. "
+        "POST and DELETE: the Origin header, where given, must be this server's; every "
+        "request's Host header must name this server (a loopback name or its address)."
+    )
+    error = {"description": "{error: {parameter, message}}"}
+    responses = {
+        "200": {"description": "exactly what `linecontact COMMAND --json` prints"},
+        "400": {"description": "a malformed body (not JSON, not UTF-8, nested too deeply, "
+                "a malformed form)"},
+        "403": {"description": "a Host header that does not name this server, or the Origin "
+                "of another site"},
+        "404": {"description": "no such command"},
+        "413": {"description": f"a body or upload too large, a request over "
+                f"{limits['max_points']:,} points, or a result over "
+                f"{limits['max_result_bytes']:,} bytes"},
+        "415": {"description": "a body that is not JSON, a form or multipart"},
+        "422": {"description": "a bad parameter"},
+        "500": {"description": "a solver missed its tolerance, or the worker computing the "
+                "request ended unexpectedly (it is replaced)"},
+        "504": {"description": "the computation took longer than its time limit"},
+    }  # fmt: skip
+    responses = {k: {**error, **v} if k != "200" else v for k, v in responses.items()}
     for command in COMMANDS:
         params = []
         for p in parameters_of(command):
@@ -312,12 +744,6 @@ def _openapi() -> dict[str, Any]:
                     "explode": True,
                 }
             )
-        responses = {
-            "200": {"description": f"exactly what `linecontact {command} --json` prints"},
-            "422": {"description": "a bad parameter: {error: {parameter, message}}"},
-            "413": {"description": "the body or the upload is too large"},
-            "504": {"description": "the computation took longer than its time limit"},
-        }
         paths[f"/api/v1/{command}"] = {
             "get": {
                 "summary": f"linecontact {command}",
@@ -330,8 +756,45 @@ def _openapi() -> dict[str, Any]:
                 "responses": responses,
             },
         }
+    job_doc = (
+        "{id, command, state (queued, running, done, failed, cancelled), elapsed_s (stops "
+        "when it ends), progress {done, total} where reported; once ended: status (499 when "
+        "cancelled), and result or error}"
+    )
+    paths["/api/v1/jobs/{command}"] = {
+        "post": {
+            "summary": "start COMMAND as a job (the parameters as for /api/v1/{command})",
+            "responses": {
+                "202": {"description": job_doc},
+                "503": {"description": f"{limits['max_jobs']} jobs in progress: try later"},
+                **{k: v for k, v in responses.items() if k in ("400", "403", "413", "422")},
+            },
+        }
+    }
+    paths["/api/v1/jobs/id/{id}"] = {
+        "get": {
+            "summary": "a job's state",
+            "responses": {
+                "200": {"description": job_doc},
+                "404": {
+                    "description": f"no such job: it expired (finished jobs are kept "
+                    f"{limits['job_max_age_s']:g} s, the last {limits['max_jobs']}) or "
+                    "never existed"
+                },
+            },
+        },
+        "delete": {
+            "summary": "cancel a job: queued, it never runs; running, its worker is ended",
+            "responses": {"200": {"description": job_doc}, "403": responses["403"]},
+        },
+    }
     return {
         "openapi": "3.1.0",
-        "info": {"title": "linecontact", "version": __version__},
+        "info": {
+            "title": "linecontact",
+            "version": __version__,
+            "description": limit_text,
+            "x-limits": limits,
+        },
         "paths": paths,
     }

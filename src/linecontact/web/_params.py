@@ -11,13 +11,22 @@ from __future__ import annotations
 
 import argparse
 import functools
+import math
 import re
 from collections.abc import Iterable
 from typing import Any
 
 from ..cli import COMMANDS as _CLI_COMMANDS
 
-__all__ = ["COMMANDS", "ParameterError", "argv_of", "parameters_of"]
+__all__ = [
+    "COMMANDS",
+    "MAX_POINTS",
+    "ParameterError",
+    "argv_of",
+    "parameters_of",
+    "points_of",
+    "sweep_hint",
+]
 
 #: The subcommands the API runs: those that compute and print records (not the figures, the
 #: citation, the sweeps or the server itself).
@@ -42,6 +51,24 @@ _NOT_PARAMETERS = frozenset(
         "--help",
     }
 )
+
+
+#: The most points one request may ask for: a larger study is a sweep (``linecontact sweep``).
+#: 10,000 points of ``normal`` are about 3 MB of JSON and half a second of one worker.
+MAX_POINTS = 10_000
+
+#: The commands ``linecontact sweep`` runs (the others run on the command line).
+_SWEPT = frozenset(
+    {"normal", "pulloff", "curve", "slide", "slide-init", "roll", "cycle", "push"}
+    | {"fit-adhesion", "fit-friction"}
+)
+
+#: Integer flags that set how many points a command computes, with their defaults (those of
+#: ``--quick`` second): ``curve``'s two branches add up, the map's grid multiplies.
+_COUNTS: dict[str, tuple[str, dict[str, tuple[int, int]]]] = {
+    "curve": ("sum", {"--num": (200, 200), "--num-noncontact": (40, 40)}),
+    "map": ("product", {"--n-mu": (17, 4), "--n-y": (81, 41)}),
+}
 
 
 #: A negative number (``-1``, ``-.5``, ``-1e-3``, ``-inf``): the only values that start with '-'.
@@ -142,3 +169,78 @@ def argv_of(command: str, items: Iterable[tuple[str, str]]) -> list[str]:
             raise ParameterError(name, f"{name} takes one value, got {len(vals)}")
         argv += [flag, *vals]
     return argv
+
+
+def points_of(command: str, argv: list[str]) -> tuple[int, str | None]:
+    """The number of points ``command argv`` asks for, estimated before it is computed.
+
+    The values of each flag that takes several, the ``NUM`` of a range (``--a-over-R-range
+    START STOP NUM``) and the counts of a curve (``--num``, ``--num-noncontact``) or a map
+    (``--n-mu`` times ``--n-y``), multiplied: an upper bound, as the command computes one
+    point per value (a value the command refuses counts one; the command says why).
+
+    Parameters
+    ----------
+    command : str
+        The subcommand.
+    argv : list of str
+        Its flags and values, as :func:`argv_of` gives them.
+
+    Returns
+    -------
+    points : int
+        The estimate.
+    parameter : str or None
+        The request parameter that asks for the most (None: no parameter asks for several).
+    """
+    actions = _actions(command)
+    given: dict[str, list[str]] = {}
+    current: str | None = None
+    for word in argv:
+        if word.startswith("--") and word in actions:
+            current = "--" + _name_of(actions[word]).replace("_", "-")
+            given.setdefault(current, [])
+        elif current is not None:
+            given[current].append(word)
+    factors: list[tuple[int, str]] = []
+    for flag, vals in given.items():
+        a = actions[flag]
+        name = _name_of(a)
+        if a.nargs == "+":
+            factors.append((len(vals), name))
+        elif a.nargs == 3 and a.dest.endswith("_range") and len(vals) == 3:
+            factors.append((_count(vals[2]), name))
+    how, counts = _COUNTS.get(command, ("product", {}))
+    if counts:
+        quick = "--quick" in given
+        values = []
+        for flag, (default, quick_default) in counts.items():
+            got = given.get(flag)
+            values.append((_count(got[-1]) if got else quick_default if quick else default, flag))
+        n = sum(v for v, _ in values) if how == "sum" else math.prod(v for v, _ in values)
+        flag = max(values)[1] if how == "product" else next(iter(counts))
+        factors.append((n, _name_of(actions[flag])))
+    total = math.prod(n for n, _ in factors)
+    if not factors or max(factors)[0] <= 1:
+        return total, None
+    return total, max(factors)[1]
+
+
+def _name_of(action: argparse.Action) -> str:
+    return [s for s in action.option_strings if s.startswith("--")][0][2:].replace("-", "_")
+
+
+def _count(value: str) -> int:
+    """A count as the command would read it (1 where it would refuse it)."""
+    try:
+        x = float(value)
+    except ValueError:
+        return 1
+    return max(1, int(x)) if math.isfinite(x) else 1
+
+
+def sweep_hint(command: str) -> str:
+    """Where a study larger than a request runs: a sweep, or the command line."""
+    if command in _SWEPT:
+        return f"a larger study is a sweep: `linecontact sweep {command} ...` (docs/sweeps.md)"
+    return f"a larger study runs on the command line: `linecontact {command} ...`"

@@ -379,9 +379,10 @@
   async function poll(id) {
     const r = await fetch("/api/v1/jobs/id/" + id);
     const doc = await r.json();
-    if (doc.state === "running") {
+    if (doc.state === "queued" || doc.state === "running") {
       const pr = doc.progress ? `${doc.progress.done}/${doc.progress.total} curves, ` : "";
-      $("status").textContent = `computing... ${pr}${doc.elapsed_s.toFixed(1)} s`;
+      const what = doc.state === "queued" ? "waiting for a worker..." : "computing...";
+      $("status").textContent = `${what} ${pr}${doc.elapsed_s.toFixed(1)} s`;
       job = setTimeout(() => poll(id), 500);
       return;
     }
