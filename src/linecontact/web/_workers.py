@@ -353,9 +353,20 @@ class Pool:
         self._slow = asyncio.Semaphore(self.size - 1)
         self._root = tempfile.mkdtemp(prefix="linecontact-web-")
         made = await asyncio.to_thread(lambda: [_Worker(self._ctx) for _ in range(self.size)])
-        for w in made:
-            self._workers.add(w)
+        self._workers.update(made)
+        for w in made:  # ready (linecontact imported) before the server says it is up
+            await self._ready(w)
             self._idle.put_nowait(w)
+
+    async def _ready(self, worker: _Worker) -> None:
+        """Wait for a new worker's imports (RuntimeError if it ends or never gets there)."""
+        if await _readable(worker.conn, _READY_TIMEOUT):
+            with contextlib.suppress(EOFError, OSError):
+                worker.conn.recv()
+                worker.ready = True
+                return
+        code = await asyncio.to_thread(_exitcode, worker)
+        raise RuntimeError(f"a worker did not start ({_reason(code)})")
 
     async def stop(self) -> None:
         """Stop the workers, those computing too, and remove the computations' directories."""
@@ -462,13 +473,10 @@ class Pool:
     ) -> Outcome:
         """Send the computation, hear its progress, and take its outcome."""
         if not worker.ready:  # a new worker: its imports are not the computation's time
-            if not await _readable(worker.conn, _READY_TIMEOUT):
-                raise _Died
             try:
-                worker.conn.recv()
-            except (EOFError, OSError):
+                await self._ready(worker)
+            except RuntimeError:
                 raise _Died from None
-            worker.ready = True
         try:
             worker.conn.send((command, argv, workdir, self.max_result_bytes))
         except (BrokenPipeError, OSError):
