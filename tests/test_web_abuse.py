@@ -526,3 +526,30 @@ def test_a_million_points_are_refused_on_the_wire(server):
         assert exc.code == 413 and "1,000,000 points" in doc["error"]["message"]
     else:
         raise AssertionError("a million points were computed")
+
+
+@pytest.mark.parametrize(
+    "request_bytes",
+    [
+        b"GET /api/v1/normal?F_over_Eh=" + b"1," * 50000 + b"1 HTTP/1.1\r\nHost: 127.0.0.1\r\n\r\n",
+        b"GARBAGE\r\n\r\n",
+        b"POST /api/v1/pulloff HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Length: x\r\n\r\n",
+    ],
+    ids=["a URL over 16 KiB", "no request line", "a Content-Length that is no number"],
+)
+def test_a_request_http_cannot_parse_is_a_json_400(server, request_bytes):
+    host, port = server.removeprefix("http://").split(":")
+    with socket.create_connection((host, int(port)), timeout=60) as s:
+        s.sendall(request_bytes)
+        data = b""
+        while chunk := s.recv(65536):
+            data += chunk
+    head, _, body = data.partition(b"\r\n\r\n")
+    assert b"content-type: application/json" in head.lower()
+    assert b"x-frame-options: deny" in head.lower()
+    message = json.loads(body)["error"]["message"]
+    if head.startswith(b"HTTP/1.1 413"):  # the long URL read at once: its 50,001 points
+        assert b"F_over_Eh" in request_bytes and "50,001 points" in message
+    else:
+        assert head.startswith(b"HTTP/1.1 400"), head
+        assert message.startswith("a malformed HTTP request")

@@ -47,6 +47,7 @@ def _cmd_serve(args: argparse.Namespace) -> int:
         import uvicorn
 
         from ..web import create_app
+        from ..web._http import JSONErrorsH11Protocol
         from ..web._workers import max_workers
     except ImportError as exc:
         raise ImportError(
@@ -78,7 +79,7 @@ def _cmd_serve(args: argparse.Namespace) -> int:
             if not self.should_exit:
                 print(f"linecontact serve: {url} (Ctrl-C stops it)", file=sys.stderr, flush=True)
 
-    config = uvicorn.Config(app, log_level="warning")
+    config = uvicorn.Config(app, log_level="warning", http=JSONErrorsH11Protocol)
     try:
         Server(config).run(sockets=[sock])
     finally:
