@@ -34,7 +34,6 @@ def _bind(host: str, port: int) -> socket.socket:
         sock.close()
         why = getattr(exc, "strerror", None) or str(exc)
         raise ValueError(f"--host {host} --port {port}: cannot listen there ({why})") from None
-    sock.set_inheritable(True)
     return sock
 
 
@@ -110,7 +109,7 @@ def register(sub: Any) -> None:
         type=int,
         default=2,
         help="worker processes, from 2 to twice the CPUs (at least 4): the computations are "
-        "CPU-bound, more would only share the cores, and each takes about 100 MB",
+        "CPU-bound, more would only share the cores, and each takes 50 to 200 MB",
     )
     sv.add_argument(
         "--time-limit", type=float, default=60.0, metavar="S", help="seconds per computation"
