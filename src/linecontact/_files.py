@@ -145,7 +145,8 @@ def atomic_file(
     ValueError
         If ``path`` is not a regular file (or a new name).
     OSError
-        If the file cannot be written; the temporary file is removed.
+        If the file cannot be written (its ``filename`` the path); the temporary file is
+        removed.
     """
     target = regular_target(path, name)
     directory = os.path.dirname(os.path.abspath(target))
@@ -158,7 +159,10 @@ def atomic_file(
             os.fsync(fh.fileno())
         os.chmod(tmp, new_file_mode(target))  # mkstemp made it 0600
         os.replace(tmp, target)
-    except BaseException:
+    except BaseException as exc:
         with contextlib.suppress(OSError):
             os.unlink(tmp)
+        if isinstance(exc, OSError) and exc.filename is None and exc.errno is not None:
+            # a failed write (a full disk) says which file it was writing
+            raise OSError(exc.errno, exc.strerror, target) from exc
         raise

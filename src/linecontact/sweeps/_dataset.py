@@ -23,7 +23,7 @@ from .._fingerprint import code_identity
 from .._version import __version__
 from ._block import TEXT, to_text
 from ._plan import Plan, blocks
-from ._store import Partial, format_of, need
+from ._store import Partial, format_of, need, real_output
 
 __all__ = ["JSON_ATTRS", "build", "open_sweep", "write"]
 
@@ -163,25 +163,29 @@ def write(ds: Any, output: str | os.PathLike[str], overwrite: bool) -> None:
     import dask
 
     fmt = format_of(output)
-    out = Path(output)
+    out = Path(real_output(output))  # a link to a store: the store is replaced, not the link
     enc = ds.chunk(_store_chunks(ds)) if ds.chunks else ds.copy()
     enc.attrs = {k: json.dumps(v) if k in JSON_ATTRS else v for k, v in ds.attrs.items()}
     tmp = Path(tempfile.mkdtemp(prefix=f".{out.name}.tmp-", dir=out.parent))
     target = tmp / out.name
     try:
         threads = min(4, os.cpu_count() or 1)  # a few blocks at a time: bounded memory
-        with dask.config.set(scheduler="threads", num_workers=threads):
-            if fmt == "zarr":
-                enc.to_zarr(target, mode="w", consolidated=False)
-            else:
-                enc.to_netcdf(target, engine=_netcdf_engine())
+        try:
+            with dask.config.set(scheduler="threads", num_workers=threads):
+                if fmt == "zarr":
+                    enc.to_zarr(target, mode="w", consolidated=False)
+                else:
+                    enc.to_netcdf(target, engine=_netcdf_engine())
+        except OSError as exc:
+            if exc.filename is None and exc.errno is not None:
+                raise OSError(exc.errno, exc.strerror, str(out)) from exc
+            raise
         if out.exists():
             if not overwrite:
                 raise ValueError(f"-o/--output {str(out)!r} exists: give --overwrite to replace it")
-            if out.is_dir() and not out.is_symlink():
-                shutil.rmtree(out)
-            else:
-                out.unlink()
+            if out.is_dir():  # a Zarr store: moved aside, the new one moved in, the old removed
+                old = tmp / f"{out.name}.old"
+                os.replace(out, old)
         os.replace(target, out)
     finally:
         shutil.rmtree(tmp, ignore_errors=True)

@@ -15,6 +15,7 @@ import os
 import re
 import shutil
 import socket
+import stat
 import threading
 import warnings
 from collections.abc import Iterator
@@ -24,21 +25,41 @@ from typing import Any
 import numpy as np
 
 from .. import errors as _errors
+from .._files import file_kind, regular_target
 from .._fingerprint import code_digest
 from .._progress import progress_bar
 from ._block import Block, call
 from ._dataset import build, open_sweep, write
 from ._plan import Plan, blocks
 from ._points import evaluate
-from ._store import Partial, format_of, need, store_identity, store_key
+from ._store import Partial, format_of, need, real_output, store_identity, store_key
 
 __all__ = ["run"]
 
 
 def _check_output(output: str | os.PathLike[str]) -> None:
+    """Refuse an output that is not a store's kind of path, or cannot be written.
+
+    A netCDF store is a regular file and a Zarr store a directory: anything else at the path
+    (a FIFO, a device, a socket, a file for ``.zarr``) is refused before it is opened; a
+    symbolic link is followed (the store is written where it points).
+    """
     fmt = format_of(output)
     need("zarr" if fmt == "zarr" else "netCDF4")
-    parent = Path(output).absolute().parent
+    real = real_output(output)
+    try:
+        st = os.stat(real)
+    except OSError:
+        st = None
+    if st is not None:
+        if fmt == "netcdf":
+            regular_target(real, "-o/--output")
+        elif not stat.S_ISDIR(st.st_mode):
+            raise ValueError(
+                f"-o/--output {str(output)!r} is {file_kind(st.st_mode)}, not a Zarr store (a "
+                "directory): linecontact replaces only a sweep's store (give another path)"
+            )
+    parent = Path(real).absolute().parent
     if not parent.is_dir():
         raise ValueError(
             f"cannot write -o/--output {str(output)!r}: {str(parent)!r} is no directory"

@@ -21,6 +21,7 @@ import contextlib
 import json
 import os
 import shutil
+import stat
 import warnings
 from collections.abc import Iterator
 from pathlib import Path
@@ -38,7 +39,7 @@ try:  # POSIX
 except ImportError:  # pragma: no cover - Windows: no lock, one writer is the user's care
     fcntl = None  # type: ignore[assignment]
 
-__all__ = ["FORMATS", "Partial", "format_of", "need", "store_identity", "store_key"]
+__all__ = ["FORMATS", "Partial", "format_of", "need", "real_output", "store_identity", "store_key"]
 
 #: The store formats, by the extension of ``-o``.
 FORMATS = {".zarr": "zarr", ".nc": "netcdf", ".nc4": "netcdf"}
@@ -68,10 +69,22 @@ def format_of(path: str | os.PathLike[str]) -> str:
     return FORMATS[ext]
 
 
+def real_output(path: str | os.PathLike[str]) -> str:
+    """The path a store at ``path`` is written to: ``path``, or where its link points."""
+    given = os.fspath(path)
+    return os.path.realpath(given) if os.path.islink(given) else given
+
+
 def _store_attrs(path: str | os.PathLike[str]) -> dict[str, Any] | None:
     """The attributes of a finished store at ``path`` (None: not a store of a sweep)."""
     import xarray as xr
 
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        return None
+    if not (stat.S_ISDIR(mode) if format_of(path) == "zarr" else stat.S_ISREG(mode)):
+        return None  # never opened: a FIFO would block the reader
     try:
         if format_of(path) == "zarr":
             ds = xr.open_zarr(path, consolidated=False)
