@@ -156,17 +156,18 @@ def strict_json(text):
         # the validated domain said in SI units and flags (E h = 50 N/m, R = 50 nm)
         (
             ["normal", *SI0, "--h", "0.5e-9", "--half-width", "1e-3"],
-            r"--half-width must be in \[5e-158, 5e-07\] m \(a_over_R in \[1e-150, 10\]\), "
-            r"got 0\.001$",
+            r"--half-width must be in \[5e-158, 5e-07\] m \(1e-150 to 10 radii, the domain of "
+            r"the solvers\), got 0\.001$",
         ),
         (
             ["normal", *SI0, "--h", "0.5e-9", "--load", "1e20"],
-            r"--load must be in \[-5e\+13, 5e\+13\] N/m \(F_over_Eh in \[-1e\+12, 1e\+12\]\)",
+            r"--load must be in \[-5e\+13, 5e\+13\] N/m \(-1e\+12 to 1e\+12 times the modulus "
+            r"times the adhesion range, the domain of the solvers\)",
         ),
         (
             ["normal", *SI0, "--h", "0.5e-9", "--load", "1", "1e6"],
             r"--load=1000000\.0 N/m needs a contact of half-width 7\.979\d*e-07 m, 15\.958\d* "
-            r"radii: beyond the domain of the solvers \(a_over_R <= 10\)$",
+            r"radii: beyond the domain of the solvers \(at most 10 radii\)$",
         ),
         (
             ["normal", *SI0, "--h", "1e-21", "--load", "1"],
@@ -175,7 +176,8 @@ def strict_json(text):
         ),
         (
             ["slide", *SI0, "--h2", "0.5e-9", "--h1", "1e-20", "--half-width", "1e-9"],
-            r"--h1 must be in \[5e-13, 5e-07\] m \(h1_over_h2 in \[0\.001, 1000\]\)",
+            r"--h1 must be in \[5e-13, 5e-07\] m \(0\.001 to 1000 times the adhesion range, "
+            r"the domain of the solvers\)",
         ),
         (
             [
@@ -190,11 +192,11 @@ def strict_json(text):
                 "--half-width",
                 "1e-9",
             ],
-            r"--tau0 must be in \[0, 1e\+11\] Pa \(tau0_over_E in \[0, 1\]\)",
+            r"--tau0 must be in \[0, 1e\+11\] Pa \(0 to 1 times the modulus, the domain",
         ),
         (
             ["slide", *SI0, "--h2", "0.5e-9", "--h1", "5e-10", "--half-width", "1e-3"],
-            r"--half-width must be in \[5e-28, 5e-07\] m \(a_over_R in \[1e-20, 10\]\)",
+            r"--half-width must be in \[5e-28, 5e-07\] m \(1e-20 to 10 radii, the domain",
         ),
         (
             ["slide", *SI0, "--h2", "0.5e-9", "--h1", "5e-10", "--load", "1e7"],
@@ -202,14 +204,15 @@ def strict_json(text):
         ),
         (
             ["roll", *SI0, "--h", "0.5e-9", "--load", "1", "--tau0", "1e13", "--d-over-a", "0.1"],
-            r"--tau0 must be in \[0\.1, 1e\+11\] Pa \(tau0_over_E in \[1e-12, 1\]\)",
+            r"--tau0 must be in \[0\.1, 1e\+11\] Pa \(1e-12 to 1 times the modulus, the domain",
         ),
         (
             [
                 *["roll", *SI0, "--h", "0.5e-9", "--load", "1", "--tau0", "1e8"],
                 *["--tangential-load", "1e40"],
             ],
-            r"--tangential-load must be in \[0, [0-9.e+]+\] N/m \(T_over_Ea in \[0, 1e\+12\]\)",
+            r"--tangential-load must be in \[0, [0-9.e+]+\] N/m \(0 to 1e\+12 times the modulus "
+            r"times the contact half-width, the domain of the solvers\)",
         ),
     ],
 )

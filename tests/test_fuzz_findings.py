@@ -32,7 +32,7 @@ def test_sliding_contact_for_tiny_loads_without_adhesion_is_hertz(F):
     # F = 1e-300 came back as a contact carrying 3.5e-16 (the bracket stopped at abar = 1e-9)
     a_hertz = math.sqrt(4 * F / (math.pi * 1e-3))  # F/(E h) = (pi/4)(R/h)(a/R)^2
     if a_hertz < 1e-20:
-        with pytest.raises(ValueError, match=r"needs a contact of half-width a_over_R = "):
+        with pytest.raises(ValueError, match=r"needs a contact of half-width [0-9.e+-]+ radii, "):
             lc.sliding_contact_for_load(F, 1e-3, 2.0, 0.0, method="closed-form")
         return
     r = lc.sliding_contact_for_load(F, 1e-3, 2.0, 0.0, method="closed-form")
@@ -54,7 +54,7 @@ def test_sliding_contact_at_the_zero_width_pull_off_force():
 
 def test_a_load_whose_sliding_contact_is_narrower_than_the_domain_is_refused():
     # sigma0/E = 1e-300: F = 0 needs a ~ 1e-300 R
-    with pytest.raises(ValueError, match=r"a_over_R < 1e-20, below the domain of the solvers"):
+    with pytest.raises(ValueError, match=r"below 1e-20 radii, below the domain of the solvers"):
         lc.sliding_contact_for_load(0.0, 1e-3, 1e-3, 1e-300)
 
 

@@ -303,7 +303,7 @@ def test_the_monte_carlo_survives_failing_draws_in_a_few_calls():
         ),
         (
             lambda: inv.shear_strength_from_friction(0.2, 1e8, 50e-9, 50e9, W, Z0),
-            "wider than the solvers. domain",
+            r"radii at radius=5e-08 m: beyond the domain of the solvers \(at most 10 radii\)",
         ),
         (
             lambda: inv.shear_strength_from_friction(

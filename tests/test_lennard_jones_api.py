@@ -460,7 +460,12 @@ def test_cli_normal_lennard_jones_reports_a_load_below_the_pull_off(capsys):
 @pytest.mark.parametrize(
     ("argv", "code_", "words"),
     [
-        (["curve", "--R-over-h", "100", "--sigma0-over-E", repr(SIG_BAD), "--law", LJ], 2, "mu="),
+        # the Lennard-Jones group said in the flags typed (no mu on the command line)
+        (
+            ["curve", "--R-over-h", "100", "--sigma0-over-E", repr(SIG_BAD), "--law", LJ],
+            2,
+            "--sigma0-over-E sqrt(--R-over-h) / 1.04 = ",
+        ),
         (["curve", "--R-over-h", "100", "--sigma0-over-E", "0", "--law", LJ], 2, "> 0"),
         (["curve", "--R-over-h", "100", "--sigma0-over-E", "0.01", "--law", "lj"], 2, "--law"),
         (

@@ -603,14 +603,16 @@ BAD_SI = [
     # tau0 in [0.1, 1e11] Pa)
     (
         dict(friction_stress=1e12),
-        r"friction_stress must be in \[0\.1, 1e\+11\] Pa \(tau0_over_E in \[1e-12, 1\]\), "
+        r"friction_stress must be in \[0\.1, 1e\+11\] Pa \(1e-12 to 1 times the modulus, the "
+        r"domain of the solvers\), "
         r"got 1000000000000\.0",
     ),
     (dict(friction_stress=1e-3), r"friction_stress must be in \[0\.1, 1e\+11\] Pa"),
     (dict(friction_coefficient=1e3), r"friction_coefficient must be in \[1e-06, 100\], got 1000"),
     (
         dict(friction_stress=1e8, tangential_load=1e30),
-        r"tangential_load must be in \[0, [0-9.e+]+\] N/m \(T_over_Ea in \[0, 1e\+12\]\), "
+        r"tangential_load must be in \[0, [0-9.e+]+\] N/m \(0 to 1e\+12 times the modulus times "
+        r"the contact half-width, the domain of the solvers\), "
         r"got 1e\+30",
     ),
 ]

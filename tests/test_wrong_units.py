@@ -190,7 +190,8 @@ NAMES = {
 #: ... and those of the fields of a Cylinder built directly, from (sigma0, h).
 BY_STRESS = {
     "equilibrium_spacing": ("adhesion_range",),
-    "work_of_adhesion": ("work_of_adhesion", "cohesive_stress"),
+    # sigma0 h: said as the product of the fields (no work of adhesion was given)
+    "work_of_adhesion": ("work_of_adhesion", "cohesive_stress", "adhesion_range"),
 }
 
 CASES = [
@@ -281,12 +282,13 @@ def test_the_lennard_jones_domain_is_said_for_the_wire_given():
         cyl.lennard_jones_contact(load=0.1)
     message = str(exc.value)
     assert message.startswith(
-        "under the Lennard-Jones law the Maugis parameter mu = w R^(1/2) / (E z0^(3/2)) "
-        "of this cylinder is 962.3 (radius=1e-06 m, modulus=20000000.0 Pa, "
-        "work_of_adhesion=0.1 J/m^2, equilibrium_spacing=3e-10 m): the Lennard-Jones "
-        "solver takes mu in [0, 400] for contacts and load curves"
+        "under the Lennard-Jones law w R^(1/2) / (E z0^(3/2)) of this cylinder is 962.3 "
+        "(radius=1e-06 m, modulus=20000000.0 Pa, work_of_adhesion=0.1 J/m^2, "
+        "equilibrium_spacing=3e-10 m): the Lennard-Jones solver takes it up to 400 for "
+        "contacts and load curves"
     ), message
-    assert "the pull-off at every mu" in message and "law='dugdale'" in message
+    assert "the pull-off at any value" in message and "law='dugdale'" in message
+    assert not re.search(r"\bmu\b", message), message
     assert "a radius below 1.73e-07 m" in message and "a modulus above 4.81e+07 Pa" in message
     assert not GROUPS.search(message)
     # the pull-off itself is answered: the corrected JKR limit
@@ -430,12 +432,12 @@ def test_cli_lennard_jones_contact_outside_its_domain(capsys):
     )
     assert code == 2
     assert err.startswith(
-        "linecontact normal: error: under the Lennard-Jones law the Maugis parameter mu = w "
-        "R^(1/2) / (E z0^(3/2)) of this cylinder is 962.3 (--radius=1e-06 m, "
-        "--modulus=20000000.0 Pa, --work-of-adhesion=0.1 J/m^2, --z0=3e-10 m): the "
-        "Lennard-Jones solver takes mu in [0, 400] for contacts and load curves"
+        "linecontact normal: error: under the Lennard-Jones law w R^(1/2) / (E z0^(3/2)) of "
+        "this cylinder is 962.3 (--radius=1e-06 m, --modulus=20000000.0 Pa, "
+        "--work-of-adhesion=0.1 J/m^2, --z0=3e-10 m): the Lennard-Jones solver takes it up "
+        "to 400 for contacts and load curves"
     ), err
-    assert "Use the Dugdale law (--law dugdale, any mu)" in err
+    assert "Use the Dugdale law (--law dugdale, any value)" in err
     assert "R_over_h" not in err and "sigma0_over_E" not in err and err.count("\n") == 1
 
 

@@ -20,7 +20,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ._validation import check_array, first_point
 
-__all__ = ["DOMAIN", "TooWideError", "check", "check_si", "check_widths", "scalar"]
+__all__ = ["DOMAIN", "SCALE_WORDS", "TooWideError", "check", "check_si", "check_widths", "scalar"]
 
 #: name -> (low, low inclusive, high, high inclusive)
 DOMAIN: dict[str, tuple[float, bool, float, bool]] = {
@@ -77,8 +77,8 @@ class TooWideError(ValueError):
 
     Mostly a contact wider than ``a/R = 10``; for steady sliding also one narrower than
     ``a/R = 1e-20``. ``index``, ``a_over_R`` and ``limit`` (``"beyond the domain of the
-    solvers (a_over_R <= 10)"``) say which point, how wide and which bound, so that the SI
-    layer can say it in its own units.
+    solvers (at most 10 radii)"``) say which point, how wide and which bound, in words that
+    name no group, so that the SI layer can say it in its own units.
     """
 
     def __init__(self, message: str, index: int, a_over_R: float, limit: str = "") -> None:
@@ -92,20 +92,21 @@ def check_widths(A, F, F_name: str, key: str = "a_over_R", narrow: bool = False)
     """Refuse the loads whose contact half-width lies outside the domain of ``key``.
 
     Wider than its upper end always; narrower than its lower end with ``narrow`` (where the
-    state at the width is then computed by a solver validated only down to that end).
+    state at the width is then computed by a solver validated only down to that end). The
+    message says the width in radii (``12.5 radii``, ``at most 10 radii``).
     """
     a_min, _, a_max, _ = DOMAIN[key]
     with np.errstate(invalid="ignore"):
         over = np.asarray(A > a_max)
         under = np.asarray(A < a_min) if narrow else np.zeros_like(over)
     for bad, limit in (
-        (over, f"beyond the domain of the solvers (a_over_R <= {a_max:g})"),
-        (under, f"below the domain of the solvers (a_over_R >= {a_min:g})"),
+        (over, f"beyond the domain of the solvers (at most {a_max:g} radii)"),
+        (under, f"below the domain of the solvers (at least {a_min:g} radii)"),
     ):
         if np.any(bad):
             i, at = first_point(bad, F=F, A=A)
             Fi, Ai = at["F"], at["A"]
-            width = f"a_over_R = {Ai:.6g}" if Ai > 0 else f"a_over_R < {a_min:g}"
+            width = f"{Ai:.6g} radii" if Ai > 0 else f"below {a_min:g} radii"
             raise TooWideError(
                 f"{F_name}={Fi!r} needs a contact of half-width {width}, {limit}",
                 i,
@@ -114,12 +115,49 @@ def check_widths(A, F, F_name: str, key: str = "a_over_R", narrow: bool = False)
             )
 
 
-def check_si(name: str, value: ArrayLike, unit_value: ArrayLike, key: str, unit: str) -> None:
+#: What the unit of each group is, in words (:func:`check_si`): the SI range of a value is
+#: the group's range times this. No group is named: the message is for SI inputs.
+SCALE_WORDS: dict[str, str] = {
+    "a_over_R": "radii",
+    "sliding_a_over_R": "radii",
+    "a_max_over_R": "radii",
+    "F_over_Eh": "times the modulus times the adhesion range",
+    "F_over_Eh2": "times the modulus times the adhesion range",
+    "tau0_over_E": "times the modulus",
+    "friction_tau0_over_E": "times the modulus",
+    "T_over_Ea": "times the modulus times the contact half-width",
+    "T_over_muF": "times the friction coefficient times the normal load",
+    "h1_over_h2": "times the adhesion range",
+}
+
+
+def check_si(
+    name: str,
+    value: ArrayLike,
+    unit_value: ArrayLike,
+    key: str,
+    unit: str,
+    scale: str | None = None,
+) -> None:
     """Refuse SI values whose group ``value/unit_value`` lies outside the domain of ``key``.
 
-    The message names the SI parameter and its range in SI units at that point, and the
-    group, e.g. ``contact_half_width must be in [5e-158, 5e-07] m (a_over_R in [1e-150,
-    10]), got 1e-06``.
+    The message names the SI parameter ``name`` and its range in SI units at that point,
+    and says the range relative to the other inputs in words (:data:`SCALE_WORDS`, or
+    ``scale``), never the group: ``contact_half_width must be in [5e-158, 5e-07] m (1e-150
+    to 10 radii, the domain of the solvers), got 1e-06``.
+
+    Parameters
+    ----------
+    name : str
+        The parameter (or flag) as the caller knows it.
+    value, unit_value : array_like
+        The SI values and the unit of the group at each (broadcast together).
+    key : str
+        The entry of :data:`DOMAIN`.
+    unit : str
+        The SI unit of ``value`` (``"m"``, ``"N/m"``, ``"Pa"``).
+    scale : str, optional
+        What ``unit_value`` is, in words (default: :data:`SCALE_WORDS` of ``key``).
     """
     v, u = np.broadcast_arrays(np.asarray(value, float), np.asarray(unit_value, float))
     low, lo_inc, high, hi_inc = DOMAIN[key]
@@ -130,8 +168,8 @@ def check_si(name: str, value: ArrayLike, unit_value: ArrayLike, key: str, unit:
         _, at = first_point(bad, v=v, u=u)
         ui = at["u"]
         lo_br, hi_br = "[" if lo_inc else "(", "]" if hi_inc else ")"
-        group = key.removeprefix("sliding_").removeprefix("friction_")  # as the API names it
+        words = SCALE_WORDS[key] if scale is None else scale
         raise ValueError(
-            f"{name} must be in {lo_br}{low * ui:.6g}, {high * ui:.6g}{hi_br} {unit} ({group} in "
-            f"{lo_br}{low:g}, {high:g}{hi_br}), got {at['v']!r}"
+            f"{name} must be in {lo_br}{low * ui:.6g}, {high * ui:.6g}{hi_br} {unit} ({low:g} "
+            f"to {high:g} {words}, the domain of the solvers), got {at['v']!r}"
         )

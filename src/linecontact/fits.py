@@ -29,7 +29,7 @@ from . import closed_forms as _cf
 from . import normal as _normal
 from ._least_squares import _refit_rows, _solve
 from ._progress import progress_bar
-from ._validation import broadcast, check_array, first_point
+from ._validation import broadcast, check_array, first_point, point_text
 from .cylinder import _check_cylinder_si, _plausible
 from .materials import MAUGIS_STRENGTH
 from .results import Result
@@ -94,7 +94,24 @@ def jkr_pull_off_force(radius: ArrayLike, modulus: ArrayLike, work_of_adhesion: 
     w = check_array("work_of_adhesion", work_of_adhesion)
     for name, v in (("radius", R), ("modulus", E), ("work_of_adhesion", w)):
         _plausible(name, v)
-    return _jkr_pull_off_si(R, E, w)
+    with np.errstate(over="ignore", under="ignore", invalid="ignore"):
+        F = _jkr_pull_off_si(R, E, w)
+    return _finite_force(F, radius=R, modulus=E, work_of_adhesion=w)
+
+
+def _finite_force(F: Any, **inputs: NDArray) -> Any:
+    """``F`` [N/m], refused where inputs far out of scale left the floating-point range.
+
+    The message names the inputs at the first such point (the likely slip of units).
+    """
+    bad = ~np.isfinite(F)
+    if np.any(bad):
+        _, at = first_point(bad, **inputs)
+        raise ValueError(
+            f"the pull-off force of {point_text(at)} is beyond the floating-point range: is an "
+            "input in the wrong units (m, Pa, J/m^2)?"
+        )
+    return F
 
 
 def _jkr_pull_off_si(R, E, w):
@@ -122,7 +139,9 @@ def dmt_pull_off_force(
     for name, v in (("radius", R), ("work_of_adhesion", w)):
         _plausible(name, v)
     _plausible("equilibrium_spacing", z0, key="adhesion_range")
-    return _dmt_pull_off_si(R, w, z0)
+    with np.errstate(over="ignore", under="ignore", invalid="ignore", divide="ignore"):
+        F = _dmt_pull_off_si(R, w, z0)
+    return _finite_force(F, radius=R, work_of_adhesion=w, equilibrium_spacing=z0)
 
 
 def simple_model_work_of_adhesion(
@@ -251,7 +270,7 @@ def _work_from_pull_off(
     if np.any(bad) and unreachable == "nan":  # for propagate: nan where no w reaches
         Fm = np.where(bad, 0.5 * (F_lo + F_hi), F)
         w = _bisect_log(lambda w: Fm - pull_off_force_at(R, E, w, z0), w_lo, w_hi, rtol)
-        return np.where(bad, np.nan, w)
+        return _work_in_domain(np.where(bad, np.nan, w), "nan", E, "N/m", pull_off_force=F)
     if np.any(bad):
         _, at = first_point(bad, F=F, R=R, E=E, z0=z0, lo=F_lo, hi=F_hi)
         raise ValueError(
@@ -259,10 +278,38 @@ def _work_from_pull_off(
             f"adhesion at radius={at['R']!r} m, modulus="
             f"{at['E']!r} Pa, equilibrium_spacing={at['z0']!r}"
             f" m: the reachable pull-off forces are ({at['lo']:.6g}, "
-            f"{at['hi']:.6g}) N/m (sigma0/E from {_S_MIN:g} to {_S_MAX:g})"
+            f"{at['hi']:.6g}) N/m (an adhesive stress from {_S_MIN:g} to {_S_MAX:g} times the "
+            "modulus)"
         )
     # the pull-off force falls (grows in magnitude) with w
-    return _bisect_log(lambda w: F - pull_off_force_at(R, E, w, z0), w_lo, w_hi, rtol)
+    w = _bisect_log(lambda w: F - pull_off_force_at(R, E, w, z0), w_lo, w_hi, rtol)
+    return _work_in_domain(w, unreachable, E, "N/m", pull_off_force=F)
+
+
+def _work_in_domain(
+    w: NDArray, unreachable: Literal["raise", "nan"], E: NDArray, unit: str, **given: NDArray
+) -> NDArray:
+    """``w`` [J/m^2] inside the domain of the work of adhesion (nan, or a ValueError, beyond).
+
+    A modulus far out of scale (1e300 Pa) moves every reachable ``w`` with it: the work of
+    adhesion found is then refused in J/m^2, with the measurement that needs it and the
+    modulus (the likely slip of units), not left to overflow later.
+    """
+    from .domain import DOMAIN
+
+    hi = DOMAIN["work_of_adhesion"][2]
+    bad = ~(w <= hi)
+    if not np.any(bad):
+        return w
+    if unreachable == "nan":
+        return np.where(bad, np.nan, w)
+    name = next(iter(given))
+    _, at = first_point(bad, w=w, v=given[name], E=E)
+    raise ValueError(
+        f"{name}={at['v']!r} {unit} needs a work of adhesion of {at['w']:.3g} J/m^2 at modulus="
+        f"{at['E']!r} Pa, beyond the domain of the solvers (at most {hi:g} J/m^2): is the "
+        "modulus in Pa?"
+    )
 
 
 def pull_off_force_at(R, E, w, z0):
@@ -754,9 +801,12 @@ def fit_shear_strength(
     ``f``, ``F``, ``f_sd`` are the friction forces, normal loads and the friction forces'
     standard uncertainties [N/m]; ``shared_sd`` the standard uncertainties of ``common``.
     """
-    wt = 1 / f_sd**2 if np.all(f_sd > 0) else np.ones_like(f)
+    # the weights 1/sd^2 relative to the largest (the mean is the same; 1e-300 N/m squared
+    # would underflow), the sums over tau/scale (tau near the float range would overflow)
+    wt = (np.min(f_sd) / f_sd) ** 2 if np.all(f_sd > 0) else np.ones_like(f)
     tau = np.asarray(fn(f, F, **common), float)
-    value = float(np.sum(wt * tau) / np.sum(wt))
+    scale = float(np.max(np.abs(tau))) or 1.0
+    value = scale * float(np.sum(wt * (tau / scale)) / np.sum(wt))
     if not (np.any(f_sd > 0) or any(shared_sd.values())):
         return ShearStrengthFit(value, 0.0, (value, value), math.nan)
     rng = np.random.default_rng(seed + 7919)
@@ -780,7 +830,8 @@ def fit_shear_strength(
                 rows(idx[idx.size // 2 :])
 
     rows(np.flatnonzero(ok))
-    comb = np.sum(wt * taus, axis=1) / np.sum(wt)
+    with np.errstate(over="ignore", invalid="ignore"):  # a draw beyond the range: dropped
+        comb = scale * (np.sum(wt * (taus / scale), axis=1) / np.sum(wt))
     comb = comb[np.isfinite(comb)]
     if comb.size < 2:
         return ShearStrengthFit(value, math.nan, (math.nan, math.nan), math.nan)
@@ -791,7 +842,8 @@ def fit_shear_strength(
     birge = math.nan
     if f.size > 1 and np.all(f_sd > 0):
         sd_i = tau * f_sd / f
-        birge = float(np.sum(((tau - value) / sd_i) ** 2) / (f.size - 1))
+        with np.errstate(over="ignore"):  # a scatter far beyond the uncertainties: inf
+            birge = float(np.sum(((tau - value) / sd_i) ** 2) / (f.size - 1))
         if birge > 1:
             g = math.sqrt(birge)
             sd, lo, hi = sd * g, value - g * (value - lo), value + g * (hi - value)

@@ -46,6 +46,7 @@ from .fits import (
     ShearStrengthFit,
     _bisect_log,
     _groups,
+    _work_in_domain,
     dmt_pull_off_force,
     fit_pull_off,
     fit_shear_strength,
@@ -128,6 +129,7 @@ def _work_from_width(
     _check_cylinder_si(
         R, E, {"work_of_adhesion": None, "equilibrium_spacing": z0}, stacklevel=stacklevel
     )
+    _check_load("normal_load", F, E, z0)
     _warn_widths(a, R, "the half_width measured", stacklevel=stacklevel - 1)
 
     def width(w):
@@ -158,7 +160,7 @@ def _work_from_width(
     got = width(w)
     off = ~(np.abs(got - a) <= 1e-6 * a)
     if nan_mode:
-        return np.where(bad | off, np.nan, w)
+        return _work_in_domain(np.where(bad | off, np.nan, w), "nan", E, "m", half_width=a)
     if np.any(off):
         _, at = first_point(off, a=a, F=F, got=got)
         raise ValueError(
@@ -167,7 +169,7 @@ def _work_from_width(
             f"narrowest stable contact carrying this load is {at['got']:.6g} m "
             "wide (at its pull-off)"
         )
-    return w
+    return _work_in_domain(w, "raise", E, "m", half_width=a)
 
 
 def _stable_width(F, R, E, w, z0, *, too_wide=None, pulled_off=np.nan):
@@ -185,15 +187,17 @@ def _stable_width(F, R, E, w, z0, *, too_wide=None, pulled_off=np.nan):
         c = _normal.contact_for_load(F_ / (E_ * h_), rho_, s_, on_failure="report")
         return np.asarray(c.a_over_R, float)
 
+    _check_load("normal_load", F, E, z0)
     try:
         A = one(F, rho, s, E, h)
     except TooWideError as e:
         if too_wide is None:
             i = e.index
+            Ri = float(np.reshape(R, -1)[i])
             raise ValueError(
-                f"normal_load={float(np.reshape(F, -1)[i])!r} N/m needs a contact wider than "
-                f"the solvers' domain ({e.limit}): a/R = {e.a_over_R:.6g} at radius="
-                f"{float(np.reshape(R, -1)[i])!r} m"
+                f"normal_load={float(np.reshape(F, -1)[i])!r} N/m needs a contact of "
+                f"half-width {e.a_over_R * Ri:.6g} m, {e.a_over_R:.6g} radii at radius="
+                f"{Ri!r} m: {e.limit}"
             ) from None
         A = np.empty(np.shape(F))
         for i in np.ndindex(np.shape(F)):
@@ -203,6 +207,26 @@ def _stable_width(F, R, E, w, z0, *, too_wide=None, pulled_off=np.nan):
                 A[i] = np.inf
     aw = A * R
     return np.where(np.isnan(aw), pulled_off, np.where(np.isinf(A), too_wide or 0.0, aw))
+
+
+def _check_load(name: str, F: NDArray, E: NDArray, z0: NDArray, key: str = "F_over_Eh") -> None:
+    """Refuse normal loads [N/m] beyond the solvers' domain, said in N/m (not as a group).
+
+    The unit of the loads is the modulus times the adhesion range ``h = z0/S`` of the Maugis
+    convention (0.974 ``z0``).
+    """
+    from .domain import check_si
+
+    with np.errstate(over="ignore", under="ignore"):
+        unit = E * (z0 / S_LJ)
+    check_si(
+        name,
+        F,
+        unit,
+        key,
+        "N/m",
+        "times the modulus times the adhesion range (0.974 times the equilibrium spacing)",
+    )
 
 
 def _hertz_width(F, R, E):
@@ -285,9 +309,20 @@ def shear_strength_from_friction(
                 "the hysteresis is not negative) to 1000 times it (the domain of steady "
                 f"sliding), got {at['w1']!r} for {at['w']!r}"
             )
+        from .domain import TooWideError
         from .sliding import sliding_contact_for_load
 
-        c = sliding_contact_for_load(F / (E * h), rho, w1 / w, s, method="closed-form")
+        _check_load("normal_load", F, E, z0, "F_over_Eh2")
+        try:
+            c = sliding_contact_for_load(F / (E * h), rho, w1 / w, s, method="closed-form")
+        except TooWideError as e:
+            i = e.index
+            Ri = float(np.reshape(R, -1)[i])
+            raise ValueError(
+                f"normal_load={float(np.reshape(F, -1)[i])!r} N/m needs a sliding contact of "
+                f"half-width {e.a_over_R * Ri:.6g} m, {e.a_over_R:.6g} radii at radius="
+                f"{Ri!r} m: {e.limit}"
+            ) from None
         a = np.asarray(c.a_over_R) * R
         dw = w1 - w
     elif contact == "maugis-dugdale":

@@ -22,6 +22,7 @@ import sys
 import textwrap
 import warnings
 from collections.abc import Sequence
+from typing import Any
 
 from .._interrupt import EXIT_INTERRUPTED, imports_interruptible
 
@@ -186,8 +187,7 @@ def _flush_stdout() -> None:
 
 
 #: The errors of a write that could not be done (a full disk or quota, a file too large,
-#: an I/O error, a closed descriptor): with no file name, a write to stdout, the only file
-#: the commands write to without naming it (``-o`` names its file).
+#: an I/O error, a closed descriptor).
 _WRITE_ERRNOS = frozenset(
     getattr(errno, name)
     for name in ("ENOSPC", "EDQUOT", "EFBIG", "EIO", "EBADF", "EROFS")
@@ -196,8 +196,55 @@ _WRITE_ERRNOS = frozenset(
 
 
 def _stdout_broken(exc: OSError) -> bool:
-    """True when ``exc`` is a failed write to stdout."""
-    return exc.filename is None and exc.errno in _WRITE_ERRNOS
+    """True when ``exc`` is a failed write to stdout, not to a file.
+
+    A write error names no file: it is stdout's when it was raised by a write to stdout
+    (marked by :class:`_MarkedStdout`); otherwise a file's (a figure, a plot: a full disk
+    while stdout is fine).
+    """
+    return getattr(exc, "stream", None) == "stdout" and exc.errno in _WRITE_ERRNOS
+
+
+class _MarkedStdout:
+    """Standard output while a command runs: a failed write says it was standard output.
+
+    Every other attribute is the stream's own. An :class:`OSError` of ``write`` or ``flush``
+    gets ``stream = "stdout"``, which :func:`main` reads to tell a full disk under stdout
+    (``> /dev/full``) from one under a file the command writes (its figures).
+    """
+
+    def __init__(self, stream: Any) -> None:
+        self._stream = stream
+
+    def write(self, text: str) -> Any:
+        try:
+            return self._stream.write(text)
+        except OSError as exc:
+            exc.stream = "stdout"  # type: ignore[attr-defined]
+            raise
+
+    def flush(self) -> None:
+        try:
+            self._stream.flush()
+        except OSError as exc:
+            exc.stream = "stdout"  # type: ignore[attr-defined]
+            raise
+
+    def __getattr__(self, name: str) -> object:
+        return getattr(self._stream, name)
+
+
+def _write_failed(prefix: str, exc: OSError) -> int:
+    """Report a failed write to a file (not stdout) on stderr: its cause; exit status 2."""
+    what = repr(exc.filename) if exc.filename is not None else "a file (not standard output)"
+    if exc.errno == errno.ENOSPC:
+        text = f"no space left on the device writing {what}"
+    elif exc.errno == getattr(errno, "EDQUOT", None):
+        text = f"disk quota exceeded writing {what}"
+    else:
+        text = f"cannot write {what}: {exc.strerror or exc}"
+    print(f"{prefix}: error: {text}", file=sys.stderr)
+    return 2
 
 
 def _stdout_failed(prefix: str, exc: OSError) -> int:
@@ -206,6 +253,22 @@ def _stdout_failed(prefix: str, exc: OSError) -> int:
     reason = exc.strerror or str(exc)
     print(f"{prefix}: error: cannot write to standard output: {reason}", file=sys.stderr)
     return 2
+
+
+def _error_text(exc: BaseException) -> str:
+    """The text of a refusal: the message, or for a bare floating-point overflow what it is.
+
+    ``math`` says ``(34, 'Numerical result out of range')`` for an overflow: said as a
+    number beyond the floating-point range (an input far out of scale, or in wrong units).
+    """
+    args: tuple[Any, ...] = tuple(getattr(exc, "args", ()))
+    if isinstance(exc, OverflowError) and (len(args) != 1 or not isinstance(args[0], str)):
+        why = args[-1] if args else "overflow"
+        return (
+            f"a result beyond the floating-point range ({why}): an input is far out of "
+            "scale (in the wrong units?)"
+        )
+    return str(exc)
 
 
 def _check_output_directory(args: argparse.Namespace) -> None:
@@ -223,7 +286,7 @@ def _help_not_written(err: OSError) -> int:
     if isinstance(err, BrokenPipeError):
         _silence_stdout()
         return 0
-    if _stdout_broken(err):
+    if err.errno in _WRITE_ERRNOS:  # the help and the version go to stdout only
         return _stdout_failed("linecontact", err)
     raise err
 
@@ -275,15 +338,18 @@ def main(argv: Sequence[str] | None = None) -> int:
         quiet = bool(getattr(args, "quiet", False))  # read when said (sweep sets it late)
         if quiet and not is_units_warning(message, category):  # --quiet: model notes only
             return
-        text = str(message)
-        if text not in seen:  # a warning is printed once per run
+        text = flag_message(str(message), args)
+        if text not in seen:  # a warning is printed once per run (as the user reads it)
             seen.add(text)
             if issubclass(category, CouplingWarning) and not said:  # its effect: once
                 said.append(text)
                 text += coupling_effect(text)
-            print(f"{prefix}: warning: {flag_message(text, args)}", file=sys.stderr)
+            print(f"{prefix}: warning: {text}", file=sys.stderr)
 
+    stdout = sys.stdout
     try:
+        if stdout is not None:  # a failed write to it says so (a full disk: which file)
+            sys.stdout = _MarkedStdout(stdout)
         with warnings.catch_warnings():
             warnings.simplefilter("always")
             warnings.showwarning = once
@@ -306,22 +372,27 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"{prefix}: error: {flag_message(str(exc), args)}", file=sys.stderr)
         return 1
     except (ValueError, OverflowError) as exc:
-        print(f"{prefix}: error: {flag_message(str(exc), args)}", file=sys.stderr)
+        print(f"{prefix}: error: {flag_message(_error_text(exc), args)}", file=sys.stderr)
         return 2
     except ImportError as exc:
         print(f"{prefix}: error: {exc}", file=sys.stderr)
         return 1
     except OSError as exc:
-        if not _stdout_broken(exc):  # not a write to stdout: an internal error
-            print(
-                f"{prefix}: error: internal error ({type(exc).__name__}: {exc}); please report it",
-                file=sys.stderr,
-            )
-            return 1
-        return _stdout_failed(prefix, exc)
+        if _stdout_broken(exc):
+            return _stdout_failed(prefix, exc)
+        if exc.errno in _WRITE_ERRNOS:  # a file of the command: a full disk, a quota
+            return _write_failed(prefix, exc)
+        print(  # anything else: an internal error
+            f"{prefix}: error: internal error ({type(exc).__name__}: {exc}); please report it",
+            file=sys.stderr,
+        )
+        return 1
     except Exception as exc:  # noqa: BLE001 - the CLI never shows a traceback
         print(
             f"{prefix}: error: internal error ({type(exc).__name__}: {exc}); please report it",
             file=sys.stderr,
         )
         return 1
+    finally:
+        if isinstance(sys.stdout, _MarkedStdout):  # as it was (unless the command changed it)
+            sys.stdout = stdout

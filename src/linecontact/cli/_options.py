@@ -9,6 +9,7 @@ flags; :func:`flag_message` turns the API's parameter names into the flags the u
 from __future__ import annotations
 
 import argparse
+import errno
 import math
 import re
 import sys
@@ -47,6 +48,11 @@ API_FLAGS = {
     "friction_stress": "--tau0",
     "friction_coefficient": "--mu",
     "tangential_load": "--tangential-load",
+    "amplitude": "--tangential-amplitude",
+    "max_half_width": "--a-max",
+    "receding_range": "--h1",
+    "receding_work_of_adhesion": "--work-of-adhesion-receding",
+    "half_width": "--half-width",
 }
 
 #: The SI inputs of the materials and adhesion (their presence switches to SI mode).
@@ -315,15 +321,33 @@ def emit(args: argparse.Namespace, table: Table) -> None:
     if getattr(args, "_capture", None) is not None:  # linecontact.sweeps: kept, not written
         args._capture.append(table)
     elif args.output is None:
-        write(table, fmt, indent=args.indent)
+        try:
+            write(table, fmt, indent=args.indent)
+        except BrokenPipeError:
+            raise
+        except OSError as exc:  # a write to standard output: said so (linecontact.cli.main)
+            exc.stream = "stdout"  # type: ignore[attr-defined]
+            raise
     else:
         try:
-            write(table, fmt, args.output, indent=args.indent)
+            write(table, fmt, args.output, indent=args.indent, name="-o/--output")
         except OSError as exc:
-            why = exc.strerror or exc
-            raise ValueError(f"cannot write -o/--output {args.output!r}: {why}") from None
+            raise write_failure(f"-o/--output {args.output!r}", exc) from None
         if not args.quiet:
             print(f"wrote {args.output}", file=sys.stderr)
+
+
+def write_failure(what: str, exc: OSError) -> ValueError:
+    """The error for a failed write to ``what`` (a flag and its file): its real cause.
+
+    A full disk is ``no space left on the device writing -o/--output 'x.csv'``, a quota
+    ``disk quota exceeded writing ...``; any other failure ``cannot write ...: <reason>``.
+    """
+    if exc.errno == errno.ENOSPC:
+        return ValueError(f"no space left on the device writing {what}")
+    if exc.errno == getattr(errno, "EDQUOT", None):
+        return ValueError(f"disk quota exceeded writing {what}")
+    return ValueError(f"cannot write {what}: {exc.strerror or exc}")
 
 
 #: The SI contact half-width columns [m] whose values are checked by :func:`_check_widths`.
@@ -398,29 +422,105 @@ def command_line(args: argparse.Namespace) -> list[str]:
     return ["linecontact", *argv]
 
 
+#: A quoted value in a message (a Python ``repr`` of a string: a path, a column, a choice):
+#: never rewritten by :func:`flag_message`. An apostrophe inside a word (cylinder's) opens
+#: no quote.
+_QUOTED = re.compile(r"""(?<!\w)'[^'\n]*'(?!\w)|(?<!\w)"[^"\n]*"(?!\w)""")
+
+
+def _typed_values(argv: Sequence[str]) -> list[str]:
+    """The values on the command line ``argv`` (no flag, no subcommand), longest first."""
+    values = []
+    for i, word in enumerate(argv):
+        if word.startswith("-") and not _NEGATIVE_NUMBER.match(word):
+            if "=" in word:
+                values.append(word.split("=", 1)[1])
+        elif i > 0:  # argv[0] is the subcommand
+            values.append(word)
+    return sorted({v for v in values if v}, key=len, reverse=True)
+
+
+def _protected(message: str, values: Sequence[str]) -> list[tuple[str, bool]]:
+    """``message`` cut into ``(text, protected)`` pieces, in order.
+
+    Protected: every quoted value (:data:`_QUOTED`) and every value the user typed
+    (``values``, where it stands as a whole word: a path, a preset's name), which must
+    come out verbatim; the rest is the message's own words.
+    """
+    spans = [m.span() for m in _QUOTED.finditer(message)]
+    for v in values:
+        for m in re.finditer(rf"(?<![\w-]){re.escape(v)}(?![\w-])", message):
+            spans.append(m.span())
+    pieces: list[tuple[str, bool]] = []
+    at = 0
+    for lo, hi in sorted(spans):
+        if lo < at:  # inside (or overlapping) a span already kept
+            if hi > at:
+                pieces.append((message[at:hi], True))
+                at = hi
+            continue
+        pieces += [(message[at:lo], False), (message[lo:hi], True)]
+        at = hi
+    pieces.append((message[at:], False))
+    return [(text, keep) for text, keep in pieces if text]
+
+
 def flag_message(message: str, args: argparse.Namespace) -> str:
-    """``message`` with the API's parameter names replaced by the flags the user typed."""
-    given = {t.split("=", 1)[0] for t in (args.argv if args.argv is not None else sys.argv[1:])}
-    names: dict[str, str] = {}
-    for dest, flag in getattr(args, "_flags", {}).items():
-        names[dest] = flag
-    for name, flag in {**API_FLAGS, **getattr(args, "_api_flags", {})}.items():
-        names[name] = flag
+    """``message`` with the API's parameter names replaced by the flags of the command line.
+
+    A name is replaced by the flag the user typed for it; a parameter name (one with an
+    underscore) whose flag was not typed by its flag where the subcommand has one (its
+    default was used), or by what the command said it stands for (``args._api_flags``).
+    Only the message's own words are rewritten: a quoted value and any value the user
+    typed (a path such as ``z0/data.csv``, a preset's name) come out verbatim
+    (:func:`_protected`).
+
+    Parameters
+    ----------
+    message : str
+        The API's message (an error's, a warning's).
+    args : argparse.Namespace
+        The run's arguments: ``argv``, and ``_flags``, ``_choice_flags`` of
+        :func:`record_flags` (``_api_flags``, ``_typed_as`` where the command set them).
+
+    Returns
+    -------
+    str
+        The message in the words of the command line.
+    """
+    argv = list(args.argv if args.argv is not None else sys.argv[1:])
+    given = {t.split("=", 1)[0] for t in argv}
+    flags: dict[str, str] = getattr(args, "_flags", {})
+    run_flags: dict[str, str] = getattr(args, "_api_flags", {})  # this run's: always said
+    names: dict[str, str] = dict(flags)
+    names.update({**API_FLAGS, **run_flags})
+    known = set(flags.values()) | set(run_flags.values())
     typed = getattr(args, "_typed_as", None) or {}  # an old spelling: named as typed
+    subs: list[tuple[re.Pattern[str], str]] = []
     for name, flag in sorted(names.items(), key=lambda kv: -len(kv[0])):
         flag = typed.get(flag, flag)
-        if flag not in given:
-            continue
-        # a name with an underscore is a parameter wherever it stands; a plain word (radius,
-        # load) only where it is the subject of a check ("load must ...", "load=...") or the
-        # a term of a ratio ("cohesive_stress/modulus", "radius / equilibrium_spacing")
         n = re.escape(name)
-        if "_" in name:
-            message = re.sub(rf"(?<![\w-]){n}(?![\w])", flag, message)
-        else:
-            message = re.sub(rf"(?<![\w-]){n}(?= must| =|=| ?/)|(?<=/){n}(?![\w])", flag, message)
+        if "_" in name and (flag in given or flag in known):
+            # a parameter's name, wherever it stands
+            subs.append((re.compile(rf"(?<![\w-]){n}(?![\w])"), flag))
+        elif flag in given:
+            # a plain word (radius, load) only where it is the subject of a check ("load
+            # must ...", "load=...") or a term of a ratio ("radius / equilibrium_spacing")
+            subs.append((re.compile(rf"(?<![\w-]){n}(?= must| =|=| ?/)|(?<=/){n}(?![\w])"), flag))
+    out = []
+    for text, keep in _protected(message, _typed_values(argv)):
+        if not keep:
+            for pattern, flag in subs:
+                text = pattern.sub(flag, text)
+        out.append(text)
+    message = "".join(out)
     # a choice as the API writes it (law='dugdale') as it is typed (--law dugdale)
-    return re.sub(r"(--[\w-]+)='([\w-]+)'", r"\1 \2", message)
+    choices = getattr(args, "_choice_flags", None)
+    return re.sub(
+        r"(--[\w-]+)='([\w-]+)'",
+        lambda m: f"{m[1]} {m[2]}" if choices is None or m[1] in choices else m[0],
+        message,
+    )
 
 
 # --------------------------------------------------------------------------------------------
@@ -671,12 +771,41 @@ def groups(args: argparse.Namespace) -> tuple[float, float, Cylinder | None]:
     if not si:
         if args.R_over_h is None or args.sigma0_over_E is None:
             raise ValueError("give --R-over-h and --sigma0-over-E (or SI inputs with --radius)")
+        if getattr(args, "law", None) == "lennard-jones" and args.command != "pulloff":
+            _check_lennard_jones_groups(args.R_over_h, args.sigma0_over_E)
         return args.R_over_h, args.sigma0_over_E, None
     cyl = cylinder(args)
     if getattr(args, "law", None) == "lennard-jones":
         # its domain said for this cylinder, in SI units (the pull-off: every mu)
         cyl._check_lennard_jones(pull_off=getattr(args, "command", None) == "pulloff")
     return cyl.R_over_h, cyl.sigma0_over_E, cyl
+
+
+def _check_lennard_jones_groups(rho: float, s: float) -> None:
+    """The groups inside the domain of the Lennard-Jones solver, said in the flags' terms.
+
+    Its own group ``w sqrt(R/z0)/(E z0)`` is ``--sigma0-over-E sqrt(--R-over-h)`` over
+    ``S^(3/2)`` (``S = 16/(9 sqrt 3)``, the Maugis matching): up to 400 for contacts and load
+    curves (the pull-off at any value).
+    """
+    from ..domain import DOMAIN, check
+    from ..lennard_jones import maugis_parameter_of_mu
+    from ..materials import MAUGIS_STRENGTH
+
+    check("--R-over-h", rho, "R_over_h")
+    check("--sigma0-over-E", s, "sigma0_over_E")
+    hi = DOMAIN["lj_mu"][2]
+    k = MAUGIS_STRENGTH**1.5
+    value = s * math.sqrt(rho) / k
+    if value > hi:
+        lam = float(maugis_parameter_of_mu(hi))
+        raise ValueError(
+            f"under the Lennard-Jones law --sigma0-over-E sqrt(--R-over-h) / {k:.4g} = "
+            f"{value:.4g} must be at most {hi:g} for contacts and load curves (a Tabor-Maugis "
+            f"parameter up to {lam:.3g}; the pull-off at any value): use --law dugdale, or "
+            f"--sigma0-over-E below {s * hi / value:.3g}, or --R-over-h below "
+            f"{rho * (hi / value) ** 2:.3g}"
+        )
 
 
 # --------------------------------------------------------------------------------------------
@@ -770,13 +899,20 @@ def si_loads(args: argparse.Namespace, cyl: Cylinder, key: str) -> np.ndarray:
 
 
 def record_flags(parser: argparse.ArgumentParser, args: argparse.Namespace) -> None:
-    """Remember the flag of every option (by its dest), for :func:`flag_message`."""
+    """Remember the flag of every option (by its dest), and which take choices.
+
+    For :func:`flag_message`.
+    """
     flags: dict[str, str] = {}
+    choices: set[str] = set()
     for action in parser._actions:
         longs = [s for s in action.option_strings if s.startswith("--")]
         if longs and action.dest not in flags:
             flags[action.dest] = longs[0]
+        if longs and action.choices is not None:
+            choices.update(longs)
     args._flags = flags
+    args._choice_flags = choices
 
 
 def si_columns(

@@ -24,7 +24,14 @@ import numpy as np
 
 from .._progress import _isatty
 from ..output import FORMATS, Table, table_from_result, write
-from ._options import add_command, add_output_options, command_line, emit, show_together
+from ._options import (
+    add_command,
+    add_output_options,
+    command_line,
+    emit,
+    show_together,
+    write_failure,
+)
 
 if TYPE_CHECKING:  # linecontact.adhesion_map imports SciPy's linalg: imported where used
     from ..adhesion_map import AdhesionMap
@@ -300,9 +307,7 @@ def _cmd_map(args: argparse.Namespace) -> int:
     try:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
-        raise ValueError(
-            f"cannot write the map to --outdir {args.outdir!r}: {exc.strerror or exc}"
-        ) from None
+        raise write_failure(f"the map to --outdir {args.outdir!r}", exc) from None
 
     partial = out / PARTIAL
     bar = bool(args.progress) or _isatty()  # the bar of the curves done, resumed ones too
@@ -325,9 +330,7 @@ def _cmd_map(args: argparse.Namespace) -> int:
         write(_table(m, args, files), "csv", data)
         _clear_partial(partial)
     except OSError as exc:
-        raise ValueError(
-            f"cannot write the map to --outdir {args.outdir!r}: {exc.strerror or exc}"
-        ) from None
+        raise write_failure(f"the map to --outdir {args.outdir!r}", exc) from None
     fmt = args.format
     if fmt is None and args.output is not None:
         ext = args.output.rsplit(".", 1)[-1].lower()

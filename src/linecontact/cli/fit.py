@@ -31,6 +31,7 @@ from ._options import (
     emit,
     show_together,
     si_parameters,
+    write_failure,
 )
 from ._options import cylinder as _cylinder
 
@@ -59,6 +60,11 @@ _EXAMPLES = {
         "10% --radius 50e-9 --modulus 51.7e9 --work-of-adhesion 0.1 --z0 0.3e-9",
     ],
 }
+
+
+#: The largest shear strength [Pa] a measured width may give: a thousand times the stiffest
+#: modulus there is (beyond, the inputs are in other units, and the draws would overflow).
+_TAU_MAX = 1e15
 
 
 def _sd(text: str) -> tuple[float, bool]:
@@ -242,9 +248,10 @@ def _modulus(args: argparse.Namespace) -> tuple[float, dict[str, Any]]:
         if not (math.isfinite(args.modulus) and args.modulus > 0):
             raise ValueError(f"--modulus must be a finite number > 0, got {args.modulus!r}")
         return args.modulus, {"modulus_Pa": args.modulus}
-    # the SI layer's reader of the materials and presets (a unit radius and range: unused)
+    # the SI layer's reader of the materials and presets (a radius and a range of its own,
+    # unused: the radius given is checked where it is used, with the adhesion given)
     ns = argparse.Namespace(**vars(args))
-    ns.radius = args.radius if args.radius is not None else 1e-7
+    ns.radius = 1e-7
     ns.h, ns.sigma0, ns.work_of_adhesion, ns.z0, ns.length = 1e-9, None, None, None, None
     cyl = _cylinder(ns)
     # the moduli as used, with the presets' names and sources (a preset never hides them)
@@ -277,7 +284,15 @@ def _one_sd(args, name: str, value: float | None) -> float:
         raise ValueError(f"{flag} must be finite and >= 0, got {text!r}")
     if value is None:
         raise ValueError(f"{flag} needs --{name.replace('_', '-')}")
-    return abs(value) * v if rel else v
+    sd = abs(value) * v if rel else v
+    # the Monte Carlo draws around the value: an uncertainty as large as the value itself
+    # draws as many non-physical values as physical ones (and 1e300 overflows)
+    if not sd <= abs(value):
+        raise ValueError(
+            f"{flag} must be at most the value itself ({abs(value)!r}, 100%): a larger standard "
+            f"uncertainty leaves no physical value to draw, got {text!r}"
+        )
+    return sd
 
 
 def _record(result: Any, keys: tuple[tuple[str, str], ...]) -> dict[str, Any]:
@@ -436,7 +451,10 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
         if args.plot:
             from ..figures.fit import draw_adhesion_fit
 
-            draw_adhesion_fit(fit, args.plot, units=args.data)  # the axes in the file's units
+            try:
+                draw_adhesion_fit(fit, args.plot, units=args.data)  # the axes in the file's units
+            except OSError as exc:
+                raise write_failure(f"--plot {args.plot!r}", exc) from None
     else:
         rec, title = _adhesion_one(args, E, params)
     units = {
@@ -505,8 +523,18 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
         if given == ["pull_off_force_total"]:
             if args.length is None:
                 raise ValueError("--pull-off-force-total [N] needs the fibre's --length [m]")
+            if not math.isfinite(args.pull_off_force_total):
+                raise ValueError(
+                    "--pull-off-force-total must be a finite number [N], got "
+                    f"{args.pull_off_force_total!r}"
+                )
             total_sd = _one_sd(args, "pull_off_force_total", args.pull_off_force_total)
             F = per_length(args.pull_off_force_total, args.length, length_name="--length")
+            # the force per length the inversion is given, said as the flags that make it
+            args._api_flags = {
+                **getattr(args, "_api_flags", {}),
+                "pull_off_force": "--pull-off-force-total / --length",
+            }
             F_sd = per_length(total_sd, args.length, length_name="--length")
             params.update(pull_off_force_total_N=args.pull_off_force_total, length_m=args.length)
         else:
@@ -590,6 +618,13 @@ def _friction_from_width(args: argparse.Namespace) -> int:
         else 0.0
     )
     values = dict(friction_force=args.friction_force, half_width=args.half_width)
+    tau = (args.friction_force - dw) / (2 * args.half_width)
+    if not tau <= _TAU_MAX:  # drawing around it would overflow; no material is that strong
+        raise ValueError(
+            f"--friction-force {args.friction_force!r} N/m over --half-width "
+            f"{args.half_width!r} m gives a shear strength of {tau:.3g} Pa, beyond any "
+            f"material (above {_TAU_MAX:g} Pa): are they in N/m and m?"
+        )
     est = inv.propagate(
         lambda friction_force, half_width: (friction_force - dw) / (2 * half_width),
         values,
@@ -766,16 +801,19 @@ def _cmd_friction(args: argparse.Namespace) -> int:
     if args.plot:
         from ..figures.fit import draw_friction_fit
 
-        draw_friction_fit(
-            F,
-            f,
-            tau,
-            np.array([e.ci95 for e in ests]),
-            {k.upper() if k != "hertz" else "Hertz": np.asarray(v) for k, v in others.items()},
-            args.plot,
-            friction_sd=f_sd,
-            combined=(combined.tau0, combined.tau0_ci95),
-        )
+        try:
+            draw_friction_fit(
+                F,
+                f,
+                tau,
+                np.array([e.ci95 for e in ests]),
+                {k.upper() if k != "hertz" else "Hertz": np.asarray(v) for k, v in others.items()},
+                args.plot,
+                friction_sd=f_sd,
+                combined=(combined.tau0, combined.tau0_ci95),
+            )
+        except OSError as exc:
+            raise write_failure(f"--plot {args.plot!r}", exc) from None
     units = {"n_points": "1", "birge_ratio": "1", "tau0_per_point_ci95_Pa": "Pa"}
     emit(
         args,

@@ -16,9 +16,11 @@ from typing import Any
 
 import numpy as np
 
+from .. import domain as _domain
 from .. import tangential as tg
 from .._validation import check_array
 from ..cylinder import Cylinder
+from ..domain import check_si
 from ..output import table_from_result
 from ..tangential.history import _T_LIMIT
 from ._options import add_command, add_output_options, command_line, emit, si_parameters
@@ -191,22 +193,18 @@ def _si_friction(args: argparse.Namespace, coulomb: bool, cyl: Cylinder) -> dict
 def _si_loads(args: argparse.Namespace, cyl: Cylinder, state: str, values, coulomb) -> np.ndarray:
     """Tangential loads [N/m] from the flag given: over E a, over mu F, or in N/m.
 
-    Loads in N/m beyond the solvers' domain (``|T|`` over ``E a`` or ``mu F`` above 1e12) are
-    refused naming the flag given.
+    What scales them is checked first (``--mu``, ``--load``, each named); loads in N/m are
+    checked against the solvers' domain by the SI layer (as ``--tangential-load`` or
+    ``--tangential-amplitude``).
     """
-    mu = dict(friction_coefficient=args.mu)
+    if coulomb:
+        _domain.scalar("--mu", args.mu, "mu")
     if state.endswith("over_Ea"):
         return cyl.tangential_load(args.load, values, over="Ea")
     if state.endswith("over_muF"):
-        return cyl.tangential_load(args.load, values, over="muF", **mu)
-    over, name = ("muF", "mu F") if coulomb else ("Ea", "E a")
-    limit = cyl.tangential_load(args.load, _T_LIMIT, over=over, **mu)  # type: ignore[arg-type]
-    big = np.abs(values) > limit
-    if np.any(big):
-        v = float(values[np.flatnonzero(big)[0]])
-        raise ValueError(
-            f"{state} must be at most {_T_LIMIT:g} {name} = {limit:.6g} N/m in magnitude, got {v!r}"
-        )
+        load = check_array("--load", args.load, low=-np.inf)
+        check_si("--load", load, cyl.scale("Eh"), "F_over_Eh", "N/m")
+        return cyl.tangential_load(args.load, values, over="muF", friction_coefficient=args.mu)
     return values
 
 

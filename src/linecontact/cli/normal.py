@@ -299,6 +299,27 @@ def _cmd_pulloff(args: argparse.Namespace) -> int:
 # curve
 
 
+def _check_lj_end(F_max: float | None, rho: float, s: float) -> None:
+    """``--F-max-over-Eh`` within the loads the Lennard-Jones solver is asked for (said so).
+
+    The solver's own message names its groups; the end of the curve is said here in the
+    units of the flag. A value that is no load (nan, <= 0) is left to the solver's check.
+    """
+    from ..lennard_jones_groups import LJ_LOAD_MAX, load_max_over_Eh
+
+    if F_max is None or not (np.isfinite(F_max) and F_max > 0):
+        return
+    with np.errstate(all="ignore"):
+        limit = float(load_max_over_Eh(rho, s))
+    if F_max > limit:
+        raise ValueError(
+            f"--F-max-over-Eh={F_max!r} is beyond the loads the Lennard-Jones solver is asked "
+            f"for, up to {limit:.6g} here (in its units; {LJ_LOAD_MAX:g} w sqrt(R/z0), ten "
+            "times the rigid cylinder's pull-off); at such loads both laws approach Hertz, "
+            "and the Dugdale law (the default) gives the contact"
+        )
+
+
 def _cmd_curve_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinder | None) -> int:
     given = [
         flag
@@ -328,6 +349,7 @@ def _cmd_curve_lj(args: argparse.Namespace, rho: float, s: float, cyl: Cylinder 
         raise ValueError("--F-max-over-Eh is nondimensional: with SI inputs give --F-max [N/m]")
     si: Any = None
     if cyl is None:
+        _check_lj_end(F_max, rho, s)
         c = _lj.load_curve(rho, s, F_max_over_Eh=F_max)
     else:
         si = cyl.lennard_jones_load_curve(max_load=args.F_max)

@@ -243,12 +243,12 @@ def _draw_and_list(draw, args, formats, size) -> None:
         if not msg.startswith("wrote "):
             print(msg, file=sys.stderr)
 
+    from ._options import write_failure
+
     try:
         paths = draw(args.outdir, formats=formats, size=size, progress=progress)
-    except OSError as exc:
-        raise ValueError(
-            f"cannot write the figures to --outdir {args.outdir!r}: {exc.strerror or exc}"
-        ) from None
+    except OSError as exc:  # a file in it (matplotlib names none): the directory
+        raise write_failure(f"the figures to --outdir {args.outdir!r}", exc) from None
     print(f"wrote {len(paths)} files to {args.outdir}/:")
     for p in paths:
         print(f"  {p}")

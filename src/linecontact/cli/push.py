@@ -14,10 +14,11 @@ from typing import Any
 import numpy as np
 
 from ..cylinder import _check_cylinder_si, _plausible, hysteresis_adhesion
-from ..domain import check_si
-from ..errors import ModelValidityWarning
+from ..domain import SCALE_WORDS, check_si
+from ..errors import ModelValidityWarning, NoEquilibriumError
 from ..output import table_from_result
 from ..push import push
+from ..sliding import sliding_pull_off
 from ._options import (
     add_command,
     add_output_options,
@@ -202,7 +203,7 @@ def _cmd_push(args: argparse.Namespace) -> int:
         load = 0.0 if args.load is None else args.load
         check_si("--load", load, Eh, "F_over_Eh2", "N/m")
         if args.push is not None:
-            check_si("--push", args.push, Eh, "T_over_Ea", "N/m")
+            check_si("--push", args.push, Eh, "T_over_Ea", "N/m", SCALE_WORDS["F_over_Eh2"])
         h1 = args.h1 if args.h1 is not None else cyl.in_si(args.h1_over_h2, "h")
         Q = args.push
         pushed: Any = cyl.push(
@@ -216,7 +217,20 @@ def _cmd_push(args: argparse.Namespace) -> int:
         )
         res: Any = pushed.nondimensional
     if cyl is None:
-        res = push(rho, r, s, tau, F, H, Q, tip_friction=args.tip_friction)
+        try:
+            res = push(rho, r, s, tau, F, H, Q, tip_friction=args.tip_friction)
+        except NoEquilibriumError:  # said with the flags (the pull-off: no flag of its own)
+            if s == 0:
+                raise NoEquilibriumError(
+                    f"no contact carries --F-over-Eh2={F!r} without adhesion (--sigma0-over-E "
+                    "0): the load must be > 0"
+                ) from None
+            F_po = sliding_pull_off(rho, r, s).F_pulloff_over_Eh2
+            raise NoEquilibriumError(
+                f"no steadily sliding contact carries --F-over-Eh2={F!r}: it is below the "
+                f"pull-off force, {F_po:.6g} in the units of --F-over-Eh2; the cylinder has "
+                "pulled off"
+            ) from None
     show = [
         "H_over_R",
         "a_rest_over_R",

@@ -19,7 +19,8 @@ from .. import tangential as tg
 from .._validation import non_negative
 from ..cylinder import Cylinder
 from ..domain import DOMAIN, check
-from ..normal import contact_for_load
+from ..errors import NoEquilibriumError
+from ..normal import contact_for_load, pull_off
 from ..output import Table, table_from_result
 from ._options import (
     add_command,
@@ -191,7 +192,15 @@ def _normal_contact(args: argparse.Namespace, coulomb: bool):
                 "Coulomb friction is the counterpart for the non-adhesive Hertz contact: use "
                 "--sigma0-over-E 0 (or --friction constant)"
             )
-        c = contact_for_load(args.F_over_Eh, args.R_over_h, args.sigma0_over_E)
+        try:
+            c = contact_for_load(args.F_over_Eh, args.R_over_h, args.sigma0_over_E)
+        except NoEquilibriumError:  # said with the flags (the minimum load: no flag of its own)
+            F_min = pull_off(args.R_over_h, args.sigma0_over_E).F_minimum_over_Eh
+            raise NoEquilibriumError(
+                f"no contact carries --F-over-Eh={args.F_over_Eh!r}: it is below the pull-off "
+                f"force, {F_min + 0.0:.6g} in the units of --F-over-Eh (the minimum load on the "
+                "contact branch); the cylinder has pulled off"
+            ) from None
         return c.a_over_R, args.F_over_Eh, None
     if args.F_over_Eh is not None:
         raise ValueError("--F-over-Eh needs --R-over-h and --sigma0-over-E")

@@ -50,7 +50,7 @@ def _implausible(name: str, value: ArrayLike, key: str | None = None) -> str | N
     """The warning for the first value of ``name`` outside :data:`PLAUSIBLE` (None: none)."""
     key = key or name
     lo, hi, unit, what = PLAUSIBLE[key]
-    if name != key and not name.startswith("-"):  # as the caller named it (equilibrium_spacing)
+    if name != key and name.isidentifier():  # as the caller named it (equilibrium_spacing)
         what = name.replace("_", " ")
     v = np.asarray(value, float).reshape(-1)
     with np.errstate(invalid="ignore"):
@@ -121,7 +121,8 @@ def _check_cylinder_si(
     if a_val is None:
         stress = None
     elif by_work:
-        stress = _S_LJ * np.asarray(a_val, float) / length  # sigma0 of (w, z0)
+        with np.errstate(over="ignore", divide="ignore", invalid="ignore"):  # refused below
+            stress = _S_LJ * np.asarray(a_val, float) / length  # sigma0 of (w, z0)
     else:
         stress = np.asarray(a_val, float)
     adhesive = stress is None or bool(np.any(stress > 0))
@@ -134,8 +135,11 @@ def _check_cylinder_si(
         if by_work and a_val is not None:
             _plausible("work_of_adhesion", a_val, stacklevel)
         elif stress is not None and _implausible(l_name, length, "adhesion_range") is None:
-            # sigma0 h: said where the range is not already the suspect
-            _plausible("work_of_adhesion", stress * length, stacklevel)
+            # sigma0 h: said where the range is not already the suspect, as the product of
+            # the inputs given (no work of adhesion was given)
+            with np.errstate(over="ignore"):
+                work = stress * length
+            _plausible(f"{a_name} * {l_name}", work, stacklevel, key="work_of_adhesion")
     unit = {"work_of_adhesion": "J/m^2", "cohesive_stress": "Pa"}[a_name]
     cands_l = ((l_name, length, "adhesion_range"), ("radius", R, "radius"))
     # the ratio of the radius to the range

@@ -95,15 +95,20 @@ class Cylinder(_Problems):
             ("modulus", {}),
             ("cohesive_stress", {"low_inclusive": True}),
             ("adhesion_range", {}),
-            ("dundurs_beta", {"low": -np.inf, "low_inclusive": True}),
+            # |beta| < 3/4 for any pair of materials (a rigid body on nu = -1: 3/4)
+            (
+                "dundurs_beta",
+                {"low": -0.75, "low_inclusive": True, "high": 0.75, "high_inclusive": True},
+            ),
         ):
             object.__setattr__(self, name, scalar(name, getattr(self, name), **limits))
-        # the units of the groups must be representable: R/h, sigma0/E and E h
+        # the units of the groups must be representable: R/h, sigma0/E and E h (said in the
+        # caller's names: the groups are the library's)
         for what, v in (
-            ("radius/adhesion_range (R/h)", self.radius / self.adhesion_range),
-            ("cohesive_stress/modulus (sigma0/E)", self.cohesive_stress / self.modulus),
+            ("radius/adhesion_range", self.radius / self.adhesion_range),
+            ("cohesive_stress/modulus", self.cohesive_stress / self.modulus),
             (
-                "modulus*adhesion_range (E h, the unit of force per length)",
+                "modulus*adhesion_range (the unit of force per length)",
                 self.modulus * self.adhesion_range,
             ),
         ):
@@ -335,12 +340,12 @@ class Cylinder(_Problems):
             )
             more = f" or a cohesive stress below {self.cohesive_stress * hi / mu:.3g} Pa"
         raise ValueError(
-            f"under the Lennard-Jones law the Maugis parameter mu = w R^(1/2) / (E z0^(3/2)) "
-            f"of this cylinder is {mu:.4g} (radius={R!r} m, modulus={E!r} Pa, {inputs}): the "
-            f"Lennard-Jones solver takes mu in [0, {hi:g}] for contacts and load curves "
-            f"(Tabor-Maugis parameter up to {lam:.3g}; the pull-off at every mu). Use the "
-            f"Dugdale law (law='dugdale', any mu), or a radius below "
-            f"{R * (hi / mu) ** 2:.3g} m, a modulus above {E * mu / hi:.3g} Pa{more}"
+            f"under the Lennard-Jones law w R^(1/2) / (E z0^(3/2)) of this cylinder is "
+            f"{mu:.4g} (radius={R!r} m, modulus={E!r} Pa, {inputs}): the Lennard-Jones "
+            f"solver takes it up to {hi:g} for contacts and load curves (a Tabor-Maugis "
+            f"parameter up to {lam:.3g}; the pull-off at any value). Use the Dugdale law "
+            f"(law='dugdale', any value), or a radius below {R * (hi / mu) ** 2:.3g} m, a "
+            f"modulus above {E * mu / hi:.3g} Pa{more}"
         )
 
     # problems ----------------------------------------------------------------------------
@@ -645,7 +650,9 @@ class Cylinder(_Problems):
         """
         if over == "muF":
             if friction_coefficient is None:
-                raise ValueError("a load over mu F needs the friction_coefficient mu")
+                raise ValueError(
+                    "a load over the Coulomb limit (over='muF') needs friction_coefficient"
+                )
             return np.multiply(np.multiply(value, friction_coefficient), normal_load)
         if over != "Ea":
             raise ValueError(f"over must be 'Ea' or 'muF', got {over!r}")
@@ -694,6 +701,7 @@ class Cylinder(_Problems):
         self._check_lennard_jones()
         F_max = None
         if max_load is not None:
+            max_load = scalar("max_load", max_load)  # a compressive load, > 0
             F_max = float(_ljg.load_max_over_Eh(self.R_over_h, self.sigma0_over_E))
             limit = self.in_si(F_max, "Eh")
             if max_load > limit:

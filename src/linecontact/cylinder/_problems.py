@@ -100,6 +100,7 @@ def _cylinder_tangential(
             )
         contact = cylinder._for_load("normal_load", F)
         A = np.asarray(contact.contact_half_width) / cylinder.radius
+        _check_hertz_width("normal_load", F, A, cylinder.radius)
         mu = fr
         if d is None:
             _domain.check_si("tangential_load", st, mu * F, "T_over_muF", "N/m")
@@ -171,6 +172,23 @@ def _full_slip(
 def _scalar(v):
     v = np.asarray(v)
     return v.item() if v.ndim == 0 else v
+
+
+def _check_hertz_width(name: str, F: ArrayLike, a_over_R: ArrayLike, R: float) -> None:
+    """Refuse a normal load whose Hertz contact is narrower than the solvers' domain.
+
+    Coulomb friction takes the contact's half-width over the radius, which must be at least
+    the lower end of the domain of ``a/R`` (said in radii, for the load ``name`` [N/m]).
+    """
+    lo = _domain.DOMAIN["a_over_R"][0]
+    A = np.asarray(a_over_R, float)
+    bad = ~(A >= lo)
+    if np.any(bad):
+        Fi, Ai = _first(bad, F, A)
+        raise ValueError(
+            f"{name}={Fi!r} N/m gives a contact of half-width {Ai * R:.3g} m, {Ai:.3g} radii: "
+            f"below the domain of the solvers (at least {lo:g} radii)"
+        )
 
 
 def _sliding_initiation(
@@ -386,7 +404,11 @@ def _pushed_fibre(
         _plausible("receding_range", h1, key="adhesion_range")
     tau = scalar("friction_stress", friction_stress)
     _domain.check_si("friction_stress", tau, E, "tau0_over_E", "Pa")
-    H = check_array("height", height, low=0.0, low_inclusive=True, high=2 * R, high_inclusive=True)
+    # a tip pushes strictly between the ends (0, 2R); a flat push anywhere on [0, 2R]
+    on_ends = tip_friction is None
+    H = check_array(
+        "height", height, low=0.0, low_inclusive=on_ends, high=2 * R, high_inclusive=on_ends
+    )
     Eh = E * h2
     # the SI inputs are checked (and named) here, not as the groups they form
     load = check_array("normal_load", normal_load, low=-np.inf, high=np.inf)
@@ -394,7 +416,9 @@ def _pushed_fibre(
     F = load / Eh
     Q = None
     if push is not None:
-        Q = check_array("push", push, low=0.0, low_inclusive=True) / Eh
+        P = check_array("push", push, low=0.0, low_inclusive=True)
+        _domain.check_si("push", P, Eh, "T_over_Ea", "N/m", _domain.SCALE_WORDS["F_over_Eh2"])
+        Q = P / Eh
     if length is not None:
         positive("length", length)
     try:
@@ -412,6 +436,12 @@ def _pushed_fibre(
         # below the pull-off force of steady sliding: said in N/m, for this cylinder
         from ..sliding import sliding_pull_off
 
+        if s0 == 0:  # no adhesion: no tension, and no contact without a compressive load
+            Fi = float(np.min(load))
+            raise NoEquilibriumError(
+                f"normal_load={Fi!r} N/m holds no contact: without adhesion (cohesive_stress "
+                "= 0) the fibre needs a compressive normal load (> 0)"
+            ) from None
         F_po = float(sliding_pull_off(R / h2, h1 / h2, cylinder.sigma0_over_E).F_pulloff_over_Eh2)
         F_po *= Eh
         below = np.asarray(load < F_po)
@@ -472,21 +502,40 @@ def _history_contact(cylinder, normal_load, friction_stress, friction_coefficien
         _domain.check_si("friction_stress", fr, cylinder.modulus, "tau0_over_E", "Pa")
     contact = cylinder._for_load("normal_load", F)
     a = float(contact.contact_half_width)
+    if coulomb:
+        _check_hertz_width("normal_load", F, a / cylinder.radius, cylinder.radius)
     return F, a, fr, coulomb, contact
 
 
-def _history_solve(cylinder, normal_load, stress, coefficient, loads, constant, coulomb, method):
+def _history_solve(
+    cylinder, normal_load, stress, coefficient, name, loads, constant, coulomb, method
+):
     """``(F, a, full-slip load, result, law)``: ``loads`` [N/m] through the nondimensional call.
 
     ``constant(tau0/E, loads/(E a))`` or ``coulomb(mu, a/R, loads/(mu F))``; ``law`` is
-    ``"constant"`` or ``"coulomb"``.
+    ``"constant"`` or ``"coulomb"``. The loads are refused beyond the solvers' domain here,
+    as ``name`` [N/m] (the nondimensional call would name its group).
     """
+    from ..tangential.history import _T_LIMIT
+
     F, a, fr, is_coulomb, _ = _history_contact(cylinder, normal_load, stress, coefficient)
+    E = cylinder.modulus
+    unit, words = (
+        (fr * F, _domain.SCALE_WORDS["T_over_muF"])
+        if is_coulomb
+        else (E * a, _domain.SCALE_WORDS["T_over_Ea"])
+    )
+    with np.errstate(over="ignore"):
+        bad = ~(np.abs(loads) <= _T_LIMIT * unit)
+    if np.any(bad):
+        raise ValueError(
+            f"{name} must be at most {_T_LIMIT * unit:.6g} N/m in magnitude ({_T_LIMIT:g} "
+            f"{words}, the domain of the solvers), got {float(loads[bad].flat[0])!r}"
+        )
     if is_coulomb:
         r = coulomb(fr, a / cylinder.radius, loads / (fr * F), method=method)
         full = fr * F
     else:
-        E = cylinder.modulus
         r = constant(fr / E, loads / (E * a), method=method)
         full = 2 * a * fr
     return F, a, full, r, "coulomb" if is_coulomb else "constant"
@@ -537,6 +586,7 @@ def _tangential_history(
         normal_load,
         friction_stress,
         friction_coefficient,
+        "tangential_load",
         T,
         tangential_history,
         tangential_history_coulomb,
@@ -600,6 +650,7 @@ def _cyclic_loss(
         normal_load,
         friction_stress,
         friction_coefficient,
+        "amplitude",
         A,
         cyclic_loss,
         cyclic_loss_coulomb,

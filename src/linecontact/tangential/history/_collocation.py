@@ -157,7 +157,9 @@ def _root(force, nn: int, guess: float) -> float:
     return float(brentq(force, 1e-300, 1.0, **kw))
 
 
-def _incremental(law: _Law, loads: NDArray, n: int) -> dict[str, Any]:
+def _incremental(
+    law: _Law, loads: NDArray, n: int, stop_tol: float | None = None
+) -> dict[str, Any]:
     """Solve the stick condition at each step from the previous state (no memory rule).
 
     Step ``j`` moves the load monotonically to ``T_j``, in the direction ``s``. Unknown:
@@ -167,6 +169,10 @@ def _incremental(law: _Law, loads: NDArray, n: int) -> dict[str, Any]:
     ``H phi = (s_prev - s) HB + sum of H psi_k over the replaced parts`` on ``|x| < c``
     (smooth: each replaced part is evaluated inside its own interval), bounded at ``+-c``.
     ``c`` is the root of the force balance.
+
+    With ``stop_tol``, the solve stops after the first step that misses it (its error
+    estimate or a residual above it, as the caller's ``tol``): the steps after it are
+    left unsolved, for a caller that raises on that step.
     """
     check_t = np.cos(np.pi * (np.arange(16) + 0.25) / 16)
     gl_x, gl_w = np.polynomial.legendre.leggauss(_N_GAUSS)
@@ -285,6 +291,10 @@ def _incremental(law: _Law, loads: NDArray, n: int) -> dict[str, Any]:
         res_adm[j] = viol
         s_prev, parts_prev, d_prev = s, parts, int(s)
         r_prev = math.copysign(1.0, r) if slid else r
+        if stop_tol is not None and not (
+            tail[j] <= stop_tol and max(res_stick[j], res_adm[j]) <= max(stop_tol, 1e-10)
+        ):
+            break
     return dict(
         sign=sign,
         c=c_out,
