@@ -1,22 +1,30 @@
 """Sphinx configuration of the linecontact documentation site.
 
 Build (the README's line): ``python -m pip install '.[docs]' && python -m sphinx -W -b html
-docs docs/_build/html``. The API reference is every name of ``linecontact.__all__``
-(``api.rst``, written here), the command-line reference every subcommand's ``--help``
-(``cli-reference.md``, written here from the parsers), the gallery ``examples/`` run at build
-time (sphinx-gallery); the theory pages are the Markdown files beside this one.
+docs docs/_build/html``; then ``.ci/check-site docs/_build/html`` checks its links and that
+nothing is loaded from another host. Written here when the site is built: the API reference
+grouped by task (``api.rst``), the command-line reference from the parsers
+(``cli-reference.md``) and what ``linecontact cite`` prints (``generated/cite*.txt``). The
+gallery is ``examples/`` run at build time (sphinx-gallery; ``_gallery.py`` gives each
+example a figure path and shows the figure it saved). The maths is typeset by a copy of
+MathJax served with the site (``_static/mathjax``, from the PyPI package
+``sphinx-mathjax-offline``): no page needs the internet.
 """
 
 from __future__ import annotations
 
 import contextlib
+import importlib.util
 import io
 import os
+import shutil
 import sys
 
 import linecontact
 
 sys.path.insert(0, os.path.dirname(__file__))  # _gallery (the examples' command lines)
+
+import _gallery  # noqa: E402
 
 project = "linecontact"
 author = "linecontact developers"
@@ -37,45 +45,220 @@ source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 exclude_patterns = ["_build", "images", "auto_examples/*.ipynb", "auto_examples/*.py"]
 html_theme = "pydata_sphinx_theme"
 html_title = f"linecontact {release}"
+html_theme_options = {
+    # one row of short links at 1280 px; the rest under "More"
+    "header_links_before_dropdown": 7,
+    "navigation_with_keys": False,
+    "show_toc_level": 2,
+}
 numpydoc_show_class_members = False
 autosummary_generate = True
+# signatures of names only: the types are in each docstring's Parameters (numpydoc), not
+# expanded from NumPy's typing internals into the signature
+autodoc_typehints = "none"
 suppress_warnings = ["myst.header"]
 sphinx_gallery_conf = {
     "examples_dirs": "../examples",
     "gallery_dirs": "auto_examples",
     "filename_pattern": r".*\.py$",  # every example runs at build time
     "reset_argv": "_gallery.argv",  # a figure path of their own, in a temporary folder
+    "image_scrapers": ("_gallery.saved_figures",),  # the figure each example saved there
     "abort_on_example_error": True,
     "download_all_examples": False,
     "plot_gallery": "True",
+    "remove_config_comments": True,
 }
 
 HERE = os.path.dirname(__file__)
 
+# MathJax 3, served with the site (never from a CDN): the component that reads TeX and writes
+# HTML with its own fonts, and what it loads on demand (TeX extensions, the menu, a11y)
+mathjax_path = "mathjax/tex-chtml.js"
+_MATHJAX_PARTS = ("tex-chtml.js", "input", "output/chtml", "a11y", "ui", "sre", "adaptors")
+
+
+def _mathjax_source() -> str:
+    spec = importlib.util.find_spec("sphinx-mathjax-offline")
+    if spec is None or not spec.submodule_search_locations:
+        raise RuntimeError(
+            "the site serves its own MathJax: install the docs extra "
+            "(python -m pip install '.[docs]', which brings sphinx-mathjax-offline)"
+        )
+    return os.path.join(list(spec.submodule_search_locations)[0], "static", "mathjax")
+
+
+_MATHJAX = _mathjax_source()  # at configuration time: a missing copy stops the build at once
+
+
+def _copy_mathjax(app, exc) -> None:
+    if exc is not None or app.builder.format != "html":
+        return
+    dest = os.path.join(app.outdir, "_static", "mathjax")
+    for part in _MATHJAX_PARTS:
+        src, out = os.path.join(_MATHJAX, part), os.path.join(dest, part)
+        if os.path.isdir(src):
+            shutil.copytree(src, out, dirs_exist_ok=True)
+        else:
+            os.makedirs(os.path.dirname(out), exist_ok=True)
+            shutil.copy2(src, out)
+
+
+# The API reference by task: every public name once, in the order a user meets it
+API_GROUPS: list[tuple[str, str, list[str]]] = [
+    (
+        "A cylinder on a substrate (SI units)",
+        "The entry point: a wire, fibre or tube of radius ``R`` on a substrate, its materials "
+        "and its adhesion; every question below is a method of it.",
+        ["Cylinder", "Material"],
+    ),
+    (
+        "Materials and the groups of the problem",
+        "The composite modulus, the compliance constants, the adhesion's Dugdale stress and "
+        "range, and the dimensionless groups that name the regime.",
+        [
+            "composite_modulus",
+            "compliance_constants",
+            "dundurs_beta",
+            "adhesion_from_work",
+            "kappa",
+            "maugis_parameter",
+        ],
+    ),
+    (
+        "Normal contact and pull-off (nondimensional)",
+        "The contact width under a load, the whole load curve and the force that pulls it off, "
+        "in the paper's groups; Hertz and JKR for reference.",
+        [
+            "normal_contact",
+            "contact_for_load",
+            "equilibria",
+            "load_curve",
+            "non_contact",
+            "pull_off",
+            "zero_width_load",
+            "hertz_load",
+            "jkr_load",
+            "NormalContact",
+            "PullOff",
+        ],
+    ),
+    (
+        "Sliding and rolling",
+        "Steady sliding, the initiation of sliding and steady rolling, with the nano-scale "
+        "friction law (constant shear stress) or Coulomb friction.",
+        [
+            "sliding_contact",
+            "sliding_contact_for_load",
+            "sliding_pull_off",
+            "sliding_initiation",
+            "sliding_initiation_coulomb",
+            "steady_rolling",
+            "steady_rolling_coulomb",
+            "SlidingContact",
+            "SlidingPullOff",
+        ],
+    ),
+    (
+        "Load histories and the energy lost per cycle",
+        "States along a tangential load history and the energy dissipated per cycle.",
+        [
+            "tangential_history",
+            "tangential_history_coulomb",
+            "cyclic_loss",
+            "cyclic_loss_coulomb",
+        ],
+    ),
+    (
+        "A fibre pushed sideways",
+        "Whether a pushed fibre stays, rolls or slides, and a tip's push.",
+        ["push", "tip_push", "Push", "TipPush"],
+    ),
+    (
+        "From measurements to properties",
+        "The work of adhesion and the range from pull-off forces or contact widths, the shear "
+        "strength from friction, measured data with units, and uncertainties.",
+        [
+            "fit_pull_off",
+            "work_of_adhesion_from_pull_off",
+            "work_of_adhesion_from_width",
+            "shear_strength_from_friction",
+            "read_measurements",
+            "propagate",
+        ],
+    ),
+    (
+        "Parameter studies and files",
+        "A sweep over every combination of values (Dask, xarray), its store, and any file "
+        "that a subcommand writes.",
+        ["sweep", "open_sweep", "read"],
+    ),
+    (
+        "Adhesion laws",
+        "The Maugis–Dugdale step and the Lennard-Jones law, one module each, with the same "
+        "functions in the paper's groups.",
+        ["laws"],
+    ),
+    (
+        "Errors and warnings",
+        "What the library raises and warns.",
+        ["ConvergenceError", "NoEquilibriumError", "CouplingWarning", "ModelValidityWarning"],
+    ),
+    (
+        "Deprecated",
+        "Kept for older scripts; each names the method of :class:`Cylinder` that replaces it.",
+        [
+            "cylinder_cyclic_loss",
+            "cylinder_push",
+            "cylinder_sliding_initiation",
+            "cylinder_steady_rolling",
+            "cylinder_tangential_history",
+        ],
+    ),
+]
+
 
 def _api_page() -> None:
-    """``api.rst``: every name of ``linecontact.__all__``, one generated page each."""
-    names = sorted(n for n in linecontact.__all__ if not n.startswith("_"))
+    """``api.rst``: every public name of ``linecontact.__all__``, by task, one page each."""
+    public = {n for n in linecontact.__all__ if not n.startswith("_")}
+    grouped = [n for _, _, names in API_GROUPS for n in names]
+    missing, unknown = public - set(grouped), set(grouped) - public
+    dupes = {n for n in grouped if grouped.count(n) > 1}
+    if missing or unknown or dupes:
+        raise RuntimeError(
+            "docs/conf.py API_GROUPS must list every public name once: "
+            f"missing {sorted(missing)}, not public {sorted(unknown)}, twice {sorted(dupes)}"
+        )
     lines = [
         "API reference",
         "=============",
         "",
         ".. currentmodule:: linecontact",
         "",
-        "Every name in ``linecontact.__all__`` (``import linecontact as lc``).",
+        "Every public name of ``linecontact`` (``import linecontact as lc``), grouped by task. "
+        "The physical quantities are in SI units on :class:`Cylinder` and in the paper's "
+        "nondimensional groups in the functions (:doc:`nomenclature`).",
         "",
-        ".. autosummary::",
-        "   :toctree: generated",
-        "",
-        *(f"   {n}" for n in names),
     ]
+    for title, text, names in API_GROUPS:
+        lines += [title, "-" * len(title), "", text, "", ".. autosummary::"]
+        lines += ["   :toctree: generated", "   :nosignatures:", ""]
+        lines += [f"   {n}" for n in names] + [""]
     with open(os.path.join(HERE, "api.rst"), "w", encoding="utf-8") as f:
-        f.write("\n".join(lines) + "\n")
+        f.write("\n".join(lines))
+
+
+def _run_cli(*args: str) -> str:
+    from linecontact.cli import main
+
+    text = io.StringIO()
+    with contextlib.redirect_stdout(text), contextlib.suppress(SystemExit):
+        main(list(args))
+    return text.getvalue().rstrip() + "\n"
 
 
 def _cli_page() -> None:
     """``cli-reference.md``: every subcommand's ``--help``, from the parsers."""
-    from linecontact.cli import COMMANDS, main
+    from linecontact.cli import COMMANDS
 
     out = [
         "# Command-line reference",
@@ -86,13 +269,26 @@ def _cli_page() -> None:
         "",
     ]
     for name, (_, summary) in COMMANDS.items():
-        text = io.StringIO()
-        with contextlib.redirect_stdout(text), contextlib.suppress(SystemExit):
-            main([name, "--help"])
-        out += [f"## {name}", "", summary, "", "```text", text.getvalue().rstrip(), "```", ""]
+        help_text = _run_cli(name, "--help").rstrip()
+        out += [f"## {name}", "", summary, "", "```text", help_text, "```", ""]
     with open(os.path.join(HERE, "cli-reference.md"), "w", encoding="utf-8") as f:
         f.write("\n".join(out))
 
 
+def _cite_files() -> None:
+    """``generated/cite.txt`` and ``cite.bib``: what ``linecontact cite`` prints."""
+    os.makedirs(os.path.join(HERE, "generated"), exist_ok=True)
+    for name, args in (("cite.txt", ("cite",)), ("cite.bib", ("cite", "--bibtex"))):
+        with open(os.path.join(HERE, "generated", name), "w", encoding="utf-8") as f:
+            f.write(_run_cli(*args))
+
+
 _api_page()
 _cli_page()
+_cite_files()
+
+
+def setup(app) -> None:
+    """Serve MathJax with the site; the gallery's temporary folder goes when the build ends."""
+    app.connect("build-finished", _copy_mathjax)
+    app.connect("build-finished", _gallery.cleanup)

@@ -1,4 +1,4 @@
-"""A parameter study: the pull-off of a nanowire against its radius, one sweep.
+"""A parameter study: the pull-off of a nanowire against its radius, one sweep
 ============================================================================
 
 A ZnO nanowire on silica, over 40 radii for three works of adhesion, plotted from the
@@ -21,6 +21,13 @@ import warnings
 
 import linecontact as lc
 
+# %%
+# One sweep, 120 points
+# ---------------------
+# :func:`linecontact.sweep` runs a subcommand over every combination of its flags' values:
+# here 40 radii, logarithmically spaced from 10 nm to 1 µm (``start:stop:count:log``), times
+# three works of adhesion. It returns an :class:`xarray.Dataset` labelled by the swept flags.
+
 with warnings.catch_warnings():
     warnings.simplefilter("ignore", lc.CouplingWarning)  # ZnO on silica: |beta| = 0.09
     warnings.simplefilter("ignore", lc.ModelValidityWarning)  # zero widths at pull-off
@@ -33,6 +40,12 @@ with warnings.catch_warnings():
         z0=3e-10,
     )
 
+# %%
+# Reading the dataset
+# -------------------
+# Select by label: the pull-off force per unit length and its mechanism at the smallest and
+# the largest radius, for each work of adhesion.
+
 F = ds.F_pulloff_N_per_m
 print(f"{dict(ds.sizes)} points; variables: {', '.join(list(ds.data_vars)[:4])}, ...")
 for w in ds.work_of_adhesion.values:
@@ -42,6 +55,11 @@ for w in ds.work_of_adhesion.values:
         f"w = {w:g} J/m^2: pull-off {float(row[0]):.3g} N/m at R = 10 nm, "
         f"{float(row[-1]):.3g} N/m at R = 1 um; mechanism {mech[0]} -> {mech[-1]}"
     )
+
+# %%
+# The pull-off against the radius
+# -------------------------------
+# One line per work of adhesion, on logarithmic axes.
 
 if len(sys.argv) > 1:
     import matplotlib
@@ -61,4 +79,3 @@ if len(sys.argv) > 1:
     )
     ax.legend()
     fig.savefig(sys.argv[1], dpi=150)
-    print(f"wrote {sys.argv[1]}")
