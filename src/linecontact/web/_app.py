@@ -282,13 +282,42 @@ def _name(flag: str | None) -> str | None:
     return None if flag is None else flag.lstrip("-").replace("-", "_")
 
 
+def _with_warnings(body: str, said: list[str]) -> str:
+    """The command's JSON text with ``"warnings"`` (the notes the command line prints) added.
+
+    The key goes last, next to ``results``, spliced into the text (a large result is never
+    parsed again): the command's own keys and records stay exactly as ``--json`` prints them.
+    """
+    text = body.rstrip()
+    if not text.endswith("}"):  # pragma: no cover - the command's JSON is an object
+        return text
+    return text[:-1] + ', "warnings": ' + json.dumps(said) + "}"
+
+
 def _respond(out: Outcome) -> Response:
     if out.status == 200:
         headers = {"X-Linecontact-Seconds": f"{out.seconds:.6f}"}
         if out.warnings:
             headers["X-Linecontact-Warnings"] = json.dumps(out.warnings)
-        return Response(out.body + "\n", media_type="application/json", headers=headers)
+        body = _with_warnings(out.body, out.warnings)
+        return Response(body + "\n", media_type="application/json", headers=headers)
     return JSONResponse(_error(_name(out.flag), out.message), status_code=out.status)
+
+
+def _without_path(out: Outcome, path: str, given: str) -> Outcome:
+    """``out`` with the server's temporary ``path`` replaced by the name the user ``given``.
+
+    In the JSON text (where the path is a JSON string, and in the command line), the message
+    and the warnings: no answer shows a path of the server's.
+    """
+    if not path:
+        return out
+    quoted = json.dumps(path)[1:-1]
+    named = json.dumps(given)[1:-1]
+    out.body = out.body.replace(quoted, named)
+    out.message = out.message.replace(path, given)
+    out.warnings = [w.replace(path, given) for w in out.warnings]
+    return out
 
 
 class _RequestError(Exception):
@@ -357,7 +386,8 @@ class _Job:
         if out.warnings:
             doc["warnings"] = out.warnings
         head = json.dumps(doc)  # the result's text spliced in: never parsed here
-        self._text = (head[:-1] + ', "result": ' + out.body.strip() + "}").encode()
+        result = _with_warnings(out.body, out.warnings)
+        self._text = (head[:-1] + ', "result": ' + result + "}").encode()
 
     def cancel(self) -> None:
         """Cancel it: a queued job never runs, a running one's worker is ended and replaced."""
@@ -529,16 +559,21 @@ def create_app(
             )
         return is_slow(command, argv) or points > SLOW_POINTS
 
-    async def upload(request: Request, tmpdir: str) -> list[str]:
-        """``--data FILE`` for an uploaded CSV (a temporary file of the server's)."""
+    async def upload(request: Request, tmpdir: str) -> tuple[list[str], str, str]:
+        """``--data FILE`` for an uploaded CSV (a temporary file of the server's).
+
+        Also the file's path and the name the user gave it, which replaces the path in what
+        the user reads (a server's path is never shown).
+        """
         form = await request.form()
         f = form.get("data")
         if f is None or isinstance(f, str):
-            return []
+            return [], "", ""
         data = await f.read()
         path = Path(tmpdir) / "data.csv"
         path.write_bytes(data)
-        return ["--data", str(path)]
+        given = Path(str(f.filename or "")).name or "the uploaded file"
+        return ["--data", str(path)], str(path), given
 
     async def parsed(request: Request) -> tuple[str, list[str], bool]:
         command = request.path_params["command"]
@@ -558,8 +593,9 @@ def create_app(
         if not request.headers.get("content-type", "").startswith("multipart/form-data"):
             return _respond(await pool.run(command, argv, slow=slow))
         with tempfile.TemporaryDirectory(prefix="upload-", dir=pool.root) as tmpdir:
-            argv += await upload(request, tmpdir)
-            return _respond(await pool.run(command, argv, slow=slow))
+            data, path, given = await upload(request, tmpdir)
+            out = await pool.run(command, [*argv, *data], slow=slow)
+            return _respond(_without_path(out, path, given))
 
     async def start_job(request: Request) -> Response:
         try:

@@ -25,144 +25,218 @@ UNITS: dict[str, list[tuple[str, float]]] = {
     "modulus": [("GPa", 1e9), ("MPa", 1e6), ("Pa", 1.0)],
     "stress": [("MPa", 1e6), ("GPa", 1e9), ("Pa", 1.0)],
     "work": [("J/m^2", 1.0), ("mJ/m^2", 1e-3)],
-    "force": [("N/m", 1.0), ("nN/um", 1e-3)],
+    "force": [("N/m", 1.0), ("mN/m", 1e-3), ("nN/um", 1e-3)],
+    "energy": [("J/m", 1.0), ("nJ/m", 1e-9), ("pJ/m", 1e-12)],
     "none": [("", 1.0)],
 }
 
-#: The Python line that builds the wire of a page (its fields by name).
-_CYL = (
-    "cyl = lc.Cylinder.from_presets({radius}, {cylinder_material!r}, {substrate_material!r}, "
-    "work_of_adhesion={work_of_adhesion}, equilibrium_spacing={z0})\n"
-)
-
 
 def _f(name: str, label: str, kind: str = "none", default: str = "", **kw: Any) -> dict[str, Any]:
+    """A field of a page's form.
+
+    Its request name, its label (the words its messages use), its kind of unit, its default
+    in SI units; ``many`` (several values, comma-separated), ``unit`` (the unit first
+    chosen), ``alt`` (``group:option``: shown when that option is chosen), ``aux`` (a field
+    of the page's second request: the map's wire), ``optional``.
+    """
     return {"name": name, "label": label, "kind": kind, "default": default, **kw}
 
 
 _WIRE = [
-    _f("cylinder_material", "cylinder (wire) material", "material", "ZnO"),
+    _f("cylinder_material", "wire material", "material", "ZnO"),
     _f("substrate_material", "substrate material", "material", "SiO2"),
     _f("radius", "radius R", "length", "5e-08"),
     _f("work_of_adhesion", "work of adhesion w", "work", "0.3"),
     _f("z0", "equilibrium spacing z0", "length", "3e-10"),
 ]
 
-#: The pages: path -> title, command, fields, fixed parameters, plot, Python lines.
+_LENGTH = _f("length", "wire length L (optional)", "length", "", unit="um", optional=True)
+
+#: The pages: path -> title, what it answers, command, fields, fixed parameters, plot.
+#: The headline (the answer in words) and the Python lines of each page are written by
+#: ``static/app.js``, by the page's name.
 PAGES: dict[str, dict[str, Any]] = {
     "pulloff": {
         "title": "Contact and pull-off of a wire",
+        "question": "How hard must the wire be pulled to come off the substrate?",
         "command": "pulloff",
-        "fields": [*_WIRE, _f("length", "wire length (optional)", "length", "")],
-        "headline": {
-            "F_pulloff_N_per_m": "pull-off force per length",
-            "F_pulloff_total_N": "pull-off force on the wire",
-            "a_at_pulloff_m": "contact half-width at pull-off",
-            "mechanism": "mechanism",
-        },
-        "python": (_CYL + "print(cyl.pull_off())"),
+        "fields": [*_WIRE, {**_LENGTH, "default": "5e-06"}],
         "plot": None,
     },
     "contact": {
         "title": "Contact width under a load",
+        "question": "How wide is the contact under these loads?",
         "command": "normal",
-        "fields": [*_WIRE, _f("load", "normal loads F (comma-separated)", "force", "0,1,5,10")],
-        "python": (_CYL + "print(cyl.contact(load=[{load}]))"),
-        "plot": {"x": "F_N_per_m", "y": "a_m", "xlabel": "load F [N/m]", "ylabel": "a [m]"},
+        "fields": [
+            *_WIRE,
+            _f("load", "normal loads F (comma-separated)", "force", "0,1,5,10", many=True),
+        ],
+        "plot": {
+            "x": {"key": "F_N_per_m", "kind": "force", "label": "load F"},
+            "ys": [{"key": "a_m", "kind": "length", "label": "contact half-width a"}],
+        },
     },
     "curve": {
         "title": "The load curve",
+        "question": "How does the load change with the contact width, and where does it pull off?",
         "command": "curve",
         "fields": list(_WIRE),
-        "python": (_CYL + "print(cyl.load_curve())"),
-        "plot": {"x": "a_m", "y": "F_N_per_m", "xlabel": "a [m]", "ylabel": "load F [N/m]"},
+        "plot": {
+            "x": {"key": "a_m", "kind": "length", "label": "contact half-width a"},
+            "ys": [{"key": "F_N_per_m", "kind": "force", "label": "load F"}],
+        },
     },
     "push": {
         "title": "A wire pushed sideways: stay, roll or slide",
+        "question": "Pushed sideways at a height H, does the wire roll or slide first, and at "
+        "what push?",
         "command": "push",
-        "fields": [
-            _f("cylinder_material", "cylinder (wire) material", "material", "ZnO"),
-            _f("substrate_material", "substrate material", "material", "SiO2"),
-            _f("radius", "radius R", "length", "5e-08"),
-            _f("work_of_adhesion_advancing", "work of adhesion w", "work", "0.3"),
-            _f("z0", "equilibrium spacing z0", "length", "3e-10"),
-            _f("h1_over_h2", "receding over advancing range h1/h2", "none", "1"),
-            _f("tau0", "interfacial shear strength tau0", "stress", "1e7"),
-            _f("height", "push heights H (comma-separated)", "length", "5e-09,2.5e-08,5e-08,1e-07"),
-            _f("push", "a push Q (optional): stay, roll or slide?", "force", ""),
-        ],
-        "motion": True,
-        "python": (
-            "cyl = lc.Cylinder.from_presets({radius}, {cylinder_material!r}, "
-            "{substrate_material!r}, work_of_adhesion={work_of_adhesion_advancing}, "
-            "equilibrium_spacing={z0})\nprint(cyl.push(friction_stress={tau0}, "
-            "height=[{height}]))"
-        ),
-        "plot": {
-            "x": "H_m",
-            "y": "Q_onset_N_per_m",
-            "xlabel": "push height H [m]",
-            "ylabel": "push to start moving Q [N/m]",
+        "alts": {
+            "elastic": {
+                "label": "elasticity from",
+                "options": [["presets", "the materials"], ["modulus", "a composite modulus E"]],
+            },
+            "adhesion": {
+                "label": "adhesion given as",
+                "options": [
+                    ["works", "receding and advancing works of adhesion"],
+                    ["ranges", "adhesive stress and ranges (sigma0, h2, h1)"],
+                ],
+            },
+            "pusher": {
+                "label": "pushed by",
+                "options": [["flat", "a flat push at heights H"], ["tip", "a tip at heights H"]],
+            },
         },
-    },
+        "fields": [
+            _f("cylinder_material", "wire material", "material", "ZnO", alt="elastic:presets"),
+            _f(
+                "substrate_material",
+                "substrate material",
+                "material",
+                "SiO2",
+                alt="elastic:presets",
+            ),
+            _f("modulus", "composite modulus E", "modulus", "4.8e10", alt="elastic:modulus"),
+            _f("radius", "radius R", "length", "5e-08"),
+            _f(
+                "work_of_adhesion_receding",
+                "receding work of adhesion w1 (opening edge)",
+                "work",
+                "0.6",
+                alt="adhesion:works",
+            ),
+            _f(
+                "work_of_adhesion_advancing",
+                "advancing work of adhesion w2 (closing edge)",
+                "work",
+                "0.3",
+                alt="adhesion:works",
+            ),
+            _f("z0", "equilibrium spacing z0", "length", "3e-10", alt="adhesion:works"),
+            _f("sigma0", "adhesive stress sigma0", "stress", "1e8", alt="adhesion:ranges"),
+            _f("h2", "advancing range h2", "length", "3e-10", alt="adhesion:ranges"),
+            _f("h1", "receding range h1", "length", "6e-10", alt="adhesion:ranges"),
+            _f("tau0", "interfacial shear strength tau0", "stress", "1e7"),
+            _f(
+                "height",
+                "push heights H (comma-separated, 0 to 2R)",
+                "length",
+                "1e-08,2e-08,3e-08,4e-08,5e-08,6e-08,7e-08,8e-08,9e-08,1e-07",
+                many=True,
+                alt="pusher:flat",
+            ),
+            _f(
+                "tip_height",
+                "tip heights H (comma-separated, between 0 and 2R)",
+                "length",
+                "1e-08,2e-08,3e-08,4e-08,5e-08,6e-08,7e-08,8e-08,9e-08",
+                many=True,
+                alt="pusher:tip",
+            ),
+            _f("tip_friction", "tip friction coefficient", "none", "0.3", alt="pusher:tip"),
+            _f("load", "normal load F (optional)", "force", "", optional=True),
+            _f("push", "a push Q (optional): stay, roll or slide?", "force", "", optional=True),
+            {**_LENGTH, "default": "5e-06"},
+        ],
+        "plot": {
+            "x": {"key": "H_m", "kind": "length", "label": "push height H"},
+            "ys": [
+                {"key": "Q_roll_N_per_m", "kind": "force", "label": "to roll, Q_roll"},
+                {"key": "Q_slide_N_per_m", "kind": "force", "label": "to slide, Q_slide"},
+            ],
+            "ylabel": "push Q",
+        },
+    },  # fmt: skip
     "cycle": {
         "title": "Energy lost per cycle",
+        "question": "How much energy does a tangential cycle of this amplitude dissipate?",
         "command": "cycle",
         "fields": [
             *_WIRE,
             _f("load", "normal load F", "force", "1"),
             _f("tau0", "interfacial shear strength tau0", "stress", "1e7"),
-            _f("tangential_amplitude", "amplitudes T*", "force", "0.01,0.02,0.04,0.06"),
-        ],
-        "python": (
-            _CYL + "print(cyl.cyclic_loss(normal_load={load}, "
-            "friction_stress={tau0}, amplitude=[{tangential_amplitude}]))"
-        ),
+            _f(
+                "tangential_amplitude",
+                "amplitudes T* (comma-separated)",
+                "force",
+                "0.01,0.02,0.04,0.06",
+                many=True,
+            ),
+        ],  # fmt: skip
         "plot": {
-            "x": "T_amplitude_N_per_m",
-            "y": "W_J_per_m",
-            "xlabel": "amplitude T* [N/m]",
-            "ylabel": "energy lost per cycle W [J/m]",
+            "x": {"key": "T_amplitude_N_per_m", "kind": "force", "label": "amplitude T*"},
+            "ys": [{"key": "W_J_per_m", "kind": "energy", "label": "energy lost per cycle W"}],
         },
     },
     "lennard-jones": {
         "title": "The Lennard-Jones law: pull-off",
+        "question": "The pull-off under the full Lennard-Jones law (not Dugdale's step).",
         "command": "pulloff",
         "fixed": {"law": "lennard-jones"},
         "fields": list(_WIRE),
-        "headline": {
-            "F_pulloff_N_per_m": "pull-off force per length",
-            "mu": "Tabor-like parameter mu of the law",
-            "method": "method",
-        },
-        "python": (_CYL + "print(cyl.lennard_jones_pull_off())"),
         "plot": None,
     },
     "fit": {
         "title": "Work of adhesion from pull-off forces (CSV upload)",
+        "question": "Which work of adhesion (and range z0) explain the measured pull-offs?",
         "command": "fit-adhesion",
         "upload": True,
         "fields": [
-            _f("cylinder_material", "cylinder (wire) material", "material", "SiO2"),
+            _f("cylinder_material", "wire material", "material", "SiO2"),
             _f("substrate_material", "substrate material", "material", "Si"),
-        ],
-        "python": "fit = lc.fit_pull_off(...)  # see examples/fit_pull_off.py",
-        "plot": None,
+            _f(
+                "z0",
+                "equilibrium spacing z0 (optional: fixed if given)",
+                "length",
+                "",
+                optional=True,
+            ),
+        ],  # fmt: skip
+        "plot": {
+            "x": {"key": "radius_m", "kind": "length", "label": "radius R"},
+            "ys": [{"key": "F_N_per_m", "kind": "force", "label": "pull-off force"}],
+        },
     },
     "map": {
         "title": "The adhesion map (quick grid), your wire marked",
+        "question": "Which model (Hertz, rigid, JKR, Maugis-Dugdale) holds for your wire?",
         "command": "map",
         "fixed": {"quick": "true"},
         "job": True,
         "fields": [{**f, "aux": True} for f in _WIRE],
-        "python": "from linecontact.adhesion_map import adhesion_map",
         "plot": {
-            "x": "maugis_parameter",
-            "y": "load_above_pulloff_over_abs_pulloff",
-            "xlabel": "Maugis parameter",
-            "ylabel": "load above pull-off / |pull-off|",
+            "x": {"key": "maugis_parameter", "kind": "none", "label": "Maugis parameter"},
+            "ys": [
+                {
+                    "key": "load_above_pulloff_over_abs_pulloff",
+                    "kind": "none",
+                    "label": "load above pull-off / |pull-off|",
+                }
+            ],
             "points": True,
             "color": "agrees_md",
+            "legend": "blue: Maugis-Dugdale agrees with the full law, grey: it does not",
         },
         "mark": {"command": "pulloff", "key": "maugis_parameter", "label": "your wire"},
     },
@@ -205,19 +279,36 @@ def _field(f: dict[str, Any]) -> str:
         control = f"<select id='f-{name}' name='{name}'>{opts}</select>"
     else:
         control = (
-            f"<input id='f-{name}' name='{name}' data-kind='{kind}' data-default="
-            f"'{html.escape(f['default'])}' autocomplete='off'>"
+            f"<input id='f-{name}' name='{name}' data-kind='{kind}' inputmode='decimal' "
+            f"data-default='{html.escape(f['default'])}' autocomplete='off' spellcheck='false'>"
         )
         if len(UNITS[kind]) > 1:
+            chosen = f.get("unit") or UNITS[kind][0][0]
             opts = "".join(
-                f"<option value='{factor!r}'>{html.escape(u)}</option>" for u, factor in UNITS[kind]
+                f"<option value='{html.escape(u)}'{' selected' if u == chosen else ''}>"
+                f"{html.escape(u)}</option>"
+                for u, _ in UNITS[kind]
             )
             control += (
-                f"<select class='unit' id='u-{name}' aria-label='unit of {name}'>{opts}</select>"
+                f"<select class='unit' id='u-{name}' aria-label='unit of the "
+                f"{html.escape(f['label'])}'>{opts}</select>"
             )
+        elif UNITS[kind][0][0]:
+            control += f"<span class='unit'>{html.escape(UNITS[kind][0][0])}</span>"
+    alt = f" data-alt='{html.escape(f['alt'])}'" if f.get("alt") else ""
     return (
-        f"<div class='field'>{label}<div class='control'>{control}</div>"
+        f"<div class='field' id='w-{name}'{alt}>{label}<div class='control'>{control}</div>"
         f"<div class='message' id='m-{name}' role='alert'></div></div>"
+    )
+
+
+def _alternative(group: str, a: dict[str, Any]) -> str:
+    opts = "".join(
+        f"<option value='{html.escape(v)}'>{html.escape(text)}</option>" for v, text in a["options"]
+    )
+    return (
+        f"<div class='field choice'><label for='a-{group}'>{html.escape(a['label'])}</label>"
+        f"<div class='control'><select id='a-{group}' class='alt'>{opts}</select></div></div>"
     )
 
 
@@ -228,13 +319,20 @@ def _json_in_html(obj: Any) -> str:
 
 
 def page_html(name: str) -> str:
-    """The page ``name``: its form, and empty places for the results."""
+    """The page ``name``: its question, its form, and empty places for the answer."""
     p = PAGES[name]
-    keys = ("command", "fixed", "plot", "python", "job", "upload", "mark", "motion", "headline")
+    keys = ("command", "fixed", "plot", "job", "upload", "mark", "alts")
     spec = {k: p.get(k) for k in keys}
+    spec["page"] = name
+    spec["units"] = UNITS
     spec["fields"] = [
-        {k: f.get(k) for k in ("name", "kind", "default", "aux")} for f in p["fields"]
+        {
+            k: f.get(k)
+            for k in ("name", "label", "kind", "default", "aux", "many", "alt", "optional")
+        }
+        for f in p["fields"]
     ]
+    alts = "".join(_alternative(g, a) for g, a in (p.get("alts") or {}).items())
     fields = "".join(_field(f) for f in p["fields"])
     upload = (
         "<div class='field'><label for='f-data'>measurements (CSV, units in the header)</label>"
@@ -245,12 +343,16 @@ def page_html(name: str) -> str:
     )
     return (
         _head(p["title"]) + f"<h1>{html.escape(p['title'])}</h1>"
+        f"<p class='question'>{html.escape(p['question'])}</p>"
         f"<script type='application/json' id='spec'>{_json_in_html(spec)}</script>"
-        f"<form id='form' novalidate>{fields}{upload}"
+        f"<form id='form' novalidate>{alts}{fields}{upload}"
         "<div class='buttons'><button type='submit' id='go'>Compute</button>"
         "<button type='button' id='cancel' hidden>Cancel</button></div></form>"
         "<div id='status' role='status'></div><div id='form-error' class='error'></div>"
-        "<section id='results'></section><figure id='plot'></figure><figure id='motion'></figure>"
+        "<section id='answer' aria-live='polite'></section>"
+        "<figure id='plot'></figure><figure id='motion'></figure>"
+        "<details id='details'><summary>All values: the table, the nondimensional groups and "
+        "the solver's diagnostics</summary><section id='results'></section></details>"
         "<div id='downloads'></div>"
         "<section id='equivalent'><h2>The same elsewhere</h2><pre id='cli'></pre>"
         "<pre id='py'></pre></section>"

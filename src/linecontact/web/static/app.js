@@ -1,103 +1,405 @@
-// linecontact calculator: the form, the API call, the results, the plot. No dependencies.
+// linecontact calculator: the form, the API call, the answer, the plot. No dependencies.
 "use strict";
 (function () {
-  const spec = JSON.parse(document.getElementById("spec").textContent);
-  const form = document.getElementById("form");
   const $ = (id) => document.getElementById(id);
-  let last = null; // the last JSON result
+  const spec = JSON.parse($("spec").textContent);
+  const UNITS = spec.units; // kind -> [[unit, factor to SI], ...], the first the default
+  const SI_UNIT = { length: "m", modulus: "Pa", stress: "Pa", work: "J/m^2", force: "N/m", energy: "J/m" };
+  const form = $("form");
+  const fields = Object.fromEntries(spec.fields.map((f) => [f.name, f]));
   let job = null;
 
-  function factor(name) {
+  // ---------------------------------------------------------------------------------------
+  // units and numbers
+
+  // the unit chosen for a field: [label, factor to SI]
+  function unitOf(name) {
+    const f = fields[name];
+    const kind = f ? f.kind : "none";
     const u = $("u-" + name);
-    return u ? parseFloat(u.value) : 1.0;
+    const list = UNITS[kind] || [["", 1]];
+    return (u && list.find((x) => x[0] === u.value)) || list[0];
+  }
+  // the unit of a kind on this page: that of the first shown field of the kind, or its default
+  function unitOfKind(kind, prefer) {
+    for (const name of [...(prefer || []), ...spec.fields.map((f) => f.name)]) {
+      const f = fields[name];
+      if (f && f.kind === kind && active(f) && $("u-" + name)) return unitOf(name);
+    }
+    return (UNITS[kind] || [["", 1]])[0];
+  }
+  // 4 significant digits (5 in the table), exponents only far from 1
+  function fmt(v, digits = 4) {
+    if (typeof v !== "number") return v === null || v === undefined ? "—" : String(v);
+    if (!Number.isFinite(v)) return v > 0 ? "∞" : v < 0 ? "−∞" : "—";
+    const a = Math.abs(v);
+    if (a !== 0 && (a < 1e-3 || a >= 1e6)) return v.toExponential(digits - 1).replace(/\.?0+e/, "e");
+    return String(Number(v.toPrecision(digits)));
+  }
+  // an SI value in the unit chosen for its kind: "3.922 nm"
+  function qty(si, kind, prefer) {
+    const [u, f] = unitOfKind(kind, prefer);
+    return fmt(si / f) + (u ? " " + u : "");
+  }
+  // a force on the whole wire [N], with the prefix that reads best
+  function newtons(si) {
+    const a = Math.abs(si);
+    for (const [u, f] of [["N", 1], ["mN", 1e-3], ["µN", 1e-6], ["nN", 1e-9], ["pN", 1e-12]]) {
+      if (a >= f) return fmt(si / f) + " " + u;
+    }
+    return fmt(si / 1e-15) + " fN";
+  }
+  // a value with its record key and full precision
+  function val(key, si, text) {
+    const s = document.createElement("span");
+    s.className = "value";
+    s.dataset.key = key;
+    s.dataset.value = si === null || si === undefined ? "null" : String(si);
+    s.textContent = text;
+    return s;
+  }
+  // an SI value as the command line and Python take it: 15 digits, the shortest text
+  function siText(x) {
+    const v = Number(x.toPrecision(15));
+    const a = Math.abs(v);
+    return a !== 0 && (a < 1e-3 || a >= 1e6) ? v.toExponential().replace("e+", "e") : String(v);
   }
   function show(v) { return Number.isFinite(v) ? String(+v.toPrecision(12)) : String(v); }
 
-  // the page's state: its query string, in SI units, named as the CLI flags
-  function fill() {
-    const q = new URLSearchParams(location.search);
+  // ---------------------------------------------------------------------------------------
+  // the form: alternatives, parsing, the page's state in its link
+
+  function active(f) {
+    if (!f.alt) return true;
+    const [g, opt] = f.alt.split(":");
+    const sel = $("a-" + g);
+    return !sel || sel.value === opt;
+  }
+  function showAlternatives() {
     for (const f of spec.fields) {
-      const el = $("f-" + f.name);
-      if (!el) continue;
-      const given = q.has(f.name) ? q.getAll(f.name).join(",") : f.default;
-      if (f.kind === "material") { if (given) el.value = given; continue; }
-      el.value = given === "" ? "" : given.split(",").map((x) => show(parseFloat(x) / factor(f.name))).join(",");
+      const w = $("w-" + f.name);
+      if (w) w.hidden = !active(f);
     }
   }
-  for (const f of spec.fields) {
-    const u = $("u-" + f.name);
-    if (!u) continue;
-    let before = factor(f.name);
-    u.addEventListener("change", () => {
-      const el = $("f-" + f.name);
-      const now = factor(f.name);
-      if (el.value.trim() !== "") {
-        el.value = el.value.split(",").map((x) => show(parseFloat(x) * before / now)).join(",");
+  for (const g of Object.keys(spec.alts || {})) $("a-" + g).addEventListener("change", showAlternatives);
+
+  const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
+  const WITH_UNIT = /^([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*([^\d\s.,+-].*)$/;
+  const norm = (u) => u.toLowerCase().replace(/[µμ]/g, "u").replace(/²/g, "^2").replace(/\s+/g, "");
+
+  // a field's values in SI units, or the message that says what is wrong, in its words
+  function parse(f) {
+    const el = $("f-" + f.name);
+    const raw = el.value.trim();
+    if (f.kind === "material") return { values: [raw] };
+    if (raw === "") return { values: [] };
+    const [unit, factor] = unitOf(f.name);
+    const inUnit = unit ? ` (in ${unit}, the unit chosen beside it)` : "";
+    if (!f.many && /^[+-]?\d*,\d+$/.test(raw)) {
+      return { error: `“${raw}” has a decimal comma: write ${raw.replace(",", ".")}, with a point${inUnit}` };
+    }
+    let tokens = f.many ? raw.split(/\s*[,;]\s*/) : [raw];
+    if (f.many) tokens = tokens.flatMap((t) => (t.split(/\s+/).every((x) => NUMBER.test(x)) ? t.split(/\s+/) : [t]));
+    tokens = tokens.filter((t) => t !== "");
+    const values = [];
+    for (const t of tokens) {
+      if (NUMBER.test(t)) {
+        const v = Number(t);
+        if (!Number.isFinite(v * factor)) return { error: `${t} ${unit} is too large a number for the ${f.label}` };
+        values.push(siText(v * factor));
+        continue;
       }
-      before = now;
-    });
+      const m = WITH_UNIT.exec(t);
+      if (m) {
+        const known = (UNITS[f.kind] || []).find((u) => u[0] && norm(u[0]) === norm(m[2]));
+        if (known) {
+          return { error: `type the number alone (${m[1]}) and choose ${known[0]} in the list beside it: “${t}” is not a number` };
+        }
+        const units = (UNITS[f.kind] || []).map((u) => u[0]).filter(Boolean);
+        return { error: `“${t}” is not a number: the ${f.label} is a number` + (units.length ? `, its unit (${units.join(", ")}) chosen beside it` : "") };
+      }
+      return { error: `“${t}” is not a number${inUnit}` };
+    }
+    if (!f.many && values.length > 1) return { error: `the ${f.label} takes one value, got ${values.length} (“${raw}”)` };
+    return { values };
   }
 
-  function params(aux) {
-    const p = new URLSearchParams();
+  // the inputs in SI units by name (the active fields of the page's command, or the marked point's)
+  function inputs(aux) {
+    const out = {};
+    const errors = {};
     for (const f of spec.fields) {
-      if (Boolean(f.aux) !== Boolean(aux)) continue; // a field of the marked point, or of the page's command
-      const el = $("f-" + f.name);
-      const raw = el.value.trim();
-      if (raw === "") continue;
-      if (f.kind === "material") { p.append(f.name, raw); continue; }
-      const vals = raw.split(",").map((x) => x.trim()).filter((x) => x !== "");
-      const si = vals.map((x) => {
-        const v = Number(x);
-        return Number.isFinite(v) ? String(Number((v * factor(f.name)).toPrecision(15))) : x; // the server names a bad one
-      });
-      p.append(f.name, si.join(","));
+      if (!active(f) || Boolean(f.aux) !== Boolean(aux)) continue;
+      const got = parse(f);
+      if (got.error) errors[f.name] = got.error;
+      else if (got.values.length) out[f.name] = got.values;
     }
+    return { values: out, errors };
+  }
+  function params(values, aux) {
+    const p = new URLSearchParams();
+    for (const [k, v] of Object.entries(values)) p.append(k, v.join(","));
     if (!aux) for (const [k, v] of Object.entries(spec.fixed || {})) p.append(k, v);
     return p;
   }
 
+  // the link's query: the inputs in SI units, named as the CLI flags; units as u.NAME
+  function fill() {
+    const q = new URLSearchParams(location.search);
+    const linked = [...q.keys()].some((k) => k in fields);
+    for (const [g, a] of Object.entries(spec.alts || {})) { // the alternative the link gives
+      for (const [opt] of a.options) {
+        if (spec.fields.some((f) => f.alt === `${g}:${opt}` && f.kind !== "material" && q.has(f.name))) $("a-" + g).value = opt;
+      }
+    }
+    for (const f of spec.fields) {
+      const el = $("f-" + f.name);
+      if (!el) continue;
+      const u = $("u-" + f.name);
+      if (u && q.has("u." + f.name) && (UNITS[f.kind] || []).some((x) => x[0] === q.get("u." + f.name))) u.value = q.get("u." + f.name);
+      const given = q.has(f.name) ? q.getAll(f.name).join(",") : linked && f.kind !== "material" ? "" : f.default;
+      if (f.kind === "material") { if (given) el.value = given; continue; }
+      const factor = unitOf(f.name)[1];
+      el.value = given === "" ? "" : given.split(",").map((x) => (NUMBER.test(x.trim()) ? show(parseFloat(x) / factor) : x)).join(f.many ? ", " : ",");
+    }
+    showAlternatives();
+  }
+
+  // ---------------------------------------------------------------------------------------
+  // messages: beside the field, in its words and unit
+
   function clearMessages() {
-    for (const m of document.querySelectorAll(".message")) m.textContent = "";
+    for (const m of document.querySelectorAll(".message")) { m.textContent = ""; m.className = "message"; }
     for (const el of document.querySelectorAll(".invalid")) el.classList.remove("invalid");
     $("form-error").textContent = "";
   }
+  const flagName = (flag) => flag.replace(/^--/, "").replace(/-/g, "_");
 
+  // the command line's words as the page's: flags as labels, SI values in the units chosen
+  function inWords(text) {
+    let t = text.replace(/\s*\(linecontact takes SI units[^)]*\)/g, "");
+    t = t.replace(/(--[A-Za-z][\w-]*)\s*(?:=\s*)?(-?[\d.]+(?:e[+-]?\d+)?)\s+(m|Pa|J\/m\^2|N\/m)\b/g, (all, flag, num, unit) => {
+      const f = fields[flagName(flag)];
+      if (!f || SI_UNIT[f.kind] !== unit) return all;
+      const [u, factor] = unitOf(f.name);
+      return `${f.label} = ${fmt(parseFloat(num) / factor)} ${u}`;
+    });
+    t = t.replace(/\b(-?[\d.]+(?:e[+-]?\d+)?) (m|Pa|J\/m\^2|N\/m)\b/g, (all, num, unit) => {
+      const kind = Object.keys(SI_UNIT).find((k) => SI_UNIT[k] === unit && unitOfKind(k)[0]);
+      if (!kind) return all;
+      return qty(parseFloat(num), kind);
+    });
+    t = t.replace(/(--[A-Za-z][\w-]*) \/ (--[A-Za-z][\w-]*) must be in \[([^\]]+)\] \(the domain of the solvers\)/g,
+      (all, a, b, range) => {
+        const [fa, fb] = [fields[flagName(a)], fields[flagName(b)]];
+        return `the ratio ${fa ? fa.label : a} / ${fb ? fb.label : b} must be within [${range}] (the solvers' domain)`;
+      });
+    t = t.replace(/is (--[A-Za-z][\w-]*) in metres\?/g, (all, flag) => {
+      const f = fields[flagName(flag)];
+      return f ? `is the ${f.label} in ${unitOf(f.name)[0]}?` : all;
+    });
+    t = t.replace(/--[A-Za-z][\w-]*/g, (flag) => {
+      const f = fields[flagName(flag)];
+      return f ? `the ${f.label}` : flag.replace(/^--/, "").replace(/-/g, " ");
+    });
+    return t.replace(/\bthe the\b/g, "the").replace(/^the /, "The ");
+  }
+  // the field a message is about: the one it asks about ("is --z0 in metres?"), else its parameter
+  function fieldOf(message, parameter) {
+    const asked = /is (--[A-Za-z][\w-]*) in /.exec(message || "");
+    for (const name of [asked && flagName(asked[1]), parameter, ...((message || "").match(/--[A-Za-z][\w-]*/g) || []).map(flagName)]) {
+      if (name && fields[name] && $("m-" + name) && active(fields[name])) return name;
+    }
+    return parameter === "data" && $("m-data") ? "data" : null;
+  }
+  function say(name, text, kind) {
+    const box = $("m-" + name);
+    box.textContent = box.textContent ? box.textContent + " " + text : text;
+    box.className = "message " + kind;
+    const el = $("f-" + name);
+    if (kind === "error" && el) el.classList.add("invalid");
+  }
   function error(doc) {
     const e = (doc && doc.error) || { message: "the server gave no answer" };
-    const box = e.parameter && $("m-" + e.parameter);
-    if (box) {
-      const u = $("u-" + e.parameter);
-      const typed = $("f-" + e.parameter).value;
-      const unit = u ? " " + u.selectedOptions[0].textContent : "";
-      box.textContent = e.message + (u ? ` (in SI units; you gave ${typed}${unit})` : "");
-      $("f-" + e.parameter).classList.add("invalid");
+    const name = fieldOf(e.message, e.parameter);
+    let text = inWords(e.message || "");
+    if (name && name !== "data") {
+      const [u] = unitOf(name);
+      const typed = $("f-" + name).value.trim();
+      if (typed && fields[name].kind !== "material") text += ` (you typed ${typed}${u ? " " + u : ""})`;
+      say(name, text, "error");
+    } else if (name === "data") {
+      say("data", text, "error");
     } else {
-      $("form-error").textContent = e.message;
+      $("form-error").textContent = text;
     }
+    $("answer").textContent = "";
   }
 
+  // ---------------------------------------------------------------------------------------
+  // the answer: in words, the warnings, then the full table behind a toggle
+
+  function p(...parts) {
+    const el = document.createElement("p");
+    for (const x of parts) el.append(x);
+    return el;
+  }
+  function items(list) {
+    const ul = document.createElement("ul");
+    for (const parts of list) {
+      const li = document.createElement("li");
+      for (const x of parts) li.append(x);
+      ul.appendChild(li);
+    }
+    return ul;
+  }
+  const rec = (doc, i = 0) => (doc.results || [])[i] || {};
+  const totalOn = (r, key, L) => (L && Number.isFinite(r[key]) ? [" (", val(key, r[key], newtons(Math.abs(r[key]))), ` on ${qty(L, "length", ["length"])})`] : []);
+  const lengthOf = (doc) => (doc.parameters || {}).length_m;
+
+  function regime(lam) {
+    return lam < 0.1 ? "rigid-like (DMT): the adhesion acts outside the contact"
+      : lam > 5 ? "JKR-like: a compliant contact, the adhesion at its edge"
+      : "between DMT and JKR (the Maugis-Dugdale transition)";
+  }
+  function maugis(lam) {
+    const out = p(`Maugis parameter `, val("maugis_parameter", lam, fmt(lam)), `: ${regime(lam)}.`);
+    out.id = "regime";
+    out.dataset.key = "maugis_parameter";
+    out.dataset.value = String(lam);
+    return out;
+  }
+
+  const HEADLINES = {
+    pulloff(doc) {
+      const r = rec(doc), L = lengthOf(doc);
+      return [
+        p("It comes off at a pull of ", val("F_pulloff_N_per_m", r.F_pulloff_N_per_m, qty(Math.abs(r.F_pulloff_N_per_m), "force")),
+          ...totalOn(r, "F_pulloff_total_N", L), ` (the pull-off force per length is ${fmt(r.F_pulloff_N_per_m)} N/m, tensile), `,
+          `by the ${r.mechanism} mechanism; the contact half-width at pull-off is `,
+          val("a_at_pulloff_m", r.a_at_pulloff_m, qty(r.a_at_pulloff_m, "length", ["radius"])), "."),
+        maugis(r.maugis_parameter),
+      ];
+    },
+    "lennard-jones"(doc) {
+      const r = rec(doc);
+      return [
+        p("Under the Lennard-Jones law it comes off at a pull of ", val("F_pulloff_N_per_m", r.F_pulloff_N_per_m, qty(Math.abs(r.F_pulloff_N_per_m), "force")),
+          ` (pull-off force ${fmt(r.F_pulloff_N_per_m)} N/m; the law's parameter mu = `, val("mu", r.mu, fmt(r.mu)), `, solved by the ${r.method} method).`),
+        maugis(r.maugis_parameter),
+      ];
+    },
+    contact(doc) {
+      const rs = doc.results || [];
+      const list = rs.map((r, i) => [`under F = `, val("F_N_per_m", r.F_N_per_m, qty(r.F_N_per_m, "force", ["load"])), ": a = ",
+        val("a_m", r.a_m, qty(r.a_m, "length", ["radius"])), r.stable === false ? " (unstable branch)" : ""]);
+      return [p("The contact half-width a:"), items(list)];
+    },
+    curve(doc) {
+      const rs = doc.results || [];
+      let r = rs.find((x) => x.pulloff === true);
+      if (!r) r = rs.reduce((m, x) => (Number.isFinite(x.F_N_per_m) && (!m || x.F_N_per_m < m.F_N_per_m) ? x : m), null) || {};
+      return [p("The most tensile load it holds (the pull-off) is ", val("F_N_per_m", r.F_N_per_m, qty(r.F_N_per_m, "force")),
+        ", at a contact half-width a = ", val("a_m", r.a_m, qty(r.a_m, "length", ["radius"])), `; the curve has ${rs.length} points.`)];
+    },
+    cycle(doc) {
+      const rs = doc.results || [];
+      return [p("The energy lost per cycle, per length of wire:"), items(rs.map((r) => ["at an amplitude T* = ",
+        val("T_amplitude_N_per_m", r.T_amplitude_N_per_m, qty(r.T_amplitude_N_per_m, "force", ["tangential_amplitude"])), ": W = ",
+        val("W_J_per_m", r.W_J_per_m, qty(r.W_J_per_m, "energy")), r.state ? ` (${r.state})` : ""]))];
+    },
+    push(doc) {
+      const rs = doc.results || [];
+      const L = lengthOf(doc);
+      const lk = ["height", "tip_height", "radius"];
+      const words = { roll: "rolls first", slide: "slides first", "roll+slide": "rolls and slips at once", "lift-off": "lifts off first" };
+      const list = rs.map((r) => {
+        const first = r.first_motion;
+        const key = first === "slide" ? "Q_slide_N_per_m" : "Q_roll_N_per_m";
+        const Q = r[key];
+        const total = L && Number.isFinite(Q) ? ` (${newtons(Q * L)} on ${qty(L, "length", ["length"])})` : "";
+        const other = first === "slide" ? ["; rolling would take ", val("Q_roll_N_per_m", r.Q_roll_N_per_m, qty(r.Q_roll_N_per_m, "force", ["push", "load"]))]
+          : ["; sliding would take ", val("Q_slide_N_per_m", r.Q_slide_N_per_m, qty(r.Q_slide_N_per_m, "force", ["push", "load"]))];
+        const state = r.state ? [`; under the push given it is at `, val("state", r.state, r.state === "rest" ? "rest" : `${r.state}`)] : [];
+        const at = first === "lift-off" ? [] : [" at ", val(key, Q, qty(Q, "force", ["push", "load"])), total];
+        return [`at H = `, val("H_m", r.H_m, qty(r.H_m, "length", lk)), ": it ", val("first_motion", first, words[first] || first), ...at, ...other, ...state];
+      });
+      const out = [];
+      if (rs.length === 1) out.push(p("It ", ...list[0].slice(3), ` (pushed at H = ${qty(rs[0].H_m, "length", lk)}).`));
+      else out.push(p("Pushed sideways, the wire:"), items(list));
+      const Hc = rs.length ? rs[0].H_critical_m : NaN;
+      if (Number.isFinite(Hc) && rs.every((r) => r.H_critical_m === Hc)) {
+        out.push(p("It rolls first above H* = ", val("H_critical_m", Hc, qty(Hc, "length", lk)), " and slides first below it (H* = R Δw / Q_slide)."));
+      }
+      return out;
+    },
+    fit(doc) {
+      const r = rec(doc);
+      const ci = (k, kind) => (Array.isArray(r[k]) ? ` (95 % interval ${qty(r[k][0], kind, ["z0"])} to ${qty(r[k][1], kind, ["z0"])})` : "");
+      const fixed = (doc.parameters || {}).z0_fixed;
+      const out = [p("The work of adhesion w = ", val("work_of_adhesion", r.work_of_adhesion, qty(r.work_of_adhesion, "work")), ci("work_of_adhesion_ci95", "work"),
+        fixed ? ", with z0 fixed at " : "; the range z0 = ", val("z0", r.z0, qty(r.z0, "length", ["z0"])), fixed ? "" : ci("z0_ci95", "length"), ".")];
+      if (r.note) out.push(p(inWords(r.note)));
+      return out;
+    },
+  };
+
+  function headline(doc, mark) {
+    const box = $("answer");
+    box.textContent = "";
+    const fn = HEADLINES[spec.page];
+    const head = document.createElement("div");
+    head.id = "headline";
+    if (fn) for (const el of fn(doc)) head.appendChild(el);
+    if (mark) for (const el of mark) head.appendChild(el);
+    box.appendChild(head);
+  }
+
+  function warnings(list) {
+    const said = [...new Set(list || [])];
+    if (!said.length) return;
+    const box = document.createElement("div");
+    box.id = "warnings";
+    box.className = "warnings";
+    const h = document.createElement("h2");
+    h.textContent = said.length === 1 ? "A warning" : `${said.length} warnings`;
+    const ul = document.createElement("ul");
+    for (const w of said) {
+      const li = document.createElement("li");
+      li.textContent = inWords(w);
+      li.dataset.raw = w;
+      ul.appendChild(li);
+      const name = fieldOf(w, null);
+      if (name) say(name, "Warning: " + inWords(w), "warn");
+    }
+    box.append(h, ul);
+    $("answer").appendChild(box);
+  }
+
+  // the table: SI values first, then words, then the groups and diagnostics; 5 digits shown
   function cell(key, v) {
     const td = document.createElement("td");
     td.dataset.key = key;
     td.dataset.value = v === null ? "null" : typeof v === "object" ? JSON.stringify(v) : String(v);
-    td.textContent = v === null ? "—" : typeof v === "number" ? show(v) : typeof v === "object" ? JSON.stringify(v) : String(v);
+    td.textContent = v === null ? "—" : typeof v === "number" ? fmt(v, 5) : Array.isArray(v) ? v.map((x) => fmt(x, 5)).join(", ") : typeof v === "object" ? JSON.stringify(v) : String(v);
     return td;
   }
-
   function results(doc) {
     const box = $("results");
     box.textContent = "";
     const recs = doc.results || [];
-    const keys = [];
+    const units = doc.units || {};
+    let keys = [];
     for (const r of recs) for (const k of Object.keys(r)) if (!keys.includes(k)) keys.push(k);
+    const rank = (k) => (units[k] && units[k] !== "1" ? 0 : recs.some((r) => typeof r[k] === "string") ? 1 : 2);
+    keys = keys.map((k, i) => [rank(k), i, k]).sort((a, b) => a[0] - b[0] || a[1] - b[1]).map((x) => x[2]);
     const wrap = document.createElement("div");
     wrap.className = "scroll";
     const t = document.createElement("table");
     const head = t.createTHead().insertRow();
     for (const k of keys) {
       const th = document.createElement("th");
-      const unit = doc.units && doc.units[k];
+      const unit = units[k];
       th.textContent = k + (unit && unit !== "1" ? " [" + unit + "]" : "");
       head.appendChild(th);
     }
@@ -109,51 +411,63 @@
     });
     wrap.appendChild(t);
     const h = document.createElement("h2");
-    h.textContent = "Results";
+    h.textContent = "Results (SI units)";
     box.append(h, wrap);
-    const params = document.createElement("dl");
-    params.className = "parameters";
+    const dl = document.createElement("dl");
+    dl.className = "parameters";
     for (const [k, v] of Object.entries(doc.parameters || {})) {
       const dt = document.createElement("dt");
       dt.textContent = k;
       const dd = document.createElement("dd");
       dd.dataset.key = k;
       dd.dataset.value = typeof v === "object" ? JSON.stringify(v) : String(v);
-      dd.textContent = typeof v === "number" ? show(v) : String(v);
-      params.append(dt, dd);
+      dd.textContent = typeof v === "number" ? fmt(v, 5) : typeof v === "object" ? JSON.stringify(v) : String(v);
+      dl.append(dt, dd);
     }
     const h2 = document.createElement("h2");
     h2.textContent = "Parameters";
-    box.append(h2, params);
+    box.append(h2, dl);
   }
 
+  // ---------------------------------------------------------------------------------------
+  // plots: layers of points, lines and bands in the units chosen
+
   const NS = "http://www.w3.org/2000/svg";
-  function plot(doc, mark, P = spec.plot, figId = "plot", svgId = "plot-svg") {
+  const COLORS = ["#1f77b4", "#d62728", "#2ca02c", "#ff7f0e", "#9467bd"];
+
+  // layers: [{label, pts: [[x, y, flag]], line, points, dash, color, band: [[x, y0, y1]]}]
+  function plot(layers, P, mark, figId = "plot", svgId = "plot-svg") {
     const fig = $(figId);
     fig.textContent = "";
-    if (!P) return;
-    const pts = (doc.results || []).map((r) => [r[P.x], r[P.y], P.color ? r[P.color] : null])
-      .filter((p) => Number.isFinite(p[0]) && Number.isFinite(p[1]));
-    if (!pts.length) return;
-    const W = 640, H = 360, L = 70, B = 45, T = 15, R = 15;
-    let [x0, x1] = [Math.min(...pts.map((p) => p[0])), Math.max(...pts.map((p) => p[0]))];
-    let [y0, y1] = [Math.min(...pts.map((p) => p[1])), Math.max(...pts.map((p) => p[1]))];
-    if (x0 === x1) { x0 -= 1; x1 += 1; }
-    if (y0 === y1) { y0 -= 1; y1 += 1; }
+    const all = [];
+    for (const l of layers) {
+      for (const q of l.pts || []) if (Number.isFinite(q[0]) && Number.isFinite(q[1])) all.push(q);
+      for (const q of l.band || []) if (Number.isFinite(q[0]) && Number.isFinite(q[1]) && Number.isFinite(q[2])) all.push([q[0], q[1]], [q[0], q[2]]);
+    }
+    if (!all.length) return;
+    const W = 640, H = 360, L = 78, B = 45, T = 15, R = 15;
+    let [x0, x1] = [Math.min(...all.map((q) => q[0])), Math.max(...all.map((q) => q[0]))];
+    let [y0, y1] = [Math.min(...all.map((q) => q[1])), Math.max(...all.map((q) => q[1]))];
+    if (P.yzero) { y0 = Math.min(y0, 0); y1 = Math.max(y1, 0); }
+    if (x0 === x1) { x0 -= Math.abs(x0) * 0.1 || 1; x1 += Math.abs(x1) * 0.1 || 1; }
+    if (y0 === y1) { y0 -= Math.abs(y0) * 0.1 || 1; y1 += Math.abs(y1) * 0.1 || 1; }
+    const pad = (y1 - y0) * 0.05;
+    y0 -= pad; y1 += pad;
     const view = { x0, x1, y0, y1 };
     const svg = document.createElementNS(NS, "svg");
     svg.setAttribute("viewBox", `0 0 ${W} ${H}`);
     svg.setAttribute("role", "img");
+    svg.setAttribute("aria-label", `${P.ylabel} against ${P.xlabel}`);
     svg.setAttribute("id", svgId);
     function draw() {
       svg.textContent = "";
       const sx = (x) => L + (x - view.x0) / (view.x1 - view.x0) * (W - L - R);
       const sy = (y) => H - B - (y - view.y0) / (view.y1 - view.y0) * (H - B - T);
-      const add = (tag, attrs, text) => {
+      const add = (tag, attrs, text, parent = svg) => {
         const e = document.createElementNS(NS, tag);
         for (const [k, v] of Object.entries(attrs)) e.setAttribute(k, v);
         if (text !== undefined) e.textContent = text;
-        svg.appendChild(e);
+        parent.appendChild(e);
         return e;
       };
       add("rect", { x: 0, y: 0, width: W, height: H, fill: "white" });
@@ -161,16 +475,34 @@
       add("line", { x1: L, y1: T, x2: L, y2: H - B, stroke: "black" });
       for (let i = 0; i <= 4; i++) {
         const xv = view.x0 + (view.x1 - view.x0) * i / 4, yv = view.y0 + (view.y1 - view.y0) * i / 4;
-        add("text", { x: sx(xv), y: H - B + 16, "text-anchor": "middle", "font-size": 11 }, show(+xv.toPrecision(3)));
-        add("text", { x: L - 6, y: sy(yv) + 4, "text-anchor": "end", "font-size": 11 }, show(+yv.toPrecision(3)));
+        add("text", { x: sx(xv), y: H - B + 16, "text-anchor": "middle", "font-size": 11 }, fmt(xv, 3));
+        add("text", { x: L - 6, y: sy(yv) + 4, "text-anchor": "end", "font-size": 11 }, fmt(yv, 3));
       }
       add("text", { x: (L + W - R) / 2, y: H - 8, "text-anchor": "middle", "font-size": 12 }, P.xlabel);
       add("text", { x: 14, y: (T + H - B) / 2, "text-anchor": "middle", "font-size": 12,
         transform: `rotate(-90 14 ${(T + H - B) / 2})` }, P.ylabel);
-      const inside = pts.filter((p) => p[0] >= view.x0 && p[0] <= view.x1 && p[1] >= view.y0 && p[1] <= view.y1);
-      if (!P.points) {
-        add("polyline", { points: inside.map((p) => `${sx(p[0])},${sy(p[1])}`).join(" "), fill: "none", stroke: "#1f77b4", "stroke-width": 2 });
-      }
+      const g = add("g", {});
+      const clip = (q) => q[0] >= view.x0 && q[0] <= view.x1 && q[1] >= view.y0 && q[1] <= view.y1;
+      layers.forEach((l, n) => {
+        const color = l.color || COLORS[n % COLORS.length];
+        if (l.band && l.band.length) {
+          const ok = l.band.filter((q) => q.every(Number.isFinite));
+          const top = ok.map((q) => `${sx(q[0])},${sy(Math.min(Math.max(q[2], view.y0), view.y1))}`);
+          const bot = ok.slice().reverse().map((q) => `${sx(q[0])},${sy(Math.min(Math.max(q[1], view.y0), view.y1))}`);
+          add("polygon", { points: [...top, ...bot].join(" "), fill: color, "fill-opacity": 0.18, stroke: "none", class: "band" }, undefined, g);
+        }
+        const pts = (l.pts || []).filter((q) => Number.isFinite(q[0]) && Number.isFinite(q[1]));
+        if (l.line) {
+          add("polyline", { points: pts.filter(clip).map((q) => `${sx(q[0])},${sy(q[1])}`).join(" "), fill: "none", stroke: color,
+            "stroke-width": 2, "stroke-dasharray": l.dash ? "6 4" : "none", class: "series" }, undefined, g);
+        }
+        if (l.points === false) return;
+        for (const q of pts.filter(clip)) {
+          const c = add("circle", { cx: sx(q[0]), cy: sy(q[1]), r: l.line ? 3 : 4,
+            fill: q[2] === false ? (P.falseColor || "#bbbbbb") : color, "data-x": q[0], "data-y": q[1] }, undefined, g);
+          add("title", {}, `${l.label ? l.label + "\n" : ""}${P.xlabel} = ${fmt(q[0], 6)}\n${P.ylabel} = ${fmt(q[1], 6)}`, c);
+        }
+      });
       if (mark && mark.y !== undefined && mark.y >= view.y0 && mark.y <= view.y1) {
         add("line", { x1: L, y1: sy(mark.y), x2: W - R, y2: sy(mark.y), stroke: "#d62728",
           "stroke-width": 2, "stroke-dasharray": "6 4", id: figId + "-mark" });
@@ -180,13 +512,6 @@
         add("line", { x1: sx(mark.x), y1: T, x2: sx(mark.x), y2: H - B, stroke: "#d62728",
           "stroke-width": 2, "stroke-dasharray": "6 4", id: "mark" });
         add("text", { x: sx(mark.x) + 4, y: T + 12, "font-size": 12, fill: "#d62728" }, mark.label);
-      }
-      for (const p of inside) {
-        const c = add("circle", { cx: sx(p[0]), cy: sy(p[1]), r: P.points ? 4 : 3,
-          fill: p[2] === false ? (P.falseColor || "#bbbbbb") : "#1f77b4", "data-x": p[0], "data-y": p[1] });
-        const t = document.createElementNS(NS, "title");
-        t.textContent = `${P.xlabel} = ${show(p[0])}\n${P.ylabel} = ${show(p[1])}`;
-        c.appendChild(t);
       }
     }
     // zoom: the wheel zooms about the pointer; double-click resets
@@ -205,13 +530,213 @@
     draw();
     fig.appendChild(svg);
     const cap = document.createElement("figcaption");
-    cap.textContent = "hover a point for its values; the wheel zooms, a double-click resets";
-    if (P.legend) cap.textContent = P.legend + "; " + cap.textContent;
+    const legend = layers.filter((l) => l.label).map((l, n) => {
+      const s = document.createElement("span");
+      s.className = "key";
+      s.style.setProperty("--c", l.color || COLORS[layers.indexOf(l) % COLORS.length]);
+      s.textContent = l.label + (l.dash ? " (dashed)" : "") + (l.band ? " (band)" : "");
+      return s;
+    });
+    if (legend.length > 1 || P.legend) {
+      const lg = document.createElement("div");
+      lg.className = "legend";
+      if (P.legend) lg.append(P.legend + " ");
+      if (legend.length > 1) lg.append(...legend);
+      cap.appendChild(lg);
+    }
+    cap.append("Hover a point for its values; the wheel zooms, a double-click resets.");
     if (mark && mark.x !== undefined && !(mark.x >= x0 && mark.x <= x1)) {
-      cap.textContent += `; ${mark.label}: ${P.xlabel} ${show(mark.x)}, outside this map`;
+      cap.append(` ${mark.label}: ${P.xlabel} ${fmt(mark.x)}, outside this map.`);
     }
     fig.appendChild(cap);
   }
+
+  // the page's plot from its spec: x and y in the units chosen
+  function axis(a, prefer) {
+    const [u, f] = a.kind === "none" ? ["", 1] : unitOfKind(a.kind, prefer);
+    return { f, label: a.label + (u ? ` [${u}]` : "") };
+  }
+  function pagePlot(doc, mark, extra) {
+    const P = spec.plot;
+    if (!P) return;
+    const prefer = ["height", "tip_height", "load", "push", "tangential_amplitude", "radius"];
+    const X = axis(P.x, prefer);
+    const Ys = P.ys.map((y) => axis(y, prefer));
+    const recs = doc.results || [];
+    const layers = P.ys.map((y, i) => ({
+      label: y.label,
+      pts: recs.map((r) => [r[P.x.key] / X.f, r[y.key] / Ys[i].f, P.color ? r[P.color] : null]),
+      line: !P.points,
+    }));
+    for (const l of extra || []) layers.push(l(X, Ys[0]));
+    const ylabel = (P.ylabel || P.ys[0].label) + (Ys[0].label.match(/ \[[^\]]*\]$/) || [""])[0];
+    plot(layers, { xlabel: X.label, ylabel, legend: P.legend }, mark);
+  }
+
+  // ---------------------------------------------------------------------------------------
+  // the same elsewhere: the command line and the Python lines (from the SI values sent)
+
+  function command(values, extra) {
+    const words = ["linecontact", spec.command];
+    for (const [k, v] of Object.entries(values)) words.push("--" + k.replace(/_/g, "-"), ...v);
+    for (const [k, v] of Object.entries(spec.fixed || {})) words.push(...(v === "true" ? ["--" + k] : ["--" + k, v]));
+    if (extra) words.push(...extra);
+    return words.join(" ");
+  }
+  const one = (v, k) => (v[k] ? v[k][0] : null);
+  const list = (v, k) => "[" + (v[k] || []).join(", ") + "]";
+  function cylinderPy(v, adhesion) {
+    const R = one(v, "radius");
+    const mats = v.modulus ? null : `${JSON.stringify(one(v, "cylinder_material"))}, ${JSON.stringify(one(v, "substrate_material"))}`;
+    return v.modulus
+      ? `cyl = lc.Cylinder.from_modulus(${R}, ${one(v, "modulus")}, ${adhesion})`
+      : `cyl = lc.Cylinder.from_presets(${R}, ${mats}, ${adhesion})`;
+  }
+  const wirePy = (v) => cylinderPy(v, `work_of_adhesion=${one(v, "work_of_adhesion")}, equilibrium_spacing=${one(v, "z0")}`);
+  const PYTHON = {
+    pulloff: (v) => [wirePy(v), "result = cyl.pull_off()", "print(result)",
+      ...(v.length ? [`print("on the whole wire [N]:", result.pull_off_force * ${one(v, "length")})`] : [])],
+    "lennard-jones": (v) => [wirePy(v), "result = cyl.lennard_jones_pull_off()", "print(result)"],
+    contact: (v) => [wirePy(v), `result = cyl.contact(load=${list(v, "load")})`, "print(result)"],
+    curve: (v) => [wirePy(v), "result = cyl.load_curve()", "print(result)"],
+    cycle: (v) => [wirePy(v), `result = cyl.cyclic_loss(normal_load=${one(v, "load")}, friction_stress=${one(v, "tau0")}, amplitude=${list(v, "tangential_amplitude")})`, "print(result)"],
+    push(v) {
+      const lines = [];
+      let receding;
+      if (v.sigma0 || v.h2 || v.h1) {
+        lines.push(cylinderPy(v, `cohesive_stress=${one(v, "sigma0")}, adhesion_range=${one(v, "h2")}`));
+        receding = `receding_range=${one(v, "h1")}`;
+      } else {
+        lines.push(`# one sigma0, from the receding work of adhesion w1 with z0 (as the command line)`,
+          `sigma0, h1 = lc.adhesion_from_work(${one(v, "work_of_adhesion_receding")}, ${one(v, "z0")})`,
+          cylinderPy(v, `cohesive_stress=sigma0, adhesion_range=${one(v, "work_of_adhesion_advancing")} / sigma0`));
+        receding = "receding_range=h1";
+      }
+      const args = [`friction_stress=${one(v, "tau0")}`];
+      if (v.tip_height) args.push(`height=${list(v, "tip_height")}`, `tip_friction=${one(v, "tip_friction") || 0}`);
+      else args.push(`height=${list(v, "height")}`);
+      args.push(receding);
+      if (v.load) args.push(`normal_load=${one(v, "load")}`);
+      if (v.push) args.push(`push=${one(v, "push")}`);
+      if (v.length) args.push(`length=${one(v, "length")}`);
+      lines.push(`result = cyl.push(${args.join(", ")})`, "print(result.first_motion, result.rolling_resistance, result.sliding_resistance)");
+      return lines;
+    },
+    map: (v) => [wirePy(v), "print(cyl.maugis_parameter)  # your wire on the map",
+      "# the map itself (minutes; `linecontact map --quick` is the quick grid):",
+      "# from linecontact.adhesion_map import adhesion_map; m = adhesion_map()"],
+    fit(v, doc) {
+      const r = doc ? rec(doc) : null;
+      if (!r || !Array.isArray(r.radius_m)) return ["# upload the measurements and compute: the lines use their values"];
+      const E = (doc.parameters || {}).modulus_Pa;
+      return [
+        `radius = [${r.radius_m.join(", ")}]  # [m], from ${(doc.parameters || {}).data || "the file"}`,
+        `force = [${r.pull_off_force_N_per_m.join(", ")}]  # [N/m]`,
+        `modulus = ${E}  # [Pa], the composite modulus of ${one(v, "cylinder_material")} on ${one(v, "substrate_material")}`,
+        `result = lc.fit_pull_off(radius, force, modulus${v.z0 ? `, equilibrium_spacing=${one(v, "z0")}` : ""})`,
+        "print(result.work_of_adhesion, result.equilibrium_spacing)",
+      ];
+    },
+  };
+  function equivalent(values, aux, doc) {
+    const all = { ...values, ...aux };
+    $("cli").textContent = command(values, spec.upload ? ["--data", doc ? (doc.parameters || {}).data || "measurements.csv" : "measurements.csv"] : null);
+    const py = PYTHON[spec.page];
+    $("py").textContent = py ? "import linecontact as lc\n" + py(all, doc).join("\n") : "";
+  }
+  function noEquivalent() {
+    $("cli").textContent = "(the command line and the Python lines follow once the fields marked above are right)";
+    $("py").textContent = "";
+  }
+
+  // ---------------------------------------------------------------------------------------
+  // the page's extra requests: the map's wire, the push's flat push, the fit's curve
+
+  async function api(cmd, p) {
+    const r = await fetch("/api/v1/" + cmd + "?" + p.toString());
+    const doc = await r.json().catch(() => null);
+    return [r.status, doc];
+  }
+
+  async function marked(aux) {
+    if (!spec.mark) return null;
+    const [status, doc] = await api(spec.mark.command, params(aux, true));
+    if (status !== 200) { error(doc); return null; }
+    const r = doc.results[0];
+    const v = r[spec.mark.key];
+    const head = p("Your wire: ", val(spec.mark.key, v, `Maugis parameter ${fmt(v)}`), `, ${regime(v)}; `,
+      "it comes off at a pull of ", val("F_pulloff_N_per_m", r.F_pulloff_N_per_m, qty(Math.abs(r.F_pulloff_N_per_m), "force")), ".");
+    head.id = "mark-value";
+    head.dataset.key = spec.mark.key;
+    head.dataset.value = String(v);
+    return { x: v, label: spec.mark.label, head: [head], warnings: doc.warnings || [] };
+  }
+
+  // the push of a flat pusher at the tip's heights: what the tip changes
+  async function flatPush(values) {
+    if (spec.page !== "push" || !values.tip_height) return [];
+    const v = { ...values, height: values.tip_height };
+    delete v.tip_height; delete v.tip_friction; delete v.push;
+    const [status, doc] = await api("push", params(v));
+    if (status !== 200) return [];
+    return [
+      (X, Y) => ({ label: "a flat push: to roll", dash: true, color: COLORS[0], points: false, line: true, pts: doc.results.map((r) => [r.H_m / X.f, r.Q_roll_N_per_m / Y.f]) }),
+      (X, Y) => ({ label: "a flat push: to slide", dash: true, color: COLORS[1], points: false, line: true, pts: doc.results.map((r) => [r.H_m / X.f, r.Q_slide_N_per_m / Y.f]) }),
+    ];
+  }
+
+  // the fit's curve and its band (w at the ends of its 95 % interval), over the radii measured
+  async function fitCurve(doc, values) {
+    const r = rec(doc);
+    if (!Array.isArray(r.radius_m) || !r.radius_m.length) return null;
+    const lo = Math.min(...r.radius_m) / 1.5, hi = Math.max(...r.radius_m) * 1.5;
+    const radii = Array.from({ length: 13 }, (_, i) => lo * Math.pow(hi / lo, i / 12));
+    const ci = Array.isArray(r.work_of_adhesion_ci95) ? r.work_of_adhesion_ci95 : [r.work_of_adhesion, r.work_of_adhesion];
+    const at = async (R, w) => {
+      const q = params({ cylinder_material: values.cylinder_material, substrate_material: values.substrate_material,
+        radius: [siText(R)], work_of_adhesion: [siText(w)], z0: [siText(r.z0)] }, true);
+      const [status, d] = await api("pulloff", q);
+      return status === 200 ? d.results[0].F_pulloff_N_per_m : NaN;
+    };
+    const rows = await Promise.all(radii.map(async (R) => [R, await at(R, r.work_of_adhesion), await at(R, ci[0]), await at(R, ci[1])]));
+    return rows;
+  }
+  function fitPlot(doc, rows) {
+    const r = rec(doc);
+    const X = axis({ kind: "length", label: "radius R" }, ["z0"]);
+    const Y = axis({ kind: "force", label: "pull-off force" }, []);
+    const layers = [{ label: "measured", pts: r.radius_m.map((R, i) => [R / X.f, r.pull_off_force_N_per_m[i] / Y.f]) }];
+    if (rows) {
+      layers.push({ label: "the fit", line: true, points: false, pts: rows.map((q) => [q[0] / X.f, q[1] / Y.f]), color: COLORS[1],
+        band: rows.map((q) => [q[0] / X.f, Math.min(q[2], q[3]) / Y.f, Math.max(q[2], q[3]) / Y.f]) });
+    }
+    plot(layers, { xlabel: X.label, ylabel: Y.label, legend: rows ? "band: w at the ends of its 95 % interval, z0 at its fit;" : "" });
+  }
+
+  // the motion map of the pushed wire: first motion over push height and friction stress
+  async function motion(values) {
+    const fig = $("motion");
+    fig.textContent = "";
+    if (spec.page !== "push" || values.tip_height) return;
+    const R = parseFloat(one(values, "radius")), tau = parseFloat(one(values, "tau0"));
+    if (!(R > 0 && tau > 0)) return;
+    const hs = Array.from({ length: 21 }, (_, i) => siText(2 * R * i / 20));
+    const pts = [];
+    const X = axis({ kind: "length", label: "push height H" }, ["height", "radius"]);
+    for (const f of [0.01, 0.03, 0.1, 0.3, 1, 3, 10, 30, 100]) {
+      const v = { ...values, tau0: [siText(tau * f)], height: hs };
+      delete v.push;
+      const [status, doc] = await api("push", params(v));
+      if (status !== 200) continue;
+      for (const r of doc.results) pts.push([r.H_m / X.f, Math.log10(tau * f), r.first_motion === "roll"]);
+    }
+    plot([{ pts, label: "" }], { xlabel: X.label, ylabel: "log10 tau0 [Pa]", falseColor: "#ff7f0e",
+      legend: "The motion map: blue rolls first, orange slides first (or rolls and slips);" },
+    { y: Math.log10(tau), label: "your wire" }, "motion", "motion-svg");
+  }
+
+  // ---------------------------------------------------------------------------------------
+  // downloads
 
   function download(name, type, data) {
     const a = document.createElement("a");
@@ -219,7 +744,6 @@
     a.download = name;
     a.click();
   }
-
   function csv(doc) {
     const lines = [];
     for (const k of ["linecontact", "command", "parameters", "units"]) lines.push(`# ${k}: ${JSON.stringify(doc[k])}`);
@@ -237,7 +761,6 @@
     }
     return lines.join("\n") + "\n";
   }
-
   function downloads(doc) {
     const box = $("downloads");
     box.textContent = "";
@@ -268,112 +791,23 @@
     }
   }
 
-  function equivalent(p) {
-    const words = ["linecontact", spec.command];
-    const values = {};
-    for (const [k, v] of p.entries()) {
-      const flag = "--" + k.replace(/_/g, "-");
-      if (v === "true") words.push(flag); else words.push(flag, ...v.split(","));
-      values[k] = v;
-    }
-    if (spec.upload) words.push("--data", "measurements.csv");
-    $("cli").textContent = words.join(" ");
-    let py = spec.python || "";
-    py = py.replace(/\{(\w+)(!r)?\}/g, (_, k, r) => {
-      const v = values[k] === undefined ? "None" : values[k];
-      return r ? JSON.stringify(v) : v;
-    });
-    $("py").textContent = "import linecontact as lc\n" + py;
-  }
+  // ---------------------------------------------------------------------------------------
+  // computing
 
-  // the regime of the Maugis parameter (Johnson and Greenwood's map for line contact)
-  function regime(doc) {
-    const r = (doc.results || [])[0] || {};
-    const lam = "maugis_parameter" in r ? r.maugis_parameter : (doc.parameters || {}).maugis_parameter;
-    if (!Number.isFinite(lam)) return;
-    const name = lam < 0.1 ? "rigid (DMT-like): adhesion outside the contact"
-      : lam > 5 ? "JKR: a compliant contact, adhesion at its edge"
-      : "Maugis-Dugdale transition between DMT and JKR";
-    const p = document.createElement("p");
-    p.id = "regime";
-    p.dataset.key = "maugis_parameter";
-    p.dataset.value = String(lam);
-    p.textContent = `Maugis parameter ${show(lam)}: ${name}`;
-    $("results").prepend(p);
-  }
-
-  async function marked() {
-    if (!spec.mark) return null;
-    const r = await fetch("/api/v1/" + spec.mark.command + "?" + params(true).toString());
-    const doc = await r.json().catch(() => null);
-    if (r.status !== 200) { error(doc); return null; }
-    const v = doc.results[0][spec.mark.key];
-    const p = document.createElement("p");
-    p.id = "mark-value";
-    p.dataset.key = spec.mark.key;
-    p.dataset.value = String(v);
-    p.textContent = `${spec.mark.label}: ${spec.mark.key} = ${show(v)}`;
-    $("status").after(p);
-    return { x: v, label: spec.mark.label };
-  }
-
-  // the motion map of the pushed wire: first motion over push height and friction stress
-  async function motion(p) {
-    const fig = $("motion");
-    if (!spec.motion || !fig) return;
-    const R = parseFloat(p.get("radius")), tau = parseFloat(p.get("tau0"));
-    if (!(R > 0 && tau > 0)) return;
-    const hs = Array.from({ length: 21 }, (_, i) => String(Number((2 * R * i / 20).toPrecision(12))));
-    const pts = [];
-    for (const f of [0.01, 0.03, 0.1, 0.3, 1, 3, 10, 30, 100]) {
-      const q = new URLSearchParams(p);
-      q.set("tau0", String(Number((tau * f).toPrecision(12))));
-      q.set("height", hs.join(","));
-      const r = await fetch("/api/v1/push?" + q.toString());
-      if (r.status !== 200) continue;
-      const doc = await r.json();
-      for (const rec of doc.results) {
-        pts.push({ H_m: rec.H_m, log10_tau0: Math.log10(tau * f), rolls: rec.first_motion === "roll" });
-      }
-    }
-    const P = { x: "H_m", y: "log10_tau0", xlabel: "push height H [m]",
-      ylabel: "log10 tau0 [Pa]", points: true, color: "rolls", falseColor: "#ff7f0e",
-      legend: "blue: rolls first, orange: slides first" };
-    plot({ results: pts }, { y: Math.log10(tau), label: "your wire" }, P, "motion", "motion-svg");
-  }
-
-  // the few values a page is for, above its table (each with its key and full value)
-  function headline(doc) {
-    if (!spec.headline) return;
-    const r = (doc.results || [])[0] || {};
-    const dl = document.createElement("dl");
-    dl.className = "headline";
-    dl.id = "headline";
-    for (const [k, label] of Object.entries(spec.headline)) {
-      if (!(k in r)) continue;
-      const dt = document.createElement("dt");
-      const unit = doc.units && doc.units[k];
-      dt.textContent = label + (unit && unit !== "1" ? ` [${unit}]` : "");
-      const dd = document.createElement("dd");
-      dd.dataset.key = k;
-      dd.dataset.value = r[k] === null ? "null" : String(r[k]);
-      dd.textContent = r[k] === null ? "—" : typeof r[k] === "number" ? show(r[k]) : String(r[k]);
-      dl.append(dt, dd);
-    }
-    $("results").prepend(dl);
-  }
-
+  let current = null; // the inputs of the computation shown
   async function done(doc) {
-    last = doc;
+    const { values, aux } = current;
+    const mark = await marked(aux);
+    headline(doc, mark && mark.head);
+    warnings([...(doc.warnings || []), ...((mark && mark.warnings) || [])]);
+    if (spec.page === "fit") fitPlot(doc, null);
+    else pagePlot(doc, mark, await flatPush(values));
     results(doc);
-    headline(doc);
-    regime(doc);
-    const old = $("mark-value");
-    if (old) old.remove();
-    plot(doc, await marked());
-    motion(params());
     downloads(doc);
+    equivalent(values, aux, doc);
     $("status").textContent = `done: ${(doc.results || []).length} record(s)`;
+    if (spec.page === "fit") { fitPlot(doc, await fitCurve(doc, values)); downloads(doc); }
+    motion(values);
   }
 
   async function poll(id) {
@@ -396,10 +830,24 @@
   form.addEventListener("submit", async (ev) => {
     ev.preventDefault();
     clearMessages();
-    const p = params();
-    const all = new URLSearchParams([...p.entries(), ...params(true).entries()]);
-    history.replaceState(null, "", location.pathname + "?" + all.toString());
-    equivalent(p);
+    for (const id of ["answer", "plot", "motion", "results", "downloads"]) $(id).textContent = "";
+    const main = inputs(false), aux = inputs(true);
+    const errors = { ...main.errors, ...aux.errors };
+    if (Object.keys(errors).length) { // nothing computed with a number the user did not mean
+      for (const [name, text] of Object.entries(errors)) say(name, text, "error");
+      $("status").textContent = "";
+      noEquivalent();
+      return;
+    }
+    current = { values: main.values, aux: aux.values };
+    const p = params(main.values);
+    const link = new URLSearchParams([...p.entries(), ...params(aux.values, true).entries()]);
+    for (const f of spec.fields) {
+      const u = $("u-" + f.name);
+      if (u && active(f) && (main.values[f.name] || aux.values[f.name]) && u.selectedIndex > 0) link.append("u." + f.name, u.value);
+    }
+    history.replaceState(null, "", location.pathname + "?" + link.toString());
+    equivalent(main.values, aux.values, null);
     $("status").textContent = "computing...";
     let r;
     try {
@@ -434,5 +882,5 @@
   });
 
   fill();
-  if (location.search) form.requestSubmit();
+  if ([...new URLSearchParams(location.search).keys()].some((k) => k in fields)) form.requestSubmit();
 })();
