@@ -67,6 +67,8 @@ sphinx_gallery_conf = {
     "download_all_examples": False,
     "plot_gallery": "True",
     "remove_config_comments": True,
+    # no page of computation times: it loads jQuery and DataTables from CDNs
+    "write_computation_times": False,
 }
 
 HERE = os.path.dirname(__file__)
