@@ -105,8 +105,11 @@ def test_the_api_returns_what_the_command_line_prints(client, capsys, command, q
     assert r.headers["content-type"].startswith("application/json")
     got = r.json()
     want = _cli(capsys, [command, *argv])
-    # the same keys, units, parameters and results; the command line as the API built it
+    # the same keys, units, parameters and results; the command line as the API built it;
+    # and, last, the notes the command line prints (``warnings``)
     assert got["command"][:2] == ["linecontact", command] and got["command"][-1] == "--json"
+    assert list(got)[-1] == "warnings" and isinstance(got["warnings"], list)
+    assert all(isinstance(w, str) and w for w in got.pop("warnings"))
     got.pop("command")
     want.pop("command")
     _close(got, want)
@@ -277,7 +280,7 @@ def browser():
 
 def _value(page, key, row=0):
     sel = f"#results tbody tr[data-index='{row}'] td[data-key='{key}']"
-    page.wait_for_selector(sel, timeout=30_000)
+    page.wait_for_selector(sel, timeout=30_000, state="attached")  # in the table's toggle
     return page.get_attribute(sel, "data-value")
 
 
@@ -292,7 +295,7 @@ def test_a_shared_link_computes_what_the_api_gives(server, browser):
     assert got == api["results"][0]["F_pulloff_N_per_m"]
     assert page.input_value("#f-radius") == "50"  # shown in nm, the default unit
     assert "Maugis parameter" in page.inner_text("#regime")
-    head = page.get_attribute("#headline dd[data-key='F_pulloff_N_per_m']", "data-value")
+    head = page.get_attribute("#headline [data-key='F_pulloff_N_per_m']", "data-value")
     assert float(head) == got
     assert "linecontact pulloff --cylinder-material ZnO" in page.inner_text("#cli")
     page.close()
@@ -302,7 +305,7 @@ def test_the_form_switches_units_and_submits(server, browser):
     page = browser.new_page()
     page.goto(f"{server}/pulloff")
     page.select_option("#u-radius", label="um")
-    assert page.input_value("#f-radius") == "0.05"
+    assert page.input_value("#f-radius") == "50"  # the unit applies to the number as typed
     page.fill("#f-radius", "0.1")
     page.click("#go")
     got = float(_value(page, "F_pulloff_N_per_m"))
@@ -312,8 +315,9 @@ def test_the_form_switches_units_and_submits(server, browser):
     page.fill("#f-radius", "-3")
     page.click("#go")
     page.wait_for_selector("#m-radius:not(:empty)")  # (the page's CSP forbids eval)
-    assert "--radius" in page.inner_text("#m-radius")
-    assert "you gave -3 um" in page.inner_text("#m-radius")  # in the unit the user chose
+    assert "radius R" in page.inner_text("#m-radius")  # the field's words, not the flag
+    assert "--radius" not in page.inner_text("#m-radius")
+    assert "you typed -3 um" in page.inner_text("#m-radius")  # in the unit the user chose
     page.close()
 
 
@@ -391,14 +395,14 @@ def test_the_push_page_draws_the_push_against_height(server, browser):
     page = browser.new_page()
     page.goto(f"{server}/push")
     page.click("#go")
-    assert _value(page, "first_motion", row=3) in ("roll", "slide")
-    assert page.locator("#plot-svg circle").count() == 4
+    assert _value(page, "first_motion", row=3) in ("roll", "slide", "roll+slide")
+    assert page.locator("#plot-svg circle").count() == 20  # Q_roll and Q_slide at 10 heights
     page.wait_for_selector("#motion-svg", timeout=60_000)  # the motion map, your wire marked
     assert page.locator("#motion-svg circle").count() > 100
     assert page.locator("#motion-mark").count() == 1
     page.fill("#f-push", "0.5")
     page.click("#go")
-    page.wait_for_selector("#results td[data-key='state']")
+    page.wait_for_selector("#results td[data-key='state']", state="attached")
     assert _value(page, "state") in ("rest", "roll", "slide", "roll+slide")
     page.close()
 

@@ -99,7 +99,7 @@
       return { error: `“${raw}” has a decimal comma: write ${raw.replace(",", ".")}, with a point${inUnit}` };
     }
     let tokens = f.many ? raw.split(/\s*[,;]\s*/) : [raw];
-    if (f.many) tokens = tokens.flatMap((t) => (t.split(/\s+/).every((x) => NUMBER.test(x)) ? t.split(/\s+/) : [t]));
+    tokens = tokens.flatMap((t) => (t.split(/\s+/).every((x) => NUMBER.test(x)) ? t.split(/\s+/) : [t]));
     tokens = tokens.filter((t) => t !== "");
     const values = [];
     for (const t of tokens) {
@@ -339,10 +339,24 @@
       const fixed = (doc.parameters || {}).z0_fixed;
       const out = [p("The work of adhesion w = ", val("work_of_adhesion", r.work_of_adhesion, qty(r.work_of_adhesion, "work")), ci("work_of_adhesion_ci95", "work"),
         fixed ? ", with z0 fixed at " : "; the range z0 = ", val("z0", r.z0, qty(r.z0, "length", ["z0"])), fixed ? "" : ci("z0_ci95", "length"), ".")];
-      if (r.note) out.push(p(inWords(r.note)));
+      if (r.note) out.push(p(inWords(r.note).replace(/Fix equilibrium_spacing/, "Fix z0 (its field above)")));
       return out;
     },
   };
+
+  // the map at your wire: which models hold on the map's column nearest its Maugis parameter
+  function mapAtWire(doc, lam) {
+    const recs = (doc.results || []).filter((r) => Number.isFinite(r.maugis_parameter));
+    if (!recs.length || !Number.isFinite(lam)) return [];
+    const near = recs.reduce((m, r) => (Math.abs(Math.log(r.maugis_parameter / lam)) < Math.abs(Math.log(m / lam)) ? r.maugis_parameter : m), recs[0].maugis_parameter);
+    const col = recs.filter((r) => r.maugis_parameter === near);
+    const names = { md: "Maugis-Dugdale", jkr: "JKR", hertz: "Hertz", rigid: "the rigid cylinder" };
+    const parts = Object.entries(names).map(([k, n]) => `${n} at ${col.filter((r) => r[`agrees_${k}`] === true).length}`);
+    const out = p(`On the map's column nearest your wire (Maugis parameter `, val("maugis_parameter", near, fmt(near)),
+      `), the models give the full law's contact width within the tolerance at these of its ${col.length} loads: ${parts.join(", ")}.`);
+    out.id = "map-at-wire";
+    return [out];
+  }
 
   function headline(doc, mark) {
     const box = $("answer");
@@ -351,7 +365,8 @@
     const head = document.createElement("div");
     head.id = "headline";
     if (fn) for (const el of fn(doc)) head.appendChild(el);
-    if (mark) for (const el of mark) head.appendChild(el);
+    if (mark) for (const el of mark.head) head.appendChild(el);
+    if (mark && spec.page === "map") for (const el of mapAtWire(doc, mark.x)) head.appendChild(el);
     box.appendChild(head);
   }
 
@@ -798,7 +813,7 @@
   async function done(doc) {
     const { values, aux } = current;
     const mark = await marked(aux);
-    headline(doc, mark && mark.head);
+    headline(doc, mark);
     warnings([...(doc.warnings || []), ...((mark && mark.warnings) || [])]);
     if (spec.page === "fit") fitPlot(doc, null);
     else pagePlot(doc, mark, await flatPush(values));
