@@ -48,6 +48,7 @@ html_title = f"linecontact {release}"
 html_theme_options = {
     # one row of short links at 1280 px; the rest under "More"
     "header_links_before_dropdown": 7,
+    "navbar_persistent": ["search-button"],  # the search as an icon: the header stays one row
     "navigation_with_keys": False,
     "show_toc_level": 2,
 }
