@@ -292,8 +292,9 @@ def _visible(action: argparse.Action) -> bool:
     return action.help != argparse.SUPPRESS
 
 
+#: Every numeric flag of every subcommand, the deprecated spellings (not in the help) too.
 NUMERIC = {
-    name: [a.option_strings[-1] for a in sp._actions if _visible(a) and _is_numeric(a)]
+    name: [a.option_strings[-1] for a in sp._actions if _is_numeric(a)]
     for name, sp in SUBPARSERS.items()
 }
 CASES = [(name, flag) for name, flags in NUMERIC.items() for flag in flags] + [
@@ -369,6 +370,11 @@ def check_run(argv: list[str], code: int, err: str) -> None:
     assert len(errors) == 1 and errors[0] == stderr[-1], (argv, err)
     line = errors[0].split(": error: ", 1)[1]
     parser = SUBPARSERS[argv[0]]
+    # an old spelling typed: the run said its new one (a warning line), which may be named
+    for flag in list(typed):
+        target = getattr(parser._option_string_actions.get(flag), "target", None)
+        if target is not None:
+            typed.add(target.option_strings[-1])
     named = set(FLAG.findall(_unprotected(line, values)))
     unknown = {f for f in named if f not in parser._option_string_actions}
     assert not unknown, f"flags of no option of {argv[0]} {unknown}: {line}"

@@ -37,6 +37,7 @@ from . import closed_forms as _cf
 from . import normal as _normal
 from ._validation import broadcast, check_array, first_point
 from .cylinder import _check_cylinder_si, _plausible, _warn_widths
+from .cylinder._checks import _small_strain_in_si, _warn_small_strain
 from .errors import ModelValidityWarning
 from .fits import (
     _S_MAX,
@@ -184,7 +185,8 @@ def _stable_width(F, R, E, w, z0, *, too_wide=None, pulled_off=np.nan):
     rho, s = R / h, S_LJ * w / (z0 * E)
 
     def one(F_, rho_, s_, E_, h_):
-        c = _normal.contact_for_load(F_ / (E_ * h_), rho_, s_, on_failure="report")
+        with _small_strain_in_si():  # said of the width in metres by the caller
+            c = _normal.contact_for_load(F_ / (E_ * h_), rho_, s_, on_failure="report")
         return np.asarray(c.a_over_R, float)
 
     _check_load("normal_load", F, E, z0)
@@ -314,7 +316,8 @@ def shear_strength_from_friction(
 
         _check_load("normal_load", F, E, z0, "F_over_Eh2")
         try:
-            c = sliding_contact_for_load(F / (E * h), rho, w1 / w, s, method="closed-form")
+            with _small_strain_in_si():  # said of the width in metres below
+                c = sliding_contact_for_load(F / (E * h), rho, w1 / w, s, method="closed-form")
         except TooWideError as e:
             i = e.index
             Ri = float(np.reshape(R, -1)[i])
@@ -333,6 +336,7 @@ def shear_strength_from_friction(
         a = _hertz_width(F - dmt_pull_off_force(R, w, z0), R, E)
     else:  # JKR: the stable (wider) root of F = pi E a^2/(4R) - sqrt(2 pi w E a)
         a = _jkr_width(F, R, E, w)
+    _warn_small_strain(a, R, stacklevel=3)
     bad = ~(np.isfinite(a) & (a > 0))
     if np.any(bad):
         _, at = first_point(bad, F=F)

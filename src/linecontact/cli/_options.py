@@ -500,7 +500,10 @@ def flag_message(message: str, args: argparse.Namespace) -> str:
     for name, flag in sorted(names.items(), key=lambda kv: -len(kv[0])):
         flag = typed.get(flag, flag)
         n = re.escape(name)
-        if "_" in name and (flag in given or flag in known):
+        # a group (a_over_R) is named as a flag only where the user typed that flag: a flag
+        # of the subcommand left out (its default) is named for an SI parameter only
+        untyped = flag in known and ("_over_" not in name or flag in run_flags.values())
+        if "_" in name and (flag in given or untyped):
             # a parameter's name, wherever it stands
             subs.append((re.compile(rf"(?<![\w-]){n}(?![\w])"), flag))
         elif flag in given:

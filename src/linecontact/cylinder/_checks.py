@@ -2,15 +2,17 @@
 
 from __future__ import annotations
 
+import contextlib
 import contextvars
 import warnings
+from collections.abc import Iterator
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import closed_forms as _cf
 from .. import domain as _domain
-from ..errors import UnitsWarning
+from ..errors import ModelValidityWarning, UnitsWarning
 from ..materials import MAUGIS_STRENGTH
 
 #: Plausible SI values: (low, high, unit, what a value outside suggests). A value outside
@@ -208,6 +210,42 @@ def _units_question(guess: str, modulus_name: str, unit: str) -> str:
     return f"is {the}{guess} in {'Pa' if guess == modulus_name else unit}?"
 
 
+#: The widest contact of the small-strain range, in radii (the half-plane theory's limit).
+SMALL_STRAIN = _cf.A_OVER_R_SMALL_STRAIN
+
+
+@contextlib.contextmanager
+def _small_strain_in_si() -> Iterator[None]:
+    """Silence the nondimensional solvers' small-strain note inside the SI layer.
+
+    The note names their group (``a_over_R = 0.5 is beyond ...``); the SI layer says it of
+    the widths it returns, in metres (:func:`_warn_small_strain`). Every other warning, and
+    the caller's own filters for the SI note, are left as they are.
+    """
+    with warnings.catch_warnings():
+        warnings.filterwarnings("ignore", r"a_over_R = .* small-strain range", ModelValidityWarning)
+        yield
+
+
+def _warn_small_strain(
+    a: ArrayLike, radius: ArrayLike, what: str = "the contact half-width", stacklevel: int = 3
+) -> None:
+    """Warn (ModelValidityWarning) for contact half-widths [m] beyond the small-strain range."""
+    v, Rv = (np.reshape(x, -1) for x in np.broadcast_arrays(np.asarray(a, float), radius))
+    with np.errstate(invalid="ignore"):
+        wide = v > SMALL_STRAIN * Rv
+    if np.any(wide):
+        i = int(np.argmax(np.where(wide, v / Rv, -np.inf)))  # the widest, as the solvers say
+        warnings.warn(
+            f"{what} {float(v[i]):.3g} m is {float(v[i] / Rv[i]):.3g} times the radius, beyond "
+            f"the small-strain range of the half-plane theory (at most {SMALL_STRAIN:g} times "
+            f"the radius, a strain of {SMALL_STRAIN / 2:g}): the results are those of linear "
+            "elasticity",
+            ModelValidityWarning,
+            stacklevel=stacklevel,
+        )
+
+
 #: Why a zero-width pull-off reports a width below :data:`WIDTH_MIN`.
 _ZERO_WIDTH = (
     "the contact peels to zero width before it pulls off (mechanism 'zero-width'): read it as 0"
@@ -221,11 +259,17 @@ def _warn_widths(
     why: str = "",
     stacklevel=3,
 ) -> None:
-    """Warn for contact half-widths [m] that are no physical width: below WIDTH_MIN or above R."""
+    """Warn for contact half-widths [m] that are no physical width: below WIDTH_MIN or above R.
+
+    A width beyond the small-strain range (but within the radius) is said as a model note
+    (:func:`_warn_small_strain`).
+    """
     v, Rv = (np.reshape(x, -1) for x in np.broadcast_arrays(np.asarray(a, float), radius))
     with np.errstate(invalid="ignore"):
         tiny = (v > 0) & (v < WIDTH_MIN)
         wide = v > Rv
+    if not np.any(wide):
+        _warn_small_strain(v, Rv, what, stacklevel + 1)
     if np.any(tiny):
         x = float(v[np.flatnonzero(tiny)[0]])
         warnings.warn(

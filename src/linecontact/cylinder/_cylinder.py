@@ -36,6 +36,8 @@ from ._checks import (
     _ZERO_WIDTH,
     PLAUSIBLE,
     _check_cylinder_si,
+    _small_strain_in_si,
+    _warn_small_strain,
     _warn_widths,
 )
 from ._methods import _Problems
@@ -443,9 +445,14 @@ class Cylinder(_Problems):
         if contact_half_width is not None:
             a = positive("contact_half_width", contact_half_width)
             _domain.check_si("contact_half_width", a, self.radius, "a_over_R", "m")
-            r = _normal.normal_contact(
-                a / self.radius, self.R_over_h, self.sigma0_over_E, method=method, on_failure=policy
-            )
+            with _small_strain_in_si():  # said in metres by _wrap
+                r = _normal.normal_contact(
+                    a / self.radius,
+                    self.R_over_h,
+                    self.sigma0_over_E,
+                    method=method,
+                    on_failure=policy,
+                )
         else:
             return self._for_load("load", load, branch, policy)  # type: ignore[arg-type]
         return self._wrap(r)
@@ -467,13 +474,14 @@ class Cylinder(_Problems):
                     f"{F_min!r} N/m; the cylinder has pulled off"
                 )
         try:
-            r = _normal.contact_for_load(
-                F / Eh,
-                self.R_over_h,
-                self.sigma0_over_E,
-                branch=branch,
-                on_failure=policy,
-            )
+            with _small_strain_in_si():  # said in metres by _wrap
+                r = _normal.contact_for_load(
+                    F / Eh,
+                    self.R_over_h,
+                    self.sigma0_over_E,
+                    branch=branch,
+                    on_failure=policy,
+                )
         except _domain.TooWideError as e:
             Fi = float(np.reshape(np.broadcast_to(F, np.shape(F)), -1)[e.index])
             raise ValueError(
@@ -512,7 +520,10 @@ class Cylinder(_Problems):
                 "Dugdale law (the default) gives the contact"
             )
         try:
-            r = _lj.contact_for_load(F / Eh, self.R_over_h, self.sigma0_over_E, on_failure=policy)
+            with _small_strain_in_si():  # said in metres below
+                r = _lj.contact_for_load(
+                    F / Eh, self.R_over_h, self.sigma0_over_E, on_failure=policy
+                )
         except _ljg.BelowPullOffError as e:
             Fi = float(np.reshape(F, -1)[e.index])
             raise NoEquilibriumError(
@@ -677,14 +688,17 @@ class Cylinder(_Problems):
         if max_half_width is not None:
             _domain.check_si("max_half_width", max_half_width, self.radius, "a_max_over_R", "m")
             a_max = self.over(max_half_width, "R")
-        c = _normal.load_curve(
-            self.R_over_h,
-            self.sigma0_over_E,
-            a_max_over_R=a_max,
-            num=num,
-            num_noncontact=num_noncontact,
-        )
-        return _si_load_curve(self, c)
+        with _small_strain_in_si():
+            c = _normal.load_curve(
+                self.R_over_h,
+                self.sigma0_over_E,
+                a_max_over_R=a_max,
+                num=num,
+                num_noncontact=num_noncontact,
+            )
+        curve = _si_load_curve(self, c)
+        _warn_small_strain(curve.contact_half_width, self.radius, stacklevel=3)
+        return curve
 
     def lennard_jones_load_curve(
         self, *, max_load: float | None = None
@@ -711,13 +725,16 @@ class Cylinder(_Problems):
                     "pull-off); at such loads both laws approach Hertz: use law='dugdale'"
                 )
             F_max = self.over(max_load, "Eh")
-        c = _lj.load_curve(self.R_over_h, self.sigma0_over_E, F_max_over_Eh=F_max)
-        return CylinderLennardJonesLoadCurve(
+        with _small_strain_in_si():
+            c = _lj.load_curve(self.R_over_h, self.sigma0_over_E, F_max_over_Eh=F_max)
+        curve = CylinderLennardJonesLoadCurve(
             **to_si(c, Scales.of(self)),
             stable=c.stable,
             turning_point=c.turning_point,
             nondimensional=c,
         )
+        _warn_small_strain(curve.contact_half_width, self.radius, stacklevel=3)
+        return curve
 
 
 def _si_load_curve(cylinder: Cylinder, c: Any) -> CylinderLoadCurve:

@@ -32,6 +32,7 @@ from ..units import Scales, to_si
 from ._checks import (
     _first,
     _plausible,
+    _small_strain_in_si,
     _warn_widths,
 )
 from ._results import (
@@ -108,7 +109,8 @@ def _cylinder_tangential(
         coulomb_fn = steady_rolling_coulomb if rolling else sliding_initiation_coulomb
         full = mu * F
         try:
-            r: Any = coulomb_fn(mu, A, d, T_over_muF=T, method=method, on_failure=policy)
+            with _small_strain_in_si():  # the contact's width: said by _for_load
+                r: Any = coulomb_fn(mu, A, d, T_over_muF=T, method=method, on_failure=policy)
         except NoEquilibriumError:
             raise _full_slip(st, full, "mu F", st_name) from None
         friction = "coulomb"
@@ -123,7 +125,8 @@ def _cylinder_tangential(
         # broadcast with a so that every field has the shape of the points
         full = 2 * a * t0
         try:
-            r = fn(t0 / E + 0 * a, d, T_over_Ea=T, method=method, on_failure=policy)
+            with _small_strain_in_si():
+                r = fn(t0 / E + 0 * a, d, T_over_Ea=T, method=method, on_failure=policy)
         except NoEquilibriumError:
             raise _full_slip(st, full, "2 a tau0", st_name) from None
         friction = "constant"
@@ -422,16 +425,17 @@ def _pushed_fibre(
     if length is not None:
         positive("length", length)
     try:
-        p = _push.push(
-            R / h2,
-            h1 / h2,
-            cylinder.sigma0_over_E,
-            tau / E,
-            F,
-            np.asarray(H, float) / R,
-            Q,
-            tip_friction=tip_friction,
-        )
+        with _small_strain_in_si():  # the widths at rest and sliding: said below, in metres
+            p = _push.push(
+                R / h2,
+                h1 / h2,
+                cylinder.sigma0_over_E,
+                tau / E,
+                F,
+                np.asarray(H, float) / R,
+                Q,
+                tip_friction=tip_friction,
+            )
     except NoEquilibriumError:
         # below the pull-off force of steady sliding: said in N/m, for this cylinder
         from ..sliding import sliding_pull_off
@@ -533,10 +537,12 @@ def _history_solve(
             f"{words}, the domain of the solvers), got {float(loads[bad].flat[0])!r}"
         )
     if is_coulomb:
-        r = coulomb(fr, a / cylinder.radius, loads / (fr * F), method=method)
+        with _small_strain_in_si():  # the contact's width: said by _for_load
+            r = coulomb(fr, a / cylinder.radius, loads / (fr * F), method=method)
         full = fr * F
     else:
-        r = constant(fr / E, loads / (E * a), method=method)
+        with _small_strain_in_si():
+            r = constant(fr / E, loads / (E * a), method=method)
         full = 2 * a * fr
     return F, a, full, r, "coulomb" if is_coulomb else "constant"
 

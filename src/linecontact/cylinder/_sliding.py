@@ -10,6 +10,7 @@ from numpy.typing import ArrayLike
 from .. import domain as _domain
 from .._validation import RAISE, FailurePolicy, check_array, failure_policy, positive, scalar
 from ..units import Scales, to_si
+from ._checks import _small_strain_in_si, _warn_small_strain
 from ._results import CylinderSliding
 
 
@@ -70,25 +71,31 @@ def _sliding(
     if contact_half_width is not None:
         a = positive("contact_half_width", contact_half_width)
         _domain.check_si("contact_half_width", a, cylinder.radius, "sliding_a_over_R", "m")
-        return _si(
-            cylinder,
-            sliding_contact(
+        with _small_strain_in_si():  # said in metres below
+            res = sliding_contact(
                 cylinder.over(a, "R"), *groups, tau0_over_E=tau, method=method, on_failure=policy
-            ),
-        )
-    F = check_array("load", load, low=-np.inf, low_inclusive=True)  # type: ignore[arg-type]
-    _domain.check_si("load", F, cylinder.scale("Eh"), "F_over_Eh2", "N/m")
-    try:
-        res = sliding_contact_for_load(
-            cylinder.over(F, "Eh"), *groups, tau0_over_E=tau, method=method, on_failure=policy
-        )
-    except _domain.TooWideError as e:
-        Fi = float(np.reshape(F, -1)[e.index])
-        raise ValueError(
-            f"load={Fi!r} N/m needs a contact of half-width {e.a_over_R * cylinder.radius:.6g} "
-            f"m, {e.a_over_R:.6g} radii: {e.limit}"
-        ) from None
-    return _si(cylinder, res)
+            )
+    else:
+        F = check_array("load", load, low=-np.inf, low_inclusive=True)  # type: ignore[arg-type]
+        _domain.check_si("load", F, cylinder.scale("Eh"), "F_over_Eh2", "N/m")
+        try:
+            with _small_strain_in_si():
+                res = sliding_contact_for_load(
+                    cylinder.over(F, "Eh"),
+                    *groups,
+                    tau0_over_E=tau,
+                    method=method,
+                    on_failure=policy,
+                )
+        except _domain.TooWideError as e:
+            Fi = float(np.reshape(F, -1)[e.index])
+            raise ValueError(
+                f"load={Fi!r} N/m needs a contact of half-width "
+                f"{e.a_over_R * cylinder.radius:.6g} m, {e.a_over_R:.6g} radii: {e.limit}"
+            ) from None
+    out = _si(cylinder, res)
+    _warn_small_strain(out.contact_half_width, cylinder.radius, stacklevel=4)  # the caller's
+    return out
 
 
 def _si(cylinder: Any, res: Any) -> CylinderSliding:
