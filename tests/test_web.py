@@ -12,6 +12,7 @@ import subprocess
 import sys
 import time
 import urllib.error
+import urllib.parse
 import urllib.request
 import warnings
 
@@ -310,7 +311,10 @@ def test_the_form_switches_units_and_submits(server, browser):
     page.click("#go")
     got = float(_value(page, "F_pulloff_N_per_m"))
     assert "radius=1e-7" in page.url  # SI in the link
-    api = json.load(urllib.request.urlopen(f"{server}/api/v1/pulloff?{page.url.split('?')[1]}"))
+    link = urllib.parse.parse_qsl(page.url.split("?")[1])
+    assert ("u.radius", "um") in link  # the unit chosen, kept in the link (not an API parameter)
+    query = urllib.parse.urlencode([(k, v) for k, v in link if not k.startswith("u.")])
+    api = json.load(urllib.request.urlopen(f"{server}/api/v1/pulloff?{query}"))
     assert got == api["results"][0]["F_pulloff_N_per_m"]
     page.fill("#f-radius", "-3")
     page.click("#go")
