@@ -16,6 +16,7 @@ import socket
 import subprocess
 import sys
 import time
+import urllib.error
 import urllib.parse
 import urllib.request
 import warnings
@@ -468,3 +469,16 @@ def test_the_apis_warnings_go_last_and_are_a_list_even_when_empty():
         assert json.loads(_with_warnings('{"results": []}\n', []))["warnings"] == []
         doc = json.loads(_with_warnings('{"a": 1, "results": [{"x": 2}]}', ["said"]))
     assert list(doc) == ["a", "results", "warnings"] and doc["warnings"] == ["said"]
+
+
+@pytest.mark.parametrize(
+    ("value", "words"),
+    [("0,3", "a decimal comma? write 0.3"), ("40 nm", "the number alone (40), in SI units")],
+)
+def test_the_api_says_why_one_value_came_as_two(server, value, words):
+    query = urllib.parse.urlencode({"radius": value, "R_over_h": "1"})
+    with pytest.raises(urllib.error.HTTPError) as got:
+        urllib.request.urlopen(f"{server}/api/v1/pulloff?{query}", timeout=60)
+    assert got.value.code == 422
+    err = json.load(got.value)["error"]
+    assert err["parameter"] == "radius" and words in err["message"], err

@@ -136,6 +136,7 @@ def argv_of(command: str, items: Iterable[tuple[str, str]]) -> list[str]:
         )
     actions = _actions(command)
     values: dict[str, list[str]] = {}
+    typed: dict[str, list[str]] = {}  # the values as the request gave them
     order: list[str] = []
     for name, value in items:
         flag = "--" + name.replace("_", "-")
@@ -148,6 +149,7 @@ def argv_of(command: str, items: Iterable[tuple[str, str]]) -> list[str]:
             order.append(flag)
             values[flag] = []
         values[flag] += [v for v in re.split(r"[,\s]+", value.strip()) if v] if value else []
+        typed.setdefault(flag, []).append(value)
     argv: list[str] = []
     for flag in order:
         a, vals = actions[flag], values[flag]
@@ -166,9 +168,24 @@ def argv_of(command: str, items: Iterable[tuple[str, str]]) -> list[str]:
         if not vals:
             raise ParameterError(name, f"{name} needs a value")
         if a.nargs is None and len(vals) > 1:
-            raise ParameterError(name, f"{name} takes one value, got {len(vals)}")
+            raise ParameterError(name, _one_value(name, typed[flag], a.type is float))
         argv += [flag, *vals]
     return argv
+
+
+def _one_value(name: str, typed: list[str], number: bool) -> str:
+    """Why a parameter that takes one value got several: a decimal comma, a unit typed."""
+    text = ", ".join(repr(v) for v in typed)
+    said = f"{name} takes one value, got {text}"
+    if not number or len(typed) != 1:
+        return said
+    value = typed[0].strip()
+    if re.fullmatch(r"[-+]?\d*,\d+", value):
+        return f"{said}: a decimal comma? write {value.replace(',', '.')}, with a point"
+    m = re.fullmatch(r"([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s+(\S+)", value)
+    if m and not _NUMBER.match(m.group(2)) and not re.fullmatch(r"[\d.eE+-]+", m.group(2)):
+        return f"{said}: give the number alone ({m.group(1)}), in SI units (no unit typed)"
+    return said
 
 
 def points_of(command: str, argv: list[str]) -> tuple[int, str | None]:
