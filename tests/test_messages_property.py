@@ -573,14 +573,20 @@ def test_the_si_api_names_its_own_keywords(case, keyword):
     for text in VALUES:
         value = float(text)
         shaped = np.full(np.shape(kwargs[keyword]), value) if np.ndim(kwargs[keyword]) else value
-        try:
-            with warnings.catch_warnings():
-                warnings.simplefilter("ignore", lc.ModelValidityWarning)
-                warnings.simplefilter("ignore", lc.CouplingWarning)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            try:
                 fn(**{**kwargs, keyword: shaped})
-        except (ValueError, ConvergenceError) as exc:
-            message = str(exc)
-        else:
+            except (ValueError, ConvergenceError) as exc:
+                message = str(exc)
+            else:
+                message = ""
+        # its notes too: in SI terms, and no NumPy warning
+        for w in caught:
+            assert not issubclass(w.category, RuntimeWarning), (case, keyword, value, w.message)
+            note = QUOTED.sub(" ", str(w.message))
+            assert not GROUPS.findall(note), (case, keyword, value, w.message)
+        if not message:
             continue
         text_ = QUOTED.sub(" ", message)
         groups = [g for g in GROUPS.findall(text_) if g not in kwargs]
@@ -720,3 +726,37 @@ def test_an_unresolvable_history_on_the_command_line_is_one_line_at_once():
     code, err = run(argv)
     assert time.perf_counter() - start < 1.5
     assert code == 1 and err.count("\n") == 1 and "cannot resolve step 1" in err, err
+
+
+# --------------------------------------------------------------------------------------------
+# the model notes of an SI run are said in SI terms too
+
+
+def test_a_contact_beyond_small_strain_is_said_in_metres():
+    cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
+    cyl0 = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=0.0, adhesion_range=0.5e-9)
+    calls = [
+        lambda: cyl.contact(load=1000.0),
+        lambda: cyl.contact(contact_half_width=2e-8),
+        lambda: cyl.load_curve(max_half_width=3e-8),
+        lambda: cyl.sliding(receding_range=1e-9, load=1000.0),
+        lambda: cyl.sliding_initiation(1000.0, friction_stress=1e9, tangential_load=1.0),
+        lambda: cyl0.steady_rolling(1000.0, friction_coefficient=0.3, tangential_load=1.0),
+        lambda: cyl0.tangential_history(1000.0, [1.0, -1.0], friction_coefficient=0.3),
+        lambda: cyl.push(friction_stress=1e6, height=25e-9, receding_range=1e-9, normal_load=1e3),
+        lambda: lc.shear_strength_from_friction(20.0, 1000.0, 50e-9, 50e9, 0.1, 0.3e-9),
+    ]
+    for call in calls:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            call()
+        said = [str(w.message) for w in caught if issubclass(w.category, lc.ModelValidityWarning)]
+        assert said and all(re.search(r" m is [0-9.]+ times the radius, beyond", s) for s in said)
+        for s in said:
+            assert not GROUPS.search(s) and not SNAKE.search(s), s
+    code, err = run(["normal", *SI, "--load", "1000"])
+    assert code == 0 and err == (
+        "linecontact normal: warning: the contact half-width 2.55e-08 m is 0.511 times the "
+        "radius, beyond the small-strain range of the half-plane theory (at most 0.2 times the "
+        "radius, a strain of 0.1): the results are those of linear elasticity\n"
+    )
