@@ -275,9 +275,9 @@
       const r = rec(doc), L = lengthOf(doc);
       return [
         p("It comes off at a pull of ", val("F_pulloff_N_per_m", r.F_pulloff_N_per_m, qty(Math.abs(r.F_pulloff_N_per_m), "force")),
-          ...totalOn(r, "F_pulloff_total_N", L), ` (the pull-off force per length is ${fmt(r.F_pulloff_N_per_m)} N/m, tensile), `,
-          `by the ${r.mechanism} mechanism; the contact half-width at pull-off is `,
-          val("a_at_pulloff_m", r.a_at_pulloff_m, qty(r.a_at_pulloff_m, "length", ["radius"])), "."),
+          ...totalOn(r, "F_pulloff_total_N", L), `, by the ${r.mechanism} mechanism; the contact half-width at pull-off is `,
+          val("a_at_pulloff_m", r.a_at_pulloff_m, qty(r.a_at_pulloff_m, "length", ["radius"])),
+          `. (The records give the pull-off force as ${fmt(r.F_pulloff_N_per_m)} N/m: a tensile load is negative.)`),
         maugis(r.maugis_parameter),
       ];
     },
@@ -285,7 +285,7 @@
       const r = rec(doc);
       return [
         p("Under the Lennard-Jones law it comes off at a pull of ", val("F_pulloff_N_per_m", r.F_pulloff_N_per_m, qty(Math.abs(r.F_pulloff_N_per_m), "force")),
-          ` (pull-off force ${fmt(r.F_pulloff_N_per_m)} N/m; the law's parameter mu = `, val("mu", r.mu, fmt(r.mu)), `, solved by the ${r.method} method).`),
+          ` (the law's parameter mu = `, val("mu", r.mu, fmt(r.mu)), `, solved by the ${r.method} method; the records give the pull-off force as ${fmt(r.F_pulloff_N_per_m)} N/m: a tensile load is negative).`),
         maugis(r.maugis_parameter),
       ];
     },
