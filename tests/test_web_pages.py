@@ -111,6 +111,17 @@ def _compute(page) -> tuple[str, str]:
     return req.value.url, _answer(page)
 
 
+def _fits_both_widths(page) -> None:
+    """No horizontal overflow at 1280 and 390 px, the table open (screenshots taken)."""
+    if not page.locator("#details").evaluate("d => d.open"):
+        page.click("#details summary")
+    for width in (1280, 390):
+        page.set_viewport_size({"width": width, "height": 900})
+        over = page.evaluate("document.documentElement.scrollWidth - window.innerWidth")
+        assert over <= 0, (page.url, width, over)
+        assert page.screenshot(full_page=True)[:4] == b"\x89PNG"
+
+
 def _run_python(code: str, names: list[str]) -> dict[str, Any]:
     """Run the page's Python lines in a fresh interpreter; the values of ``names`` as JSON."""
     pairs = ", ".join(f"{n!r}: {n}" for n in names)
@@ -396,6 +407,7 @@ def test_the_fit_page_plots_the_data_the_fit_and_its_band_and_fixes_z0(server, p
     w = float(page.get_attribute("#headline [data-key='work_of_adhesion']", "data-value"))
     ran = _run_python(page.inner_text("#py"), ["result.work_of_adhesion"])
     assert ran["result.work_of_adhesion"] == pytest.approx(w, rel=1e-6)
+    _fits_both_widths(page)
 
 
 def test_the_map_page_leads_with_your_wire_and_plots_before_its_table(server, page):
@@ -417,6 +429,7 @@ def test_the_map_page_leads_with_your_wire_and_plots_before_its_table(server, pa
     assert top[0] < top[1] < top[2]  # the answer, the plot, then the 164 rows
     ran = _run_python(page.inner_text("#py"), ["cyl.maugis_parameter"])
     assert ran["cyl.maugis_parameter"] == pytest.approx(api["maugis_parameter"], rel=1e-12)
+    _fits_both_widths(page)
 
 
 # ------------------------------------------------------------------------------------------
@@ -433,7 +446,9 @@ LINKS = {
     "&z0=3e-10&load=1&tau0=1e7&tangential_amplitude=0.01,0.02",
     "curve": "cylinder_material=ZnO&substrate_material=SiO2&radius=5e-08&work_of_adhesion=0.3"
     "&z0=3e-10",
-}
+    "lennard-jones": "cylinder_material=ZnO&substrate_material=SiO2&radius=5e-08"
+    "&work_of_adhesion=0.3&z0=3e-10",
+}  # and the fit and the map pages, in their own tests (_fits_both_widths)
 
 
 @pytest.mark.parametrize("width", [1280, 390])
