@@ -284,6 +284,8 @@ def _one_sd(args, name: str, value: float | None) -> float:
         raise ValueError(f"{flag} must be finite and >= 0, got {text!r}")
     if value is None:
         raise ValueError(f"{flag} needs --{name.replace('_', '-')}")
+    if not math.isfinite(value):  # the value's fault, not its uncertainty's
+        raise ValueError(f"--{name.replace('_', '-')} must be a finite number, got {value!r}")
     sd = abs(value) * v if rel else v
     # the Monte Carlo draws around the value: an uncertainty as large as the value itself
     # draws as many non-physical values as physical ones (and 1e300 overflows)

@@ -305,8 +305,14 @@ def _works_to_ranges(args: argparse.Namespace) -> None:
             "give adhesion either as the two works of adhesion with --z0, or as --sigma0, "
             "--h2 and --h1, not both"
         )
-    for flag, v in (("--work-of-adhesion-receding", w1), ("--work-of-adhesion-advancing", w2)):
-        if not (np.isfinite(v) and v > 0):
+    for flag, v in (
+        ("--work-of-adhesion-receding", w1),
+        ("--work-of-adhesion-advancing", w2),
+        ("--z0", args.z0),
+        ("--radius", args.radius),
+        ("--modulus", args.modulus),
+    ):  # each by itself before they are combined (a radius nan: not a bad ratio)
+        if v is not None and not (np.isfinite(v) and v > 0):
             raise ValueError(f"{flag} must be a finite number > 0, got {v!r}")
     if w2 > w1:
         raise ValueError(
