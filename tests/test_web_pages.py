@@ -265,6 +265,26 @@ def test_an_error_from_the_server_is_in_the_fields_words_and_unit(server, page):
     compile(page.inner_text("#py") or "pass", "<page>", "exec")  # never invalid Python
 
 
+@pytest.mark.parametrize(
+    ("field", "typed", "words"),
+    [
+        ("work_of_adhesion_advancing", "0.9",
+         "The advancing work of adhesion w2 must be <= the receding work of adhesion w1"),
+        ("height", "10, 200", "must be in [0, 100 nm] (2R), got 200 nm"),
+        ("tau0", "-1", "got -1 MPa"),
+        ("radius", "", "the radius R (in nm)"),
+    ],
+)  # fmt: skip
+def test_the_push_pages_errors_are_in_its_fields_words(server, page, field, typed, words):
+    page.goto(f"{server}/push")
+    page.fill(f"#f-{field}", typed)
+    page.click("#go")
+    page.wait_for_selector(f"#m-{field}.error", timeout=WAIT)
+    message = page.inner_text(f"#m-{field}")
+    assert words in message and "--" not in message, message
+    assert page.inner_text("#answer") == ""
+
+
 # ------------------------------------------------------------------------------------------
 # the push page
 

@@ -176,31 +176,52 @@
   const flagName = (flag) => flag.replace(/^--/, "").replace(/-/g, "_");
 
   // the command line's words as the page's: flags as labels, SI values in the units chosen
-  function inWords(text) {
+  // (those of the field ``name`` the message is about, where given)
+  const short = (f) => f.label.replace(/\s*\(.*\)$/, "");
+  const NUM = "(-?(?:\\d+\\.?\\d*|\\.\\d+)(?:e[+-]?\\d+)?)";
+  function inWords(text, name) {
+    const own = name && fields[name] && SI_UNIT[fields[name].kind] ? fields[name] : null;
+    const conv = (num, unit) => { // an SI value in the field's unit, else in its kind's on this page
+      if (own && SI_UNIT[own.kind] === unit) {
+        const [u, factor] = unitOf(own.name);
+        return `${fmt(parseFloat(num) / factor)} ${u}`;
+      }
+      const kind = Object.keys(SI_UNIT).find((k) => SI_UNIT[k] === unit && unitOfKind(k)[0]);
+      return kind ? qty(parseFloat(num), kind) : `${num} ${unit}`;
+    };
     let t = text.replace(/\s*\(linecontact takes SI units[^)]*\)/g, "");
-    t = t.replace(/(--[A-Za-z][\w-]*)\s*(?:=\s*)?(-?[\d.]+(?:e[+-]?\d+)?)\s+(m|Pa|J\/m\^2|N\/m)\b/g, (all, flag, num, unit) => {
+    t = t.replace(new RegExp(`(--[A-Za-z][\\w-]*)\\s*(?:=\\s*)?${NUM}\\s+(m|Pa|J/m\\^2|N/m)\\b`, "g"), (all, flag, num, unit) => {
       const f = fields[flagName(flag)];
       if (!f || SI_UNIT[f.kind] !== unit) return all;
       const [u, factor] = unitOf(f.name);
-      return `${f.label} = ${fmt(parseFloat(num) / factor)} ${u}`;
+      return `${short(f)} = ${fmt(parseFloat(num) / factor)} ${u}`;
     });
-    t = t.replace(/\b(-?[\d.]+(?:e[+-]?\d+)?) (m|Pa|J\/m\^2|N\/m)\b/g, (all, num, unit) => {
-      const kind = Object.keys(SI_UNIT).find((k) => SI_UNIT[k] === unit && unitOfKind(k)[0]);
-      if (!kind) return all;
-      return qty(parseFloat(num), kind);
+    t = t.replace(new RegExp(`\\[${NUM}, ${NUM}\\] (m|Pa|J/m\\^2|N/m)\\b`, "g"), (all, a, b, unit) => {
+      const [ca, cb] = [conv(a, unit), conv(b, unit)];
+      return `[${ca.split(" ")[0]}, ${cb}]`;
     });
+    t = t.replace(new RegExp(`(^|[^\\w.])${NUM} (m|Pa|J/m\\^2|N/m)\\b`, "g"), (all, pre, num, unit) => pre + conv(num, unit));
+    if (own) { // "got -1000000.0": a value the field sent, in its unit
+      const sent = (parse(own).values || []).map(Number);
+      const same = (x) => sent.some((v) => Math.abs(v - x) <= 1e-9 * Math.abs(v));
+      t = t.replace(new RegExp(`\\bgot ${NUM}(?=$|[^\\w.])`, "g"), (all, num) => (same(parseFloat(num)) ? `got ${conv(num, SI_UNIT[own.kind])}` : all));
+    }
     t = t.replace(/(--[A-Za-z][\w-]*) \/ (--[A-Za-z][\w-]*) must be in \[([^\]]+)\] \(the domain of the solvers\)/g,
       (all, a, b, range) => {
         const [fa, fb] = [fields[flagName(a)], fields[flagName(b)]];
-        return `the ratio ${fa ? fa.label : a} / ${fb ? fb.label : b} must be within [${range}] (the solvers' domain)`;
+        return `the ratio ${fa ? short(fa) : a} / ${fb ? short(fb) : b} must be within [${range}] (the solvers' domain)`;
       });
     t = t.replace(/is (--[A-Za-z][\w-]*) in metres\?/g, (all, flag) => {
       const f = fields[flagName(flag)];
-      return f ? `is the ${f.label} in ${unitOf(f.name)[0]}?` : all;
+      return f ? `is the ${short(f)} in ${unitOf(f.name)[0]}?` : all;
+    });
+    t = t.replace(/(--[A-Za-z][\w-]*) \[(m|Pa|J\/m\^2|N\/m)\]/g, (all, flag, unit) => {
+      const f = fields[flagName(flag)];
+      return f && SI_UNIT[f.kind] === unit ? `the ${short(f)} (in ${unitOf(f.name)[0]})` : all;
     });
     t = t.replace(/--[A-Za-z][\w-]*/g, (flag) => {
       const f = fields[flagName(flag)];
-      return f ? `the ${f.label}` : flag.replace(/^--/, "").replace(/-/g, " ");
+      return f ? `the ${short(f)}` : flag.replace(/^--/, "").replace(/-/g, " ");
     });
     return t.replace(/\bthe the\b/g, "the").replace(/^the /, "The ");
   }
@@ -222,7 +243,7 @@
   function error(doc) {
     const e = (doc && doc.error) || { message: "the server gave no answer" };
     const name = fieldOf(e.message, e.parameter);
-    let text = inWords(e.message || "");
+    let text = inWords(e.message || "", name);
     if (name && name !== "data") {
       const [u] = unitOf(name);
       const typed = $("f-" + name).value.trim();
@@ -385,7 +406,7 @@
       li.dataset.raw = w;
       ul.appendChild(li);
       const name = fieldOf(w, null);
-      if (name) say(name, "Warning: " + inWords(w), "warn");
+      if (name) say(name, "Warning: " + inWords(w, name), "warn");
     }
     box.append(h, ul);
     $("answer").appendChild(box);
