@@ -52,6 +52,8 @@ html_theme_options = {
     "navigation_with_keys": False,
     "show_toc_level": 2,
 }
+html_static_path = ["_static"]
+html_css_files = ["linecontact.css"]  # wide display equations scroll, never cut off
 numpydoc_show_class_members = False
 autosummary_generate = True
 # signatures of names only: the types are in each docstring's Parameters (numpydoc), not

@@ -291,6 +291,20 @@ def test_in_a_browser_without_internet_every_equation_is_typeset(served):
                 assert counts["math"] > 0, name
                 assert counts["typeset"] >= counts["math"], (name, counts)
                 assert not counts["errors"], (name, counts["errors"][:5])
+                # no display equation cut off: inside its column, or scrolling sideways
+                cut = page.evaluate(
+                    """() => [...document.querySelectorAll('mjx-container[display="true"]')]
+                        .filter(m => {
+                            const box = (m.closest('div.math') || m).getBoundingClientRect();
+                            const scrolls = m.scrollWidth > m.clientWidth;
+                            return [...m.querySelectorAll('mjx-c')].some(c => {
+                                const r = c.getBoundingClientRect();
+                                return r.width > 0 && (r.left < box.left - 1
+                                    || (r.right > box.right + 1 && !scrolls));
+                            });
+                        }).map(m => m.textContent.slice(0, 60))"""
+                )
+                assert not cut, (name, cut[:3])
                 # the header: one row at 1280 px (its links, the search, the theme switch)
                 tops = page.evaluate(
                     "() => [...document.querySelectorAll('.bd-header .navbar-nav > li,"
