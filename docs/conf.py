@@ -56,6 +56,8 @@ html_static_path = ["_static"]
 html_css_files = ["linecontact.css"]  # wide display equations scroll, never cut off
 numpydoc_show_class_members = False
 autosummary_generate = True
+# a class's page: its methods in a table without signatures, then each documented in full
+templates_path = ["_templates"]
 # signatures of names only: the types are in each docstring's Parameters (numpydoc), not
 # expanded from NumPy's typing internals into the signature
 autodoc_typehints = "none"

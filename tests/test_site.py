@@ -315,3 +315,38 @@ def test_in_a_browser_without_internet_every_equation_is_typeset(served):
             assert not elsewhere, elsewhere[:5]
         finally:
             browser.close()
+
+
+def test_in_a_browser_the_header_is_one_row_and_the_tables_fit(served):
+    pw = pytest.importorskip("playwright.sync_api")
+    if CHROMIUM is None:
+        pytest.skip("no chromium (apt-get install chromium)")
+    pages = [
+        "index.html",
+        "install.html",
+        "api.html",
+        "auto_examples/index.html",
+        "changelog.html",
+        "citing.html",
+        "generated/linecontact.Cylinder.html",
+    ]
+    with pw.sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=CHROMIUM, args=["--no-sandbox"])
+        try:
+            page = browser.new_page(viewport={"width": 1280, "height": 900})
+            for name in pages:
+                page.goto(f"{served}/{name}")
+                tops = page.evaluate(
+                    "() => [...document.querySelectorAll('.bd-header .navbar-nav > li,"
+                    " .bd-header .search-button, .bd-header .theme-switch-button')]"
+                    ".filter(e => e.offsetParent).map(e => e.getBoundingClientRect().top)"
+                )
+                assert len(tops) >= 8 and max(tops) - min(tops) < 10, (name, tops)
+                wide = page.evaluate(
+                    "() => [...document.querySelectorAll('article table')].filter(t =>"
+                    " t.getBoundingClientRect().right > document.querySelector('article')"
+                    ".getBoundingClientRect().right + 1).map(t => t.textContent.slice(0, 60))"
+                )
+                assert not wide, (name, wide[:3])
+        finally:
+            browser.close()
