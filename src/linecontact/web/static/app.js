@@ -759,13 +759,16 @@
     const hs = Array.from({ length: 21 }, (_, i) => siText(2 * R * i / 20));
     const pts = [];
     const X = axis({ kind: "length", label: "push height H" }, ["height", "radius"]);
+    const mine = generation;
     for (const f of [0.01, 0.03, 0.1, 0.3, 1, 3, 10, 30, 100]) {
+      if (mine !== generation) return; // a newer computation was asked for
       const v = { ...values, tau0: [siText(tau * f)], height: hs };
       delete v.push;
       const [status, doc] = await api("push", params(v));
       if (status !== 200) continue;
       for (const r of doc.results) pts.push([r.H_m / X.f, Math.log10(tau * f), r.first_motion === "roll"]);
     }
+    if (mine !== generation) return;
     plot([{ pts, label: "" }], { xlabel: X.label, ylabel: "log10 tau0 [Pa]", falseColor: "#ff7f0e",
       legend: "The motion map: blue rolls first, orange slides first (or rolls and slips);" },
     { y: Math.log10(tau), label: "your wire" }, "motion", "motion-svg");
@@ -831,29 +834,42 @@
   // computing
 
   let current = null; // the inputs of the computation shown
+  let generation = 0; // counts the computations asked for: older extra requests stop
   async function done(doc) {
+    const mine = generation;
     const { values, aux } = current;
     const mark = await marked(aux);
+    if (mine !== generation) return; // a newer computation was asked for
     headline(doc, mark);
     warnings([...(doc.warnings || []), ...((mark && mark.warnings) || [])]);
     if (spec.page === "fit") fitPlot(doc, null);
-    else pagePlot(doc, mark, await flatPush(values));
+    else {
+      const extra = await flatPush(values);
+      if (mine !== generation) return;
+      pagePlot(doc, mark, extra);
+    }
     results(doc);
     downloads(doc);
     equivalent(values, aux, doc);
     $("status").textContent = `done: ${(doc.results || []).length} record(s)`;
-    if (spec.page === "fit") { fitPlot(doc, await fitCurve(doc, values)); downloads(doc); }
+    if (spec.page === "fit") {
+      const rows = await fitCurve(doc, values);
+      if (mine !== generation) return;
+      fitPlot(doc, rows);
+      downloads(doc);
+    }
     motion(values);
   }
 
-  async function poll(id) {
+  async function poll(id, mine) {
     const r = await fetch("/api/v1/jobs/id/" + id);
     const doc = await r.json();
+    if (mine !== generation) return; // a newer computation was asked for
     if (doc.state === "queued" || doc.state === "running") {
       const pr = doc.progress ? `${doc.progress.done}/${doc.progress.total} curves, ` : "";
       const what = doc.state === "queued" ? "waiting for a worker..." : "computing...";
       $("status").textContent = `${what} ${pr}${doc.elapsed_s.toFixed(1)} s`;
-      job = setTimeout(() => poll(id), 500);
+      job = setTimeout(() => poll(id, mine), 500);
       return;
     }
     $("cancel").hidden = true;
@@ -865,6 +881,8 @@
 
   form.addEventListener("submit", async (ev) => {
     ev.preventDefault();
+    generation += 1;
+    if (job) { clearTimeout(job); job = null; }
     clearMessages();
     for (const id of ["answer", "plot", "motion", "results", "downloads"]) $(id).textContent = "";
     const main = inputs(false), aux = inputs(true);
@@ -895,7 +913,7 @@
         $("cancel").onclick = async () => {
           await fetch("/api/v1/jobs/id/" + doc.id, { method: "DELETE" });
         };
-        poll(doc.id);
+        poll(doc.id, generation);
         return;
       }
       if (spec.upload) {
