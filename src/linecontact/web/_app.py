@@ -741,7 +741,9 @@ def _openapi(limits: dict[str, Any]) -> dict[str, Any]:
     )
     error = {"description": "{error: {parameter, message}}"}
     responses = {
-        "200": {"description": "exactly what `linecontact COMMAND --json` prints"},
+        "200": {"description": "exactly what `linecontact COMMAND --json` prints, then "
+                "`warnings`: the notes the command line prints on stderr (a list, [] when "
+                "none)"},
         "400": {"description": "a malformed body (not JSON, not UTF-8, nested too deeply, "
                 "a malformed form)"},
         "403": {"description": "a Host header that does not name this server, or the Origin "
@@ -795,7 +797,7 @@ def _openapi(limits: dict[str, Any]) -> dict[str, Any]:
     job_doc = (
         "{id, command, state (queued, running, done, failed, cancelled), elapsed_s (stops "
         "when it ends), progress {done, total} where reported; once ended: status (499 when "
-        "cancelled), and result or error}"
+        "cancelled), and result (with its warnings) or error}"
     )
     paths["/api/v1/jobs/{command}"] = {
         "post": {
