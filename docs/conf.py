@@ -20,7 +20,14 @@ import os
 import shutil
 import sys
 
+import sphinx.ext.autosummary
+
 import linecontact
+
+# a summary line's "Eq. (7)" or "Fig. 6" is no sentence's end: the API tables showed "... Eq."
+sphinx.ext.autosummary.WELL_KNOWN_ABBREVIATIONS += tuple(
+    f"{before}{word}." for before in " (" for word in ("Eq", "Eqs", "Fig", "Figs")
+)
 
 sys.path.insert(0, os.path.dirname(__file__))  # _gallery (the examples' command lines)
 

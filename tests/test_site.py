@@ -157,6 +157,22 @@ def test_the_examples_pages_show_prose_and_no_path_of_the_build_machine(site):
         assert text.count("<h2>") >= 2, f"{example.name}: no text between its steps"
 
 
+def test_the_api_reference_is_grouped_by_task_with_short_signatures(site):
+    import linecontact
+
+    api = (site / "api.html").read_text(encoding="utf-8")
+    assert api.count("<h2>") >= 8, "the API reference is not grouped by task"
+    for name in (n for n in linecontact.__all__ if not n.startswith("_")):
+        assert f'href="generated/linecontact.{name}.html' in api, name
+    assert not re.search(r"\bEqs?\.</(p|td)>", api), "a summary cut at 'Eq.'"
+    for page in (site / "generated").glob("*.html"):
+        text = page.read_text(encoding="utf-8")
+        assert "_SupportsArray" not in text and "_Buffer" not in text, page.name
+    cylinder = (site / "generated" / "linecontact.Cylinder.html").read_text(encoding="utf-8")
+    for method in ("contact", "pull_off", "push", "sliding", "steady_rolling", "cyclic_loss"):
+        assert f'id="linecontact.Cylinder.{method}"' in cylinder, method
+
+
 def test_no_page_loads_a_script_or_stylesheet_from_another_host(site):
     for path in _pages(site):
         for tag, a in _page(path).tags:
