@@ -383,6 +383,13 @@ def test_the_push_page_takes_the_works_of_adhesion_and_a_tip(server, page):
             [("result.contact_half_width", "a_m")],
         ),
         ("cycle", {}, "cycle", [("result.energy_per_cycle", "W_J_per_m")]),
+        (
+            "curve",
+            {},
+            "curve",
+            [("result.load", "F_N_per_m"), ("result.contact_half_width", "a_m")],
+        ),
+        ("lennard-jones", {}, "pulloff", [("result.pull_off_force", "F_pulloff_N_per_m")]),
     ],
 )
 def test_a_pages_python_lines_give_the_apis_numbers(server, page, name, fill, command, pairs):
@@ -396,7 +403,9 @@ def test_a_pages_python_lines_give_the_apis_numbers(server, page, name, fill, co
     ran = _run_python(code, [p for p, _ in pairs])
     for py, key in pairs:
         want = [r[key] for r in api] if len(api) > 1 or isinstance(ran[py], list) else api[0][key]
-        assert ran[py] == pytest.approx(want, rel=1e-9), (py, key)
+        # the Lennard-Jones solver's last bits move with the BLAS threads (tests/test_web.py)
+        rel = 1e-6 if name == "lennard-jones" else 1e-9
+        assert ran[py] == pytest.approx(want, rel=rel), (py, key)
 
 
 # ------------------------------------------------------------------------------------------
