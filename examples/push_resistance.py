@@ -1,10 +1,11 @@
-"""A nanowire pushed sideways: the push that rolls it and the push that slides it
+r"""A nanowire pushed sideways: the push that rolls it and the push that slides it
 ===============================================================================
 
-A 50 nm ZnO wire on silica (work of adhesion 0.3 J/m², z0 = 0.3 nm, the receding range
-twice the advancing one, shear strength 10 MPa), pushed at heights from its foot to its top:
-rolling resists ``Q_roll = R dw / H``, sliding ``Q_slide = 2 a tau0 + dw``; the lower one is
-its first motion, and the critical height ``H*`` parts them.
+A 50 nm ZnO wire on silica (work of adhesion 0.3 J/m², :math:`z_0` = 0.3 nm, the receding
+range twice the advancing one, shear strength 10 MPa), pushed at heights from its foot to its
+top: rolling resists :math:`Q_{\mathrm{roll}} = R\,\Delta w / H`, sliding
+:math:`Q_{\mathrm{slide}} = 2 a \tau_0 + \Delta w`; the lower one is its first motion, and
+the critical height :math:`H^*` parts them.
 
 Run: ``python examples/push_resistance.py [push.png]`` (the figure is saved where a path is
 given).
