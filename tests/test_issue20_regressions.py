@@ -44,11 +44,11 @@ def test_output_files_follow_the_umask(tmp_path, umask, mode):
 
 @pytest.mark.parametrize(("umask", "mode"), [(0o022, 0o644), (0o002, 0o664)])
 def test_figure_files_follow_the_umask(tmp_path, umask, mode):
-    from linecontact.figures._style import _atomic
+    from linecontact._files import atomic_file
 
     old = os.umask(umask)
     try:
-        with _atomic(tmp_path / "fig.png") as fh:
+        with atomic_file(tmp_path / "fig.png", name="figure") as fh:
             fh.write(b"data")
     finally:
         os.umask(old)

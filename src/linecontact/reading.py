@@ -319,7 +319,10 @@ def _number(cell: str) -> Any:
         return value if isinstance(value, list) else _NOT_A_NUMBER
     if not _NUMBER.fullmatch(cell):
         return _NOT_A_NUMBER
-    return int(cell) if _INT.fullmatch(cell) else float(cell)
+    try:
+        return int(cell) if _INT.fullmatch(cell) else float(cell)
+    except ValueError:  # an integer of more digits than Python converts: none of ours
+        return _NOT_A_NUMBER
 
 
 def _text(cell: str) -> Any:

@@ -378,6 +378,7 @@ def run(
                     partial.remove()
                     return open_sweep(output)
             partial.open(overwrite)
+            partial.check()
             _compute(p, partial, workers, client, scheduler, progress)
             client = None  # closed by _dask
             metas = [partial.meta(k) for k in range(len(blocks(p.shape, p.chunk_points)))]

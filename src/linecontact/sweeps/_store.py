@@ -20,6 +20,7 @@ from __future__ import annotations
 import contextlib
 import json
 import os
+import re
 import shutil
 import stat
 import warnings
@@ -32,7 +33,7 @@ import numpy as np
 from .._files import atomic_file
 from .._fingerprint import code_identity
 from ._block import TEXT, Block, codes, is_text
-from ._plan import Plan
+from ._plan import Plan, blocks
 
 try:  # POSIX
     import fcntl
@@ -261,17 +262,48 @@ class Partial:
             with atomic_file(manifest, name="the sweep's manifest") as fh:
                 fh.write(json.dumps(info).encode())
 
+    def _kept(self) -> dict[int, Path]:
+        """Entries named as kept blocks (``block-NNNNNN.npz`` of a block of the plan)."""
+        assert self.dir is not None
+        out: dict[int, Path] = {}
+        n = len(blocks(self.plan.shape, self.plan.chunk_points))
+        for f in self.dir.iterdir():
+            m = _BLOCK_NAME.fullmatch(f.name)
+            if m is not None and int(m.group(1)) < n:
+                out[int(m.group(1))] = f
+        return out
+
     def done(self) -> set[int]:
-        """The numbers of the blocks kept whole."""
+        """The numbers of the blocks kept whole (regular files named as a block of the plan)."""
         if self.dir is None:
             return set(self.memory)
-        out = set()
-        for f in self.dir.glob("block-*.npz"):
-            try:
-                out.add(int(f.stem.split("-")[1]))
-            except ValueError:
-                continue
-        return out
+        return {k for k, f in self._kept().items() if f.is_file()}
+
+    def check(self) -> None:
+        """Read every kept block whole: a damaged one is removed, with a warning.
+
+        A block that is damaged, or not the block its name says (another block's copy,
+        another file), is removed and computed again.
+        """
+        if self.dir is None:
+            return
+        bl = blocks(self.plan.shape, self.plan.chunk_points)
+        bad: list[str] = []
+        for k, f in sorted(self._kept().items()):
+            if not _whole(f, k, tuple(s.stop - s.start for s in bl[k])):
+                bad.append(f.name)
+                if f.is_dir() and not f.is_symlink():
+                    shutil.rmtree(f, ignore_errors=True)
+                else:
+                    f.unlink(missing_ok=True)
+        if bad:
+            more = f" and {len(bad) - 3} more" if len(bad) > 3 else ""
+            warnings.warn(
+                f"{str(self.dir)!r}: {len(bad)} kept blocks were damaged or not the block their "
+                f"name says ({', '.join(bad[:3])}{more}): they are computed again",
+                UserWarning,
+                stacklevel=4,
+            )
 
     def put(self, block: Block) -> None:
         """Keep a finished block (atomically: whole or not at all)."""
@@ -281,6 +313,7 @@ class Partial:
         meta: dict[str, Any] = {"units": block.units, "parameters": block.parameters}
         meta["warnings"] = block.warnings
         meta["at"] = block.at
+        meta["index"] = block.index
         meta["shapes"] = {k: v.shape for k, v in block.data.items()}
         meta["kinds"] = {k: _kind(v) for k, v in block.data.items()}
         arrays = _encode(block.data)
@@ -319,6 +352,28 @@ class Partial:
         if self.dir is not None:
             shutil.rmtree(self.dir, ignore_errors=True)
         self.memory.clear()
+
+
+_BLOCK_NAME = re.compile(r"block-(\d{6})\.npz")
+
+
+def _whole(path: Path, index: int, shape: tuple[int, ...]) -> bool:
+    """True where ``path`` is block ``index`` of ``shape``, every array of it readable."""
+    if not path.is_file():
+        return False
+    try:
+        with np.load(path, allow_pickle=False) as z:
+            meta = json.loads(str(z[_META]))
+            if meta.get("index", index) != index:
+                return False
+            for name in z.files:  # each read whole: a damaged member fails its CRC
+                z[name]
+            for s in meta["shapes"].values():
+                if tuple(s[: len(shape)]) != shape:
+                    return False
+    except Exception:  # noqa: BLE001 - whatever is wrong with it, it is not a block of ours
+        return False
+    return True
 
 
 def _build(ident: Any) -> str:

@@ -18,6 +18,7 @@ from __future__ import annotations
 import asyncio
 import contextlib
 import io
+import json
 import multiprocessing as mp
 import os
 import re
@@ -133,10 +134,24 @@ def compute(
                 workdir = stack.enter_context(tempfile.TemporaryDirectory(prefix="linecontact-"))
             words = [*argv, "--outdir", workdir, "--workers", "1"]
             if report is None:
-                return _sized(_compute(command, words), max_bytes)
-            with contextlib.redirect_stderr(_Progress(report)):
-                return _sized(_compute(command, [*words, "--progress"]), max_bytes)
+                out = _compute(command, words)
+            else:
+                with contextlib.redirect_stderr(_Progress(report)):
+                    out = _compute(command, [*words, "--progress"])
+            return _sized(_unnamed(out, workdir), max_bytes)
     return _sized(_compute(command, argv), max_bytes)
+
+
+#: What the map's answer says in place of the server's directory (its files are not served).
+SERVER_FILES = "server-files"
+
+
+def _unnamed(out: Outcome, workdir: str) -> Outcome:
+    """``out`` with the server's directory named :data:`SERVER_FILES` (never its path)."""
+    for text in (workdir, json.dumps(workdir)[1:-1]):
+        out.body = out.body.replace(text, SERVER_FILES)
+        out.message = out.message.replace(text, SERVER_FILES)
+    return out
 
 
 def _sized(out: Outcome, max_bytes: int | None) -> Outcome:
