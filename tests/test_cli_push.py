@@ -115,3 +115,70 @@ def test_a_tip_and_the_two_works_of_adhesion(capsys):
         assert rec["Q_slide_over_Eh2"] == pytest.approx(ref.Q_slide_over_Eh2[i], rel=1e-12)
         assert rec["H_arm_m"] == pytest.approx(ref.H_arm_over_R[i] * 50e-9, rel=1e-15)
     assert doc["parameters"]["work_of_adhesion_advancing_J_per_m2"] == 0.025
+
+
+BASE = ["push", "--radius", "50e-9", "--modulus", "48e9", "--tau0", "1e6", "--height", "25e-9"]
+
+
+@pytest.mark.parametrize(
+    ("adhesion", "asked", "not_asked"),
+    [
+        # the works of adhesion (the old --work-of-adhesion is the advancing one): the receding
+        (
+            ["--work-of-adhesion", "0.05", "--z0", "3e-10"],
+            ["--work-of-adhesion-receding", "--h1 [m]"],
+            ["--h1-over-h2", "--z0"],
+        ),
+        (
+            ["--work-of-adhesion-advancing", "0.05", "--z0", "3e-10"],
+            ["--work-of-adhesion-receding", "--h1 [m]"],
+            ["--h1-over-h2", "--z0"],
+        ),
+        (["--work-of-adhesion-advancing", "0.05"], ["--work-of-adhesion-receding", "--z0"], []),
+        (
+            ["--work-of-adhesion-receding", "0.05", "--z0", "3e-10"],
+            ["--work-of-adhesion-advancing"],
+            ["--h1", "--z0"],
+        ),
+        (["--work-of-adhesion-receding", "0.05"], ["--work-of-adhesion-advancing", "--z0"], []),
+        # the ranges: --h1
+        (["--sigma0", "1e8", "--h2", "3e-10"], ["--h1 [m]"], ["--work-of-adhesion"]),
+        # nothing: both spellings
+        ([], ["--sigma0", "--h2", "--h1", "--work-of-adhesion-receding", "--z0"], []),
+    ],
+)
+def test_a_missing_receding_side_is_asked_in_the_user_s_spelling(
+    adhesion, asked, not_asked, capsys
+):
+    code, _, err = _run([*BASE, *adhesion], capsys)
+    assert code == 2
+    (line,) = [s for s in err.splitlines() if ": error: " in s]
+    assert "Traceback" not in err
+    for flag in asked:
+        assert flag in line, line
+    for flag in not_asked:
+        assert flag not in line, line
+    # every flag the error asks for is one push takes (and its help shows)
+    help_text = _help(capsys)
+    for flag in re.findall(r"--[a-z][\w-]*", line):
+        assert f"{flag} " in help_text, flag
+
+
+def _help(capsys) -> str:
+    with pytest.raises(SystemExit):
+        main(["push", "--help"])
+    return capsys.readouterr().out
+
+
+def test_the_groups_ask_for_the_ratio(capsys):
+    argv = ["push", "--R-over-h2", "100", "--sigma0-over-E", "0.01", "--tau0-over-E", "1e-3"]
+    code, _, err = _run([*argv, "--H-over-R", "1"], capsys)
+    assert code == 2 and "give --h1-over-h2" in err and "--h1 " not in err
+
+
+def test_the_works_of_adhesion_and_the_ranges_each_are_one_entry_of_the_help(capsys):
+    text = _help(capsys)
+    assert re.search(r"^  --sigma0 S, --h2 H, --h1 H1 ", text, re.M), text
+    assert re.search(
+        r"^  --work-of-adhesion-advancing W, --work-of-adhesion-receding W1, --z0 Z$", text, re.M
+    ), text

@@ -117,10 +117,21 @@ def register(sub: Any) -> None:
         help="receding W1 [J/m^2], with the advancing W2 <= W1: one sigma0, from W1",
     )
     add_output_options(p)
+    # the adhesion in two spellings, each an entry: the ranges, or the works of adhesion
+    p._option_string_actions["--work-of-adhesion-advancing"].shown_with = None  # type: ignore[attr-defined]
     for flags, text in (
         (("--R-over-h2", "--h1-over-h2"), "R/h2; h1/h2 (receding over advancing) in [1, 1000]"),
         (("--sigma0-over-E", "--tau0-over-E"), "adhesive (>= 0), friction (> 0) stress over E"),
-        (("--h1", "--tau0"), "receding range h1 [m]; friction stress tau0 [Pa]"),
+        (
+            ("--sigma0", "--h2", "--h1"),
+            "sigma0 [Pa]; advancing (leading-edge) h2, receding (trailing-edge) h1 >= h2 [m]",
+        ),
+        (
+            ("--work-of-adhesion-advancing", "--work-of-adhesion-receding", "--z0"),
+            "or the advancing W2 <= receding W1 [J/m^2] and z0 [m] (one sigma0, from W1; or "
+            "W2 and z0 with --h1)",
+        ),
+        (("--tau0",), "friction stress tau0 [Pa]"),
         (("--load", "--push"), "normal load [N/m] (default 0); a push [N/m]: its state"),
         (("--height", "--tip-height"), "push heights [m] in [0, 2R], or a tip's"),
     ):
@@ -170,10 +181,9 @@ def _cmd_push(args: argparse.Namespace) -> int:
     else:
         if any(w is not None for w in works):
             _works_to_ranges(args)
-        if (args.h1_over_h2 is None) == (args.h1 is None):
-            raise ValueError("give exactly one of --h1-over-h2 or --h1 [m]")
+        _check_receding(args)
         if args.tau0 is None:
-            raise ValueError("give --tau0")
+            raise ValueError("give the friction stress --tau0 [Pa]")
         if (args.height is None) == (args.tip_height is None):
             raise ValueError("give exactly one of --height or --tip-height [m]")
         if args.tip_height is not None and args.tip_friction is None:
@@ -296,15 +306,21 @@ def _cmd_push(args: argparse.Namespace) -> int:
 def _works_to_ranges(args: argparse.Namespace) -> None:
     """The receding and advancing works of adhesion as sigma0, h2 and h1 (one sigma0)."""
     w1, w2 = args.work_of_adhesion_receding, args.work_of_adhesion_advancing
-    if w1 is None or w2 is None or args.z0 is None:
-        raise ValueError(
-            "give --work-of-adhesion-receding, --work-of-adhesion-advancing and --z0 together"
-        )
     if any(v is not None for v in (args.sigma0, args.h, args.h1)):
         raise ValueError(
             "give adhesion either as the two works of adhesion with --z0, or as --sigma0, "
             "--h2 and --h1, not both"
         )
+    missing = [
+        flag
+        for flag, v in (
+            ("--work-of-adhesion-advancing [J/m^2] (W2 <= W1)", w2),
+            ("--z0 [m]", args.z0),
+        )
+        if v is None
+    ]
+    if missing:  # the receding work is given (else this is not called)
+        raise ValueError(f"--work-of-adhesion-receding (W1) needs {' and '.join(missing)}")
     for flag, v in (
         ("--work-of-adhesion-receding", w1),
         ("--work-of-adhesion-advancing", w2),
@@ -329,3 +345,29 @@ def _works_to_ranges(args: argparse.Namespace) -> None:
         )
     args.sigma0, args.h, args.h1 = hysteresis_adhesion(w1, w2, args.z0)
     args.z0 = None
+
+
+def _check_receding(args: argparse.Namespace) -> None:
+    """The receding side given once; missing, it is asked for in the spelling the user chose.
+
+    The works of adhesion (``--work-of-adhesion-advancing`` with ``--z0``) ask for the
+    receding work (or ``--h1``), the ranges (``--sigma0 --h2``) for ``--h1``.
+    """
+    if args.h1 is not None and args.h1_over_h2 is not None:
+        raise ValueError("give the receding range as --h1 [m] or as --h1-over-h2, not both")
+    if args.h1 is not None or args.h1_over_h2 is not None:
+        return
+    if args.work_of_adhesion is not None or args.z0 is not None:
+        z0 = " and --z0 [m]" if args.z0 is None else ""
+        raise ValueError(
+            "give the receding work of adhesion --work-of-adhesion-receding [J/m^2] (at least "
+            f"--work-of-adhesion-advancing){z0}, or the receding range --h1 [m]"
+        )
+    if args.sigma0 is not None or args.h is not None:
+        raise ValueError(
+            "give the receding (trailing-edge) range --h1 [m], at least --h2 (or --h1-over-h2)"
+        )
+    raise ValueError(
+        "give the adhesion: --sigma0 [Pa], --h2 and --h1 [m], or --work-of-adhesion-advancing, "
+        "--work-of-adhesion-receding [J/m^2] and --z0 [m]"
+    )
