@@ -118,7 +118,7 @@ def register(sub: Any) -> None:
     )
     add_output_options(p)
     # the adhesion in two spellings, each an entry: the ranges, or the works of adhesion
-    p._option_string_actions["--work-of-adhesion-advancing"].shown_with = None  # type: ignore[attr-defined]
+    p._option_string_actions["--work-of-adhesion-advancing"].shown_with = None
     for flags, text in (
         (("--R-over-h2", "--h1-over-h2"), "R/h2; h1/h2 (receding over advancing) in [1, 1000]"),
         (("--sigma0-over-E", "--tau0-over-E"), "adhesive (>= 0), friction (> 0) stress over E"),
