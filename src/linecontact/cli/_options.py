@@ -9,9 +9,7 @@ flags; :func:`flag_message` turns the API's parameter names into the flags the u
 from __future__ import annotations
 
 import argparse
-import errno
 import math
-import re
 import sys
 import textwrap
 from collections.abc import Sequence
@@ -21,39 +19,20 @@ import numpy as np
 
 from ..cylinder import _ZERO_WIDTH, Cylinder, _warn_widths
 from ..domain import check_si
-from ..errors import ModelValidityWarning, UnitsWarning
 from ..output import FORMATS, Table, write
 from ..presets import Material, material_names
-
-#: Values that are numbers even though they start with "-": argparse (before Python 3.13)
-#: knows only -5 and -0.5, so "--load -1e-3" failed with "expected one argument".
-_NEGATIVE_NUMBER = re.compile(
-    r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.IGNORECASE
+from ._messages import (  # noqa: F401 - the subcommands' names for them, kept here
+    _NEGATIVE_NUMBER,
+    API_FLAGS,
+    COUPLING_EFFECT,
+    coupling_effect,
+    flag_message,
+    is_units_warning,
+    write_failure,
 )
 
 #: Most points a range option may ask for (1e9 exhausted the memory instead of failing).
 MAX_POINTS = 1_000_000
-
-#: API parameter names whose flag is not the parameter name with dashes.
-API_FLAGS = {
-    "radius": "--radius",
-    "modulus": "--modulus",
-    "cohesive_stress": "--sigma0",
-    "adhesion_range": "--h",
-    "work_of_adhesion": "--work-of-adhesion",
-    "equilibrium_spacing": "--z0",
-    "contact_half_width": "--half-width",
-    "load": "--load",
-    "normal_load": "--load",
-    "friction_stress": "--tau0",
-    "friction_coefficient": "--mu",
-    "tangential_load": "--tangential-load",
-    "amplitude": "--tangential-amplitude",
-    "max_half_width": "--a-max",
-    "receding_range": "--h1",
-    "receding_work_of_adhesion": "--work-of-adhesion-receding",
-    "half_width": "--half-width",
-}
 
 #: The SI inputs of the materials and adhesion (their presence switches to SI mode).
 SI_KEYS = (
@@ -282,35 +261,6 @@ def add_output_options(p: argparse.ArgumentParser, image_alias: bool = False) ->
     )
 
 
-def is_units_warning(message: Warning | str, category: type[Warning]) -> bool:
-    """Whether a warning asks about units (never silenced by ``--quiet``).
-
-    :class:`~linecontact.errors.UnitsWarning`, or a
-    :class:`~linecontact.errors.ModelValidityWarning` that says "linecontact takes SI units"
-    (raised before that class existed). The other warnings are model notes (the coupling,
-    the small-strain range), which ``--quiet`` silences.
-    """
-    if issubclass(category, UnitsWarning):
-        return True
-    return issubclass(category, ModelValidityWarning) and "takes SI units" in str(message)
-
-
-#: What the coupling warning adds, once: the effect of beta, its sign and order, no number.
-COUPLING_EFFECT = (
-    "; its effect on the results is not computed. Without friction at the interface the "
-    "coupling does not change the normal contact (no shear tractions to couple; Johnson "
-    "1985, Contact Mechanics, sec. 5.4); where the interface holds shear (friction, stick, "
-    "adhesion) it brings shear tractions that change the contact a little. Exchanging the "
-    "bodies changes the sign of beta and not the contact, so the change of the width is even "
-    "in beta (of order beta^2) and grows with |beta| (at most 0.5); no figure for it is given"
-)
-
-
-def coupling_effect(text: str) -> str:
-    """What the coupling warning ``text`` adds (once per run): :data:`COUPLING_EFFECT`."""
-    return "" if COUPLING_EFFECT in text else COUPLING_EFFECT
-
-
 def emit(args: argparse.Namespace, table: Table) -> None:
     """Write ``table`` as asked (stdout, ``-o FILE``; a sweep's ``args._capture`` list)."""
     if args.indent is not None and not 0 <= args.indent <= 16:
@@ -335,19 +285,6 @@ def emit(args: argparse.Namespace, table: Table) -> None:
             raise write_failure(f"-o/--output {args.output!r}", exc) from None
         if not args.quiet:
             print(f"wrote {args.output}", file=sys.stderr)
-
-
-def write_failure(what: str, exc: OSError) -> ValueError:
-    """The error for a failed write to ``what`` (a flag and its file): its real cause.
-
-    A full disk is ``no space left on the device writing -o/--output 'x.csv'``, a quota
-    ``disk quota exceeded writing ...``; any other failure ``cannot write ...: <reason>``.
-    """
-    if exc.errno == errno.ENOSPC:
-        return ValueError(f"no space left on the device writing {what}")
-    if exc.errno == getattr(errno, "EDQUOT", None):
-        return ValueError(f"disk quota exceeded writing {what}")
-    return ValueError(f"cannot write {what}: {exc.strerror or exc}")
 
 
 #: The SI contact half-width columns [m] whose values are checked by :func:`_check_widths`.
@@ -420,110 +357,6 @@ def command_line(args: argparse.Namespace) -> list[str]:
     """The command line as given (for the provenance block)."""
     argv = args.argv if args.argv is not None else sys.argv[1:]
     return ["linecontact", *argv]
-
-
-#: A quoted value in a message (a Python ``repr`` of a string: a path, a column, a choice):
-#: never rewritten by :func:`flag_message`. An apostrophe inside a word (cylinder's) opens
-#: no quote.
-_QUOTED = re.compile(r"""(?<!\w)'[^'\n]*'(?!\w)|(?<!\w)"[^"\n]*"(?!\w)""")
-
-
-def _typed_values(argv: Sequence[str]) -> list[str]:
-    """The values on the command line ``argv`` (no flag, no subcommand), longest first."""
-    values = []
-    for i, word in enumerate(argv):
-        if word.startswith("-") and not _NEGATIVE_NUMBER.match(word):
-            if "=" in word:
-                values.append(word.split("=", 1)[1])
-        elif i > 0:  # argv[0] is the subcommand
-            values.append(word)
-    return sorted({v for v in values if v}, key=len, reverse=True)
-
-
-def _protected(message: str, values: Sequence[str]) -> list[tuple[str, bool]]:
-    """``message`` cut into ``(text, protected)`` pieces, in order.
-
-    Protected: every quoted value (:data:`_QUOTED`) and every value the user typed
-    (``values``, where it stands as a whole word: a path, a preset's name), which must
-    come out verbatim; the rest is the message's own words.
-    """
-    spans = [m.span() for m in _QUOTED.finditer(message)]
-    for v in values:
-        for m in re.finditer(rf"(?<![\w-]){re.escape(v)}(?![\w-])", message):
-            spans.append(m.span())
-    pieces: list[tuple[str, bool]] = []
-    at = 0
-    for lo, hi in sorted(spans):
-        if lo < at:  # inside (or overlapping) a span already kept
-            if hi > at:
-                pieces.append((message[at:hi], True))
-                at = hi
-            continue
-        pieces += [(message[at:lo], False), (message[lo:hi], True)]
-        at = hi
-    pieces.append((message[at:], False))
-    return [(text, keep) for text, keep in pieces if text]
-
-
-def flag_message(message: str, args: argparse.Namespace) -> str:
-    """``message`` with the API's parameter names replaced by the flags of the command line.
-
-    A name is replaced by the flag the user typed for it; a parameter name (one with an
-    underscore) whose flag was not typed by its flag where the subcommand has one (its
-    default was used), or by what the command said it stands for (``args._api_flags``).
-    Only the message's own words are rewritten: a quoted value and any value the user
-    typed (a path such as ``z0/data.csv``, a preset's name) come out verbatim
-    (:func:`_protected`).
-
-    Parameters
-    ----------
-    message : str
-        The API's message (an error's, a warning's).
-    args : argparse.Namespace
-        The run's arguments: ``argv``, and ``_flags``, ``_choice_flags`` of
-        :func:`record_flags` (``_api_flags``, ``_typed_as`` where the command set them).
-
-    Returns
-    -------
-    str
-        The message in the words of the command line.
-    """
-    argv = list(args.argv if args.argv is not None else sys.argv[1:])
-    given = {t.split("=", 1)[0] for t in argv}
-    flags: dict[str, str] = getattr(args, "_flags", {})
-    run_flags: dict[str, str] = getattr(args, "_api_flags", {})  # this run's: always said
-    names: dict[str, str] = dict(flags)
-    names.update({**API_FLAGS, **run_flags})
-    known = set(flags.values()) | set(run_flags.values())
-    typed = getattr(args, "_typed_as", None) or {}  # an old spelling: named as typed
-    subs: list[tuple[re.Pattern[str], str]] = []
-    for name, flag in sorted(names.items(), key=lambda kv: -len(kv[0])):
-        flag = typed.get(flag, flag)
-        n = re.escape(name)
-        # a group (a_over_R) is named as a flag only where the user typed that flag: a flag
-        # of the subcommand left out (its default) is named for an SI parameter only
-        untyped = flag in known and ("_over_" not in name or flag in run_flags.values())
-        if "_" in name and (flag in given or untyped):
-            # a parameter's name, wherever it stands
-            subs.append((re.compile(rf"(?<![\w-]){n}(?![\w])"), flag))
-        elif flag in given:
-            # a plain word (radius, load) only where it is the subject of a check ("load
-            # must ...", "load=...") or a term of a ratio ("radius / equilibrium_spacing")
-            subs.append((re.compile(rf"(?<![\w-]){n}(?= must| =|=| ?/)|(?<=/){n}(?![\w])"), flag))
-    out = []
-    for text, keep in _protected(message, _typed_values(argv)):
-        if not keep:
-            for pattern, flag in subs:
-                text = pattern.sub(flag, text)
-        out.append(text)
-    message = "".join(out)
-    # a choice as the API writes it (law='dugdale') as it is typed (--law dugdale)
-    choices = getattr(args, "_choice_flags", None)
-    return re.sub(
-        r"(--[\w-]+)='([\w-]+)'",
-        lambda m: f"{m[1]} {m[2]}" if choices is None or m[1] in choices else m[0],
-        message,
-    )
 
 
 # --------------------------------------------------------------------------------------------
