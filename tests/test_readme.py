@@ -56,6 +56,13 @@ def test_each_tour_command_runs(words, tmp_path, monkeypatch, capsys):
         return
     monkeypatch.chdir(tmp_path)
     assert main(words) == 0, capsys.readouterr().err
+    # valid inputs: a model note at most (Dundurs beta), never a units warning ...
+    err = capsys.readouterr().err
+    for line in err.splitlines():
+        assert "warning:" not in line or "Dundurs beta" in line, line
+    # ... and --quiet silences the model notes: nothing on stderr
+    assert main([*words, "--quiet"]) == 0
+    assert capsys.readouterr().err == ""
 
 
 @pytest.mark.skipif(not USAGE.exists(), reason="docs/usage.md is not beside the tests")
@@ -70,6 +77,19 @@ def test_readme_python_block_runs(block, tmp_path):
     )
     assert p.returncode == 0, p.stderr
     assert "Traceback" not in p.stderr
+    # a warning the block prints is one it announces ("warns: ..." in a comment); the
+    # README's block announces none (its filter silences the model notes it names)
+    warned = re.findall(r"^\S*:\d+: (\w*Warning): ", p.stderr, re.M)
+    if warned:
+        assert "# (warns" in block or "# warns" in block, p.stderr
+    assert not warned or block not in README_BLOCKS, p.stderr
+
+
+README_BLOCKS = (
+    re.findall(r"```python\n(.*?)```", README.read_text(encoding="utf-8"), re.S)
+    if README.exists()
+    else []
+)
 
 
 @pytest.mark.skipif(not USAGE.exists(), reason="docs/usage.md is not beside the tests")

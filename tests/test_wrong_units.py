@@ -21,7 +21,7 @@ import pytest
 import linecontact as lc
 from linecontact import inverse as inv
 from linecontact.cli import main
-from linecontact.errors import ModelValidityWarning, NoEquilibriumError
+from linecontact.errors import ModelValidityWarning, NoEquilibriumError, UnitsWarning
 
 #: The internal groups an SI message must not name.
 GROUPS = re.compile(r"R_over_h|sigma0_over_E|F_over_Eh")
@@ -296,11 +296,20 @@ def test_the_lennard_jones_domain_is_said_for_the_wire_given():
     assert p.method == "limit" and p.error_estimate > 0 and p.pull_off_force < 0
 
 
-def test_a_zero_width_pull_off_is_not_a_width():
+def test_a_zero_width_pull_off_is_the_model_s_answer_not_a_units_warning():
+    # valid inputs (z0 = 3 nm): the width at pull-off is far below a nucleus because the
+    # contact peels to zero width (its label says so), not because of the units
     cyl = lc.Cylinder.from_modulus(50e-9, 50e9, work_of_adhesion=0.3, equilibrium_spacing=3e-9)
-    with pytest.warns(ModelValidityWarning, match=r"at pull-off 5\.2e-65 m is below 1e-15 m"):
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
         p = cyl.pull_off()
-    assert p.mechanism == "zero-width"
+    assert p.mechanism == "zero-width" and 0 < p.contact_half_width_at_pull_off < 1e-15
+
+
+def test_a_width_below_a_nucleus_without_a_mechanism_warns():
+    cyl = lc.Cylinder.from_modulus(50e-9, 50e9, work_of_adhesion=0.3, equilibrium_spacing=3e-10)
+    with pytest.warns(UnitsWarning, match=r"half-width 1e-20 m is below 1e-15 m.*wrong units"):
+        cyl.contact(contact_half_width=1e-20)
 
 
 def test_a_contact_wider_than_the_cylinder_warns():
@@ -453,14 +462,18 @@ def test_cli_z0_in_nanometres(capsys):
     )
 
 
-def test_cli_a_width_below_a_femtometre_warns(capsys):
-    argv = ["pulloff", "--radius", "50e-9", "--modulus", "50e9", "--work-of-adhesion", "0.3"]
-    code, err = _cli(capsys, [*argv, "--z0", "3e-9"])
-    assert code == 0
-    assert err.startswith(
-        "linecontact pulloff: warning: the contact half-width at pull-off 5.2e-65 m is below "
-        "1e-15 m"
-    ), err
-    assert "mechanism 'zero-width'" in err and err.count("\n") == 1
-    code, quiet = _cli(capsys, [*argv, "--z0", "3e-9", "--quiet"])
-    assert code == 0 and quiet == err  # a units warning: --quiet does not silence it
+@pytest.mark.parametrize("z0", ["3e-9", "3e-10"])
+def test_cli_a_zero_width_pull_off_says_no_warning(capsys, z0):
+    # the README's pull-off of a 10 nm wire (z0 = 0.3 nm) and a wider range: zero-width
+    argv = ["pulloff", "--radius", "10e-9", "--modulus", "50e9", "--work-of-adhesion", "0.05"]
+    code, err = _cli(capsys, [*argv, "--z0", z0, "--json"])
+    assert code == 0 and err == ""
+
+
+def test_cli_a_measured_width_below_a_femtometre_warns_even_with_quiet(capsys):
+    argv = ["fit-adhesion", "--half-width", "1e-20", "--load", "0.1", "--radius", "50e-9"]
+    argv += ["--modulus", "50e9", "--z0", "3e-10"]
+    code, err = _cli(capsys, argv)
+    assert code == 2 and "measured 1e-20 m is below 1e-15 m" in err
+    code, quiet = _cli(capsys, [*argv, "--quiet"])
+    assert code == 2 and quiet == err  # a units warning: --quiet does not silence it

@@ -11,13 +11,6 @@ class NoEquilibriumError(ValueError):
     """The requested physical state does not exist (e.g. a load below the pull-off force)."""
 
 
-class CouplingWarning(UserWarning):
-    """The materials couple normal and tangential tractions (Dundurs beta not small).
-
-    The solvers assume the uncoupled case (B = 0 in Eq. 6 of the paper).
-    """
-
-
 class ModelValidityWarning(UserWarning):
     """An input lies where the model is doubtful, or looks like a value in the wrong units.
 
@@ -26,7 +19,17 @@ class ModelValidityWarning(UserWarning):
     layer for a radius, modulus, work of adhesion or adhesion range (``z0``) outside the
     ranges of :data:`linecontact.cylinder.PLAUSIBLE`, and for an SI contact half-width that is
     no physical width (below :data:`linecontact.cylinder.WIDTH_MIN`, 1e-15 m, or above the
-    radius). The numbers are still computed.
+    radius); as :class:`CouplingWarning`, for materials whose Dundurs beta is not small. The
+    numbers are still computed.
+    """
+
+
+class CouplingWarning(ModelValidityWarning):
+    """The materials couple normal and tangential tractions (Dundurs beta not small).
+
+    The solvers assume the uncoupled case (B = 0 in Eq. 6 of the paper): a model note, so a
+    :class:`ModelValidityWarning` (silencing that silences this too; the command line's
+    ``--quiet`` does).
     """
 
 

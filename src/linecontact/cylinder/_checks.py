@@ -246,7 +246,8 @@ def _warn_small_strain(
         )
 
 
-#: Why a zero-width pull-off reports a width below :data:`WIDTH_MIN`.
+#: Why a zero-width pull-off reports a width below :data:`WIDTH_MIN` (then not warned for:
+#: :func:`_warn_widths`).
 _ZERO_WIDTH = (
     "the contact peels to zero width before it pulls off (mechanism 'zero-width'): read it as 0"
 )
@@ -262,7 +263,10 @@ def _warn_widths(
     """Warn for contact half-widths [m] that are no physical width: below WIDTH_MIN or above R.
 
     A width beyond the small-strain range (but within the radius) is said as a model note
-    (:func:`_warn_small_strain`).
+    (:func:`_warn_small_strain`). ``why``: the mechanism that makes a width below
+    WIDTH_MIN (a zero-width pull-off, :data:`_ZERO_WIDTH`): such a width is then the
+    model's answer for valid inputs (its label says it), no sign of wrong units, and is
+    not said.
     """
     v, Rv = (np.reshape(x, -1) for x in np.broadcast_arrays(np.asarray(a, float), radius))
     with np.errstate(invalid="ignore"):
@@ -270,12 +274,12 @@ def _warn_widths(
         wide = v > Rv
     if not np.any(wide):
         _warn_small_strain(v, Rv, what, stacklevel + 1)
-    if np.any(tiny):
+    if np.any(tiny) and not why:
         x = float(v[np.flatnonzero(tiny)[0]])
         warnings.warn(
             f"{what} {x:.3g} m is below {WIDTH_MIN:g} m, the size of a nucleus: it is no "
-            f"physical width ({why or 'round-off of a zero width'}, or an input in the wrong "
-            "units: linecontact takes SI units)",
+            "physical width (round-off of a zero width, or an input in the wrong units: "
+            "linecontact takes SI units)",
             UnitsWarning,
             stacklevel=stacklevel,
         )
