@@ -128,6 +128,19 @@ def test_cite_text(capsys):
     assert "TRIB2004" in out and "(2004)" in out
 
 
+def test_every_file_and_section_cite_names_exists(capsys):
+    code, out, _ = run_cli(capsys, "cite")
+    assert code == 0
+    named = re.findall(r"\b(README|[\w/.-]+\.(?:md|cff))(?:, (?:section )?([A-Z][\w ]*))?", out)
+    assert {name for name, _ in named} >= {"docs/derivations.md", "docs/citing.md", "CITATION.cff"}
+    for name, section in named:
+        path = ROOT / ("README.md" if name == "README" else name)
+        assert path.is_file(), name
+        if section:
+            headings = re.findall(r"^#+ (.+)$", path.read_text(encoding="utf-8"), re.M)
+            assert section in headings, (name, section)
+
+
 def _bib_entries(text):
     """{key: (type, {field: value})} of a BibTeX text with brace-delimited values."""
     entries = {}

@@ -94,10 +94,11 @@ def citation_text() -> str:
     lines += [
         "and the library:",
         f"  linecontact {__version__}, software ({_LIBRARY_YEAR})",
-        "and the closed forms it uses (see the README, References):",
+        "and the closed forms it uses (their sources: docs/derivations.md, section References):",
         *(f"  {ref}" for ref in CLOSED_FORMS),
         "",
-        "BibTeX: linecontact cite --bibtex",
+        "BibTeX: linecontact cite --bibtex; the same record: CITATION.cff (how to cite: "
+        "docs/citing.md)",
     ]
     return "\n".join(lines)
 
