@@ -1,43 +1,43 @@
 r"""The adhesion map of line contact: where the simpler models agree with the full law.
 
 Johnson & Greenwood (1997) mapped, for spheres, where Hertz, Bradley (rigid), DMT, JKR and
-Maugis--Dugdale hold over the Maugis parameter and the load. Their map does not carry over
-to a cylinder on a half-plane. For a sphere both ends of the pull-off are plateaus in one
-scale, ``pi w R`` (Bradley 2, JKR 1.5), so one load axis serves every Maugis parameter. For
-a cylinder the rigid end scales with ``w sqrt(R/z0)`` (2.466 of it under the Lennard-Jones
-law, :func:`linecontact.closed_forms.lennard_jones_rigid_pull_off`; 16 % more under the
-matched Dugdale step) and the JKR end with ``(E w^2 R)^(1/3)`` (the pull-off
-``-(3/4)(4 pi/mu)^(1/3) w sqrt(R/z0)``): in either scale the other end drifts with ``mu``,
-and there is no universal plateau. Here the load is therefore counted from the full law's
+Maugis--Dugdale hold over the Maugis parameter and the load. Their map does not carry over to a
+cylinder on a half-plane. For a sphere both ends of the pull-off are plateaus in one scale,
+:math:`\pi w R` (Bradley 2, JKR 1.5), so one load axis serves every Maugis parameter. For a cylinder
+the rigid end scales with :math:`w \sqrt{R/z_0}` (2.466 of it under the Lennard-Jones law,
+:func:`linecontact.closed_forms.lennard_jones_rigid_pull_off`; 16 % more under the matched Dugdale
+step) and the JKR end with :math:`(E w^2 R)^{1/3}` (the pull-off
+:math:`-\tfrac34 (4\pi/\mu)^{1/3} w \sqrt{R/z_0}`): in either scale the other end drifts with
+``mu``, and there is no universal plateau. Here the load is therefore counted from the full law's
 own pull-off, in units of it. The full law is the Lennard-Jones law of Eq. (1) solved
-self-consistently (:mod:`linecontact.lennard_jones`), and each simpler model is judged by
-the half-width of the repulsive region (the gap below ``z0``; the contact of the models)
-that it gives at the same load.
+self-consistently (:mod:`linecontact.lennard_jones`), and each simpler model is judged by the
+half-width of the repulsive region (the gap below ``z0``; the contact of the models) that it gives
+at the same load.
 
 Units: the full law's own (:mod:`linecontact.lennard_jones`). Half-widths
-``xi = x / sqrt(R z0)``, loads per unit length ``F / (w sqrt(R/z0))`` (compressive
-positive), the one group ``mu = w sqrt(R/z0) / (E z0)``, ``E`` the composite plane-strain
+:math:`\xi = x / \sqrt{R z_0}`, loads per unit length :math:`F / (w \sqrt{R/z_0})` (compressive
+positive), the one group :math:`\mu = w \sqrt{R/z_0} / (E z_0)`, ``E`` the composite plane-strain
 modulus. The models, in those units:
 
-- Hertz: ``F = (pi / (4 mu)) xi^2`` (:func:`hertz_half_width`);
+- Hertz: :math:`F = \frac{\pi}{4\mu} \xi^2` (:func:`hertz_half_width`);
 - JKR (Chaudhury et al. 1996, :func:`linecontact.closed_forms.jkr_load`):
-  ``F = (pi / (4 mu)) xi^2 - sqrt(2 pi xi / mu)``, pull-off ``-(3/4) (4 pi / mu)^(1/3)``
-  (:func:`jkr_half_width`, :func:`jkr_load`);
+  :math:`F = \frac{\pi}{4\mu} \xi^2 - \sqrt{2\pi \xi / \mu}`, pull-off
+  :math:`-\tfrac34 (4\pi/\mu)^{1/3}` (:func:`jkr_half_width`, :func:`jkr_load`);
 - rigid: the law on a rigid cylinder (no elastic deformation),
   :func:`linecontact.closed_forms.lennard_jones_rigid_load`; the gap below ``z0`` where
-  ``g0 + x^2/(2R) < z0``, ``xi = sqrt(2 (1 - g0/z0))`` (:func:`rigid_half_width`);
+  :math:`g_0 + x^2/(2R) < z_0`, :math:`\xi = \sqrt{2 (1 - g_0/z_0)}` (:func:`rigid_half_width`);
 - Maugis--Dugdale: the Dugdale step with the Maugis matching (same work of adhesion and
   peak tension, :func:`linecontact.lennard_jones.mu_of_dugdale`), solved by
   :func:`linecontact.contact_for_load` (:func:`md_half_width`);
 - the full law: the stable contact branch of :func:`linecontact.lennard_jones.lj_curve`,
   interpolated (:func:`lj_half_width`).
 
-The map (:func:`adhesion_map`) is over ``mu`` -- drawn against the Maugis parameter of the
-matched Dugdale step, ``lambda = 1.914 mu^(2/3)``
-(:func:`~linecontact.lennard_jones.maugis_parameter_of_mu`) -- and the load above the
-full law's pull-off relative to it, ``y = (F - F_pulloff) / |F_pulloff|``. The error of a
-model is ``|xi_model - xi| / xi`` against the full law's half-width ``xi``; a model holds
-where it is at most ``tol``. What the map shows, and the accuracy of the full law's widths:
+The map (:func:`adhesion_map`) is over ``mu`` -- drawn against the Maugis parameter of the matched
+Dugdale step, :math:`\lambda = 1.914\, \mu^{2/3}`
+(:func:`~linecontact.lennard_jones.maugis_parameter_of_mu`) -- and the load above the full law's
+pull-off relative to it, :math:`y = (F - F_\text{pull-off}) / |F_\text{pull-off}|`. The error of a
+model is :math:`|\xi_\text{model} - \xi| / \xi` against the full law's half-width ``xi``; a model
+holds where it is at most ``tol``. What the map shows, and the accuracy of the full law's widths:
 ``docs/adhesion-map.md``.
 
 The default grid spans the Maugis parameters 0.01 to 100 (:data:`MAUGIS_RANGE`), or to the end
@@ -144,21 +144,23 @@ def domain_mu_max() -> float:
 
 
 def hertz_half_width(F: ArrayLike, mu: ArrayLike) -> NDArray:
-    """Hertz line contact: ``F = (pi/(4 mu)) xi^2``, so ``xi = sqrt(4 mu F/pi)``; 0 for ``F <= 0``.
+    r"""Hertz line contact: :math:`F = \frac{\pi}{4\mu} \xi^2`, so :math:`\xi = \sqrt{4 \mu F/\pi}`.
 
-    ``F`` over ``w sqrt(R/z0)``, ``xi`` over ``sqrt(R z0)``, arrays broadcast. The closed
-    form of :mod:`linecontact.closed_forms` in the paper's groups with ``h = z0``: ``R/h = 1``
-    (lengths over ``sqrt(R z0)``), ``sigma0/E = mu``, ``F/(E h) = mu F``.
+    0 for :math:`F \le 0`. ``F`` over :math:`w \sqrt{R/z_0}`, ``xi`` over :math:`\sqrt{R z_0}`,
+    arrays broadcast. The closed form of :mod:`linecontact.closed_forms` in the paper's groups with
+    :math:`h = z_0`: :math:`R/h = 1` (lengths over :math:`\sqrt{R z_0}`), :math:`\sigma_0/E = \mu`,
+    :math:`F/(E h) = \mu F`.
     """
     F, mu = np.broadcast_arrays(np.asarray(F, float), np.asarray(mu, float))
     return _cf._hertz_half_width(mu * F, 1.0)
 
 
 def jkr_load(xi: ArrayLike, mu: ArrayLike) -> NDArray:
-    """JKR line contact in the full law's units: ``F = (pi/(4 mu)) xi^2 - sqrt(2 pi xi/mu)``.
+    r"""JKR line contact, full law's units: :math:`F = \frac{\pi}{4\mu} \xi^2 - \sqrt{2\pi\xi/\mu}`.
 
-    :func:`linecontact.closed_forms.jkr_load`, ``F = pi E a^2/(4R) - sqrt(2 pi E w a)``, with
-    ``a = xi sqrt(R z0)`` and ``F`` over ``w sqrt(R/z0)`` (as :func:`hertz_half_width`).
+    :func:`linecontact.closed_forms.jkr_load`, :math:`F = \pi E a^2/(4R) - \sqrt{2\pi E w a}`,
+    with :math:`a = \xi \sqrt{R z_0}` and ``F`` over :math:`w \sqrt{R/z_0}` (as
+    :func:`hertz_half_width`).
     """
     xi = np.asarray(xi, float)
     mu = np.asarray(mu, float)
@@ -166,29 +168,29 @@ def jkr_load(xi: ArrayLike, mu: ArrayLike) -> NDArray:
 
 
 def jkr_pull_off(mu: ArrayLike) -> tuple[NDArray, NDArray]:
-    """The JKR pull-off ``-(3/4)(4 pi/mu)^(1/3)`` and its half-width ``(2 mu/pi)^(1/3)``."""
+    r"""The JKR pull-off :math:`-\frac34 (4\pi/\mu)^{1/3}`, width :math:`(2\mu/\pi)^{1/3}`."""
     mu = np.asarray(mu, float)
     F, xi = _cf._jkr_pull_off(1.0, mu)
     return F / mu, xi
 
 
 def jkr_half_width(F: ArrayLike, mu: ArrayLike) -> NDArray:
-    """The JKR half-width on the stable branch (``xi`` above the pull-off width) at ``F``.
+    r"""The JKR half-width on the stable branch (``xi`` above the pull-off width) at ``F``.
 
-    :func:`linecontact.closed_forms._jkr_half_width` (Newton in ``sqrt(xi)``) at ``mu F``.
-    NaN below the pull-off (no JKR contact).
+    :func:`linecontact.closed_forms._jkr_half_width` (Newton in :math:`\sqrt{\xi}`) at
+    :math:`\mu F`. NaN below the pull-off (no JKR contact).
     """
     F, mu = np.broadcast_arrays(np.asarray(F, float), np.asarray(mu, float))
     return _cf._jkr_half_width(mu * F, 1.0, mu)
 
 
 def rigid_central_gap(F: ArrayLike) -> NDArray:
-    """The central gap over ``z0`` of a rigid cylinder carrying ``F`` under the law.
+    r"""The central gap over ``z0`` of a rigid cylinder carrying ``F`` under the law.
 
     The inverse of :func:`linecontact.closed_forms.lennard_jones_rigid_load` on its branch of
     contact (gaps below the pull-off gap 1.100925, where the load rises as the gap closes),
-    by bisection in ``ln(g0)`` to round-off; NaN below the rigid pull-off and above the load
-    at the smallest gap of that function's domain (0.01 ``z0``).
+    by bisection in :math:`\ln g_0` to round-off; NaN below the rigid pull-off and above the load
+    at the smallest gap of that function's domain (:math:`0.01\, z_0`).
     """
     F = np.asarray(F, float)
     F_po, z_po = lennard_jones_rigid_pull_off()
@@ -204,7 +206,7 @@ def rigid_central_gap(F: ArrayLike) -> NDArray:
 
 
 def rigid_half_width(F: ArrayLike) -> NDArray:
-    """Rigid cylinder: ``xi = sqrt(2 (1 - g0/z0))`` where the central gap is below ``z0``.
+    r"""Rigid cylinder: :math:`\xi = \sqrt{2 (1 - g_0/z_0)}` where the central gap is below z0.
 
     0 where it is not, NaN below the rigid pull-off (:func:`rigid_central_gap`).
     """
@@ -213,10 +215,11 @@ def rigid_half_width(F: ArrayLike) -> NDArray:
 
 
 def md_groups(mu: ArrayLike, R_over_h: float = MD_R_OVER_H) -> tuple[NDArray, NDArray]:
-    """``(sigma0/E, sqrt(R/z0))`` of the Dugdale step matched to ``mu`` at ``R/h``.
+    r""":math:`(\sigma_0/E, \sqrt{R/z_0})` of the Dugdale step matched to ``mu`` at ``R/h``.
 
     The inverse of :func:`linecontact.lennard_jones.mu_of_dugdale`:
-    ``sigma0/E = mu S^(3/2) / sqrt(R/h)``, ``R/z0 = (R/h)/S``, ``S = 16/(9 sqrt 3)``.
+    :math:`\sigma_0/E = \mu S^{3/2} / \sqrt{R/h}`, :math:`R/z_0 = (R/h)/S`,
+    :math:`S = 16/(9 \sqrt 3)`.
     """
     mu = np.asarray(mu, float)
     s = mu * MAUGIS_MATCH_SIGMA0**1.5 / math.sqrt(R_over_h)
@@ -224,10 +227,11 @@ def md_groups(mu: ArrayLike, R_over_h: float = MD_R_OVER_H) -> tuple[NDArray, ND
 
 
 def md_half_width(F: ArrayLike, mu: ArrayLike, R_over_h: float = MD_R_OVER_H) -> NDArray:
-    """Maugis--Dugdale with the Maugis matching: the contact half-width at the load ``F``.
+    r"""Maugis--Dugdale with the Maugis matching: the contact half-width at the load ``F``.
 
     :func:`linecontact.contact_for_load` (the stable branch) at ``R/h``, ``sigma0/E`` of
-    :func:`md_groups` and ``F/(E h) = F (sigma0/E) sqrt(R/z0)``; ``xi = (a/R) sqrt(R/z0)``.
+    :func:`md_groups` and :math:`F/(E h) = F (\sigma_0/E) \sqrt{R/z_0}`;
+    :math:`\xi = (a/R) \sqrt{R/z_0}`.
     NaN below the Maugis--Dugdale pull-off (no contact carries the load).
     """
     F, mu = np.broadcast_arrays(np.asarray(F, float), np.asarray(mu, float))
@@ -268,10 +272,11 @@ class FullLawBranch:
         return (float(self.F[self.onset]) - self.F_pulloff) / abs(self.F_pulloff)
 
     def points(self, drop: int | None = None) -> tuple[NDArray, NDArray, float]:
-        """The nodes of the interpolation: ``s = sqrt(F - F_pulloff)``, ``xi^2``, the start.
+        r"""The interpolation's nodes: :math:`s = \sqrt{F - F_\text{po}}`, :math:`\xi^2`, the start.
 
-        From the last state without repulsion (``xi = 0``; it ends the zero part) or the
-        pull-off; ``drop`` leaves one state out (the leave-one-out estimate).
+        :math:`F_\text{po}` the pull-off. From the last state without repulsion (:math:`\xi = 0`; it
+        ends the zero part) or the pull-off; ``drop`` leaves one state out (the leave-one-out
+        estimate).
         """
         k = max(self.onset, 0)
         keep = np.arange(k, self.F.size)
@@ -289,7 +294,7 @@ def full_law_branch(
     miss: float = SPLIT_MISS,
     max_extra: int = MAX_EXTRA_STATES,
 ) -> FullLawBranch:
-    """The stable branch of the full law at ``mu`` up to ``F_max`` (over ``w sqrt(R/z0)``).
+    r"""The stable branch of the full law at ``mu`` up to ``F_max`` (over :math:`w \sqrt{R/z_0}`).
 
     :func:`~linecontact.lennard_jones.lj_curve`, from the pull-off on, and more states
     (:func:`~linecontact.lennard_jones.lj_state`) where its steps are wide:
@@ -297,13 +302,13 @@ def full_law_branch(
     - where the branch starts without a repulsive region (the central gap above ``z0``), the
       state with the central gap at ``z0``: there the region appears, at the centre (the
       elastic surface is drawn up most under the centre), so its width is 0 there and
-      rises as ``sqrt(F - F_onset)``;
+      rises as :math:`\sqrt{F - F_\text{onset}}`;
     - from there (or from the pull-off) on, the state halfway in central gap between two
       states whose loads above pull-off differ by more than the factor ``split`` (the
       widest first), then about a state whose width the others miss by more than ``miss``
       when it is left out (in the wider of its two intervals); at most ``max_extra`` of
       them. The continuation's steps are long just beyond the onset, most of all from
-      ``mu`` ~ 0.5 on, where the width rises steeply there.
+      :math:`\mu \approx 0.5` on, where the width rises steeply there.
 
     A state that does not fall between its neighbours in load (another branch) is left out.
     """
@@ -371,17 +376,17 @@ def _widest(b: FullLawBranch, start: int, split: float, miss: float, floor: floa
 
 
 def lj_half_width(branch: FullLawBranch, F: ArrayLike) -> NDArray:
-    """The full law's half-width at the loads ``F`` on ``branch``, interpolated.
+    r"""The full law's half-width at the loads ``F`` on ``branch``, interpolated.
 
-    Monotone piecewise-cubic (PCHIP) interpolation of ``xi^2`` against
-    ``s = sqrt(F - F_pulloff)``: both ends are regular in that variable (at the pull-off
-    the width grows like ``s``, at the onset of the repulsive region ``xi^2`` like
-    ``F - F_onset``, under large loads ``xi^2`` like ``F``). 0 at and below the onset; NaN
-    below the pull-off and beyond the last state. Against
+    Monotone piecewise-cubic (PCHIP) interpolation of :math:`\xi^2` against
+    :math:`s = \sqrt{F - F_\text{pull-off}}`: both ends are regular in that variable (at the
+    pull-off the width grows like :math:`s`, at the onset of the repulsive region :math:`\xi^2`
+    like :math:`F - F_\text{onset}`, under large loads :math:`\xi^2` like :math:`F`). 0 at and
+    below the onset; NaN below the pull-off and beyond the last state. Against
     :func:`~linecontact.lennard_jones.lj_state` at the central gaps halfway between the
-    nodes of :func:`full_law_branch` (``mu`` = 0.01, 0.08, 0.28, 0.66 and 1, loads up to
+    nodes of :func:`full_law_branch` (:math:`\mu` = 0.01, 0.08, 0.28, 0.66 and 1, loads up to
     3.5 pull-offs above pull-off) the error is at most 0.2 % of the width, below 0.03 % at
-    larger loads (``mu`` up to 0.3, to 30 pull-offs) and below 0.04 % at ``mu = 3`` just
+    larger loads (:math:`\mu` up to 0.3, to 30 pull-offs) and below 0.04 % at :math:`\mu = 3` just
     beyond the onset; against :func:`~linecontact.lennard_jones.lj_contact_for_load`
     (``tests/test_adhesion_map.py``) below 0.3 %.
     """
@@ -431,10 +436,10 @@ def _misses(branch: FullLawBranch) -> NDArray:
 
 @dataclass(frozen=True)
 class AdhesionMap(Result):
-    """Where the simpler models agree with the full law, over ``mu`` and the load.
+    r"""Where the simpler models agree with the full law, over ``mu`` and the load.
 
-    Units of :mod:`linecontact.lennard_jones`: loads over ``w sqrt(R/z0)``, half-widths
-    over ``sqrt(R z0)``. Per-``mu`` fields have the shape ``(n_mu, 1)`` and per-load fields
+    Units of :mod:`linecontact.lennard_jones`: loads over :math:`w \sqrt{R/z_0}`, half-widths
+    over :math:`\sqrt{R z_0}`. Per-``mu`` fields have the shape ``(n_mu, 1)`` and per-load fields
     ``(n_y,)``, so that they broadcast against the cells ``(n_mu, n_y)`` (one row per
     cell in :meth:`columns`; ``mu.ravel()`` is the grid).
 
@@ -443,8 +448,8 @@ class AdhesionMap(Result):
     mu, maugis_parameter : ndarray, (n_mu, 1)
         The group of the law and the Maugis parameter of the matched Dugdale step.
     y : ndarray, (n_y,)
-        Load above the full law's pull-off over its magnitude, ``(F - F_pulloff) /
-        |F_pulloff|``.
+        Load above the full law's pull-off over its magnitude,
+        :math:`(F - F_\text{pull-off}) / |F_\text{pull-off}|`.
     F : ndarray, (n_mu, n_y)
         The load (compressive positive).
     F_pulloff : ndarray, (n_mu, 1)
@@ -452,22 +457,21 @@ class AdhesionMap(Result):
     y_onset : ndarray, (n_mu, 1)
         ``y`` where the full law's repulsive region appears (its central gap reaches
         ``z0``); 0 where it exists at pull-off already.
-    half_width_lj, half_width_hertz, half_width_rigid, half_width_jkr, half_width_md : \
-ndarray, (n_mu, n_y)
-        Half-width of the repulsive region of the full law and the contact half-width of
-        each model; NaN where the model has no contact carrying the load (below its own
-        pull-off: JKR, Maugis--Dugdale, rigid). The full law's is 0 where it has no
-        repulsive region (the central gap above ``z0``: near pull-off, below ``mu`` ~ 1).
+    half_width_lj, half_width_hertz, half_width_rigid, half_width_jkr, half_width_md : ndarray
+        Shape ``(n_mu, n_y)``. Half-width of the repulsive region of the full law and the contact
+        half-width of each model; NaN where the model has no contact carrying the load (below its
+        own pull-off: JKR, Maugis--Dugdale, rigid). The full law's is 0 where it has no repulsive
+        region (the central gap above ``z0``: near pull-off, below :math:`\mu \approx 1`).
     error_hertz, error_rigid, error_jkr, error_md : ndarray, (n_mu, n_y)
-        ``|xi_model - xi| / xi``; NaN where the full law has no repulsive region, ``inf``
-        where the model has no contact.
+        :math:`|\xi_\text{model} - \xi| / \xi`; NaN where the full law has no repulsive
+        region, ``inf`` where the model has no contact.
     tol : float
         A model agrees with the full law where its error is at most ``tol``.
     R_over_h_md : float
         ``R/h`` of the Dugdale step (:data:`MD_R_OVER_H`).
     lj_error_estimate : ndarray, (n_mu, 1)
         The largest estimated error of the load of the full law's states used (nested
-        meshes, :class:`~linecontact.lennard_jones.LJCurve`), over ``w sqrt(R/z0)``.
+        meshes, :class:`~linecontact.lennard_jones.LJCurve`), over :math:`w \sqrt{R/z_0}`.
     interpolation_error : ndarray, (n_mu, 1)
         Leave-one-out estimate of the relative error of ``half_width_lj`` from the
         interpolation between states (an overestimate: :func:`interpolation_error`).
@@ -546,12 +550,12 @@ ndarray, (n_mu, n_y)
 
 
 def default_mu(n: int | None = None, mu_min: float = MU_MIN, mu_max: float | None = None):
-    """The default ``mu`` grid: geometric from ``mu_min`` to ``mu_max``.
+    r"""The default ``mu`` grid: geometric from ``mu_min`` to ``mu_max``.
 
     ``mu_max`` defaults to :data:`MU_MAX` (the Maugis parameter 100) or the upper end of the
     Lennard-Jones solver's domain (:func:`domain_mu_max`, read now), whichever is lower;
-    ``n`` to four per decade of the Maugis parameter (``lambda ~ mu^(2/3)``) and one, at
-    least 10 and at most 17 (17 over the Maugis parameters 0.01 to 100, 11 to ``mu = 3``).
+    ``n`` to four per decade of the Maugis parameter (:math:`\lambda \propto \mu^{2/3}`) and one, at
+    least 10 and at most 17 (17 over the Maugis parameters 0.01 to 100, 11 to :math:`\mu = 3`).
     """
     hi = min(MU_MAX, domain_mu_max()) if mu_max is None else float(mu_max)
     if n is None:
@@ -565,9 +569,9 @@ def default_y(n: int = N_Y, y_max: float = Y_RANGE[1]):
 
 
 def _pulloff_bound(mu: float) -> float:
-    """An upper bound of the magnitude of the full law's pull-off at ``mu``.
+    r"""An upper bound of the magnitude of the full law's pull-off at ``mu``.
 
-    The rigid cylinder's (2.4661; elasticity lowers it) and JKR's, ``1.7435 mu^(-1/3)``.
+    The rigid cylinder's (2.4661; elasticity lowers it) and JKR's, :math:`1.7435\, \mu^{-1/3}`.
     """
     return min(2.4661, 1.7435 * mu ** (-1.0 / 3.0))
 
@@ -618,12 +622,12 @@ def adhesion_map(
     workers: int | None = None,
     resume_dir: str | os.PathLike[str] | None = None,
 ) -> AdhesionMap:
-    """The adhesion map of line contact: each simpler model's error against the full law.
+    r"""The adhesion map of line contact: each simpler model's error against the full law.
 
     Parameters
     ----------
     mu : array_like, optional
-        Values of ``w sqrt(R/z0)/(E z0)``, ``> 0`` and at most the upper end of the
+        Values of :math:`w \sqrt{R/z_0}/(E z_0)`, ``> 0`` and at most the upper end of the
         Lennard-Jones solver's domain (``linecontact.domain.DOMAIN["lj_mu"]``); sorted,
         repeats dropped. Default :func:`default_mu` (the Maugis parameters 0.01 to 100, or
         to the end of that domain if it is sooner).
@@ -668,14 +672,14 @@ def adhesion_map(
     Notes
     -----
     Cost: one :func:`~linecontact.lennard_jones.lj_curve` per ``mu``, to
-    ``F_max = (max(y) + 1) * min(2.4661, 1.7435 mu^(-1/3))`` (a bound of the pull-off's
+    :math:`F_\text{max} = (\max y + 1) \min(2.4661, 1.7435\, \mu^{-1/3})` (a bound of the pull-off's
     magnitude), and a few states (:func:`full_law_branch`); the models are closed forms,
     or vectorised (:func:`md_half_width`). Measured on two otherwise idle cores before the
-    curves ran in parallel: the grid of 13 values of ``mu`` from 0.01 to 3, 81 loads to
-    ``y = 30``, 56 s, most of it beyond ``mu = 1`` (the solver's meshes follow the
-    contact's edge, ``1/mu`` long); the coarse grid of
-    :mod:`linecontact.figures.adhesion_map` (4 values to ``mu = 1``, 41 loads to ``y = 10``)
-    9 s. ``benchmarks/adhesion_map.py`` times the default map with 1 and 2 workers.
+    curves ran in parallel: the grid of 13 values of :math:`\mu` from 0.01 to 3, 81 loads to
+    :math:`y = 30`, 56 s, most of it beyond :math:`\mu = 1` (the solver's meshes follow the
+    contact's edge, :math:`1/\mu` long); the coarse grid of
+    :mod:`linecontact.figures.adhesion_map` (4 values to :math:`\mu = 1`, 41 loads to
+    :math:`y = 10`) 9 s. ``benchmarks/adhesion_map.py`` times the default map with 1 and 2 workers.
     """
     mu, y, tol = _check_inputs(mu, y, tol)
     workers = _check_workers(workers)
