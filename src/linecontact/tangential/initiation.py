@@ -128,15 +128,16 @@ class SlidingInitiation(_Tangential):
     ----------
     d_over_a : ndarray or float
         Half-width of the central stick zone over ``a`` (``nan`` when sliding under a given
-        load above full slip; ``1`` at ``T = 0``).
+        load above full slip; ``1`` at :math:`T = 0`).
     T_over_Ea : ndarray or float
         Tangential force per unit length over ``E a``.
     T_over_T_full_slip : ndarray or float
-        ``T/(2 a tau0)``.
+        :math:`T/(2 a \tau_0)`.
     tau0_over_E : ndarray or float
         Friction stress over the composite modulus.
     state : ndarray of str or str
-        ``"stick"`` (``T = 0``), ``"stick-slip"`` or ``"sliding"`` (``T >= 2 a tau0``).
+        ``"stick"`` (:math:`T = 0`), ``"stick-slip"`` or ``"sliding"``
+        (:math:`T \ge 2 a \tau_0`).
     method : str
         ``"closed-form"`` or ``"collocation"``.
     n_collocation : ndarray or int
@@ -145,7 +146,7 @@ class SlidingInitiation(_Tangential):
         Largest residual of the stick condition (Eq 16) at 16 points of the stick zone other
         than the collocation points, over ``tau0`` (0 for the closed form).
     residual_force : ndarray or float
-        ``|T(d) - T|/(2 a tau0)`` for a given ``T`` (Eq 17 solved for ``d``); 0 when ``d``
+        :math:`|T(d) - T|/(2 a \tau_0)` for a given ``T`` (Eq 17 solved for ``d``); 0 when ``d``
         is given.
     residual_consistency : ndarray or float
         Collocation consistency residual (zero by symmetry).
@@ -162,11 +163,11 @@ class SlidingInitiation(_Tangential):
     tau0_over_E: NDArray | float
 
     def traction(self, x_over_a: ArrayLike) -> NDArray:
-        r"""Shear traction ``q/E`` at ``x/a`` (positive along ``T``; ``tau0/E`` when slipping).
+        r"""Shear traction :math:`q/E` at :math:`x/a`, positive along ``T``.
 
         ``x_over_a`` has shape ``(m,)``; the result has shape ``points.shape + (m,)``: the
-        stick-zone traction of the method used for ``|x| < d``, ``tau0/E`` for
-        ``d <= |x| <= a`` (everywhere when sliding), zero outside the contact.
+        stick-zone traction of the method used for :math:`|x| < d`, :math:`\tau_0/E` for
+        :math:`d \le |x| \le a` (everywhere when sliding), zero outside the contact.
         """
         x, dlt, st = self._points(x_over_a)
         t0 = np.asarray(self.tau0_over_E, dtype=float)[..., None]
@@ -188,7 +189,7 @@ class SlidingInitiation(_Tangential):
         return t0 * q
 
     def slip(self, x_over_a: ArrayLike) -> NDArray:
-        r"""Slip ``s/a`` at ``x/a`` (shape ``points.shape + (m,)``).
+        r"""Slip :math:`s/a` at :math:`x/a` (shape ``points.shape + (m,)``).
 
         The slip is the cylinder's tangential displacement relative to the substrate in the
         slip zones, measured from the nearer end of the stick zone: zero in the stick zone,
@@ -247,14 +248,14 @@ class CoulombSlidingInitiation(_Tangential):
     d_over_a : ndarray or float
         Half-width of the central stick zone over ``a``.
     T_over_muF : ndarray or float
-        ``T/(mu F) = 1 - (d/a)^2`` (also in ``T_over_T_full_slip``).
+        :math:`T/(\mu F) = 1 - (d/a)^2` (also in ``T_over_T_full_slip``).
     T_over_Ea : ndarray or float
-        ``(pi/4) mu (a/R) T/(mu F)``.
+        :math:`(\pi/4) \mu (a/R) T/(\mu F)`.
     mu, a_over_R : ndarray or float
         Friction coefficient and Hertz half-width over the radius.
     state, method, n_collocation, residual_stick, residual_force, residual_consistency, \
 error_estimate, converged
-        As in :class:`SlidingInitiation` (stresses over ``mu p0``).
+        As in :class:`SlidingInitiation` (stresses over :math:`\mu p_0`).
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("mu", "a_over_R", "method")
@@ -265,9 +266,9 @@ error_estimate, converged
     a_over_R: NDArray | float
 
     def traction(self, x_over_a: ArrayLike) -> NDArray:
-        r"""Shear traction ``q/E`` at ``x/a`` (shape ``points.shape + (m,)``).
+        r"""Shear traction :math:`q/E` at :math:`x/a` (shape ``points.shape + (m,)``).
 
-        ``mu p`` in the slip zones,
+        :math:`\mu p` in the slip zones,
         :math:`\mu p_0[\sqrt{1-x^2/a^2} - (d/a)\sqrt{1-x^2/d^2}]` in the stick zone.
         """
         x, dlt, st = self._points(x_over_a)
@@ -338,8 +339,8 @@ def sliding_initiation(
     r"""Initiation of sliding with constant friction stress ``tau0`` (paper Eqs 15--17).
 
     A tangential force ``T`` grows on a contact of half-width ``a`` (from the normal
-    problem, unchanged by ``T`` since ``B = 0``); the central zone ``|x| < d`` sticks, the
-    edges ``d < |x| < a`` slip under the shear stress ``tau0``.
+    problem, unchanged by ``T`` since :math:`B = 0`); the central zone :math:`|x| < d` sticks, the
+    edges :math:`d < |x| < a` slip under the shear stress :math:`\tau_0`.
 
     Parameters
     ----------
@@ -349,7 +350,7 @@ def sliding_initiation(
         Stick-zone half-width over ``a``, in ``[0, 1)`` (``0``: onset of full sliding).
     T_over_Ea : array_like, optional
         Tangential force per unit length over ``E a``, ``>= 0``; give exactly one of
-        ``d_over_a`` and ``T_over_Ea``. At or above ``2 tau0/E`` the cylinder slides.
+        ``d_over_a`` and ``T_over_Ea``. At or above :math:`2 \tau_0/E` the cylinder slides.
     method : {"closed-form", "collocation"}
         Closed form, or Gauss--Chebyshev collocation of Eq 16 (for a given ``T``, Eq 17 is
         then solved for ``d`` by Newton's method on the collocation solution).
@@ -425,8 +426,8 @@ def sliding_initiation_coulomb(
     r"""Cattaneo--Mindlin initiation of sliding of a Hertz line contact (Coulomb friction).
 
     The macro-scale counterpart of :func:`sliding_initiation`: Hertz pressure
-    :math:`p = p_0\sqrt{1 - x^2/a^2}`, :math:`p_0 = E a/(2R)`, shear ``mu p`` in the slip
-    zones ``d < |x| < a``.
+    :math:`p = p_0\sqrt{1 - x^2/a^2}`, :math:`p_0 = E a/(2R)`, shear :math:`\mu p` in the slip
+    zones :math:`d < |x| < a`.
 
     Parameters
     ----------
@@ -437,13 +438,14 @@ def sliding_initiation_coulomb(
     d_over_a : array_like, optional
         Stick-zone half-width over ``a``, in ``[0, 1)``.
     T_over_muF : array_like, optional
-        Tangential force over ``mu F``, ``>= 0`` (exactly one of the two); ``>= 1`` slides.
+        Tangential force over :math:`\mu F`, :math:`\ge 0` (exactly one of the two); at
+        :math:`\ge 1` it slides.
     method, n, tol, on_failure
         As in :func:`sliding_initiation` (a load at or beyond full slip raises by default);
         the collocation solves
         :math:`\frac1\pi\int_{-d}^{d}\frac{\tau\,d\xi}{\xi-x} = \frac{\mu}{\pi}
         \int_{-a}^{a}\frac{p\,d\xi}{\xi-x} = -\mu p_0 x/a` for the correction ``tau`` with
-        ``q = mu p - tau`` in the stick zone (``n`` defaults to :data:`N_COULOMB`).
+        :math:`q = \mu p - \tau` in the stick zone (``n`` defaults to :data:`N_COULOMB`).
 
     Returns
     -------
