@@ -2,21 +2,22 @@ r"""A fibre pushed sideways: will it stay, roll or slide (the paper's future wor
 
 A push ``Q`` per unit length acts horizontally at height ``H`` above the substrate on a
 cylinder under the normal load ``F``, held by Maugis--Dugdale adhesion with the receding
-range ``h1`` (trailing edge) and the advancing range ``h2`` (leading edge), ``h1 >= h2``,
+range ``h1`` (trailing edge) and the advancing range ``h2`` (leading edge), :math:`h_1 \ge h_2`,
 and by a friction stress ``tau0``. The derivation is ``docs/push.md``:
 
-- the contact of steady motion, rolling or sliding, is the steady sliding contact at the
-  load (half-width ``a_slide``); its pressure's moment about the axis is ``R dw``, with the
-  adhesion hysteresis ``dw = sigma0 (h1 - h2)``;
-- rolling resistance ``Q_roll = R dw / H`` (moment balance; energy gives the same), with the
-  contact shear ``S = Q_roll (H - R)/R`` that the steady rolling solution carries (its creep
-  is reported);
-- sliding resistance ``Q_slide = 2 a_slide tau0 + dw`` (friction, and the horizontal pull of
-  the adhesive zones on the curved surface, which the energy balance requires);
-- the first motion is the one with the lower resistance: rolling iff ``H > H* = R dw /
-  Q_slide``; gross slip of the contact at rest (half-width ``a_rest``, the normal contact
-  with the advancing range) starts at ``Q_onset = 2 a_rest tau0``, and the resistance rises
-  to ``Q_slide`` as the trailing edge stretches: the static peak is the kinetic value.
+- the contact of steady motion, rolling or sliding, is the steady sliding contact at the load
+  (half-width ``a_slide``); its pressure's moment about the axis is :math:`R\,\Delta w`, with the
+  adhesion hysteresis :math:`\Delta w = \sigma_0 (h_1 - h_2)`;
+- rolling resistance :math:`Q_\text{roll} = R\,\Delta w / H` (moment balance; energy gives the
+  same), with the contact shear :math:`S = Q_\text{roll} (H - R)/R` that the steady rolling solution
+  carries (its creep is reported);
+- sliding resistance :math:`Q_\text{slide} = 2 a_\text{slide} \tau_0 + \Delta w` (friction, and the
+  horizontal pull of the adhesive zones on the curved surface, which the energy balance requires);
+- the first motion is the one with the lower resistance: rolling iff
+  :math:`H > H^* = R\,\Delta w / Q_\text{slide}`; gross slip of the contact at rest (half-width
+  ``a_rest``, the normal contact with the advancing range) starts at
+  :math:`Q_\text{onset} = 2 a_\text{rest} \tau_0`, and the resistance rises to
+  :math:`Q_\text{slide}` as the trailing edge stretches: the static peak is the kinetic value.
 
 Groups as in steady sliding: lengths over ``R`` (``H_over_R``) or ``h2``, forces per unit
 length over ``E h2``.
@@ -48,7 +49,7 @@ STATES = ("rest", "roll", "slide", "roll+slide", "lift-off")
 
 @dataclass(frozen=True)
 class Push(Result):
-    """Rolling and sliding resistance of a pushed fibre, its first motion and its state.
+    r"""Rolling and sliding resistance of a pushed fibre, its first motion and its state.
 
     Attributes
     ----------
@@ -67,27 +68,29 @@ class Push(Result):
     a_slide_over_R : ndarray or float
         Contact half-width of steady motion (the steady sliding contact at the load).
     Q_roll_over_Eh2 : ndarray or float
-        Steady rolling resistance ``R dw / H`` (``inf`` at ``H = 0``): the moment of the
-        sliding contact's pressure about the axis, ``M - e F = R dw``, over the arm.
+        Steady rolling resistance :math:`R\,\Delta w / H` (``inf`` at :math:`H = 0`): the moment of
+        the sliding contact's pressure about the axis, :math:`M - e F = R\,\Delta w`, over the
+        arm.
     Q_slide_over_Eh2 : ndarray or float
-        Steady sliding resistance ``2 a_slide tau0 + dw``; the static (peak) value too.
+        Steady sliding resistance :math:`2 a_\text{slide} \tau_0 + \Delta w`; the static (peak)
+        value too.
     friction_over_Eh2, hysteresis_over_Eh2 : ndarray or float
-        Its two parts: ``2 a_slide tau0`` and ``dw = sigma0 (h1 - h2)``.
+        Its two parts: :math:`2 a_\text{slide} \tau_0` and :math:`\Delta w = \sigma_0 (h_1 - h_2)`.
     Q_onset_over_Eh2 : ndarray or float
-        ``2 a_rest tau0``: gross slip of the contact at rest begins (the resistance then
-        rises to ``Q_slide`` as the trailing edge stretches).
+        :math:`2 a_\text{rest} \tau_0`: gross slip of the contact at rest begins (the resistance
+        then rises to :math:`Q_\text{slide}` as the trailing edge stretches).
     H_critical_over_R : ndarray or float
-        ``H* = R dw / Q_slide``: rolling comes first for a moment arm above it.
+        :math:`H^* = R\,\Delta w / Q_\text{slide}`: rolling comes first for a moment arm above it.
     first_motion : ndarray of str or str
-        ``"roll"``, ``"slide"``, or ``"roll+slide"`` (rolling comes first but needs more
-        shear than the contact holds, ``|S_roll| >= 2 a_slide tau0``); with a tip below the
-        axis also ``"lift-off"`` (its vertical pull takes the load to the pull-off force of
-        the contact at rest before either resistance is reached).
+        ``"roll"``, ``"slide"``, or ``"roll+slide"`` (rolling comes first but needs more shear than
+        the contact holds, :math:`|S_\text{roll}| \ge 2 a_\text{slide} \tau_0`); with a tip below
+        the axis also ``"lift-off"`` (its vertical pull takes the load to the pull-off force of the
+        contact at rest before either resistance is reached).
     S_roll_over_Eh2 : ndarray or float
-        The contact's shear on the fibre while rolling, ``Q_roll (H - R)/R`` (negative:
+        The contact's shear on the fibre while rolling, :math:`Q_\text{roll} (H - R)/R` (negative:
         resisting, below the axis; positive: driving, above it).
     creep_over_V : ndarray or float
-        Creep while rolling, ``(V - omega R)/V`` (negative when the shear drives); NaN
+        Creep while rolling, :math:`(V - \omega R)/V` (negative when the shear drives); NaN
         where the contact cannot hold ``S_roll``. Also the relative size of the
         difference between the energy and moment balances (``docs/push.md`` section 2).
     Q_over_Eh2 : ndarray or float
@@ -172,8 +175,8 @@ def push(
     R_over_h2 : array_like
         Radius over the advancing (leading-edge) adhesion range ``h2``.
     h1_over_h2 : array_like
-        Receding over advancing range, in ``[1, 1000]`` (``h1 >= h2``: the adhesion
-        hysteresis ``dw = sigma0 (h1 - h2)`` is not negative).
+        Receding over advancing range, in ``[1, 1000]`` (:math:`h_1 \ge h_2`: the adhesion
+        hysteresis :math:`\Delta w = \sigma_0 (h_1 - h_2)` is not negative).
     sigma0_over_E, tau0_over_E : array_like
         Adhesive stress and friction stress over the composite modulus.
     F_over_Eh2 : array_like
@@ -418,12 +421,13 @@ def _steady_sliding_contact(p: _Inputs) -> _Contact:
 
 
 def _tip_sliding_threshold(p: _Inputs, Q0, a0, F0, conv0) -> _Contact:
-    """Solve ``Q = g(Q) = 2 a(F + k Q) tau0 + dw`` from ``Q0`` (the threshold at ``F``).
+    r"""Solve :math:`Q = g(Q) = 2 a(F + k Q) \tau_0 + \Delta w` from ``Q0``.
 
-    Secant steps on ``g(Q) - Q`` (plain iteration converges only linearly where the contact
-    is wide: ``a ~ sqrt(load)``); a point leaves the loop when ``|g - Q| <= 1e-14 g``, with
-    ``Q = g`` and the contact at ``F + k Q``; ``g`` NaN: the tip lifts the fibre first (it
-    leaves as NaN). ``converged`` is False where 60 steps do not settle a point.
+    ``Q0`` is the threshold at ``F``. Secant steps on ``g(Q) - Q`` (plain iteration converges only
+    linearly where the contact is wide: :math:`a \propto \sqrt{F}`); a point leaves the loop when
+    :math:`|g - Q| \le 10^{-14} g`, with :math:`Q = g` and the contact at :math:`F + k Q`; ``g``
+    NaN: the tip lifts the fibre first (it leaves as NaN). ``converged`` is False where 60 steps do
+    not settle a point.
     """
     Q, a, F, conv = Q0.copy(), a0.copy(), F0.copy(), conv0.copy()
     act = np.flatnonzero(p.k != 0)  # where k = 0 the threshold is the one at F
@@ -449,11 +453,11 @@ def _tip_sliding_threshold(p: _Inputs, Q0, a0, F0, conv0) -> _Contact:
 
 
 def _contact_at_rest(p: _Inputs) -> _Contact:
-    """The contact at rest and the push where gross slip begins, ``Q_onset = 2 a_rest tau0``.
+    r"""The contact at rest and the slip onset :math:`Q_\text{onset} = 2 a_\text{rest}\tau_0`.
 
     The normal contact at the load with the advancing range (NaN where none carries it:
     below the pull-off force at rest); with a tip, at ``F + k Q_onset`` by plain iteration
-    (the tip's load changes the width by a part of order ``tau0/E``: a few steps to 1e-14).
+    (the tip's load changes the width by a part of order :math:`\tau_0/E`: a few steps to 1e-14).
     ``F`` is NaN: the load is not reported.
     """
     a, conv = _rest_at(p, slice(None), p.F)
@@ -472,14 +476,15 @@ def _contact_at_rest(p: _Inputs) -> _Contact:
 
 
 def _rolling_resistance(dw, arm):
-    """Steady rolling: the push ``Q_roll = R dw / H`` and the contact's shear ``S_roll``.
+    r"""Steady rolling: push :math:`Q_\text{roll} = R\,\Delta w / H`, contact shear ``S_roll``.
 
-    The moment balance about the axis with the moment ``M_axis = R dw`` of the steady
-    contact's pressure (``docs/push.md`` eq. 1, taken exactly: ``M - e F`` loses digits when
-    the adhesion is tiny beside the load), and the force balance ``Q + S = dw``:
-    ``S_roll = Q_roll (H - R)/R``. ``Q_roll`` is 0 without hysteresis (``H > 0``) and
-    ``inf`` for a push at the contact line (``H = 0``, or so close that ``dw / H``
-    overflows; ``S_roll`` is then ``-inf``). Kendall's energy balance gives the same.
+    The moment balance about the axis with the moment :math:`M_\text{axis} = R\,\Delta w` of the
+    steady contact's pressure (``docs/push.md`` eq. 1, taken exactly: :math:`M - e F` loses digits
+    when the adhesion is tiny beside the load), and the force balance :math:`Q + S = \Delta w`:
+    :math:`S_\text{roll} = Q_\text{roll} (H - R)/R`. ``Q_roll`` is 0 without hysteresis
+    (:math:`H > 0`) and ``inf`` for a push at the contact line (:math:`H = 0`, or so close that
+    :math:`\Delta w / H` overflows; ``S_roll`` is then ``-inf``). Kendall's energy balance gives the
+    same.
     """
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
         Q_roll = np.where(arm > 0, dw / np.where(arm > 0, arm, 1.0), np.inf)
@@ -502,10 +507,10 @@ def _rolling_contact(p: _Inputs, a_slide, Q_roll):
 
 
 def _lift_off(p: _Inputs):
-    """The push at which a tip that lifts (``k < 0``) pulls the fibre off at rest.
+    r"""The push at which a tip that lifts (:math:`k < 0`) pulls the fibre off at rest.
 
-    ``Q_lift = (F - F_po)/(-k)``, where the load reaches the pull-off force ``F_po`` of the
-    contact at rest; ``inf`` where the tip does not lift.
+    :math:`Q_\text{lift} = (F - F_\text{po})/(-k)`, where the load reaches the pull-off force
+    ``F_po`` of the contact at rest; ``inf`` where the tip does not lift.
     """
     Q_lift = np.full(p.F.shape, np.inf)
     lifts = np.flatnonzero(p.k < 0)
@@ -518,11 +523,11 @@ def _lift_off(p: _Inputs):
 
 
 def _first_motion(p: _Inputs, Q_slide, Q_roll, S_roll, a_roll, Q_lift):
-    """The first motion under a growing push, and whether the rolling contact holds.
+    r"""The first motion under a growing push, and whether the rolling contact holds.
 
-    The lower steady resistance (``docs/push.md`` section 4), ``"roll+slide"`` where rolling
-    needs more shear than its contact holds (``|S_roll| >= 2 a_roll tau0``), ``"lift-off"``
-    where a tip lifts the fibre first.
+    The lower steady resistance (``docs/push.md`` section 4), ``"roll+slide"`` where rolling needs
+    more shear than its contact holds (:math:`|S_\text{roll}| \ge 2 a_\text{roll} \tau_0`),
+    ``"lift-off"`` where a tip lifts the fibre first.
 
     Returns ``(first, holds, Q_roll, Q_slide)``, the thresholds that a lifted contact does
     not reach set to ``inf``.
@@ -536,7 +541,7 @@ def _first_motion(p: _Inputs, Q_slide, Q_roll, S_roll, a_roll, Q_lift):
 
 
 def _creep(p: _Inputs, S_roll, a_roll, holds):
-    """The creep ``(V - omega R)/V`` of steady rolling under the shear ``S_roll``.
+    r"""The creep :math:`(V - \omega R)/V` of steady rolling under the shear ``S_roll``.
 
     Where the contact holds it (:func:`~linecontact.steady_rolling`, once), NaN elsewhere;
     negative where the shear drives, 0 without shear.
@@ -630,12 +635,18 @@ def tip_push(H_over_R: ArrayLike, tip_friction: ArrayLike = 0.0) -> TipPush:
     r"""Reduce a tip touching the fibre at height ``H`` to the push it exerts.
 
     The tip touches the rear of the fibre at the angle ``theta`` above the horizontal
-    through the axis, ``sin(theta) = H/R - 1``, and presses along the surface normal
+    through the axis, :math:`\sin\theta = H/R - 1`, and presses along the surface normal
     (through the axis) with the force ``P``; its friction ``mu_tip``, at its limit, opposes
     the rotation of a forward-rolling fibre. Then (``docs/push.md`` section 6)
-    ``Q/P = cos(theta) - mu_tip sin(theta)``, ``dF/P = sin(theta) + mu_tip cos(theta)`` and
-    ``H_eff = R [cos(theta) - mu_tip (1 + sin(theta))] / (cos(theta) - mu_tip sin(theta))``;
-    a frictionless tip acts at ``H_eff = R`` at any height.
+
+    .. math::
+
+        \frac{Q}{P} = \cos\theta - \mu_\text{tip} \sin\theta, \qquad
+        \frac{\Delta F}{P} = \sin\theta + \mu_\text{tip} \cos\theta, \qquad
+        H_\text{eff} = R\, \frac{\cos\theta - \mu_\text{tip} (1 + \sin\theta)}
+        {\cos\theta - \mu_\text{tip} \sin\theta};
+
+    a frictionless tip acts at :math:`H_\text{eff} = R` at any height.
 
     Parameters
     ----------
@@ -653,7 +664,7 @@ def tip_push(H_over_R: ArrayLike, tip_friction: ArrayLike = 0.0) -> TipPush:
     ------
     ValueError
         For a height outside ``(0, 2)`` or a friction outside ``[0, 10]``, or where the tip
-        no longer pushes forward (``cos(theta) <= mu_tip sin(theta)``).
+        no longer pushes forward (:math:`\cos\theta \le \mu_\text{tip} \sin\theta`).
 
     Examples
     --------
@@ -679,10 +690,10 @@ def tip_push(H_over_R: ArrayLike, tip_friction: ArrayLike = 0.0) -> TipPush:
 
 
 def _tip_forces(H, mu):
-    """A tip's ``(Q/P, dF/P, H_eff/R)`` at checked heights and frictions.
+    r"""A tip's ``(Q/P, dF/P, H_eff/R)`` at checked heights and frictions.
 
     ``docs/push.md`` section 6; raises where the tip does not push forward
-    (``cos(theta) <= mu sin(theta)``).
+    (:math:`\cos\theta \le \mu \sin\theta`).
     """
     # 1 + sin(theta) = H and 1 - sin(theta) = 2 - H (exact for H >= 1, correctly rounded
     # below): cos(theta) = sqrt(H (2 - H)) keeps its relative accuracy at both ends, where
