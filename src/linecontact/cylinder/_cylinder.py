@@ -59,10 +59,9 @@ class Cylinder(_Problems):
     """A cylinder of radius ``R`` on a substrate, with Maugis--Dugdale adhesion.
 
     Build it with :meth:`from_materials` or :meth:`from_modulus`. Each problem is a method:
-    :meth:`contact`, :meth:`pull_off`, :meth:`load_curve` here; :meth:`sliding`,
+    :meth:`contact`, :meth:`pull_off`, :meth:`load_curve`, :meth:`sliding`,
     :meth:`sliding_initiation`, :meth:`steady_rolling`, :meth:`push`,
-    :meth:`tangential_history`, :meth:`cyclic_loss` from its base ``_Problems``
-    (``_methods.py``).
+    :meth:`tangential_history` and :meth:`cyclic_loss`.
 
     Attributes
     ----------
