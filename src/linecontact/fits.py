@@ -3,10 +3,10 @@ r"""The pull-off inverse problems: the forward model, ``w`` from one pull-off, `
 Split from :mod:`linecontact.inverse`, which re-exports every public name (``from
 linecontact.inverse import fit_pull_off`` keeps working):
 
-* :func:`pull_off_force`: the Maugis--Dugdale pull-off force of a cylinder in SI units, with
-  the adhesion given as ``(w, z0)`` (``sigma0 = 16 w/(9 sqrt(3) z0)``, ``h = w/sigma0``); the
-  JKR and rigid (DMT) limits :func:`jkr_pull_off_force`, :func:`dmt_pull_off_force` and the
-  work of adhesion they alone would give (:func:`simple_model_work_of_adhesion`);
+* :func:`pull_off_force`: the Maugis--Dugdale pull-off force of a cylinder in SI units, with the
+  adhesion given as ``(w, z0)`` (:math:`\sigma_0 = 16 w/(9 \sqrt{3} z_0)`, :math:`h = w/\sigma_0`);
+  the JKR and rigid (DMT) limits :func:`jkr_pull_off_force`, :func:`dmt_pull_off_force` and the work
+  of adhesion they alone would give (:func:`simple_model_work_of_adhesion`);
 * :func:`work_of_adhesion_from_pull_off`: the model solved for ``w`` at a known radius,
   modulus and range;
 * :func:`fit_pull_off`: ``(w, z0)`` jointly, or ``w`` alone at a fixed ``z0``, from pull-off
@@ -66,10 +66,10 @@ def pull_off_force(
     work_of_adhesion: ArrayLike,
     equilibrium_spacing: ArrayLike,
 ) -> NDArray:
-    """Maugis--Dugdale pull-off force per unit length [N/m] (negative), vectorised.
+    r"""Maugis--Dugdale pull-off force per unit length [N/m] (negative), vectorised.
 
     The forward model of the pull-off inversions: :func:`linecontact.pull_off` at
-    ``R/h``, ``sigma0/E`` of the adhesion ``(w, z0)``, times ``E h``.
+    :math:`R/h`, :math:`\sigma_0/E` of the adhesion ``(w, z0)``, times :math:`E h`.
 
     Examples
     --------
@@ -88,7 +88,7 @@ def pull_off_force(
 
 
 def jkr_pull_off_force(radius: ArrayLike, modulus: ArrayLike, work_of_adhesion: ArrayLike):
-    """JKR pull-off of a line contact, ``-(3/4) (4 pi w^2 E R)^(1/3)`` [N/m] (no range)."""
+    r"""JKR pull-off of a line contact, :math:`-\tfrac34 (4 \pi w^2 E R)^{1/3}` [N/m] (no range)."""
     R = check_array("radius", radius)
     E = check_array("modulus", modulus)
     w = check_array("work_of_adhesion", work_of_adhesion)
@@ -128,10 +128,10 @@ def _dmt_pull_off_si(R, w, z0):
 def dmt_pull_off_force(
     radius: ArrayLike, work_of_adhesion: ArrayLike, equilibrium_spacing: ArrayLike
 ):
-    """Rigid-cylinder (DMT-like) pull-off of the Dugdale law, ``-2 sqrt(2) w sqrt(R/h)`` [N/m].
+    r"""Rigid-cylinder (DMT-like) pull-off, Dugdale law: :math:`-2\sqrt{2}\, w \sqrt{R/h}` [N/m].
 
-    The small-Maugis-parameter limit: the adhesive zone ``|x| < sqrt(2 R h)`` around a rigid
-    cylinder touching at a point, ``h = 9 sqrt(3) z0/16``.
+    The small-Maugis-parameter limit: the adhesive zone :math:`|x| < \sqrt{2 R h}` around a rigid
+    cylinder touching at a point, :math:`h = 9 \sqrt{3} z_0/16`.
     """
     R = check_array("radius", radius)
     w = check_array("work_of_adhesion", work_of_adhesion)
@@ -151,11 +151,11 @@ def simple_model_work_of_adhesion(
     equilibrium_spacing: float,
     sd: ArrayLike | None = None,
 ) -> dict[str, float]:
-    """The work of adhesion JKR and DMT alone would give, by weighted least squares.
+    r"""The work of adhesion JKR and DMT alone would give, by weighted least squares.
 
-    ``F = -c_i w^(2/3)`` (JKR, ``c_i = (3/4)(4 pi E R_i)^(1/3)``) and ``F = -d_i w`` (the
-    rigid/DMT limit, ``d_i = 2 sqrt(2) sqrt(R_i/h)`` at the range given) are linear in
-    ``w^(2/3)`` and ``w``: closed-form weighted least squares. Returns
+    :math:`F = -c_i w^{2/3}` (JKR, :math:`c_i = \tfrac34 (4 \pi E R_i)^{1/3}`) and
+    :math:`F = -d_i w` (the rigid/DMT limit, :math:`d_i = 2 \sqrt{2} \sqrt{R_i/h}` at the range
+    given) are linear in :math:`w^{2/3}` and :math:`w`: closed-form weighted least squares. Returns
     ``{"jkr": w_JKR, "dmt": w_DMT}`` [J/m^2] — what the simple models would have reported.
 
     Examples
@@ -422,10 +422,10 @@ def fit_pull_off(
     r"""Fit the work of adhesion (and the range) to pull-off forces at several radii.
 
     Weighted least squares on the Maugis--Dugdale pull-off (:func:`pull_off_force`) in the
-    parameters ``ln w`` and ``ln z0``. The radius dependence separates them in the
-    transition regime: ``F ~ w sqrt(R/z0)`` for a rigid-like contact (small Maugis
-    parameter), ``F ~ (w^2 E R)^(1/3)``, independent of ``z0``, in the JKR limit; data all in
-    the JKR regime do not determine ``z0`` (``identifiable`` is False and ``note`` says so:
+    parameters :math:`\ln w` and :math:`\ln z_0`. The radius dependence separates them in the
+    transition regime: :math:`F \sim w \sqrt{R/z_0}` for a rigid-like contact (small Maugis
+    parameter), :math:`F \sim (w^2 E R)^{1/3}`, independent of :math:`z_0`, in the JKR limit; data
+    all in the JKR regime do not determine ``z0`` (``identifiable`` is False and ``note`` says so:
     fix ``equilibrium_spacing``).
 
     Parameters
