@@ -1,8 +1,8 @@
 r"""Steady rolling of a driving cylinder (paper Eqs 23--29), and Carter's solution.
 
-The cylinder rolls along ``+x`` and drives; the leading edge ``d < x < a`` sticks, the
+The cylinder rolls along ``+x`` and drives; the leading edge :math:`d < x < a` sticks, the
 trailing edge slips; the creep (rigid slip) velocity comes from the consistency condition of
-the collocation. Constant friction stress ``tau0`` (the paper's nano-scale law) or Coulomb
+the collocation. Constant friction stress :math:`\tau_0` (the paper's nano-scale law) or Coulomb
 friction on the Hertz contact (Carter). Units, sign conventions and references:
 :mod:`linecontact.tangential`.
 """
@@ -134,16 +134,16 @@ class SteadyRolling(_Tangential):
     Attributes
     ----------
     d_over_a : ndarray or float
-        Start of the leading-edge stick zone ``d < x < a`` over ``a`` (``-1``: full stick
-        at ``T = 0``; ``nan`` under a load above full slip).
+        Start of the leading-edge stick zone :math:`d < x < a` over ``a`` (``-1``: full stick
+        at :math:`T = 0`; ``nan`` under a load above full slip).
     T_over_Ea : ndarray or float
         Tractive force per unit length over ``E a`` (on the cylinder, along the rolling
         direction).
     T_over_T_full_slip : ndarray or float
-        ``T/(2 a tau0)``.
+        :math:`T/(2 a \tau_0)`.
     creep_over_V : ndarray or float
         :math:`(V - \omega R)/V`, negative (``nan`` when sliding: at full slip the creep is
-        not fixed by a stick zone; it diverges logarithmically as ``d -> a``).
+        not fixed by a stick zone; it diverges logarithmically as :math:`d \to a`).
     tau0_over_E : ndarray or float
     state, method, n_collocation, residual_stick, residual_force, residual_consistency, \
 error_estimate, converged
@@ -159,9 +159,9 @@ error_estimate, converged
     tau0_over_E: NDArray | float
 
     def traction(self, x_over_a: ArrayLike) -> NDArray:
-        r"""Shear traction ``q/E`` on the cylinder at ``x/a``.
+        r"""Shear traction :math:`q/E` on the cylinder at :math:`x/a`.
 
-        Positive along the rolling direction: ``tau0/E`` in the trailing slip zone, falling
+        Positive along the rolling direction: :math:`\tau_0/E` in the trailing slip zone, falling
         to 0 at the leading edge. ``x_over_a`` has shape ``(m,)``; the result has shape
         ``points.shape + (m,)``.
         """
@@ -194,17 +194,17 @@ class CoulombRolling(_Tangential):
     ----------
     d_over_a : ndarray or float
         Start of the leading-edge stick zone over ``a``; its half-width is
-        ``a' = (a - d)/2``.
+        :math:`a' = (a - d)/2`.
     T_over_muF : ndarray or float
-        ``1 - (a'/a)^2``.
+        :math:`1 - (a'/a)^2`.
     T_over_Ea : ndarray or float
-        ``(pi/4) mu (a/R) T/(mu F)``.
+        :math:`(\pi/4) \mu (a/R) T/(\mu F)`.
     creep_over_V : ndarray or float
-        ``(V - omega R)/V = -(mu a/R)(1 - a'/a)`` (Carter), negative.
+        :math:`(V - \omega R)/V = -(\mu a/R)(1 - a'/a)` (Carter), negative.
     mu, a_over_R : ndarray or float
     state, method, n_collocation, residual_stick, residual_force, residual_consistency, \
 error_estimate, converged
-        As in :class:`SteadyRolling` (stresses over ``mu p0``).
+        As in :class:`SteadyRolling` (stresses over :math:`\mu p_0`).
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("mu", "a_over_R", "method")
@@ -216,10 +216,10 @@ error_estimate, converged
     a_over_R: NDArray | float
 
     def traction(self, x_over_a: ArrayLike) -> NDArray:
-        r"""Shear traction ``q/E`` on the cylinder at ``x/a`` (along the rolling direction).
+        r"""Shear traction :math:`q/E` on the cylinder at :math:`x/a` (along the rolling direction).
 
         :math:`\mu p_0[\sqrt{1-x^2/a^2} - (a'/a)\sqrt{1-(x-x_0)^2/a'^2}]` in the stick
-        zone, ``x0 = a - a'``; ``mu p`` in the slip zone. Shape ``points.shape + (m,)``.
+        zone, :math:`x_0 = a - a'`; :math:`\mu p` in the slip zone. Shape ``points.shape + (m,)``.
         """
         x, dlt, st = self._points(x_over_a)
         p0 = np.asarray(self.a_over_R, dtype=float)[..., None] / 2
@@ -296,9 +296,9 @@ def steady_rolling(
 ) -> SteadyRolling:
     r"""Steady rolling of a driving cylinder with constant friction stress (Eqs 23--29).
 
-    Conventions (module docstring): rolling along ``+x`` (leading edge ``x = a``), the
-    cylinder drives, ``T`` is the tractive force on it; stick zone ``d < x < a`` at the
-    leading edge, slip zone ``-a < x < d`` at the trailing edge with shear ``tau0``.
+    Conventions (module docstring): rolling along ``+x`` (leading edge :math:`x = a`), the
+    cylinder drives, ``T`` is the tractive force on it; stick zone :math:`d < x < a` at the
+    leading edge, slip zone :math:`-a < x < d` at the trailing edge with shear :math:`\tau_0`.
 
     Parameters
     ----------
@@ -309,7 +309,7 @@ def steady_rolling(
         slip).
     T_over_Ea : array_like, optional
         Tractive force per unit length over ``E a``, ``>= 0`` (exactly one of the two); at
-        or above ``2 tau0/E`` the contact slips entirely: a
+        or above :math:`2 \tau_0/E` the contact slips entirely: a
         :class:`~linecontact.errors.NoEquilibriumError`, or ``state == "sliding"`` with
         ``on_failure="report"``.
     method, n, tol, on_failure
@@ -382,8 +382,8 @@ def steady_rolling_coulomb(
 ) -> CoulombRolling:
     r"""Carter's steady rolling of a driving cylinder (Hertz pressure, Coulomb friction).
 
-    Conventions as in :func:`steady_rolling`. Stick zone ``d < x < a`` of half-width
-    ``a' = (a - d)/2`` centred at ``x0 = a - a'``.
+    Conventions as in :func:`steady_rolling`. Stick zone :math:`d < x < a` of half-width
+    :math:`a' = (a - d)/2` centred at :math:`x_0 = a - a'`.
 
     Parameters
     ----------
@@ -392,10 +392,11 @@ def steady_rolling_coulomb(
     d_over_a : array_like, optional
         Start of the stick zone over ``a``, in ``(-1, 1)``.
     T_over_muF : array_like, optional
-        Tractive force over ``mu F``, ``>= 0`` (exactly one of the two); ``>= 1`` slides.
+        Tractive force over :math:`\mu F`, :math:`\ge 0` (exactly one of the two); at
+        :math:`\ge 1` it slides.
     method, n, tol, on_failure
-        As in :func:`steady_rolling`; with ``q = -mu p + tau-bar`` on the stick zone the
-        equation for ``tau-bar`` is
+        As in :func:`steady_rolling`; with :math:`q = -\mu p + \bar\tau` on the stick zone
+        the equation for :math:`\bar\tau` is
         :math:`\frac1\pi\int_d^a\frac{\bar\tau\,d\xi}{\xi - x} = -\mu p_0 x/a
         - E\dot C/(2V)`, its consistency condition giving the creep.
 
