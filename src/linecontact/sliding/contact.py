@@ -42,10 +42,10 @@ class SlidingContact(Result):
     Attributes
     ----------
     a_over_R : ndarray or float
-        Contact half-width ``a/R``.
+        Contact half-width :math:`a/R`.
     c1_over_R, c2_over_R : ndarray or float
-        Ends of the trailing (``-c1 < x < -a``) and leading (``a < x < c2``) adhesive zones,
-        measured from the contact centre, over ``R``.
+        Ends of the trailing (:math:`-c_1 < x < -a`) and leading (:math:`a < x < c_2`) adhesive
+        zones, measured from the contact centre, over ``R``.
     e_over_R : ndarray or float
         Eccentricity: position of the cylinder's apex (axis) relative to the contact centre,
         along the sliding direction, over ``R``.
@@ -78,7 +78,7 @@ class SlidingContact(Result):
     converged : ndarray or bool
         All tolerances met.
     stable : ndarray or bool
-        ``dF/da > 0``: stable under load control.
+        :math:`dF/da > 0`: stable under load control.
     state : ndarray of str or str
         ``"contact"``; ``"no-equilibrium"`` for a load below the pull-off force reported by
         :func:`sliding_contact_for_load` with ``on_failure="report"`` (values NaN).
@@ -127,22 +127,22 @@ class SlidingContact(Result):
 
     @property
     def c1_over_a(self):
-        """``c1/a`` (>= 1)."""
+        r""":math:`c_1/a` (:math:`\ge 1`)."""
         return np.asarray(self.c1_over_R) / np.asarray(self.a_over_R)
 
     @property
     def c2_over_a(self):
-        """``c2/a`` (>= 1)."""
+        r""":math:`c_2/a` (:math:`\ge 1`)."""
         return np.asarray(self.c2_over_R) / np.asarray(self.a_over_R)
 
     def friction_force(self, tau0_over_E: ArrayLike) -> NDArray | float:
-        """Friction force per unit length ``2 a tau0`` over ``E h2``, for ``tau0/E >= 0``."""
+        r"""Friction force per length, :math:`2 a \tau_0`, over :math:`E h_2` (``tau0/E >= 0``)."""
         t = _domain.check("tau0_over_E", tau0_over_E, "friction_tau0_over_E")
         val = 2 * np.asarray(self.a_over_R) * np.asarray(self.R_over_h2) * t
         return val.item() if np.ndim(val) == 0 else val
 
     def _coefficients(self, n: int | None = None):
-        """Chebyshev-U coefficients of ``pbar/E`` on ``t = x/a`` (closed form, truncated).
+        r"""Chebyshev-U coefficients of :math:`\bar p/E` on :math:`t = x/a` (closed form, cut).
 
         Returns (A, s, coefficients) flattened over the points.
         """
@@ -157,12 +157,12 @@ class SlidingContact(Result):
         return A, s, _cf_coefficients(A, s, u1, u2, n)
 
     def pressure(self, x_over_R: ArrayLike) -> NDArray:
-        r"""Contact pressure ``p/E`` (compressive positive) at ``x/R``.
+        r"""Contact pressure :math:`p/E` (compressive positive) at :math:`x/R`.
 
         ``x_over_R`` has shape ``(m,)``; the result has shape ``points.shape + (m,)``.
         Inside the contact: the closed-form bounded solution of Eq. (20) at the computed
         ``c1``, ``c2`` (the collocation solution is the same function to its tolerance);
-        ``-sigma0/E`` in the adhesive zones; zero beyond.
+        :math:`-\sigma_0/E` in the adhesive zones; zero beyond.
         """
         x = positions("x_over_R", x_over_R, np.shape(self.a_over_R))
         A = np.asarray(self.a_over_R, dtype=float)[..., None]
@@ -181,7 +181,7 @@ class SlidingContact(Result):
         return np.where(np.abs(x) < A, inner, np.where((x >= -C1) & (x <= C2), -s, 0.0))
 
     def gap(self, x_over_R: ArrayLike) -> NDArray:
-        r"""The gap between the surfaces over ``h2`` at ``x/R`` (zero in the contact).
+        r"""The gap between the surfaces over :math:`h_2` at :math:`x/R` (zero in the contact).
 
         Outside the contact
         :math:`g(x) = \frac{(x-e)^2-(x_0-e)^2}{2R} - \frac{2}{\pi E}\int p(\xi)
@@ -241,7 +241,7 @@ def _log_strip(y, m1, m2):
 
 
 def _stable(A, rho, r, s, u1, u2, dphi):
-    """Stable under load control: ``dF/da > 0`` where its sign is clear (one definition).
+    """Stable under load control: :math:`dF/da > 0` where its sign is clear (one definition).
 
     Where the derivative is lost in round-off (near the load minimum, or at widths so small
     that the load is flat to the last digit, next to a zero-width minimum) the width is
