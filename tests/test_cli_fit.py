@@ -1,6 +1,7 @@
 """CLI fit-adhesion and fit-friction: the data reader, the records, the errors."""
 
 import json
+import re
 
 import numpy as np
 import pytest
@@ -656,3 +657,108 @@ def test_one_measurement_uncertainties_are_refused_with_data(capsys, pulloff_csv
     )
     assert code == 2 and err.count("\n") == 1
     assert "--pull-off-force-sd: for one measurement, not with --data" in err, err
+
+
+# --------------------------------------------------------------------------------------------
+# the uncertainty said as it is: exact, propagated or from the scatter; the intervals in tables
+
+ONE = ["fit-adhesion", "--radius", "50e-9", "--pull-off-force", "-3.1", "--modulus", "51.7e9"]
+ONE += ["--z0", "0.3e-9"]
+FRICTION = ["--radius", "50e-9", "--modulus", "51.7e9", "--work-of-adhesion", "0.1"]
+FRICTION += ["--z0", "0.3e-9"]
+
+
+def _row(table: str) -> dict[str, str]:
+    """The one record of a ``table`` output: {column: text} (an empty text: a blank)."""
+    head, row = [line for line in table.splitlines() if not line.startswith("#")]
+    spans = [m.span() for m in re.finditer(r"\S+(?: \S+)*", head)]  # right-aligned columns
+    starts = [0, *(end for _, end in spans[:-1])]
+    return {
+        head[a:b].split(" [")[0]: row[start:b].strip()
+        for (a, b), start in zip(spans, starts, strict=True)
+    }
+
+
+def test_one_pull_off_without_sds_is_exact_not_round_off(capsys):
+    code, out, err = run(capsys, *ONE, "--json")
+    assert code == 0, err
+    _, rec, _ = record(out)
+    w = rec["work_of_adhesion"]
+    assert rec["work_of_adhesion_sd"] == 0.0 and rec["work_of_adhesion_ci95"] == [w, w]
+    assert rec["uncertainty"] == "exact (one measurement, no uncertainty given)"
+    code, out, _ = run(capsys, *ONE)
+    row = _row(out)
+    assert row["uncertainty"] == "exact (one measurement, no uncertainty given)"
+    assert "work_of_adhesion_sd" not in row and "(Monte Carlo)" not in out
+
+
+def test_one_pull_off_with_sds_shows_the_propagated_interval(capsys):
+    argv = [*ONE, "--radius-sd", "3e-9", "--pull-off-force-sd", "5%"]
+    code, out, err = run(capsys, *argv, "--json")
+    assert code == 0, err
+    _, rec, _ = record(out)
+    lo, hi = rec["work_of_adhesion_ci95"]
+    assert rec["work_of_adhesion_sd"] > 0.01 * rec["work_of_adhesion"] and lo < hi
+    assert rec["uncertainty"] == (
+        "propagated from --radius-sd, --pull-off-force-sd (Monte Carlo, 4000 samples)"
+    )
+    code, out, _ = run(capsys, *argv)
+    row = _row(out)
+    assert row["work_of_adhesion_ci95"] == f"[{lo:.6g}, {hi:.6g}]"
+    assert row["uncertainty"].startswith("propagated from --radius-sd")
+
+
+def test_a_joint_fit_s_table_shows_both_intervals(capsys, pulloff_csv):
+    code, out, err = run(capsys, "fit-adhesion", "--data", pulloff_csv, *MATS, "--json")
+    assert code == 0, err
+    _, rec, _ = record(out)
+    code, out, _ = run(capsys, "fit-adhesion", "--data", pulloff_csv, *MATS)
+    row = _row(out)
+    for key in ("work_of_adhesion_ci95", "z0_ci95"):
+        lo, hi = rec[key]
+        assert row[key] == f"[{lo:.6g}, {hi:.6g}]", key
+    # z0 fixed: its interval [z0, z0] is not shown
+    code, out, _ = run(capsys, "fit-adhesion", "--data", pulloff_csv, *MATS, "--z0", Z0)
+    row = _row(out)
+    assert "work_of_adhesion_ci95" in row and "z0_ci95" not in row and "z0_sd" not in row
+
+
+def test_fit_friction_shows_its_interval_and_says_where_it_comes_from(capsys, tmp_path):
+    base = ["fit-friction", "--load", "0.5", "--friction-force", "0.2", *FRICTION]
+    code, out, _ = run(capsys, *base)
+    row = _row(out)
+    assert code == 0 and row["uncertainty"] == "exact (one measurement, no uncertainty given)"
+    assert "tau0_sd_Pa" not in row and "tau0_ci95_Pa" not in row
+    code, out, _ = run(capsys, *base, "--friction-force-sd", "10%", "--json")
+    _, rec, _ = record(out)
+    lo, hi = rec["tau0_ci95_Pa"]
+    code, out, _ = run(capsys, *base, "--friction-force-sd", "10%")
+    row = _row(out)
+    assert row["tau0_ci95_Pa"] == f"[{lo:.6g}, {hi:.6g}]" and lo < rec["tau0_Pa"] < hi
+    assert row["uncertainty"].startswith("propagated from --friction-force-sd")
+    # a measured width, exact without sds
+    code, out, _ = run(capsys, "fit-friction", "--friction-force", "0.2", "--half-width", "5e-9")
+    assert code == 0 and _row(out)["uncertainty"].startswith("exact")
+
+
+def test_friction_points_without_sds_give_the_scatter_not_zero(capsys, tmp_path):
+    path = write(
+        tmp_path / "f.csv",
+        ["normal_load_N_per_m", "friction_force_N_per_m"],
+        [(0.1, 0.15), (0.5, 0.21), (1.0, 0.3)],
+    )
+    code, out, err = run(capsys, "fit-friction", "--data", path, *FRICTION, "--json")
+    assert code == 0, err
+    _, rec, _ = record(out)
+    taus = np.array(rec["tau0_per_point_Pa"])
+    sd = np.std(taus, ddof=1) / np.sqrt(3)
+    assert rec["tau0_sd_Pa"] == pytest.approx(sd, rel=1e-12)
+    lo, hi = rec["tau0_ci95_Pa"]
+    assert (hi - lo) / 2 == pytest.approx(4.302652729911275 * sd, rel=1e-9)  # t(0.975, 2)
+    assert rec["uncertainty"] == "the scatter of the 3 points (no uncertainty given): Student's t"
+
+
+def test_propagate_without_sds_is_exactly_the_value():
+    x = dict(pull_off_force=-3.1, radius=50e-9, modulus=51.7e9, equilibrium_spacing=0.3e-9)
+    e = inv.propagate(inv.work_of_adhesion_from_pull_off, x, dict(radius=0.0))
+    assert e.sd == 0.0 and e.ci95 == (e.value, e.value) and e.sd_linear == 0.0

@@ -130,3 +130,25 @@ def test_each_command_of_the_guide_runs(words, tmp_path, monkeypatch, capsys):
         return
     monkeypatch.chdir(tmp_path)
     assert main(words) == 0, capsys.readouterr().err
+
+
+@pytest.mark.skipif(not README.exists(), reason="README.md is not beside the tests")
+def test_the_tour_s_fit_prints_an_uncertainty_not_round_off(capsys):
+    """The tour's fit shows a propagated uncertainty and its interval in its table."""
+    import json
+
+    from linecontact.cli import main
+
+    (words,) = [w for w in TOUR if w[0] == "fit-adhesion"]
+    assert main([*words, "--json"]) == 0
+    rec = json.loads(capsys.readouterr().out)["results"][0]
+    w, sd, (lo, hi) = (
+        rec["work_of_adhesion"],
+        rec["work_of_adhesion_sd"],
+        rec["work_of_adhesion_ci95"],
+    )
+    assert sd > 1e-3 * w, sd  # an uncertainty, not round-off of an exact value
+    assert lo < w - sd < w + sd < hi and rec["uncertainty"].startswith("propagated from")
+    assert main(words) == 0
+    table = capsys.readouterr().out
+    assert "work_of_adhesion_ci95" in table and f"[{lo:.6g}, {hi:.6g}]" in table

@@ -808,7 +808,15 @@ def fit_shear_strength(
     scale = float(np.max(np.abs(tau))) or 1.0
     value = scale * float(np.sum(wt * (tau / scale)) / np.sum(wt))
     if not (np.any(f_sd > 0) or any(shared_sd.values())):
-        return ShearStrengthFit(value, 0.0, (value, value), math.nan)
+        if f.size < 2:  # one point, no uncertainty given: exact
+            return ShearStrengthFit(value, 0.0, (value, value), math.nan)
+        # no uncertainty given: the points' scatter, the standard error of their mean and
+        # Student's t interval (the points disagree: not zero)
+        from scipy.stats import t as student
+
+        sd0 = scale * float(np.std(tau / scale, ddof=1)) / math.sqrt(f.size)
+        half = float(student.ppf(0.975, f.size - 1)) * sd0
+        return ShearStrengthFit(value, sd0, (value - half, value + half), math.nan)
     rng = np.random.default_rng(seed + 7919)
     draw = {}
     for k, v in common.items():

@@ -111,6 +111,10 @@ def propagate(
         value = float(np.asarray(fn(**x0)))
     except TypeError as exc:
         raise ValueError(f"fn does not take these inputs ({', '.join(x0)}): {exc}") from None
+    if not any(sd > 0 for sd in sds.values()):  # nothing drawn: exact, not round-off
+        return Estimate(
+            value, 0.0, (value, value), 0.0, (value, value), int(n_samples), 0, int(seed)
+        )
     rng = np.random.default_rng(seed)
     samples: dict[str, Any] = dict(x0)
     for k, sd in sds.items():

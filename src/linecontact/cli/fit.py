@@ -337,20 +337,48 @@ _ESTIMATE = (
 )
 
 
-def _table(args, record: dict[str, Any], params: dict[str, Any], title: str, units) -> Table:
+#: What a fit of one measurement with no standard uncertainty given says of its uncertainty.
+EXACT = "exact (one measurement, no uncertainty given)"
+
+
+class _Interval(list):
+    """A 95 % interval ``[lo, hi]``: the table prints it at six digits, JSON and CSV in full."""
+
+    def __str__(self) -> str:
+        return "[" + ", ".join("-" if x is None else f"{x:.6g}" for x in self) + "]"
+
+
+def _table(
+    args,
+    record: dict[str, Any],
+    params: dict[str, Any],
+    title: str,
+    units,
+    hide: tuple[str, ...] = (),
+) -> Table:
+    """One record as a table: its numbers and its 95 % intervals shown (not those in ``hide``).
+
+    The per-point lists and the linearised intervals are in the JSON and CSV only.
+    """
     cols = {}
+    show = []
     for k, v in record.items():
         if isinstance(v, (list, tuple, np.ndarray)):
             arr = np.empty(1, dtype=object)
-            arr[0] = [
+            items = [
                 None if (isinstance(x, float) and not math.isfinite(x)) else x
                 for x in np.asarray(v, dtype=object).tolist()
             ]
+            interval = "_ci95" in k and "linear" not in k and "per_point" not in k
+            arr[0] = _Interval(items) if interval else items
             cols[k] = arr
+            if interval and k not in hide:
+                show.append(k)
         else:
             cols[k] = np.asarray([v])
-    show = tuple(k for k, v in record.items() if not isinstance(v, (list, tuple, np.ndarray)))
-    return Table(cols, params, units, command_line(args), title, show=show)
+            if k not in hide:
+                show.append(k)
+    return Table(cols, params, units, command_line(args), title, show=tuple(show))
 
 
 # --------------------------------------------------------------------------------------------
@@ -450,6 +478,7 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
             model="maugis-dugdale",
         )
         title = f"fit of w{'' if args.z0 is not None else ' and z0'} to {n} pull-off forces"
+        hide: tuple[str, ...] = ("z0_sd", "z0_ci95") if args.z0 is not None else ()
         if args.plot:
             from ..figures.fit import draw_adhesion_fit
 
@@ -459,6 +488,10 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
                 raise write_failure(f"--plot {args.plot!r}", exc) from None
     else:
         rec, title = _adhesion_one(args, E, params)
+        hide = ()
+        if rec["uncertainty"] == EXACT:  # zero and [w, w] in the JSON: not columns to read
+            hide = ("work_of_adhesion_sd", "work_of_adhesion_sd_linear", "work_of_adhesion_ci95")
+            hide += ("samples_failed",)
     units = {
         "work_of_adhesion": "J/m^2",
         "work_of_adhesion_sd": "J/m^2",
@@ -482,7 +515,7 @@ def _cmd_adhesion(args: argparse.Namespace) -> int:
         "z0_ci95_linear": "m",
         "covariance": "J/m^2 and m: [[w w, w z0], [z0 w, z0 z0]]",
     }
-    emit(args, _table(args, rec, params, title, units))
+    emit(args, _table(args, rec, params, title, units, hide))
     return 0
 
 
@@ -506,6 +539,10 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
             "or --half-width [m] (with --load)"
         )
     common = {"radius": args.radius, "modulus": E, "equilibrium_spacing": args.z0}
+    flags = {"radius": "--radius-sd", "modulus": "--modulus-sd", "equilibrium_spacing": "--z0-sd"}
+    flags.update(half_width="--half-width-sd", pull_off_force="--pull-off-force-sd")
+    if args.pull_off_force_total is not None:
+        flags["pull_off_force"] = "--pull-off-force-total-sd"
     sds = {
         "radius": _one_sd(args, "radius", args.radius),
         "modulus": _one_sd(args, "modulus", E),
@@ -551,6 +588,7 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
     est = inv.propagate(fn, values, sds, n_samples=args.samples, seed=args.seed)
     rec: dict[str, Any] = {
         **_record(est, tuple((k, key.format("work_of_adhesion")) for k, key in _ESTIMATE)),
+        "uncertainty": _uncertainty([flags[k] for k, v in sds.items() if v], args.samples),
         "z0": args.z0,
     }
     if "pull_off_force" in values:
@@ -567,7 +605,16 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
         model="maugis-dugdale",
         **{f"{k}_sd": v for k, v in sds.items() if v},
     )
-    return rec, f"work of adhesion from {what} (Monte Carlo)"
+    return rec, f"work of adhesion from {what}" + (
+        "" if rec["uncertainty"] == EXACT else " (Monte Carlo)"
+    )
+
+
+def _uncertainty(given: list[str], samples: int) -> str:
+    """Where the uncertainty of one measurement comes from: the sds ``given`` (flags), or none."""
+    if not given:
+        return EXACT
+    return f"propagated from {', '.join(given)} (Monte Carlo, {samples} samples)"
 
 
 # --------------------------------------------------------------------------------------------
@@ -627,13 +674,14 @@ def _friction_from_width(args: argparse.Namespace) -> int:
             f"{args.half_width!r} m gives a shear strength of {tau:.3g} Pa, beyond any "
             f"material (above {_TAU_MAX:g} Pa): are they in N/m and m?"
         )
+    sds = dict(
+        friction_force=_one_sd(args, "friction_force", args.friction_force),
+        half_width=_one_sd(args, "half_width", args.half_width),
+    )
     est = inv.propagate(
         lambda friction_force, half_width: (friction_force - dw) / (2 * half_width),
         values,
-        dict(
-            friction_force=_one_sd(args, "friction_force", args.friction_force),
-            half_width=_one_sd(args, "half_width", args.half_width),
-        ),
+        sds,
         n_samples=args.samples,
         seed=args.seed,
     )
@@ -642,10 +690,13 @@ def _friction_from_width(args: argparse.Namespace) -> int:
             f"--friction-force {args.friction_force!r} N/m does not exceed the adhesion "
             f"hysteresis {dw:.6g} J/m^2: no positive shear strength"
         )
+    given = [f"--{k.replace('_', '-')}-sd" for k, v in sds.items() if v]
     rec = {
         **_record(est, tuple((k, key.format("tau0") + "_Pa") for k, key in _ESTIMATE[:4])),
+        "uncertainty": _uncertainty(given, args.samples),
         "half_width_m": args.half_width,
     }
+    hide = ("tau0_sd_Pa", "tau0_ci95_Pa", "tau0_sd_linear_Pa") if not given else ()
     params: dict[str, Any] = dict(
         friction_force_N_per_m=args.friction_force,
         half_width_m=args.half_width,
@@ -655,7 +706,7 @@ def _friction_from_width(args: argparse.Namespace) -> int:
         seed=args.seed,
     )
     title = "interfacial shear strength from a measured contact width"
-    emit(args, _table(args, rec, params, title, {"tau0_ci95_Pa": "Pa"}))
+    emit(args, _table(args, rec, params, title, {"tau0_ci95_Pa": "Pa"}, hide))
     return 0
 
 
@@ -778,6 +829,7 @@ def _cmd_friction(args: argparse.Namespace) -> int:
                 ("birge_ratio", "birge_ratio"),
             ),
         ),
+        "uncertainty": _friction_uncertainty(args, f_sd, n, (R_sd, E_sd, w_sd, z_sd)),
         "n_points": n,
         "normal_load_N_per_m": F.tolist(),
         "friction_force_N_per_m": f.tolist(),
@@ -817,6 +869,7 @@ def _cmd_friction(args: argparse.Namespace) -> int:
         except OSError as exc:
             raise write_failure(f"--plot {args.plot!r}", exc) from None
     units = {"n_points": "1", "birge_ratio": "1", "tau0_per_point_ci95_Pa": "Pa"}
+    hide = ("tau0_sd_Pa", "tau0_ci95_Pa", "birge_ratio") if rec["uncertainty"] == EXACT else ()
     emit(
         args,
         _table(
@@ -825,6 +878,27 @@ def _cmd_friction(args: argparse.Namespace) -> int:
             params,
             f"interfacial shear strength from {n} friction force(s) ({args.contact} contact)",
             units,
+            hide,
         ),
     )
     return 0
+
+
+def _friction_uncertainty(args, f_sd: np.ndarray, n: int, shared: tuple[float, ...]) -> str:
+    """Where the uncertainty of a fitted tau0 comes from: the sds given, the scatter, or none."""
+    given = [
+        flag
+        for flag, v in (
+            ("--friction-force-sd" if args.data is None else "the friction forces' sd", f_sd),
+            ("--radius-sd", shared[0]),
+            ("--modulus-sd", shared[1]),
+            ("--work-of-adhesion-sd", shared[2]),
+            ("--z0-sd", shared[3]),
+        )
+        if np.any(np.asarray(v) > 0)
+    ]
+    if given:
+        return _uncertainty(given, args.samples)
+    if n < 2:
+        return EXACT
+    return f"the scatter of the {n} points (no uncertainty given): Student's t"
