@@ -63,7 +63,7 @@ class NormalContact(Result):
     converged : ndarray or bool
         All tolerances met.
     stable : ndarray or bool
-        ``dF/da > 0``: the state is stable under load control.
+        :math:`dF/da > 0`: the state is stable under load control.
     state : ndarray of str or str
         ``"contact"``; ``"no-equilibrium"`` for a load no contact carries, reported by
         :func:`contact_for_load` with ``on_failure="report"`` (its values are NaN).
@@ -93,15 +93,15 @@ class NormalContact(Result):
 
     @property
     def c_over_a(self):
-        """Adhesive-zone to contact half-width ratio ``c/a`` (>= 1)."""
+        r"""Adhesive-zone to contact half-width ratio :math:`c/a` (:math:`\ge 1`)."""
         return np.asarray(self.c_over_R) / np.asarray(self.a_over_R)
 
     def pressure(self, x_over_R: ArrayLike) -> NDArray:
-        r"""Contact pressure ``p/E`` (compressive positive) at ``x/R``.
+        r"""Contact pressure :math:`p/E` (compressive positive) at :math:`x/R`.
 
         ``x_over_R`` has shape ``(m,)`` (or broadcasts against the points plus one trailing
         axis); the result has shape ``points.shape + (m,)``. Inside the contact it is the
-        solution of the method used; ``-sigma0/E`` in the adhesive zones; zero beyond.
+        solution of the method used; :math:`-\sigma_0/E` in the adhesive zones; zero beyond.
         """
         x = positions("x_over_R", x_over_R, np.shape(self.a_over_R))
         A = np.asarray(self.a_over_R, dtype=float)[..., None]
@@ -146,9 +146,9 @@ def _closed_form_from_u(u, kap, rho, ustar):
 
 
 def _stable(u, kap, bp):
-    """Stable under load control: wider than the load minimum, ``u <= u*`` (one definition).
+    r"""Stable under load control: wider than the load minimum, :math:`u \le u^*` (one definition).
 
-    ``dF/da > 0`` decides where its sign is clear; where the derivative is lost in
+    :math:`dF/da > 0` decides where its sign is clear; where the derivative is lost in
     round-off (near the minimum, or at widths so small that the load is flat to the last
     digit) ``u`` is compared with the ``u*`` of the minimum (:func:`_ustar`), as
     :func:`contact_for_load` and :func:`equilibria` do. Arrays or NumPy scalars.
@@ -308,7 +308,7 @@ def _newton_u(solver, A, s, rho, u0, maxiter=80, tol=1e-14):
 
 
 def _stable_at(u, kap):
-    """``dF/da > 0`` at ``u`` on the branch, over chunks of points (bounded memory)."""
+    """:math:`dF/da > 0` at ``u`` on the branch, over chunks of points (bounded memory)."""
     shape = np.shape(u)
     u = np.reshape(u, -1)
     kap = np.broadcast_to(kap, shape).reshape(-1)
@@ -388,7 +388,7 @@ def normal_contact(
         Radius over the range of the adhesive stress, ``> 0``.
     sigma0_over_E : array_like
         Adhesive (Dugdale) stress over the composite modulus, ``>= 0`` (0 gives Hertz);
-        ``kappa = (4/pi) sigma0_over_E sqrt(2 R_over_h)`` at most
+        :math:`\kappa = (4/\pi) (\sigma_0/E) \sqrt{2 R/h}` at most
         :data:`~linecontact.closed_forms.KAPPA_MAX` (1e12) here and in every normal and sliding
         solver.
     method : {"closed-form", "collocation"}
