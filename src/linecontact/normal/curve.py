@@ -24,15 +24,15 @@ NUM_MAX = 10**7
 class LoadCurve(Result):
     """The whole load curve: non-contact branch then the contact branch.
 
-    Arrays are ordered from the largest central gap (``g0 = h``, ``F = 0``) through
-    touch-down (``a = 0``, Eq. 14) to the largest contact width.
+    Arrays are ordered from the largest central gap (:math:`g_0 = h`, :math:`F = 0`) through
+    touch-down (:math:`a = 0`, Eq. 14) to the largest contact width.
 
     Attributes
     ----------
     branch : ndarray of str
         ``"non-contact"`` or ``"contact"``.
     central_gap_over_h, a_over_R, c_over_R, F_over_Eh : ndarray
-        The states (``a = 0`` off contact, ``g0 = 0`` in contact).
+        The states (:math:`a = 0` off contact, :math:`g_0 = 0` in contact).
     stable : ndarray of bool
         Stability under load control.
     turning_point : ndarray of bool
@@ -71,18 +71,18 @@ def load_curve(
     law: str = "dugdale",
     F_max_over_Eh: float | None = None,
 ) -> Any:
-    """Sample the load curve (scalar parameters), pull-off and turning point included.
+    r"""Sample the load curve (scalar parameters), pull-off and turning point included.
 
     Parameters
     ----------
     R_over_h, sigma0_over_E : float
         Parameters (scalars).
     a_max_over_R : float, optional
-        Largest contact half-width; default: three times the width at pull-off, at least
-        the Hertz width at ``F = 10 |F_pulloff|`` and at least ``0.02``, but at most the
-        small-strain limit :data:`~linecontact.closed_forms.A_OVER_R_SMALL_STRAIN` (or 1.5
-        times the width at pull-off, if that is larger), and never beyond ``a/R = 10``, the
-        end of the domain (where the pull-off is wider still, the curve stops short of it).
+        Largest contact half-width; default: three times the width at pull-off, at least the Hertz
+        width at :math:`F = 10\, |F_\text{pull-off}|` and at least ``0.02``, but at most the
+        small-strain limit :data:`~linecontact.closed_forms.A_OVER_R_SMALL_STRAIN` (or 1.5 times the
+        width at pull-off, if that is larger), and never beyond :math:`a/R = 10`, the end of the
+        domain (where the pull-off is wider still, the curve stops short of it).
     num, num_noncontact : int
         Points on the contact and the non-contact branches, each in ``[2, NUM_MAX]``
         (``NUM_MAX = 10**7``: a few hundred MB of samples; more is refused up front rather
@@ -97,7 +97,7 @@ def load_curve(
         law's; about a second, ``benchmarks/lennard_jones.py``).
     F_max_over_Eh : float, optional
         Under the Lennard-Jones law, the compressive load where the curve ends (default:
-        7.5 ``w sqrt(R/z0)``, three times the rigid cylinder's pull-off).
+        :math:`7.5\, w \sqrt{R/z_0}`, three times the rigid cylinder's pull-off).
 
     Returns
     -------
