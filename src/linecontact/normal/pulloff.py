@@ -48,7 +48,7 @@ class PullOff(Result):
     F_pulloff_over_Eh : ndarray or float
         The pull-off force over ``E h`` (negative).
     a_over_R_at_pulloff, c_over_R_at_pulloff : ndarray or float
-        Half-widths at pull-off, the state of the minimum (``a = 0``, the touching state,
+        Half-widths at pull-off, the state of the minimum (:math:`a = 0`, the touching state,
         when the minimum is Eq. 14 itself: no adhesion, or a width below the floating-point
         range).
     mechanism : ndarray of str or str
@@ -153,7 +153,7 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugda
     (:data:`SNAP_OFF_MIN_WIDTH_OVER_H`) or the force more than 1 % below Eq. (14)
     (:data:`ZERO_WIDTH_LOAD_RTOL`), ``"zero-width"`` otherwise: the contact then peels
     below the range of the surface forces and lets go at a load within 1 % of Eq. (14)
-    (at most 2e-3 of it for ``R/h >= 100``, 2e-5 for ``R/h >= 1e4``; see
+    (at most 2e-3 of it for :math:`R/h \ge 100`, 2e-5 for :math:`R/h \ge 10^4`; see
     ``docs/derivations.md``). The pull-off state is the minimum in either case, and it is
     the one the load curve marks (:func:`load_curve`, ``linecontact curve``).
 
@@ -167,9 +167,9 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugda
         Deprecated for ``"lennard-jones"`` (a ``DeprecationWarning``): use
         :func:`linecontact.laws.lennard_jones.pull_off`. The Dugdale step (default; also
         accepted explicitly, silently), or the Lennard-Jones law of Eq. (1) with the same work
-        of adhesion ``sigma0 h`` and peak tension ``sigma0``, solved self-consistently
-        (:mod:`linecontact.lennard_jones`; ``sigma0_over_E > 0``, and ``mu = 0.974^(3/2)
-        (sigma0/E) sqrt(R/h)`` within ``domain.DOMAIN["lj_mu"]``).
+        of adhesion :math:`\sigma_0 h` and peak tension :math:`\sigma_0`, solved self-consistently
+        (:mod:`linecontact.lennard_jones`; ``sigma0_over_E > 0``, and
+        :math:`\mu = 0.974^{3/2} (\sigma_0/E) \sqrt{R/h}` within ``domain.DOMAIN["lj_mu"]``).
 
     Returns
     -------
