@@ -20,16 +20,16 @@ from ..results import Result, as_output
 
 @dataclass(frozen=True)
 class NonContact(Result):
-    """Equilibrium without contact: the adhesive zone ``|x| < c`` only, central gap ``g0``.
+    r"""Equilibrium without contact: the adhesive zone :math:`|x| < c`, central gap ``g0``.
 
     Attributes
     ----------
     central_gap_over_h : ndarray or float
-        ``g0/h`` in ``[0, 1]``.
+        :math:`g_0/h` in :math:`[0, 1]`.
     c_over_R : ndarray or float
         Half-width of the adhesive zone.
     F_over_Eh : ndarray or float
-        ``-2 sigma0 c / (E h)``; Eq. (14) at ``g0 = 0``.
+        :math:`-2 \sigma_0 c / (E h)`; Eq. (14) at :math:`g_0 = 0`.
     stable : ndarray or bool
         Always False: unstable under load control (stable under displacement control).
     """
@@ -47,11 +47,11 @@ class NonContact(Result):
 def non_contact(
     central_gap_over_h: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike
 ) -> NonContact:
-    r"""The non-contact branch: attractive force versus the central gap ``g0`` in ``[0, h]``.
+    r"""The non-contact branch: attractive force vs the central gap :math:`g_0` in :math:`[0, h]`.
 
-    With a uniform tensile stress on :math:`|x| < c` the gap rises from ``g0`` at the centre
-    to ``h`` at ``c``: :math:`h - g_0 = c^2/(2R) + 4\ln 2\,\sigma_0 c/(\pi E)`, and
-    :math:`F = -2\sigma_0 c`. At ``g0 = 0`` this is Eq. (14).
+    With a uniform tensile stress on :math:`|x| < c` the gap rises from :math:`g_0` at the centre
+    to :math:`h` at :math:`c`: :math:`h - g_0 = c^2/(2R) + 4\ln 2\,\sigma_0 c/(\pi E)`, and
+    :math:`F = -2\sigma_0 c`. At :math:`g_0 = 0` this is Eq. (14).
     """
     g = check_array(
         "central_gap_over_h",
