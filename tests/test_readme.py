@@ -152,3 +152,18 @@ def test_the_tour_s_fit_prints_an_uncertainty_not_round_off(capsys):
     assert main(words) == 0
     table = capsys.readouterr().out
     assert "work_of_adhesion_ci95" in table and f"[{lo:.6g}, {hi:.6g}]" in table
+
+
+@pytest.mark.skipif(not README.exists(), reason="README.md is not beside the tests")
+def test_every_flag_the_tour_names_is_one_a_command_takes():
+    from linecontact.cli import build_parser
+
+    text = README.read_text(encoding="utf-8")
+    intro = text[text.index("## A tour in 60 seconds") :].split("```", 1)[0]
+    flags = set(re.findall(r"(--[a-z][\w-]*)", intro))
+    assert {"--work-of-adhesion-receding", "--h1", "--quiet"} <= flags
+    subparsers = build_parser().parse_args(["cite"])._subparsers.choices  # every command
+    known = {f for p in subparsers.values() for f in p._option_string_actions}
+    assert flags <= known, flags - known
+    # the receding work of adhesion is said for push: push takes it
+    assert "--work-of-adhesion-receding" in subparsers["push"]._option_string_actions
