@@ -79,7 +79,7 @@ class _History(Result):
         return np.where(idx < 0, idx + n, idx)
 
     def traction(self, x_over_a: ArrayLike, steps: ArrayLike | None = None) -> NDArray:
-        """Shear traction ``q/E`` at ``x/a`` after each step: shape ``(steps, m)``.
+        """Shear traction :math:`q/E` at :math:`x/a` after each step: shape ``(steps, m)``.
 
         ``steps`` (indices into the history, default all) selects the steps.
         """
@@ -87,7 +87,7 @@ class _History(Result):
         return self._scale * self._states.traction(x, self._steps(steps))
 
     def slip(self, x_over_a: ArrayLike, steps: ArrayLike | None = None) -> NDArray:
-        """Accumulated slip ``s/a`` at ``x/a`` after each step (relative to the centre).
+        """Accumulated slip :math:`s/a` at :math:`x/a` after each step (relative to the centre).
 
         Zero in the part of the stick zone that never slipped, constant in time wherever
         the surfaces stick, ``nan`` outside the contact; shape ``(steps, m)``.
@@ -96,7 +96,7 @@ class _History(Result):
         return self._scale * self._states.slip(x, self._steps(steps))
 
     def zones(self) -> list[list[tuple[float, float, str]]]:
-        """The zones of ``0 <= x/a <= 1`` after each step (the contact is symmetric).
+        r"""The zones of :math:`0 \le x/a \le 1` after each step (the contact is symmetric).
 
         Each zone is ``(from, to, kind)``: ``"stick"`` (never slipped), ``"locked+"`` /
         ``"locked-"`` (slipped earlier, last along ``+x`` / ``-x``, stuck now), ``"slip+"``
@@ -143,27 +143,27 @@ class TangentialHistory(_History):
     step : ndarray of int
         1, 2, ... (the state before step 1 is unloaded and has never slipped).
     T_over_Ea : ndarray
-        The load at the end of the step, ``T/(E a)`` (either sign).
+        The load at the end of the step, :math:`T/(E a)` (either sign).
     T_over_T_full_slip : ndarray
-        ``T/(2 a tau0)``.
+        :math:`T/(2 a \tau_0)`.
     c_over_a : ndarray
-        Half-width of the stick zone ``|x| < c`` at the end of the step (``1`` unloaded or at
+        Half-width of the stick zone :math:`|x| < c` at the end of the step (``1`` unloaded or at
         a turning point just reached from rest; ``nan`` when sliding).
     slip_direction : ndarray of int
         ``+1`` / ``-1``: the direction of the slip in the step's slip zones (the direction
         the load moved); ``0`` before any load.
     state : ndarray of str
         ``"stick"`` (unloaded), ``"stick-slip"`` or ``"sliding"`` (the load reached
-        ``2 a tau0`` on the virgin branch: gross sliding).
+        :math:`2 a \tau_0` on the virgin branch: gross sliding).
     memory : ndarray of int
         Turning points held in memory (the closed-form states; ``-1`` for the incremental
         solver, which keeps none).
     displacement_over_a : ndarray
-        ``D/a``, the cylinder's displacement relative to the substrate with the datum at
+        :math:`D/a`, the cylinder's displacement relative to the substrate with the datum at
         depth ``a`` (``nan`` when sliding; after a slide it excludes the sliding distance,
         which a force-controlled history does not determine).
     dissipation_over_Ea2 : ndarray
-        Energy dissipated by friction in the step, per unit length over ``E a^2`` (``nan``
+        Energy dissipated by friction in the step, per unit length over :math:`E a^2` (``nan``
         for a step that slides).
     tau0_over_E : float
     method : str
@@ -174,9 +174,9 @@ class TangentialHistory(_History):
         Largest residual of the stick condition at 16 points other than the collocation
         points, over ``tau0`` (0 for the closed form).
     residual_admissible : ndarray
-        Largest violation of the friction law: ``|q|`` above ``tau0`` in the stick zone, or
-        slip against the traction in the slip zone (over ``tau0`` and ``a tau0/E``; 0 for
-        the closed form).
+        Largest violation of the friction law: :math:`|q|` above :math:`\tau_0` in the stick zone,
+        or slip against the traction in the slip zone (over :math:`\tau_0` and :math:`a \tau_0/E`; 0
+        for the closed form).
     error_estimate : ndarray
         Chebyshev tail of the step's stick-zone solution over its largest coefficient.
     converged : ndarray of bool
@@ -191,8 +191,8 @@ class TangentialHistory(_History):
 class CoulombTangentialHistory(_History):
     r"""A tangential load history of a Hertz line contact with Coulomb friction ``mu``.
 
-    As :class:`TangentialHistory`, with ``T_over_T_full_slip = T_over_muF = T/(mu F)`` and the
-    stresses of the diagnostics over ``mu p0``.
+    As :class:`TangentialHistory`, with ``T_over_T_full_slip`` = ``T_over_muF`` = :math:`T/(\mu F)`
+    and the stresses of the diagnostics over :math:`\mu p_0`.
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("mu", "a_over_R", "method", "n_collocation")
@@ -349,8 +349,8 @@ def tangential_history(
     tau0_over_E : float
         Friction stress over the composite modulus, in ``[1e-12, 1]``.
     T_over_Ea : array_like, 1-D
-        The loads ``T/(E a)`` at the ends of the steps, either sign. Full slip is
-        ``|T| = 2 a tau0``: a load that reaches it slides (``state == "sliding"``); the
+        The loads :math:`T/(E a)` at the ends of the steps, either sign. Full slip is
+        :math:`|T| = 2 a \tau_0`: a load that reaches it slides (``state == "sliding"``); the
         history then continues from the full-slip load.
     method : {"closed-form", "incremental"}
         Masing memory rules with closed forms (exact), or the stick condition solved
@@ -417,9 +417,9 @@ def tangential_history_coulomb(
     mu : float
         Coefficient of friction.
     a_over_R : float
-        Hertz half-width over the radius (``p0 = E a/(2R)``, ``F = pi E a^2/(4R)``).
+        Hertz half-width over the radius (:math:`p_0 = E a/(2R)`, :math:`F = \pi E a^2/(4R)`).
     T_over_muF : array_like, 1-D
-        The loads over ``mu F``, either sign; ``|T| >= mu F`` slides.
+        The loads over :math:`\mu F`, either sign; :math:`|T| \ge \mu F` slides.
     method, n, tol, on_failure
         As in :func:`tangential_history`.
 
