@@ -23,8 +23,9 @@ from ._histories import _SLIDING, _STICK_SLIP, _T_LIMIT, _check_method
 from ._laws import _LAWS, _Law
 
 #: The friction work of the incremental solver differences displacements of order one over
-#: the slip annulus ``c < |x| < a`` at the peaks: its relative round-off grows like
-#: ``eps (1 - c/a)^(-3/2)`` (measured: 4e-7 at ``1 - c/a = 5e-7``, Coulomb friction).
+#: the slip annulus :math:`c < |x| < a` at the peaks: its relative round-off grows like
+#: :math:`\epsilon (1 - c/a)^{-3/2}` (measured: 4e-7 at :math:`1 - c/a = 5 \times 10^{-7}`, Coulomb
+#: friction).
 _EPS_LOSS = float(np.finfo(float).eps)
 
 
@@ -44,11 +45,11 @@ class _Cyclic(Result):
     method: str
 
     def loop(self, num: int = 101) -> dict[str, NDArray]:
-        r"""The steady hysteresis loop: ``T/(E a)`` and ``D/a`` from ``+T*`` down and back.
+        r"""The steady loop: :math:`T/(E a)`, :math:`D/a` from :math:`+T^*` down and back.
 
         Returns arrays of shape ``points.shape + (2 num - 1,)``: the unloading branch from
-        ``+T*`` to ``-T*`` then the reloading branch back to ``+T*`` (``nan`` for sliding
-        points). The datum of ``D`` is at depth ``a``.
+        :math:`+T^*` to :math:`-T^*` then the reloading branch back to :math:`+T^*` (``nan`` for
+        sliding points). The datum of ``D`` is at depth ``a``.
         """
         if isinstance(num, bool) or not isinstance(num, (int, np.integer)) or num < 2:
             raise ValueError(f"num must be an integer >= 2, got {num!r}")
@@ -77,17 +78,17 @@ class CyclicLoss(_Cyclic):
     Attributes
     ----------
     T_amplitude_over_Ea : ndarray or float
-        ``T*/(E a)``.
+        :math:`T^*/(E a)`.
     T_amplitude_over_T_full_slip : ndarray or float
-        ``r = T*/(2 a tau0)``.
+        :math:`r = T^*/(2 a \tau_0)`.
     W_over_Ea2 : ndarray or float
-        Energy dissipated per cycle per unit length over ``E a^2`` (steady loop):
+        Energy dissipated per cycle per unit length over :math:`E a^2` (steady loop):
         :math:`(32/\pi)(\tau_0/E)^2 h(r)`, :math:`h = [(1+r)\ln(1+r) + (1-r)\ln(1-r)
         - r^2]/2`; ``nan`` when sliding (the gross-sliding loss is not computed).
     c_over_a : ndarray or float
         Stick-zone half-width at the peaks, :math:`\sqrt{1 - r^2}` (``nan`` sliding).
     state : ndarray of str or str
-        ``"stick-slip"``, or ``"sliding"`` at or above full slip (``r >= 1``).
+        ``"stick-slip"``, or ``"sliding"`` at or above full slip (:math:`r \ge 1`).
     tau0_over_E : ndarray or float
     method : str
         ``"closed-form"`` or ``"incremental"`` (three steps of the incremental solver per
@@ -124,10 +125,11 @@ class CoulombCyclicLoss(_Cyclic):
 
 
 def _loss_roundoff(law: _Law, r: float) -> float:
-    """Relative round-off of the incremental solver's loss per cycle at the amplitude ``r``.
+    r"""Relative round-off of the incremental solver's loss per cycle at the amplitude ``r``.
 
-    ``eps (1 - c/a)^(-3/2)`` with ``c`` the stick zone at the peaks (``_EPS_LOSS``): an upper
-    bound of the measured error (Coulomb: ``3e-16 Q^(-3/2)``; constant stress: lower).
+    :math:`\epsilon (1 - c/a)^{-3/2}` with :math:`c` the stick zone at the peaks (``_EPS_LOSS``): an
+    upper bound of the measured error (Coulomb: :math:`3 \times 10^{-16} Q^{-3/2}`; constant stress:
+    lower).
     """
     # 1 - c/a without cancellation: 1 - c^2 = r^2 (constant stress) or r (Coulomb)
     u = r * r if law.name == "constant" else r
@@ -196,8 +198,8 @@ def cyclic_loss(
     tau0_over_E : array_like
         Friction stress over the composite modulus, in ``[1e-12, 1]``.
     T_amplitude_over_Ea : array_like
-        Amplitude ``T*/(E a)``, ``> 0``. At or above full slip (``2 tau0/E``) the point is
-        reported as ``state == "sliding"`` with ``W_over_Ea2 = nan``.
+        Amplitude :math:`T^*/(E a)`, ``> 0``. At or above full slip (:math:`2 \tau_0/E`) the point
+        is reported as ``state == "sliding"`` with ``W_over_Ea2 = nan``.
     method : {"closed-form", "incremental"}
         The closed form, or the friction work of the incremental solver over one cycle.
     n, tol
@@ -272,7 +274,7 @@ def cyclic_loss_coulomb(
     mu, a_over_R : array_like
         Coefficient of friction and Hertz half-width over the radius.
     T_amplitude_over_muF : array_like
-        ``Q = T*/(mu F)``, ``> 0`` (``>= 1`` slides).
+        :math:`Q = T^*/(\mu F)`, ``> 0`` (:math:`\ge 1` slides).
     method, n, tol
         As in :func:`cyclic_loss`.
 
