@@ -283,13 +283,13 @@ def sliding_pull_off(
 
     The load along the branch of sliding contacts has a minimum either inside the branch
     (``"snap-off"``) or as the contact width vanishes (``"zero-width"``), where the two
-    adhesive zones ``-c1 < x < c2`` of the touching state carry
-    ``F = -sigma0 (c1 + c2)``; the pull-off force is that minimum, and the rule for the
+    adhesive zones :math:`-c_1 < x < c_2` of the touching state carry
+    :math:`F = -\sigma_0 (c_1 + c_2)`; the pull-off force is that minimum, and the rule for the
     label is that of :func:`linecontact.pull_off` (a snap-off lets go from a contact
     half-width of at least the shorter adhesion range, :data:`SNAP_OFF_MIN_WIDTH_OVER_H`,
     or more than 1 % below the zero-width load,
     :data:`linecontact.normal.ZERO_WIDTH_LOAD_RTOL`).
-    At ``h1 = h2`` this is the pull-off of :func:`linecontact.pull_off`.
+    At :math:`h_1 = h_2` this is the pull-off of :func:`linecontact.pull_off`.
 
     Parameters
     ----------
