@@ -31,11 +31,11 @@ from .pulloff import _LAB_DEEP, _phi_at, _pulloff_flat
 
 
 def _pulloff_end(r, s, kap):
-    """The load-free part of :func:`_lower_end`: ``(lab_lo, phi_po)`` of the adhesive points.
+    r"""The load-free part of :func:`_lower_end`: ``(lab_lo, phi_po)`` of the adhesive points.
 
     The lower end (ln abar) of the stable branch and its load (the pull-off load); without
     adhesion ``_LAB_DEEP`` and 0 (:func:`_lower_end` then starts below Hertz's width). Flat
-    arrays or NumPy scalars; depends on ``(R/h2, h1/h2, sigma0/E)`` only, so a caller that
+    arrays or NumPy scalars; depends on :math:`(R/h_2, h_1/h_2, \sigma_0/E)` only, so a caller that
     solves several loads at the same points computes it once (:func:`_sliding_ends`).
     """
     adh = s > 0
@@ -210,11 +210,11 @@ def sliding_contact_for_load(
 ) -> SlidingContact:
     r"""The steadily sliding contact carrying a given normal load (stable branch).
 
-    Solves ``F(a) = F`` for the contact half-width on the branch with ``dF/da > 0`` (stable
+    Solves :math:`F(a) = F` for the contact half-width on the branch with :math:`dF/da > 0` (stable
     under load control) with the closed form, then computes the state at that width with
-    ``method``; with ``tau0_over_E`` the friction force ``2 a tau0`` is reported as
+    ``method``; with ``tau0_over_E`` the friction force :math:`2 a \tau_0` is reported as
     ``T_over_Eh2``. A load within 1e-12 of the zero-width load, where the stable branch
-    starts at zero width, gives the zero-width state at the domain's end ``a/R = 1e-20``
+    starts at zero width, gives the zero-width state at the domain's end :math:`a/R = 10^{-20}`
     (every narrower width carries it to round-off), by the closed form under either method
     (``n_collocation`` 0; docs/sliding.md, "Loads at the zero-width end").
 
