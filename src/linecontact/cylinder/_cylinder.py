@@ -56,7 +56,7 @@ if TYPE_CHECKING:  # imported where used: the Lennard-Jones solver needs scipy
 
 @dataclass(frozen=True)
 class Cylinder(_Problems):
-    """A cylinder of radius ``R`` on a substrate, with Maugis--Dugdale adhesion.
+    r"""A cylinder of radius ``R`` on a substrate, with Maugis--Dugdale adhesion.
 
     Build it with :meth:`from_materials` or :meth:`from_modulus`. Each problem is a method:
     :meth:`contact`, :meth:`pull_off`, :meth:`load_curve`, :meth:`sliding`,
@@ -74,7 +74,7 @@ class Cylinder(_Problems):
     adhesion_range : float
         ``h`` [m].
     dundurs_beta : float
-        Dundurs' ``beta = -B/A`` (0 when only the composite modulus was given).
+        Dundurs' :math:`\beta = -B/A` (0 when only the composite modulus was given).
 
     Examples
     --------
@@ -282,17 +282,17 @@ class Cylinder(_Problems):
     # groups ------------------------------------------------------------------------------
     @property
     def R_over_h(self) -> float:
-        """``R/h``."""
+        """:math:`R/h`."""
         return self.radius / self.adhesion_range
 
     @property
     def sigma0_over_E(self) -> float:
-        """``sigma0/E``."""
+        r""":math:`\sigma_0/E`."""
         return self.cohesive_stress / self.modulus
 
     @property
     def work_of_adhesion(self) -> float:
-        """``w = sigma0 h`` [J/m^2]."""
+        r""":math:`w = \sigma_0 h` [J/m^2]."""
         return self.cohesive_stress * self.adhesion_range
 
     @property
@@ -306,11 +306,11 @@ class Cylinder(_Problems):
         return float(_cf.kappa(self.R_over_h, self.sigma0_over_E))
 
     def _check_lennard_jones(self, pull_off: bool = False) -> None:
-        """Refuse, in SI terms, a cylinder outside the domain of the Lennard-Jones solver.
+        r"""Refuse, in SI terms, a cylinder outside the domain of the Lennard-Jones solver.
 
-        The solver's group is the Maugis (Tabor) parameter ``mu = w R^(1/2) / (E z0^(3/2))``
-        with ``w = sigma0 h`` and ``z0 = 16 h/(9 sqrt 3)``; the message gives its value for
-        this cylinder, the inputs as they were given, and what would bring it in.
+        The solver's group is the Maugis (Tabor) parameter :math:`\mu = w R^{1/2} / (E z_0^{3/2})`
+        with :math:`w = \sigma_0 h` and :math:`z_0 = 16 h/(9 \sqrt 3)`; the message gives its value
+        for this cylinder, the inputs as they were given, and what would bring it in.
         """
         hi = _domain.DOMAIN["lj_mu"][2]
         R, E = self.radius, self.modulus
@@ -572,11 +572,11 @@ class Cylinder(_Problems):
     def lennard_jones_contact(
         self, *, load: ArrayLike, on_failure: FailurePolicy = RAISE
     ) -> CylinderLennardJonesContact:
-        """The contact carrying ``load`` [N/m] under the Lennard-Jones law of Eq. (1).
+        r"""The contact carrying ``load`` [N/m] under the Lennard-Jones law of Eq. (1).
 
         Solved self-consistently (:func:`linecontact.laws.lennard_jones.contact_for_load`),
-        the stable branch, with the cylinder's work of adhesion ``w = sigma0 h`` and
-        ``z0 = 16 h/(9 sqrt 3)`` (for a cylinder built from ``(w, z0)`` these are the ``w``
+        the stable branch, with the cylinder's work of adhesion :math:`w = \sigma_0 h` and
+        :math:`z_0 = 16 h/(9 \sqrt 3)` (for a cylinder built from ``(w, z0)`` these are the ``w``
         and ``z0`` given, as the Maugis conversion of :func:`~linecontact.adhesion_from_work`
         is undone). A load below the pull-off force raises
         :class:`~linecontact.errors.NoEquilibriumError`, or with ``on_failure="report"``
