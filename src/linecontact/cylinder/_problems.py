@@ -279,11 +279,11 @@ def _steady_rolling(
     on_failure: FailurePolicy = RAISE,
     **deprecated: Any,
 ) -> CylinderTangential:
-    """Steady rolling of a driving :class:`~linecontact.cylinder.Cylinder` (SI units).
+    r"""Steady rolling of a driving :class:`~linecontact.cylinder.Cylinder` (SI units).
 
     Parameters as in :meth:`Cylinder.sliding_initiation`, with ``d_over_a`` in ``(-1, 1)``
     the start of the leading-edge stick zone; ``tangential_load`` is the tractive force
-    [N/m]. The result's ``creep_ratio`` is ``(V - omega R)/V`` (negative).
+    [N/m]. The result's ``creep_ratio`` is :math:`(V - \omega R)/V` (negative).
 
     Examples
     --------
@@ -329,12 +329,12 @@ def _pushed_fibre(
     tip_friction: ArrayLike | None = None,
     length: float | None = None,
 ) -> CylinderPush:
-    """Will a pushed :class:`~linecontact.cylinder.Cylinder` stay, roll or slide (SI units).
+    r"""Will a pushed :class:`~linecontact.cylinder.Cylinder` stay, roll or slide (SI units).
 
     The cylinder's adhesion is the advancing one (its ``cohesive_stress`` and
     ``adhesion_range`` ``h2``, e.g. from the advancing work of adhesion); the receding edge
     has the same ``sigma0`` and the range ``h1``, given as ``receding_range`` [m] or as
-    ``receding_work_of_adhesion`` [J/m^2] (``h1 = w1 / sigma0``), ``h1 >= h2``.
+    ``receding_work_of_adhesion`` [J/m^2] (:math:`h_1 = w_1 / \sigma_0`), :math:`h_1 \ge h_2`.
 
     Parameters
     ----------
