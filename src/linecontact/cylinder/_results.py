@@ -246,15 +246,15 @@ class CylinderLennardJonesLoadCurve(_PerLength, Result):
 
 @dataclass(frozen=True)
 class CylinderSliding(_PerLength, Result):
-    """Steady sliding of a :class:`~linecontact.cylinder.Cylinder` in SI units (Eqs 18-22).
+    r"""Steady sliding of a :class:`~linecontact.cylinder.Cylinder` in SI units (Eqs 18-22).
 
     Attributes
     ----------
     contact_half_width : ndarray or float
         ``a`` [m].
     trailing_zone_end, leading_zone_end : ndarray or float
-        ``c1`` and ``c2`` [m]: the ends of the trailing (``-c1 < x < -a``) and leading
-        (``a < x < c2``) adhesive zones from the contact centre.
+        ``c1`` and ``c2`` [m]: the ends of the trailing (:math:`-c_1 < x < -a`) and leading
+        (:math:`a < x < c_2`) adhesive zones from the contact centre.
     eccentricity : ndarray or float
         ``e`` [m]: the cylinder's axis relative to the contact centre.
     load : ndarray or float
@@ -262,16 +262,16 @@ class CylinderSliding(_PerLength, Result):
     moment, moment_about_axis : ndarray or float
         ``M`` [N m/m] about the contact centre (clockwise positive), and about the axis.
     friction_force : ndarray or float
-        ``T = 2 a tau0`` [N/m] (nan without a friction stress).
+        :math:`T = 2 a \tau_0` [N/m] (nan without a friction stress).
     receding_range : float
         ``h1`` [m], the trailing edge's range.
     converged, stable : ndarray or bool
     state : ndarray of str or str
         ``"contact"``, or ``"no-equilibrium"`` (reported with ``on_failure="report"``).
     nondimensional : SlidingContact
-        The underlying result (in ``h = h2``) with its diagnostics.
+        The underlying result (in :math:`h = h_2`) with its diagnostics.
     scales : Scales
-        The cylinder's scales (``h = h2``), for :meth:`total`.
+        The cylinder's scales (:math:`h = h_2`), for :meth:`total`.
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("receding_range",)
@@ -295,7 +295,7 @@ class CylinderSliding(_PerLength, Result):
 
 @dataclass(frozen=True)
 class CylinderTangential(Result):
-    """A tangential state of a :class:`~linecontact.cylinder.Cylinder`, in SI units.
+    r"""A tangential state of a :class:`~linecontact.cylinder.Cylinder`, in SI units.
 
     Attributes
     ----------
@@ -308,14 +308,14 @@ class CylinderTangential(Result):
     contact_half_width : ndarray or float
         ``a`` [m], from the normal problem (Maugis--Dugdale; Hertz for Coulomb friction).
     stick_zone_end : ndarray or float
-        ``d`` [m]: the half-width of the central stick zone ``|x| < d`` (initiation), or the
-        start of the leading-edge stick zone ``d < x < a`` (rolling).
+        ``d`` [m]: the half-width of the central stick zone :math:`|x| < d` (initiation), or the
+        start of the leading-edge stick zone :math:`d < x < a` (rolling).
     tangential_load : ndarray or float
         ``T`` [N/m].
     full_slip_load : ndarray or float
-        ``2 a tau0`` or ``mu F`` [N/m].
+        :math:`2 a \tau_0` or :math:`\mu F` [N/m].
     creep_ratio : ndarray or float or None
-        ``(V - omega R)/V`` for rolling (negative: driving cylinder); None for initiation.
+        :math:`(V - \omega R)/V` for rolling (negative: driving cylinder); None for initiation.
     state : ndarray of str or str
         ``"stick"``, ``"stick-slip"`` or ``"sliding"``.
     nondimensional : result
@@ -341,7 +341,7 @@ class CylinderTangential(Result):
 
 @dataclass(frozen=True)
 class CylinderPush(_PerLength, Result):
-    """A pushed :class:`~linecontact.cylinder.Cylinder` (``docs/push.md``), in SI units.
+    r"""A pushed :class:`~linecontact.cylinder.Cylinder` (``docs/push.md``), in SI units.
 
     Attributes
     ----------
@@ -352,14 +352,15 @@ class CylinderPush(_PerLength, Result):
     rest_half_width, slide_half_width : ndarray or float
         ``a_rest`` and ``a_slide`` [m].
     rolling_resistance, sliding_resistance, slip_onset : ndarray or float
-        ``Q_roll = R dw / H``, ``Q_slide = 2 a_slide tau0 + dw`` and ``2 a_rest tau0``
-        [N/m] (horizontal pushes).
+        :math:`Q_\text{roll} = R\,\Delta w / H`,
+        :math:`Q_\text{slide} = 2 a_\text{slide} \tau_0 + \Delta w` and
+        :math:`2 a_\text{rest} \tau_0` [N/m] (horizontal pushes).
     critical_height : ndarray or float
-        ``H* = R dw / Q_slide`` [m].
+        :math:`H^* = R\,\Delta w / Q_\text{slide}` [m].
     first_motion : ndarray of str or str
         ``"roll"``, ``"slide"``, ``"roll+slide"`` or ``"lift-off"``.
     creep_ratio : ndarray or float
-        ``(V - omega R)/V`` while rolling.
+        :math:`(V - \omega R)/V` while rolling.
     state : ndarray of str or str
         Under the push given (``""`` without one).
     length : float or None
@@ -452,13 +453,13 @@ class CylinderTangentialHistory(Result):
 
 @dataclass(frozen=True)
 class CylinderCyclicLoss(Result):
-    """Cyclic tangential loading of a :class:`~linecontact.cylinder.Cylinder`, in SI units.
+    r"""Cyclic tangential loading of a :class:`~linecontact.cylinder.Cylinder`, in SI units.
 
     Attributes
     ----------
     friction : str
     normal_load, contact_half_width, full_slip_load : float
-        ``F`` [N/m], ``a`` [m], ``2 a tau0`` or ``mu F`` [N/m].
+        ``F`` [N/m], ``a`` [m], :math:`2 a \tau_0` or :math:`\mu F` [N/m].
     amplitude : ndarray or float
         ``T*`` [N/m].
     energy_per_cycle : ndarray or float
