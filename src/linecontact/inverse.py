@@ -3,17 +3,18 @@ r"""From measurements to properties: work of adhesion, range and shear strength,
 The inverse problems of the SI layer, each with the forward model it inverts:
 
 * :func:`work_of_adhesion_from_pull_off`: the Maugis--Dugdale pull-off force of a cylinder
-  (:func:`pull_off_force`, the closed form of :func:`linecontact.pull_off` in SI units, with
-  the adhesion given as ``(w, z0)``: ``sigma0 = 16 w/(9 sqrt(3) z0)``, ``h = w/sigma0``),
+  (:func:`pull_off_force`, the closed form of :func:`linecontact.pull_off` in SI units, with the
+  adhesion given as ``(w, z0)``: :math:`\sigma_0 = 16 w/(9 \sqrt{3} z_0)`, :math:`h = w/\sigma_0`),
   solved for ``w`` at a known radius, modulus and range;
 * :func:`fit_pull_off`: ``(w, z0)`` jointly, or ``w`` alone at a fixed ``z0``, from pull-off
   forces at several radii, by weighted least squares (:func:`scipy.optimize.least_squares`)
   with the covariance, the correlation and a parametric-bootstrap interval;
 * :func:`work_of_adhesion_from_width`: the contact half-width at a normal load
   (:func:`linecontact.contact_for_load`) solved for ``w``;
-* :func:`shear_strength_from_friction`: ``tau0 = (f - dw) / (2 a)`` with ``a`` the
+* :func:`shear_strength_from_friction`: :math:`\tau_0 = (f - \Delta w) / (2 a)` with ``a`` the
   Maugis--Dugdale contact at the normal load (or the steady-sliding contact when an adhesion
-  hysteresis ``dw = w_receding - w_advancing`` is given), or JKR, DMT or Hertz when asked;
+  hysteresis :math:`\Delta w = w_\text{receding} - w_\text{advancing}` is given), or JKR, DMT or
+  Hertz when asked;
 * :func:`propagate`: the standard uncertainty and the 95 % interval of any of these by Monte
   Carlo (seeded, vectorised through the solvers), with the linearised estimate beside it
   (:mod:`linecontact.uncertainty`, re-exported here).
@@ -212,10 +213,10 @@ def _stable_width(F, R, E, w, z0, *, too_wide=None, pulled_off=np.nan):
 
 
 def _check_load(name: str, F: NDArray, E: NDArray, z0: NDArray, key: str = "F_over_Eh") -> None:
-    """Refuse normal loads [N/m] beyond the solvers' domain, said in N/m (not as a group).
+    r"""Refuse normal loads [N/m] beyond the solvers' domain, said in N/m (not as a group).
 
-    The unit of the loads is the modulus times the adhesion range ``h = z0/S`` of the Maugis
-    convention (0.974 ``z0``).
+    The unit of the loads is the modulus times the adhesion range :math:`h = z_0/S` of the Maugis
+    convention (:math:`0.974\, z_0`).
     """
     from .domain import check_si
 
@@ -249,14 +250,14 @@ def shear_strength_from_friction(
 ) -> NDArray:
     r"""Interfacial shear strength ``tau0`` [Pa] from a sliding friction force per length.
 
-    ``tau0 = (f - dw) / (2 a)``: the friction stress times the contact width carries the
-    sliding force, less the adhesion hysteresis ``dw = w_receding - w_advancing`` (the work
-    of opening the trailing edge, ``docs/push.md``). ``a`` comes from the contact at the
-    normal load:
+    :math:`\tau_0 = (f - \Delta w) / (2 a)`: the friction stress times the contact width carries
+    the sliding force, less the adhesion hysteresis
+    :math:`\Delta w = w_\text{receding} - w_\text{advancing}` (the work of opening the trailing
+    edge, ``docs/push.md``). ``a`` comes from the contact at the normal load:
 
     * ``"maugis-dugdale"`` (default): the stable Maugis--Dugdale contact
       (:func:`linecontact.contact_for_load`), or with ``receding_work_of_adhesion`` the
-      steady-sliding contact with the receding range ``h1 = w_receding/sigma0``
+      steady-sliding contact with the receding range :math:`h_1 = w_\text{receding}/\sigma_0`
       (:func:`linecontact.sliding_contact_for_load`, ``work_of_adhesion`` the advancing one);
     * ``"jkr"``, ``"dmt"``, ``"hertz"``: the simple models, only when asked (JKR's line
       contact; Hertz at the load plus the rigid-cylinder adhesive force for DMT; Hertz).
