@@ -12,15 +12,15 @@ Materials (Eq. 7 of the paper): body 1 is the cylinder, body 2 the substrate,
     A = \frac{4(1-\nu_1)}{G_1} + \frac{4(1-\nu_2)}{G_2} = \frac{8}{E},\quad
     B = \frac{2-4\nu_1}{G_1} - \frac{2-4\nu_2}{G_2}.
 
-The solvers assume the uncoupled case ``B = 0``; :func:`dundurs_beta` gives Dundurs' second
-parameter ``beta = -B/A`` and a :class:`~linecontact.errors.CouplingWarning` is issued when
-``|beta| > BETA_WARN``.
+The solvers assume the uncoupled case :math:`B = 0`; :func:`dundurs_beta` gives Dundurs' second
+parameter :math:`\beta = -B/A` and a :class:`~linecontact.errors.CouplingWarning` is issued when
+:math:`|\beta|` exceeds ``BETA_WARN``.
 
 Adhesion is given either as the Dugdale stress and range ``(sigma0, h)`` or as the work of
 adhesion and equilibrium spacing ``(w, z0)`` of a Lennard-Jones surface potential (Eq. 1).
 The Maugis convention takes ``sigma0`` as the theoretical strength of that potential,
-:math:`\sigma_0 = 16 w/(9\sqrt{3} z_0)`, and ``h = w/sigma0``
-:math:`= 9\sqrt{3} z_0/16 \approx 0.974 z_0` (the paper's "0.97 z0").
+:math:`\sigma_0 = 16 w/(9\sqrt{3} z_0)`, and
+:math:`h = w/\sigma_0 = 9\sqrt{3} z_0/16 \approx 0.974 z_0` (the paper's "0.97 z0").
 
 References
 ----------
@@ -52,12 +52,13 @@ __all__ = [
 #: |beta| = |B/A| above which a CouplingWarning is issued.
 BETA_WARN = 0.05
 
-#: The Maugis strength ``S = 16/(9 sqrt 3)`` (1.0264): the peak tension of the Lennard-Jones
-#: law (Eq. 1) over ``w/z0``, the Dugdale stress of the Maugis convention ``sigma0 = S w/z0``.
+#: The Maugis strength :math:`S = 16/(9 \sqrt 3)` (1.0264): the peak tension of the Lennard-Jones
+#: law (Eq. 1) over :math:`w/z_0`, the Dugdale stress of the Maugis convention
+#: :math:`\sigma_0 = S w/z_0`.
 #: The one home of this constant (``lennard_jones.MAUGIS_MATCH_SIGMA0``, ``inverse.S_LJ``
 #: are aliases).
 MAUGIS_STRENGTH = 16.0 / (9.0 * math.sqrt(3.0))
-#: ``h/z0 = 1/S = 9 sqrt(3)/16`` (0.974): the Dugdale range of the Maugis convention.
+#: :math:`h/z_0 = 1/S = 9 \sqrt{3}/16` (0.974): the Dugdale range of the Maugis convention.
 MAUGIS_H_OVER_Z0 = 1.0 / MAUGIS_STRENGTH
 
 
@@ -88,7 +89,7 @@ def _moduli(
 
 
 def composite_modulus(E1: ArrayLike, nu1: ArrayLike, E2: ArrayLike, nu2: ArrayLike):
-    """Plane-strain composite modulus ``E`` [Pa], Eq. (7); ``E2 = inf`` for a rigid substrate.
+    r"""Plane-strain composite modulus ``E`` [Pa], Eq. (7); :math:`E_2 = \infty`: a rigid substrate.
 
     Examples
     --------
@@ -124,7 +125,7 @@ def dundurs_beta(E1: ArrayLike, nu1: ArrayLike, E2: ArrayLike, nu2: ArrayLike):
 
 
 def adhesion_from_work(work_of_adhesion: ArrayLike, equilibrium_spacing: ArrayLike):
-    r"""Dugdale stress and range ``(sigma0 [Pa], h [m])`` from ``(w [J/m^2], z0 [m])``.
+    r"""Dugdale stress and range :math:`(\sigma_0, h)` [Pa, m] from :math:`(w, z_0)` [J/m^2, m].
 
     Maugis convention: :math:`\sigma_0 = 16w/(9\sqrt3 z_0)` (the strength of the
     Lennard-Jones law, Eq. 1) and :math:`h = w/\sigma_0`.
