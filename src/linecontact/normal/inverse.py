@@ -134,8 +134,8 @@ def contact_for_load(
     R_over_h, sigma0_over_E : array_like
         As in :func:`normal_contact`.
     branch : {"stable", "unstable"}
-        ``"stable"``: the state with ``dF/da > 0`` (exists for ``F >= F_pulloff``);
-        ``"unstable"``: the narrower state with ``dF/da < 0`` (exists only between the load
+        ``"stable"``: the state with :math:`dF/da > 0` (exists for :math:`F \ge F_\text{pull-off}`);
+        ``"unstable"``: the narrower state with :math:`dF/da < 0` (exists only between the load
         minimum and Eq. 14).
     on_failure : {"raise", "report"}
         For a load that no contact of the branch carries: raise (``"raise"``, default), or
@@ -149,7 +149,7 @@ def contact_for_load(
         work of adhesion and peak tension, solved self-consistently
         (:mod:`linecontact.lennard_jones_groups`; ``sigma0_over_E > 0``, ``mu`` within its
         domain as in :func:`pull_off`, loads up to
-        :data:`~linecontact.lennard_jones_groups.LJ_LOAD_MAX` ``w sqrt(R/z0)``, the stable
+        :data:`~linecontact.lennard_jones_groups.LJ_LOAD_MAX` :math:`w \sqrt{R/z_0}`, the stable
         branch only). Each point costs the curve up to its load: a few tenths of a second.
 
     Returns
@@ -316,13 +316,13 @@ _TOUCHDOWN_WIDTH = 1e-6
 
 
 def equilibria(F_over_Eh: float, R_over_h: float, sigma0_over_E: float) -> tuple[Equilibrium, ...]:
-    """Every equilibrium state carrying the load ``F_over_Eh`` (scalar parameters).
+    r"""Every equilibrium state carrying the load ``F_over_Eh`` (scalar parameters).
 
-    Stable contact (``F >= F_pulloff``), unstable narrow contact (between the load minimum and
-    Eq. 14), and the non-contact state (between Eq. 14 and 0). Empty below the pull-off
-    force; the caller says so. A contact has a positive width: at the zero-width load
-    (Eq. 14, within round-off) the narrow end of the contact branch is the touch-down
-    state, listed once, as the non-contact state (``a = 0``, gap 0).
+    Stable contact (:math:`F \ge F_\text{pull-off}`), unstable narrow contact (between the load
+    minimum and Eq. 14), and the non-contact state (between Eq. 14 and 0). Empty below the pull-off
+    force; the caller says so. A contact has a positive width: at the zero-width load (Eq. 14,
+    within round-off) the narrow end of the contact branch is the touch-down state, listed once, as
+    the non-contact state (:math:`a = 0`, gap 0).
     """
     F = _domain.scalar("F_over_Eh", F_over_Eh)
     rho = _domain.scalar("R_over_h", R_over_h)
