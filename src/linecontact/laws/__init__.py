@@ -1,4 +1,4 @@
-"""Adhesion laws, one module each, with the same functions in the paper's groups.
+r"""Adhesion laws, one module each, with the same functions in the paper's groups.
 
 A law is a module, not a flag: each module below has ``pull_off(R_over_h, sigma0_over_E)``,
 ``contact_for_load(F_over_Eh, R_over_h, sigma0_over_E, ...)`` and
@@ -8,8 +8,8 @@ returning its own result type (loads over ``E h``, widths over ``R``, gaps over 
 - :mod:`linecontact.laws.dugdale` -- the Maugis--Dugdale step of the paper (the functions of
   :mod:`linecontact.normal`, the default of the whole library);
 - :mod:`linecontact.laws.lennard_jones` -- the Lennard-Jones law of Eq. (1), solved
-  self-consistently, with the Dugdale step's work of adhesion ``w = sigma0 h`` and peak
-  tension ``sigma0`` (the Maugis matching).
+  self-consistently, with the Dugdale step's work of adhesion :math:`w = \sigma_0 h` and
+  peak tension :math:`\sigma_0` (the Maugis matching).
 
 They replace the deprecated ``law="lennard-jones"`` of :func:`linecontact.pull_off`,
 :func:`linecontact.contact_for_load` and :func:`linecontact.load_curve`.
