@@ -83,11 +83,11 @@ class _Problems:
         on_failure: FailurePolicy = RAISE,
         **deprecated: Any,
     ) -> CylinderTangential:
-        """Steady rolling of a driving cylinder under ``normal_load`` [N/m] (Eqs 23-29).
+        r"""Steady rolling of a driving cylinder under ``normal_load`` [N/m] (Eqs 23-29).
 
         The arguments of :meth:`sliding_initiation`, with ``d_over_a`` in ``(-1, 1)`` the start
         of the leading-edge stick zone and ``tangential_load`` the tractive force [N/m]; the
-        result's ``creep_ratio`` is ``(V - omega R)/V`` (negative).
+        result's ``creep_ratio`` is :math:`(V - \omega R)/V` (negative).
         """
         return _steady_rolling(
             self,
@@ -113,10 +113,10 @@ class _Problems:
         tip_friction: ArrayLike | None = None,
         length: float | None = None,
     ) -> CylinderPush:
-        """Will the cylinder, pushed at ``height`` [m], stay, roll or slide (``docs/push.md``).
+        r"""Will the cylinder, pushed at ``height`` [m], stay, roll or slide (``docs/push.md``).
 
         The cylinder's adhesion is the advancing one (range ``h2``); the receding edge's range
-        ``h1 >= h2`` is ``receding_range`` [m] or ``receding_work_of_adhesion`` [J/m^2]
+        :math:`h_1 \ge h_2` is ``receding_range`` [m] or ``receding_work_of_adhesion`` [J/m^2]
         (exactly one); ``friction_stress`` ``tau0`` [Pa], ``normal_load`` [N/m], a ``push``
         [N/m] whose state is wanted, a tip's ``tip_friction``, the fibre's ``length`` [m].
 
@@ -205,7 +205,7 @@ class _Problems:
         ``receding_range`` (or give ``h1_over_h2``); ``contact_half_width`` [m] or ``load``
         [N/m]; ``friction_stress`` ``tau0`` [Pa] adds the friction force. Returns the SI
         :class:`CylinderSliding` (its ``nondimensional`` the
-        :class:`~linecontact.sliding.SlidingContact`, in ``h = h2``).
+        :class:`~linecontact.sliding.SlidingContact`, in :math:`h = h_2`).
         """
         return _sliding(
             self,
