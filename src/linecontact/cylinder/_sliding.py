@@ -25,7 +25,7 @@ def _sliding(
     method: Literal["closed-form", "collocation"] = "collocation",
     on_failure: FailurePolicy = RAISE,
 ) -> CylinderSliding:
-    """Steady sliding of ``cylinder`` (:func:`linecontact.sliding.sliding_contact`) in SI units.
+    r"""Steady sliding of ``cylinder`` (:func:`linecontact.sliding.sliding_contact`) in SI units.
 
     The cylinder's adhesion is the leading (advancing) edge's: ``sigma0`` and the range
     ``h2``; the trailing (receding) edge has the same ``sigma0`` and the range ``h1``.
@@ -39,7 +39,7 @@ def _sliding(
         ``a`` [m]; or give ``load`` [N/m], compressive positive (exactly one): the stable
         sliding contact that carries it (:func:`~linecontact.sliding.sliding_contact_for_load`).
     friction_stress : float, optional
-        ``tau0`` [Pa], ``>= 0``: adds the friction force ``2 a tau0``.
+        ``tau0`` [Pa], ``>= 0``: adds the friction force :math:`2 a \tau_0`.
     method, on_failure
         As in :func:`~linecontact.sliding.sliding_contact`.
 
@@ -47,7 +47,7 @@ def _sliding(
     -------
     CylinderSliding
         The SI result (:func:`linecontact.units.to_si` of the nondimensional
-        :class:`~linecontact.sliding.SlidingContact`, in ``h = h2``, its ``nondimensional``);
+        :class:`~linecontact.sliding.SlidingContact`, in :math:`h = h_2`, its ``nondimensional``);
         ``receding_range`` is the trailing range used, ``total(length)`` the totals over a
         fibre.
     """
@@ -99,7 +99,7 @@ def _sliding(
 
 
 def _si(cylinder: Any, res: Any) -> CylinderSliding:
-    """The SI form of the nondimensional sliding result ``res`` (in ``h = h2``)."""
+    """The SI form of the nondimensional sliding result ``res`` (in :math:`h = h_2`)."""
     scales = Scales.of(cylinder)
     h1 = float(np.reshape(res.h1_over_h2, -1)[0]) * scales["h"]  # one h1 for all the points
     return CylinderSliding(
@@ -126,11 +126,11 @@ def sliding_pull_off_force(cylinder: Any, h1_over_h2: float) -> float:
 def hysteresis_adhesion(
     receding_work_of_adhesion: float, advancing_work_of_adhesion: float, equilibrium_spacing: float
 ) -> tuple[float, float, float]:
-    """``(sigma0 [Pa], h2 [m], h1 [m])`` of a receding and an advancing work of adhesion.
+    r"""``(sigma0 [Pa], h2 [m], h1 [m])`` of a receding and an advancing work of adhesion.
 
     One ``sigma0``, that of the receding ``w1`` with ``z0`` (the Maugis convention of
     :func:`~linecontact.adhesion_from_work`, which gives ``h1``); the advancing range
-    ``h2 = w2 / sigma0``. A cylinder with ``(sigma0, h2)`` and the receding range ``h1`` is
+    :math:`h_2 = w_2 / \sigma_0`. A cylinder with ``(sigma0, h2)`` and the receding range ``h1`` is
     the pushed or sliding fibre of :meth:`Cylinder.push <linecontact.Cylinder.push>`.
     """
     from ..materials import adhesion_from_work
