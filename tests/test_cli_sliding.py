@@ -161,7 +161,17 @@ BAD = [
     ),
     (
         ["--R-over-h2", "100", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],
-        "exactly one of --h1-over-h2 or --h1",
+        "give --h1-over-h2, the trailing over the leading range",
+    ),
+    (  # SI, with the works of adhesion or the ranges: --h1 [m]
+        ["--radius", "5e-8", "--modulus", "1e11", "--work-of-adhesion-advancing", "0.5"]
+        + ["--z0", "5e-10", "--load", "0.05"],
+        "give the trailing (receding) range --h1 [m] (or --h1-over-h2)",
+    ),
+    (
+        ["--radius", "5e-8", "--modulus", "1e11", "--sigma0", "1e9", "--h2", "5e-10"]
+        + ["--load", "0.05", "--h1", "1e-9", "--h1-over-h2", "2"],
+        "give the trailing range as --h1 [m] or as --h1-over-h2, not both",
     ),
     (
         ["--h1-over-h2", "2", "--sigma0-over-E", "0.01", "--a-over-R", "0.01"],

@@ -119,8 +119,14 @@ def _setup(args: argparse.Namespace):
             "give either the nondimensional groups (--R-over-h2, --sigma0-over-E, "
             "--tau0-over-E) or SI inputs (--radius, ...), not both"
         )
-    if (args.h1_over_h2 is None) == (args.h1 is None):
-        raise ValueError("give exactly one of --h1-over-h2 or --h1 [m]")
+    if args.h1_over_h2 is not None and args.h1 is not None:
+        raise ValueError("give the trailing range as --h1 [m] or as --h1-over-h2, not both")
+    if args.h1_over_h2 is None and args.h1 is None:  # asked in the spelling of the others
+        raise ValueError(
+            "give the trailing (receding) range --h1 [m] (or --h1-over-h2)"
+            if si
+            else "give --h1-over-h2, the trailing over the leading range"
+        )
     if not si:
         if args.R_over_h2 is None or args.sigma0_over_E is None:
             raise ValueError(
