@@ -37,7 +37,7 @@ _MAXIT = 80  # Newton iterations at most
 
 
 def _log_terms(s: NDArray) -> tuple[NDArray, NDArray]:
-    """``s ln|s|`` (0 at ``s = 0``) and ``s``: the pieces of the antiderivatives below."""
+    r""":math:`s \ln|s|` (0 at :math:`s = 0`) and :math:`s`: pieces of the antiderivatives."""
     with np.errstate(divide="ignore"):
         ls = np.log(np.abs(s))
     ls[s == 0] = 0.0
@@ -45,13 +45,19 @@ def _log_terms(s: NDArray) -> tuple[NDArray, NDArray]:
 
 
 def _kernel(nodes: NDArray) -> NDArray:
-    """``K[i, j] = int phi_j(eta) ln(|xi_i^2 - eta^2| / eta^2) d eta`` on the mesh.
+    r""":math:`K_{ij} = \int \phi_j(\eta) \ln(|\xi_i^2 - \eta^2|/\eta^2)\,d\eta` on the mesh.
 
-    ``phi_j`` the hat functions of ``nodes``; the kernel is ``ln|xi - eta| + ln|xi + eta| -
-    2 ln|eta|``, each term integrated exactly against the linear pieces: with ``s = t - c``,
-    ``A0 = int ln|s| dt = s ln|s| - s`` and ``A1 = int t ln|s| dt = s^2 ln|s|/2 - s^2/4 + c
-    A0``, summed over the three terms at every node (one logarithm per node pair and term,
-    in place: the cost is the passes over ``n^2`` numbers) and differenced over the elements.
+    :math:`\phi_j` the hat functions of ``nodes``; the kernel is
+    :math:`\ln|\xi - \eta| + \ln|\xi + \eta| - 2 \ln|\eta|`, each term integrated exactly against
+    the linear pieces: with :math:`s = t - c`,
+
+    .. math::
+
+        A_0 = \int \ln|s|\, dt = s \ln|s| - s, \qquad
+        A_1 = \int t \ln|s|\, dt = \tfrac12 s^2 \ln|s| - \tfrac14 s^2 + c A_0,
+
+    summed over the three terms at every node (one logarithm per node pair and term,
+    in place: the cost is the passes over :math:`n^2` numbers) and differenced over the elements.
     """
     n = nodes.size
     t, xi = nodes[None, :], nodes[:, None]
@@ -181,13 +187,13 @@ def _meshes(spec: tuple[float, ...]) -> tuple[_Mesh, _Mesh, _Mesh]:
 
 @dataclass(frozen=True)
 class _Grid:
-    """The family of meshes of one solve: the band follows the edge of the contact.
+    r"""The family of meshes of one solve: the band follows the edge of the contact.
 
-    ``ell`` is the length of the edge zone (``1`` for ``mu <= 1``, ``1/mu`` beyond: the
-    gap rises from ``z0`` to a few ``z0`` over about ``1/mu`` outside a JKR-like edge);
-    the band is ``[e - 8 ell, e + 8 ell]`` about the edge ``e`` (from 0 while ``e`` is
-    small) with coarse elements ``hb``; a state whose edge comes within ``4 ell`` of the
-    band's end is solved again on a band about it.
+    ``ell`` is the length of the edge zone (1 for :math:`\mu \le 1`, :math:`1/\mu` beyond: the gap
+    rises from :math:`z_0` to a few :math:`z_0` over about :math:`1/\mu` outside a JKR-like edge);
+    the band is :math:`[e - 8\ell, e + 8\ell]` about the edge :math:`e` (from 0 while ``e`` is
+    small) with coarse elements ``hb``; a state whose edge comes within :math:`4\ell` of the band's
+    end is solved again on a band about it.
     """
 
     ell: float
@@ -201,9 +207,9 @@ class _Grid:
         return (round(lo, 12), round(c + _BAND * self.ell, 12), self.hb, self.hmax)
 
     def small(self) -> tuple[float, float, float, float]:
-        """The small mesh, uniform from 0 and graded beyond.
+        r"""The small mesh, uniform from 0 and graded beyond.
 
-        Uniform over :data:`_SMALL_BAND` edge lengths (twice that for ``mu <= 1``, where the
+        Uniform over :data:`_SMALL_BAND` edge lengths (twice that for :math:`\mu \le 1`, where the
         whole curve to its pull-off lies within a few units and the attraction out there
         carries the load), then graded.
 
@@ -221,15 +227,15 @@ class _Grid:
         return self.hb * round(_SCALED_FROM * self.ell / self.hb)
 
     def scaled(self, e: float) -> tuple[tuple[float, float, float, float], float]:
-        """``(spec, k)``: the meshes of the edge ``e`` are those of ``spec`` scaled by ``k``.
+        r"""``(spec, k)``: the meshes of the edge ``e`` are those of ``spec`` scaled by ``k``.
 
-        One mesh per factor :data:`_E_RATIO` of the edge, built about ``e_ref`` (``e/e_ref``
-        within ``_E_RATIO^(+-1/2)``), with ``e_ref`` a node of all three meshes (so the edge
-        held is a node, and the loads of the three meshes differ smoothly): a band of
-        elements at most ``1/sqrt(_E_RATIO)`` of the usual, ``_E_BAND sqrt(_E_RATIO)`` edge
-        lengths either side (from 0 where that comes within 2 edge lengths of it). Scaled by
-        ``k = e/e_ref`` it holds ``e +- _E_BAND`` edge lengths at the usual resolution or
-        finer. The kernel scales with the mesh exactly (:func:`_scaled_mesh`).
+        One mesh per factor :data:`_E_RATIO` of the edge, built about ``e_ref`` (``e/e_ref`` within
+        :math:`\rho^{\pm 1/2}`, :math:`\rho` = ``_E_RATIO``), with ``e_ref`` a node of all three
+        meshes (so the edge held is a node, and the loads of the three meshes differ smoothly): a
+        band of elements at most :math:`1/\sqrt\rho` of the usual, ``_E_BAND`` :math:`\sqrt\rho`
+        edge lengths either side (from 0 where that comes within 2 edge lengths of it). Scaled by
+        :math:`k = e/e_\text{ref}` it holds :math:`e \pm` ``_E_BAND`` edge lengths at the usual
+        resolution or finer. The kernel scales with the mesh exactly (:func:`_scaled_mesh`).
         """
         r = math.sqrt(_E_RATIO)
         e_ref = _E_RATIO ** round(math.log(e) / math.log(_E_RATIO))
@@ -254,7 +260,7 @@ def _law(zeta: NDArray) -> tuple[NDArray, NDArray]:
 
 
 def _factor(mu: float, mesh: _Mesh, dP: NDArray) -> tuple:
-    """``(lu, J^-1 1)`` of ``J = I + (2 mu/pi) K diag(P')``, cached on the mesh.
+    r"""``(lu, J^-1 1)`` of :math:`J = I + (2\mu/\pi) K \mathrm{diag}(P')`, cached on the mesh.
 
     The next state reuses it (a neighbour's Jacobian only speeds convergence; the residual
     decides).
@@ -273,15 +279,15 @@ def _factor(mu: float, mesh: _Mesh, dP: NDArray) -> tuple:
 def _iterate(
     mu: float, mesh: _Mesh, zeta: NDArray, zeta0: float, edge: float | None, tol: float
 ) -> tuple[NDArray, float, float, bool]:
-    """Chord Newton on the discrete gap equation, the central gap or the edge held.
+    r"""Chord Newton on the discrete gap equation, the central gap or the edge held.
 
     With ``edge`` the unknowns are the gaps and ``zeta0`` and the extra equation
-    ``zeta(edge) = _EDGE_GAP`` (the bordered system by block elimination). A factorisation
-    is reused while each step lowers the residual by :data:`_CHORD`; a step that raises it
-    is taken back and, with a fresh factorisation, halved (up to four times) -- so a poor
+    :math:`\zeta(\text{edge})` = ``_EDGE_GAP`` (the bordered system by block elimination). A
+    factorisation is reused while each step lowers the residual by :data:`_CHORD`; a step that
+    raises it is taken back and, with a fresh factorisation, halved (up to four times) -- so a poor
     first guess or a neighbour's factorisation costs iterations, never the solve. Returns
-    ``(zeta, zeta0, residual, ok)``; the residual is the largest of the gap equation's
-    relative to the gap (and of the edge condition).
+    ``(zeta, zeta0, residual, ok)``; the residual is the largest of the gap equation's relative to
+    the gap (and of the edge condition).
     """
     import scipy.linalg
 
@@ -482,7 +488,7 @@ def _edge_row(nodes: NDArray, e: float) -> tuple[int, float]:
 def _edge_newton(
     e: float, mu: float, mesh: _Mesh, zeta: NDArray, zeta0: float, tol: float = _TOL
 ) -> tuple[NDArray, float, bool]:
-    """Gaps and central gap of the state whose gap crosses ``_EDGE_GAP z0`` at ``xi = e``.
+    r"""Gaps and central gap of the state whose gap is ``_EDGE_GAP`` :math:`z_0` at :math:`\xi = e`.
 
     Along the contact branch of a compliant contact the central gap hardly changes while
     the edge travels: ``zeta0`` is a poor control there, ``e`` a good one
@@ -493,10 +499,10 @@ def _edge_newton(
 
 
 def _scaled_mesh(mesh: _Mesh, k: float) -> _Mesh:
-    """``mesh`` with its nodes times ``k``.
+    r"""``mesh`` with its nodes times ``k``.
 
-    ``ln(|xi^2 - eta^2|/eta^2)`` is invariant, so the kernel and the weights scale by ``k``
-    exactly. The copies share the chord factorisation
+    :math:`\ln(|\xi^2 - \eta^2|/\eta^2)` is invariant, so the kernel and the weights scale by
+    :math:`k` exactly. The copies share the chord factorisation
     (a neighbour's Jacobian speeds convergence; the residual decides).
     """
     if k == 1.0:
@@ -535,12 +541,12 @@ def _solve_edge(
 
 
 def _md_guess(a: float, mu: float, mesh: _Mesh) -> tuple[NDArray, float]:
-    """A first guess of the state whose contact half-width is about ``a`` (``mu > 0``).
+    r"""A first guess of the state whose contact half-width is about ``a`` (:math:`\mu > 0`).
 
     The gap of the Maugis-Dugdale pressure with the Maugis matching (Hertz and the bounded
-    crack term inside ``a``, the step ``-S w/z0`` out to ``c``, the ``c/a`` of the closed
+    crack term inside ``a``, the step :math:`-S w/z_0` out to ``c``, the :math:`c/a` of the closed
     form :func:`linecontact.normal_contact` at the matched groups), through the same kernel,
-    lifted so that the gap is ``z0`` at ``a``; at least ``0.95 z0``. Returns ``(zeta,
+    lifted so that the gap is :math:`z_0` at ``a``; at least :math:`0.95\, z_0`. Returns ``(zeta,
     zeta0)``.
     """
     from ..normal.contact import normal_contact
