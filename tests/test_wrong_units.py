@@ -468,6 +468,15 @@ def test_cli_a_zero_width_pull_off_says_no_warning(capsys, z0):
     argv = ["pulloff", "--radius", "10e-9", "--modulus", "50e9", "--work-of-adhesion", "0.05"]
     code, err = _cli(capsys, [*argv, "--z0", z0, "--json"])
     assert code == 0 and err == ""
+    # the table prints its width as 0 (below 1e-12 R, as round-off); the JSON keeps it
+    assert main([*argv, "--z0", z0]) == 0
+    out, err = capsys.readouterr()
+    head, row = out.splitlines()[-2:]
+    cells = dict(
+        zip(head.replace(" [m]", "").replace(" [N/m]", "").split(), row.split(), strict=True)
+    )
+    assert err == "" and cells["mechanism"] == "zero-width"
+    assert cells["a_at_pulloff_m"] == "0" and cells["a_over_R_at_pulloff"] == "0"
 
 
 def test_cli_a_measured_width_below_a_femtometre_warns_even_with_quiet(capsys):

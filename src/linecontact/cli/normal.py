@@ -283,12 +283,18 @@ def _cmd_pulloff(args: argparse.Namespace) -> int:
         show += ["F_pulloff_N_per_m", "a_at_pulloff_m"]
         if args.length is not None:
             show.append("F_pulloff_total_N")
+    # a width below 1e-12 R (a zero-width pull-off's, 1e-24 R and less) prints as 0 in a
+    # table, as round-off does; JSON and CSV keep the number
+    scales = {"a_over_R_at_pulloff": 1.0}
+    if cyl is not None:
+        scales["a_at_pulloff_m"] = cyl.radius
     table = table_from_result(
         p,
         columns=extra,
         parameters=params,
         command=command_line(args),
         title="pull-off under load control (the most tensile load a contact carries)",
+        scales=scales,
         show=show,
     )
     emit(args, table)
