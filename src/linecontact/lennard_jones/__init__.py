@@ -9,9 +9,9 @@ state is controlled by the gap at the centre ``g0``; the gap elsewhere is
 
     z(x) = g_0 + \frac{x^2}{2R} - \frac{2}{\pi E}\int p(s)\,\bigl(\ln|x - s| - \ln|s|\bigr)\,ds,
 
-the pressure ``p`` (compressive positive) pressing the surface in most under the centre.
-With ``x = sqrt(R z0) xi``, ``z = z0 zeta`` and ``p = (w/z0) P(zeta)``,
-``P(zeta) = -(8/3)(zeta^-3 - zeta^-9)``, the gap is
+the pressure :math:`p` (compressive positive) pressing the surface in most under the centre.
+With :math:`x = \sqrt{R z_0}\, \xi`, :math:`z = z_0 \zeta` and :math:`p = (w/z_0) P(\zeta)`,
+:math:`P(\zeta) = -\tfrac83 (\zeta^{-3} - \zeta^{-9})`, the gap is
 
 .. math::
 
@@ -19,16 +19,16 @@ With ``x = sqrt(R z0) xi``, ``z = z0 zeta`` and ``p = (w/z0) P(zeta)``,
         - \frac{2\mu}{\pi}\int_0^\infty P(\zeta(\eta))\,\ln\frac{|\xi^2 - \eta^2|}{\eta^2}\,d\eta,
     \qquad \mu = \frac{w\sqrt{R/z_0}}{E z_0},
 
-and the load is ``F/(w sqrt(R/z0)) = 2 int_0^inf P d eta``. ``mu`` is the one group of the
-problem (a Tabor parameter for cylinders): ``mu -> 0`` is the rigid limit
-(:func:`linecontact.closed_forms.lennard_jones_rigid_load`). With the Maugis matching of the
-Dugdale step (``sigma0 = 16 w/(9 sqrt(3) z0)``, ``h = w/sigma0``) the Maugis parameter of
-line contact (:func:`linecontact.maugis_parameter`) is a function of ``mu`` alone
+and the load is :math:`F/(w \sqrt{R/z_0}) = 2 \int_0^\infty P\, d\eta`. :math:`\mu` is the one group
+of the problem (a Tabor parameter for cylinders): :math:`\mu \to 0` is the rigid limit
+(:func:`linecontact.closed_forms.lennard_jones_rigid_load`). With the Maugis matching of the Dugdale
+step (:math:`\sigma_0 = 16 w/(9 \sqrt{3} z_0)`, :math:`h = w/\sigma_0`) the Maugis parameter of line
+contact (:func:`linecontact.maugis_parameter`) is a function of ``mu`` alone
 (:func:`maugis_parameter_of_mu`). Derivation and mesh study: ``docs/lennard-jones.md``.
 
-Discretisation: ``P`` piecewise linear on graded meshes out to ``L = 2000`` (the attraction
-there has decayed like ``xi^-6``), uniform about the edge of the contact (where the gap
-crosses ``1.5 z0``) at a fraction of the edge length ``1/mu``; the logarithmic kernel is
+Discretisation: :math:`P` piecewise linear on graded meshes out to :math:`L = 2000` (the attraction
+there has decayed like :math:`\xi^{-6}`), uniform about the edge of the contact (where the gap
+crosses :math:`1.5\, z_0`) at a fraction of the edge length :math:`1/\mu`; the logarithmic kernel is
 integrated exactly on each element (product integration); collocation at the nodes; a chord
 Newton iteration. Far away the states hold their central gap; from there on they hold their
 edge, on meshes scaled per factor 2 of it (the kernel scales with the mesh exactly). Every
@@ -36,7 +36,7 @@ state is solved on its mesh and on the meshes with every second and every fourth
 kernels follow from the fine one exactly); the load (and for a state held at its edge, the
 central gap) returned is the Richardson extrapolation of the two finer meshes', and the
 load's error estimate the change of that extrapolation from the coarser pair. Self-consistent
-for ``mu <= MU_SELF_CONSISTENT`` (400); the pull-off beyond by the JKR limit with a fitted
+for :math:`\mu \le` ``MU_SELF_CONSISTENT`` (400); the pull-off beyond by the JKR limit with a fitted
 correction (``_limit.py``).
 
 The package: ``_solver.py`` (the meshes, the kernels, Newton, one state on three meshes),
