@@ -36,15 +36,15 @@ from ._solver import (
 
 @dataclass(frozen=True)
 class LJState(Result):
-    """One equilibrium state under the Lennard-Jones law (nondimensional).
+    r"""One equilibrium state under the Lennard-Jones law (nondimensional).
 
-    Lengths along the surface over ``sqrt(R z0)``, gaps over ``z0``, pressure over ``w/z0``,
-    the load per unit length over ``w sqrt(R/z0)`` (compressive positive).
+    Lengths along the surface over :math:`\sqrt{R z_0}`, gaps over :math:`z_0`, pressure over
+    :math:`w/z_0`, the load per unit length over :math:`w \sqrt{R/z_0}` (compressive positive).
 
     Attributes
     ----------
     central_gap_over_z0, mu : float
-        The control ``zeta0 = g0/z0`` and the group ``mu``.
+        The control :math:`\zeta_0 = g_0/z_0` and the group :math:`\mu`.
     F : float
         The load (Richardson extrapolation of the two finer meshes).
     error_estimate : float
@@ -58,7 +58,7 @@ class LJState(Result):
     converged : bool
         Always ``True`` (a state that does not converge raises ``ConvergenceError``).
     xi, gap_over_z0, pressure : ndarray
-        The nodes (half line), the gap and ``p z0/w`` there (finest mesh).
+        The nodes (half line), the gap and :math:`p z_0/w` there (finest mesh).
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("central_gap_over_z0", "mu")
@@ -107,7 +107,7 @@ class LJCurve(Result):
     """The load curve ``F(g0)`` under the Lennard-Jones law (nondimensional, as :class:`LJState`).
 
     Columns (one per point, the central gap decreasing): ``central_gap_over_z0``, ``F``,
-    ``error_estimate``, ``half_width``, ``stable`` (under load control: ``dF/dg0 < 0``) and
+    ``error_estimate``, ``half_width``, ``stable`` (under load control: :math:`dF/dg_0 < 0`) and
     ``turning`` (the extrema of the load: pull-off and, where the curve is S-shaped, the
     jump-in load and the local minimum before it). ``pull_off`` holds the pull-off point.
     """
@@ -126,7 +126,7 @@ class LJCurve(Result):
 
 @dataclass(frozen=True)
 class LJPullOff(Result):
-    """Pull-off under the Lennard-Jones law (nondimensional, as :class:`LJState`).
+    r"""Pull-off under the Lennard-Jones law (nondimensional, as :class:`LJState`).
 
     Attributes
     ----------
@@ -143,7 +143,7 @@ class LJPullOff(Result):
         Nodes of the finest mesh (0 for the limit form).
     converged : bool
     method : str
-        ``"self-consistent"`` (``mu <= MU_SELF_CONSISTENT``) or ``"limit"``: the JKR limit
+        ``"self-consistent"`` (:math:`\mu \le` ``MU_SELF_CONSISTENT``) or ``"limit"``: the JKR limit
         with its fitted correction (:mod:`linecontact.lennard_jones._limit`), its error
         estimate the whole correction; the jump-in is then ``nan`` (not computed).
     """
@@ -183,14 +183,14 @@ F_MAX_DEFAULT = 7.5
 
 
 def lj_curve(mu: float, *, F_max: float | None = None, m: int | None = None) -> LJCurve:
-    """The load curve ``F(g0)`` from far away through its turning points to ``F_max``.
+    r"""The load curve ``F(g0)`` from far away through its turning points to ``F_max``.
 
     Parameters
     ----------
     mu : float
-        ``w sqrt(R/z0)/(E z0)``, ``>= 0`` (0: rigid).
+        :math:`w \sqrt{R/z_0}/(E z_0)`, ``>= 0`` (0: rigid).
     F_max : float, optional
-        Compressive load where the curve ends (over ``w sqrt(R/z0)``), default
+        Compressive load where the curve ends (over :math:`w \sqrt{R/z_0}`), default
         :data:`F_MAX_DEFAULT`.
     m : int
         Elements of the uniform core on the finest mesh (multiple of 4).
@@ -224,9 +224,9 @@ def lj_curve(mu: float, *, F_max: float | None = None, m: int | None = None) -> 
 
 
 def lj_pull_off(mu: float, *, m: int | None = None) -> LJPullOff:
-    """The pull-off force (the most tensile load of :func:`lj_curve`) and the jump-in load.
+    r"""The pull-off force (the most tensile load of :func:`lj_curve`) and the jump-in load.
 
-    Every ``mu >= 0``: self-consistent up to :data:`MU_SELF_CONSISTENT`, beyond by the
+    Every :math:`\mu \ge 0`: self-consistent up to :data:`MU_SELF_CONSISTENT`, beyond by the
     corrected JKR limit (``method == "limit"``, :func:`limit_pull_off`).
     """
     from .. import domain as _domain
