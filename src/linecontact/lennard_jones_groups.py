@@ -1,16 +1,16 @@
 r"""The Lennard-Jones law in the groups of the Maugis--Dugdale problem: load curve and contact.
 
 :mod:`linecontact.lennard_jones` solves the Lennard-Jones law (Eq. 1) self-consistently in
-its own units (lengths along the surface over ``sqrt(R z0)``, gaps over ``z0``, loads over
-``w sqrt(R/z0)``, one group ``mu = w sqrt(R/z0)/(E z0)``). Here its load curve and its
-contact for a load are given in the groups of the rest of the library -- ``R/h``,
-``sigma0/E``, loads over ``E h``, widths over ``R``, gaps over ``h`` -- for the
+its own units (lengths along the surface over :math:`\sqrt{R z_0}`, gaps over :math:`z_0`, loads
+over :math:`w \sqrt{R/z_0}`, one group :math:`\mu = w \sqrt{R/z_0}/(E z_0)`). Here its load curve
+and its contact for a load are given in the groups of the rest of the library -- :math:`R/h`,
+:math:`\sigma_0/E`, loads over :math:`E h`, widths over ``R``, gaps over ``h`` -- for the
 ``law="lennard-jones"`` of :func:`linecontact.load_curve` and
 :func:`linecontact.contact_for_load` (and of :class:`linecontact.Cylinder`).
 
-The law keeps the Dugdale step's work of adhesion ``w = sigma0 h`` and its peak tension
-``sigma0 = S w/z0`` (the Maugis matching, ``S`` = :data:`~linecontact.lennard_jones.
-MAUGIS_MATCH_SIGMA0` = ``16/(9 sqrt 3)``), so
+The law keeps the Dugdale step's work of adhesion :math:`w = \sigma_0 h` and its peak tension
+:math:`\sigma_0 = S w/z_0` (the Maugis matching, :math:`S` = :data:`~linecontact.lennard_jones.
+MAUGIS_MATCH_SIGMA0` = :math:`16/(9 \sqrt 3)`), so
 
 .. math::
 
@@ -18,7 +18,7 @@ MAUGIS_MATCH_SIGMA0` = ``16/(9 sqrt 3)``), so
     \mu = \frac{\sigma_0/E}{S}\sqrt{\frac{R}{z_0}},\qquad
     \frac{w\sqrt{R/z_0}}{E h} = \frac{\sigma_0}{E}\sqrt{\frac{R}{z_0}},
 
-a half-width ``a/R = xi / sqrt(R/z0)`` and a gap ``g/h = zeta S``.
+a half-width :math:`a/R = \xi / \sqrt{R/z_0}` and a gap :math:`g/h = \zeta S`.
 """
 
 from __future__ import annotations
@@ -58,16 +58,16 @@ __all__ = [
     "pull_off_of",
 ]
 
-#: Most compressive load the Lennard-Jones solver is asked for, over ``w sqrt(R/z0)``: ten
+#: Most compressive load the Lennard-Jones solver is asked for, over :math:`w \sqrt{R/z_0}`: ten
 #: times the rigid cylinder's pull-off (2.466), 3.3 times the default end of its curve. At
 #: such loads both laws approach Hertz and the Dugdale law (the default) gives the contact;
-#: the contact widens with the load (like ``sqrt(mu F)``), and the meshes with it.
+#: the contact widens with the load (like :math:`\sqrt{\mu F}`), and the meshes with it.
 LJ_LOAD_MAX = 25.0
 
 
 @dataclass(frozen=True)
 class LennardJonesLoadCurve(Result):
-    """The load curve under the Lennard-Jones law, in the groups of :class:`linecontact.LoadCurve`.
+    r"""The load curve under the Lennard-Jones law, in the groups of :class:`linecontact.LoadCurve`.
 
     One point per state of the continuation of :func:`linecontact.lennard_jones.lj_curve`,
     the central gap decreasing (from far away, through the pull-off, to the largest load).
@@ -81,14 +81,14 @@ class LennardJonesLoadCurve(Result):
     a_over_R : ndarray
         Half-width of the repulsive region over ``R``.
     central_gap_over_h : ndarray
-        The gap at the centre over ``h`` (``z0 = 1.026 h``).
+        The gap at the centre over ``h`` (:math:`z_0 = 1.026\, h`).
     stable : ndarray of bool
-        Stable under load control (``dF/dg0 < 0``).
+        Stable under load control (:math:`dF/dg_0 < 0`).
     turning_point : ndarray of bool
         The samples at the extrema of the load (pull-off and, where the curve is S-shaped,
         the jump-in load and the local minimum before it).
     mu, maugis_parameter : float
-        The group ``w sqrt(R/z0)/(E z0)`` and the Maugis parameter of the matched step.
+        The group :math:`w \sqrt{R/z_0}/(E z_0)` and the Maugis parameter of the matched step.
     law : str
         ``"lennard-jones"``.
     R_over_h, sigma0_over_E : float
@@ -127,7 +127,7 @@ class LennardJonesLoadCurve(Result):
 
 @dataclass(frozen=True)
 class LennardJonesContact(Result):
-    """The contact carrying a load under the Lennard-Jones law (as :class:`NormalContact`).
+    r"""The contact carrying a load under the Lennard-Jones law (as :class:`NormalContact`).
 
     Attributes
     ----------
@@ -142,7 +142,7 @@ class LennardJonesContact(Result):
     R_over_h, sigma0_over_E : ndarray or float
         The parameters, broadcast.
     mu, maugis_parameter : ndarray or float
-        The group ``w sqrt(R/z0)/(E z0)`` and the Maugis parameter of the matched step.
+        The group :math:`w \sqrt{R/z_0}/(E z_0)` and the Maugis parameter of the matched step.
     law : str
         ``"lennard-jones"``.
     n : ndarray or int
