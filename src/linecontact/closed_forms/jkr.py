@@ -1,11 +1,11 @@
 r"""JKR line contact, and the rigid (DMT-like) pull-off of the Dugdale step.
 
-``F = pi E a^2/(4R) - sqrt(2 pi E w a)`` with ``w = sigma0 h`` (Chaudhury et al. 1996; the
-``m -> 1`` limit of the Maugis--Dugdale solution), its pull-off and its half-width at a load;
-:func:`_rigid_pull_off` is the other end of the family (small ``kappa``). Hertz and JKR have
-no range: the forms in SI units (:mod:`linecontact.inverse`, ``h = R``) and in the
-Lennard-Jones law's units (:mod:`linecontact.adhesion_map`, ``h = z0``, ``R/h = 1``,
-``sigma0/E = mu``) scale these. Units as in :mod:`linecontact.closed_forms`.
+:math:`F = \pi E a^2/(4R) - \sqrt{2\pi E w a}` with :math:`w = \sigma_0 h` (Chaudhury et al. 1996;
+the :math:`m \to 1` limit of the Maugis--Dugdale solution), its pull-off and its half-width at a
+load; :func:`_rigid_pull_off` is the other end of the family (small :math:`\kappa`). Hertz and JKR
+have no range: the forms in SI units (:mod:`linecontact.inverse`, :math:`h = R`) and in the
+Lennard-Jones law's units (:mod:`linecontact.adhesion_map`, :math:`h = z_0`, :math:`R/h = 1`,
+:math:`\sigma_0/E = \mu`) scale these. Units as in :mod:`linecontact.closed_forms`.
 
 References
 ----------
@@ -47,21 +47,24 @@ def jkr_load(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike)
 
 
 def _jkr(A, rho, s):
-    """JKR line contact: ``F/(Eh) = (pi/4) A^2 rho - sqrt(2 pi s rho A)``."""
+    r"""JKR line contact: :math:`F/(Eh) = (\pi/4) A^2 \rho - \sqrt{2\pi s \rho A}`."""
     return np.pi / 4 * A * A * rho - np.sqrt(2 * np.pi * s * rho * A)
 
 
 def _jkr_pull_off(rho, s):
-    """JKR pull-off ``F/(Eh) = -(3/4)(4 pi s^2 rho)^(1/3)`` and its ``A = (2 s/(pi rho))^(1/3)``."""
+    r"""JKR pull-off :math:`F/(Eh) = -\frac34 (4\pi s^2\rho)^{1/3}` and its half-width.
+
+    :math:`A = (2s/(\pi\rho))^{1/3}`.
+    """
     return -0.75 * np.cbrt(4 * np.pi * s * s * rho), np.cbrt(2 * s / (np.pi * rho))
 
 
 def _jkr_half_width(F, rho, s):
-    """The JKR half-width ``A`` on the stable branch at the load ``F/(Eh)`` (arrays broadcast).
+    r"""The JKR half-width ``A`` on the stable branch at the load ``F/(Eh)`` (arrays broadcast).
 
-    With ``u = sqrt(A)`` the load is ``a u^4 - b u`` (``a = pi rho/4``, ``b = sqrt(2 pi s
-    rho)``), convex and increasing beyond the pull-off: Newton from above the root converges
-    monotonically. NaN below the pull-off (no JKR contact).
+    With :math:`u = \sqrt{A}` the load is :math:`a u^4 - b u` (:math:`a = \pi\rho/4`,
+    :math:`b = \sqrt{2\pi s\rho}`), convex and increasing beyond the pull-off: Newton from above the
+    root converges monotonically. NaN below the pull-off (no JKR contact).
     """
     F, rho, s = np.broadcast_arrays(*(np.asarray(v, float) for v in (F, rho, s)))
     a, b = np.pi * rho / 4, np.sqrt(2 * np.pi * s * rho)
@@ -80,9 +83,9 @@ def _jkr_half_width(F, rho, s):
 
 
 def _rigid_pull_off(rho, s):
-    """Pull-off of a rigid cylinder under the Dugdale step: ``F/(Eh) = -2 sqrt(2) s sqrt(rho)``.
+    r"""Pull-off of a rigid cylinder, Dugdale step: :math:`F/(Eh) = -2\sqrt2\, s \sqrt\rho`.
 
-    The adhesive zone ``|x| < sqrt(2 R h)`` of a rigid cylinder touching at a point: the
-    DMT-like (small ``kappa``) limit.
+    The adhesive zone :math:`|x| < \sqrt{2 R h}` of a rigid cylinder touching at a point: the
+    DMT-like (small :math:`\kappa`) limit.
     """
     return -2 * math.sqrt(2) * s * np.sqrt(rho)
