@@ -1,6 +1,6 @@
 r"""Hertz line contact, Eq. (13) of the paper, and the small-strain limit of the theory.
 
-``F/(E h) = (pi/4)(a/R)^2 (R/h)`` (Johnson 1985, Sec. 4.3); :func:`_hertz` is its one home
+:math:`F/(E h) = (\pi/4)(a/R)^2 (R/h)` (Johnson 1985, Sec. 4.3); :func:`_hertz` is its one home
 in the paper's groups and :func:`_hertz_half_width` its inverse. :data:`A_OVER_R_SMALL_STRAIN`
 bounds the contact width of the half-plane theory every solver uses (:func:`_warn_wide`).
 Units as in :mod:`linecontact.closed_forms`.
@@ -26,7 +26,7 @@ from ..errors import ModelValidityWarning
 __all__ = ["A_OVER_R_SMALL_STRAIN", "hertz_load"]
 
 #: Largest contact half-width over the radius of the small-strain, half-plane theory that
-#: every solver uses (Hertz, Eq. 6): the surface strain is about ``p0/E = a/(2R)``, 10 % here.
+#: every solver uses (Hertz, Eq. 6): the surface strain is about :math:`p_0/E = a/(2R)`, 10 % here.
 #: Wider contacts are computed but give a :class:`~linecontact.errors.ModelValidityWarning`.
 A_OVER_R_SMALL_STRAIN = 0.2
 
@@ -75,10 +75,10 @@ def hertz_load(a_over_R: ArrayLike, R_over_h: ArrayLike) -> NDArray | float:
 
 
 def _hertz(A, rho):
-    """Hertz line contact, Eq. (13): ``F/(Eh) = (pi/4) A^2 rho``."""
+    r"""Hertz line contact, Eq. (13): :math:`F/(Eh) = (\pi/4) A^2 \rho`."""
     return np.pi / 4 * A * A * rho
 
 
 def _hertz_half_width(F, rho):
-    """The inverse of :func:`_hertz`: ``A = sqrt(4 F/(pi rho))``, 0 for ``F <= 0``."""
+    r"""The inverse of :func:`_hertz`: :math:`A = \sqrt{4 F/(\pi \rho)}`, 0 for :math:`F \le 0`."""
     return np.sqrt(4.0 * np.maximum(F, 0.0) / (np.pi * rho))
