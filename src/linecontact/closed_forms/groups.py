@@ -1,9 +1,9 @@
 r"""The groups of the Maugis--Dugdale line contact: ``kappa`` and the Maugis parameter.
 
-``kappa = (4/pi)(sigma0/E) sqrt(2R/h)`` (Johnson & Greenwood 2008) is the one group on which
-the whole Maugis--Dugdale family depends; every solver forms it with :func:`_kappa` and
-refuses points beyond :data:`KAPPA_MAX` (:func:`_check_kappa`). The Maugis parameter is Baney
-& Hui's Tabor-like parameter for line contact, ``kappa = lambda^(3/2)/sqrt(2)``. Units as in
+:math:`\kappa = (4/\pi)(\sigma_0/E) \sqrt{2R/h}` (Johnson & Greenwood 2008) is the one group on
+which the whole Maugis--Dugdale family depends; every solver forms it with :func:`_kappa` and
+refuses points beyond :data:`KAPPA_MAX` (:func:`_check_kappa`). The Maugis parameter is Baney &
+Hui's Tabor-like parameter for line contact, :math:`\kappa = \lambda^{3/2}/\sqrt2`. Units as in
 :mod:`linecontact.closed_forms`.
 
 References
@@ -28,9 +28,10 @@ from .._validation import broadcast, first_point, out, scalar_or_array
 __all__ = ["KAPPA_MAX", "kappa", "maugis_parameter"]
 
 #: Largest ``kappa`` the Maugis--Dugdale solvers accept. Their brackets in
-#: ``u = arccosh(c/a)`` reach down to 1e-60 (the pull-off to 1e-10), and the load minimum sits
-#: at ``u ~ 2.8 kappa**(-2/3)``: beyond ``kappa ~ 1e13`` the minimum and the contacts near it
-#: fall outside, so pull-off forces and contacts for a given load would be wrong.
+#: :math:`u = \operatorname{arccosh}(c/a)` reach down to 1e-60 (the pull-off to 1e-10), and the
+#: load minimum sits at :math:`u \approx 2.8\, \kappa^{-2/3}`: beyond
+#: :math:`\kappa \approx 10^{13}` the minimum and the contacts near it fall outside, so
+#: pull-off forces and contacts for a given load would be wrong.
 KAPPA_MAX = 1e12
 
 
