@@ -4,31 +4,34 @@ A cylinder slides steadily over the substrate. Sliding wipes the surface ahead o
 adhesion at the trailing edge has a longer range ``h1`` than at the leading edge ``h2``
 (the Dugdale stress ``sigma0`` is the same at both); the contact, its adhesive zones and the
 pressure lose their symmetry, the cylinder's apex is offset from the contact centre and the
-pressure has a resultant moment. Any positive ``h1/h2`` is accepted (``h1 < h2`` is the
-mirror image).
+pressure has a resultant moment. Any positive :math:`h_1/h_2` is accepted (:math:`h_1 < h_2` is
+the mirror image).
 
 Axes and signs
 --------------
 ``x`` runs along the sliding direction (the cylinder moves towards ``+x``), with its origin
-at the centre of the contact ``-a < x < a``; ``y`` is normal to the substrate, pointing up
+at the centre of the contact :math:`-a < x < a`; ``y`` is normal to the substrate, pointing up
 into the cylinder, which lies above the substrate. Figures are drawn with ``x`` to the right
 and ``y`` up, so the cylinder moves to the right and "clockwise" is as seen in them.
 
-- Trailing adhesive zone ``-c1 < x < -a`` (range ``h1``), leading zone ``a < x < c2``
-  (range ``h2``); the apex of the cylinder (its axis) is at ``x = e`` (eccentricity).
-- The pressure ``p`` is compressive positive: ``p = pbar - sigma0`` on ``[-c1, c2]`` with
-  ``pbar`` supported on the contact and bounded (zero) at both of its ends (Eq. 8).
-- The load ``F = int p dx`` is compressive positive (Eq. 12 with two zones).
-- The moment ``M = int x p(x) dx`` about the contact centre is **clockwise positive**: it is
-  the clockwise moment of the contact pressure on the substrate, equivalently the clockwise
-  moment about the contact centre that must act on the cylinder, together with the load, to
-  hold it in equilibrium. The pressure's own moment on the cylinder is ``M``
-  counterclockwise: with ``h1 > h2`` it opposes forward (clockwise) rolling -- the resisting
-  moment. ``M_axis = M - e F`` is the same moment taken about the cylinder's axis.
+- Trailing adhesive zone :math:`-c_1 < x < -a` (range :math:`h_1`), leading zone
+  :math:`a < x < c_2` (range :math:`h_2`); the apex of the cylinder (its axis) is at :math:`x = e`
+  (eccentricity).
+- The pressure :math:`p` is compressive positive: :math:`p = \bar p - \sigma_0` on
+  :math:`[-c_1, c_2]` with :math:`\bar p` supported on the contact and bounded (zero) at both of its
+  ends (Eq. 8).
+- The load :math:`F = \int p\, dx` is compressive positive (Eq. 12 with two zones).
+- The moment :math:`M = \int x\, p(x)\, dx` about the contact centre is **clockwise positive**: it
+  is the clockwise moment of the contact pressure on the substrate, equivalently the clockwise
+  moment about the contact centre that must act on the cylinder, together with the load, to hold it
+  in equilibrium. The pressure's own moment on the cylinder is ``M`` counterclockwise: with
+  :math:`h_1 > h_2` it opposes forward (clockwise) rolling -- the resisting moment.
+  :math:`M_\text{axis} = M - e F` is the same moment taken about the cylinder's axis.
 
 Units (as in :mod:`linecontact.closed_forms`, with ``h2`` as the unit of gap): lengths over
-``R`` (``a/R``, ``c1/R``, ``c2/R``, ``e/R``), force per unit length over ``E h2``, moment per
-unit length over ``E h2 R``, stresses over ``E``, ``R/h2`` and ``h1/h2``.
+:math:`R` (:math:`a/R`, :math:`c_1/R`, :math:`c_2/R`, :math:`e/R`), force per unit length over
+:math:`E h_2`, moment per unit length over :math:`E h_2 R`, stresses over :math:`E`, :math:`R/h_2`
+and :math:`h_1/h_2`.
 
 Equations
 ---------
@@ -41,8 +44,8 @@ Eq. (20), the bounded pressure on the contact,
 
 is not odd, so its consistency condition (the extra collocation equation) does not hold by
 itself: it fixes the eccentricity, which enters linearly through :math:`e/(2R)`. The two
-separation conditions are the gap ``h2`` at ``x = c2`` (Eq. 21) and ``h1`` at ``x = -c1``
-(Eq. 22, corrupted in the text; derived in ``docs/sliding.md``):
+separation conditions are the gap :math:`h_2` at :math:`x = c_2` (Eq. 21) and :math:`h_1` at
+:math:`x = -c_1` (Eq. 22, corrupted in the text; derived in ``docs/sliding.md``):
 
 .. math::
 
@@ -82,7 +85,7 @@ Two solvers give the same :class:`SlidingContact`:
         h_i = \frac{a^2}{2R}f_1(u_i) + \frac{4\sigma_0 a}{\pi E}\cosh\delta\left[
             u_i\sinh\sigma - \cosh\sigma\ln\frac{\cosh\sigma}{\cosh\delta}\right],
 
-    :math:`f_1 = \sinh u\cosh u - u`; at ``u1 = u2`` the last bracket is Baney & Hui's
+    :math:`f_1 = \sinh u\cosh u - u`; at :math:`u_1 = u_2` the last bracket is Baney & Hui's
     :math:`f_2`, so everything reduces to :mod:`linecontact.normal`. Two algebraic
     equations in :math:`(u_1, u_2)` per point, solved by a safeguarded Newton iteration.
 
@@ -90,7 +93,7 @@ With :math:`\bar a = (a/R)\sqrt{R/(2h_2)}` and :math:`\kappa = (4/\pi)(\sigma_0/
 the separation conditions read :math:`\bar a^2 f_1(u_2) + \kappa\bar a\,G_2 = 1`,
 :math:`\bar a^2 f_1(u_1) + \kappa\bar a\,G_1 = h_1/h_2`, and
 :math:`F/(Eh_2) = (\pi/2)(\bar a^2 - \kappa\bar a\sinh\sigma\cosh\delta)`: the family depends
-on ``kappa`` and ``h1/h2`` once ``a`` is scaled.
+on :math:`\kappa` and :math:`h_1/h_2` once :math:`a` is scaled.
 
 References
 ----------
