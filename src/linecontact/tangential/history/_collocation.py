@@ -1,7 +1,7 @@
 """The incremental solver: the stick condition solved step by step by collocation.
 
 ``method="incremental"`` of :func:`~linecontact.tangential.history.tangential_history`: at
-each step the stick zone ``|x| < c`` keeps its relative displacement, the traction in the
+each step the stick zone :math:`|x| < c` keeps its relative displacement, the traction in the
 slip zones is the friction stress in the step's direction, and ``c`` is the root of the
 force balance. It knows no superposition rule and no memory rule.
 """
@@ -23,17 +23,17 @@ from ._laws import _Law
 #: the Chebyshev tail of the step's solution is at round-off).
 N_INCREMENTAL = 64
 #: The largest size the incremental solver doubles to: a reversal by a fraction ``r`` of
-#: the full-slip load puts the new stick zone within ``~ r^2/8`` of the edge, whose
-#: logarithmic source then needs ``~ 70/r`` nodes (``docs/load-histories.md``).
+#: the full-slip load puts the new stick zone within :math:`\approx r^2/8` of the edge, whose
+#: logarithmic source then needs :math:`\approx 70/r` nodes (``docs/load-histories.md``).
 N_MAX_INCREMENTAL = 4096
 _N_GAUSS = 16  # Gauss-Legendre nodes per piece of the slip annulus (friction work)
 
 
 @dataclass(frozen=True)
 class _Incremental:
-    """States ``q = s B(x) + sum_k psi_k(x)``, each ``psi_k`` bounded on ``|x| < c_k``.
+    r"""States :math:`q = s B(x) + \sum_k \psi_k(x)`, :math:`\psi_k` bounded on :math:`|x| < c_k`.
 
-    ``psi_k(x) = sqrt(1 - t^2) sum_j b_kj U_j(t)``, ``t = x/c_k``; per step, a tuple of
+    :math:`\psi_k(x) = \sqrt{1 - t^2} \sum_j b_{kj} U_j(t)`, :math:`t = x/c_k`; per step, a tuple of
     ``(c_k, b_k)`` (nested intervals, the step's own stick zone last).
     """
 
@@ -86,10 +86,13 @@ def _psi(b: NDArray, c: float, x: NDArray) -> NDArray:
 
 
 def _h_psi(b: NDArray, c: float, x: NDArray) -> NDArray:
-    """(1/pi) PV int psi(xi)/(xi - x) dxi = -sum_j b_j e_{j+1}(x/c), inside and outside.
+    r"""The Hilbert transform of :math:`\psi`, inside and outside its interval.
 
-    ``e_k = T_k(y)`` inside (Clenshaw), ``e_k = rho^k`` with
-    ``rho = sign(y)/(|y| + sqrt(y^2 - 1))`` outside (Horner): O(n) vector operations.
+    :math:`\frac1\pi \mathrm{PV}\!\int \frac{\psi(\xi)}{\xi - x} d\xi = -\sum_j b_j e_{j+1}(x/c)`.
+
+    :math:`e_k = T_k(y)` inside (Clenshaw), :math:`e_k = \rho^k` with
+    :math:`\rho = \operatorname{sign}(y)/(|y| + \sqrt{y^2 - 1})` outside (Horner): O(n) vector
+    operations.
     """
     y = np.asarray(x, float) / c
     inside = np.abs(y) <= 1.0
@@ -111,10 +114,10 @@ def _el(law: _Law, s: float, parts, x: NDArray) -> NDArray:
 
 
 def _graded(cut: list[float]) -> list[tuple[float, float]]:
-    """Pieces between the cuts, each graded geometrically towards both of its ends.
+    r"""Pieces between the cuts, each graded geometrically towards both of its ends.
 
-    The slips have algebraic-logarithmic end behaviour (``(1 - x) ln(1 - x)`` at the
-    contact edge, ``(x - c)^(3/2)`` where a stick zone ended): halving the pieces towards
+    The slips have algebraic-logarithmic end behaviour (:math:`(1 - x) \ln(1 - x)` at the
+    contact edge, :math:`(x - c)^{3/2}` where a stick zone ended): halving the pieces towards
     the ends keeps the Gauss--Legendre error of each at round-off.
     """
     out: list[tuple[float, float]] = []
@@ -129,10 +132,11 @@ def _graded(cut: list[float]) -> list[tuple[float, float]]:
 
 
 def _size_for(c: float, nn: int, sizes: list[int], at_least: int = 0) -> int:
-    """The next size for a stick zone ``|x| < c``: at least twice ``nn``, or ``at_least``.
+    r"""The next size for a stick zone :math:`|x| < c`: at least twice ``nn``, or ``at_least``.
 
-    A reversal's log sources sit at ``x = +-a``, ``t = +-a/c``: the coefficients fall like
-    ``exp(-arccosh(1/c) k)``, so about ``40/arccosh(1/c)`` of them reach round-off.
+    A reversal's log sources sit at :math:`x = \pm a`, :math:`t = \pm a/c`: the coefficients fall
+    like :math:`\exp(-k \operatorname{arccosh}(1/c))`, so about
+    :math:`40/\operatorname{arccosh}(1/c)` of them reach round-off.
     """
     rate = math.acosh(1.0 / c) if 0 < c < 1 else 1.0
     need = max(40.0 / max(rate, 1e-300), at_least or 2 * nn)
@@ -160,14 +164,14 @@ def _root(force, nn: int, guess: float) -> float:
 def _incremental(
     law: _Law, loads: NDArray, n: int, stop_tol: float | None = None
 ) -> dict[str, Any]:
-    """Solve the stick condition at each step from the previous state (no memory rule).
+    r"""Solve the stick condition at each step from the previous state (no memory rule).
 
     Step ``j`` moves the load monotonically to ``T_j``, in the direction ``s``. Unknown:
-    the stick zone ``|x| < c`` and the traction there. Outside it the traction is ``s B``,
+    the stick zone :math:`|x| < c` and the traction there. Outside it the traction is :math:`s B`,
     so every part of the previous state that reaches beyond ``c`` is replaced; the new
-    part ``phi`` on ``|x| < c`` keeps the relative displacement of the stick zone:
-    ``H phi = (s_prev - s) HB + sum of H psi_k over the replaced parts`` on ``|x| < c``
-    (smooth: each replaced part is evaluated inside its own interval), bounded at ``+-c``.
+    part :math:`\phi` on :math:`|x| < c` keeps the relative displacement of the stick zone:
+    :math:`H\phi = (s_\text{prev} - s) HB + \sum H\psi_k` over the replaced parts on :math:`|x| < c`
+    (smooth: each replaced part is evaluated inside its own interval), bounded at :math:`\pm c`.
     ``c`` is the root of the force balance.
 
     With ``stop_tol``, the solve stops after the first step that misses it (its error
