@@ -1,16 +1,17 @@
 r"""The Lennard-Jones law of Eq. (1) in the paper's groups: pull-off, contact, load curve.
 
-The functions of :mod:`linecontact.laws.dugdale` (:mod:`linecontact.normal`) for the
-Lennard-Jones law, with the same names and argument order: ``R/h``, ``sigma0/E`` in, loads
-over ``E h``, widths over ``R``, gaps over ``h`` out. The law keeps the Dugdale step's work
-of adhesion ``w = sigma0 h`` and its peak tension ``sigma0 = S w/z0`` (the Maugis matching,
-``S`` = :data:`~linecontact.materials.MAUGIS_STRENGTH`), so ``z0 = S h``; its one group is
-``mu = w sqrt(R/z0)/(E z0) = (sigma0/E) sqrt(R/h) S^(-3/2)``, solved self-consistently for
-``mu`` within ``domain.DOMAIN["lj_mu"]`` (to 400, Maugis parameter 104; ``sigma0_over_E >
-0``); the pull-off at every ``mu``, beyond that by the JKR limit with a fitted correction.
+The functions of :mod:`linecontact.laws.dugdale` (:mod:`linecontact.normal`) for the Lennard-Jones
+law, with the same names and argument order: :math:`R/h`, :math:`\sigma_0/E` in, loads over
+:math:`E h`, widths over :math:`R`, gaps over :math:`h` out. The law keeps the Dugdale step's work
+of adhesion :math:`w = \sigma_0 h` and its peak tension :math:`\sigma_0 = S w/z_0` (the Maugis
+matching, :math:`S` = :data:`~linecontact.materials.MAUGIS_STRENGTH`), so :math:`z_0 = S h`; its one
+group is :math:`\mu = w \sqrt{R/z_0}/(E z_0) = (\sigma_0/E) \sqrt{R/h}\, S^{-3/2}`, solved
+self-consistently for :math:`\mu` within ``domain.DOMAIN["lj_mu"]`` (to 400, Maugis parameter 104;
+``sigma0_over_E > 0``); the pull-off at every ``mu``, beyond that by the JKR limit with a fitted
+correction.
 
-The solver (:mod:`linecontact.lennard_jones`, in the law's own units: gaps over ``z0``,
-loads over ``w sqrt(R/z0)``) follows the load curve by the central gap far away and by the
+The solver (:mod:`linecontact.lennard_jones`, in the law's own units: gaps over :math:`z_0`,
+loads over :math:`w \sqrt{R/z_0}`) follows the load curve by the central gap far away and by the
 edge of the contact nearer: a pull-off costs a few tenths of a second, a whole curve about a
 second (``benchmarks/lennard_jones.py``).
 
@@ -87,12 +88,12 @@ def contact_for_load(
     *,
     on_failure: FailurePolicy = RAISE,
 ) -> LennardJonesContact:
-    """The contact carrying a given load under the Lennard-Jones law (the stable branch).
+    r"""The contact carrying a given load under the Lennard-Jones law (the stable branch).
 
     Parameters
     ----------
     F_over_Eh : array_like
-        Load over ``E h`` (compressive positive), up to :data:`LJ_LOAD_MAX` ``w sqrt(R/z0)``.
+        Load over ``E h`` (compressive positive), up to :data:`LJ_LOAD_MAX` :math:`w \sqrt{R/z_0}`.
     R_over_h, sigma0_over_E : array_like
         As in :func:`pull_off`.
     on_failure : {"raise", "report"}
@@ -128,7 +129,7 @@ def contact_for_load(
 def load_curve(
     R_over_h: float, sigma0_over_E: float, *, F_max_over_Eh: float | None = None
 ) -> LennardJonesLoadCurve:
-    """The load curve under the Lennard-Jones law (scalar parameters), pull-off included.
+    r"""The load curve under the Lennard-Jones law (scalar parameters), pull-off included.
 
     The states of the solver's continuation in the central gap, from far away through the
     pull-off (and, where the curve is S-shaped, the jump-in) to ``F_max_over_Eh``.
@@ -138,8 +139,9 @@ def load_curve(
     R_over_h, sigma0_over_E : float
         As in :func:`pull_off` (scalars).
     F_max_over_Eh : float, optional
-        The compressive load where the curve ends (default: 7.5 ``w sqrt(R/z0)``, three
-        times the rigid cylinder's pull-off; at most :data:`LJ_LOAD_MAX` ``w sqrt(R/z0)``).
+        The compressive load where the curve ends (default: :math:`7.5\, w \sqrt{R/z_0}`,
+        three times the rigid cylinder's pull-off; at most :data:`LJ_LOAD_MAX`
+        :math:`w \sqrt{R/z_0}`).
 
     Returns
     -------
