@@ -4,7 +4,7 @@ Units as in :mod:`linecontact.closed_forms`.
 
 Maugis--Dugdale line contact
 ----------------------------
-With ``m = c/a = cosh(u)`` the bounded contact pressure is
+With :math:`m = c/a = \cosh u` the bounded contact pressure is
 
 .. math::
 
@@ -30,8 +30,8 @@ at the ``u`` where :math:`\kappa = 2\sinh u/\sqrt{L^2 f_1 + 2L\sinh u\,f_2}`,
 infinity to zero; this makes the pull-off search a bracketed one-dimensional root.
 
 All functions here are evaluated in forms scaled by :math:`e^{-u}` so that they neither
-overflow for vanishing contact width (``u -> inf``) nor cancel near the JKR end
-(``u -> 0``).
+overflow for vanishing contact width (:math:`u \to \infty`) nor cancel near the JKR end
+(:math:`u \to 0`).
 
 References
 ----------
@@ -72,7 +72,10 @@ def _f1_series(u):
 
 
 def _small_u(u, q):
-    """``L = ln cosh u`` and ``F1`` below u = 1: by series, where 1 - q^2 - 4uq cancels."""
+    r""":math:`L = \ln\cosh u` and ``F1`` below :math:`u = 1`, by series.
+
+    There :math:`1 - q^2 - 4uq` cancels.
+    """
     sh = np.sinh(u / 2)
     return np.log1p(2 * sh * sh), 4 * q * _f1_series(u)
 
@@ -83,9 +86,10 @@ def _large_u(u, q):
 
 
 def _scaled(u: NDArray) -> dict[str, NDArray]:
-    """Overflow-free pieces: ``F1 = 4 e^{-2u} f1``, ``F2 = 2 e^{-u} f2``, ``St = 2e^{-u} sinh u``.
+    r"""Overflow-free pieces ``F1``, ``F2``, ``St``, ``Ct``, ``L`` and ``q``.
 
-    Also ``Ct = 2 e^{-u} cosh u``, ``L = ln cosh u`` and the exponential ``q = e^{-2u}``.
+    :math:`F_1 = 4 e^{-2u} f_1`, :math:`F_2 = 2 e^{-u} f_2`, :math:`S_t = 2e^{-u} \sinh u`,
+    :math:`C_t = 2 e^{-u} \cosh u`, :math:`L = \ln\cosh u` and the exponential :math:`q = e^{-2u}`.
     ``u`` is an array or a NumPy scalar (see :func:`_where`); a scalar evaluates only the
     branch (series or not) that it takes.
     """
@@ -272,12 +276,12 @@ def _stationary_step(w, lo, hi, lk):
 
 
 def _u_stationary(kap: NDArray | np.float64) -> NDArray | np.float64:
-    """The u of the single load minimum for group kappa > 0.
+    r"""The :math:`u` of the single load minimum for the group :math:`\kappa > 0`.
 
-    ``kappa_s(u)`` (:func:`_kappa_stationary`) decreases from infinity (as
-    ``2 sqrt(2) u^(-3/2)``) to zero (as ``2/sqrt(u^2 - ln^2 2)``): a bracketed Newton
-    iteration in ``w = ln u`` on ``ln kappa_s = ln kappa`` starts from these asymptotes and
-    falls back on bisection whenever a step would leave the bracket. Arrays or scalars.
+    :math:`\kappa_s(u)` (:func:`_kappa_stationary`) decreases from infinity (as
+    :math:`2\sqrt2\, u^{-3/2}`) to zero (as :math:`2/\sqrt{u^2 - \ln^2 2}`): a bracketed Newton
+    iteration in :math:`w = \ln u` on :math:`\ln\kappa_s = \ln\kappa` starts from these asymptotes
+    and falls back on bisection whenever a step would leave the bracket. Arrays or scalars.
     """
     scalar = _is_scalar(kap)
     shape = np.shape(kap)
