@@ -206,7 +206,7 @@ def bounded_rule(n: int) -> tuple[NDArray[np.float64], NDArray[np.float64], NDAr
     weights : ndarray, shape (n,)
         :math:`W_i = \pi(1-\tau_i^2)/(n+1)`; :math:`\sum_i W_i g(\tau_i)` equals
         :math:`\int_{-1}^{1}\sqrt{1-\tau^2}\,g(\tau)\,d\tau` for polynomials ``g`` of degree
-        ``<= 2n - 1``.
+        :math:`\le 2n - 1`.
     collocation : ndarray, shape (n + 1,)
         :math:`x_k = \cos((2k-1)\pi/(2n+2))`, the zeros of :math:`T_{n+1}`.
     """
@@ -226,7 +226,7 @@ def chebyshev_log_expansion(y: ArrayLike, kmax: int) -> tuple[NDArray, NDArray]:
 
     with :math:`c_0 = v - \ln 2`, :math:`e_k = \operatorname{sign}(y)^k e^{-kv}` and
     :math:`|y| = \cosh v` outside the interval, and :math:`c_0 = -\ln 2`,
-    :math:`e_k = T_k(y)` inside it (``|y| <= 1``).
+    :math:`e_k = T_k(y)` inside it (:math:`|y| \le 1`).
 
     Parameters
     ----------
@@ -258,12 +258,12 @@ def chebyshev_log_expansion(y: ArrayLike, kmax: int) -> tuple[NDArray, NDArray]:
 
 @dataclass(frozen=True)
 class BoundedSolution:
-    """Solution of the bounded problem, on ``[-1, 1]`` after the map.
+    r"""Solution of the bounded problem, on ``[-1, 1]`` after the map.
 
     Attributes
     ----------
     coefficients : ndarray, shape (..., n)
-        ``b_j`` in ``g = sum_j b_j U_j``.
+        :math:`b_j` in :math:`g = \sum_j b_j U_j`.
     values : ndarray, shape (..., n)
         ``g`` at the nodes.
     consistency : ndarray, shape (...)
@@ -494,7 +494,7 @@ def log_end_moments(n: int, u: ArrayLike) -> tuple[NDArray, NDArray]:
     n : int
         Number of coefficients, ``n >= 1``.
     u : array_like
-        ``arccosh(m) >= 0``, any shape.
+        :math:`\operatorname{arccosh}(m) \ge 0`, any shape.
 
     Returns
     -------
@@ -520,7 +520,7 @@ def log_end_moments(n: int, u: ArrayLike) -> tuple[NDArray, NDArray]:
 
 @lru_cache(maxsize=64)
 def _mu_at_one(n: int) -> NDArray:
-    """The moments of ``ln(1 - t)`` (``m = 1``), subtracted by :func:`log_end_moments`."""
+    r"""The moments of :math:`\ln(1 - t)` (:math:`m = 1`), subtracted by :func:`log_end_moments`."""
     j = np.arange(n)
     mu1 = (np.pi / 2) / (j + 2)
     mu1[1:] -= (np.pi / 2) / j[1:]
@@ -612,7 +612,7 @@ class UnboundedSolver:
     Notes
     -----
     :math:`\phi = g/\sqrt{1-\tau^2}`, nodes :math:`\tau_i = \cos((2i-1)\pi/(2n))`, weights
-    :math:`\pi/n`, collocation :math:`x_k = \cos(k\pi/n)` for ``k = 1..n-1``; the side
+    :math:`\pi/n`, collocation :math:`x_k = \cos(k\pi/n)` for :math:`k = 1, \ldots, n-1`; the side
     condition :math:`\int_\alpha^\beta\phi\,dt = C` closes the system.
     """
 
