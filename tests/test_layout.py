@@ -49,6 +49,7 @@ FLOORS = {
     "si": [
         "linecontact.cylinder",
         "linecontact.inverse",
+        "linecontact._pull_off_model",
         "linecontact.fits",
         "linecontact.uncertainty",
         "linecontact.measurements",

@@ -36,27 +36,24 @@ from numpy.typing import ArrayLike, NDArray
 
 from . import closed_forms as _cf
 from . import normal as _normal
-from ._validation import broadcast, check_array, first_point
-from .cylinder import _check_cylinder_si, _plausible, _warn_widths
-from .cylinder._checks import _small_strain_in_si, _warn_small_strain
-from .errors import ModelValidityWarning
-from .fits import (
+from ._pull_off_model import (
     _S_MAX,
     _S_MIN,
     S_LJ,
-    AdhesionFit,
-    ShearStrengthFit,
     _bisect_log,
     _groups,
     _work_in_domain,
     dmt_pull_off_force,
-    fit_pull_off,
-    fit_shear_strength,
     jkr_pull_off_force,
     pull_off_force,
     simple_model_work_of_adhesion,
     work_of_adhesion_from_pull_off,
 )
+from ._validation import broadcast, check_array, first_point
+from .cylinder import _check_cylinder_si, _plausible, _warn_widths
+from .cylinder._checks import _small_strain_in_si, _warn_small_strain
+from .errors import ModelValidityWarning
+from .fits import AdhesionFit, ShearStrengthFit, fit_pull_off, fit_shear_strength
 from .uncertainty import _UNREACHABLE, Estimate, propagate
 
 __all__ = [

@@ -21,19 +21,30 @@ from typing import Any
 import numpy as np
 
 from .. import inverse as inv
-from ..measurements import per_length, read_measurements
-from ..output import Table
+from ..measurements import per_length
+from ._fit_common import (
+    _ESTIMATE,
+    _FIT,
+    _FIT_DATA,
+    _FIT_INPUTS_SD,
+    EXACT,
+    _check_common,
+    _modulus,
+    _one_sd,
+    _read,
+    _record,
+    _table,
+    _uncertainty,
+)
+from ._fit_friction import run_friction
 from ._options import (
     add_command,
     add_output_options,
-    command_line,
     deprecated_alias,
     emit,
     show_together,
-    si_parameters,
     write_failure,
 )
-from ._options import cylinder as _cylinder
 
 __all__ = ["register"]
 
@@ -60,22 +71,6 @@ _EXAMPLES = {
         "10% --radius 50e-9 --modulus 51.7e9 --work-of-adhesion 0.1 --z0 0.3e-9",
     ],
 }
-
-
-#: The largest shear strength [Pa] a measured width may give: a thousand times the stiffest
-#: modulus there is (beyond, the inputs are in other units, and the draws would overflow).
-_TAU_MAX = 1e15
-
-
-def _sd(text: str) -> tuple[float, bool]:
-    """A standard uncertainty: a number, or a percentage of the value (``5%``)."""
-    t = text.strip()
-    rel = t.endswith("%")
-    body = t[:-1] if rel else t
-    if "%" in body or "_" in body:
-        raise ValueError(text)
-    v = float(body)
-    return (v / 100 if rel else v), rel
 
 
 def register(sub: Any) -> None:
@@ -221,168 +216,12 @@ def _show_pairs(p: argparse.ArgumentParser, name: str) -> None:
 
 
 # --------------------------------------------------------------------------------------------
-# the modulus
-
-
-def _check_common(args: argparse.Namespace) -> None:
-    """--samples, --seed and --plot, before any work."""
-    if not 10 <= args.samples <= 1_000_000:
-        raise ValueError(f"--samples must be an integer in [10, 1000000], got {args.samples}")
-    if args.seed < 0:
-        raise ValueError(f"--seed must be an integer >= 0, got {args.seed}")
-    if args.plot:
-        parent = os.path.dirname(os.path.abspath(args.plot))
-        if not os.path.isdir(parent):
-            raise ValueError(f"--plot {args.plot!r}: the directory {parent!r} does not exist")
-
-
-def _modulus(args: argparse.Namespace) -> tuple[float, dict[str, Any]]:
-    """The composite modulus [Pa] from --modulus, the moduli or the presets, and its record."""
-    if args.modulus is not None:
-        if any(getattr(args, k) is not None for k in ("E1", "nu1", "E2", "nu2")) or (
-            args.cylinder_material or args.substrate_material
-        ):
-            raise ValueError(
-                "give either --modulus or the materials (--E1 ... or presets), not both"
-            )
-        if not (math.isfinite(args.modulus) and args.modulus > 0):
-            raise ValueError(f"--modulus must be a finite number > 0, got {args.modulus!r}")
-        return args.modulus, {"modulus_Pa": args.modulus}
-    # the SI layer's reader of the materials and presets (a radius and a range of its own,
-    # unused: the radius given is checked where it is used, with the adhesion given)
-    ns = argparse.Namespace(**vars(args))
-    ns.radius = 1e-7
-    ns.h, ns.sigma0, ns.work_of_adhesion, ns.z0, ns.length = 1e-9, None, None, None, None
-    cyl = _cylinder(ns)
-    # the moduli as used, with the presets' names and sources (a preset never hides them)
-    keep = ("modulus_Pa", "E1_Pa", "nu1", "E2_Pa", "nu2", "dundurs_beta")
-    rec = {
-        k: v
-        for k, v in si_parameters(ns, cyl).items()
-        if k in keep or k.endswith(("_material", "_source"))
-    }
-    return cyl.modulus, rec
-
-
-def _read(args: argparse.Namespace, kind: Any) -> dict[str, np.ndarray]:
-    """The measurements of ``--data`` (:func:`linecontact.measurements.read_measurements`)."""
-    return read_measurements(
-        args.data, kind, length=args.length, source=f"--data {args.data!r}", length_name="--length"
-    )
-
-
-def _one_sd(args, name: str, value: float | None) -> float:
-    text = getattr(args, name + "_sd", None)
-    if text is None:
-        return 0.0
-    flag = "--" + name.replace("_", "-") + "-sd"
-    try:
-        v, rel = _sd(text)
-    except ValueError:
-        raise ValueError(f"{flag} must be a number or a percentage (5%), got {text!r}") from None
-    if not (math.isfinite(v) and v >= 0):
-        raise ValueError(f"{flag} must be finite and >= 0, got {text!r}")
-    if value is None:
-        raise ValueError(f"{flag} needs --{name.replace('_', '-')}")
-    if not math.isfinite(value):  # the value's fault, not its uncertainty's
-        raise ValueError(f"--{name.replace('_', '-')} must be a finite number, got {value!r}")
-    sd = abs(value) * v if rel else v
-    # the Monte Carlo draws around the value: an uncertainty as large as the value itself
-    # draws as many non-physical values as physical ones (and 1e300 overflows)
-    if not sd <= abs(value):
-        raise ValueError(
-            f"{flag} must be at most the value itself ({abs(value)!r}, 100%): a larger standard "
-            f"uncertainty leaves no physical value to draw, got {text!r}"
-        )
-    return sd
-
-
-def _record(result: Any, keys: tuple[tuple[str, str], ...]) -> dict[str, Any]:
-    """The fields (and derived properties) of a fit's result under their JSON keys."""
-    d = {**result.to_dict(), **{k: getattr(result, k) for k in type(result).derived}}
-    return {key: list(d[k]) if isinstance(d[k], tuple) else d[k] for k, key in keys}
-
-
-#: The JSON keys of an AdhesionFit's fields, in the output's order.
-_FIT = (
-    ("work_of_adhesion", "work_of_adhesion"),
-    ("work_of_adhesion_sd", "work_of_adhesion_sd"),
-    ("work_of_adhesion_ci95", "work_of_adhesion_ci95"),
-    ("work_of_adhesion_ci95_linear", "work_of_adhesion_ci95_linear"),
-    ("equilibrium_spacing", "z0"),
-    ("equilibrium_spacing_sd", "z0_sd"),
-    ("equilibrium_spacing_ci95", "z0_ci95"),
-    ("equilibrium_spacing_ci95_linear", "z0_ci95_linear"),
-    ("correlation", "correlation"),
-    ("covariance", "covariance"),
-    ("identifiable", "identifiable"),
-    ("note", "note"),
-    ("chi2", "chi2"),
-    ("dof", "dof"),
-)
-_FIT_INPUTS_SD = (
-    ("work_of_adhesion_sd_inputs", "work_of_adhesion_sd_inputs"),
-    ("equilibrium_spacing_sd_inputs", "z0_sd_inputs"),
-    ("work_of_adhesion_sd_total", "work_of_adhesion_sd_total"),
-    ("equilibrium_spacing_sd_total", "z0_sd_total"),
-)
-_FIT_DATA = (("model", "model_N_per_m"), ("residuals", "residuals_N_per_m"))
-#: An Estimate's fields, ``{}`` the quantity's JSON name.
-_ESTIMATE = (
-    ("value", "{}"),
-    ("sd", "{}_sd"),
-    ("ci95", "{}_ci95"),
-    ("sd_linear", "{}_sd_linear"),
-    ("ci95_linear", "{}_ci95_linear"),
-)
-
-
-#: What a fit of one measurement with no standard uncertainty given says of its uncertainty.
-EXACT = "exact (one measurement, no uncertainty given)"
-
-
-class _Interval(list):
-    """A 95 % interval ``[lo, hi]``: the table prints it at six digits, JSON and CSV in full."""
-
-    def __str__(self) -> str:
-        return "[" + ", ".join("-" if x is None else f"{x:.6g}" for x in self) + "]"
-
-
-def _table(
-    args,
-    record: dict[str, Any],
-    params: dict[str, Any],
-    title: str,
-    units,
-    hide: tuple[str, ...] = (),
-) -> Table:
-    """One record as a table: its numbers and its 95 % intervals shown (not those in ``hide``).
-
-    The per-point lists and the linearised intervals are in the JSON and CSV only.
-    """
-    cols = {}
-    show = []
-    for k, v in record.items():
-        if isinstance(v, (list, tuple, np.ndarray)):
-            arr = np.empty(1, dtype=object)
-            items = [
-                None if (isinstance(x, float) and not math.isfinite(x)) else x
-                for x in np.asarray(v, dtype=object).tolist()
-            ]
-            interval = "_ci95" in k and "linear" not in k and "per_point" not in k
-            arr[0] = _Interval(items) if interval else items
-            cols[k] = arr
-            if interval and k not in hide:
-                show.append(k)
-        else:
-            cols[k] = np.asarray([v])
-            if k not in hide:
-                show.append(k)
-    return Table(cols, params, units, command_line(args), title, show=tuple(show))
-
-
-# --------------------------------------------------------------------------------------------
 # fit-adhesion
+
+
+def _cmd_friction(args: argparse.Namespace) -> int:
+    """``fit-friction``, registered here; its work is :func:`._fit_friction.run_friction`."""
+    return run_friction(args)
 
 
 def _cmd_adhesion(args: argparse.Namespace) -> int:
@@ -608,297 +447,3 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
     return rec, f"work of adhesion from {what}" + (
         "" if rec["uncertainty"] == EXACT else " (Monte Carlo)"
     )
-
-
-def _uncertainty(given: list[str], samples: int) -> str:
-    """Where the uncertainty of one measurement comes from: the sds ``given`` (flags), or none."""
-    if not given:
-        return EXACT
-    return f"propagated from {', '.join(given)} (Monte Carlo, {samples} samples)"
-
-
-# --------------------------------------------------------------------------------------------
-# fit-friction
-
-
-def _friction_from_width(args: argparse.Namespace) -> int:
-    """tau0 = (f - dw)/(2 a) from one friction force and one measured half-width (no model)."""
-    if args.data is not None:
-        raise ValueError("--half-width is one measured width: give it without --data")
-    if args.friction_force is None:
-        raise ValueError("--half-width needs the friction force measured with it: --friction-force")
-    if not (math.isfinite(args.friction_force) and args.friction_force > 0):
-        raise ValueError(
-            f"--friction-force must be a finite number > 0, got {args.friction_force!r}"
-        )
-    if not (math.isfinite(args.half_width) and args.half_width > 0):
-        raise ValueError(f"--half-width must be a finite number > 0, got {args.half_width!r}")
-    if args.receding_work_of_adhesion is not None and args.work_of_adhesion is None:
-        raise ValueError("--work-of-adhesion-receding needs the advancing --work-of-adhesion")
-    model = [
-        f
-        for f, v in (
-            ("--radius", args.radius),
-            ("--modulus", args.modulus),
-            ("--E1", args.E1),
-            ("--E2", args.E2),
-            ("--z0", args.z0),
-            ("--cylinder-material", args.cylinder_material),
-            ("--substrate-material", args.substrate_material),
-        )
-        if v is not None
-    ] + (["--contact"] if args.contact != "maugis-dugdale" else [])
-    if model:
-        raise ValueError(
-            f"{', '.join(model)}: not used with --half-width (a measured width needs no contact "
-            "model)"
-        )
-    if (
-        args.receding_work_of_adhesion is not None
-        and args.receding_work_of_adhesion < args.work_of_adhesion
-    ):
-        raise ValueError(
-            "--work-of-adhesion-receding must be at least --work-of-adhesion (the hysteresis "
-            "is not negative)"
-        )
-    dw = (
-        args.receding_work_of_adhesion - args.work_of_adhesion
-        if args.receding_work_of_adhesion is not None
-        else 0.0
-    )
-    values = dict(friction_force=args.friction_force, half_width=args.half_width)
-    tau = (args.friction_force - dw) / (2 * args.half_width)
-    if not tau <= _TAU_MAX:  # drawing around it would overflow; no material is that strong
-        raise ValueError(
-            f"--friction-force {args.friction_force!r} N/m over --half-width "
-            f"{args.half_width!r} m gives a shear strength of {tau:.3g} Pa, beyond any "
-            f"material (above {_TAU_MAX:g} Pa): are they in N/m and m?"
-        )
-    sds = dict(
-        friction_force=_one_sd(args, "friction_force", args.friction_force),
-        half_width=_one_sd(args, "half_width", args.half_width),
-    )
-    est = inv.propagate(
-        lambda friction_force, half_width: (friction_force - dw) / (2 * half_width),
-        values,
-        sds,
-        n_samples=args.samples,
-        seed=args.seed,
-    )
-    if est.value <= 0:
-        raise ValueError(
-            f"--friction-force {args.friction_force!r} N/m does not exceed the adhesion "
-            f"hysteresis {dw:.6g} J/m^2: no positive shear strength"
-        )
-    given = [f"--{k.replace('_', '-')}-sd" for k, v in sds.items() if v]
-    rec = {
-        **_record(est, tuple((k, key.format("tau0") + "_Pa") for k, key in _ESTIMATE[:4])),
-        "uncertainty": _uncertainty(given, args.samples),
-        "half_width_m": args.half_width,
-    }
-    hide = ("tau0_sd_Pa", "tau0_ci95_Pa", "tau0_sd_linear_Pa") if not given else ()
-    params: dict[str, Any] = dict(
-        friction_force_N_per_m=args.friction_force,
-        half_width_m=args.half_width,
-        hysteresis_J_per_m2=dw,
-        contact="measured width",
-        samples=args.samples,
-        seed=args.seed,
-    )
-    title = "interfacial shear strength from a measured contact width"
-    emit(args, _table(args, rec, params, title, {"tau0_ci95_Pa": "Pa"}, hide))
-    return 0
-
-
-def _cmd_friction(args: argparse.Namespace) -> int:
-    _check_common(args)
-    if args.half_width is not None:
-        return _friction_from_width(args)
-    if args.data is not None and args.friction_force_sd is not None:
-        raise ValueError(
-            "--friction-force-sd is for one measurement: with --data give the uncertainties "
-            "in the file, an sd column right after the friction forces"
-        )
-    E, mat = _modulus(args)
-    params: dict[str, Any] = dict(mat)
-    if args.radius is None or args.work_of_adhesion is None or args.z0 is None:
-        raise ValueError(
-            "the contact width needs the cylinder: give --radius, --work-of-adhesion and --z0 "
-            "(with the modulus or the materials)"
-        )
-    if args.length is not None and not (math.isfinite(args.length) and args.length > 0):
-        raise ValueError(f"--length must be a finite number > 0, got {args.length!r}")
-    if args.data is not None:
-        if args.friction_force is not None or args.normal_load is not None:
-            raise ValueError("give either --data FILE or one measurement (--load, ...)")
-        data = _read(args, "friction")
-        F, f = data["normal_load"], data["friction_force"]
-        f_sd = data.get("friction_force_sd", np.zeros_like(f))
-        lines = data["line"]
-        n = F.size
-    else:
-        if args.friction_force is None or args.normal_load is None:
-            raise ValueError("give --data FILE, or one measurement: --load and --friction-force")
-        F, f = np.array([args.normal_load]), np.array([args.friction_force])
-        lines = np.array([0])
-        f_sd = np.array([_one_sd(args, "friction_force", args.friction_force)])
-        n = 1
-    w_sd = _one_sd(args, "work_of_adhesion", args.work_of_adhesion)
-    R_sd = _one_sd(args, "radius", args.radius)
-    E_sd = _one_sd(args, "modulus", E)
-    z_sd = _one_sd(args, "z0", args.z0)
-    common = dict(
-        radius=args.radius,
-        modulus=E,
-        work_of_adhesion=args.work_of_adhesion,
-        equilibrium_spacing=args.z0,
-    )
-
-    def tau_fn(contact, **kw):
-        def fn(friction_force, normal_load, radius, modulus, work_of_adhesion, equilibrium_spacing):
-            return inv.shear_strength_from_friction(
-                friction_force,
-                normal_load,
-                radius,
-                modulus,
-                work_of_adhesion,
-                equilibrium_spacing,
-                contact=contact,
-                **kw,
-            )
-
-        return fn
-
-    kw = {}
-    if args.receding_work_of_adhesion is not None:
-        kw["receding_work_of_adhesion"] = args.receding_work_of_adhesion
-    fn = tau_fn(args.contact, **kw)
-    try:
-        tau = np.asarray(fn(f, F, **common), float)
-    except ValueError as exc:
-        if args.data is None:
-            raise
-        for i in range(n):  # name the row that fails
-            try:
-                fn(f[i], F[i], **common)
-            except ValueError as one:
-                raise ValueError(f"--data {args.data!r}, row {int(lines[i])}: {one}") from None
-        raise exc
-    ests = [
-        inv.propagate(
-            fn,
-            dict(friction_force=f[i], normal_load=F[i], **common),
-            dict(
-                friction_force=f_sd[i],
-                radius=R_sd,
-                modulus=E_sd,
-                work_of_adhesion=w_sd,
-                equilibrium_spacing=z_sd,
-            ),
-            n_samples=args.samples,
-            seed=args.seed + i,
-        )
-        for i in range(n)
-    ]
-    sd = np.array([e.sd for e in ests])
-    combined = inv.fit_shear_strength(
-        fn,
-        f,
-        F,
-        f_sd,
-        common,
-        dict(radius=R_sd, modulus=E_sd, work_of_adhesion=w_sd, equilibrium_spacing=z_sd),
-        args.samples,
-        args.seed,
-    )
-    others: dict[str, list[float]] = {}
-    for c in ("jkr", "dmt", "hertz"):  # point by point: a model may have no contact at one
-        others[c] = []
-        for i in range(n):
-            try:
-                others[c].append(float(tau_fn(c)(f[i], F[i], **common)))
-            except ValueError:
-                others[c].append(math.nan)
-    rec: dict[str, Any] = {
-        **_record(
-            combined,
-            (
-                ("tau0", "tau0_Pa"),
-                ("tau0_sd", "tau0_sd_Pa"),
-                ("tau0_ci95", "tau0_ci95_Pa"),
-                ("birge_ratio", "birge_ratio"),
-            ),
-        ),
-        "uncertainty": _friction_uncertainty(args, f_sd, n, (R_sd, E_sd, w_sd, z_sd)),
-        "n_points": n,
-        "normal_load_N_per_m": F.tolist(),
-        "friction_force_N_per_m": f.tolist(),
-        "tau0_per_point_Pa": tau.tolist(),
-        "tau0_per_point_sd_Pa": sd.tolist(),
-        "tau0_per_point_ci95_Pa": [list(e.ci95) for e in ests],
-        "tau0_jkr_Pa": others["jkr"],
-        "tau0_dmt_Pa": others["dmt"],
-        "tau0_hertz_Pa": others["hertz"],
-    }
-    params.update(
-        radius_m=args.radius,
-        work_of_adhesion_J_per_m2=args.work_of_adhesion,
-        z0_m=args.z0,
-        contact=args.contact,
-        samples=args.samples,
-        seed=args.seed,
-    )
-    if args.data is not None:
-        params["data"] = os.fspath(args.data)
-    if args.receding_work_of_adhesion is not None:
-        params["receding_work_of_adhesion_J_per_m2"] = args.receding_work_of_adhesion
-    if args.plot:
-        from ..figures.fit import draw_friction_fit
-
-        try:
-            draw_friction_fit(
-                F,
-                f,
-                tau,
-                np.array([e.ci95 for e in ests]),
-                {k.upper() if k != "hertz" else "Hertz": np.asarray(v) for k, v in others.items()},
-                args.plot,
-                friction_sd=f_sd,
-                combined=(combined.tau0, combined.tau0_ci95),
-            )
-        except OSError as exc:
-            raise write_failure(f"--plot {args.plot!r}", exc) from None
-    units = {"n_points": "1", "birge_ratio": "1", "tau0_per_point_ci95_Pa": "Pa"}
-    hide = ("tau0_sd_Pa", "tau0_ci95_Pa", "birge_ratio") if rec["uncertainty"] == EXACT else ()
-    emit(
-        args,
-        _table(
-            args,
-            rec,
-            params,
-            f"interfacial shear strength from {n} friction force(s) ({args.contact} contact)",
-            units,
-            hide,
-        ),
-    )
-    return 0
-
-
-def _friction_uncertainty(args, f_sd: np.ndarray, n: int, shared: tuple[float, ...]) -> str:
-    """Where the uncertainty of a fitted tau0 comes from: the sds given, the scatter, or none."""
-    given = [
-        flag
-        for flag, v in (
-            ("--friction-force-sd" if args.data is None else "the friction forces' sd", f_sd),
-            ("--radius-sd", shared[0]),
-            ("--modulus-sd", shared[1]),
-            ("--work-of-adhesion-sd", shared[2]),
-            ("--z0-sd", shared[3]),
-        )
-        if np.any(np.asarray(v) > 0)
-    ]
-    if given:
-        return _uncertainty(given, args.samples)
-    if n < 2:
-        return EXACT
-    return f"the scatter of the {n} points (no uncertainty given): Student's t"
