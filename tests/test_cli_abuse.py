@@ -13,7 +13,7 @@ import sys
 
 import pytest
 
-import linecontact.cli.normal as cli_normal
+import linecontact.operations.normal as cli_normal
 import linecontact.output as output
 from linecontact.cli import main
 

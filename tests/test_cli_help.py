@@ -77,7 +77,12 @@ print("MODULES", " ".join(mods), "|", " ".join(heavy), file=sys.stderr)
         (["--help"], ["linecontact.cli._messages", "linecontact.cli._options"]),
         (
             ["normal", "--a-over-R", "0.02", "--R-over-h", "100", "--sigma0-over-E", "0.01"],
-            ["linecontact.cli._messages", "linecontact.cli._options", "linecontact.cli.normal"],
+            [
+                "linecontact.cli._build",
+                "linecontact.cli._messages",
+                "linecontact.cli._options",
+                "linecontact.cli.normal",
+            ],
         ),
         (
             ["slide-init", "--help"],

@@ -37,7 +37,10 @@ from pathlib import Path
 
 import pytest
 
-CLI = Path(__file__).resolve().parents[1] / "src" / "linecontact" / "cli"
+SRC = Path(__file__).resolve().parents[1] / "src" / "linecontact"
+CLI = SRC / "cli"
+#: the shells' modules and the operations they are built from (the commands' code)
+SHELL_FILES = sorted([*CLI.glob("*.py"), *(SRC / "operations").glob("*.py")])
 
 #: the names of SI scales, SI inputs and the fibre length as the shells spell them
 SI_NAMES = frozenset(
@@ -120,7 +123,7 @@ def unit_arithmetic(source: str) -> list[str]:
     return sorted(found, key=lambda s: int(s.split(":")[0]))
 
 
-@pytest.mark.parametrize("path", sorted(CLI.glob("*.py")), ids=lambda p: p.name)
+@pytest.mark.parametrize("path", SHELL_FILES, ids=lambda p: f"{p.parent.name}/{p.name}")
 def test_cli_does_no_unit_arithmetic(path: Path) -> None:
     found = unit_arithmetic(path.read_text(encoding="utf-8"))
     assert not found, f"{path.name} converts units itself:\n" + "\n".join(found)

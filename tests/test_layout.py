@@ -26,6 +26,7 @@ FLOORS = {
         "linecontact.domain",
         "linecontact.results",
         "linecontact.units",
+        "linecontact.output",
     ],
     "core": [
         "linecontact._numerics",
@@ -54,8 +55,8 @@ FLOORS = {
         "linecontact.uncertainty",
         "linecontact.measurements",
     ],
+    "operations": ["linecontact.operations"],
     "shells": [
-        "linecontact.output",
         "linecontact.reading",
         "linecontact.cli",
         "linecontact.figures",

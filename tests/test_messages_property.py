@@ -677,7 +677,7 @@ def test_a_full_disk_under_the_figures_names_their_directory(tmp_path, monkeypat
 )  # fmt: skip
 def test_a_failed_write_of_a_command_is_not_blamed_on_standard_output(monkeypatch, error, said):
     # a write the command makes itself (not through -o): stdout is fine, the file is not
-    import linecontact.cli.normal as cli_normal
+    import linecontact.operations.normal as cli_normal
 
     def failing(*args: Any, **kwargs: Any):
         raise error

@@ -39,3 +39,16 @@ class UnitsWarning(ModelValidityWarning):
     A :class:`ModelValidityWarning` (its catchers catch it too); the command line prints it
     even with ``--quiet``, which silences the model notes (coupling, small strain) only.
     """
+
+
+class ParameterError(ValueError):
+    """An input refused, with the name of the parameter it was given as.
+
+    ``parameter`` is the name as the caller spelled it (a keyword, an HTTP field, a query
+    key); each shell says it in its own spelling (``--radius`` on the command line, the
+    field on a page).
+    """
+
+    def __init__(self, parameter: str, message: str) -> None:
+        super().__init__(message)
+        self.parameter = parameter

@@ -9,7 +9,6 @@ flags; :func:`flag_message` turns the API's parameter names into the flags the u
 from __future__ import annotations
 
 import argparse
-import math
 import sys
 import textwrap
 from collections.abc import Sequence
@@ -17,10 +16,24 @@ from typing import Any
 
 import numpy as np
 
-from ..cylinder import _ZERO_WIDTH, Cylinder, _warn_widths
-from ..domain import check_si
+from ..operations._common import (  # noqa: F401 - the subcommands' names for them, kept here
+    MAX_POINTS,
+    SI_KEYS,
+    _check_lennard_jones_groups,
+    _positive,
+    _presets,
+    _work_flag,
+    check_widths,
+    cylinder,
+    groups,
+    half_widths,
+    null_missing,
+    si_columns,
+    si_given,
+    si_loads,
+    si_parameters,
+)
 from ..output import FORMATS, Table, write
-from ..presets import Material, material_names
 from ._messages import (  # noqa: F401 - the subcommands' names for them, kept here
     _NEGATIVE_NUMBER,
     API_FLAGS,
@@ -29,25 +42,6 @@ from ._messages import (  # noqa: F401 - the subcommands' names for them, kept h
     flag_message,
     is_units_warning,
     write_failure,
-)
-
-#: Most points a range option may ask for (1e9 exhausted the memory instead of failing).
-MAX_POINTS = 1_000_000
-
-#: The SI inputs of the materials and adhesion (their presence switches to SI mode).
-SI_KEYS = (
-    "radius",
-    "modulus",
-    "E1",
-    "nu1",
-    "E2",
-    "nu2",
-    "cylinder_material",
-    "substrate_material",
-    "sigma0",
-    "h",
-    "work_of_adhesion",
-    "z0",
 )
 
 
@@ -261,11 +255,15 @@ def add_output_options(p: argparse.ArgumentParser, image_alias: bool = False) ->
     )
 
 
-def emit(args: argparse.Namespace, table: Table) -> None:
-    """Write ``table`` as asked (stdout, ``-o FILE``; a sweep's ``args._capture`` list)."""
+def emit(args: argparse.Namespace, table: Table, checked: bool = False) -> None:
+    """Write ``table`` as asked (stdout, ``-o FILE``; a sweep's ``args._capture`` list).
+
+    ``checked``: its SI widths were checked by the operation that computed it.
+    """
     if args.indent is not None and not 0 <= args.indent <= 16:
         raise ValueError(f"--indent must be an integer in [0, 16], got {args.indent}")
-    _check_widths(table)
+    if not checked:
+        check_widths(table)
     ext = "" if args.output is None else args.output.rsplit(".", 1)[-1].lower()
     fmt = args.format or (ext if ext in FORMATS and ext != "table" else "table")
     if getattr(args, "_capture", None) is not None:  # linecontact.sweeps: kept, not written
@@ -285,30 +283,6 @@ def emit(args: argparse.Namespace, table: Table) -> None:
             raise write_failure(f"-o/--output {args.output!r}", exc) from None
         if not args.quiet:
             print(f"wrote {args.output}", file=sys.stderr)
-
-
-#: The SI contact half-width columns [m] whose values are checked by :func:`_check_widths`.
-_WIDTHS = {
-    "a_m": "the contact half-width",
-    "a_at_pulloff_m": "the contact half-width at pull-off",
-    "a_rest_m": "the contact half-width at rest",
-    "a_slide_m": "the contact half-width while sliding",
-}
-
-
-def _check_widths(table: Table) -> None:
-    """Warn for SI contact half-widths that are no physical width (below 1 fm, above R).
-
-    A load curve starts from zero width on purpose: its widths are not checked.
-    """
-    R = table.parameters.get("radius_m")
-    if R is None or "branch" in table.columns:
-        return
-    zero = "mechanism" in table.columns and np.any(table.columns["mechanism"] == "zero-width")
-    for name, what in _WIDTHS.items():
-        if name in table.columns:
-            why = _ZERO_WIDTH if zero and name == "a_at_pulloff_m" else ""
-            _warn_widths(table.columns[name], R, what, why)
 
 
 class NoPointError(Exception):
@@ -331,28 +305,6 @@ def finish(table: Table, good: str | tuple[str, ...]) -> int:
     raise NoPointError(reasons[0] if reasons else "no point could be computed")
 
 
-def null_missing(table: Table, missing: np.ndarray, keep: Sequence[str]) -> Table:
-    """The points without a state with missing values: floats NaN (JSON null), flags False.
-
-    The columns in ``keep`` (the point's own input, its state and reason) are kept.
-    """
-    if not np.any(missing):
-        return table
-    cols = {}
-    for k, v in table.columns.items():
-        if k in keep:
-            cols[k] = v
-        elif v.dtype.kind == "f":
-            cols[k] = np.where(missing, np.nan, v)
-        elif v.dtype.kind == "b":
-            cols[k] = np.where(missing, False, v)
-        else:
-            cols[k] = v
-    return Table(
-        cols, table.parameters, table.units, table.command, table.title, table.scales, table.show
-    )
-
-
 def command_line(args: argparse.Namespace) -> list[str]:
     """The command line as given (for the provenance block)."""
     argv = args.argv if args.argv is not None else sys.argv[1:]
@@ -361,11 +313,6 @@ def command_line(args: argparse.Namespace) -> list[str]:
 
 # --------------------------------------------------------------------------------------------
 # material, adhesion and geometry in SI units
-
-
-def _positive(flag: str, value: float | None) -> None:
-    if value is not None and not (math.isfinite(value) and value > 0):
-        raise ValueError(f"{flag} must be a finite number > 0, got {value!r}")
 
 
 def add_si_materials(p: argparse.ArgumentParser, range_flag: str = "--h") -> Any:
@@ -458,127 +405,6 @@ def add_si_materials(p: argparse.ArgumentParser, range_flag: str = "--h") -> Any
     return si
 
 
-def _work_flag(range_flag: str) -> str:
-    """The flag of the one work of adhesion (with ``--z0``): advancing where h2 is the range."""
-    return "--work-of-adhesion-advancing" if range_flag == "--h2" else "--work-of-adhesion"
-
-
-def si_given(args: argparse.Namespace, extra: Sequence[str] = ()) -> bool:
-    """Whether any SI input (or one of ``extra``) was given.
-
-    ``--length`` alone is refused: it scales SI forces and means nothing without them.
-    """
-    si = any(getattr(args, k, None) is not None for k in (*SI_KEYS, *extra))
-    if not si and getattr(args, "length", None) is not None:
-        raise ValueError(
-            "--length [m] gives the totals of SI forces: give --radius and the materials too"
-        )
-    return si
-
-
-def cylinder(args: argparse.Namespace, range_flag: str = "--h") -> Cylinder:
-    """The :class:`Cylinder` of the SI inputs, with errors that name the flags."""
-    work = _work_flag(range_flag)
-    if args.radius is None:
-        raise ValueError("SI inputs need --radius [m]")
-    if args.h is None and args.work_of_adhesion is None and args.z0 is None:
-        raise ValueError(
-            f"SI inputs need the adhesion range {range_flag} [m] (it sets R/h even without "
-            f"adhesion), or {work} with --z0"
-        )
-    if (args.sigma0 is not None or args.h is not None) and (
-        args.work_of_adhesion is not None or args.z0 is not None
-    ):
-        raise ValueError(
-            f"give adhesion either as --sigma0 and {range_flag}, or as {work} and --z0, not both"
-        )
-    if (args.work_of_adhesion is None) != (args.z0 is None):
-        raise ValueError(f"give both {work} and --z0")
-    _positive("--length", args.length)
-    adh = dict(
-        cohesive_stress=args.sigma0,
-        adhesion_range=args.h,
-        work_of_adhesion=args.work_of_adhesion,
-        equilibrium_spacing=args.z0,
-    )
-    mats = (args.E1, args.nu1, args.E2, args.nu2)
-    presets = _presets(args)
-    if args.modulus is not None:
-        if any(m is not None for m in presets):
-            raise ValueError(
-                "give either --modulus or the materials (--cylinder-material, "
-                "--substrate-material), not both"
-            )
-        if any(v is not None for v in mats):
-            raise ValueError("give either --modulus or --E1 --nu1 --E2 --nu2, not both")
-        return Cylinder.from_modulus(args.radius, args.modulus, **adh)
-    for m, E, nu, flags, body in (
-        (presets[0], args.E1, args.nu1, "--E1 --nu1", "cylinder"),
-        (presets[1], args.E2, args.nu2, "--E2 --nu2", "substrate"),
-    ):
-        if m is not None and (E is not None or nu is not None):
-            raise ValueError(f"give the {body} either as --{body}-material or as {flags}, not both")
-    E1, nu1 = (args.E1, args.nu1) if presets[0] is None else (presets[0].E, presets[0].nu)
-    E2, nu2 = (args.E2, args.nu2) if presets[1] is None else (presets[1].E, presets[1].nu)
-    if any(v is None for v in (E1, nu1, E2, nu2)):
-        raise ValueError(
-            "SI inputs need --modulus, or the materials: --cylinder-material or --E1 --nu1, "
-            "and --substrate-material or --E2 --nu2"
-        )
-    return Cylinder.from_materials(args.radius, E1, nu1, E2, nu2, **adh)
-
-
-def _presets(args: argparse.Namespace) -> tuple[Material | None, Material | None]:
-    """The presets of ``--cylinder-material`` and ``--substrate-material`` (None: not given)."""
-    out: list[Material | None] = []
-    for key, flag in (
-        ("cylinder_material", "--cylinder-material"),
-        ("substrate_material", "--substrate-material"),
-    ):
-        name = getattr(args, key, None)
-        if name is None:
-            out.append(None)
-            continue
-        try:
-            out.append(Material.from_name(name))
-        except ValueError:
-            raise ValueError(
-                f"{flag} {name!r} is not a material preset: one of "
-                f"{', '.join(material_names())} (linecontact materials lists them)"
-            ) from None
-    return out[0], out[1]
-
-
-def si_parameters(args: argparse.Namespace, cyl: Cylinder) -> dict[str, Any]:
-    """The SI inputs as given and as used, for the provenance block (units in the names)."""
-    params: dict[str, Any] = {"radius_m": cyl.radius, "modulus_Pa": cyl.modulus}
-    m1, m2 = _presets(args)
-    for m, body, E, nu in ((m1, "cylinder", "E1", "nu1"), (m2, "substrate", "E2", "nu2")):
-        if m is not None:  # a preset never hides its numbers
-            params[f"{body}_material"] = m.name
-            params[f"{body}_source"] = m.source
-            params[f"{E}_Pa"] = m.E
-            params[nu] = m.nu
-        else:
-            for key, name in ((E, f"{E}_Pa"), (nu, nu)):
-                v = getattr(args, key, None)
-                if v is not None:
-                    params[name] = v
-    for key, name in (
-        ("work_of_adhesion", "work_of_adhesion_J_per_m2"),
-        ("z0", "z0_m"),
-    ):
-        v = getattr(args, key, None)
-        if v is not None:
-            params[name] = v
-    params.update(
-        sigma0_Pa=cyl.cohesive_stress, h_m=cyl.adhesion_range, dundurs_beta=cyl.dundurs_beta
-    )
-    if args.length is not None:
-        params["length_m"] = args.length
-    return params
-
-
 def add_groups(p: argparse.ArgumentParser, g: Any = None) -> None:
     """The groups ``--R-over-h``, ``--sigma0-over-E`` and the SI inputs that replace them.
 
@@ -593,55 +419,6 @@ def add_groups(p: argparse.ArgumentParser, g: Any = None) -> None:
         help="adhesive stress over composite modulus, >= 0 (0: Hertz)",
     )
     add_si_materials(p)
-
-
-def groups(args: argparse.Namespace) -> tuple[float, float, Cylinder | None]:
-    """``(R/h, sigma0/E, Cylinder or None)`` from the groups or the SI inputs."""
-    si = si_given(args)
-    nd = args.R_over_h is not None or args.sigma0_over_E is not None
-    if si and nd:
-        raise ValueError(
-            "give either the nondimensional groups (--R-over-h, --sigma0-over-E) or SI inputs "
-            "(--radius, ...), not both"
-        )
-    if not si:
-        if args.R_over_h is None or args.sigma0_over_E is None:
-            raise ValueError("give --R-over-h and --sigma0-over-E (or SI inputs with --radius)")
-        if getattr(args, "law", None) == "lennard-jones" and args.command != "pulloff":
-            _check_lennard_jones_groups(args.R_over_h, args.sigma0_over_E)
-        return args.R_over_h, args.sigma0_over_E, None
-    cyl = cylinder(args)
-    if getattr(args, "law", None) == "lennard-jones":
-        # its domain said for this cylinder, in SI units (the pull-off: every mu)
-        cyl._check_lennard_jones(pull_off=getattr(args, "command", None) == "pulloff")
-    return cyl.R_over_h, cyl.sigma0_over_E, cyl
-
-
-def _check_lennard_jones_groups(rho: float, s: float) -> None:
-    """The groups inside the domain of the Lennard-Jones solver, said in the flags' terms.
-
-    Its own group ``w sqrt(R/z0)/(E z0)`` is ``--sigma0-over-E sqrt(--R-over-h)`` over
-    ``S^(3/2)`` (``S = 16/(9 sqrt 3)``, the Maugis matching): up to 400 for contacts and load
-    curves (the pull-off at any value).
-    """
-    from ..domain import DOMAIN, check
-    from ..lennard_jones import maugis_parameter_of_mu
-    from ..materials import MAUGIS_STRENGTH
-
-    check("--R-over-h", rho, "R_over_h")
-    check("--sigma0-over-E", s, "sigma0_over_E")
-    hi = DOMAIN["lj_mu"][2]
-    k = MAUGIS_STRENGTH**1.5
-    value = s * math.sqrt(rho) / k
-    if value > hi:
-        lam = float(maugis_parameter_of_mu(hi))
-        raise ValueError(
-            f"under the Lennard-Jones law --sigma0-over-E sqrt(--R-over-h) / {k:.4g} = "
-            f"{value:.4g} must be at most {hi:g} for contacts and load curves (a Tabor-Maugis "
-            f"parameter up to {lam:.3g}; the pull-off at any value): use --law dugdale, or "
-            f"--sigma0-over-E below {s * hi / value:.3g}, or --R-over-h below "
-            f"{rho * (hi / value) ** 2:.3g}"
-        )
 
 
 # --------------------------------------------------------------------------------------------
@@ -675,65 +452,6 @@ def add_width_options(p: Any, load_flag: str, load_help: str) -> None:
     deprecated_alias(p, "--a", "--half-width")
 
 
-def half_widths(args: argparse.Namespace, cyl: Cylinder | None, load_attr: str):
-    """Contact half-widths: a/R (``--a-over-R``, ``--a-over-R-range``) or a [m] (``--half-width``).
-
-    None for loads. The SI half-widths are for the cylinder's methods.
-
-    Exactly one of those, ``--<load_attr>`` or ``--load`` [N/m] must be given.
-    """
-    flag = "--" + load_attr.replace("_", "-")
-    given = [
-        args.a_over_R is not None,
-        args.a_over_R_range is not None,
-        getattr(args, load_attr) is not None,
-        args.a is not None,
-        args.load is not None,
-    ]
-    if sum(given) != 1:
-        raise ValueError(
-            f"give exactly one of --a-over-R, --a-over-R-range, {flag}, --half-width [m] or "
-            "--load [N/m]"
-        )
-    if (args.a is not None or args.load is not None) and cyl is None:
-        raise ValueError(
-            "--half-width and --load are SI inputs: give --radius and the materials too"
-        )
-    if cyl is not None and (given[0] or given[1] or given[2]):
-        raise ValueError(
-            f"--a-over-R, --a-over-R-range and {flag} are nondimensional: with SI inputs give "
-            "--half-width [m] or --load [N/m]"
-        )
-    if args.a_over_R_range is not None:
-        start, stop, num = args.a_over_R_range
-        for name, v in (("START", start), ("STOP", stop)):
-            if not (math.isfinite(v) and v > 0):
-                raise ValueError(f"--a-over-R-range {name} must be a finite number > 0, got {v!r}")
-        if not (math.isfinite(num) and float(num).is_integer() and 1 <= num <= MAX_POINTS):
-            raise ValueError(
-                f"--a-over-R-range NUM must be an integer in [1, {MAX_POINTS}], got {num!r}"
-            )
-        return np.linspace(start, stop, int(num))
-    if args.a_over_R is not None:
-        return np.asarray(args.a_over_R, float)
-    if args.a is not None:
-        a = np.asarray(args.a, float)
-        if not np.all(np.isfinite(a) & (a > 0)):
-            bad = a[~(np.isfinite(a) & (a > 0))][0]
-            raise ValueError(f"--half-width must be a finite number > 0, got {bad!r}")
-        key = "sliding_a_over_R" if load_attr == "F_over_Eh2" else "a_over_R"
-        check_si("--half-width", a, cyl.radius, key, "m")  # type: ignore[union-attr]
-        return a
-    return None
-
-
-def si_loads(args: argparse.Namespace, cyl: Cylinder, key: str) -> np.ndarray:
-    """``--load`` [N/m], inside ``key``'s domain (in units of ``E h``; ``E h2`` for sliding)."""
-    load = np.asarray(args.load, float)
-    check_si("--load", load, cyl.scale("Eh"), key, "N/m")
-    return load
-
-
 def record_flags(parser: argparse.ArgumentParser, args: argparse.Namespace) -> None:
     """Remember the flag of every option (by its dest), and which take choices.
 
@@ -749,23 +467,3 @@ def record_flags(parser: argparse.ArgumentParser, args: argparse.Namespace) -> N
             choices.update(longs)
     args._flags = flags
     args._choice_flags = choices
-
-
-def si_columns(
-    result: Any,
-    names: dict[str, str],
-    *,
-    totals: dict[str, str] | None = None,
-    length: float | None = None,
-) -> dict[str, Any]:
-    """The SI columns of an SI ``result`` of :class:`Cylinder`, under the record's keys.
-
-    ``names`` maps each SI field of ``result`` (``"load"``, ...) to its key (``"F_N_per_m"``),
-    in that order; with ``length`` [m] then ``totals`` maps each field of ``result.total``
-    (the field over the fibre) to its key (``"F_total_N"``). No arithmetic: a rename.
-    """
-    out = {key: getattr(result, name) for name, key in names.items()}
-    if length is not None and totals:
-        over = result.total(length)
-        out.update({key: over[name] for name, key in totals.items()})
-    return out

@@ -1,0 +1,75 @@
+"""The subcommands of the operations, built from their declarations (:mod:`linecontact.operations`).
+
+Each declared parameter becomes one option (its flag, its kind and count, its choices,
+default and help, its section); its old spellings deprecated aliases; the declared entries
+one help entry each. A run reads the parsed values into the operation's
+:class:`~linecontact.operations.Inputs`, computes, and writes the records as asked.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Callable, Iterable
+from typing import Any
+
+from ..operations import Inputs, Operation
+from ..operations import get as _get
+from ._options import (
+    add_command,
+    add_output_options,
+    deprecated_alias,
+    emit,
+    finish,
+    show_together,
+)
+
+__all__ = ["add_operations", "run"]
+
+_TYPES = {"number": float, "integer": int, "text": None}
+_NARGS = {"one": None, "several": "+", "triple": 3}
+
+
+def add_operations(
+    sub: Any, operations: Iterable[Operation], func: Callable[[argparse.Namespace], int]
+) -> None:
+    """Add a subcommand to ``sub`` for each of ``operations``, run by ``func``."""
+    for op in operations:
+        _add(sub, op, func)
+
+
+def _add(sub: Any, op: Operation, func: Callable[[argparse.Namespace], int]) -> None:
+    p = add_command(sub, op.name, op.summary, op.description, op.examples)
+    sections: dict[str, Any] = {}
+    for q in op.parameters:
+        if q.group and q.group not in sections:
+            sections[q.group] = p.add_argument_group(q.group)
+        g = sections[q.group] if q.group else p
+        kw: dict[str, Any] = {"dest": q.name, "help": q.help}
+        if q.kind == "switch":
+            kw["action"] = "store_true"
+        else:
+            kw.update(type=_TYPES[q.kind], nargs=_NARGS[q.many], default=q.default)
+            if q.metavar is not None:
+                kw["metavar"] = q.metavar
+            if q.choices is not None:
+                kw["choices"] = q.choices
+        g.add_argument(q.option, **kw)
+        for old in q.aliases:
+            deprecated_alias(p, old, q.option, g)
+    for e in op.entries:
+        show_together(p, *(op.parameter(n).option for n in e.names), help=e.help)
+    add_output_options(p)
+    p.set_defaults(func=func)
+    if op.api_names:  # the library's names of some parameters, said as their flags
+        p.set_defaults(_api_flags={k: op.parameter(v).option for k, v in op.api_names.items()})
+
+
+def run(args: argparse.Namespace) -> int:
+    """Compute the operation ``args.command`` with the parsed values; write its records."""
+    op = _get(args.command)
+    words = args.argv if args.argv is not None else sys.argv[1:]
+    values = {q.name: getattr(args, q.name, q.default) for q in op.parameters}
+    table = op.run(Inputs(op, values, words=words))
+    emit(args, table, checked=True)
+    return finish(table, op.good) if op.good else 0

@@ -1,0 +1,584 @@
+"""The operations of normal contact: ``normal``, ``pulloff`` and ``curve``."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ..closed_forms import kappa, maugis_parameter
+from ..cylinder import Cylinder, _si_load_curve
+from ..laws import lennard_jones as _lj
+from ..normal import NormalContact, contact_for_load, load_curve, normal_contact, pull_off
+from ..output import Table, table_from_result
+from ._common import (
+    MAX_POINTS,
+    group_parameters,
+    groups,
+    half_widths,
+    null_missing,
+    si_columns,
+    si_inputs,
+    si_loads,
+    si_parameters,
+    width_parameters,
+)
+from ._declare import Entry, Inputs, Operation, Parameter
+
+__all__ = ["OPERATIONS"]
+
+
+def _force(cyl: Cylinder | None, F_over_Eh: Any) -> str:
+    """A force of the groups as the user gave the problem: in N/m (SI inputs) or in E h."""
+    if cyl is None:
+        return f"{F_over_Eh:.6g} E h"
+    return f"{cyl.in_si(F_over_Eh, 'Eh'):.6g} N/m"
+
+
+def _parameters(args, rho: float, s: float, cyl: Cylinder | None) -> dict[str, Any]:
+    params: dict[str, Any] = {"R_over_h": rho, "sigma0_over_E": s}
+    params["kappa"] = kappa(rho, s)
+    params["maugis_parameter"] = maugis_parameter(rho, s)
+    if cyl is not None:
+        params.update(si_parameters(args, cyl))
+    return params
+
+
+# --------------------------------------------------------------------------------------------
+# normal
+
+
+def _cmd_normal(args: Inputs) -> Table:
+    rho, s, cyl = groups(args)
+    A = half_widths(args, cyl, "F_over_Eh")
+    if args.law == "lennard-jones":
+        return _cmd_normal_lj(args, A, rho, s, cyl)
+    c: Any = None  # the SI result (SI inputs)
+    if A is not None:
+        if args.branch != "stable":
+            raise ValueError(
+                "--branch applies to given loads (--F-over-Eh or --load): a contact half-width "
+                "fixes the state"
+            )
+        if cyl is None:
+            r = normal_contact(A, rho, s, method=args.method, on_failure="report")
+        else:  # A in m
+            c = cyl.contact(contact_half_width=A, method=args.method, on_failure="report")
+            r = c.nondimensional
+        ok = np.asarray(r.converged, bool).reshape(-1)
+        state = np.where(ok, "contact", "not-converged")
+        reason = np.full(ok.shape, None, dtype=object)
+        A_over_R = np.reshape(r.a_over_R, -1)
+        for i in np.flatnonzero(~ok):
+            reason[i] = (
+                f"the {args.method} solver did not converge at a_over_R={float(A_over_R[i])!r} "
+                f"(error estimate {float(np.reshape(r.error_estimate, -1)[i]):.3g})"
+            )
+        given = "a_over_R"
+    else:
+        if args.method != "closed-form":
+            raise ValueError(
+                "--method collocation applies to given contact half-widths (--a-over-R, "
+                "--a-over-R-range or --a); the contact for a given load is found by the closed "
+                "form"
+            )
+        if cyl is None:
+            F = np.asarray(args.F_over_Eh, float)
+            r = contact_for_load(F, rho, s, branch=args.branch, on_failure="report")
+        else:
+            load = si_loads(args, cyl, "F_over_Eh")
+            c = cyl.contact(load=load, branch=args.branch, on_failure="report")
+            r = c.nondimensional
+            F = cyl.over(load, "Eh")
+        state = np.asarray(r.state).reshape(-1)
+        reason = _load_reasons(F.reshape(-1), state, rho, s, args.branch, cyl)
+        given = "F_over_Eh"
+    table = _normal_table(args, r, c, rho, s, cyl, state, reason, given)
+    return table
+
+
+def _cmd_normal_lj(args: Inputs, A, rho: float, s: float, cyl: Cylinder | None) -> Table:
+    if A is not None:
+        raise ValueError(
+            "--law lennard-jones finds the contact for given loads (--F-over-Eh or --load): "
+            "give loads, not contact half-widths"
+        )
+    if args.branch != "stable" or args.method != "closed-form":
+        raise ValueError(
+            "--branch and --method apply to --law dugdale: under the Lennard-Jones law the "
+            "contact for a load is the stable state beyond the pull-off"
+        )
+    c: Any = None  # the SI result (SI inputs)
+    if cyl is None:
+        F = np.asarray(args.F_over_Eh, float)
+        r = _lj.contact_for_load(F, rho, s, on_failure="report")
+    else:
+        c = cyl.lennard_jones_contact(load=args.load, on_failure="report")
+        r = c.nondimensional
+        F = np.asarray(r.F_over_Eh, float)
+    state = np.asarray(r.state).reshape(-1)
+    reason = np.full(state.shape, None, dtype=object)
+    if np.any(state != "contact"):
+        po = _lj.pull_off(rho, s)
+        reason[state != "contact"] = (
+            f"no contact carries this load: it is below the pull-off force "
+            f"{_force(cyl, po.F_pulloff_over_Eh)} under the Lennard-Jones law (the "
+            "contact has pulled off)"
+        )
+    params = _parameters(args, rho, s, cyl)
+    params.pop("kappa")
+    params["law"] = "lennard-jones"
+    extra: dict[str, Any] = {}
+    show = ["a_over_R", "central_gap_over_h", "F_over_Eh", "error_estimate_over_Eh"]
+    if cyl is not None:
+        names = {"contact_half_width": "a_m", "central_gap": "central_gap_m"}
+        names.update(load="F_N_per_m", error_estimate="error_estimate_N_per_m")
+        extra.update(si_columns(c, names, totals={"load": "F_total_N"}, length=args.length))
+        show += ["a_m", "F_N_per_m"]
+        if args.length is not None:
+            show.append("F_total_N")
+    extra.update(state=state, reason=reason)
+    if np.any(state != "contact"):
+        show.append("state")
+    table = table_from_result(
+        r,
+        columns=extra,
+        drop=("state",),
+        parameters=params,
+        command=args.command_line(),
+        title="contact for a load under the Lennard-Jones law (matched to the Dugdale step: "
+        "same w, same peak tension), compressive load positive",
+        show=show,
+    )
+    table = null_missing(table, state != "contact", keep=("F_over_Eh", "state", "reason"))
+    return table
+
+
+def _load_reasons(F, state, rho, s, branch, cyl) -> np.ndarray:
+    reason = np.full(state.shape, None, dtype=object)
+    bad = np.flatnonzero(state != "contact")
+    if bad.size == 0:
+        return reason
+    po = pull_off(rho, s)
+    for i in bad:
+        if F[i] < po.F_minimum_over_Eh or branch == "stable":
+            reason[i] = (
+                f"no contact carries this load: it is below the pull-off force "
+                f"{_force(cyl, po.F_minimum_over_Eh)} (the cylinder has pulled off)"
+            )
+        else:
+            reason[i] = (
+                f"no unstable contact carries this load: that branch exists only between the "
+                f"load minimum {_force(cyl, po.F_minimum_over_Eh)} and the zero-width "
+                f"load {_force(cyl, po.F_zero_width_over_Eh)}"
+            )
+    return reason
+
+
+def _normal_table(args, r: NormalContact, c, rho, s, cyl, state, reason, given) -> Table:
+    params = _parameters(args, rho, s, cyl)
+    if args.branch != "stable":
+        params["branch"] = args.branch
+    extra: dict[str, Any] = {}
+    show = ["a_over_R", "c_over_R", "F_over_Eh", "c_over_a", "stable"]
+    if cyl is not None:
+        names = {"contact_half_width": "a_m", "adhesive_zone_half_width": "c_m"}
+        names["load"] = "F_N_per_m"
+        extra.update(si_columns(c, names, totals={"load": "F_total_N"}, length=args.length))
+        show += ["a_m", "c_m", "F_N_per_m"]
+        if args.length is not None:
+            show.append("F_total_N")
+    extra.update(state=state, reason=reason)
+    if np.any(state != "contact"):
+        show.append("state")
+    # the load is the difference of the Hertz and the adhesive terms: round-off is relative
+    # to them, not to the load
+    a = np.asarray(r.a_over_R, float)
+    c = np.asarray(r.c_over_R, float)
+    with np.errstate(invalid="ignore"):
+        terms = np.pi / 4 * a * a * rho + 2 * s * rho * np.sqrt(np.maximum(c * c - a * a, 0.0))
+    scales = {"F_over_Eh": terms}
+    if cyl is not None:
+        scales["F_N_per_m"] = cyl.in_si(terms, "Eh")
+        if args.length is not None:
+            scales["F_total_N"] = cyl.total(scales["F_N_per_m"], args.length)
+    table = table_from_result(
+        r,
+        columns=extra,
+        drop=("state",),
+        parameters=params,
+        command=args.command_line(),
+        title=f"normal contact ({r.method}), compressive load positive",
+        scales=scales,
+        show=show,
+    )
+    return null_missing(table, state != "contact", keep=(given, "state", "reason"))
+
+
+# --------------------------------------------------------------------------------------------
+# pulloff
+
+
+def _cmd_pulloff_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> Table:
+    si = None if cyl is None else cyl.lennard_jones_pull_off()
+    p = _lj.pull_off(rho, s) if si is None else si.nondimensional
+    params = _parameters(args, rho, s, cyl)
+    params.pop("kappa")
+    params["law"] = "lennard-jones"
+    extra: dict[str, Any] = {}
+    show = [
+        "F_pulloff_over_Eh",
+        "error_estimate_over_Eh",
+        "central_gap_over_h_at_pulloff",
+        "F_jump_in_over_Eh",
+        "mu",
+        "method",
+    ]
+    if cyl is not None:
+        names = {"pull_off_force": "F_pulloff_N_per_m"}
+        names["contact_half_width_at_pull_off"] = "a_at_pulloff_m"
+        names["central_gap_at_pull_off"] = "central_gap_at_pulloff_m"
+        totals = {"pull_off_force": "F_pulloff_total_N"}
+        extra.update(si_columns(si, names, totals=totals, length=args.length))
+        show += ["F_pulloff_N_per_m"]
+        if args.length is not None:
+            show.append("F_pulloff_total_N")
+    table = table_from_result(
+        p,
+        columns=extra,
+        parameters=params,
+        command=args.command_line(),
+        title="pull-off under the Lennard-Jones law (matched to the Dugdale step: same w, "
+        "same peak tension)",
+        show=show,
+    )
+    return table
+
+
+def _cmd_pulloff(args: Inputs) -> Table:
+    rho, s, cyl = groups(args)
+    if args.law == "lennard-jones":
+        return _cmd_pulloff_lj(args, rho, s, cyl)
+    si = None if cyl is None else cyl.pull_off()
+    p = pull_off(rho, s) if si is None else si.nondimensional
+    params = _parameters(args, rho, s, cyl)
+    params.pop("kappa")
+    params.pop("maugis_parameter")
+    extra: dict[str, Any] = {}
+    show = ["F_pulloff_over_Eh", "a_over_R_at_pulloff", "mechanism", "F_zero_width_over_Eh"]
+    if cyl is not None:
+        names = {"pull_off_force": "F_pulloff_N_per_m"}
+        names["contact_half_width_at_pull_off"] = "a_at_pulloff_m"
+        names["zero_width_force"] = "F_zero_width_N_per_m"
+        totals = {"pull_off_force": "F_pulloff_total_N"}
+        extra.update(si_columns(si, names, totals=totals, length=args.length))
+        show += ["F_pulloff_N_per_m", "a_at_pulloff_m"]
+        if args.length is not None:
+            show.append("F_pulloff_total_N")
+    # a width below 1e-12 R (a zero-width pull-off's, 1e-24 R and less) prints as 0 in a
+    # table, as round-off does; JSON and CSV keep the number
+    scales = {"a_over_R_at_pulloff": 1.0}
+    if cyl is not None:
+        scales["a_at_pulloff_m"] = cyl.radius
+    table = table_from_result(
+        p,
+        columns=extra,
+        parameters=params,
+        command=args.command_line(),
+        title="pull-off under load control (the most tensile load a contact carries)",
+        scales=scales,
+        show=show,
+    )
+    return table
+
+
+# --------------------------------------------------------------------------------------------
+# curve
+
+
+def _check_lj_end(F_max: float | None, rho: float, s: float) -> None:
+    """``--F-max-over-Eh`` within the loads the Lennard-Jones solver is asked for (said so).
+
+    The solver's own message names its groups; the end of the curve is said here in the
+    units of the flag. A value that is no load (nan, <= 0) is left to the solver's check.
+    """
+    from ..lennard_jones_groups import LJ_LOAD_MAX, load_max_over_Eh
+
+    if F_max is None or not (np.isfinite(F_max) and F_max > 0):
+        return
+    with np.errstate(all="ignore"):
+        limit = float(load_max_over_Eh(rho, s))
+    if F_max > limit:
+        raise ValueError(
+            f"--F-max-over-Eh={F_max!r} is beyond the loads the Lennard-Jones solver is asked "
+            f"for, up to {limit:.6g} here (in its units; {LJ_LOAD_MAX:g} w sqrt(R/z0), ten "
+            "times the rigid cylinder's pull-off); at such loads both laws approach Hertz, "
+            "and the Dugdale law (the default) gives the contact"
+        )
+
+
+def _cmd_curve_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> Table:
+    given = [
+        flag
+        for flag, v in (
+            ("--a-max-over-R", args.a_max_over_R),
+            ("--a-max", args.a_max),
+            ("--num", args.num),
+            ("--num-noncontact", args.num_noncontact),
+        )
+        if v is not None
+    ]
+    if given:
+        raise ValueError(
+            f"{', '.join(given)} {'applies' if len(given) == 1 else 'apply'} to --law dugdale: "
+            "the Lennard-Jones curve has the states of its continuation; give --F-max-over-Eh "
+            "(or --F-max [N/m]) for its end"
+        )
+    F_max = args.F_max_over_Eh
+    if args.F_max is not None:
+        if cyl is None:
+            raise ValueError("--F-max [N/m] is an SI input: give --radius and the materials too")
+        if args.F_max_over_Eh is not None:
+            raise ValueError("give either --F-max-over-Eh or --F-max [N/m], not both")
+        if not (np.isfinite(args.F_max) and args.F_max > 0):
+            raise ValueError(f"--F-max must be a finite load > 0 [N/m], got {args.F_max!r}")
+    elif cyl is not None and F_max is not None:
+        raise ValueError("--F-max-over-Eh is nondimensional: with SI inputs give --F-max [N/m]")
+    si: Any = None
+    if cyl is None:
+        _check_lj_end(F_max, rho, s)
+        c = _lj.load_curve(rho, s, F_max_over_Eh=F_max)
+    else:
+        si = cyl.lennard_jones_load_curve(max_load=args.F_max)
+        c = si.nondimensional
+    po = c.pulloff
+    is_po = np.zeros(c.F_over_Eh.shape, bool)
+    is_po[int(np.argmin(c.F_over_Eh))] = True  # the sample nearest the refined pull-off
+    params = _parameters(args, rho, s, cyl)
+    params.pop("kappa")
+    params["law"] = "lennard-jones"
+    extra: dict[str, Any] = {"pulloff": is_po}
+    show = [
+        "central_gap_over_h",
+        "a_over_R",
+        "F_over_Eh",
+        "error_estimate_over_Eh",
+        "stable",
+    ]
+    if cyl is not None:
+        names = {"central_gap": "central_gap_m", "contact_half_width": "a_m"}
+        names.update(load="F_N_per_m", error_estimate="error_estimate_N_per_m")
+        extra.update(si_columns(si, names, totals={"load": "F_total_N"}, length=args.length))
+        show += ["a_m", "F_N_per_m"]
+        if args.length is not None:
+            show.append("F_total_N")
+    show.append("pulloff")
+    table = table_from_result(
+        c,
+        columns=extra,
+        parameters=params,
+        command=args.command_line(),
+        title=(
+            "load curve under the Lennard-Jones law (matched to the Dugdale step: same w, same "
+            "peak tension), the central gap decreasing; pull-off "
+            f"{po.F_pulloff_over_Eh:.6g} (error estimate {po.error_estimate_over_Eh:.2g})"
+        ),
+        show=show,
+    )
+    return table
+
+
+def _cmd_curve(args: Inputs) -> Table:
+    rho, s, cyl = groups(args)
+    if args.law == "lennard-jones":
+        return _cmd_curve_lj(args, rho, s, cyl)
+    if args.F_max_over_Eh is not None or args.F_max is not None:
+        raise ValueError(
+            "--F-max-over-Eh and --F-max apply to --law lennard-jones: the Dugdale curve ends "
+            "at --a-max-over-R (or --a-max [m])"
+        )
+    args.num = 200 if args.num is None else args.num
+    args.num_noncontact = 40 if args.num_noncontact is None else args.num_noncontact
+    for flag, v in (("--num", args.num), ("--num-noncontact", args.num_noncontact)):
+        if not 2 <= v <= MAX_POINTS:
+            raise ValueError(f"{flag} must be an integer in [2, {MAX_POINTS}], got {v!r}")
+    if cyl is None and args.a_max is not None:
+        raise ValueError("--a-max [m] is an SI input: give --radius and the materials too")
+    n = dict(num=args.num, num_noncontact=args.num_noncontact)
+    si: Any = None
+    if cyl is None or args.a_max is None:
+        c = load_curve(rho, s, a_max_over_R=args.a_max_over_R, **n)
+        if cyl is not None:  # the limit in radii: the same curve, in SI units
+            si = _si_load_curve(cyl, c)
+    else:
+        si = cyl.load_curve(max_half_width=args.a_max, **n)
+        c = si.nondimensional
+    po = c.pulloff
+    # the pull-off state is the one `pulloff` reports, whatever its label: the load minimum
+    # (a point of the curve), or the touching state where the minimum is narrower than the
+    # domain of a/R (its load is Eq. 14 to round-off)
+    is_po = np.zeros(c.a_over_R.shape, bool)
+    if c.turning_point.any():
+        is_po |= c.turning_point
+    elif s > 0:
+        touch = np.flatnonzero((c.branch == "non-contact") & (c.central_gap_over_h == 0))
+        is_po[touch[-1:]] = True
+    params = _parameters(args, rho, s, cyl)
+    extra: dict[str, Any] = {"pulloff": is_po}
+    show = ["branch", "central_gap_over_h", "a_over_R", "c_over_R", "F_over_Eh", "stable"]
+    if cyl is not None:
+        names = {"central_gap": "central_gap_m", "contact_half_width": "a_m"}
+        names.update(adhesive_zone_half_width="c_m", load="F_N_per_m")
+        extra.update(si_columns(si, names, totals={"load": "F_total_N"}, length=args.length))
+        show += ["a_m", "F_N_per_m"]
+        if args.length is not None:
+            show.append("F_total_N")
+    show.append("pulloff")
+    table = table_from_result(
+        c,
+        columns=extra,
+        parameters=params,
+        command=args.command_line(),
+        title=(
+            f"load curve: non-contact branch (gap g0 from h to 0), then the contact branch; "
+            f"pull-off {po.F_pulloff_over_Eh:.6g} ({po.mechanism})"
+        ),
+        show=show,
+    )
+    return table
+
+
+# --------------------------------------------------------------------------------------------
+# the declarations
+
+_LAW = Parameter(
+    "law",
+    "Dugdale step or the Lennard-Jones law (Eq 1)",
+    kind="text",
+    choices=("dugdale", "lennard-jones"),
+    default="dugdale",
+)
+_SI, _SI_ENTRIES = si_inputs()
+_WIDTHS = "contact half-widths or loads (exactly one)"
+_SAMPLING = "sampling"
+
+OPERATIONS = {
+    "normal": Operation(
+        "normal",
+        "adhesive-zone width and load for given contact half-widths, or the contact for loads",
+        "Maugis-Dugdale normal contact (paper Eqs 5-14): for each half-width a the end c of "
+        "the adhesive zone and the load F; or for each load its contact (docs/cli.md).",
+        (
+            "linecontact normal --R-over-h 100 --sigma0-over-E 0.01 --a-over-R 0.01 0.05",
+            "linecontact normal --R-over-h 100 --sigma0-over-E 0.2 --F-over-Eh -1 0 1 --json",
+            "linecontact normal --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 --load 0 1",
+        ),
+        (
+            *group_parameters(),
+            *_SI,
+            *width_parameters(
+                "F_over_Eh", "loads per unit length over E h (the contact for them)", _WIDTHS
+            ),
+            Parameter(
+                "branch",
+                "stable or narrower unstable contact (loads)",
+                kind="text",
+                choices=("stable", "unstable"),
+                default="stable",
+            ),
+            Parameter(
+                "method",
+                "closed form or collocation (widths)",
+                kind="text",
+                choices=("closed-form", "collocation"),
+                default="closed-form",
+            ),
+            _LAW,
+        ),
+        _cmd_normal,
+        good=("contact",),
+        entries=_SI_ENTRIES,
+    ),
+    "pulloff": Operation(
+        "pulloff",
+        "pull-off force under load control and its mechanism",
+        "The most tensile load a contact carries (paper Eq 14 and the snap-off) and its "
+        "mechanism, zero-width or snap-off. One record.",
+        (
+            "linecontact pulloff --R-over-h 100 --sigma0-over-E 0.01",
+            "linecontact pulloff --radius 50e-9 --cylinder-material SiO2 --substrate-material Si "
+            "--work-of-adhesion 0.1 --z0 0.3e-9 --json",
+            "linecontact pulloff --R-over-h 100 --sigma0-over-E 0.01 --law lennard-jones",
+        ),
+        (*group_parameters(), *_SI, _LAW),
+        _cmd_pulloff,
+        entries=_SI_ENTRIES,
+    ),
+    "curve": Operation(
+        "curve",
+        "the whole load curve: non-contact branch, contact branch, turning point, pull-off",
+        "The load F along the non-contact branch (central gap g0 from h to 0), then the "
+        "contact branch (a from 0 up), turning point and pull-off marked (docs/cli.md).",
+        (
+            "linecontact curve --R-over-h 100 --sigma0-over-E 0.05 --format csv -o curve.csv",
+            "linecontact curve --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 --json",
+        ),
+        (
+            *group_parameters(),
+            *_SI,
+            _LAW,
+            Parameter(
+                "a_max_over_R",
+                "largest contact half-width a/R (default: three times the width at pull-off, "
+                "at least the Hertz width at ten times the pull-off force and 0.02, at most 0.2)",
+                metavar="A",
+                group=_SAMPLING,
+            ),
+            Parameter(
+                "a_max", "largest half-width a [m] (SI)", unit="m", metavar="A", group=_SAMPLING
+            ),
+            Parameter(
+                "num",
+                "points on the contact branch (default: 200; --law dugdale)",
+                kind="integer",
+                metavar="N",
+                group=_SAMPLING,
+            ),
+            Parameter(
+                "num_noncontact",
+                "points on the non-contact branch (default: 40; --law dugdale)",
+                kind="integer",
+                metavar="N",
+                group=_SAMPLING,
+            ),
+            Parameter(
+                "F_max_over_Eh",
+                "--law lennard-jones: the compressive load F/(E h) where the curve ends "
+                "(default: 7.5 w sqrt(R/z0), three times the rigid cylinder's pull-off)",
+                metavar="F",
+                group=_SAMPLING,
+            ),
+            Parameter(
+                "F_max",
+                "--law lennard-jones: the end load F [N/m] (SI)",
+                unit="N/m",
+                metavar="F",
+                group=_SAMPLING,
+            ),
+        ),
+        _cmd_curve,
+        entries=(
+            *_SI_ENTRIES,
+            Entry(("a_max_over_R", "a_max"), "largest half-width a/R, or a [m] (docs/cli.md)"),
+            Entry(
+                ("num", "num_noncontact"),
+                "points on the contact, non-contact branch (default: 200, 40)",
+            ),
+            Entry(
+                ("F_max_over_Eh", "F_max"),
+                "lennard-jones: end load F/(E h), or F [N/m] (docs/cli.md)",
+            ),
+        ),
+        api_names={"max_load": "F_max"},
+    ),
+}
