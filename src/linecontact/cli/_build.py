@@ -61,8 +61,6 @@ def _add(sub: Any, op: Operation, func: Callable[[argparse.Namespace], int]) -> 
         show_together(p, *(op.parameter(n).option for n in e.names), help=e.help)
     add_output_options(p)
     p.set_defaults(func=func)
-    if op.api_names:  # the library's names of some parameters, said as their flags
-        p.set_defaults(_api_flags={k: op.parameter(v).option for k, v in op.api_names.items()})
 
 
 def run(args: argparse.Namespace) -> int:
@@ -70,6 +68,10 @@ def run(args: argparse.Namespace) -> int:
     op = _get(args.command)
     words = args.argv if args.argv is not None else sys.argv[1:]
     values = {q.name: getattr(args, q.name, q.default) for q in op.parameters}
-    table = op.run(Inputs(op, values, words=words))
+    inputs = Inputs(op, values, words=words)
+    try:
+        table = op.run(inputs)
+    finally:  # the library's names of parameters, as their flags (for its messages)
+        args._api_flags = {k: op.parameter(v).option for k, v in inputs.said_as.items()}
     emit(args, table, checked=True)
     return finish(table, op.good) if op.good else 0

@@ -29,6 +29,14 @@ FAMILIES: dict[str, str] = {
     "normal": "normal",
     "pulloff": "normal",
     "curve": "normal",
+    "slide-init": "tangential",
+    "roll": "tangential",
+    "cycle": "history",
+    "history": "history",
+    "fit-adhesion": "fit",
+    "fit-friction": "fit",
+    "slide": "sliding",
+    "push": "push",
 }
 
 

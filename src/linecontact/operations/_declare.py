@@ -228,7 +228,9 @@ class Inputs:
 
     Read as attributes (``inputs.radius``). ``command`` is the operation's name; ``words``
     the command line that asked for it (the provenance's ``command``), as typed where the
-    command line asked, or written from the values where another shell did.
+    command line asked, or written from the values where another shell did; ``said_as``
+    maps the names the library's messages use to the parameters they stand for (the
+    operation's ``api_names``; a computation may add its own before it calls the library).
     """
 
     def __init__(
@@ -244,6 +246,10 @@ class Inputs:
         self.__dict__["command"] = operation.name
         self.__dict__["operation"] = operation
         self.__dict__["given"] = tuple(n for n in values if values[n] is not None)
+        #: the names the library's messages give parameters in this call, where the call
+        #: chose them (``work_of_adhesion`` meaning the receding one): each shell says its
+        #: spelling (compute adds to it)
+        self.__dict__["said_as"] = dict(operation.api_names)
         self.__dict__["words"] = (
             list(words) if words is not None else _words(operation, values, flags or {})
         )
