@@ -74,19 +74,18 @@ print("MODULES", " ".join(mods), "|", " ".join(heavy), file=sys.stderr)
 @pytest.mark.parametrize(
     ("argv", "modules"),
     [
-        (["--help"], ["linecontact.cli._messages", "linecontact.cli._options"]),
+        (["--help"], ["linecontact.cli._options"]),
         (
             ["normal", "--a-over-R", "0.02", "--R-over-h", "100", "--sigma0-over-E", "0.01"],
             [
                 "linecontact.cli._build",
-                "linecontact.cli._messages",
                 "linecontact.cli._options",
                 "linecontact.cli.normal",
             ],
         ),
         (
             ["slide-init", "--help"],
-            ["linecontact.cli._messages", "linecontact.cli._options", "linecontact.cli.tangential"],
+            ["linecontact.cli._options", "linecontact.cli.tangential"],
         ),
     ],
 )

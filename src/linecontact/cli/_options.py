@@ -33,8 +33,7 @@ from ..operations._common import (  # noqa: F401 - the subcommands' names for th
     si_loads,
     si_parameters,
 )
-from ..output import FORMATS, Table, write
-from ._messages import (  # noqa: F401 - the subcommands' names for them, kept here
+from ..operations._messages import (  # noqa: F401 - the subcommands' names for them, kept here
     _NEGATIVE_NUMBER,
     API_FLAGS,
     COUPLING_EFFECT,
@@ -43,6 +42,7 @@ from ._messages import (  # noqa: F401 - the subcommands' names for them, kept h
     is_units_warning,
     write_failure,
 )
+from ..output import FORMATS, Table, write
 
 
 class HelpFormatter(argparse.RawDescriptionHelpFormatter):

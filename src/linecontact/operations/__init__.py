@@ -19,10 +19,20 @@ from collections.abc import Iterable, Mapping
 from typing import Any
 
 from ..output import Table
-from ._declare import Entry, Inputs, Operation, Parameter
+from ._declare import Entry, Inputs, Operation, Parameter, command_words
 from ._declare import call as _call
 
-__all__ = ["FAMILIES", "Entry", "Inputs", "Operation", "Parameter", "call", "catalogue", "get"]
+__all__ = [
+    "FAMILIES",
+    "Entry",
+    "Inputs",
+    "Operation",
+    "Parameter",
+    "call",
+    "catalogue",
+    "command_words",
+    "get",
+]
 
 #: Every operation and the module of this package that declares it (imported when asked for).
 FAMILIES: dict[str, str] = {
@@ -46,7 +56,7 @@ def get(name: str) -> Operation:
     if family is None:
         raise ValueError(f"no operation {name!r}: one of {', '.join(FAMILIES)}")
     module = importlib.import_module(f"{__name__}.{family}")
-    return module.OPERATIONS[name]  # type: ignore[no-any-return]
+    return module.OPERATIONS[name]
 
 
 def catalogue() -> dict[str, Operation]:

@@ -23,7 +23,7 @@ from ..errors import ParameterError
 from ..output import Table
 from ._widths import check_widths
 
-__all__ = ["Entry", "Inputs", "Operation", "Parameter", "call"]
+__all__ = ["Entry", "Inputs", "Operation", "Parameter", "call", "command_words"]
 
 Kind = Literal["number", "integer", "text", "switch"]
 Many = Literal["one", "several", "triple"]
@@ -251,7 +251,7 @@ class Inputs:
         #: spelling (compute adds to it)
         self.__dict__["said_as"] = dict(operation.api_names)
         self.__dict__["words"] = (
-            list(words) if words is not None else _words(operation, values, flags or {})
+            list(words) if words is not None else command_words(operation, values, flags)
         )
 
     def __getattr__(self, name: str) -> Any:
@@ -270,14 +270,16 @@ class Inputs:
         return ["linecontact", *self.words]
 
 
-def _words(operation: Operation, values: Mapping[str, Any], flags: Mapping[str, str]) -> list[str]:
+def command_words(
+    operation: Operation, values: Mapping[str, Any], flags: Mapping[str, str] | None = None
+) -> list[str]:
     """The command line of ``values`` (declaration order; a switch by its flag alone)."""
     out = [operation.name]
     for p in operation.parameters:
         v = values.get(p.name)
         if v is None or p.shell_only:
             continue
-        flag = flags.get(p.name, p.option)
+        flag = (flags or {}).get(p.name, p.option)
         if p.kind == "switch":
             if v:
                 out.append(flag)

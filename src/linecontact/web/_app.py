@@ -37,9 +37,11 @@ from ._params import (
     MAX_POINTS,
     ParameterError,
     argv_of,
+    is_operation,
     parameters_of,
     points_of,
     sweep_hint,
+    values_of,
 )
 from ._workers import MAX_RESULT_BYTES, Outcome, Pool, is_slow
 
@@ -403,7 +405,7 @@ def create_app(
             "application/x-www-form-urlencoded or multipart/form-data",
         )
 
-    def checked(command: str, argv: list[str]) -> bool:
+    def checked(command: str, argv: list[str] | dict[str, Any]) -> bool:
         """Refuse a request over its points (413); True where it gets a slow worker."""
         points, parameter = points_of(command, argv)
         if points > max_points:
@@ -433,12 +435,15 @@ def create_app(
         given = Path(str(f.filename or "")).name or "the uploaded file"
         return ["--data", str(path)], str(path), given
 
-    async def parsed(request: Request) -> tuple[str, list[str], bool]:
+    async def parsed(request: Request) -> tuple[str, list[str] | dict[str, Any], bool]:
         command = request.path_params["command"]
         if command not in COMMANDS:
             raise _RequestError(404, "command", f"no such command {command!r}")
         try:
-            argv = argv_of(command, await items_of(request))
+            items = await items_of(request)
+            argv: list[str] | dict[str, Any] = (
+                values_of(command, items) if is_operation(command) else argv_of(command, items)
+            )
         except ParameterError as exc:
             raise _RequestError(422, exc.parameter, str(exc)) from None
         return command, argv, checked(command, argv)
@@ -452,7 +457,12 @@ def create_app(
             return _respond(await pool.run(command, argv, slow=slow))
         with tempfile.TemporaryDirectory(prefix="upload-", dir=pool.root) as tmpdir:
             data, path, given = await upload(request, tmpdir)
-            out = await pool.run(command, [*argv, *data], slow=slow)
+            request_: list[str] | dict[str, Any]
+            if isinstance(argv, dict):  # the operation's typed values: the file's path
+                request_ = {**argv, "data": data[1]} if data else argv
+            else:
+                request_ = [*argv, *data]
+            out = await pool.run(command, request_, slow=slow)
             return _respond(_without_path(out, path, given))
 
     async def start_job(request: Request) -> Response:

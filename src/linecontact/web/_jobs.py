@@ -50,7 +50,7 @@ class _Job:
     parsed again) and its elapsed time stops.
     """
 
-    def __init__(self, command: str, argv: list[str]) -> None:
+    def __init__(self, command: str, argv: list[str] | dict[str, Any]) -> None:
         self.id = uuid.uuid4().hex
         self.command, self.argv = command, argv
         self.created = time.monotonic()

@@ -1,21 +1,27 @@
-"""Request parameters as the subcommands' flags: ``radius=50e-9`` is ``--radius 50e-9``.
+"""Request parameters: the operations' declared parameters, typed (:mod:`linecontact.operations`).
 
-A parameter is named as the CLI flag without its dashes, ``-`` as ``_`` (``work_of_adhesion``,
-``R_over_h``, ``cylinder_material``). Several values: repeat the parameter or separate the
-values by commas. A switch: ``true``/``1`` (or no value) gives the flag, ``false``/``0``
-leaves it out. No parameter names a file on the server: the output, figure and data flags are
-not parameters (an uploaded CSV is the ``data`` field of a form, kept in a temporary file).
+A parameter is named as its declaration names it, the CLI flag without its dashes, ``-`` as
+``_`` (``work_of_adhesion``, ``R_over_h``, ``cylinder_material``); a name no operation
+declares is refused (422), never ignored. Several values: repeat the parameter or separate
+the values by commas. A switch: ``true``/``1`` (or no value) gives it, ``false``/``0`` leaves
+it out. The values go to the operation typed (:func:`values_of`), never as a command line. No
+parameter names a file on the server: the output, figure and data inputs are not parameters
+(an uploaded CSV is the ``data`` field of a form, kept in a temporary file). The commands
+that are no operation yet (``map``, ``materials``) still run their command line
+(:func:`argv_of`).
 """
 
 from __future__ import annotations
 
 import argparse
 import functools
+import importlib.util
 import math
 import re
 from collections.abc import Iterable
 from typing import Any
 
+from .. import operations
 from ..cli import COMMANDS as _CLI_COMMANDS
 
 __all__ = [
@@ -23,9 +29,11 @@ __all__ = [
     "MAX_POINTS",
     "ParameterError",
     "argv_of",
+    "is_operation",
     "parameters_of",
     "points_of",
     "sweep_hint",
+    "values_of",
 ]
 
 #: The subcommands the API runs: those that compute and print records (not the figures, the
@@ -98,8 +106,33 @@ def _actions(command: str) -> dict[str, argparse.Action]:
     return out
 
 
+def is_operation(command: str) -> bool:
+    """Whether ``command`` is an operation of the catalogue (else a command line is run)."""
+    family = operations.FAMILIES.get(command)
+    return family is not None and (
+        importlib.util.find_spec(f"linecontact.operations.{family}") is not None
+    )
+
+
+_KINDS = {"number": "number", "integer": "integer", "text": "string", "switch": "boolean"}
+
+
 def parameters_of(command: str) -> list[dict[str, Any]]:
-    """The parameters of ``command``: name, flag, kind, several values, choices, help."""
+    """The parameters of ``command``: name, flag, kind, several values, choices, unit, help."""
+    if is_operation(command):
+        return [
+            {
+                "name": p.key,
+                "flag": p.option,
+                "kind": _KINDS[p.kind],
+                "many": p.many != "one",
+                "choices": list(p.choices) if p.choices else None,
+                "unit": p.unit,
+                "help": p.help,
+            }
+            for p in operations.get(command).parameters
+            if not p.shell_only and p.option not in _NOT_PARAMETERS
+        ]
     seen: set[int] = set()
     out = []
     for flag, a in _actions(command).items():
@@ -122,10 +155,69 @@ def parameters_of(command: str) -> list[dict[str, Any]]:
                 "kind": kind,
                 "many": a.nargs not in (None, 0),
                 "choices": list(a.choices) if a.choices else None,
+                "unit": "",
                 "help": a.help or "",
             }
         )
     return out
+
+
+def values_of(command: str, items: Iterable[tuple[str, str]]) -> dict[str, Any]:
+    """The typed values of the operation ``command`` for the request parameters ``items``.
+
+    Each name must be a parameter the operation declares (its key, or an old spelling),
+    each value of its kind and count: else a :class:`ParameterError` naming it as given.
+    """
+    op = operations.get(command)
+    texts: dict[str, list[str]] = {}
+    typed: dict[str, list[str]] = {}  # the values as the request gave them
+    keys: dict[str, str] = {}
+    for name, value in items:
+        try:
+            p = op.parameter(name)
+        except ValueError:
+            p = None
+        if p is None or p.shell_only or p.option in _NOT_PARAMETERS:
+            raise ParameterError(
+                name,
+                f"{name!r} is not a parameter of {command} (GET /api/v1/openapi.json lists them)",
+            )
+        keys.setdefault(p.name, name)
+        texts.setdefault(p.name, [])
+        texts[p.name] += [v for v in re.split(r"[,\s]+", value.strip()) if v] if value else []
+        typed.setdefault(p.name, []).append(value)
+    out: dict[str, Any] = {}
+    for pname, vals in texts.items():
+        p, name = op.parameter(pname), keys[pname]
+        if p.kind == "switch":
+            out[pname] = p.convert(vals[-1] if vals else True, name)
+            continue
+        if not vals:
+            raise ParameterError(name, f"{name} needs a value")
+        if p.many == "one" and len(vals) > 1:
+            raise ParameterError(name, _one_value(name, typed[pname], p.kind == "number"))
+        try:
+            out[pname] = p.convert(vals, name)
+        except ValueError as exc:
+            raise ParameterError(name, _invalid(name, p, vals, str(exc))) from None
+    return out
+
+
+def _invalid(name: str, p: Any, vals: list[str], said: str) -> str:
+    """A value of the wrong kind, said as the command line said it (``invalid float value``)."""
+    if p.choices is not None:
+        bad = next((v for v in vals if v not in p.choices), vals[0])
+        choices = ", ".join(repr(c) for c in p.choices)
+        return f"argument {p.option}: invalid choice: {bad!r} (choose from {choices})"
+    kind = {"number": "float", "integer": "int"}.get(p.kind)
+    if kind is None:
+        return said
+    for v in vals:
+        try:
+            float(v) if kind == "float" else int(v)
+        except ValueError:
+            return f"argument {p.option}: invalid {kind} value: {v!r}"
+    return said
 
 
 def argv_of(command: str, items: Iterable[tuple[str, str]]) -> list[str]:
@@ -188,7 +280,43 @@ def _one_value(name: str, typed: list[str], number: bool) -> str:
     return said
 
 
-def points_of(command: str, argv: list[str]) -> tuple[int, str | None]:
+def points_of(command: str, request: list[str] | dict[str, Any]) -> tuple[int, str | None]:
+    """The number of points a request asks for (its typed values, or its command line)."""
+    if isinstance(request, dict):
+        return _points_of_values(command, request)
+    return _points_of_argv(command, request)
+
+
+def _points_of_values(command: str, values: dict[str, Any]) -> tuple[int, str | None]:
+    """:func:`points_of` for the typed values of an operation (:func:`values_of`)."""
+    op = operations.get(command)
+    factors: list[tuple[int, str]] = []
+    for name, v in values.items():
+        p = op.parameter(name)
+        if p.many == "several":
+            factors.append((len(v), p.key))
+        elif p.many == "triple" and name.endswith("_range"):
+            factors.append((_count(str(v[2])), p.key))
+    how, counts = _COUNTS.get(command, ("product", {}))
+    if counts:
+        got = []
+        for flag, (default, quick_default) in counts.items():
+            p = op.parameter(flag[2:].replace("-", "_"))
+            v = values.get(p.name)
+            quick = bool(values.get("quick"))
+            got.append(
+                (_count(str(v)) if v is not None else quick_default if quick else default, p.key)
+            )
+        n = sum(v for v, _ in got) if how == "sum" else math.prod(v for v, _ in got)
+        key = max(got)[1] if how == "product" else got[0][1]
+        factors.append((n, key))
+    total = math.prod(n for n, _ in factors)
+    if not factors or max(factors)[0] <= 1:
+        return total, None
+    return total, max(factors)[1]
+
+
+def _points_of_argv(command: str, argv: list[str]) -> tuple[int, str | None]:
     """The number of points ``command argv`` asks for, estimated before it is computed.
 
     The values of each flag that takes several, the ``NUM`` of a range (``--a-over-R-range

@@ -66,9 +66,11 @@ def max_workers() -> int:
     return max(4, 2 * cpus())
 
 
-def is_slow(command: str, argv: list[str]) -> bool:
+def is_slow(command: str, request: list[str] | dict[str, Any]) -> bool:
     """True for a computation that may take long (it gets a slow worker)."""
-    return command in _SLOW_COMMANDS or "lennard-jones" in argv
+    if isinstance(request, dict):
+        return command in _SLOW_COMMANDS or request.get("law") == "lennard-jones"
+    return command in _SLOW_COMMANDS or "lennard-jones" in request
 
 
 @dataclass
@@ -102,19 +104,22 @@ class _Progress(io.TextIOBase):
 
 def compute(
     command: str,
-    argv: list[str],
+    argv: list[str] | dict[str, Any],
     report: Any = None,
     workdir: str | None = None,
     max_bytes: int | None = None,
 ) -> Outcome:
-    """``linecontact COMMAND ARGV --json`` in this process (a worker's job).
+    """The operation ``command`` on typed values, or ``linecontact COMMAND ARGV --json``.
+
+    In this process (a worker's job).
 
     Parameters
     ----------
     command : str
-        The subcommand.
-    argv : list of str
-        Its flags and values.
+        The operation (or the subcommand that is no operation: ``map``, ``materials``).
+    argv : dict or list of str
+        The operation's typed values (:func:`linecontact.web._params.values_of`), or the
+        subcommand's flags and values.
     report : callable, optional
         ``report(done, total)`` hears the progress of a map (its curves).
     workdir : str, optional
@@ -128,6 +133,8 @@ def compute(
     Outcome
         The JSON text (status 200) or the error.
     """
+    if isinstance(argv, dict):
+        return _sized(_call(command, argv), max_bytes)
     if command == "map":  # its figure and CSV into a directory, one process
         with contextlib.ExitStack() as stack:
             if workdir is None:
@@ -169,6 +176,37 @@ def _sized(out: Outcome, max_bytes: int | None) -> Outcome:
         warnings=out.warnings,
         seconds=out.seconds,
     )
+
+
+def _call(command: str, values: dict[str, Any]) -> Outcome:
+    """The operation ``command`` on the typed ``values``: its JSON, or the error."""
+    from .. import operations
+    from ..errors import ConvergenceError
+    from ..operations._messages import spell
+    from ..output import render
+
+    start = time.perf_counter()
+    op = operations.get(command)
+    words = operations.command_words(op, values)
+    inputs = operations.Inputs(op, values, words=[*words, "--json"])
+    said: list[str] = []
+    status, message, table = 200, "", None
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            table = op.run(inputs)
+        except ConvergenceError as exc:
+            status, message = 500, spell(str(exc), inputs)
+        except (ValueError, OverflowError) as exc:
+            status, message = 422, spell(str(exc), inputs)
+    for w in caught:
+        note = spell(str(w.message), inputs)
+        if note not in said:
+            said.append(note)
+    seconds = time.perf_counter() - start
+    if status != 200 or table is None:
+        return Outcome(status, flag=_flag_of(message), message=message, warnings=said)
+    return Outcome(200, body=render(table, "json"), warnings=said, seconds=seconds)
 
 
 def _compute(command: str, argv: list[str]) -> Outcome:
@@ -397,7 +435,7 @@ class Pool:
     async def run(
         self,
         command: str,
-        argv: list[str],
+        argv: list[str] | dict[str, Any],
         time_limit: float | None = None,
         *,
         slow: bool | None = None,
@@ -481,7 +519,7 @@ class Pool:
         self,
         worker: _Worker,
         command: str,
-        argv: list[str],
+        argv: list[str] | dict[str, Any],
         workdir: str,
         limit: float,
         on_progress: Callable[[int, int], None] | None,

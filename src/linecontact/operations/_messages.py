@@ -1,7 +1,9 @@
-"""The command line's messages in the user's words: flags for the API's names, real causes.
+"""The operations' messages in the user's words: flags for the API's names, real causes.
 
 :func:`flag_message` turns the API's parameter names in a message into the flags the user
-typed, leaving every quoted value and every value typed as it was; :func:`write_failure`
+typed (the command line's spelling; :func:`spell` for a call made with typed values, by the
+HTTP API or a sweep), leaving every quoted value and every value typed as it was;
+:func:`write_failure`
 names the real cause of a failed write (a full disk, a quota); :func:`is_units_warning` and
 :func:`coupling_effect` sort and complete the warnings the command line prints.
 """
@@ -13,6 +15,7 @@ import errno
 import re
 import sys
 from collections.abc import Sequence
+from typing import Any
 
 from ..errors import ModelValidityWarning, UnitsWarning
 
@@ -28,6 +31,7 @@ __all__ = [
     "coupling_effect",
     "flag_message",
     "is_units_warning",
+    "spell",
     "write_failure",
 ]
 
@@ -197,3 +201,20 @@ def flag_message(message: str, args: argparse.Namespace) -> str:
         lambda m: f"{m[1]} {m[2]}" if choices is None or m[1] in choices else m[0],
         message,
     )
+
+
+def spell(message: str, inputs: Any) -> str:
+    """``message`` in the flags of the operation of ``inputs`` (a call with typed values).
+
+    As :func:`flag_message` for a command line made of ``inputs.words``: each parameter's
+    declared flag, the library's names of this call (``inputs.said_as``) said as theirs.
+    """
+    op = inputs.operation
+    args = argparse.Namespace(
+        argv=list(inputs.words),
+        _flags={p.name: p.option for p in op.parameters},
+        _choice_flags={p.option for p in op.parameters if p.choices is not None},
+        _api_flags={k: op.parameter(v).option for k, v in inputs.said_as.items()},
+        _typed_as={},
+    )
+    return flag_message(message, args)
