@@ -85,7 +85,7 @@ print("MODULES", " ".join(mods), "|", " ".join(heavy), file=sys.stderr)
         ),
         (
             ["slide-init", "--help"],
-            ["linecontact.cli._options", "linecontact.cli.tangential"],
+            ["linecontact.cli._build", "linecontact.cli._options", "linecontact.cli.tangential"],
         ),
     ],
 )

@@ -114,6 +114,29 @@ class Parameter:
             raise ParameterError(key, f"{key} takes three values (START STOP NUM), got {len(out)}")
         return out
 
+    def refusal(self, values: Sequence[Any], said: str) -> str:
+        """Why ``values`` (text) are refused, as the command line says it.
+
+        ``argument --radius: invalid float value: 'abc'`` (or an invalid choice); ``said``,
+        the message of :meth:`convert`, where neither applies.
+        """
+        if not values and self.kind != "switch":
+            count = {"one": "one argument", "several": "at least one argument"}
+            return f"argument {self.option}: expected {count.get(self.many, '3 arguments')}"
+        if self.choices is not None:
+            bad = next((v for v in values if v not in self.choices), values[0])
+            choices = ", ".join(repr(c) for c in self.choices)
+            return f"argument {self.option}: invalid choice: {bad!r} (choose from {choices})"
+        kind = {"number": float, "integer": int}.get(self.kind)
+        if kind is None:
+            return said
+        for v in values:
+            try:
+                kind(v)
+            except (TypeError, ValueError):
+                return f"argument {self.option}: invalid {kind.__name__} value: {v!r}"
+        return said
+
     def _one(self, v: Any, key: str) -> Any:
         if self.kind == "text":
             if not isinstance(v, str):
@@ -182,6 +205,10 @@ class Operation:
     api_names : dict
         The names the library's messages give some parameters, where they are not the
         parameter's own (``max_load`` for ``F_max``): each shell says its own spelling.
+    rows : tuple of str
+        The parameters of several values that give one record each, in one call (``load``
+        of ``normal``): a sweep hands them a row of points at once. A parameter of several
+        values not listed makes one record of all of them (a fit's radii).
     """
 
     name: str
@@ -193,12 +220,16 @@ class Operation:
     good: tuple[str, ...] = ()
     entries: tuple[Entry, ...] = ()
     api_names: Mapping[str, str] = field(default_factory=dict)
+    rows: tuple[str, ...] = ()
     _by_key: dict[str, Parameter] = field(default_factory=dict, repr=False, compare=False)
 
     def __post_init__(self) -> None:
         names = [p.name for p in self.parameters]
         if len(set(names)) != len(names):
             raise ValueError(f"{self.name}: a parameter declared twice in {names}")
+        for name in self.rows:
+            if name not in names:
+                raise ValueError(f"{self.name}: rows names {name!r}, no parameter of it")
         for p in self.parameters:
             self._by_key[p.key] = p
             self._by_key.setdefault(p.name, p)
@@ -264,6 +295,16 @@ class Inputs:
         if name not in self.__dict__["_values"]:
             raise AttributeError(f"{name!r} is not a parameter of {self.command}")
         self.__dict__["_values"][name] = value
+
+    def replace(self, words: Sequence[str] | None = None, **values: Any) -> Inputs:
+        """A copy with ``values`` (parameters by name) in place of its own (and ``words``)."""
+        new = Inputs(
+            self.operation,
+            {**self.__dict__["_values"], **values},
+            words=self.words if words is None else words,
+        )
+        new.said_as.update(self.said_as)
+        return new
 
     def command_line(self) -> list[str]:
         """The command line, ``linecontact`` first (the provenance's ``command``)."""

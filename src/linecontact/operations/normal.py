@@ -497,6 +497,7 @@ OPERATIONS = {
         ),
         _cmd_normal,
         good=("contact",),
+        rows=("a_over_R", "F_over_Eh", "a", "load"),
         entries=_SI_ENTRIES,
     ),
     "pulloff": Operation(

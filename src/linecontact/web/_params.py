@@ -199,25 +199,8 @@ def values_of(command: str, items: Iterable[tuple[str, str]]) -> dict[str, Any]:
         try:
             out[pname] = p.convert(vals, name)
         except ValueError as exc:
-            raise ParameterError(name, _invalid(name, p, vals, str(exc))) from None
+            raise ParameterError(name, p.refusal(vals, str(exc))) from None
     return out
-
-
-def _invalid(name: str, p: Any, vals: list[str], said: str) -> str:
-    """A value of the wrong kind, said as the command line said it (``invalid float value``)."""
-    if p.choices is not None:
-        bad = next((v for v in vals if v not in p.choices), vals[0])
-        choices = ", ".join(repr(c) for c in p.choices)
-        return f"argument {p.option}: invalid choice: {bad!r} (choose from {choices})"
-    kind = {"number": "float", "integer": "int"}.get(p.kind)
-    if kind is None:
-        return said
-    for v in vals:
-        try:
-            float(v) if kind == "float" else int(v)
-        except ValueError:
-            return f"argument {p.option}: invalid {kind} value: {v!r}"
-    return said
 
 
 def argv_of(command: str, items: Iterable[tuple[str, str]]) -> list[str]:

@@ -1,0 +1,345 @@
+"""The operations of tangential load histories: ``cycle`` and ``history``.
+
+Over :mod:`linecontact.tangential.history` and the SI functions of
+:mod:`linecontact.cylinder`. ``cycle`` prints one record per amplitude (``W_over_Ea2``, the
+energy dissipated per cycle per unit length over ``E a^2``, and ``c_over_a``, the stick zone
+at the peaks; ``state`` ``"sliding"`` at or above full slip, with the loss null);
+``history`` one record per step (the stick zone, the slip direction, the turning points
+held, the displacement, the energy dissipated in the step and the ``zones``). The friction
+law and the contact are in ``parameters``.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from .. import domain as _domain
+from .. import tangential as tg
+from .._validation import check_array
+from ..cylinder import Cylinder
+from ..domain import check_si
+from ..output import Table, table_from_result
+from ..tangential.history import _T_LIMIT
+from ._common import si_parameters
+from ._declare import Entry, Inputs, Operation, Parameter
+from .tangential import (
+    _FRICTION,
+    _FRICTION_ENTRIES,
+    _SI_ENTRIES,
+    _check_friction,
+    _given,
+    _normal_contact,
+    _normal_contact_parameters,
+)
+
+__all__ = ["OPERATIONS"]
+
+_DESCRIPTION = {
+    "cycle": (
+        "Cyclic tangential loading between -T* and +T* at a fixed normal load: the energy "
+        "dissipated per cycle W/(E a^2) and the stick zone at the peaks (docs/cli.md)."
+    ),
+    "history": (
+        "A tangential load history from rest, one load per step: per step the stick zone, "
+        "slip, turning points in memory (Masing), displacement and energy (docs/cli.md)."
+    ),
+}
+_EXAMPLES = {
+    "cycle": [
+        "linecontact cycle --tau0-over-E 0.01 --T-amplitude-over-Ea 0.005 0.015",
+        "linecontact cycle --friction coulomb --mu 0.3 --a-over-R 0.01 "
+        "--T-amplitude-over-muF 0.1 0.5 --json",
+    ],
+    "history": [
+        "linecontact history --tau0-over-E 0.01 --T-over-Ea 0.016 -0.008 0.004 0.018",
+        "linecontact history --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 --load 1 "
+        "--tau0 1e9 --tangential-load 1 -1 1",
+    ],
+}
+
+
+def _inputs(args: Inputs, nd: str, coulomb_nd: str, si: str):
+    """(law, state flag, values, a_over_R, F_over_Eh, Cylinder or None), every flag checked."""
+    coulomb = args.friction == "coulomb"
+    _check_friction(args, coulomb, coulomb_nd, nd)
+    given = _given(args, nd, coulomb_nd, si)
+    flags = "--" + nd.replace("_", "-"), "--" + coulomb_nd.replace("_", "-")
+    si_flag = "--" + si.replace("_", "-")
+    if len(given) != 1:
+        raise ValueError(f"give exactly one of {flags[0]}, {flags[1]} (Coulomb) or {si_flag} [N/m]")
+    (state,) = given
+    A, F_over_Eh, cyl = _normal_contact(args, coulomb)
+    if cyl is None and state == si:
+        raise ValueError(
+            f"{si_flag} [N/m] is an SI input: give --radius, the materials and --load too, or "
+            f"use {flags[0]}"
+        )
+    # checked as given, before any conversion, so that a message names the flag typed
+    if state in (nd, coulomb_nd) or state == "tangential_amplitude" or state == si:
+        amplitude = state.startswith("T_amplitude") or state == "tangential_amplitude"
+        values = check_array(
+            state,
+            getattr(args, state),
+            # SI loads in N/m: their bound over E a or mu F is checked after conversion
+            low=0.0 if amplitude else (-np.inf if state == si else -_T_LIMIT),
+            low_inclusive=not amplitude and state != si,
+            high=np.inf if state == si else _T_LIMIT,
+            high_inclusive=state != si,
+        )
+    return coulomb, state, values, A, F_over_Eh, cyl
+
+
+def _friction_nd(args: Inputs, coulomb: bool, A) -> dict[str, Any]:
+    if coulomb:
+        if A is None:
+            raise ValueError(
+                "Coulomb friction needs the Hertz half-width: give --a-over-R (or --R-over-h "
+                "--sigma0-over-E 0 --F-over-Eh, or SI inputs)"
+            )
+        return {}
+    if args.tau0 is not None:
+        raise ValueError(
+            "--tau0 [Pa] is an SI input: give --radius, the materials and --load too, or use "
+            "--tau0-over-E"
+        )
+    if args.tau0_over_E is None:
+        raise ValueError("give the friction stress --tau0-over-E (or --friction coulomb --mu)")
+    return {}
+
+
+def _params(args, coulomb: bool, A, F_over_Eh) -> dict[str, Any]:
+    params: dict[str, Any] = {"friction": "coulomb" if coulomb else "constant"}
+    if A is not None:
+        params["a_over_R"] = float(A)
+    if F_over_Eh is not None:
+        params.update(R_over_h=args.R_over_h, sigma0_over_E=args.sigma0_over_E, F_over_Eh=F_over_Eh)
+    return params
+
+
+def _si_friction(args: Inputs, coulomb: bool, cyl: Cylinder) -> dict[str, Any]:
+    if coulomb:
+        return dict(friction_coefficient=args.mu)
+    if len(_given(args, "tau0", "tau0_over_E")) != 1:
+        raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
+    return dict(
+        friction_stress=args.tau0 if args.tau0 is not None else cyl.in_si(args.tau0_over_E, "E")
+    )
+
+
+def _si_loads(args: Inputs, cyl: Cylinder, state: str, values, coulomb) -> np.ndarray:
+    """Tangential loads [N/m] from the flag given: over E a, over mu F, or in N/m.
+
+    What scales them is checked first (``--mu``, ``--load``, each named); loads in N/m are
+    checked against the solvers' domain by the SI layer (as ``--tangential-load`` or
+    ``--tangential-amplitude``).
+    """
+    if coulomb:
+        _domain.scalar("--mu", args.mu, "mu")
+    if state.endswith("over_Ea"):
+        return cyl.tangential_load(args.load, values, over="Ea")
+    if state.endswith("over_muF"):
+        load = check_array("--load", args.load, low=-np.inf)
+        check_si("--load", load, cyl.scale("Eh"), "F_over_Eh", "N/m")
+        return cyl.tangential_load(args.load, values, over="muF", friction_coefficient=args.mu)
+    return values
+
+
+def _si_params(args, cyl, res, fr) -> dict[str, Any]:
+    params: dict[str, Any] = {"friction": res.friction}
+    params.update(si_parameters(args, cyl))
+    params.update(
+        F_N_per_m=args.load,
+        a_m=res.contact_half_width,
+        a_over_R=cyl.over(res.contact_half_width, "R"),
+        T_full_slip_N_per_m=res.full_slip_load,
+    )
+    if "friction_coefficient" in fr:
+        params["mu"] = fr["friction_coefficient"]
+    else:
+        params["tau0_Pa"] = fr["friction_stress"]
+    if args.length is not None:
+        params["F_total_N"] = cyl.total(args.load, args.length)
+    return params
+
+
+def _cmd_cycle(args: Inputs) -> Table:
+    coulomb, state, values, A, F_over_Eh, cyl = _inputs(
+        args, "T_amplitude_over_Ea", "T_amplitude_over_muF", "tangential_amplitude"
+    )
+    if cyl is not None:
+        fr = _si_friction(args, coulomb, cyl)
+        amp = _si_loads(args, cyl, state, values, coulomb)
+        res = cyl.cyclic_loss(args.load, amp, **fr, method=args.method)
+        extra: dict[str, Any] = {
+            "T_amplitude_N_per_m": res.amplitude,
+            "W_J_per_m": res.energy_per_cycle,
+            "c_m": res.stick_zone_half_width,
+        }
+        if args.length is not None:
+            extra["W_total_J"] = cyl.total(res.energy_per_cycle, args.length)
+        table = _cycle_table(args, res.nondimensional, _si_params(args, cyl, res, fr), extra)
+        return table
+    _friction_nd(args, coulomb, A)
+    if coulomb:
+        Q = values if state == "T_amplitude_over_muF" else values / ((np.pi / 4) * args.mu * A)
+        r: Any = tg.cyclic_loss_coulomb(args.mu, A, Q, method=args.method)
+    else:
+        r = tg.cyclic_loss(args.tau0_over_E, values, method=args.method)
+    return _cycle_table(args, r, _params(args, coulomb, A, F_over_Eh), {})
+
+
+def _cycle_table(args, r, params, extra):
+    show = ["T_amplitude_over_Ea", "T_amplitude_over_T_full_slip", "W_over_Ea2", "c_over_a"]
+    show += ["state", *extra]
+    law = "Coulomb friction" if params["friction"] == "coulomb" else "constant friction stress"
+    return table_from_result(
+        r,
+        columns=extra,
+        parameters=params,
+        command=args.command_line(),
+        title=f"cyclic tangential loading, {law} ({r.method}): energy dissipated per cycle",
+        show=show,
+    )
+
+
+def _cmd_history(args: Inputs) -> Table:
+    coulomb, state, values, A, F_over_Eh, cyl = _inputs(
+        args, "T_over_Ea", "T_over_muF", "tangential_load"
+    )
+    if cyl is not None:
+        fr = _si_friction(args, coulomb, cyl)
+        T = _si_loads(args, cyl, state, values, coulomb)
+        res = cyl.tangential_history(args.load, T, **fr, method=args.method)
+        extra: dict[str, Any] = {
+            "T_N_per_m": res.tangential_load,
+            "c_m": res.stick_zone_half_width,
+            "displacement_m": res.displacement,
+            "dissipation_J_per_m": res.dissipation,
+        }
+        if args.length is not None:
+            extra["dissipation_total_J"] = cyl.total(res.dissipation, args.length)
+        h = res.nondimensional
+        table = _history_table(args, h, _si_params(args, cyl, res, fr), extra)
+        return table
+    _friction_nd(args, coulomb, A)
+    if coulomb:
+        Q = values if state == "T_over_muF" else values / ((np.pi / 4) * args.mu * A)
+        h = tg.tangential_history_coulomb(args.mu, A, Q, method=args.method)
+    else:
+        h = tg.tangential_history(args.tau0_over_E, values, method=args.method)
+    return _history_table(args, h, _params(args, coulomb, A, F_over_Eh), {})
+
+
+def _history_table(args, h, params, extra):
+    zones = np.empty(h.step.size, dtype=object)
+    zones[:] = [[list(z) for z in zs] for zs in h.zones()]
+    cols = {**extra, "zones": zones}
+    show = ["step", "T_over_Ea", "T_over_T_full_slip", "state", "c_over_a", "slip_direction"]
+    show += ["memory", "displacement_over_a", "dissipation_over_Ea2", *extra]
+    law = "Coulomb friction" if params["friction"] == "coulomb" else "constant friction stress"
+    return table_from_result(
+        h,
+        columns=cols,
+        parameters=params,
+        command=args.command_line(),
+        title=f"tangential load history, {law} ({h.method})",
+        show=show,
+    )
+
+
+# --------------------------------------------------------------------------------------------
+# the declarations
+
+_LOADS = "tangential loads (exactly one)"
+
+
+def _operation(name: str, summary: str, loads: tuple[Parameter, ...], compute: Any) -> Operation:
+    return Operation(
+        name,
+        summary,
+        _DESCRIPTION[name],
+        tuple(_EXAMPLES[name]),
+        (
+            *_FRICTION,
+            *loads,
+            *_normal_contact_parameters(),
+            Parameter(
+                "method",
+                "Masing rules, or a stepwise check",
+                kind="text",
+                choices=("closed-form", "incremental"),
+                default="closed-form",
+            ),
+        ),
+        compute,
+        entries=(
+            *_FRICTION_ENTRIES,
+            *_SI_ENTRIES,
+            Entry(("F_over_Eh", "load"), "normal load F/(E h), or F [N/m] (SI)"),
+        ),
+        rows=tuple(p.name for p in loads) if name == "cycle" else (),
+    )
+
+
+OPERATIONS = {
+    "cycle": _operation(
+        "cycle",
+        "cyclic tangential loading: energy dissipated per cycle, stick zone",
+        (
+            Parameter(
+                "T_amplitude_over_Ea",
+                "amplitude T*/(E a), > 0",
+                many="several",
+                metavar="A",
+                group=_LOADS,
+            ),
+            Parameter(
+                "T_amplitude_over_muF",
+                "amplitude T*/(mu F), > 0 (Coulomb)",
+                many="several",
+                metavar="Q",
+                group=_LOADS,
+            ),
+            Parameter(
+                "tangential_amplitude",
+                "amplitude T* [N/m] (SI inputs)",
+                many="several",
+                unit="N/m",
+                metavar="T",
+                group=_LOADS,
+            ),
+        ),
+        _cmd_cycle,
+    ),
+    "history": _operation(
+        "history",
+        "a tangential load history with memory: zones, slip, energy per step",
+        (
+            Parameter(
+                "T_over_Ea",
+                "the loads T/(E a) at the ends of the steps, either sign",
+                many="several",
+                metavar="T",
+                group=_LOADS,
+            ),
+            Parameter(
+                "T_over_muF",
+                "the loads T/(mu F), either sign (Coulomb)",
+                many="several",
+                metavar="T",
+                group=_LOADS,
+            ),
+            Parameter(
+                "tangential_load",
+                "the loads T [N/m] (SI inputs)",
+                many="several",
+                unit="N/m",
+                metavar="T",
+                group=_LOADS,
+            ),
+        ),
+        _cmd_history,
+    ),
+}
