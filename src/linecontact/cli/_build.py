@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import argparse
 import sys
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import Any
 
 from ..operations import Inputs, Operation
@@ -63,15 +63,31 @@ def _add(sub: Any, op: Operation, func: Callable[[argparse.Namespace], int]) -> 
     p.set_defaults(func=func)
 
 
+class _Flags(Mapping[str, str]):
+    """The flags of the library's names of parameters in a call (``said_as``), kept live."""
+
+    def __init__(self, op: Operation, said_as: dict[str, str]) -> None:
+        self._op, self._said = op, said_as
+
+    def __getitem__(self, key: str) -> str:
+        return self._op.parameter(self._said[key]).option
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._said)
+
+    def __len__(self) -> int:
+        return len(self._said)
+
+
 def run(args: argparse.Namespace) -> int:
     """Compute the operation ``args.command`` with the parsed values; write its records."""
     op = _get(args.command)
     words = args.argv if args.argv is not None else sys.argv[1:]
     values = {q.name: getattr(args, q.name, q.default) for q in op.parameters}
     inputs = Inputs(op, values, words=words)
-    try:
-        table = op.run(inputs)
-    finally:  # the library's names of parameters, as their flags (for its messages)
-        args._api_flags = {k: op.parameter(v).option for k, v in inputs.said_as.items()}
+    # the library's names of parameters, as their flags, for its messages (as the
+    # computation names them, while it runs: a warning is said when it is raised)
+    args._api_flags = _Flags(op, inputs.said_as)
+    table = op.run(inputs)
     emit(args, table, checked=True)
     return finish(table, op.good) if op.good else 0

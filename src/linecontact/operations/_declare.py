@@ -291,9 +291,9 @@ class Inputs:
         except KeyError:
             raise AttributeError(name) from None
 
-    def __setattr__(self, name: str, value: Any) -> None:  # a default filled in by compute
-        if name not in self.__dict__["_values"]:
-            raise AttributeError(f"{name!r} is not a parameter of {self.command}")
+    def __setattr__(self, name: str, value: Any) -> None:
+        # a value the computation fills in or derives (a default, the advancing work of
+        # adhesion of a pair): this call's own, never the caller's
         self.__dict__["_values"][name] = value
 
     def replace(self, words: Sequence[str] | None = None, **values: Any) -> Inputs:
