@@ -9,6 +9,7 @@ one help entry each. A run reads the parsed values into the operation's
 from __future__ import annotations
 
 import argparse
+import importlib
 import sys
 from collections.abc import Callable, Iterable, Iterator, Mapping
 from typing import Any
@@ -22,6 +23,7 @@ from ._options import (
     emit,
     finish,
     show_together,
+    write_failure,
 )
 
 __all__ = ["add_operations", "run"]
@@ -47,7 +49,7 @@ def _add(sub: Any, op: Operation, func: Callable[[argparse.Namespace], int]) -> 
         g = sections[q.group] if q.group else p
         kw: dict[str, Any] = {"dest": q.name, "help": q.help}
         if q.kind == "switch":
-            kw["action"] = "store_true"
+            kw.update(action="store_true", default=q.default)
         else:
             kw.update(type=_TYPES[q.kind], nargs=_NARGS[q.many], default=q.default)
             if q.metavar is not None:
@@ -70,13 +72,28 @@ class _Flags(Mapping[str, str]):
         self._op, self._said = op, said_as
 
     def __getitem__(self, key: str) -> str:
-        return self._op.parameter(self._said[key]).option
+        said = self._said[key]  # a parameter's name, or words of flags ("--a / --b")
+        return said if said.startswith("--") else self._op.parameter(said).option
 
     def __iter__(self) -> Iterator[str]:
         return iter(self._said)
 
     def __len__(self) -> int:
         return len(self._said)
+
+
+def _draw(op: Operation, inputs: Inputs) -> None:
+    """The figure the computation left (``inputs.drawing``) into ``--plot FILE``."""
+    drawing = getattr(inputs, "drawing", None)
+    path = getattr(inputs, "plot", None)
+    if not (op.figures and drawing and path):
+        return
+    name, positional, keywords = drawing
+    module = importlib.import_module(f"linecontact.figures.{op.figures}")
+    try:
+        getattr(module, name)(*positional, path, **keywords)
+    except OSError as exc:
+        raise write_failure(f"--plot {path!r}", exc) from None
 
 
 def run(args: argparse.Namespace) -> int:
@@ -89,5 +106,6 @@ def run(args: argparse.Namespace) -> int:
     # computation names them, while it runs: a warning is said when it is raised)
     args._api_flags = _Flags(op, inputs.said_as)
     table = op.run(inputs)
+    _draw(op, inputs)  # before the records are written, as a failed figure is an error
     emit(args, table, checked=True)
     return finish(table, op.good) if op.good else 0

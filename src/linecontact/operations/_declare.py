@@ -209,6 +209,10 @@ class Operation:
         The parameters of several values that give one record each, in one call (``load``
         of ``normal``): a sweep hands them a row of points at once. A parameter of several
         values not listed makes one record of all of them (a fit's radii).
+    figures : str
+        The module of :mod:`linecontact.figures` whose function draws the computation's
+        figure where a shell has a file for it: the computation leaves
+        ``inputs.drawing = (function name, arguments, keywords)``, the file comes last.
     """
 
     name: str
@@ -221,6 +225,7 @@ class Operation:
     entries: tuple[Entry, ...] = ()
     api_names: Mapping[str, str] = field(default_factory=dict)
     rows: tuple[str, ...] = ()
+    figures: str = ""
     _by_key: dict[str, Parameter] = field(default_factory=dict, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -271,15 +276,18 @@ class Inputs:
         words: Sequence[str] | None = None,
         flags: Mapping[str, str] | None = None,
     ) -> None:
+        # every parameter, given or its default (and a value a computation derives: kept)
         self.__dict__["_values"] = {
-            p.name: values.get(p.name, p.default) for p in operation.parameters
+            **{p.name: p.default for p in operation.parameters},
+            **values,
         }
         self.__dict__["command"] = operation.name
         self.__dict__["operation"] = operation
         self.__dict__["given"] = tuple(n for n in values if values[n] is not None)
         #: the names the library's messages give parameters in this call, where the call
         #: chose them (``work_of_adhesion`` meaning the receding one): each shell says its
-        #: spelling (compute adds to it)
+        #: spelling (compute adds to it); a value is a parameter's name, or words of flags
+        #: (``"--pull-off-force-total / --length"``) said as they are
         self.__dict__["said_as"] = dict(operation.api_names)
         self.__dict__["words"] = (
             list(words) if words is not None else command_words(operation, values, flags)

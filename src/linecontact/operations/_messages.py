@@ -214,7 +214,10 @@ def spell(message: str, inputs: Any) -> str:
         argv=list(inputs.words),
         _flags={p.name: p.option for p in op.parameters},
         _choice_flags={p.option for p in op.parameters if p.choices is not None},
-        _api_flags={k: op.parameter(v).option for k, v in inputs.said_as.items()},
+        _api_flags={
+            k: v if v.startswith("--") else op.parameter(v).option
+            for k, v in inputs.said_as.items()
+        },
         _typed_as={},
     )
     return flag_message(message, args)

@@ -1,11 +1,10 @@
 """``fit-friction``: the interfacial shear strength from friction forces (or widths).
 
-Split from :mod:`linecontact.cli.fit`, which registers the subcommand.
+Declared in :mod:`linecontact.operations.fit`.
 """
 
 from __future__ import annotations
 
-import argparse
 import math
 import os
 from typing import Any
@@ -13,6 +12,7 @@ from typing import Any
 import numpy as np
 
 from .. import inverse as inv
+from ..output import Table
 from ._fit_common import (
     _ESTIMATE,
     EXACT,
@@ -24,10 +24,6 @@ from ._fit_common import (
     _table,
     _uncertainty,
 )
-from ._options import (
-    emit,
-    write_failure,
-)
 
 #: The largest shear strength [Pa] a measured width may give: a thousand times the stiffest
 #: modulus there is (beyond, the inputs are in other units, and the draws would overflow).
@@ -38,7 +34,7 @@ _TAU_MAX = 1e15
 # fit-friction
 
 
-def _friction_from_width(args: argparse.Namespace) -> int:
+def _friction_from_width(args: Any) -> Table:
     """tau0 = (f - dw)/(2 a) from one friction force and one measured half-width (no model)."""
     if args.data is not None:
         raise ValueError("--half-width is one measured width: give it without --data")
@@ -123,11 +119,10 @@ def _friction_from_width(args: argparse.Namespace) -> int:
         seed=args.seed,
     )
     title = "interfacial shear strength from a measured contact width"
-    emit(args, _table(args, rec, params, title, {"tau0_ci95_Pa": "Pa"}, hide))
-    return 0
+    return _table(args, rec, params, title, {"tau0_ci95_Pa": "Pa"}, hide)
 
 
-def run_friction(args: argparse.Namespace) -> int:
+def run_friction(args: Any) -> Table:
     _check_common(args)
     if args.half_width is not None:
         return _friction_from_width(args)
@@ -269,36 +264,23 @@ def run_friction(args: argparse.Namespace) -> int:
         params["data"] = os.fspath(args.data)
     if args.receding_work_of_adhesion is not None:
         params["receding_work_of_adhesion_J_per_m2"] = args.receding_work_of_adhesion
-    if args.plot:
-        from ..figures.fit import draw_friction_fit
-
-        try:
-            draw_friction_fit(
-                F,
-                f,
-                tau,
-                np.array([e.ci95 for e in ests]),
-                {k.upper() if k != "hertz" else "Hertz": np.asarray(v) for k, v in others.items()},
-                args.plot,
-                friction_sd=f_sd,
-                combined=(combined.tau0, combined.tau0_ci95),
-            )
-        except OSError as exc:
-            raise write_failure(f"--plot {args.plot!r}", exc) from None
+    # the figure, drawn by the shell that has a file for it (--plot)
+    others_ = {k.upper() if k != "hertz" else "Hertz": np.asarray(v) for k, v in others.items()}
+    args.drawing = (
+        "draw_friction_fit",
+        (F, f, tau, np.array([e.ci95 for e in ests]), others_),
+        {"friction_sd": f_sd, "combined": (combined.tau0, combined.tau0_ci95)},
+    )
     units = {"n_points": "1", "birge_ratio": "1", "tau0_per_point_ci95_Pa": "Pa"}
     hide = ("tau0_sd_Pa", "tau0_ci95_Pa", "birge_ratio") if rec["uncertainty"] == EXACT else ()
-    emit(
+    return _table(
         args,
-        _table(
-            args,
-            rec,
-            params,
-            f"interfacial shear strength from {n} friction force(s) ({args.contact} contact)",
-            units,
-            hide,
-        ),
+        rec,
+        params,
+        f"interfacial shear strength from {n} friction force(s) ({args.contact} contact)",
+        units,
+        hide,
     )
-    return 0
 
 
 def _friction_uncertainty(args, f_sd: np.ndarray, n: int, shared: tuple[float, ...]) -> str:

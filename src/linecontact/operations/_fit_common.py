@@ -1,12 +1,11 @@
 """The checks, the modulus and the tables shared by ``fit-adhesion`` and ``fit-friction``.
 
-Split from :mod:`linecontact.cli.fit` (the subcommands' registration and ``fit-adhesion``);
-``fit-friction`` is in :mod:`linecontact.cli._fit_friction`.
+Beside :mod:`linecontact.operations.fit` (the declarations and ``fit-adhesion``);
+``fit-friction`` is in :mod:`linecontact.operations._fit_friction`.
 """
 
 from __future__ import annotations
 
-import argparse
 import math
 import os
 from typing import Any
@@ -15,11 +14,8 @@ import numpy as np
 
 from ..measurements import read_measurements
 from ..output import Table
-from ._options import (
-    command_line,
-    si_parameters,
-)
-from ._options import cylinder as _cylinder
+from ._common import cylinder as _cylinder
+from ._common import si_parameters
 
 
 def _sd(text: str) -> tuple[float, bool]:
@@ -37,7 +33,7 @@ def _sd(text: str) -> tuple[float, bool]:
 # the modulus
 
 
-def _check_common(args: argparse.Namespace) -> None:
+def _check_common(args: Any) -> None:
     """--samples, --seed and --plot, before any work."""
     if not 10 <= args.samples <= 1_000_000:
         raise ValueError(f"--samples must be an integer in [10, 1000000], got {args.samples}")
@@ -49,7 +45,7 @@ def _check_common(args: argparse.Namespace) -> None:
             raise ValueError(f"--plot {args.plot!r}: the directory {parent!r} does not exist")
 
 
-def _modulus(args: argparse.Namespace) -> tuple[float, dict[str, Any]]:
+def _modulus(args: Any) -> tuple[float, dict[str, Any]]:
     """The composite modulus [Pa] from --modulus, the moduli or the presets, and its record."""
     if args.modulus is not None:
         if any(getattr(args, k) is not None for k in ("E1", "nu1", "E2", "nu2")) or (
@@ -63,9 +59,7 @@ def _modulus(args: argparse.Namespace) -> tuple[float, dict[str, Any]]:
         return args.modulus, {"modulus_Pa": args.modulus}
     # the SI layer's reader of the materials and presets (a radius and a range of its own,
     # unused: the radius given is checked where it is used, with the adhesion given)
-    ns = argparse.Namespace(**vars(args))
-    ns.radius = 1e-7
-    ns.h, ns.sigma0, ns.work_of_adhesion, ns.z0, ns.length = 1e-9, None, None, None, None
+    ns = args.replace(radius=1e-7, h=1e-9, sigma0=None, work_of_adhesion=None, z0=None, length=None)
     cyl = _cylinder(ns)
     # the moduli as used, with the presets' names and sources (a preset never hides them)
     keep = ("modulus_Pa", "E1_Pa", "nu1", "E2_Pa", "nu2", "dundurs_beta")
@@ -77,7 +71,7 @@ def _modulus(args: argparse.Namespace) -> tuple[float, dict[str, Any]]:
     return cyl.modulus, rec
 
 
-def _read(args: argparse.Namespace, kind: Any) -> dict[str, np.ndarray]:
+def _read(args: Any, kind: Any) -> dict[str, np.ndarray]:
     """The measurements of ``--data`` (:func:`linecontact.measurements.read_measurements`)."""
     return read_measurements(
         args.data, kind, length=args.length, source=f"--data {args.data!r}", length_name="--length"
@@ -191,7 +185,7 @@ def _table(
             cols[k] = np.asarray([v])
             if k not in hide:
                 show.append(k)
-    return Table(cols, params, units, command_line(args), title, show=tuple(show))
+    return Table(cols, params, units, args.command_line(), title, show=tuple(show))
 
 
 def _uncertainty(given: list[str], samples: int) -> str:
