@@ -7,8 +7,6 @@ record of NaN with its ``state`` and ``reason``.
 
 from __future__ import annotations
 
-import copy
-import functools
 import json
 import math
 import warnings
@@ -19,8 +17,9 @@ import numpy as np
 
 from ..errors import ConvergenceError
 from ..lennard_jones import _forget
+from ..operations._messages import spell
 from ..output import unit_of
-from ._plan import Plan, parse
+from ._plan import Plan, template
 
 __all__ = ["TEXT", "Block", "assemble", "call", "codes", "is_text", "template", "to_text"]
 
@@ -100,11 +99,6 @@ class Block:
     code: str = ""
 
 
-@functools.lru_cache(maxsize=8)
-def template(p: Plan) -> Any:
-    return parse(p.command, p.template_words())
-
-
 def _words(p: Plan, values: dict[str, Any]) -> list[str]:
     words = list(p.fixed)
     for a in p.axes:
@@ -117,33 +111,30 @@ def _words(p: Plan, values: dict[str, Any]) -> list[str]:
 
 
 def call(p: Plan, values: dict[str, Any], said: list[tuple[str, str]]) -> tuple[Any, str, str]:
-    """Run the subcommand at ``values`` (dest: value): (its table or None, state, reason)."""
-    from ..cli._options import NoPointError, flag_message
-
+    """Run the operation at ``values`` (name: value): (its table or None, state, reason)."""
     _forget()  # each point as a fresh process computes it, whatever came before
-    args = copy.copy(template(p))
-    for a in p.axes:
-        v = values[a.dest]
-        setattr(args, a.dest, v if isinstance(v, list) or not a.many else [v])
-    args.argv = [p.command, *_words(p, values)]
-    args._capture = []
+    base = template(p)
+    at = {
+        a.dest: v if isinstance(v, list) or not a.many else [v]
+        for a in p.axes
+        for v in (values[a.dest],)
+    }
+    inputs = base.replace(words=[p.command, *_words(p, values)], **at)
     state, reason = "", ""
+    table = None
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:
-            args.func(args)
-        except NoPointError:
-            pass  # the table is captured: its points carry state and reason
+            table = inputs.operation.run(inputs)
         except ConvergenceError as exc:
-            state, reason = "not-converged", flag_message(str(exc), args)
+            state, reason = "not-converged", spell(str(exc), inputs)
         except (ValueError, OverflowError, ZeroDivisionError) as exc:
-            state, reason = "invalid", flag_message(str(exc), args)
+            state, reason = "invalid", spell(str(exc), inputs)
     for w in caught:
-        item = (w.category.__name__, flag_message(str(w.message), args))
+        item = (w.category.__name__, spell(str(w.message), inputs))
         if item not in said:
             said.append(item)
-    table = args._capture[0] if args._capture and not state else None
-    return table, state, reason
+    return (table if not state else None), state, reason
 
 
 def _column(v: np.ndarray) -> np.ndarray:

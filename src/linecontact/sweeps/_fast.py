@@ -9,7 +9,6 @@ units), which ``tests/test_sweep.py`` checks against the point-by-point path.
 
 from __future__ import annotations
 
-import copy
 import functools
 import math
 import warnings
@@ -21,8 +20,11 @@ from .. import materials as _materials
 from ..cylinder import _ZERO_WIDTH, _warn_widths
 from ..domain import DOMAIN
 from ..normal import pull_off
+from ..operations._common import _presets, groups
+from ..operations._messages import spell
 from ..output import table_from_result, unit_of
 from ._plan import Plan
+from ._plan import template as _template
 
 __all__ = ["pulloff_block"]
 
@@ -41,8 +43,6 @@ def _checked(p: Plan) -> tuple[Any, dict[str, np.ndarray], list[tuple[str, str]]
     the smallest and the largest value of an axis pass, so do those between. Only an axis
     whose ends do not is checked value by value.
     """
-    from ._block import template as _template
-
     template = _template(p)
     base = {a.dest: a.values[0] for a in p.axes}
     bad: dict[str, np.ndarray] = {}
@@ -71,24 +71,22 @@ def _check_one(
     p: Plan, template: Any, base: dict[str, Any], a: Any, v: Any, said: list[tuple[str, str]]
 ) -> str:
     """The message refusing the value ``v`` of the axis ``a`` ("" where it passes)."""
-    from ..cli._options import flag_message, groups
-
-    args = copy.copy(template)
     words = list(p.fixed)
+    at: dict[str, Any] = {}
     for b in p.axes:
         value = v if b is a else base[b.dest]
-        setattr(args, b.dest, value)
+        at[b.dest] = value
         words += [b.flag, repr(value)]
-    args.argv = [p.command, *words]
+    args = template.replace(words=[p.command, *words], **at)
     msg = ""
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:
             groups(args)
         except (ValueError, OverflowError) as exc:
-            msg = flag_message(str(exc), args)
+            msg = spell(str(exc), args)
     for w in caught:
-        item = (w.category.__name__, flag_message(str(w.message), args))
+        item = (w.category.__name__, spell(str(w.message), args))
         if item not in said:
             said.append(item)
     return msg
@@ -228,8 +226,6 @@ def _outside(
 
 def _si_inputs(get: Any, t: Any) -> tuple[Any, Any, Any, Any]:
     """Radius, composite modulus, sigma0 and h [SI] of the valid points, as arrays."""
-    from ..cli._options import _presets
-
     R = np.asarray(get("radius"), float)
     if t.modulus is not None or get("modulus") is not None and t.E1 is None:
         E = np.asarray(get("modulus"), float)

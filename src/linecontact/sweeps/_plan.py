@@ -1,59 +1,65 @@
-"""A sweep's plan: the subcommand, its fixed flags, the swept flags and their values, blocks.
+"""A sweep's plan: the operation, its fixed flags, the swept flags and their values, blocks.
 
-The command line of a sweep is the subcommand's own, with several values (or ranges
-``start:stop:num[:log]``) for the flags to sweep. :func:`plan` splits it: the flags with
-one value stay as typed; each flag with several values becomes an :class:`Axis`, a dimension
-of the result named as the flag without dashes (``--work-of-adhesion`` -> ``work_of_adhesion``).
-The points are the outer product of the axes, in the order the flags were given, cut into
-blocks (:func:`blocks`) that are computed, stored and resumed as wholes.
+The command line of a sweep is the operation's (:mod:`linecontact.operations`: its declared
+parameters, their units and counts), with several values (or ranges ``start:stop:num[:log]``)
+for the flags to sweep. :func:`plan` splits it: the flags with one value stay as typed; each
+flag with several values becomes an :class:`Axis`, a dimension of the result named as the
+flag without dashes (``--work-of-adhesion`` -> ``work_of_adhesion``), in the unit its
+declaration gives. The points are the outer product of the axes, in the order the flags were
+given, cut into blocks (:func:`blocks`) that are computed, stored and resumed as wholes.
 """
 
 from __future__ import annotations
 
-import argparse
-import contextlib
+import functools
 import hashlib
-import io
 import json
 import math
 import re
 from dataclasses import dataclass
 from typing import Any
 
+from .. import operations
 from .._fingerprint import code_digest
+from ..operations import Inputs, Operation, Parameter
 from ._ranges import MAX_SWEEP_POINTS, count_values, flag_values
 
-__all__ = ["MAX_BLOCKS", "SWEEPABLE", "Axis", "Plan", "blocks", "count_blocks", "plan"]
+__all__ = [
+    "MAX_BLOCKS",
+    "SWEEPABLE",
+    "Axis",
+    "Plan",
+    "blocks",
+    "count_blocks",
+    "plan",
+    "template",
+    "typed",
+]
 
 #: Most blocks one sweep is cut into (each is kept, resumed and scheduled as a whole): a
 #: point-by-point sweep of many points gets larger blocks.
 MAX_BLOCKS = 100_000
 
-#: The subcommands a sweep runs, and for each the flags whose several values its own code
-#: takes in one call, one record per value (the sweep hands it a row of points at once).
-SWEEPABLE: dict[str, frozenset[str]] = {
-    "normal": frozenset({"--a-over-R", "--F-over-Eh", "--half-width", "--load"}),
-    "pulloff": frozenset(),
-    "curve": frozenset(),
-    "slide": frozenset({"--a-over-R", "--F-over-Eh2", "--half-width", "--load"}),
-    "slide-init": frozenset({"--d-over-a", "--T-over-Ea", "--T-over-muF", "--tangential-load"}),
-    "roll": frozenset({"--d-over-a", "--T-over-Ea", "--T-over-muF", "--tangential-load"}),
-    "cycle": frozenset(
-        {"--T-amplitude-over-Ea", "--T-amplitude-over-muF", "--tangential-amplitude"}
-    ),
-    "push": frozenset({"--H-over-R", "--height", "--tip-height"}),
-    "fit-adhesion": frozenset(),
-    "fit-friction": frozenset(),
-}
+#: The operations a sweep runs (``history`` takes a sequence of loads: sweep ``cycle``); the
+#: parameters each takes a row of points of in one call are its declared ``rows``.
+SWEEPABLE: tuple[str, ...] = (
+    "normal",
+    "pulloff",
+    "curve",
+    "slide",
+    "slide-init",
+    "roll",
+    "cycle",
+    "push",
+    "fit-adhesion",
+    "fit-friction",
+)
 
 #: The subcommands' output options: a sweep writes its own store (``-o``), never these.
 _OUTPUT_FLAGS = ("--format", "--json", "--indent", "--plot", "-o", "--output")
 
 #: A word that is a flag (not a number, a negative number or a range).
 _FLAG = re.compile(r"^--?[A-Za-z]")
-
-#: Units of the flags whose help does not say them in brackets.
-_UNITS = {"--radius": "m", "--modulus": "Pa", "--E1": "Pa", "--E2": "Pa", "--nu1": "1"}
 
 
 @dataclass(frozen=True)
@@ -157,45 +163,67 @@ class Plan:
         return words
 
 
-def subparser(command: str) -> argparse.ArgumentParser:
-    """The full parser of ``linecontact COMMAND``."""
-    from ..cli import build_parser
-
-    root = build_parser([command])
-    sub: argparse.ArgumentParser = root.get_default("_subparsers").choices[command]
-    return sub
-
-
-def parse(command: str, words: list[str]) -> argparse.Namespace:
-    """The parsed arguments of ``linecontact COMMAND WORDS``; a usage error is a ValueError."""
-    from ..cli import build_parser
-    from ..cli._options import record_flags
-
-    root = build_parser([command])
-    err = io.StringIO()
+def _parameter(op: Operation, flag: str) -> Parameter | None:
+    """The parameter ``flag`` names (its flag or an old spelling; None: none)."""
+    if not flag.startswith("--"):
+        return None
     try:
-        with contextlib.redirect_stderr(err):
-            args = root.parse_args([command, *words])
-    except SystemExit as exc:
-        text = err.getvalue().strip().splitlines()
-        message = text[-1] if text else f"bad arguments for {command}"
-        raise ValueError(message.split(": error: ", 1)[-1]) from exc
-    record_flags(root.get_default("_subparsers").choices[command], args)
-    args.command = command
-    return args
+        return op.parameter(flag[2:].replace("-", "_"))
+    except ValueError:
+        return None
 
 
-def _unit(flag: str, action: argparse.Action, kind: Any) -> str:
-    if kind not in (float, int):
+def _unit(p: Parameter) -> str:
+    """The unit of an axis: the declared SI unit, ``"1"`` for a group, ``""`` for words."""
+    if p.kind not in ("number", "integer"):
         return ""
-    if flag in _UNITS:
-        return _UNITS[flag]
-    if "-over-" in flag:
-        return "1"
-    m = re.search(r"\[([^\]%]+)\]", action.help or "")
-    if m:
-        return m.group(1)
-    return "1"
+    return p.unit or "1"
+
+
+def typed(command: str, words: list[str]) -> dict[str, Any]:
+    """The typed values of the operation ``command`` for its ``words`` (flags and values).
+
+    A word that is no flag of it, or a value of the wrong kind or count, is a ValueError
+    that names the flag as the command line says it.
+    """
+    op = operations.get(command)
+    out: dict[str, Any] = {}
+    for flag, values in _split(words):
+        p = _parameter(op, flag)
+        if p is None or p.shell_only:
+            raise ValueError(
+                f"{flag} is not a flag of linecontact {command} (linecontact {command} --help "
+                "lists them)"
+            )
+        if p.kind == "switch":
+            if values:
+                raise ValueError(f"argument {flag}: ignored explicit argument {values[0]!r}")
+            out[p.name] = True
+            continue
+        if (
+            not values
+            or (p.many == "one" and len(values) > 1)
+            or (p.many == "triple" and len(values) != 3)
+        ):
+            n = len(values)
+            raise ValueError(
+                p.refusal(values, f"argument {flag}: expected one argument")
+                if n == 0 or p.many != "one"
+                else f"{flag} takes one value, got {n}: a sweep's several values of a flag "
+                "are its axis"
+            )
+        try:
+            out[p.name] = p.convert(values, flag)
+        except ValueError as exc:
+            raise ValueError(p.refusal(values, str(exc))) from None
+    return out
+
+
+@functools.lru_cache(maxsize=8)
+def template(p: Plan) -> Inputs:
+    """The operation's inputs at the plan's fixed values and each axis's first value."""
+    op = operations.get(p.command)
+    return Inputs(op, typed(p.command, p.template_words()), words=[p.command, *p.template_words()])
 
 
 def _split(words: list[str]) -> list[tuple[str, list[str]]]:
@@ -221,37 +249,33 @@ def plan(
             f"cannot sweep {command!r}: a sweep runs one of {', '.join(SWEEPABLE)} (history "
             "takes a sequence of loads: sweep cycle; map and the figures draw their own)"
         )
-    sp = subparser(command)
-    actions = sp._option_string_actions
+    op = operations.get(command)
     fixed: list[str] = []
     axes: list[Axis] = []
     split = _split(words)
-    _check_size(split, actions)  # before any range is expanded
+    _check_size(split, op)  # before any range is expanded
     for flag, values in split:
         if flag in _OUTPUT_FLAGS:
             raise ValueError(
                 f"{flag} is not for a sweep: it writes its labelled arrays to -o OUT (.zarr or .nc)"
             )
-        action = actions.get(flag)
-        if action is None:
+        par = _parameter(op, flag)
+        if par is None or par.shell_only:
             raise ValueError(
                 f"{flag} is not a flag of linecontact {command} (linecontact {command} --help "
                 "lists them)"
             )
-        if not flag.startswith("--") or action.nargs not in (None, "+") or action.nargs == 0:
+        if par.many == "triple" or par.kind == "switch":
             fixed += [flag, *values]
             continue
-        if isinstance(action, argparse._StoreConstAction | argparse._StoreTrueAction):
-            fixed += [flag, *values]
-            continue
-        kind = action.type if action.type in (float, int) else str
+        kind = {"number": float, "integer": int}.get(par.kind, str)
         vals = flag_values(flag, values, kind)
-        if action.choices is not None:
-            bad = [v for v in vals if v not in action.choices]
+        if par.choices is not None:
+            bad = [v for v in vals if v not in par.choices]
             if bad:
                 raise ValueError(
                     f"{flag}: invalid choice {bad[0]!r} (choose from "
-                    f"{', '.join(map(str, action.choices))})"
+                    f"{', '.join(map(str, par.choices))})"
                 )
         if len(vals) == 1:
             fixed += [flag, repr(vals[0]) if kind in (float, int) else str(vals[0])]
@@ -259,15 +283,11 @@ def plan(
         if any(a.flag == flag for a in axes):
             raise ValueError(f"{flag} is given twice")
         name = flag.lstrip("-").replace("-", "_")
-        axes.append(
-            Axis(
-                flag, name, action.dest, tuple(vals), _unit(flag, action, kind), action.nargs == "+"
-            )
-        )
+        axes.append(Axis(flag, name, par.name, tuple(vals), _unit(par), par.many == "several"))
     size = math.prod(len(a.values) for a in axes)
     vector = None
     for a in reversed(axes):
-        if a.flag in SWEEPABLE[command]:
+        if a.dest in op.rows:
             vector = a.dest
             break
     whole = command == "pulloff" and "lennard-jones" not in fixed and all(a.unit for a in axes)
@@ -294,11 +314,11 @@ def plan(
         int(chunk_points),
         vector,
     )
-    parse(command, p.template_words())  # every other flag checked by the subcommand's parser
+    typed(command, p.template_words())  # every other flag checked against its declaration
     return p
 
 
-def _check_size(split: list[tuple[str, list[str]]], actions: dict[str, Any]) -> None:
+def _check_size(split: list[tuple[str, list[str]]], op: Operation) -> None:
     """Refuse a sweep of more than :data:`MAX_SWEEP_POINTS` points before building its values.
 
     The values of each flag are counted from its words (a range ``start:stop:num`` counts
@@ -306,10 +326,10 @@ def _check_size(split: list[tuple[str, list[str]]], actions: dict[str, Any]) -> 
     """
     counts: list[tuple[str, int]] = []
     for flag, values in split:
-        action = actions.get(flag)
-        if action is None or action.nargs not in (None, "+") or not values:
+        par = _parameter(op, flag)
+        if par is None or par.many == "triple" or par.kind == "switch" or not values:
             continue
-        kind = action.type if action.type in (float, int) else str
+        kind = {"number": float, "integer": int}.get(par.kind, str)
         n = count_values(flag, values, kind)
         if n > 1:
             counts.append((flag, n))

@@ -1,8 +1,8 @@
-"""Computing one block of a sweep by the subcommand's own code, in this process.
+"""Computing one block of a sweep by the operation's own code, in this process.
 
-Each point runs the subcommand as the command line would (the same checks, the same
-records), its table captured instead of written (:func:`linecontact.cli._options.emit`).
-Where the innermost swept flag is one the subcommand takes several values of (``--load``,
+Each point is one call of the operation (:mod:`linecontact.operations`) with typed values:
+the same checks and the same records as the command line, never its text. Where the
+innermost swept flag is one of the operation's declared ``rows`` (``--load``,
 ``--tangential-load``), a row of points is one call. A point without a state (a load below
 the pull-off, a solver that missed its tolerance, an input outside the domain) is a record of
 NaN with its ``state`` and ``reason``; it never fails the block.
