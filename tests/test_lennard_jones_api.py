@@ -4,8 +4,8 @@ The conversion to the Dugdale groups is checked against the native solver
 (:mod:`linecontact.lennard_jones`) with the groups derived here from the matching alone
 (``w = sigma0 h``, ``sigma0 = S w/z0``, ``S = 16/(9 sqrt 3)``), not with the library's
 ``mu_of_dugdale``; the contact for a load read off the curve against the curve; the Dugdale
-default against the explicit ``law="dugdale"``; bad input; the CLI's JSON and exit codes; the
-deprecated ``law="lennard-jones"`` (it warns and gives the module's answer).
+default; bad input; the CLI's JSON and exit codes; the ``law=`` keyword gone (a law is a
+module: ``law="lennard-jones"`` was deprecated and is deleted before 1.0).
 Parameters are chosen for ``mu`` about 0.1 (a solve about a second).
 """
 
@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import json
 import math
-import warnings
 
 import numpy as np
 import pytest
@@ -126,7 +125,7 @@ def test_curve_is_the_native_curve_in_dugdale_groups(curve):
     assert po.F_pulloff_over_Eh <= curve.F_over_Eh.min() + 1e-12
     assert np.all(np.diff(curve.central_gap_over_h) < 0)
     assert curve.F_over_Eh[-1] >= 7.5 * scale and curve.a_over_R[-1] > 0
-    # and it is the pull-off of pull_off(law="lennard-jones"), to the error estimates
+    # and it is the pull-off of the law's module, to the error estimates
     ref = lj_law.pull_off(RHO, SIG)
     assert abs(ref.F_pulloff_over_Eh - po.F_pulloff_over_Eh) <= 10 * (
         ref.error_estimate_over_Eh + po.error_estimate_over_Eh
@@ -231,10 +230,10 @@ def test_cylinder_pull_off_in_si(fibre):
 
 def test_cylinder_refuses_what_the_law_does_not_do(fibre):
     cyl, _ = fibre
-    with pytest.raises(ValueError, match="law must be"):
-        cyl.contact(load=0.1, law="lj")
-    with pytest.raises(ValueError, match="law must be"):
-        cyl.pull_off(law="lj")
+    with pytest.raises(TypeError, match="law"):
+        cyl.contact(load=0.1, law="lennard-jones")
+    with pytest.raises(TypeError, match="law"):
+        cyl.pull_off(law="lennard-jones")
     with pytest.raises(ValueError, match=r"beyond the loads .* N/m"):
         cyl.lennard_jones_contact(load=1e3)
     hertz = Cylinder.from_modulus(50e-9, 20e9, adhesion_range=0.3e-9)
@@ -250,27 +249,24 @@ def test_the_dugdale_default_is_unchanged():
     F = np.array([-0.1, 0.0, 0.3])
     r = lc.contact_for_load(F, RHO, 0.05)
     assert isinstance(r, NormalContact)
-    assert r.to_dict() == lc.contact_for_load(F, RHO, 0.05, law="dugdale").to_dict()
+    assert r.to_dict() == lj_free_contact(F, 0.05).to_dict()
     c = lc.load_curve(RHO, 0.05, num=20, num_noncontact=5)
     assert isinstance(c, LoadCurve)
-    assert (
-        c.to_dict() == lc.load_curve(RHO, 0.05, num=20, num_noncontact=5, law="dugdale").to_dict()
-    )
+    assert c.to_dict() == lc.laws.dugdale.load_curve(RHO, 0.05, num=20, num_noncontact=5).to_dict()
     cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
     k = cyl.contact(load=[0.0, 1.0])
     assert isinstance(k, CylinderContact)
-    np.testing.assert_array_equal(
-        k.contact_half_width, cyl.contact(load=[0.0, 1.0], law="dugdale").contact_half_width
-    )
     assert isinstance(cyl.pull_off(), CylinderPullOff)
-    assert cyl.pull_off().pull_off_force == cyl.pull_off(law="dugdale").pull_off_force
+
+
+def lj_free_contact(F, s):
+    """The Dugdale law's module: the same function as linecontact.contact_for_load."""
+    return lc.laws.dugdale.contact_for_load(F, RHO, s)
 
 
 @pytest.mark.parametrize(
     ("call", "match"),
     [
-        (lambda: lc.contact_for_load(0.0, RHO, SIG, law="lj"), "law must be"),
-        (lambda: lc.load_curve(RHO, SIG, law="Lennard-Jones"), "law must be"),
         (lambda: lj_law.contact_for_load(0.0, RHO, SIG_BAD), f"mu={MU_BAD:.6g}"),
         (lambda: lj_law.load_curve(RHO, SIG_BAD), f"mu={MU_BAD:.6g}"),
         (lambda: lj_law.contact_for_load(0.0, RHO, 0.0), "sigma0_over_E must be > 0"),
@@ -280,7 +276,6 @@ def test_the_dugdale_default_is_unchanged():
         (lambda: lj_law.contact_for_load(3.0, RHO, SIG), "beyond the loads"),
         (lambda: lj_law.load_curve(RHO, SIG, F_max_over_Eh=3.0), "beyond the loads"),
         (lambda: lj_law.load_curve(RHO, SIG, F_max_over_Eh=-1.0), "F_max_over_Eh"),
-        (lambda: lc.load_curve(RHO, SIG, F_max_over_Eh=1.0), "applies to law='lennard-jones'"),
     ],
 )
 def test_bad_input_is_refused_before_any_solve(call, match):
@@ -290,7 +285,7 @@ def test_bad_input_is_refused_before_any_solve(call, match):
 
 
 # --------------------------------------------------------------------------------------------
-# a law is a module: the deprecated law="lennard-jones"
+# a law is a module
 
 
 def test_the_modules_share_names_and_argument_order():
@@ -305,56 +300,21 @@ def test_the_modules_share_names_and_argument_order():
     assert dugdale.pull_off is lc.pull_off and lc.laws.lennard_jones is lj_law
 
 
-def test_the_default_and_law_dugdale_do_not_warn(fibre):
-    cyl, _ = fibre
-    with warnings.catch_warnings():
-        warnings.simplefilter("error", DeprecationWarning)
-        lc.pull_off(RHO, SIG)
-        lc.pull_off(RHO, SIG, law="dugdale")
-        lc.contact_for_load(0.1, RHO, SIG, law="dugdale")
-        lc.load_curve(RHO, SIG, num=5, num_noncontact=2, law="dugdale")
-        cyl.pull_off(law="dugdale")
-        cyl.contact(load=0.1, law="dugdale")
-
-
-def test_the_deprecated_law_still_works_and_warns(curve, fibre):
-    cyl, _ = fibre
-    with pytest.warns(DeprecationWarning, match=r"linecontact\.laws\.lennard_jones\.pull_off"):
-        po = lc.pull_off(RHO, SIG, law=LJ)
-    assert po.F_pulloff_over_Eh == pytest.approx(lj_law.pull_off(RHO, SIG).F_pulloff_over_Eh)
-    with pytest.warns(DeprecationWarning, match="lennard_jones.contact_for_load") as rec:
-        r = lc.contact_for_load([-1.0, 0.05], RHO, SIG, law=LJ, on_failure="report")
-    assert rec[0].filename == __file__  # said at the caller's line
-    ref = lj_law.contact_for_load([-1.0, 0.05], RHO, SIG, on_failure="report")
-    assert isinstance(r, LennardJonesContact) and list(r.state) == list(ref.state)
-    np.testing.assert_allclose(r.a_over_R, ref.a_over_R, rtol=1e-8)
-    with pytest.warns(DeprecationWarning, match="lennard_jones.load_curve"):
-        c = lc.load_curve(RHO, SIG, law=LJ)
-    np.testing.assert_allclose(c.F_over_Eh, curve.F_over_Eh, rtol=1e-8, atol=1e-9)
-    with pytest.warns(DeprecationWarning, match=r"Cylinder\.lennard_jones_pull_off\(\)"):
-        p = cyl.pull_off(law=LJ)
-    assert isinstance(p, CylinderLennardJonesPullOff)
-    assert p.pull_off_force == pytest.approx(cyl.lennard_jones_pull_off().pull_off_force, rel=1e-8)
-    with pytest.warns(DeprecationWarning, match=r"Cylinder\.lennard_jones_contact"):
-        k = cyl.contact(load=0.2, law=LJ)
-    assert isinstance(k, CylinderLennardJonesContact)
-    assert k.contact_half_width == pytest.approx(
-        cyl.lennard_jones_contact(load=0.2).contact_half_width, rel=1e-8
-    )
-
-
 @pytest.mark.parametrize(
-    ("call", "match"),
+    "call",
     [
-        (lambda c: lc.contact_for_load(0.0, RHO, SIG, branch="unstable", law=LJ), "unstable"),
-        (lambda c: lc.load_curve(RHO, SIG, law=LJ, num=10), "apply to law='dugdale'"),
-        (lambda c: lc.load_curve(RHO, SIG, law=LJ, a_max_over_R=0.1), "apply to law='dugdale'"),
-        (lambda c: c.contact(contact_half_width=1e-9, law=LJ), "given load only"),
-        (lambda c: c.contact(load=0.1, branch="unstable", law=LJ), "branch"),
+        lambda c: lc.pull_off(RHO, SIG, law="lennard-jones"),
+        lambda c: lc.contact_for_load(0.1, RHO, SIG, law="lennard-jones"),
+        lambda c: lc.load_curve(RHO, SIG, law="lennard-jones"),
+        lambda c: lc.load_curve(RHO, SIG, F_max_over_Eh=1.0),
+        lambda c: c.pull_off(law="lennard-jones"),
+        lambda c: c.contact(load=0.1, law="lennard-jones"),
     ],
 )
-def test_the_deprecated_law_refuses_the_dugdale_options(fibre, call, match):
-    with pytest.warns(DeprecationWarning), pytest.raises(ValueError, match=match):
+def test_the_law_keyword_is_gone_a_law_is_a_module(fibre, call):
+    # deleted before 1.0 (issue 32): linecontact.laws.lennard_jones and the Cylinder's
+    # lennard_jones_* methods are the Lennard-Jones law
+    with pytest.raises(TypeError, match="law|F_max_over_Eh"):
         call(fibre[0])
 
 

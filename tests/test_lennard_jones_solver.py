@@ -219,8 +219,8 @@ def test_pull_off_law_lennard_jones_in_dugdale_groups():
         lj_groups_pull_off(100.0, math.inf)
     with pytest.raises(ValueError, match="sigma0_over_E must be > 0"):
         lj_groups_pull_off(100.0, 0.0)
-    with pytest.raises(ValueError, match="law must be"):
-        pull_off(100.0, 0.01, law="lj")
+    with pytest.raises(TypeError, match="law"):
+        pull_off(100.0, 0.01, law="lennard-jones")  # a law is a module (laws.lennard_jones)
 
 
 def test_contact_for_a_load_the_curve_passed_through():

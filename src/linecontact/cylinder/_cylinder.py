@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Literal, overload
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -357,7 +357,6 @@ class Cylinder(_Problems):
             **si, stable=r.stable, state=r.state, nondimensional=r, scales=Scales.of(self)
         )
 
-    @overload
     def contact(
         self,
         *,
@@ -366,34 +365,8 @@ class Cylinder(_Problems):
         method: str = "closed-form",
         branch: str = "stable",
         on_failure: FailurePolicy = RAISE,
-        law: Literal["dugdale"] = "dugdale",
         **deprecated: Any,
-    ) -> CylinderContact: ...
-
-    @overload
-    def contact(
-        self,
-        *,
-        contact_half_width: ArrayLike | None = None,
-        load: ArrayLike | None = None,
-        method: str = "closed-form",
-        branch: str = "stable",
-        on_failure: FailurePolicy = RAISE,
-        law: str,
-        **deprecated: Any,
-    ) -> CylinderContact | CylinderLennardJonesContact: ...
-
-    def contact(
-        self,
-        *,
-        contact_half_width: ArrayLike | None = None,
-        load: ArrayLike | None = None,
-        method: str = "closed-form",
-        branch: str = "stable",
-        on_failure: FailurePolicy = RAISE,
-        law: str = "dugdale",
-        **deprecated: Any,
-    ) -> CylinderContact | CylinderLennardJonesContact:
+    ) -> CylinderContact:
         """The contact at given half-widths ``a`` [m] or loads ``F`` [N/m] (exactly one).
 
         For a load, ``branch`` selects the stable (default) or the unstable contact state;
@@ -403,31 +376,14 @@ class Cylinder(_Problems):
         is that of :func:`~linecontact.normal_contact` (a collocation point that misses its
         tolerance raises :class:`~linecontact.errors.ConvergenceError`, or is flagged in
         ``nondimensional.converged``). README, "Conventions"; ``on_no_equilibrium`` is the
-        deprecated form of ``on_failure``.
-
-        ``law="lennard-jones"`` is deprecated (a ``DeprecationWarning``): use
-        :meth:`lennard_jones_contact`, which it calls. ``law="dugdale"`` (the default) is
-        accepted silently.
+        deprecated form of ``on_failure``. The Lennard-Jones law's contact:
+        :meth:`lennard_jones_contact`.
         """
-        _normal._check_law(law, "Cylinder.contact", "Cylinder.lennard_jones_contact(load=...)")
         if (contact_half_width is None) == (load is None):
             raise ValueError("give exactly one of contact_half_width or load")
         policy = failure_policy(
             on_failure, where="Cylinder.contact", accepts=("on_no_equilibrium",), **deprecated
         )
-        if law == "lennard-jones":
-            if load is None:
-                raise ValueError(
-                    "under the Lennard-Jones law the contact is found for a given load only: "
-                    "give load [N/m], not contact_half_width"
-                )
-            if method != "closed-form" or branch != "stable":
-                raise ValueError(
-                    "method and branch apply to law='dugdale': under the Lennard-Jones law the "
-                    "contact for a load is the stable state beyond the pull-off"
-                )
-            self._check_lennard_jones()
-            return self._for_load_lj("load", load, policy)
         if method not in ("closed-form", "collocation"):
             raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
         if branch not in ("stable", "unstable"):
@@ -541,22 +497,11 @@ class Cylinder(_Problems):
             **si, stable=r.stable, state=r.state, nondimensional=r, scales=Scales.of(self)
         )
 
-    @overload
-    def pull_off(self, *, law: Literal["dugdale"] = "dugdale") -> CylinderPullOff: ...
-
-    @overload
-    def pull_off(self, *, law: str) -> CylinderPullOff | CylinderLennardJonesPullOff: ...
-
-    def pull_off(self, *, law: str = "dugdale") -> CylinderPullOff | CylinderLennardJonesPullOff:
+    def pull_off(self) -> CylinderPullOff:
         """Pull-off force under load control [N/m] (the Maugis--Dugdale law).
 
-        ``law="lennard-jones"`` is deprecated (a ``DeprecationWarning``): use
-        :meth:`lennard_jones_pull_off`, which it calls. ``law="dugdale"`` (the default) is
-        accepted silently.
+        The Lennard-Jones law's: :meth:`lennard_jones_pull_off`.
         """
-        _normal._check_law(law, "Cylinder.pull_off", "Cylinder.lennard_jones_pull_off()")
-        if law == "lennard-jones":
-            return self._pull_off_lj()
         p = _normal.pull_off(self.R_over_h, self.sigma0_over_E)
         si = to_si(p, Scales.of(self))
         _warn_widths(

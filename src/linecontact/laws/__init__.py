@@ -11,8 +11,9 @@ returning its own result type (loads over ``E h``, widths over ``R``, gaps over 
   self-consistently, with the Dugdale step's work of adhesion :math:`w = \sigma_0 h` and
   peak tension :math:`\sigma_0` (the Maugis matching).
 
-They replace the deprecated ``law="lennard-jones"`` of :func:`linecontact.pull_off`,
-:func:`linecontact.contact_for_load` and :func:`linecontact.load_curve`.
+They replace the ``law="lennard-jones"`` keyword (deleted before 1.0) of
+:func:`linecontact.pull_off`, :func:`linecontact.contact_for_load` and
+:func:`linecontact.load_curve`.
 """
 
 from . import dugdale, lennard_jones

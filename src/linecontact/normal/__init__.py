@@ -29,7 +29,6 @@ Modules
 :mod:`~linecontact.normal.curve` (:func:`load_curve`); this package re-exports them.
 """
 
-from ._law import _check_law as _check_law
 from .contact import NormalContact, normal_contact
 from .curve import NUM_MAX as NUM_MAX
 from .curve import LoadCurve, load_curve

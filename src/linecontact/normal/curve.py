@@ -3,7 +3,7 @@ r"""The load curve (:func:`load_curve`): the contact and non-contact branches jo
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any, ClassVar
+from typing import ClassVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -11,7 +11,6 @@ from numpy.typing import NDArray
 from .. import closed_forms as _cf
 from .. import domain as _domain
 from ..results import Result
-from ._law import _check_law
 from .contact import normal_contact
 from .noncontact import non_contact
 from .pulloff import PullOff, pull_off
@@ -68,9 +67,7 @@ def load_curve(
     a_max_over_R: float | None = None,
     num: int = 200,
     num_noncontact: int = 40,
-    law: str = "dugdale",
-    F_max_over_Eh: float | None = None,
-) -> Any:
+) -> LoadCurve:
     r"""Sample the load curve (scalar parameters), pull-off and turning point included.
 
     Parameters
@@ -87,39 +84,14 @@ def load_curve(
         Points on the contact and the non-contact branches, each in ``[2, NUM_MAX]``
         (``NUM_MAX = 10**7``: a few hundred MB of samples; more is refused up front rather
         than failing in NumPy's allocator).
-    law : {"dugdale", "lennard-jones"}
-        Deprecated for ``"lennard-jones"`` (a ``DeprecationWarning``): use
-        :func:`linecontact.laws.lennard_jones.load_curve`. The Dugdale step (default; also
-        accepted explicitly, silently), or the Lennard-Jones law of Eq. (1) with the same work
-        of adhesion and peak tension (as in :func:`pull_off`): the states of the solver's
-        curve (by the central gap, then by the edge), from far away through the pull-off to
-        ``F_max_over_Eh`` (``a_max_over_R``, ``num`` and ``num_noncontact`` are the Dugdale
-        law's; about a second, ``benchmarks/lennard_jones.py``).
-    F_max_over_Eh : float, optional
-        Under the Lennard-Jones law, the compressive load where the curve ends (default:
-        :math:`7.5\, w \sqrt{R/z_0}`, three times the rigid cylinder's pull-off).
 
     Returns
     -------
-    LoadCurve or linecontact.lennard_jones_groups.LennardJonesLoadCurve
+    LoadCurve
+        (The Lennard-Jones law's: :func:`linecontact.laws.lennard_jones.load_curve`.)
     """
-    _check_law(law, "load_curve")
     rho = _domain.scalar("R_over_h", R_over_h)
     s = _domain.scalar("sigma0_over_E", sigma0_over_E)
-    if law == "lennard-jones":
-        if a_max_over_R is not None or num != 200 or num_noncontact != 40:
-            raise ValueError(
-                "a_max_over_R, num and num_noncontact apply to law='dugdale': the "
-                "Lennard-Jones curve has the states of its continuation; give F_max_over_Eh "
-                "for its end"
-            )
-        from ..lennard_jones_groups import load_curve_in_dugdale_groups
-
-        return load_curve_in_dugdale_groups(rho, s, F_max_over_Eh)
-    if F_max_over_Eh is not None:
-        raise ValueError(
-            "F_max_over_Eh applies to law='lennard-jones': the Dugdale curve ends at a_max_over_R"
-        )
     for name, v in (("num", num), ("num_noncontact", num_noncontact)):
         if isinstance(v, bool) or not isinstance(v, (int, np.integer)) or not 2 <= v <= NUM_MAX:
             raise ValueError(f"{name} must be an integer in [2, {NUM_MAX}], got {v!r}")

@@ -28,7 +28,6 @@ from .._validation import (
 from ..errors import ConvergenceError, NoEquilibriumError
 from ..results import as_output
 from ..sie import _in_chunks
-from ._law import _check_law
 from .contact import NormalContact, _closed_form_from_u
 from .pulloff import _pulloff_arrays, pull_off
 
@@ -122,7 +121,6 @@ def contact_for_load(
     *,
     branch: str = "stable",
     on_failure: FailurePolicy = RAISE,
-    law: str = "dugdale",
     **deprecated: Any,
 ) -> Any:
     r"""The contact state(s) carrying a given load (closed form).
@@ -142,22 +140,12 @@ def contact_for_load(
         report the point with ``state == "no-equilibrium"``, NaN widths (the load kept),
         ``converged`` and ``stable`` False (``"report"``; the other points are solved as
         usual); README, "Conventions". Replaces the deprecated ``on_no_equilibrium``.
-    law : {"dugdale", "lennard-jones"}
-        Deprecated for ``"lennard-jones"`` (a ``DeprecationWarning``): use
-        :func:`linecontact.laws.lennard_jones.contact_for_load`. The Dugdale step (default;
-        also accepted explicitly, silently), or the Lennard-Jones law of Eq. (1) with the same
-        work of adhesion and peak tension, solved self-consistently
-        (:mod:`linecontact.lennard_jones_groups`; ``sigma0_over_E > 0``, ``mu`` within its
-        domain as in :func:`pull_off`, loads up to
-        :data:`~linecontact.lennard_jones_groups.LJ_LOAD_MAX` :math:`w \sqrt{R/z_0}`, the stable
-        branch only). Each point costs the curve up to its load: a few tenths of a second.
 
     Returns
     -------
-    NormalContact or linecontact.lennard_jones_groups.LennardJonesContact
+    NormalContact
         ``F_over_Eh`` is the load asked for (the state carries it to within
-        ``error_estimate``, relative to the larger of the load, Eq. 14 and the Hertz term;
-        under the Lennard-Jones law its discretisation error is ``error_estimate_over_Eh``);
+        ``error_estimate``, relative to the larger of the load, Eq. 14 and the Hertz term);
         ``state`` is ``"contact"``, or ``"no-equilibrium"`` for the points reported.
 
     Raises
@@ -165,7 +153,6 @@ def contact_for_load(
     NoEquilibriumError
         If no contact of the requested branch carries the load, naming the pull-off force.
     """
-    _check_law(law, "contact_for_load")
     F = _domain.check("F_over_Eh", F_over_Eh)
     rho = _domain.check("R_over_h", R_over_h)
     s = _domain.check("sigma0_over_E", sigma0_over_E)
@@ -174,17 +161,6 @@ def contact_for_load(
     policy = failure_policy(
         on_failure, where="contact_for_load", accepts=("on_no_equilibrium",), **deprecated
     )
-    if law == "lennard-jones":
-        if branch != "stable":
-            raise ValueError(
-                "branch='unstable' applies to law='dugdale': under the Lennard-Jones law the "
-                "contact for a load is the stable state beyond the pull-off"
-            )
-        from ..lennard_jones_groups import contact_for_load_in_dugdale_groups
-
-        scalar = scalar_or_array(F, rho, s)
-        F, rho, s = broadcast(F_over_Eh=F, R_over_h=rho, sigma0_over_E=s)
-        return contact_for_load_in_dugdale_groups(F, rho, s, scalar=scalar, on_failure=policy)
     scalar = scalar_or_array(F, rho, s)
     F, rho, s = (
         np.asarray(v, float) for v in broadcast(F_over_Eh=F, R_over_h=rho, sigma0_over_E=s)

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import functools
 from dataclasses import dataclass
-from typing import Any, ClassVar
+from typing import ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -22,7 +22,6 @@ from .._validation import (
 )
 from ..results import Result, as_output
 from ..sie import _in_chunks
-from ._law import _check_law
 from .contact import _ustar
 
 #: The pull-off is called a snap-off when the contact half-width at the load minimum is at
@@ -142,7 +141,7 @@ def _pulloff_flat(rho: NDArray, s: NDArray, keys=None):
     return d if keys is None else {k: d[k] for k in keys}
 
 
-def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugdale") -> Any:
+def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     r"""Pull-off force under load control, vectorised over parameter points.
 
     The load along the contact branch has exactly one stationary point, a minimum, for every
@@ -163,17 +162,11 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugda
         ``> 0``.
     sigma0_over_E : array_like
         ``>= 0`` (0: Hertz, pull-off force 0 at zero width).
-    law : {"dugdale", "lennard-jones"}
-        Deprecated for ``"lennard-jones"`` (a ``DeprecationWarning``): use
-        :func:`linecontact.laws.lennard_jones.pull_off`. The Dugdale step (default; also
-        accepted explicitly, silently), or the Lennard-Jones law of Eq. (1) with the same work
-        of adhesion :math:`\sigma_0 h` and peak tension :math:`\sigma_0`, solved self-consistently
-        (:mod:`linecontact.lennard_jones`; ``sigma0_over_E > 0``, and
-        :math:`\mu = 0.974^{3/2} (\sigma_0/E) \sqrt{R/h}` within ``domain.DOMAIN["lj_mu"]``).
 
     Returns
     -------
-    PullOff or linecontact.lennard_jones.LennardJonesPullOff
+    PullOff
+        (The Lennard-Jones law's: :func:`linecontact.laws.lennard_jones.pull_off`.)
 
     Examples
     --------
@@ -186,17 +179,10 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike, *, law: str = "dugda
     >>> po.mechanism, round(po.a_over_R_at_pulloff, 4)
     ('snap-off', 0.0869)
     """
-    _check_law(law, "pull_off")
     rho = _domain.check("R_over_h", R_over_h)
     s = _domain.check("sigma0_over_E", sigma0_over_E)
     scalar = scalar_or_array(rho, s)
     rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
-    if law == "lennard-jones":
-        from ..lennard_jones import pull_off_in_dugdale_groups
-
-        return pull_off_in_dugdale_groups(
-            rho.reshape(()) if scalar else rho, s.reshape(()) if scalar else s
-        )
     _cf._check_kappa(rho, s)
     d = _pulloff_arrays(rho, s, scalar)
     del d["us"], d["phi_min"]
