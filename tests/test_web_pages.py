@@ -187,6 +187,62 @@ def test_the_answer_leads_and_the_table_waits_behind_its_toggle(server, page):
 
 
 # ------------------------------------------------------------------------------------------
+# a link's keys: every one taken, or named (issue 32)
+
+#: The link of issue 32: a modulus, which the page offered no field for (it showed the
+#: default ZnO on SiO2, -9.3568 N/m, while the API answered -10.3503 N/m).
+SHARED = "radius=50e-9&modulus=1.2e11&work_of_adhesion=0.3&z0=3e-10"
+
+
+def test_a_shared_link_with_a_modulus_shows_the_apis_number(server, page):
+    page.goto(f"{server}/pulloff?{SHARED}")
+    text = _answer(page)
+    api = _api(server, "pulloff", SHARED)["results"][0]
+    shown = float(page.get_attribute("#headline [data-key='F_pulloff_N_per_m']", "data-value"))
+    assert shown == api["F_pulloff_N_per_m"]
+    assert page.input_value("#a-elastic") == "modulus"  # the link's alternative chosen
+    assert (
+        page.locator("#w-modulus").is_visible() and page.locator("#w-cylinder_material").is_hidden()
+    )
+    assert "-10.35" in text.replace("−", "-")
+    ran = _run_python(page.inner_text("#py"), ["result.pull_off_force"])
+    assert ran["result.pull_off_force"] == pytest.approx(api["F_pulloff_N_per_m"], rel=1e-12)
+    assert "--modulus 1.2e11" in page.inner_text("#cli")
+
+
+def test_the_adhesion_as_a_stress_and_its_range(server, page):
+    page.goto(f"{server}/pulloff")
+    page.select_option("#a-adhesion", "stress")
+    assert page.locator("#w-sigma0").is_visible() and page.locator("#w-z0").is_hidden()
+    page.fill("#f-sigma0", "500")
+    page.select_option("#u-sigma0", "MPa")
+    page.fill("#f-h", "0.5")
+    page.select_option("#u-h", "nm")
+    url, _ = _compute(page)
+    sent = _query(url)
+    assert float(sent["sigma0"][0]) == pytest.approx(5e8) and float(sent["h"][0]) == 5e-10
+    assert "work_of_adhesion" not in sent and "z0" not in sent
+    api = _api(server, "pulloff", urllib.parse.urlsplit(url).query)["results"][0]
+    ran = _run_python(page.inner_text("#py"), ["result.pull_off_force"])
+    assert ran["result.pull_off_force"] == pytest.approx(api["F_pulloff_N_per_m"], rel=1e-12)
+
+
+def test_a_link_with_a_key_the_page_does_not_take_names_it_and_computes_nothing(server, page):
+    requests: list[str] = []
+    page.on("request", lambda r: requests.append(r.url) if "/api/v1/" in r.url else None)
+    page.goto(f"{server}/pulloff?radius=50e-9&modulus=1.2e11&colour=blue")
+    page.wait_for_function("document.getElementById('form-error').textContent.length > 0")
+    said = page.inner_text("#form-error")
+    assert "“colour”" in said and "does not take" in said and "422" in said
+    page.wait_for_timeout(500)
+    assert requests == [] and page.inner_text("#answer") == ""
+    # the API says the same of it
+    with pytest.raises(urllib.error.HTTPError) as exc:
+        _api(server, "pulloff", "radius=50e-9&modulus=1.2e11&colour=blue")
+    assert exc.value.code == 422
+
+
+# ------------------------------------------------------------------------------------------
 # warnings: on the page and in the API's JSON
 
 

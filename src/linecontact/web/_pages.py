@@ -42,12 +42,31 @@ def _f(name: str, label: str, kind: str = "none", default: str = "", **kw: Any) 
     return {"name": name, "label": label, "kind": kind, "default": default, **kw}
 
 
+#: The wire's elasticity and adhesion, each in either of its spellings (as the operations
+#: take them): the presets or a composite modulus; (w, z0) or (sigma0, h).
+_WIRE_ALTS = {
+    "elastic": {
+        "label": "elasticity from",
+        "options": [["presets", "the materials"], ["modulus", "a composite modulus E"]],
+    },
+    "adhesion": {
+        "label": "adhesion given as",
+        "options": [
+            ["work", "the work of adhesion w and z0"],
+            ["stress", "an adhesive stress sigma0 and its range h"],
+        ],
+    },
+}
+
 _WIRE = [
-    _f("cylinder_material", "wire material", "material", "ZnO"),
-    _f("substrate_material", "substrate material", "material", "SiO2"),
+    _f("cylinder_material", "wire material", "material", "ZnO", alt="elastic:presets"),
+    _f("substrate_material", "substrate material", "material", "SiO2", alt="elastic:presets"),
+    _f("modulus", "composite modulus E", "modulus", "4.8e10", alt="elastic:modulus"),
     _f("radius", "radius R", "length", "5e-08"),
-    _f("work_of_adhesion", "work of adhesion w", "work", "0.3"),
-    _f("z0", "equilibrium spacing z0", "length", "3e-10"),
+    _f("work_of_adhesion", "work of adhesion w", "work", "0.3", alt="adhesion:work"),
+    _f("z0", "equilibrium spacing z0", "length", "3e-10", alt="adhesion:work"),
+    _f("sigma0", "adhesive stress sigma0", "stress", "1e9", alt="adhesion:stress"),
+    _f("h", "adhesion range h", "length", "3e-10", alt="adhesion:stress"),
 ]
 
 _LENGTH = _f("length", "wire length L (optional)", "length", "", unit="um", optional=True)
@@ -60,6 +79,7 @@ PAGES: dict[str, dict[str, Any]] = {
         "title": "Contact and pull-off of a wire",
         "question": "How hard must the wire be pulled to come off the substrate?",
         "command": "pulloff",
+        "alts": _WIRE_ALTS,
         "fields": [*_WIRE, {**_LENGTH, "default": "5e-06"}],
         "plot": None,
     },
@@ -67,6 +87,7 @@ PAGES: dict[str, dict[str, Any]] = {
         "title": "Contact width under a load",
         "question": "How wide is the contact under these loads?",
         "command": "normal",
+        "alts": _WIRE_ALTS,
         "fields": [
             *_WIRE,
             _f("load", "normal loads F (comma-separated)", "force", "0,1,5,10", many=True),
@@ -80,6 +101,7 @@ PAGES: dict[str, dict[str, Any]] = {
         "title": "The load curve",
         "question": "How does the load change with the contact width, and where does it pull off?",
         "command": "curve",
+        "alts": _WIRE_ALTS,
         "fields": list(_WIRE),
         "plot": {
             "x": {"key": "a_m", "kind": "length", "label": "contact half-width a"},
@@ -172,6 +194,7 @@ PAGES: dict[str, dict[str, Any]] = {
         "title": "Energy lost per cycle",
         "question": "How much energy does a tangential cycle of this amplitude dissipate?",
         "command": "cycle",
+        "alts": _WIRE_ALTS,
         "fields": [
             *_WIRE,
             _f("load", "normal load F", "force", "1"),
@@ -194,6 +217,7 @@ PAGES: dict[str, dict[str, Any]] = {
         "question": "The pull-off under the full Lennard-Jones law (not Dugdale's step).",
         "command": "pulloff",
         "fixed": {"law": "lennard-jones"},
+        "alts": _WIRE_ALTS,
         "fields": list(_WIRE),
         "plot": None,
     },
@@ -224,6 +248,7 @@ PAGES: dict[str, dict[str, Any]] = {
         "command": "map",
         "fixed": {"quick": "true"},
         "job": True,
+        "alts": _WIRE_ALTS,
         "fields": [{**f, "aux": True} for f in _WIRE],
         "plot": {
             "x": {"key": "maugis_parameter", "kind": "none", "label": "Maugis parameter"},
@@ -321,7 +346,7 @@ def _json_in_html(obj: Any) -> str:
 def page_html(name: str) -> str:
     """The page ``name``: its question, its form, and empty places for the answer."""
     p = PAGES[name]
-    keys = ("command", "fixed", "plot", "job", "upload", "mark", "alts")
+    keys = ("title", "command", "fixed", "plot", "job", "upload", "mark", "alts")
     spec = {k: p.get(k) for k in keys}
     spec["page"] = name
     spec["units"] = UNITS

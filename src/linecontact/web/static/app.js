@@ -163,6 +163,17 @@
       el.value = given === "" ? "" : given.split(",").map((x) => (NUMBER.test(x.trim()) ? show(parseFloat(x) / factor) : x)).join(f.many ? ", " : ",");
     }
     showAlternatives();
+    // a key the page has no field for is named, never ignored (the API refuses it too)
+    const known = new Set(Object.keys(spec.fixed || {}));
+    for (const f of spec.fields) { known.add(f.name); known.add("u." + f.name); }
+    const unknown = [...new Set(q.keys())].filter((k) => !known.has(k));
+    if (unknown.length) {
+      const names = unknown.map((k) => `“${k}”`).join(", ");
+      $("form-error").textContent = `this link sets ${names}, which the page “${spec.title}” does `
+        + `not take (the API answers 422 for ${unknown.length > 1 ? "them" : "it"}): nothing is `
+        + "computed; change the form and press Compute";
+    }
+    return unknown.length === 0;
   }
 
   // ---------------------------------------------------------------------------------------
@@ -628,7 +639,9 @@
       ? `cyl = lc.Cylinder.from_modulus(${R}, ${one(v, "modulus")}, ${adhesion})`
       : `cyl = lc.Cylinder.from_presets(${R}, ${mats}, ${adhesion})`;
   }
-  const wirePy = (v) => cylinderPy(v, `work_of_adhesion=${one(v, "work_of_adhesion")}, equilibrium_spacing=${one(v, "z0")}`);
+  const wirePy = (v) => cylinderPy(v, v.sigma0 || v.h
+    ? `cohesive_stress=${one(v, "sigma0")}, adhesion_range=${one(v, "h")}`
+    : `work_of_adhesion=${one(v, "work_of_adhesion")}, equilibrium_spacing=${one(v, "z0")}`);
   const PYTHON = {
     pulloff: (v) => [wirePy(v), "result = cyl.pull_off()", "print(result)",
       ...(v.length ? [`print("on the whole wire [N]:", result.pull_off_force * ${one(v, "length")})`] : [])],
@@ -935,6 +948,6 @@
     else { $("status").textContent = ""; error(doc); }
   });
 
-  fill();
-  if ([...new URLSearchParams(location.search).keys()].some((k) => k in fields)) form.requestSubmit();
+  const clean = fill();
+  if (clean && [...new URLSearchParams(location.search).keys()].some((k) => k in fields)) form.requestSubmit();
 })();
