@@ -114,10 +114,7 @@ PAGES: dict[str, dict[str, Any]] = {
         "what push?",
         "command": "push",
         "alts": {
-            "elastic": {
-                "label": "elasticity from",
-                "options": [["presets", "the materials"], ["modulus", "a composite modulus E"]],
-            },
+            "elastic": _WIRE_ALTS["elastic"],
             "adhesion": {
                 "label": "adhesion given as",
                 "options": [

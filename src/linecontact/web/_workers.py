@@ -181,7 +181,6 @@ def _sized(out: Outcome, max_bytes: int | None) -> Outcome:
 def _call(command: str, values: dict[str, Any]) -> Outcome:
     """The operation ``command`` on the typed ``values``: its JSON, or the error."""
     from .. import operations
-    from ..errors import ConvergenceError
     from ..operations._messages import spell
     from ..output import render
 
@@ -189,30 +188,41 @@ def _call(command: str, values: dict[str, Any]) -> Outcome:
     op = operations.get(command)
     words = operations.command_words(op, values)
     inputs = operations.Inputs(op, values, words=[*words, "--json"])
+    got: list[Any] = []
+    status, message, said = _guarded(lambda: got.append(op.run(inputs)), lambda t: spell(t, inputs))
+    seconds = time.perf_counter() - start
+    if status != 200 or not got:
+        return Outcome(status, flag=_flag_of(message), message=message, warnings=said)
+    return Outcome(200, body=render(got[0], "json"), warnings=said, seconds=seconds)
+
+
+def _guarded(work: Any, say: Any) -> tuple[int, str, list[str]]:
+    """Run ``work()``: its status (200; 422 refused; 500 not converged), message and notes.
+
+    The message and each note (a warning, said once) in the words ``say`` gives them.
+    """
+    from ..errors import ConvergenceError
+
     said: list[str] = []
-    status, message, table = 200, "", None
+    status, message = 200, ""
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:
-            table = op.run(inputs)
+            work()
         except ConvergenceError as exc:
-            status, message = 500, spell(str(exc), inputs)
+            status, message = 500, say(str(exc))
         except (ValueError, OverflowError) as exc:
-            status, message = 422, spell(str(exc), inputs)
+            status, message = 422, say(str(exc))
     for w in caught:
-        note = spell(str(w.message), inputs)
+        note = say(str(w.message))
         if note not in said:
             said.append(note)
-    seconds = time.perf_counter() - start
-    if status != 200 or table is None:
-        return Outcome(status, flag=_flag_of(message), message=message, warnings=said)
-    return Outcome(200, body=render(table, "json"), warnings=said, seconds=seconds)
+    return status, message, said
 
 
 def _compute(command: str, argv: list[str]) -> Outcome:
     from ..cli import build_parser
     from ..cli._options import NoPointError, flag_message, record_flags
-    from ..errors import ConvergenceError
     from ..output import render
 
     start = time.perf_counter()
@@ -229,22 +239,12 @@ def _compute(command: str, argv: list[str]) -> Outcome:
     record_flags(parser.get_default("_subparsers").choices[command], args)
     args.argv = words
     args._capture = []
-    said: list[str] = []
-    status, message = 200, ""
-    with warnings.catch_warnings(record=True) as caught:
-        warnings.simplefilter("always")
-        try:
+
+    def work() -> None:
+        with contextlib.suppress(NoPointError):  # the records say why
             args.func(args)
-        except NoPointError:
-            pass  # the records say why
-        except ConvergenceError as exc:
-            status, message = 500, flag_message(str(exc), args)
-        except (ValueError, OverflowError) as exc:
-            status, message = 422, flag_message(str(exc), args)
-    for w in caught:
-        note = flag_message(str(w.message), args)
-        if note not in said:
-            said.append(note)
+
+    status, message, said = _guarded(work, lambda t: flag_message(t, args))
     seconds = time.perf_counter() - start
     if status != 200:
         return Outcome(status, flag=_flag_of(message), message=message, warnings=said)
