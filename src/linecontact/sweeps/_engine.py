@@ -10,6 +10,7 @@ the points.
 
 from __future__ import annotations
 
+import gc
 import logging
 import os
 import re
@@ -264,6 +265,18 @@ def _address(scheduler: str) -> tuple[str, str | None, int | None]:
     return address, host, int(port)
 
 
+def _collect_clients() -> None:
+    """Collect the Dask clients no longer used before a new one starts its event loop.
+
+    A client that failed to connect (a server that is not a scheduler) is left in a reference
+    cycle; collected while ``distributed`` starts another one's loop, its ``__del__`` waits on
+    the lock that start holds, and every later client or cluster of the process waits too (a
+    sweep after a refused ``--scheduler``, in one Python session). Collected here, first, it
+    cannot be.
+    """
+    gc.collect()
+
+
 def _connect(scheduler: str, timeout: float = CONNECT_TIMEOUT) -> Any:
     """A client of the ``dask.distributed`` scheduler at ``scheduler`` (ValueError: none).
 
@@ -285,6 +298,7 @@ def _connect(scheduler: str, timeout: float = CONNECT_TIMEOUT) -> Any:
 
     def connect() -> None:
         try:
+            _collect_clients()
             found["client"] = Client(address, timeout=f"{timeout}s")
         except BaseException as exc:  # noqa: BLE001 - anything is: no scheduler there
             found["error"] = exc
@@ -316,6 +330,7 @@ def _dask(
 
     cluster = None
     if client is None:
+        _collect_clients()
         with dask.config.set(_WORKER_CONFIG):
             cluster = LocalCluster(
                 n_workers=workers,
