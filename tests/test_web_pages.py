@@ -11,6 +11,7 @@ from __future__ import annotations
 import json
 import os
 import re
+import shlex
 import shutil
 import socket
 import subprocess
@@ -194,7 +195,7 @@ def test_the_answer_leads_and_the_table_waits_behind_its_toggle(server, page):
 SHARED = "radius=50e-9&modulus=1.2e11&work_of_adhesion=0.3&z0=3e-10"
 
 
-def test_a_shared_link_with_a_modulus_shows_the_apis_number(server, page):
+def test_a_shared_link_with_a_modulus_shows_the_apis_number(server, page, capsys):
     page.goto(f"{server}/pulloff?{SHARED}")
     text = _answer(page)
     api = _api(server, "pulloff", SHARED)["results"][0]
@@ -204,10 +205,42 @@ def test_a_shared_link_with_a_modulus_shows_the_apis_number(server, page):
     assert (
         page.locator("#w-modulus").is_visible() and page.locator("#w-cylinder_material").is_hidden()
     )
-    assert "-10.35" in text.replace("−", "-")
+    assert f"{api['F_pulloff_N_per_m']:.4g}" in text.replace("−", "-")  # -10.35, in words
+    # the page's Python lines and its command line give the same number
     ran = _run_python(page.inner_text("#py"), ["result.pull_off_force"])
     assert ran["result.pull_off_force"] == pytest.approx(api["F_pulloff_N_per_m"], rel=1e-12)
-    assert "--modulus 1.2e11" in page.inner_text("#cli")
+    cli = page.inner_text("#cli")
+    assert "--modulus 1.2e11" in cli and "--cylinder-material" not in cli
+    capsys.readouterr()
+    main([*shlex.split(cli)[1:], "--json"])
+    out = json.loads(capsys.readouterr().out)["results"][0]
+    assert out["F_pulloff_N_per_m"] == api["F_pulloff_N_per_m"]
+
+
+#: ZnO's and SiO2's Young's moduli and Poisson ratios, as the four keys of a link.
+FOUR = "E1=1.24e11&nu1=0.36&E2=7.2e10&nu2=0.17"
+
+
+def test_a_link_with_the_four_moduli_chooses_them(server, page):
+    query = f"radius=50e-9&{FOUR}&work_of_adhesion=0.3&z0=3e-10"
+    page.goto(f"{server}/pulloff?{query}")
+    _answer(page)
+    assert page.input_value("#a-elastic") == "moduli"
+    assert page.locator("#w-E1").is_visible() and page.locator("#w-modulus").is_hidden()
+    assert page.input_value("#f-E1") == "124" and page.input_value("#u-E1") == "GPa"
+    api = _api(server, "pulloff", query)["results"][0]
+    shown = float(page.get_attribute("#headline [data-key='F_pulloff_N_per_m']", "data-value"))
+    assert shown == api["F_pulloff_N_per_m"]
+    # the presets' own moduli: the default page's number
+    presets = (
+        "radius=50e-9&cylinder_material=ZnO&substrate_material=SiO2&work_of_adhesion=0.3&z0=3e-10"
+    )
+    same = _api(server, "pulloff", presets)["results"][0]["F_pulloff_N_per_m"]
+    assert shown == pytest.approx(same, rel=1e-12)
+    code = page.inner_text("#py")
+    assert "lc.Cylinder.from_materials(5e-8, 1.24e11, 0.36, 7.2e10, 0.17," in code
+    ran = _run_python(code, ["result.pull_off_force"])
+    assert ran["result.pull_off_force"] == pytest.approx(api["F_pulloff_N_per_m"], rel=1e-12)
 
 
 def test_the_adhesion_as_a_stress_and_its_range(server, page):
@@ -227,18 +260,59 @@ def test_the_adhesion_as_a_stress_and_its_range(server, page):
     assert ran["result.pull_off_force"] == pytest.approx(api["F_pulloff_N_per_m"], rel=1e-12)
 
 
-def test_a_link_with_a_key_the_page_does_not_take_names_it_and_computes_nothing(server, page):
+@pytest.mark.parametrize("name", ["pulloff", "contact", "curve"])
+def test_a_wire_pages_defaults_are_the_presets_and_w_z0(server, page, name):
+    page.goto(f"{server}/{name}")
+    assert page.input_value("#a-elastic") == "presets"
+    assert page.input_value("#a-adhesion") == "work"
+    for hidden in ("modulus", "E1", "nu2", "sigma0", "h"):
+        assert page.locator(f"#w-{hidden}").is_hidden()
+    url, _ = _compute(page)
+    sent = _query(url)
+    assert sent["cylinder_material"] == ["ZnO"] and sent["substrate_material"] == ["SiO2"]
+    assert sent["work_of_adhesion"] == ["0.3"] and sent["z0"] == ["3e-10"]
+    assert not {"modulus", "E1", "nu1", "E2", "nu2", "sigma0", "h"} & set(sent)
+    assert page.inner_text("#form-error") == ""
+
+
+def _no_request(server: str, page, link: str) -> str:
+    """Open ``link``: the message above the form, once no request to the API was sent."""
     requests: list[str] = []
     page.on("request", lambda r: requests.append(r.url) if "/api/v1/" in r.url else None)
-    page.goto(f"{server}/pulloff?radius=50e-9&modulus=1.2e11&colour=blue")
+    page.goto(f"{server}/{link}")
     page.wait_for_function("document.getElementById('form-error').textContent.length > 0")
-    said = page.inner_text("#form-error")
-    assert "“colour”" in said and "does not take" in said and "422" in said
     page.wait_for_timeout(500)
     assert requests == [] and page.inner_text("#answer") == ""
+    return page.inner_text("#form-error")
+
+
+@pytest.mark.parametrize(
+    ("name", "command"),
+    [("pulloff", "pulloff"), ("contact", "normal"), ("curve", "curve"), ("push", "push")],
+)
+def test_a_link_with_a_key_the_page_does_not_take_names_it_and_computes_nothing(
+    server, page, name, command
+):
+    said = _no_request(server, page, f"{name}?radius=50e-9&modulus=1.2e11&colour=blue")
+    assert "“colour”" in said and "does not take" in said and "422" in said
+    assert "“radius”" not in said and "“modulus”" not in said
     # the API says the same of it
     with pytest.raises(urllib.error.HTTPError) as exc:
-        _api(server, "pulloff", "radius=50e-9&modulus=1.2e11&colour=blue")
+        _api(server, command, "radius=50e-9&modulus=1.2e11&colour=blue")
+    assert exc.value.code == 422
+    # the form changed and Compute pressed: the page asks for what it shows
+    page.fill("#f-radius", "60")
+    with page.expect_request(lambda r: f"/api/v1/{command}?" in r.url) as req:
+        page.click("#go")
+    assert "colour" not in req.value.url and "radius=6e-8" in req.value.url
+
+
+def test_a_link_with_two_alternatives_names_both_and_computes_nothing(server, page):
+    query = "radius=50e-9&modulus=1.2e11&cylinder_material=ZnO&work_of_adhesion=0.3&z0=3e-10"
+    said = _no_request(server, page, f"pulloff?{query}")
+    assert "“modulus”" in said and "“cylinder_material”" in said and "takes one" in said
+    with pytest.raises(urllib.error.HTTPError) as exc:  # the API refuses the pair
+        _api(server, "pulloff", query)
     assert exc.value.code == 422
 
 

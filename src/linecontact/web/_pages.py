@@ -42,12 +42,17 @@ def _f(name: str, label: str, kind: str = "none", default: str = "", **kw: Any) 
     return {"name": name, "label": label, "kind": kind, "default": default, **kw}
 
 
-#: The wire's elasticity and adhesion, each in either of its spellings (as the operations
-#: take them): the presets or a composite modulus; (w, z0) or (sigma0, h).
+#: The wire's elasticity and adhesion, each in any of its spellings (as the operations take
+#: them): the presets, a composite modulus or the four E1, nu1, E2, nu2; (w, z0) or
+#: (sigma0, h). A link's keys choose the alternative (``static/app.js``).
 _WIRE_ALTS = {
     "elastic": {
         "label": "elasticity from",
-        "options": [["presets", "the materials"], ["modulus", "a composite modulus E"]],
+        "options": [
+            ["presets", "the materials"],
+            ["modulus", "a composite modulus E"],
+            ["moduli", "Young's moduli and Poisson ratios E1, nu1, E2, nu2"],
+        ],
     },
     "adhesion": {
         "label": "adhesion given as",
@@ -58,10 +63,19 @@ _WIRE_ALTS = {
     },
 }
 
-_WIRE = [
+#: The elasticity's fields, on every page of a wire (the four moduli: ZnO's and SiO2's).
+_ELASTIC = [
     _f("cylinder_material", "wire material", "material", "ZnO", alt="elastic:presets"),
     _f("substrate_material", "substrate material", "material", "SiO2", alt="elastic:presets"),
     _f("modulus", "composite modulus E", "modulus", "4.8e10", alt="elastic:modulus"),
+    _f("E1", "wire's Young's modulus E1", "modulus", "1.24e11", alt="elastic:moduli"),
+    _f("nu1", "wire's Poisson ratio nu1", "none", "0.36", alt="elastic:moduli"),
+    _f("E2", "substrate's Young's modulus E2", "modulus", "7.2e10", alt="elastic:moduli"),
+    _f("nu2", "substrate's Poisson ratio nu2", "none", "0.17", alt="elastic:moduli"),
+]
+
+_WIRE = [
+    *_ELASTIC,
     _f("radius", "radius R", "length", "5e-08"),
     _f("work_of_adhesion", "work of adhesion w", "work", "0.3", alt="adhesion:work"),
     _f("z0", "equilibrium spacing z0", "length", "3e-10", alt="adhesion:work"),
@@ -128,15 +142,7 @@ PAGES: dict[str, dict[str, Any]] = {
             },
         },
         "fields": [
-            _f("cylinder_material", "wire material", "material", "ZnO", alt="elastic:presets"),
-            _f(
-                "substrate_material",
-                "substrate material",
-                "material",
-                "SiO2",
-                alt="elastic:presets",
-            ),
-            _f("modulus", "composite modulus E", "modulus", "4.8e10", alt="elastic:modulus"),
+            *_ELASTIC,
             _f("radius", "radius R", "length", "5e-08"),
             _f(
                 "work_of_adhesion_receding",

@@ -163,17 +163,30 @@
       el.value = given === "" ? "" : given.split(",").map((x) => (NUMBER.test(x.trim()) ? show(parseFloat(x) / factor) : x)).join(f.many ? ", " : ",");
     }
     showAlternatives();
-    // a key the page has no field for is named, never ignored (the API refuses it too)
+    // every key of the link is taken, or named: never ignored. The keys the page writes: its
+    // fields', their units' (u.NAME) and its fixed ones; a key of an alternative not chosen
+    // (a modulus and the presets) is named too (the API refuses most such pairs with a 422)
     const known = new Set(Object.keys(spec.fixed || {}));
     for (const f of spec.fields) { known.add(f.name); known.add("u." + f.name); }
-    const unknown = [...new Set(q.keys())].filter((k) => !known.has(k));
+    const keys = [...new Set(q.keys())];
+    const quote = (ks) => ks.map((k) => `“${k}”`).join(", ");
+    const said = [];
+    const unknown = keys.filter((k) => !known.has(k));
     if (unknown.length) {
-      const names = unknown.map((k) => `“${k}”`).join(", ");
-      $("form-error").textContent = `this link sets ${names}, which the page “${spec.title}” does `
-        + `not take (the API answers 422 for ${unknown.length > 1 ? "them" : "it"}): nothing is `
-        + "computed; change the form and press Compute";
+      said.push(`this link sets ${quote(unknown)}, which the page “${spec.title}” does not take `
+        + `(the API answers 422 for ${unknown.length > 1 ? "them" : "it"})`);
     }
-    return unknown.length === 0;
+    for (const [g, a] of Object.entries(spec.alts || {})) {
+      const given = keys.filter((k) => fields[k] && fields[k].alt && fields[k].alt.split(":")[0] === g);
+      const off = given.filter((k) => !active(fields[k]));
+      if (!off.length) continue;
+      const chosen = given.filter((k) => active(fields[k]));
+      const words = a.options.filter(([opt]) => given.some((k) => fields[k].alt === `${g}:${opt}`)).map((o) => o[1]);
+      said.push(`this link sets ${quote(chosen)} and ${quote(off)}, alternatives of “${a.label}” `
+        + `(${words.join("; ")}): the page takes one of them`);
+    }
+    if (said.length) $("form-error").textContent = said.join("; ") + ": nothing is computed; change the form and press Compute";
+    return said.length === 0;
   }
 
   // ---------------------------------------------------------------------------------------
@@ -632,12 +645,15 @@
   }
   const one = (v, k) => (v[k] ? v[k][0] : null);
   const list = (v, k) => "[" + (v[k] || []).join(", ") + "]";
-  function cylinderPy(v, adhesion) {
+  function cylinderPy(v, adhesion) { // the elasticity as the page took it: a modulus, the four, the presets
     const R = one(v, "radius");
-    const mats = v.modulus ? null : `${JSON.stringify(one(v, "cylinder_material"))}, ${JSON.stringify(one(v, "substrate_material"))}`;
-    return v.modulus
-      ? `cyl = lc.Cylinder.from_modulus(${R}, ${one(v, "modulus")}, ${adhesion})`
-      : `cyl = lc.Cylinder.from_presets(${R}, ${mats}, ${adhesion})`;
+    if (v.modulus) return `cyl = lc.Cylinder.from_modulus(${R}, ${one(v, "modulus")}, ${adhesion})`;
+    if (v.E1 || v.nu1 || v.E2 || v.nu2) {
+      const four = ["E1", "nu1", "E2", "nu2"].map((k) => one(v, k)).join(", ");
+      return `cyl = lc.Cylinder.from_materials(${R}, ${four}, ${adhesion})`;
+    }
+    const mats = `${JSON.stringify(one(v, "cylinder_material"))}, ${JSON.stringify(one(v, "substrate_material"))}`;
+    return `cyl = lc.Cylinder.from_presets(${R}, ${mats}, ${adhesion})`;
   }
   const wirePy = (v) => cylinderPy(v, v.sigma0 || v.h
     ? `cohesive_stress=${one(v, "sigma0")}, adhesion_range=${one(v, "h")}`
