@@ -217,17 +217,6 @@ API_GROUPS: list[tuple[str, str, list[str]]] = [
         "What the library raises and warns.",
         ["ConvergenceError", "NoEquilibriumError", "CouplingWarning", "ModelValidityWarning"],
     ),
-    (
-        "Deprecated",
-        "Kept for older scripts; each names the method of :class:`Cylinder` that replaces it.",
-        [
-            "cylinder_cyclic_loss",
-            "cylinder_push",
-            "cylinder_sliding_initiation",
-            "cylinder_steady_rolling",
-            "cylinder_tangential_history",
-        ],
-    ),
 ]
 
 

@@ -1,14 +1,13 @@
 """Error paths over every broadcast shape: the first failing point is named, never a crash.
 
-Each vectorised function that raises for a point (``on_failure="raise"``,
-``raise_on_failure=True``, ``on_no_equilibrium="raise"``, the domain checks) is called with
-each argument in a drawn layout, a scalar, ``(n,)``, ``(1, n)`` or ``(m, 1)``, so that any
-argument may be the one that sets the points' shape, and with one failing value placed at a
-drawn element of a drawn argument. The error must be the documented one (never an
-``IndexError`` from a message builder that indexes an input that was broadcast with the flat
-index of the point) and its message must give every input named at the first failing point,
-as broadcast, under the caller's names. The report policies must return the broadcast shape
-with the failing points marked and the others finite.
+Each vectorised function that raises for a point (``on_failure="raise"``, the domain
+checks) is called with each argument in a drawn layout, a scalar, ``(n,)``, ``(1, n)`` or
+``(m, 1)``, so that any argument may be the one that sets the points' shape, and with one
+failing value placed at a drawn element of a drawn argument. The error must be the
+documented one (never an ``IndexError`` from a message builder that indexes an input that
+was broadcast with the flat index of the point) and its message must give every input named
+at the first failing point, as broadcast, under the caller's names. The report policies
+must return the broadcast shape with the failing points marked and the others finite.
 
 The good values differ from element to element (and from argument to argument), so that a
 message giving the value of another point is caught. Values are compared as their ``repr``

@@ -1,4 +1,4 @@
-"""The pushed fibre in SI units (``cylinder_push``): the same numbers as the groups."""
+"""The pushed fibre in SI units (``Cylinder.push``): the same numbers as the groups."""
 
 from __future__ import annotations
 

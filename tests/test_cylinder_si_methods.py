@@ -120,48 +120,6 @@ def test_hysteresis_adhesion():
     assert h2 == 0.025 / s0
 
 
-# --------------------------------------------------------------------------------------------
-# the cylinder_* functions: deprecated aliases of the methods (issue 21)
-
-_HERTZ = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=0.0, adhesion_range=0.5e-9)
-
-#: (alias, method, cylinder, arguments, keywords): the alias takes the cylinder first
-ALIASES = [
-    ("cylinder_sliding_initiation", "sliding_initiation", CYL, (1.0,),
-     {"friction_stress": 1e9, "tangential_load": [0.5, 1.0]}),
-    ("cylinder_steady_rolling", "steady_rolling", _HERTZ, (1.0,),
-     {"friction_coefficient": 0.3, "d_over_a": [0.0, 0.5]}),
-    ("cylinder_push", "push", CYL, (),
-     {"friction_stress": 1e6, "height": [25e-9, 75e-9], "receding_range": 1e-9}),
-    ("cylinder_tangential_history", "tangential_history", CYL, (1.0, [1.0, -1.0, 1.0]),
-     {"friction_stress": 1e9}),
-    ("cylinder_cyclic_loss", "cyclic_loss", CYL, (1.0, [0.5, 1.0]), {"friction_stress": 1e9}),
-    ("cylinder_sliding", "sliding", CYL, (),
-     {"h1_over_h2": 2.0, "load": [0.5, 1.0], "method": "closed-form"}),
-]  # fmt: skip
-
-
-@pytest.mark.parametrize("alias, method, cyl, args, kwargs", ALIASES, ids=[a[0] for a in ALIASES])
-def test_each_alias_warns_and_gives_the_methods_result(alias, method, cyl, args, kwargs):
-    import warnings
-
-    import linecontact
-    import linecontact.cylinder
-
-    fn = getattr(linecontact.cylinder, alias)
-    if alias != "cylinder_sliding":  # the others are at the top level too
-        assert getattr(linecontact, alias) is fn
-    with pytest.warns(DeprecationWarning, match=rf"^{alias} is deprecated: use Cylinder\.{method}"):
-        got = fn(cyl, *args, **kwargs)
-    with warnings.catch_warnings():
-        warnings.simplefilter("error", DeprecationWarning)  # the method never warns
-        want = getattr(cyl, method)(*args, **kwargs)
-    assert type(got) is type(want)
-    for name, value in vars(want).items():
-        if isinstance(value, np.ndarray | float | int):
-            np.testing.assert_array_equal(getattr(got, name), value, err_msg=name)
-
-
 @pytest.mark.parametrize("value", [-1.0, 0.0, 1.0])
 def test_load_curve_names_max_half_width_in_metres(value):
     # the SI argument and its SI range, not the group a_max_over_R alone (issue 20)

@@ -1,8 +1,8 @@
-"""One failure-policy keyword, ``on_failure``, and the deprecated keywords it replaces (issue 21).
+"""One failure-policy keyword, ``on_failure`` (issue 21).
 
-The old keywords (``raise_on_failure``, ``on_no_equilibrium``, ``on_sliding``) still work with a
-``DeprecationWarning`` naming ``on_failure`` and map to it; together with ``on_failure`` they
-are a ``ValueError``. The library's own calls (API and command line) never trigger the warning.
+The keywords it replaced (``raise_on_failure``, ``on_no_equilibrium``, ``on_sliding``) were
+deprecated after 0.2.0 and deleted before 1.0 (issue 32): each is an unknown keyword now. The
+library's own calls (API and command line) never give a ``DeprecationWarning``.
 """
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ import pytest
 import linecontact as lc
 from linecontact import inverse as inv
 from linecontact import lennard_jones_groups as ljg
-from linecontact._validation import RAISE, failure_policy
+from linecontact._validation import failure_policy
 from linecontact.adhesion_map import md_half_width
 from linecontact.cli import main
 from linecontact.errors import ConvergenceError, NoEquilibriumError
@@ -33,9 +33,9 @@ def _converged(r):
     return np.asarray(r.converged).tolist()
 
 
-# (name, call taking the policy keywords, the old keyword, its value, the on_failure it means,
-#  what to compare between the old and the new call)
-DEPRECATED = [
+# (name, call taking the policy keywords, the deleted keyword, its value, the on_failure it
+#  meant, what to compare between calls)
+DELETED = [
     # raise_on_failure: a collocation point that misses its tolerance (n too small)
     (
         "normal_contact",
@@ -148,25 +148,16 @@ def _outcome(call, **kw):
 
 @pytest.mark.parametrize(
     "name, call, old, value, new, read",
-    DEPRECATED,
-    ids=[f"{c[0]}-{c[2]}={c[3]!r}" for c in DEPRECATED],
+    DELETED,
+    ids=[f"{c[0]}-{c[2]}={c[3]!r}" for c in DELETED],
 )
-def test_each_old_keyword_warns_and_maps_to_on_failure(name, call, old, value, new, read):
-    with pytest.warns(DeprecationWarning) as record:
-        got = _outcome(call, **{old: value})
-    (w,) = [w for w in record if w.category is DeprecationWarning]
-    assert str(w.message) == (
-        f"{name}: {old}={value!r} is deprecated, use on_failure={new!r} instead"
-    )
-    assert w.filename == __file__  # the warning points at the caller's line
-    with warnings.catch_warnings():
-        warnings.simplefilter("error", DeprecationWarning)
-        want = _outcome(call, on_failure=new)
-    if isinstance(want, type):
-        assert got is want
-    else:
+def test_each_deleted_keyword_is_unknown(name, call, old, value, new, read):
+    with pytest.raises(TypeError, match=rf"unexpected keyword argument '{old}'"):
+        call(**{old: value})
+    got = _outcome(call, on_failure=new)  # the keyword that replaced it
+    if new == "report":  # the failed point reported, not raised
         assert not isinstance(got, type)
-        assert read(got) == read(want)
+        read(got)
 
 
 def test_the_reports_mark_the_points():
@@ -181,39 +172,6 @@ def test_the_reports_mark_the_points():
     assert c.converged is False
 
 
-@pytest.mark.parametrize(
-    "call",
-    [
-        lambda **k: lc.normal_contact(0.05, 100.0, 0.01, **k),
-        lambda **k: lc.contact_for_load(1.0, 100.0, 0.2, **k),
-        lambda **k: lc.sliding_contact_for_load(0.5, 100.0, 2.0, 0.04, **k),
-        lambda **k: lc.sliding_initiation(0.01, 0.5, **k),
-        lambda **k: lc.tangential_history(0.01, [0.01], **k),
-        lambda **k: CYL.contact(load=1.0, **k),
-        lambda **k: CYL.steady_rolling(1.0, friction_stress=1e9, d_over_a=0.0, **k),
-    ],
-)
-@pytest.mark.parametrize("new", ["raise", "report"])
-def test_old_and_new_together_is_a_value_error(call, new):
-    refused = 0
-    for old, value in (
-        ("raise_on_failure", True),
-        ("on_no_equilibrium", "raise"),
-        ("on_sliding", "report"),
-    ):
-        with warnings.catch_warnings():
-            warnings.simplefilter("error", DeprecationWarning)  # refused before any warning
-            try:
-                call(on_failure=new, **{old: value})
-            except ValueError as exc:
-                assert f"give on_failure={new!r} alone" in str(exc)
-                assert f"{old}={value!r}" in str(exc)
-                refused += 1
-            except TypeError as exc:  # an old keyword this function never had
-                assert "unexpected keyword argument" in str(exc)
-    assert refused >= 1
-
-
 def test_a_keyword_the_function_never_had_is_a_type_error():
     with pytest.raises(TypeError, match=r"normal_contact\(\) got an unexpected keyword .*on_sl"):
         lc.normal_contact(0.05, 100.0, 0.01, on_sliding="report")
@@ -224,19 +182,16 @@ def test_a_keyword_the_function_never_had_is_a_type_error():
 def test_bad_values_name_the_keyword():
     with pytest.raises(ValueError, match=r"^on_failure must be 'raise' or 'report', got 'no'$"):
         lc.contact_for_load(1.0, 100.0, 0.2, on_failure="no")  # type: ignore[arg-type]
-    with pytest.raises(ValueError, match=r"^raise_on_failure must be True or False, got 1$"):
-        lc.normal_contact(0.05, 100.0, 0.01, raise_on_failure=1)
-    with pytest.raises(ValueError, match=r"^on_sliding must be 'report' or 'raise', got 'x'$"):
-        lc.steady_rolling(0.01, 0.5, on_sliding="x")
+    with pytest.raises(ValueError, match=r"^on_failure must be 'raise' or 'report', got 'x'$"):
+        lc.steady_rolling(0.01, 0.5, on_failure="x")  # type: ignore[arg-type]
 
 
-def test_two_old_keywords_that_disagree_report():
-    """raise_on_failure=True (the old default) with on_sliding="report": the point is reported."""
-    with pytest.warns(DeprecationWarning, match="use on_failure='report'"):
-        r = lc.sliding_initiation(0.01, T_over_Ea=0.03, raise_on_failure=True, on_sliding="report")
-    assert r.state == "sliding"
-    assert failure_policy(RAISE, where="f", accepts=("raise_on_failure",)) == "raise"
-    assert failure_policy("report", where="f") == "report"
+def test_the_policy_check():
+    assert failure_policy("raise") == "raise"
+    assert failure_policy("report") == "report"
+    for bad in (True, None, "Raise", ["report"]):
+        with pytest.raises(ValueError, match=r"^on_failure must be 'raise' or 'report', got "):
+            failure_policy(bad)
 
 
 def test_the_default_is_raise_everywhere():
@@ -299,7 +254,7 @@ def test_propagate_still_gives_nan_for_unreachable_draws():
 
 
 # --------------------------------------------------------------------------------------------
-# the library's own calls never use a deprecated keyword
+# the library's own calls never give a DeprecationWarning
 
 
 def test_api_calls_give_no_deprecation_warning():

@@ -340,27 +340,3 @@ BAD_REFERENCE = [
 def test_bad_input(func, args, message):
     with pytest.raises(ValueError, match=message):
         func(*args)
-
-
-def test_reference_is_a_deprecated_alias_of_closed_forms():
-    """``linecontact.reference`` still gives the public names, with a DeprecationWarning."""
-    import importlib
-    import subprocess
-    import sys
-
-    import linecontact.closed_forms as cf
-
-    ref = importlib.import_module("linecontact.reference")
-    for name in cf.__all__:
-        with pytest.warns(DeprecationWarning, match="use linecontact.closed_forms"):
-            assert getattr(ref, name) is getattr(cf, name)
-    with pytest.raises(AttributeError):
-        ref._where  # noqa: B018 (the private names moved)
-    # the library itself never loads it (so nothing in it warns)
-    code = "import sys, linecontact; print('linecontact.reference' in sys.modules)"
-    assert (
-        subprocess.run(
-            [sys.executable, "-c", code], capture_output=True, text=True, check=True
-        ).stdout.strip()
-        == "False"
-    )

@@ -202,17 +202,6 @@ def test_shapes_that_do_not_broadcast_are_named(fn, args, kwargs, message):
         fn(*args, **kwargs)
 
 
-@pytest.mark.parametrize("fn", [lc.cylinder_sliding_initiation, lc.cylinder_steady_rolling])
-@pytest.mark.parametrize("cylinder", [None, "cyl", 50e-9])
-def test_cylinder_functions_want_a_cylinder(fn, cylinder):
-    # the deprecated aliases: they warn, then check that they were given a Cylinder
-    with (
-        pytest.warns(DeprecationWarning, match=r"use Cylinder\."),
-        pytest.raises(ValueError, match=r"^cylinder must be a linecontact.Cylinder"),
-    ):
-        fn(cylinder, 1.0, friction_stress=1e9, d_over_a=0.5)
-
-
 @pytest.mark.parametrize(
     "fn, d, message",
     [

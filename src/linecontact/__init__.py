@@ -21,8 +21,7 @@ length over ``E h``, stresses over ``E``; compressive load positive):
   with uncertainty (:mod:`linecontact.inverse`); :class:`Material` -- presets with sources;
 - :class:`Cylinder` -- the SI layer (materials, adhesion as (sigma0, h) or (w, z0)), one
   method per problem (``contact``, ``pull_off``, ``sliding``, ``sliding_initiation``,
-  ``steady_rolling``, ``push``, ``tangential_history``, ``cyclic_loss``); the ``cylinder_*``
-  functions are its deprecated aliases;
+  ``steady_rolling``, ``push``, ``tangential_history``, ``cyclic_loss``);
 - :mod:`linecontact.output` -- results to JSON, JSON Lines, CSV or tables, with provenance;
   :func:`read` -- any of those files back as a ``pandas.DataFrame`` (provenance in ``.attrs``);
 - :func:`sweep`, :func:`open_sweep` -- parameter studies: a subcommand over every combination
@@ -35,17 +34,10 @@ length over ``E h``, stresses over ``E``; compressive load positive):
 from ._interrupt import imports_interruptible as _imports_interruptible
 
 with _imports_interruptible():
-    from . import laws
+    from . import _moved, laws
     from ._version import __version__
     from .closed_forms import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
-    from .cylinder import (
-        Cylinder,
-        cylinder_cyclic_loss,
-        cylinder_push,
-        cylinder_sliding_initiation,
-        cylinder_steady_rolling,
-        cylinder_tangential_history,
-    )
+    from .cylinder import Cylinder
     from .errors import ConvergenceError, CouplingWarning, ModelValidityWarning, NoEquilibriumError
     from .inverse import (
         fit_pull_off,
@@ -113,11 +105,6 @@ __all__ = [
     "contact_for_load",
     "cyclic_loss",
     "cyclic_loss_coulomb",
-    "cylinder_cyclic_loss",
-    "cylinder_push",
-    "cylinder_sliding_initiation",
-    "cylinder_steady_rolling",
-    "cylinder_tangential_history",
     "dundurs_beta",
     "equilibria",
     "fit_pull_off",
@@ -151,3 +138,10 @@ __all__ = [
     "work_of_adhesion_from_width",
     "zero_width_load",
 ]
+
+# the names deleted before 1.0: their errors name the replacement (linecontact._moved)
+_moved.install_finder()
+
+
+def __getattr__(name: str) -> object:
+    return _moved.resolve(__name__, name)

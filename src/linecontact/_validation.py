@@ -3,8 +3,7 @@
 from __future__ import annotations
 
 import math
-import warnings
-from typing import Final, Literal, cast
+from typing import Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -262,96 +261,26 @@ def check_solver_options(n: object, tol: object, *, n_max: int) -> None:
 FailurePolicy = Literal["raise", "report"]
 
 
-class _Default(str):
-    """The default ``"raise"`` of ``on_failure``, told apart from an explicit ``"raise"``.
-
-    It equals (and prints as) ``"raise"``; only :func:`failure_policy` asks whether it is
-    this object, to refuse an old keyword given together with ``on_failure``.
-    """
-
-    __slots__ = ()
-
-
-#: The default of every ``on_failure`` keyword (``"raise"``).
-RAISE: Final = cast(FailurePolicy, _Default("raise"))
-
-#: How each deprecated keyword maps to ``on_failure``: its accepted values, said in the
-#: message for any other value.
-_OLD_POLICIES: Final[dict[str, tuple[str, dict[object, FailurePolicy]]]] = {
-    "raise_on_failure": ("True or False", {True: "raise", False: "report"}),
-    "on_no_equilibrium": ("'raise' or 'report'", {"raise": "raise", "report": "report"}),
-    "on_sliding": ("'report' or 'raise'", {"raise": "raise", "report": "report"}),
-}
-
-
-def failure_policy(
-    on_failure: object,
-    *,
-    where: str,
-    accepts: tuple[str, ...] = ("raise_on_failure",),
-    stacklevel: int = 3,
-    **old: object,
-) -> FailurePolicy:
-    """The checked value of ``on_failure``, with the deprecated keywords mapped to it.
+def failure_policy(on_failure: object) -> FailurePolicy:
+    """The checked value of ``on_failure``.
 
     Parameters
     ----------
     on_failure : object
-        The caller's ``on_failure`` (its default is :data:`RAISE`).
-    where : str
-        The public function, for the messages (``"normal_contact"``).
-    accepts : tuple of str
-        The deprecated keywords that function had (``raise_on_failure``,
-        ``on_no_equilibrium``, ``on_sliding``); any other keyword in ``old`` is a
-        ``TypeError``, as Python says for an unknown keyword.
-    stacklevel : int
-        Of the ``DeprecationWarning``: 3 points at the caller of a public function that
-        calls this one directly.
-    **old : object
-        The deprecated keywords the caller was given (its ``**deprecated``).
+        The caller's ``on_failure`` (``"raise"`` by default everywhere).
 
     Returns
     -------
     {"raise", "report"}
-        An old keyword maps to ``on_failure`` (``raise_on_failure=False`` and ``"report"``
-        are ``"report"``); two old keywords that disagree give ``"report"`` (each of them
-        reported something instead of raising).
 
     Raises
     ------
     ValueError
-        For a value outside ``{"raise", "report"}`` (or an old keyword's values), or an
-        old keyword given together with ``on_failure``.
-    TypeError
-        For a keyword the function does not take.
+        For a value outside ``{"raise", "report"}``.
     """
-    policies: dict[str, FailurePolicy] = {}
-    for name, value in old.items():
-        if name not in accepts or name not in _OLD_POLICIES:
-            raise TypeError(f"{where}() got an unexpected keyword argument {name!r}")
-        said, mapping = _OLD_POLICIES[name]
-        # by type: 1 == True, but neither 1 nor "yes" was ever a valid raise_on_failure
-        flag = name == "raise_on_failure"
-        if not isinstance(value, (bool, np.bool_) if flag else str) or value not in mapping:
-            raise ValueError(f"{name} must be {said}, got {value!r}")
-        policies[name] = mapping[bool(value) if flag else value]
-    if not policies:
-        if not (isinstance(on_failure, str) and on_failure in ("raise", "report")):
-            raise ValueError(f"on_failure must be 'raise' or 'report', got {on_failure!r}")
-        return "raise" if on_failure == "raise" else "report"
-    if on_failure is not RAISE:
-        given = ", ".join(f"{k}={v!r}" for k, v in old.items())
-        raise ValueError(
-            f"{where}: give on_failure={on_failure!r} alone, without its deprecated form {given}"
-        )
-    policy: FailurePolicy = "report" if "report" in policies.values() else "raise"
-    for name, value in old.items():
-        warnings.warn(
-            f"{where}: {name}={value!r} is deprecated, use on_failure={policy!r} instead",
-            DeprecationWarning,
-            stacklevel=stacklevel,
-        )
-    return policy
+    if not (isinstance(on_failure, str) and on_failure in ("raise", "report")):
+        raise ValueError(f"on_failure must be 'raise' or 'report', got {on_failure!r}")
+    return "raise" if on_failure == "raise" else "report"
 
 
 def scalar_or_array(*arrays: NDArray) -> bool:

@@ -5,8 +5,9 @@ its own units (lengths along the surface over :math:`\sqrt{R z_0}`, gaps over :m
 over :math:`w \sqrt{R/z_0}`, one group :math:`\mu = w \sqrt{R/z_0}/(E z_0)`). Here its load curve
 and its contact for a load are given in the groups of the rest of the library -- :math:`R/h`,
 :math:`\sigma_0/E`, loads over :math:`E h`, widths over ``R``, gaps over ``h`` -- for the
-``law="lennard-jones"`` of :func:`linecontact.load_curve` and
-:func:`linecontact.contact_for_load` (and of :class:`linecontact.Cylinder`).
+:func:`~linecontact.laws.lennard_jones.load_curve` and
+:func:`~linecontact.laws.lennard_jones.contact_for_load` of :mod:`linecontact.laws.lennard_jones`
+(and the ``lennard_jones_*`` methods of :class:`linecontact.Cylinder`).
 
 The law keeps the Dugdale step's work of adhesion :math:`w = \sigma_0 h` and its peak tension
 :math:`\sigma_0 = S w/z_0` (the Maugis matching, :math:`S` = :data:`~linecontact.lennard_jones.
@@ -25,13 +26,13 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any, ClassVar
+from typing import ClassVar
 
 import numpy as np
 from numpy.typing import NDArray
 
 from . import closed_forms as _cf
-from ._validation import RAISE, FailurePolicy, failure_policy, first_point
+from ._validation import FailurePolicy, failure_policy, first_point
 from .errors import ConvergenceError, NoEquilibriumError
 from .lennard_jones import (  # lj_groups, pull_off_of: defined there, re-exported here
     MAUGIS_MATCH_SIGMA0,
@@ -285,8 +286,7 @@ def contact_for_load_in_dugdale_groups(
     sigma0_over_E: NDArray,
     *,
     scalar: bool,
-    on_failure: FailurePolicy = RAISE,
-    **deprecated: Any,
+    on_failure: FailurePolicy = "raise",
 ) -> LennardJonesContact:
     """:func:`~linecontact.lennard_jones.lj_contact_for_load` at validated, broadcast groups.
 
@@ -295,7 +295,7 @@ def contact_for_load_in_dugdale_groups(
     raises :class:`BelowPullOffError` (a :class:`~linecontact.errors.NoEquilibriumError`,
     naming the first such point) before any other point of its ``mu`` is solved, or with
     ``on_failure="report"`` gives ``state == "no-equilibrium"`` and NaN values (README,
-    "Conventions"; ``on_no_equilibrium`` is its deprecated form).
+    "Conventions").
     Points with the same load and ``mu`` are solved once. A failed search of the solver
     raises :class:`~linecontact.errors.ConvergenceError`.
     """
@@ -307,15 +307,7 @@ def contact_for_load_in_dugdale_groups(
     Ff = np.reshape(F, -1)
     Fn = Ff / scale  # over w sqrt(R/z0)
     _check_load(Fn, Ff, "F_over_Eh")
-    report = (
-        failure_policy(
-            on_failure,
-            where="contact_for_load_in_dugdale_groups",
-            accepts=("on_no_equilibrium",),
-            **deprecated,
-        )
-        == "report"
-    )
+    report = failure_policy(on_failure) == "report"
     P = Ff.size
     A, G, E = np.full(P, np.nan), np.full(P, np.nan), np.full(P, np.nan)
     res = np.full(P, np.nan)

@@ -9,8 +9,7 @@ adhesion conventions: :mod:`linecontact.materials`.
 
 The package's modules: ``_cylinder.py`` (:class:`Cylinder`), ``_methods.py`` (the methods of
 the problems, which :class:`Cylinder` inherits), ``_problems.py`` (the tangential problems, the
-pushed fibre, the load histories), ``_sliding.py`` (steady sliding), ``_deprecated.py`` (the
-``cylinder_*`` functions, deprecated aliases of the methods), ``_results.py`` (the SI result
+pushed fibre, the load histories), ``_sliding.py`` (steady sliding), ``_results.py`` (the SI result
 classes), ``_checks.py`` (the plausible ranges of the SI inputs and the checks of the widths).
 Import from ``linecontact.cylinder``: every name is here.
 """
@@ -21,6 +20,7 @@ Import from ``linecontact.cylinder``: every name is here.
 
 from __future__ import annotations
 
+from .. import _moved
 from ._checks import (
     _CHECKED,
     _S_LJ,
@@ -37,14 +37,6 @@ from ._checks import (
     _which,
 )
 from ._cylinder import Cylinder, _si_load_curve
-from ._deprecated import (
-    cylinder_cyclic_loss,
-    cylinder_push,
-    cylinder_sliding,
-    cylinder_sliding_initiation,
-    cylinder_steady_rolling,
-    cylinder_tangential_history,
-)
 from ._problems import (
     _cylinder_tangential,
     _full_slip,
@@ -69,7 +61,6 @@ from ._sliding import hysteresis_adhesion, sliding_pull_off_force
 
 __all__ = [
     "CylinderPush",
-    "cylinder_push",
     "PLAUSIBLE",
     "Cylinder",
     "CylinderContact",
@@ -82,9 +73,9 @@ __all__ = [
     "CylinderCyclicLoss",
     "CylinderTangential",
     "CylinderTangentialHistory",
-    "cylinder_cyclic_loss",
-    "cylinder_sliding",
-    "cylinder_sliding_initiation",
-    "cylinder_tangential_history",
-    "cylinder_steady_rolling",
 ]
+
+
+def __getattr__(name: str) -> object:
+    # a name deleted before 1.0 (linecontact._moved): its error names the replacement
+    return _moved.resolve(__name__, name)

@@ -14,7 +14,6 @@ from .. import closed_forms as _cf
 from .. import domain as _domain
 from .. import normal as _normal
 from .._validation import (
-    RAISE,
     FailurePolicy,
     check_array,
     failure_policy,
@@ -364,8 +363,7 @@ class Cylinder(_Problems):
         load: ArrayLike | None = None,
         method: str = "closed-form",
         branch: str = "stable",
-        on_failure: FailurePolicy = RAISE,
-        **deprecated: Any,
+        on_failure: FailurePolicy = "raise",
     ) -> CylinderContact:
         """The contact at given half-widths ``a`` [m] or loads ``F`` [N/m] (exactly one).
 
@@ -375,15 +373,12 @@ class Cylinder(_Problems):
         gives ``state == "no-equilibrium"`` and NaN values; for a half-width, ``on_failure``
         is that of :func:`~linecontact.normal_contact` (a collocation point that misses its
         tolerance raises :class:`~linecontact.errors.ConvergenceError`, or is flagged in
-        ``nondimensional.converged``). README, "Conventions"; ``on_no_equilibrium`` is the
-        deprecated form of ``on_failure``. The Lennard-Jones law's contact:
-        :meth:`lennard_jones_contact`.
+        ``nondimensional.converged``). README, "Conventions". The Lennard-Jones law's
+        contact: :meth:`lennard_jones_contact`.
         """
         if (contact_half_width is None) == (load is None):
             raise ValueError("give exactly one of contact_half_width or load")
-        policy = failure_policy(
-            on_failure, where="Cylinder.contact", accepts=("on_no_equilibrium",), **deprecated
-        )
+        policy = failure_policy(on_failure)
         if method not in ("closed-form", "collocation"):
             raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
         if branch not in ("stable", "unstable"):
@@ -515,7 +510,7 @@ class Cylinder(_Problems):
 
     # the Lennard-Jones law (a law is a method here, as it is a module in linecontact.laws)
     def lennard_jones_contact(
-        self, *, load: ArrayLike, on_failure: FailurePolicy = RAISE
+        self, *, load: ArrayLike, on_failure: FailurePolicy = "raise"
     ) -> CylinderLennardJonesContact:
         r"""The contact carrying ``load`` [N/m] under the Lennard-Jones law of Eq. (1).
 
@@ -527,7 +522,7 @@ class Cylinder(_Problems):
         :class:`~linecontact.errors.NoEquilibriumError`, or with ``on_failure="report"``
         gives ``state == "no-equilibrium"`` and NaN values.
         """
-        policy = failure_policy(on_failure, where="Cylinder.lennard_jones_contact", accepts=())
+        policy = failure_policy(on_failure)
         self._check_lennard_jones()
         return self._for_load_lj("load", load, policy)
 

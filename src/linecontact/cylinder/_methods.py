@@ -7,11 +7,11 @@ the cylinder as its first argument and does not import :class:`Cylinder`: so
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Literal
 
 from numpy.typing import ArrayLike
 
-from .._validation import RAISE, FailurePolicy
+from .._validation import FailurePolicy
 from ._problems import (
     _cyclic_loss,
     _pushed_fibre,
@@ -41,8 +41,7 @@ class _Problems:
         d_over_a: ArrayLike | None = None,
         tangential_load: ArrayLike | None = None,
         method: str = "closed-form",
-        on_failure: FailurePolicy = RAISE,
-        **deprecated: Any,
+        on_failure: FailurePolicy = "raise",
     ) -> CylinderTangential:
         """Initiation of sliding under ``normal_load`` [N/m] (Eqs 15-17, SI units).
 
@@ -68,7 +67,6 @@ class _Problems:
             tangential_load=tangential_load,
             method=method,
             on_failure=on_failure,
-            **deprecated,
         )
 
     def steady_rolling(
@@ -80,8 +78,7 @@ class _Problems:
         d_over_a: ArrayLike | None = None,
         tangential_load: ArrayLike | None = None,
         method: str = "closed-form",
-        on_failure: FailurePolicy = RAISE,
-        **deprecated: Any,
+        on_failure: FailurePolicy = "raise",
     ) -> CylinderTangential:
         r"""Steady rolling of a driving cylinder under ``normal_load`` [N/m] (Eqs 23-29).
 
@@ -98,7 +95,6 @@ class _Problems:
             tangential_load=tangential_load,
             method=method,
             on_failure=on_failure,
-            **deprecated,
         )
 
     def push(
@@ -197,7 +193,7 @@ class _Problems:
         load: ArrayLike | None = None,
         friction_stress: float | None = None,
         method: Literal["closed-form", "collocation"] = "collocation",
-        on_failure: FailurePolicy = RAISE,
+        on_failure: FailurePolicy = "raise",
     ) -> CylinderSliding:
         """Steady sliding in SI units (Eqs 18-22; :func:`~linecontact.sliding.sliding_contact`).
 

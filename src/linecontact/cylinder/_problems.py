@@ -10,7 +10,6 @@ from numpy.typing import ArrayLike, NDArray
 from .. import domain as _domain
 from .. import push as _push
 from .._validation import (
-    RAISE,
     FailurePolicy,
     broadcast,
     check_array,
@@ -203,8 +202,7 @@ def _sliding_initiation(
     d_over_a: ArrayLike | None = None,
     tangential_load: ArrayLike | None = None,
     method: str = "closed-form",
-    on_failure: FailurePolicy = RAISE,
-    **deprecated: Any,
+    on_failure: FailurePolicy = "raise",
 ) -> CylinderTangential:
     """Initiation of sliding of a :class:`~linecontact.cylinder.Cylinder` (SI units).
 
@@ -232,8 +230,8 @@ def _sliding_initiation(
         As in :func:`sliding_initiation`: a tangential load at or above full slip raises
         :class:`~linecontact.errors.NoEquilibriumError` (``"raise"``, default), or gives
         ``state == "sliding"`` (``"report"``); README, "Conventions". **Changed** after
-        0.2.0: the deprecated ``on_sliding`` defaulted to ``"report"``. A normal load below
-        the pull-off force raises either way.
+        0.2.0: the keyword ``on_sliding`` (deleted) defaulted to ``"report"``. A normal load
+        below the pull-off force raises either way.
 
     Returns
     -------
@@ -247,13 +245,7 @@ def _sliding_initiation(
     >>> s.state, s.stick_zone_end < s.contact_half_width
     ('stick-slip', True)
     """
-    policy = failure_policy(
-        on_failure,
-        where="Cylinder.sliding_initiation",
-        accepts=("on_sliding",),
-        stacklevel=4,  # the caller of the method
-        **deprecated,
-    )
+    policy = failure_policy(on_failure)
     return _cylinder_tangential(
         "sliding initiation",
         cylinder,
@@ -276,8 +268,7 @@ def _steady_rolling(
     d_over_a: ArrayLike | None = None,
     tangential_load: ArrayLike | None = None,
     method: str = "closed-form",
-    on_failure: FailurePolicy = RAISE,
-    **deprecated: Any,
+    on_failure: FailurePolicy = "raise",
 ) -> CylinderTangential:
     r"""Steady rolling of a driving :class:`~linecontact.cylinder.Cylinder` (SI units).
 
@@ -293,13 +284,7 @@ def _steady_rolling(
     >>> r.creep_ratio < 0
     True
     """
-    policy = failure_policy(
-        on_failure,
-        where="Cylinder.steady_rolling",
-        accepts=("on_sliding",),
-        stacklevel=4,  # the caller of the method
-        **deprecated,
-    )
+    policy = failure_policy(on_failure)
     return _cylinder_tangential(
         "steady rolling",
         cylinder,

@@ -8,7 +8,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .. import domain as _domain
-from .._validation import RAISE, FailurePolicy, check_array, failure_policy, positive, scalar
+from .._validation import FailurePolicy, check_array, failure_policy, positive, scalar
 from ..units import Scales, to_si
 from ._checks import _small_strain_in_si, _warn_small_strain
 from ._results import CylinderSliding
@@ -23,7 +23,7 @@ def _sliding(
     load: ArrayLike | None = None,
     friction_stress: float | None = None,
     method: Literal["closed-form", "collocation"] = "collocation",
-    on_failure: FailurePolicy = RAISE,
+    on_failure: FailurePolicy = "raise",
 ) -> CylinderSliding:
     r"""Steady sliding of ``cylinder`` (:func:`linecontact.sliding.sliding_contact`) in SI units.
 
@@ -53,7 +53,7 @@ def _sliding(
     """
     from ..sliding import sliding_contact, sliding_contact_for_load
 
-    policy = failure_policy(on_failure, where="Cylinder.sliding", accepts=())
+    policy = failure_policy(on_failure)
     if (receding_range is None) == (h1_over_h2 is None):
         raise ValueError("give exactly one of receding_range [m] or h1_over_h2")
     if (contact_half_width is None) == (load is None):

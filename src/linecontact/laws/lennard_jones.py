@@ -26,7 +26,7 @@ from __future__ import annotations
 from numpy.typing import ArrayLike
 
 from .. import domain as _domain
-from .._validation import RAISE, FailurePolicy, broadcast, failure_policy, scalar_or_array
+from .._validation import FailurePolicy, broadcast, failure_policy, scalar_or_array
 from ..lennard_jones import LennardJonesPullOff, pull_off_in_dugdale_groups
 from ..lennard_jones_groups import (
     LJ_LOAD_MAX,
@@ -86,7 +86,7 @@ def contact_for_load(
     R_over_h: ArrayLike,
     sigma0_over_E: ArrayLike,
     *,
-    on_failure: FailurePolicy = RAISE,
+    on_failure: FailurePolicy = "raise",
 ) -> LennardJonesContact:
     r"""The contact carrying a given load under the Lennard-Jones law (the stable branch).
 
@@ -120,7 +120,7 @@ def contact_for_load(
     F = _domain.check("F_over_Eh", F_over_Eh)
     rho = _domain.check("R_over_h", R_over_h)
     s = _domain.check("sigma0_over_E", sigma0_over_E)
-    policy = failure_policy(on_failure, where="contact_for_load", accepts=())
+    policy = failure_policy(on_failure)
     scalar = scalar_or_array(F, rho, s)
     F, rho, s = broadcast(F_over_Eh=F, R_over_h=rho, sigma0_over_E=s)
     return contact_for_load_in_dugdale_groups(F, rho, s, scalar=scalar, on_failure=policy)

@@ -1,9 +1,8 @@
 """The Lennard-Jones pull-off in the groups of the Dugdale problem.
 
 The conversion of the Dugdale groups ``(R/h, sigma0/E)`` to the law's own units
-(:func:`lj_groups`) and of the pull-off (:func:`pull_off_of`), once: the
-``law="lennard-jones"`` of :func:`linecontact.pull_off` and
-:mod:`linecontact.lennard_jones_groups` use them.
+(:func:`lj_groups`) and of the pull-off (:func:`pull_off_of`), once:
+:mod:`linecontact.laws.lennard_jones` and :mod:`linecontact.lennard_jones_groups` use them.
 """
 
 from __future__ import annotations

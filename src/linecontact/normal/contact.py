@@ -10,7 +10,7 @@ of the load minimum that the pull-off and the inverse solve on.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, ClassVar
+from typing import ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -19,7 +19,6 @@ from .. import _numerics as _num
 from .. import closed_forms as _cf
 from .. import domain as _domain
 from .._validation import (
-    RAISE,
     FailurePolicy,
     broadcast,
     check_solver_options,
@@ -375,8 +374,7 @@ def normal_contact(
     method: str = "closed-form",
     n: int | str = "auto",
     tol: float = 1e-12,
-    on_failure: FailurePolicy = RAISE,
-    **deprecated: Any,
+    on_failure: FailurePolicy = "raise",
 ) -> NormalContact:
     r"""Adhesive-zone width and load for given contact half-widths (Eqs. 9, 11, 12).
 
@@ -400,8 +398,7 @@ def normal_contact(
     on_failure : {"raise", "report"}
         A point that misses its tolerance raises
         :class:`~linecontact.errors.ConvergenceError` (``"raise"``, default), or is
-        flagged in ``converged`` (``"report"``); README, "Conventions". Replaces the
-        deprecated ``raise_on_failure`` (``False`` is ``"report"``).
+        flagged in ``converged`` (``"report"``); README, "Conventions".
 
     Returns
     -------
@@ -423,7 +420,7 @@ def normal_contact(
     if method not in ("closed-form", "collocation"):
         raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
     check_solver_options(n, tol, n_max=8192)
-    policy = failure_policy(on_failure, where="normal_contact", **deprecated)
+    policy = failure_policy(on_failure)
     scalar = scalar_or_array(A, rho, s)
     A, rho, s = broadcast(a_over_R=A, R_over_h=rho, sigma0_over_E=s)
     _cf._check_kappa(rho, s)

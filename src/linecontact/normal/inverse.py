@@ -17,7 +17,6 @@ from .. import _numerics as _num
 from .. import closed_forms as _cf
 from .. import domain as _domain
 from .._validation import (
-    RAISE,
     FailurePolicy,
     broadcast,
     failure_policy,
@@ -120,8 +119,7 @@ def contact_for_load(
     sigma0_over_E: ArrayLike,
     *,
     branch: str = "stable",
-    on_failure: FailurePolicy = RAISE,
-    **deprecated: Any,
+    on_failure: FailurePolicy = "raise",
 ) -> Any:
     r"""The contact state(s) carrying a given load (closed form).
 
@@ -139,7 +137,7 @@ def contact_for_load(
         For a load that no contact of the branch carries: raise (``"raise"``, default), or
         report the point with ``state == "no-equilibrium"``, NaN widths (the load kept),
         ``converged`` and ``stable`` False (``"report"``; the other points are solved as
-        usual); README, "Conventions". Replaces the deprecated ``on_no_equilibrium``.
+        usual); README, "Conventions".
 
     Returns
     -------
@@ -158,9 +156,7 @@ def contact_for_load(
     s = _domain.check("sigma0_over_E", sigma0_over_E)
     if branch not in ("stable", "unstable"):
         raise ValueError(f"branch must be 'stable' or 'unstable', got {branch!r}")
-    policy = failure_policy(
-        on_failure, where="contact_for_load", accepts=("on_no_equilibrium",), **deprecated
-    )
+    policy = failure_policy(on_failure)
     scalar = scalar_or_array(F, rho, s)
     F, rho, s = (
         np.asarray(v, float) for v in broadcast(F_over_Eh=F, R_over_h=rho, sigma0_over_E=s)

@@ -8,7 +8,7 @@ from the solvers of :mod:`~linecontact.sliding.closed_form` and
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, ClassVar, Literal
+from typing import ClassVar, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -17,7 +17,6 @@ from .. import _numerics as _num
 from .. import closed_forms as _cf
 from .. import domain as _domain
 from .._validation import (
-    RAISE,
     FailurePolicy,
     broadcast,
     failure_policy,
@@ -403,8 +402,7 @@ def sliding_contact(
     method: Literal["closed-form", "collocation"] = "closed-form",
     n: int | str = "auto",
     tol: float = 1e-12,
-    on_failure: FailurePolicy = RAISE,
-    **deprecated: Any,
+    on_failure: FailurePolicy = "raise",
 ) -> SlidingContact:
     r"""Zones, eccentricity, load and moment of steady sliding at given ``a`` (Eqs. 20--22).
 
@@ -433,8 +431,7 @@ def sliding_contact(
     on_failure : {"raise", "report"}
         A point that misses its tolerance raises
         :class:`~linecontact.errors.ConvergenceError` (``"raise"``, default), or is
-        flagged in ``converged`` (``"report"``); README, "Conventions". Replaces the
-        deprecated ``raise_on_failure`` (``False`` is ``"report"``).
+        flagged in ``converged`` (``"report"``); README, "Conventions".
 
     Returns
     -------
@@ -459,7 +456,7 @@ def sliding_contact(
         else _domain.check("tau0_over_E", tau0_over_E, "friction_tau0_over_E")
     )
     _check_method(method, n, tol)
-    policy = failure_policy(on_failure, where="sliding_contact", **deprecated)
+    policy = failure_policy(on_failure)
     scalar = scalar_or_array(A, rho, r, s, tau)
     A, rho, r, s, tau = broadcast(
         a_over_R=A, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau

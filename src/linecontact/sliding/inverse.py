@@ -6,7 +6,7 @@ form in ``ln(a)`` on the stable side of the load minimum (or below it, on the un
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Literal
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -15,7 +15,6 @@ from .. import _numerics as _num
 from .. import closed_forms as _cf
 from .. import domain as _domain
 from .._validation import (
-    RAISE,
     FailurePolicy,
     broadcast,
     failure_policy,
@@ -205,8 +204,7 @@ def sliding_contact_for_load(
     method: Literal["closed-form", "collocation"] = "closed-form",
     n: int | str = "auto",
     tol: float = 1e-12,
-    on_failure: FailurePolicy = RAISE,
-    **deprecated: Any,
+    on_failure: FailurePolicy = "raise",
 ) -> SlidingContact:
     r"""The steadily sliding contact carrying a given normal load (stable branch).
 
@@ -230,8 +228,7 @@ def sliding_contact_for_load(
         :class:`~linecontact.errors.ConvergenceError` (``"raise"``, default), or report the
         point (``"report"``: below the pull-off force ``state == "no-equilibrium"``, NaN
         values (the load kept), ``converged`` and ``stable`` False; a miss flagged in
-        ``converged``); README, "Conventions". Replaces both deprecated keywords,
-        ``raise_on_failure`` (``False`` is ``"report"``) and ``on_no_equilibrium``.
+        ``converged``); README, "Conventions".
 
     Returns
     -------
@@ -257,12 +254,7 @@ def sliding_contact_for_load(
         else _domain.check("tau0_over_E", tau0_over_E, "friction_tau0_over_E")
     )
     _check_method(method, n, tol)
-    policy = failure_policy(
-        on_failure,
-        where="sliding_contact_for_load",
-        accepts=("raise_on_failure", "on_no_equilibrium"),
-        **deprecated,
-    )
+    policy = failure_policy(on_failure)
     scalar = scalar_or_array(F, rho, r, s, tau)
     F, rho, r, s, tau = broadcast(
         F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau

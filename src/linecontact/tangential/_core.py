@@ -71,10 +71,6 @@ def _check_options(method, n, tol):
     check_solver_options(n, tol, n_max=SIZES[-1])
 
 
-#: The deprecated keywords that ``on_failure`` replaces in the tangential solvers.
-OLD_POLICY_KEYWORDS = ("raise_on_failure", "on_sliding")
-
-
 def _one_of(d_over_a, load, load_name: str) -> None:
     if (d_over_a is None) == (load is None):
         raise ValueError(f"give exactly one of d_over_a or {load_name}")

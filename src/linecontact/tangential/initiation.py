@@ -9,13 +9,13 @@ Units, sign conventions and references: :mod:`linecontact.tangential`.
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, ClassVar
+from typing import ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import domain as _domain
-from .._validation import RAISE, FailurePolicy, failure_policy
+from .._validation import FailurePolicy, failure_policy
 from ..sie import _log_moment_vector
 from ._core import (
     _CHECK_Y,
@@ -23,7 +23,6 @@ from ._core import (
     _STICK,
     _STICK_SLIP,
     N_COULOMB,
-    OLD_POLICY_KEYWORDS,
     _build,
     _cheb_u_series,
     _check_matrix,
@@ -333,8 +332,7 @@ def sliding_initiation(
     method: str = "closed-form",
     n: int | str = "auto",
     tol: float = 1e-12,
-    on_failure: FailurePolicy = RAISE,
-    **deprecated: Any,
+    on_failure: FailurePolicy = "raise",
 ) -> SlidingInitiation:
     r"""Initiation of sliding with constant friction stress ``tau0`` (paper Eqs 15--17).
 
@@ -363,11 +361,10 @@ def sliding_initiation(
         tolerance: raise :class:`~linecontact.errors.NoEquilibriumError` and
         :class:`~linecontact.errors.ConvergenceError` (``"raise"``, default), or report
         the point, ``state == "sliding"`` (``d_over_a`` NaN, or 0 for ``d_over_a=0``) and
-        ``converged`` False for a miss (``"report"``); README, "Conventions". Replaces both
-        deprecated keywords, ``raise_on_failure`` (``False`` is ``"report"``) and
-        ``on_sliding``. **Changed** after 0.2.0: a load at or beyond full slip raises by
-        default (``on_sliding`` defaulted to ``"report"``); pass ``on_failure="report"``
-        for the sliding state.
+        ``converged`` False for a miss (``"report"``); README, "Conventions". **Changed**
+        after 0.2.0: a load at or beyond full slip raises by default (the deleted
+        ``on_sliding`` defaulted to ``"report"``); pass ``on_failure="report"`` for the
+        sliding state.
 
     Returns
     -------
@@ -393,9 +390,7 @@ def sliding_initiation(
     >>> sliding_initiation(0.01, T_over_Ea=0.03, on_failure="report").state
     'sliding'
     """
-    policy = failure_policy(
-        on_failure, where="sliding_initiation", accepts=OLD_POLICY_KEYWORDS, **deprecated
-    )
+    policy = failure_policy(on_failure)
     arrays, load, _, diag, scalar = _run(
         _INITIATION,
         d_over_a,
@@ -420,8 +415,7 @@ def sliding_initiation_coulomb(
     method: str = "closed-form",
     n: int | str = "auto",
     tol: float = 1e-12,
-    on_failure: FailurePolicy = RAISE,
-    **deprecated: Any,
+    on_failure: FailurePolicy = "raise",
 ) -> CoulombSlidingInitiation:
     r"""Cattaneo--Mindlin initiation of sliding of a Hertz line contact (Coulomb friction).
 
@@ -457,9 +451,7 @@ def sliding_initiation_coulomb(
     >>> round(r.T_over_muF, 12)
     0.75
     """
-    policy = failure_policy(
-        on_failure, where="sliding_initiation_coulomb", accepts=OLD_POLICY_KEYWORDS, **deprecated
-    )
+    policy = failure_policy(on_failure)
     arrays, load, _, diag, scalar = _run(
         _CATTANEO_MINDLIN,
         d_over_a,

@@ -10,19 +10,18 @@ friction on the Hertz contact (Carter). Units, sign conventions and references:
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, ClassVar, cast
+from typing import ClassVar, cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import domain as _domain
-from .._validation import RAISE, FailurePolicy, failure_policy
+from .._validation import FailurePolicy, failure_policy
 from ._core import (
     _CHECK_Y,
     _STICK,
     _STICK_SLIP,
     N_COULOMB,
-    OLD_POLICY_KEYWORDS,
     _build,
     _cheb_u_series,
     _check_matrix,
@@ -291,8 +290,7 @@ def steady_rolling(
     method: str = "closed-form",
     n: int | str = "auto",
     tol: float = 1e-12,
-    on_failure: FailurePolicy = RAISE,
-    **deprecated: Any,
+    on_failure: FailurePolicy = "raise",
 ) -> SteadyRolling:
     r"""Steady rolling of a driving cylinder with constant friction stress (Eqs 23--29).
 
@@ -342,9 +340,7 @@ def steady_rolling(
     >>> abs(steady_rolling(0.01, 0.0, method="collocation").creep_over_V - r.creep_over_V) < 1e-14
     True
     """
-    policy = failure_policy(
-        on_failure, where="steady_rolling", accepts=OLD_POLICY_KEYWORDS, **deprecated
-    )
+    policy = failure_policy(on_failure)
     arrays, load, creep, diag, scalar = _run(
         _ROLLING,
         d_over_a,
@@ -377,8 +373,7 @@ def steady_rolling_coulomb(
     method: str = "closed-form",
     n: int | str = "auto",
     tol: float = 1e-12,
-    on_failure: FailurePolicy = RAISE,
-    **deprecated: Any,
+    on_failure: FailurePolicy = "raise",
 ) -> CoulombRolling:
     r"""Carter's steady rolling of a driving cylinder (Hertz pressure, Coulomb friction).
 
@@ -410,9 +405,7 @@ def steady_rolling_coulomb(
     >>> round(r.T_over_muF, 12), round(r.creep_over_V / (0.3 * 0.01), 12)
     (0.75, -0.5)
     """
-    policy = failure_policy(
-        on_failure, where="steady_rolling_coulomb", accepts=OLD_POLICY_KEYWORDS, **deprecated
-    )
+    policy = failure_policy(on_failure)
     arrays, load, creep, diag, scalar = _run(
         _CARTER,
         d_over_a,

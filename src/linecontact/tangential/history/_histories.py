@@ -15,7 +15,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ... import domain as _domain
-from ..._validation import RAISE, FailurePolicy, check_array, check_solver_options, failure_policy
+from ..._validation import FailurePolicy, check_array, check_solver_options, failure_policy
 from ...errors import ConvergenceError
 from ...results import Result
 from ._collocation import N_INCREMENTAL, N_MAX_INCREMENTAL, _Incremental, _incremental
@@ -336,8 +336,7 @@ def tangential_history(
     method: str = "closed-form",
     n: int = N_INCREMENTAL,
     tol: float = 1e-6,
-    on_failure: FailurePolicy = RAISE,
-    **deprecated: Any,
+    on_failure: FailurePolicy = "raise",
 ) -> TangentialHistory:
     r"""States of the contact along a tangential load history, constant friction stress ``tau0``.
 
@@ -364,7 +363,7 @@ def tangential_history(
         :class:`~linecontact.errors.ConvergenceError` (``"raise"``, default), or is flagged
         in ``converged`` (``"report"``); README, "Conventions". A load at or beyond full
         slip is no failure here: the step slides (``state == "sliding"``) under either
-        policy. Replaces the deprecated ``raise_on_failure`` (``False`` is ``"report"``).
+        policy.
 
     Returns
     -------
@@ -389,7 +388,7 @@ def tangential_history(
     """
     t0 = _domain.scalar("tau0_over_E", tau0_over_E)
     _check_method(method, n, tol)
-    policy = failure_policy(on_failure, where="tangential_history", **deprecated)
+    policy = failure_policy(on_failure)
     T = _loads("T_over_Ea", T_over_Ea)
     r = T / (2 * t0)
     fields_ = _history(_LAWS["constant"], r, t0, method, n, tol, policy)
@@ -404,8 +403,7 @@ def tangential_history_coulomb(
     method: str = "closed-form",
     n: int = N_INCREMENTAL,
     tol: float = 1e-6,
-    on_failure: FailurePolicy = RAISE,
-    **deprecated: Any,
+    on_failure: FailurePolicy = "raise",
 ) -> CoulombTangentialHistory:
     r"""States of a Hertz line contact with Coulomb friction along a tangential load history.
 
@@ -436,7 +434,7 @@ def tangential_history_coulomb(
     m = _domain.scalar("mu", mu)
     A = _domain.scalar("a_over_R", a_over_R)
     _check_method(method, n, tol)
-    policy = failure_policy(on_failure, where="tangential_history_coulomb", **deprecated)
+    policy = failure_policy(on_failure)
     Q = _loads("T_over_muF", T_over_muF)
     scale = m * A / 2  # mu p0 / E
     fields_ = _history(_LAWS["coulomb"], Q, scale, method, n, tol, policy)
