@@ -283,7 +283,6 @@ class Inputs:
         }
         self.__dict__["command"] = operation.name
         self.__dict__["operation"] = operation
-        self.__dict__["given"] = tuple(n for n in values if values[n] is not None)
         #: the names the library's messages give parameters in this call, where the call
         #: chose them (``work_of_adhesion`` meaning the receding one): each shell says its
         #: spelling (compute adds to it); a value is a parameter's name, or words of flags
