@@ -1,12 +1,12 @@
 """Command-line interface: a thin shell over the public API.
 
-One module per family of subcommands (:mod:`~linecontact.cli.normal`,
-:mod:`~linecontact.cli.tangential`, :mod:`~linecontact.cli.history`,
-:mod:`~linecontact.cli.sliding`,
-:mod:`~linecontact.cli.paper`, :mod:`~linecontact.cli.adhesion_map`,
-:mod:`~linecontact.cli.materials`), the shared options and
-output in :mod:`~linecontact.cli._options`. A module is imported only when one of its
-subcommands runs (:data:`COMMANDS`, :func:`build_parser`). Every subcommand takes the paper's
+The subcommands of the operations are built from their declarations
+(:mod:`linecontact.operations`) by :mod:`~linecontact.cli._build`; the others have a module
+each (:mod:`~linecontact.cli.paper`, :mod:`~linecontact.cli.adhesion_map`,
+:mod:`~linecontact.cli.materials`, :mod:`~linecontact.cli.sweep`,
+:mod:`~linecontact.cli.serve`); the shared options and output are in
+:mod:`~linecontact.cli._options`. A module (an operation's declaration) is imported only when
+its subcommand runs (:data:`COMMANDS`, :func:`build_parser`). Every subcommand takes the paper's
 nondimensional groups or SI inputs, prints a readable table, or with ``--json``
 machine-readable JSON. Bad input: one ``error:`` line on stderr and exit status 2. A solver
 that misses its tolerance: exit status 1.
@@ -41,43 +41,44 @@ with imports_interruptible():  # Ctrl-C here: status 130, one line (linecontact.
 __all__ = ["COMMANDS", "build_parser", "main"]
 
 #: Every subcommand, in the order of ``linecontact --help``: its module in this package
-#: (whose ``register(sub)`` adds it, with the module's other subcommands) and its one-line
+#: (whose ``register(sub)`` adds it, with the module's other subcommands; ``_build`` for an
+#: operation, added alone from its declaration by ``_build.register(sub, name)``) and its one-line
 #: summary. A module is imported only when one of its subcommands runs or shows its help;
 #: the summary here is what ``linecontact --help`` shows (a test keeps it equal to the
 #: module's own).
 COMMANDS: dict[str, tuple[str, str]] = {
     "normal": (
-        "normal",
+        "_build",
         "adhesive-zone width and load for given contact half-widths, or the contact for loads",
     ),
-    "pulloff": ("normal", "pull-off force under load control and its mechanism"),
+    "pulloff": ("_build", "pull-off force under load control and its mechanism"),
     "curve": (
-        "normal",
+        "_build",
         "the whole load curve: non-contact branch, contact branch, turning point, pull-off",
     ),
     "slide-init": (
-        "tangential",
+        "_build",
         "initiation of sliding under a tangential force (stick zone, T/(Ea))",
     ),
-    "roll": ("tangential", "steady rolling of a driving cylinder (stick zone, T/(Ea), creep)"),
-    "cycle": ("history", "cyclic tangential loading: energy dissipated per cycle, stick zone"),
+    "roll": ("_build", "steady rolling of a driving cylinder (stick zone, T/(Ea), creep)"),
+    "cycle": ("_build", "cyclic tangential loading: energy dissipated per cycle, stick zone"),
     "history": (
-        "history",
+        "_build",
         "a tangential load history with memory: zones, slip, energy per step",
     ),
     "fit-adhesion": (
-        "fit",
+        "_build",
         "work of adhesion (and range) from pull-off forces, with uncertainty",
     ),
     "fit-friction": (
-        "fit",
+        "_build",
         "interfacial shear strength from friction forces, with uncertainty",
     ),
     "slide": (
-        "sliding",
+        "_build",
         "steady sliding: adhesive zones, eccentricity, load and moment (trailing h1, leading h2)",
     ),
-    "push": ("push", "a fibre pushed sideways: stay, roll or slide, and at what push"),
+    "push": ("_build", "a fibre pushed sideways: stay, roll or slide, and at what push"),
     "paper": ("paper", "redraw the paper's Figs. 2-14 (PNG by default)"),
     "figures": (
         "paper",
@@ -154,11 +155,15 @@ def build_parser(argv: Sequence[str] | None = None) -> argparse.ArgumentParser:
         help="print the version and exit",
     )
     sub = p.add_subparsers(dest="command", metavar="COMMAND", parser_class=Parser)
-    wanted = None if argv is None else COMMANDS.get(_command_of(argv) or "", ("",))[0]
+    command = None if argv is None else _command_of(argv) or ""
+    wanted = COMMANDS.get(command or "", ("",))[0]
     for name, (module, summary) in COMMANDS.items():
         if name in sub.choices:  # added with an earlier subcommand of its module
             continue
-        if argv is None or module == wanted:
+        if module == "_build" and (argv is None or name == command):
+            with imports_interruptible():  # an operation: built from its declaration
+                importlib.import_module(f"{__name__}._build").register(sub, name)
+        elif module != "_build" and (argv is None or module == wanted):
             with imports_interruptible():
                 importlib.import_module(f"{__name__}.{module}").register(sub)
         else:

@@ -11,7 +11,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
-from collections.abc import Callable, Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from typing import Any
 
 from ..operations import Inputs, Operation
@@ -26,18 +26,15 @@ from ._options import (
     write_failure,
 )
 
-__all__ = ["add_operations", "run"]
+__all__ = ["register", "run"]
 
 _TYPES = {"number": float, "integer": int, "text": None}
 _NARGS = {"one": None, "several": "+", "triple": 3}
 
 
-def add_operations(
-    sub: Any, operations: Iterable[Operation], func: Callable[[argparse.Namespace], int]
-) -> None:
-    """Add a subcommand to ``sub`` for each of ``operations``, run by ``func``."""
-    for op in operations:
-        _add(sub, op, func)
+def register(sub: Any, name: str) -> None:
+    """Add the subcommand of the operation ``name`` to the subparsers ``sub``."""
+    _add(sub, _get(name), run)
 
 
 def _add(sub: Any, op: Operation, func: Callable[[argparse.Namespace], int]) -> None:
