@@ -564,7 +564,7 @@ def test_cli_summary_names_the_files_and_each_models_range(
     for name in am.MODELS:
         assert f"{name}_holds_at_y" in out
     # mu = 0.02: the rigid cylinder holds at y = 0.2 only, Hertz nowhere, JKR at y = 3
-    from linecontact.cli.adhesion_map import _summary
+    from linecontact.operations.adhesion_map import summary as _summary
 
     cols = _summary(small_map).columns
     assert cols["rigid_holds_at_y"][0] == "0.2" and cols["hertz_holds_at_y"][0] == "-"

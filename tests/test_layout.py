@@ -232,20 +232,9 @@ def _ties(modules=None, imports=None) -> dict[tuple[str, str], list[tuple[str, s
     }
 
 
-#: Ties being removed by issue 32: the list may shrink, never grow. The HTTP API still runs
-#: the command lines of ``map`` and ``materials``, which are no operations yet (the ties
-#: ``cli``/``sweeps`` and ``normal``/``lennard_jones`` are gone).
-KNOWN_TIES = {("linecontact.cli", "linecontact.web")}
-
-
 def test_no_two_way_tie_between_top_level_folders():
-    new = {pair: how for pair, how in _ties().items() if pair not in KNOWN_TIES}
-    assert not new, f"top-level folders that import each other (one import each way): {new}"
-
-
-def test_the_known_ties_are_still_ties():
-    gone = sorted(KNOWN_TIES - set(_ties()))
-    assert not gone, f"take these off KNOWN_TIES in tests/test_layout.py: {gone}"
+    ties = _ties()
+    assert not ties, f"top-level folders that import each other (one import each way): {ties}"
 
 
 def test_the_tie_check_sees_a_tie():

@@ -186,9 +186,9 @@ def test_a_result_over_its_bytes_is_refused_not_shipped(app_client):
     message = r.json()["error"]["message"]
     assert "20,000 bytes" in message and "fewer points" in message and "sweep" in message
     assert c.get(f"/api/v1/pulloff?{WIRE}").status_code == 200  # a small one still goes
-    argv = ["--R-over-h", "100", "--sigma0-over-E", "0.01", "--F-over-Eh", "1", "2"]
-    assert compute("normal", argv).status == 200
-    assert compute("normal", argv, max_bytes=100).status == 413
+    values = {"R_over_h": 100.0, "sigma0_over_E": 0.01, "F_over_Eh": [1.0, 2.0]}
+    assert compute("normal", values).status == 200
+    assert compute("normal", values, max_bytes=100).status == 413
 
 
 # ------------------------------------------------------------------------------------------

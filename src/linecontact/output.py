@@ -75,6 +75,8 @@ class Table:
     show : tuple of str
         The columns of the ``table`` format (all when empty). A ``reason`` column is shown
         as notes under the table, one per point that has one.
+    left : tuple of str
+        Text columns aligned on the left in the ``table`` format (the others on the right).
     """
 
     columns: dict[str, NDArray[Any]]
@@ -84,6 +86,7 @@ class Table:
     title: str = ""
     scales: dict[str, NDArray[Any]] = field(default_factory=dict)
     show: tuple[str, ...] = ()
+    left: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         sizes = {k: np.shape(v) for k, v in self.columns.items()}
@@ -386,6 +389,12 @@ def _comment_lines(items: list[str]) -> list[str]:
     return lines
 
 
+def _left(cells: list[str]) -> list[str]:
+    """``cells`` padded on the right to one width (so that they stand aligned on the left)."""
+    width = max((len(s) for s in cells), default=0)
+    return [s.ljust(width) for s in cells]
+
+
 def _format_table(table: Table) -> str:
     lines = []
     units = table.provenance()["units"]
@@ -403,6 +412,7 @@ def _format_table(table: Table) -> str:
     keys = [k for k in (table.show or tuple(table.columns)) if k != "reason"]
     if keys:
         cols = [_table_column(table.columns[k], table.scales.get(k)) for k in keys]
+        cols = [_left(c) if k in table.left else c for k, c in zip(keys, cols, strict=True)]
         heads = [k if units.get(k) in (None, "1") else f"{k} [{units[k]}]" for k in keys]
         widths = [
             max(len(h), *(len(s) for s in c)) if c else len(h)

@@ -55,7 +55,7 @@ import pathlib
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import ClassVar
+from typing import Any, ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -77,6 +77,7 @@ from ..results import Result
 from ._runs import _check_workers, _clear, _entry, _read_row, _Row, _row_key, _run, _store
 
 __all__ = [
+    "COARSE",
     "MAUGIS_RANGE",
     "MD_R_OVER_H",
     "MODELS",
@@ -111,6 +112,12 @@ N_Y = 81
 #: The Maugis parameters (of the matched Dugdale step) where the default map starts and ends;
 #: it ends where the Lennard-Jones solver's domain does if that is sooner (:func:`default_mu`).
 MAUGIS_RANGE = (0.01, 100.0)
+
+#: The coarse grid of ``linecontact figures`` and ``linecontact map --quick``: ``n_mu``
+#: values of ``mu`` from ``mu_min`` to ``mu_max`` (or the end of the domain, if lower: a
+#: curve beyond ``mu = 1`` takes minutes), ``n_y`` loads above pull-off from 0.01 to
+#: ``y_max`` pull-offs.
+COARSE: dict[str, Any] = {"n_mu": 4, "mu_min": 0.01, "mu_max": 1.0, "n_y": 41, "y_max": 10.0}
 
 
 def _mu_of_maugis(lam: float) -> float:

@@ -91,7 +91,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "the adhesion map of line contact: where Hertz, rigid, JKR, Maugis-Dugdale hold",
     ),
     "materials": (
-        "materials",
+        "_build",
         "the material presets (E, nu, range, source) of --cylinder-material",
     ),
     "sweep": (

@@ -26,7 +26,7 @@ from ._options import (
     write_failure,
 )
 
-__all__ = ["register", "run"]
+__all__ = ["add", "inputs_of", "register", "run"]
 
 _TYPES = {"number": float, "integer": int, "text": None}
 _NARGS = {"one": None, "several": "+", "triple": 3}
@@ -34,16 +34,21 @@ _NARGS = {"one": None, "several": "+", "triple": 3}
 
 def register(sub: Any, name: str) -> None:
     """Add the subcommand of the operation ``name`` to the subparsers ``sub``."""
-    _add(sub, _get(name), run)
+    add(sub, _get(name), run)
 
 
-def _add(sub: Any, op: Operation, func: Callable[[argparse.Namespace], int]) -> None:
+def add(sub: Any, op: Operation, func: Callable[[argparse.Namespace], int]) -> None:
+    """Add the subcommand of ``op`` to the subparsers ``sub``, run by ``func``."""
     p = add_command(sub, op.name, op.summary, op.description, op.examples)
     sections: dict[str, Any] = {}
     for q in op.parameters:
         if q.group and q.group not in sections:
             sections[q.group] = p.add_argument_group(q.group)
         g = sections[q.group] if q.group else p
+        if q.positional:
+            p.usage = f"%(prog)s [options] [{q.metavar} ...]"
+            g.add_argument(q.name, nargs="*", metavar=q.metavar, help=q.help)
+            continue
         kw: dict[str, Any] = {"dest": q.name, "help": q.help}
         if q.kind == "switch":
             kw.update(action="store_true", default=q.default)
@@ -58,7 +63,9 @@ def _add(sub: Any, op: Operation, func: Callable[[argparse.Namespace], int]) -> 
             deprecated_alias(p, old, q.option, g)
     for e in op.entries:
         show_together(p, *(op.parameter(n).option for n in e.names), help=e.help)
-    add_output_options(p)
+    add_output_options(p, image_alias=op.image_formats)
+    if op.format_help:
+        p._option_string_actions["--format"].help = op.format_help
     p.set_defaults(func=func)
 
 
@@ -93,15 +100,23 @@ def _draw(op: Operation, inputs: Inputs) -> None:
         raise write_failure(f"--plot {path!r}", exc) from None
 
 
-def run(args: argparse.Namespace) -> int:
-    """Compute the operation ``args.command`` with the parsed values; write its records."""
-    op = _get(args.command)
+def inputs_of(args: argparse.Namespace, op: Operation) -> Inputs:
+    """The typed values of the parsed ``args`` of ``op``'s subcommand.
+
+    The library's names of parameters are said as their flags in its messages (as the
+    computation names them, while it runs: a warning is said when it is raised).
+    """
     words = args.argv if args.argv is not None else sys.argv[1:]
     values = {q.name: getattr(args, q.name, q.default) for q in op.parameters}
     inputs = Inputs(op, values, words=words)
-    # the library's names of parameters, as their flags, for its messages (as the
-    # computation names them, while it runs: a warning is said when it is raised)
     args._api_flags = _Flags(op, inputs.said_as)
+    return inputs
+
+
+def run(args: argparse.Namespace) -> int:
+    """Compute the operation ``args.command`` with the parsed values; write its records."""
+    op = _get(args.command)
+    inputs = inputs_of(args, op)
     table = op.run(inputs)
     _draw(op, inputs)  # before the records are written, as a failed figure is an error
     emit(args, table, checked=True)

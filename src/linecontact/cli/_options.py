@@ -256,10 +256,7 @@ def add_output_options(p: argparse.ArgumentParser, image_alias: bool = False) ->
 
 
 def emit(args: argparse.Namespace, table: Table, checked: bool = False) -> None:
-    """Write ``table`` as asked (stdout, ``-o FILE``, or the web workers' ``args._capture``).
-
-    The HTTP API's workers capture the tables of ``map`` and ``materials``, which they still
-    run by their command line.
+    """Write ``table`` as asked (stdout or ``-o FILE``).
 
     ``checked``: its SI widths were checked by the operation that computed it.
     """
@@ -269,9 +266,7 @@ def emit(args: argparse.Namespace, table: Table, checked: bool = False) -> None:
         check_widths(table)
     ext = "" if args.output is None else args.output.rsplit(".", 1)[-1].lower()
     fmt = args.format or (ext if ext in FORMATS and ext != "table" else "table")
-    if getattr(args, "_capture", None) is not None:  # the web's workers: kept, not written
-        args._capture.append(table)
-    elif args.output is None:
+    if args.output is None:
         try:
             write(table, fmt, indent=args.indent)
         except BrokenPipeError:

@@ -1,8 +1,8 @@
 """The ``map`` subcommand: the adhesion map of line contact, drawn, with its data file.
 
-A thin shell over :func:`linecontact.adhesion_map.adhesion_map` and
-:mod:`linecontact.figures.adhesion_map`. It writes ``adhesion_map.<format>`` (each format)
-and ``adhesion_map.csv`` (one row per cell, the provenance block in its header) into
+Its parser and its numbers are the operation's (:mod:`linecontact.operations.adhesion_map`);
+this shell has the files: it writes ``adhesion_map.<format>`` (each format) and
+``adhesion_map.csv`` (one row per cell, the provenance block in its header) into
 ``--outdir``; it prints the files and a summary per ``mu``, or with ``--json`` (``--format
 json|jsonl|csv``, as the other commands) the provenance block and the cells; ``-o FILE``
 writes that output to FILE. The figure's formats are ``--image-format``. The curves are
@@ -14,219 +14,26 @@ same command, rerun after a stop, goes on.
 from __future__ import annotations
 
 import argparse
-import math
 import pathlib
 import sys
 from contextlib import suppress
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
-import numpy as np
-
-from .._progress import _isatty
-from ..output import FORMATS, Table, table_from_result, write
-from ._options import (
-    add_command,
-    add_output_options,
-    command_line,
-    emit,
-    show_together,
-    write_failure,
-)
-
-if TYPE_CHECKING:  # linecontact.adhesion_map imports SciPy's linalg: imported where used
-    from ..adhesion_map import AdhesionMap
+from ..operations import get
+from ..operations.adhesion_map import cells, grid
+from ..output import FORMATS, write
+from ._build import add, inputs_of
+from ._options import emit, write_failure
 
 __all__ = ["register"]
-
-_DESCRIPTION = (
-    "The adhesion map of line contact: over the Maugis parameter and the load above "
-    "pull-off, where Hertz, the rigid cylinder, JKR and Maugis-Dugdale give the half-width "
-    "of the full Lennard-Jones law within --tol. A stopped run keeps its finished curves: "
-    "the same command goes on (docs/cli.md)."
-)
 
 #: The directory in ``--outdir`` where the finished curves are kept until the map is done.
 PARTIAL = "adhesion_map.partial"
 
 
-def _columns() -> dict[str, str]:
-    """The CSV columns: the result's field -> the column's name (the name states the unit)."""
-    from ..adhesion_map import MODELS
-
-    return {
-        "mu": "mu",
-        "maugis_parameter": "maugis_parameter",
-        "y": "load_above_pulloff_over_abs_pulloff",
-        "F": "F_over_w_sqrt_R_over_z0",
-        "F_pulloff": "F_pulloff_over_w_sqrt_R_over_z0",
-        "y_onset": "onset_load_above_pulloff_over_abs_pulloff",
-        "repulsive": "lj_repulsive",
-        "half_width_lj": "half_width_lj_over_sqrt_R_z0",
-        **{f"half_width_{m}": f"half_width_{m}_over_sqrt_R_z0" for m in MODELS},
-        **{f"error_{m}": f"relative_error_{m}" for m in MODELS},
-        **{f"agrees_{m}": f"agrees_{m}" for m in MODELS},
-        "lj_error_estimate": "lj_error_estimate_over_w_sqrt_R_over_z0",
-        "interpolation_error": "lj_interpolation_error_relative",
-        "n_states": "lj_states",
-    }
-
-
 def register(sub: Any) -> None:
     """Add the ``map`` subcommand to the subparsers ``sub``."""
-    from ..adhesion_map import MAUGIS_RANGE, MU_MAX, MU_MIN, Y_RANGE
-
-    p = add_command(
-        sub,
-        "map",
-        "the adhesion map of line contact: where Hertz, rigid, JKR, Maugis-Dugdale hold",
-        _DESCRIPTION,
-        [
-            "linecontact map --quick",
-            "linecontact map --outdir maps --image-format png,pdf --tol 0.02",
-        ],
-    )
-    p.add_argument(
-        "--outdir",
-        default="figures",
-        metavar="DIR",
-        help="directory to write the figure and adhesion_map.csv into, created if missing; "
-        "files of the same names are replaced (default: %(default)s)",
-    )
-    p.add_argument(
-        "--image-format",
-        default="png",
-        metavar="LIST",
-        help="comma-separated file formats of the figure, any of png, svg, pdf; PNG at 150 "
-        "dpi (default: %(default)s)",
-    )
-    p.add_argument(
-        "--size",
-        default="9.6x5.4",
-        metavar="WxH",
-        help="width x height of the figure in inches, from 9.5x5.2 to 30x20 (default: %(default)s)",
-    )
-    p.add_argument(
-        "--tol",
-        type=float,
-        default=0.05,
-        metavar="TOL",
-        help="a model holds where the relative error of its half-width is at most TOL, in "
-        "(0, 1) (default: %(default)s)",
-    )
-    p.add_argument(
-        "--mu-min",
-        type=float,
-        metavar="MU",
-        help=f"smallest mu = w sqrt(R/z0)/(E z0), > 0 (default: {MU_MIN:.2g}, the Maugis "
-        f"parameter {MAUGIS_RANGE[0]:g}; --quick: 0.01)",
-    )
-    p.add_argument(
-        "--mu-max",
-        type=float,
-        metavar="MU",
-        help=f"largest mu, in the Lennard-Jones solver's domain (default: {MU_MAX:.3g}, the "
-        f"Maugis parameter {MAUGIS_RANGE[1]:g}, or the domain's end; --quick: 1)",
-    )
-    p.add_argument(
-        "--n-mu",
-        type=int,
-        metavar="N",
-        help="values of mu, geometric, 2 to 64 (default: four per decade of the Maugis "
-        "parameter and one, 10 to 17; --quick: 4)",
-    )
-    p.add_argument(
-        "--y-max",
-        type=float,
-        metavar="Y",
-        help=f"largest load above pull-off, in pull-offs, > 0.01 (default: {Y_RANGE[1]:g}; "
-        "--quick: 10)",
-    )
-    p.add_argument(
-        "--n-y",
-        type=int,
-        metavar="N",
-        help="loads, geometric from 0.01 pull-offs above pull-off, 2 to 1000 (default: 81; "
-        "--quick: 41)",
-    )
-    p.add_argument(
-        "--quick",
-        action="store_true",
-        help="a coarse grid: 4 values of mu from 0.01 to 1 (or --mu-min, --mu-max), 41 loads "
-        "from 0.01 to 10 pull-offs (the map of `linecontact figures`)",
-    )
-    p.add_argument(
-        "--workers",
-        type=int,
-        metavar="N",
-        help="processes computing the curves, >= 1 (1: none; default: the cores)",
-    )
-    p.add_argument(
-        "--progress",
-        action="store_true",
-        help="a progress bar on stderr even where it is not a terminal",
-    )
-    show_together(
-        p,
-        "--workers",
-        "--progress",
-        help="processes computing the curves, >= 1 (default: the cores); a progress bar "
-        "on stderr also where it is not a terminal (there it is by default)",
-    )
-    add_output_options(p, image_alias=True)
-    p._option_string_actions["--format"].help = (
-        "the data: table (the summary per mu), json, jsonl, csv (the cells) (default: -o's "
-        "extension, else table)"
-    )
-    p.set_defaults(func=_cmd_map)
-
-
-def _grid(args: argparse.Namespace) -> tuple[np.ndarray, np.ndarray]:
-    """The values of mu and of y the flags ask for (ValueError naming the flag)."""
-    from ..adhesion_map import MU_MAX, MU_MIN, N_Y, Y_RANGE, default_mu, default_y, domain_mu_max
-    from ..figures.adhesion_map import COARSE
-
-    hi = domain_mu_max()
-    if not (0.0 < args.tol < 1.0):  # also refuses nan
-        raise ValueError(f"--tol must be a number in (0, 1), got {args.tol!r}")
-    if args.workers is not None and args.workers < 1:
-        raise ValueError(f"--workers must be an integer >= 1, got {args.workers!r}")
-    lo = MU_MIN if args.mu_min is None else args.mu_min
-    top = min(MU_MAX, hi) if args.mu_max is None else args.mu_max
-    if args.quick and args.mu_min is None:
-        lo = COARSE["mu_min"]
-    if args.quick and args.mu_max is None:
-        top = min(COARSE["mu_max"], hi)
-    for flag, v in (("--mu-min", lo), ("--mu-max", top)):
-        if not (math.isfinite(v) and 0.0 < v <= hi):
-            raise ValueError(
-                f"{flag} must be a finite number in (0, {hi:g}] (the domain of the "
-                f"Lennard-Jones solver), got {v!r}"
-            )
-    if not lo < top:
-        raise ValueError(f"--mu-min must be below --mu-max, got {lo!r} >= {top!r}")
-    for flag, v in (("--n-mu", args.n_mu), ("--n-y", args.n_y)):
-        if args.quick and v is not None:
-            raise ValueError(f"give either --quick or {flag}, not both")
-    n = args.n_mu
-    if n is not None and not 2 <= n <= 64:
-        raise ValueError(f"--n-mu must be an integer in [2, 64], got {n!r}")
-    if args.n_y is not None and not 2 <= args.n_y <= 1000:
-        raise ValueError(f"--n-y must be an integer in [2, 1000], got {args.n_y!r}")
-    y_max = args.y_max
-    if y_max is not None and not (math.isfinite(y_max) and Y_RANGE[0] < y_max <= 1e3):
-        raise ValueError(
-            f"--y-max must be a finite number in ({Y_RANGE[0]:g}, 1000] (pull-offs above "
-            f"pull-off), got {y_max!r}"
-        )
-    if args.quick:
-        return (
-            default_mu(COARSE["n_mu"], lo, top),  # the flags' ends, the coarse count
-            default_y(COARSE["n_y"], COARSE["y_max"] if y_max is None else y_max),
-        )
-    return (
-        default_mu(n, lo, top),
-        default_y(N_Y if args.n_y is None else args.n_y, Y_RANGE[1] if y_max is None else y_max),
-    )
+    add(sub, get("map"), _cmd_map)
 
 
 def _clear_partial(partial: pathlib.Path) -> None:
@@ -240,65 +47,14 @@ def _clear_partial(partial: pathlib.Path) -> None:
         partial.rmdir()
 
 
-def _table(m: AdhesionMap, args: argparse.Namespace, files: list[str]) -> Table:
-    t = table_from_result(
-        m,
-        parameters={"files": files},
-        command=command_line(args),
-        title="the adhesion map of line contact (units of the Lennard-Jones law)",
-    )
-    names = _columns()
-    cols = {names.get(k, k): v for k, v in t.columns.items()}
-    params = {names.get(k, k): v for k, v in t.parameters.items()}
-    return Table(cols, params, {}, t.command, t.title)
-
-
-def _ranges(y: np.ndarray, ok: np.ndarray) -> str:
-    """The runs of ``ok`` along ``y`` as ``lo-hi`` ranges (``-`` for none)."""
-    runs = []
-    i = 0
-    while i < ok.size:
-        if ok[i]:
-            j = i
-            while j + 1 < ok.size and ok[j + 1]:
-                j += 1
-            runs.append(f"{y[i]:.3g}-{y[j]:.3g}" if j > i else f"{y[i]:.3g}")
-            i = j + 1
-        else:
-            i += 1
-    return ", ".join(runs) if runs else "-"
-
-
-def _summary(m: AdhesionMap) -> Table:
-    """One row per mu: the pull-off, the onset of repulsion, each model's range of y."""
-    from ..adhesion_map import MODELS
-
-    mu = np.asarray(m.mu).ravel()
-    y = np.asarray(m.y)
-    cols: dict[str, np.ndarray] = {
-        "mu": mu,
-        "maugis_parameter": np.asarray(m.maugis_parameter).ravel(),
-        "F_pulloff": np.asarray(m.F_pulloff).ravel(),
-        "y_onset": np.asarray(m.y_onset).ravel(),
-    }
-    for name in MODELS:
-        ok = m.agrees(name)
-        cols[f"{name}_holds_at_y"] = np.array([_ranges(y, row) for row in ok], dtype=object)
-    return Table(
-        cols,
-        {"tol": m.tol},
-        title=f"the adhesion map: loads above pull-off over |F_pulloff| where each model is "
-        f"within {100 * m.tol:g} % of the full law",
-    )
-
-
 def _cmd_map(args: argparse.Namespace) -> int:
     from .paper import _formats_arg, _size_arg
 
+    op = get("map")
     formats = _formats_arg(args.image_format)
     size = _size_arg(args.size)
-    mu, y = _grid(args)
-    from ..adhesion_map import adhesion_map
+    inputs = inputs_of(args, op)
+    grid(inputs)  # checked before the directory is made
     from ..figures._style import _mpl
     from ..figures.adhesion_map import draw
 
@@ -310,11 +66,9 @@ def _cmd_map(args: argparse.Namespace) -> int:
         raise write_failure(f"the map to --outdir {args.outdir!r}", exc) from None
 
     partial = out / PARTIAL
-    bar = bool(args.progress) or _isatty()  # the bar of the curves done, resumed ones too
+    inputs.resume_dir = partial
     try:
-        m = adhesion_map(
-            mu, y, tol=args.tol, progress=bar, workers=args.workers, resume_dir=partial
-        )
+        op.run(inputs)
     except BaseException:  # the bar is closed: a line of its own
         kept = sorted(partial.glob("*.npz")) if partial.is_dir() else []
         if kept:
@@ -323,11 +77,13 @@ def _cmd_map(args: argparse.Namespace) -> int:
                 file=sys.stderr,
             )
         raise
+    m = inputs.result
     try:
         paths = draw(m, out, formats, size)
         data = out / "adhesion_map.csv"
         files = [str(p) for p in (*paths, data)]
-        write(_table(m, args, files), "csv", data)
+        table = cells(m, inputs.command_line(), files)
+        write(table, "csv", data)
         _clear_partial(partial)
     except OSError as exc:
         raise write_failure(f"the map to --outdir {args.outdir!r}", exc) from None
@@ -336,10 +92,10 @@ def _cmd_map(args: argparse.Namespace) -> int:
         ext = args.output.rsplit(".", 1)[-1].lower()
         fmt = ext if ext in FORMATS and ext != "table" else "table"
     if fmt not in (None, "table") or args.output is not None:  # the data, as the others
-        emit(args, _summary(m) if fmt == "table" else _table(m, args, files))
+        emit(args, inputs.readable if fmt == "table" else table)
         return 0
     print(f"wrote {len(files)} files to {out}/:")
     for f in files:
         print(f"  {f}")
-    write(_summary(m), "table")
+    write(inputs.readable, "table")
     return 0

@@ -27,6 +27,7 @@ from typing import Any
 import numpy as np
 
 from ..adhesion_map import (
+    COARSE,
     MODELS,
     AdhesionMap,
     adhesion_map,
@@ -41,11 +42,6 @@ __all__ = ["COARSE", "STEM", "draw", "figure", "jobs"]
 
 #: File stem of the figure.
 STEM = "adhesion_map"
-#: The coarse grid of ``linecontact figures`` and ``linecontact map --quick``: ``n_mu``
-#: values of ``mu`` from ``mu_min`` to ``mu_max`` (or the end of the domain, if lower: a
-#: curve beyond ``mu = 1`` takes minutes), ``n_y`` loads above pull-off from 0.01 to
-#: ``y_max`` pull-offs.
-COARSE: dict[str, Any] = {"n_mu": 4, "mu_min": 0.01, "mu_max": 1.0, "n_y": 41, "y_max": 10.0}
 _MARGINS = Margins(left=0.85, right=2.75, top=0.75)
 _LABELS = {
     "hertz": "Hertz",

@@ -47,6 +47,8 @@ FAMILIES: dict[str, str] = {
     "fit-friction": "fit",
     "slide": "sliding",
     "push": "push",
+    "map": "adhesion_map",
+    "materials": "materials",
 }
 
 

@@ -62,6 +62,9 @@ class Parameter:
     shell_only : bool
         A command-line input that is no computation's (a file to plot into): never an
         HTTP field or a sweep's dimension.
+    positional : bool
+        Given on the command line without its flag (``materials ZnO SiO2``); a text
+        parameter of several values, none given by default.
     """
 
     name: str
@@ -76,6 +79,7 @@ class Parameter:
     aliases: tuple[str, ...] = ()
     group: str = ""
     shell_only: bool = False
+    positional: bool = False
 
     @property
     def option(self) -> str:
@@ -213,6 +217,13 @@ class Operation:
         The module of :mod:`linecontact.figures` whose function draws the computation's
         figure where a shell has a file for it: the computation leaves
         ``inputs.drawing = (function name, arguments, keywords)``, the file comes last.
+    format_help : str
+        The help of the command line's ``--format``, where the records differ by format
+        (the map's summary per ``mu`` in the readable table: the computation leaves it as
+        ``inputs.readable``).
+    image_formats : bool
+        The command line's ``--format`` also takes, deprecated, the image formats (of a
+        command that draws files, which took them before it took data formats).
     """
 
     name: str
@@ -226,6 +237,8 @@ class Operation:
     api_names: Mapping[str, str] = field(default_factory=dict)
     rows: tuple[str, ...] = ()
     figures: str = ""
+    format_help: str = ""
+    image_formats: bool = False
     _by_key: dict[str, Parameter] = field(default_factory=dict, repr=False, compare=False)
 
     def __post_init__(self) -> None:
@@ -298,6 +311,10 @@ class Inputs:
         except KeyError:
             raise AttributeError(name) from None
 
+    def get(self, name: str, default: Any = None) -> Any:
+        """The value ``name`` (a parameter, or a value a shell or the computation set)."""
+        return self.__dict__["_values"].get(name, default)
+
     def __setattr__(self, name: str, value: Any) -> None:
         # a value the computation fills in or derives (a default, the advancing work of
         # adhesion of a pair): this call's own, never the caller's
@@ -328,6 +345,9 @@ def command_words(
         if v is None or p.shell_only:
             continue
         flag = (flags or {}).get(p.name, p.option)
+        if p.positional:
+            out += [_text(x) for x in v]
+            continue
         if p.kind == "switch":
             if v:
                 out.append(flag)

@@ -36,8 +36,6 @@ from ._params import (
     COMMANDS,
     MAX_POINTS,
     ParameterError,
-    argv_of,
-    is_operation,
     parameters_of,
     points_of,
     sweep_hint,
@@ -405,9 +403,9 @@ def create_app(
             "application/x-www-form-urlencoded or multipart/form-data",
         )
 
-    def checked(command: str, argv: list[str] | dict[str, Any]) -> bool:
+    def checked(command: str, values: dict[str, Any]) -> bool:
         """Refuse a request over its points (413); True where it gets a slow worker."""
-        points, parameter = points_of(command, argv)
+        points, parameter = points_of(command, values)
         if points > max_points:
             raise _RequestError(
                 413,
@@ -417,7 +415,7 @@ def create_app(
                 + f", over the limit of {max_points:,} points of one request; "
                 + sweep_hint(command),
             )
-        return is_slow(command, argv) or points > SLOW_POINTS
+        return is_slow(command, values) or points > SLOW_POINTS
 
     async def upload(request: Request, tmpdir: str) -> tuple[list[str], str, str]:
         """``--data FILE`` for an uploaded CSV (a temporary file of the server's).
@@ -435,42 +433,36 @@ def create_app(
         given = Path(str(f.filename or "")).name or "the uploaded file"
         return ["--data", str(path)], str(path), given
 
-    async def parsed(request: Request) -> tuple[str, list[str] | dict[str, Any], bool]:
+    async def parsed(request: Request) -> tuple[str, dict[str, Any], bool]:
         command = request.path_params["command"]
         if command not in COMMANDS:
             raise _RequestError(404, "command", f"no such command {command!r}")
         try:
             items = await items_of(request)
-            argv: list[str] | dict[str, Any] = (
-                values_of(command, items) if is_operation(command) else argv_of(command, items)
-            )
+            values = values_of(command, items)
         except ParameterError as exc:
             raise _RequestError(422, exc.parameter, str(exc)) from None
-        return command, argv, checked(command, argv)
+        return command, values, checked(command, values)
 
     async def api(request: Request) -> Response:
         try:
-            command, argv, slow = await parsed(request)
+            command, values, slow = await parsed(request)
         except _RequestError as exc:
             return exc.response()
         if not request.headers.get("content-type", "").startswith("multipart/form-data"):
-            return _respond(await pool.run(command, argv, slow=slow))
+            return _respond(await pool.run(command, values, slow=slow))
         with tempfile.TemporaryDirectory(prefix="upload-", dir=pool.root) as tmpdir:
             data, path, given = await upload(request, tmpdir)
-            request_: list[str] | dict[str, Any]
-            if isinstance(argv, dict):  # the operation's typed values: the file's path
-                request_ = {**argv, "data": data[1]} if data else argv
-            else:
-                request_ = [*argv, *data]
+            request_ = {**values, "data": data[1]} if data else values  # the file's path
             out = await pool.run(command, request_, slow=slow)
             return _respond(_without_path(out, path, given))
 
     async def start_job(request: Request) -> Response:
         try:
-            command, argv, slow = await parsed(request)
+            command, values, slow = await parsed(request)
         except _RequestError as exc:
             return exc.response()
-        job = _Job(command, argv)
+        job = _Job(command, values)
         if not jobs.add(job):
             return JSONResponse(
                 _error(
@@ -485,7 +477,7 @@ def create_app(
         async def run() -> None:
             try:
                 out = await pool.run(
-                    command, argv, slow=slow, on_start=job.mark_started, on_progress=job.report
+                    command, values, slow=slow, on_start=job.mark_started, on_progress=job.report
                 )
             except asyncio.CancelledError:
                 job.cancel()  # cancelled by the server's end (a DELETE cancelled it first)

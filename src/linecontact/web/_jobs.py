@@ -50,9 +50,9 @@ class _Job:
     parsed again) and its elapsed time stops.
     """
 
-    def __init__(self, command: str, argv: list[str] | dict[str, Any]) -> None:
+    def __init__(self, command: str, values: dict[str, Any]) -> None:
         self.id = uuid.uuid4().hex
-        self.command, self.argv = command, argv
+        self.command, self.values = command, values
         self.created = time.monotonic()
         self.started: float | None = None
         self.ended: float | None = None

@@ -6,40 +6,32 @@ declares is refused (422), never ignored. Several values: repeat the parameter o
 the values by commas. A switch: ``true``/``1`` (or no value) gives it, ``false``/``0`` leaves
 it out. The values go to the operation typed (:func:`values_of`), never as a command line. No
 parameter names a file on the server: the output, figure and data inputs are not parameters
-(an uploaded CSV is the ``data`` field of a form, kept in a temporary file). The commands
-that are no operation yet (``map``, ``materials``) still run their command line
-(:func:`argv_of`).
+(an uploaded CSV is the ``data`` field of a form, kept in a temporary file).
 """
 
 from __future__ import annotations
 
-import argparse
-import functools
 import math
 import re
 from collections.abc import Iterable
 from typing import Any
 
 from .. import operations
-from ..cli import COMMANDS as _CLI_COMMANDS
+from ..errors import ParameterError
 
 __all__ = [
     "COMMANDS",
     "MAX_POINTS",
     "ParameterError",
-    "argv_of",
-    "is_operation",
     "parameters_of",
     "points_of",
     "sweep_hint",
     "values_of",
 ]
 
-#: The subcommands the API runs: those that compute and print records (not the figures, the
-#: citation, the sweeps or the server itself).
-COMMANDS = tuple(
-    c for c in _CLI_COMMANDS if c not in ("paper", "figures", "cite", "sweep", "serve")
-)
+#: The operations the API runs: every one of the catalogue (not the figures, the citation,
+#: the sweeps or the server itself, which are the command line's).
+COMMANDS = tuple(operations.FAMILIES)
 
 #: Flags that name files or shape the output: never request parameters.
 _NOT_PARAMETERS = frozenset(
@@ -77,37 +69,8 @@ _COUNTS: dict[str, tuple[str, dict[str, tuple[int, int]]]] = {
     "map": ("product", {"--n-mu": (17, 4), "--n-y": (81, 41)}),
 }
 
-
-#: A negative number (``-1``, ``-.5``, ``-1e-3``, ``-inf``): the only values that start with '-'.
+#: A negative number (``-1``, ``-.5``, ``-1e-3``, ``-inf``), never a unit typed after a number.
 _NUMBER = re.compile(r"^-(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?$|^-(inf|infinity|nan)$", re.IGNORECASE)
-
-
-class ParameterError(ValueError):
-    """A request parameter that is no parameter of the command, named as the user typed it."""
-
-    def __init__(self, parameter: str, message: str) -> None:
-        super().__init__(message)
-        self.parameter = parameter
-
-
-@functools.lru_cache(maxsize=32)
-def _actions(command: str) -> dict[str, argparse.Action]:
-    from ..cli import build_parser
-
-    sub = build_parser([command]).get_default("_subparsers").choices[command]
-    out: dict[str, argparse.Action] = {}
-    for a in sub._actions:
-        longs = [s for s in a.option_strings if s.startswith("--")]
-        if not longs or a.help == argparse.SUPPRESS or longs[0] in _NOT_PARAMETERS:
-            continue
-        for s in longs:
-            out[s] = a
-    return out
-
-
-def is_operation(command: str) -> bool:
-    """Whether ``command`` is an operation of the catalogue (else a command line is run)."""
-    return command in operations.FAMILIES
 
 
 _KINDS = {"number": "number", "integer": "integer", "text": "string", "switch": "boolean"}
@@ -115,47 +78,19 @@ _KINDS = {"number": "number", "integer": "integer", "text": "string", "switch": 
 
 def parameters_of(command: str) -> list[dict[str, Any]]:
     """The parameters of ``command``: name, flag, kind, several values, choices, unit, help."""
-    if is_operation(command):
-        return [
-            {
-                "name": p.key,
-                "flag": p.option,
-                "kind": _KINDS[p.kind],
-                "many": p.many != "one",
-                "choices": list(p.choices) if p.choices else None,
-                "unit": p.unit,
-                "help": p.help,
-            }
-            for p in operations.get(command).parameters
-            if not p.shell_only and p.option not in _NOT_PARAMETERS
-        ]
-    seen: set[int] = set()
-    out = []
-    for flag, a in _actions(command).items():
-        if id(a) in seen:
-            continue
-        seen.add(id(a))
-        kind = (
-            "boolean"
-            if a.nargs == 0
-            else "number"
-            if a.type is float
-            else "integer"
-            if a.type is int
-            else "string"
-        )
-        out.append(
-            {
-                "name": flag[2:].replace("-", "_"),
-                "flag": flag,
-                "kind": kind,
-                "many": a.nargs not in (None, 0),
-                "choices": list(a.choices) if a.choices else None,
-                "unit": "",
-                "help": a.help or "",
-            }
-        )
-    return out
+    return [
+        {
+            "name": p.key,
+            "flag": p.option,
+            "kind": _KINDS[p.kind],
+            "many": p.many != "one",
+            "choices": list(p.choices) if p.choices else None,
+            "unit": p.unit,
+            "help": p.help,
+        }
+        for p in operations.get(command).parameters
+        if not p.shell_only and p.option not in _NOT_PARAMETERS
+    ]
 
 
 def values_of(command: str, items: Iterable[tuple[str, str]]) -> dict[str, Any]:
@@ -199,51 +134,6 @@ def values_of(command: str, items: Iterable[tuple[str, str]]) -> dict[str, Any]:
     return out
 
 
-def argv_of(command: str, items: Iterable[tuple[str, str]]) -> list[str]:
-    """The command line of ``command`` for the request parameters ``items`` (name, value)."""
-    if command not in COMMANDS:
-        raise ParameterError(
-            "command", f"no such command {command!r}: one of {', '.join(COMMANDS)}"
-        )
-    actions = _actions(command)
-    values: dict[str, list[str]] = {}
-    typed: dict[str, list[str]] = {}  # the values as the request gave them
-    order: list[str] = []
-    for name, value in items:
-        flag = "--" + name.replace("_", "-")
-        if flag not in actions:
-            raise ParameterError(
-                name,
-                f"{name!r} is not a parameter of {command} (GET /api/v1/openapi.json lists them)",
-            )
-        if flag not in values:
-            order.append(flag)
-            values[flag] = []
-        values[flag] += [v for v in re.split(r"[,\s]+", value.strip()) if v] if value else []
-        typed.setdefault(flag, []).append(value)
-    argv: list[str] = []
-    for flag in order:
-        a, vals = actions[flag], values[flag]
-        name = flag[2:].replace("-", "_")
-        for v in vals:  # a value is never read as a flag (``load=1 -o /etc/x``)
-            if v.startswith("-") and not _NUMBER.match(v):
-                raise ParameterError(
-                    name, f"{name}: a value may start with '-' only as a number, got {v!r}"
-                )
-        if a.nargs == 0:
-            if not vals or vals[-1].lower() in ("1", "true", "yes", "on"):
-                argv.append(flag)
-            elif vals[-1].lower() not in ("0", "false", "no", "off"):
-                raise ParameterError(name, f"{name} is a switch: true or false, got {vals[-1]!r}")
-            continue
-        if not vals:
-            raise ParameterError(name, f"{name} needs a value")
-        if a.nargs is None and len(vals) > 1:
-            raise ParameterError(name, _one_value(name, typed[flag], a.type is float))
-        argv += [flag, *vals]
-    return argv
-
-
 def _one_value(name: str, typed: list[str], number: bool) -> str:
     """Why a parameter that takes one value got several: a decimal comma, a unit typed."""
     text = ", ".join(repr(v) for v in typed)
@@ -259,15 +149,21 @@ def _one_value(name: str, typed: list[str], number: bool) -> str:
     return said
 
 
-def points_of(command: str, request: list[str] | dict[str, Any]) -> tuple[int, str | None]:
-    """The number of points a request asks for (its typed values, or its command line)."""
-    if isinstance(request, dict):
-        return _points_of_values(command, request)
-    return _points_of_argv(command, request)
+def points_of(command: str, values: dict[str, Any]) -> tuple[int, str | None]:
+    """The number of points a request asks for, estimated before it is computed.
 
+    The values of each parameter that takes several, the ``NUM`` of a range
+    (``a_over_R_range=START,STOP,NUM``) and the counts of a curve (``num``,
+    ``num_noncontact``) or a map (``n_mu`` times ``n_y``), multiplied: an upper bound, as
+    the operation computes one point per value.
 
-def _points_of_values(command: str, values: dict[str, Any]) -> tuple[int, str | None]:
-    """:func:`points_of` for the typed values of an operation (:func:`values_of`)."""
+    Returns
+    -------
+    points : int
+        The estimate.
+    parameter : str or None
+        The request parameter that asks for the most (None: no parameter asks for several).
+    """
     op = operations.get(command)
     factors: list[tuple[int, str]] = []
     for name, v in values.items():
@@ -293,65 +189,6 @@ def _points_of_values(command: str, values: dict[str, Any]) -> tuple[int, str | 
     if not factors or max(factors)[0] <= 1:
         return total, None
     return total, max(factors)[1]
-
-
-def _points_of_argv(command: str, argv: list[str]) -> tuple[int, str | None]:
-    """The number of points ``command argv`` asks for, estimated before it is computed.
-
-    The values of each flag that takes several, the ``NUM`` of a range (``--a-over-R-range
-    START STOP NUM``) and the counts of a curve (``--num``, ``--num-noncontact``) or a map
-    (``--n-mu`` times ``--n-y``), multiplied: an upper bound, as the command computes one
-    point per value (a value the command refuses counts one; the command says why).
-
-    Parameters
-    ----------
-    command : str
-        The subcommand.
-    argv : list of str
-        Its flags and values, as :func:`argv_of` gives them.
-
-    Returns
-    -------
-    points : int
-        The estimate.
-    parameter : str or None
-        The request parameter that asks for the most (None: no parameter asks for several).
-    """
-    actions = _actions(command)
-    given: dict[str, list[str]] = {}
-    current: str | None = None
-    for word in argv:
-        if word.startswith("--") and word in actions:
-            current = "--" + _name_of(actions[word]).replace("_", "-")
-            given.setdefault(current, [])
-        elif current is not None:
-            given[current].append(word)
-    factors: list[tuple[int, str]] = []
-    for flag, vals in given.items():
-        a = actions[flag]
-        name = _name_of(a)
-        if a.nargs == "+":
-            factors.append((len(vals), name))
-        elif a.nargs == 3 and a.dest.endswith("_range") and len(vals) == 3:
-            factors.append((_count(vals[2]), name))
-    how, counts = _COUNTS.get(command, ("product", {}))
-    if counts:
-        quick = "--quick" in given
-        values = []
-        for flag, (default, quick_default) in counts.items():
-            got = given.get(flag)
-            values.append((_count(got[-1]) if got else quick_default if quick else default, flag))
-        n = sum(v for v, _ in values) if how == "sum" else math.prod(v for v, _ in values)
-        flag = max(values)[1] if how == "product" else next(iter(counts))
-        factors.append((n, _name_of(actions[flag])))
-    total = math.prod(n for n, _ in factors)
-    if not factors or max(factors)[0] <= 1:
-        return total, None
-    return total, max(factors)[1]
-
-
-def _name_of(action: argparse.Action) -> str:
-    return [s for s in action.option_strings if s.startswith("--")][0][2:].replace("-", "_")
 
 
 def _count(value: str) -> int:

@@ -66,11 +66,9 @@ def max_workers() -> int:
     return max(4, 2 * cpus())
 
 
-def is_slow(command: str, request: list[str] | dict[str, Any]) -> bool:
+def is_slow(command: str, values: dict[str, Any]) -> bool:
     """True for a computation that may take long (it gets a slow worker)."""
-    if isinstance(request, dict):
-        return command in _SLOW_COMMANDS or request.get("law") == "lennard-jones"
-    return command in _SLOW_COMMANDS or "lennard-jones" in request
+    return command in _SLOW_COMMANDS or values.get("law") == "lennard-jones"
 
 
 @dataclass
@@ -104,27 +102,23 @@ class _Progress(io.TextIOBase):
 
 def compute(
     command: str,
-    argv: list[str] | dict[str, Any],
+    values: dict[str, Any],
     report: Any = None,
     workdir: str | None = None,
     max_bytes: int | None = None,
 ) -> Outcome:
-    """The operation ``command`` on typed values, or ``linecontact COMMAND ARGV --json``.
-
-    In this process (a worker's job).
+    """The operation ``command`` on typed values, in this process (a worker's job).
 
     Parameters
     ----------
     command : str
-        The operation (or the subcommand that is no operation: ``map``, ``materials``).
-    argv : dict or list of str
-        The operation's typed values (:func:`linecontact.web._params.values_of`), or the
-        subcommand's flags and values.
+        The operation.
+    values : dict
+        Its typed values (:func:`linecontact.web._params.values_of`).
     report : callable, optional
         ``report(done, total)`` hears the progress of a map (its curves).
     workdir : str, optional
-        A directory for the files the command writes (the map's figure and CSV); a temporary
-        one of its own without it.
+        The computation's directory (the server names it in no answer).
     max_bytes : int, optional
         The largest JSON text returned: a larger result is refused (413) rather than returned.
 
@@ -133,28 +127,22 @@ def compute(
     Outcome
         The JSON text (status 200) or the error.
     """
-    if isinstance(argv, dict):
-        return _sized(_call(command, argv), max_bytes)
-    if command == "map":  # its figure and CSV into a directory, one process
-        with contextlib.ExitStack() as stack:
-            if workdir is None:
-                workdir = stack.enter_context(tempfile.TemporaryDirectory(prefix="linecontact-"))
-            words = [*argv, "--outdir", workdir, "--workers", "1"]
-            if report is None:
-                out = _compute(command, words)
-            else:
-                with contextlib.redirect_stderr(_Progress(report)):
-                    out = _compute(command, [*words, "--progress"])
-            return _sized(_unnamed(out, workdir), max_bytes)
-    return _sized(_compute(command, argv), max_bytes)
+    if command == "map":  # its curves in this process, its progress heard
+        values = {**values, "workers": 1, "progress": report is not None}
+        if report is not None:
+            with contextlib.redirect_stderr(_Progress(report)):
+                return _sized(_unnamed(_call(command, values), workdir), max_bytes)
+    return _sized(_unnamed(_call(command, values), workdir), max_bytes)
 
 
 #: What the map's answer says in place of the server's directory (its files are not served).
 SERVER_FILES = "server-files"
 
 
-def _unnamed(out: Outcome, workdir: str) -> Outcome:
+def _unnamed(out: Outcome, workdir: str | None) -> Outcome:
     """``out`` with the server's directory named :data:`SERVER_FILES` (never its path)."""
+    if workdir is None:
+        return out
     for text in (workdir, json.dumps(workdir)[1:-1]):
         out.body = out.body.replace(text, SERVER_FILES)
         out.message = out.message.replace(text, SERVER_FILES)
@@ -220,40 +208,6 @@ def _guarded(work: Any, say: Any) -> tuple[int, str, list[str]]:
     return status, message, said
 
 
-def _compute(command: str, argv: list[str]) -> Outcome:
-    from ..cli import build_parser
-    from ..cli._options import NoPointError, flag_message, record_flags
-    from ..output import render
-
-    start = time.perf_counter()
-    words = [command, *argv, "--json"]
-    err = io.StringIO()
-    try:
-        with contextlib.redirect_stderr(err):
-            parser = build_parser(words)
-            args = parser.parse_args(words)
-    except SystemExit:
-        text = err.getvalue().strip().splitlines()
-        message = (text[-1] if text else "bad arguments").split(": error: ", 1)[-1]
-        return Outcome(422, flag=_flag_of(message), message=message)
-    record_flags(parser.get_default("_subparsers").choices[command], args)
-    args.argv = words
-    args._capture = []
-
-    def work() -> None:
-        with contextlib.suppress(NoPointError):  # the records say why
-            args.func(args)
-
-    status, message, said = _guarded(work, lambda t: flag_message(t, args))
-    seconds = time.perf_counter() - start
-    if status != 200:
-        return Outcome(status, flag=_flag_of(message), message=message, warnings=said)
-    if not args._capture:
-        return Outcome(500, message=f"linecontact {command} gave no records", warnings=said)
-    body = render(args._capture[0], "json")
-    return Outcome(200, body=body, warnings=said, seconds=seconds)
-
-
 def _flag_of(message: str) -> str | None:
     m = re.search(r"(--[A-Za-z][\w-]*)", message)
     return m.group(1) if m else None
@@ -262,7 +216,7 @@ def _flag_of(message: str) -> str | None:
 def _serve(conn: Any) -> None:  # pragma: no cover - runs in the worker process
     os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # Ctrl-C stops the server, which stops us
-    from .. import cli  # noqa: F401 - imported once, before the first request
+    from .. import operations  # noqa: F401 - imported once, before the first request
     from ..output import render  # noqa: F401
 
     conn.send(("ready",))
@@ -274,9 +228,9 @@ def _serve(conn: Any) -> None:  # pragma: no cover - runs in the worker process
         if job is None:
             return
         try:
-            command, argv, workdir, max_bytes = job
+            command, values, workdir, max_bytes = job
             report = lambda n, total: conn.send(("progress", n, total))  # noqa: E731
-            out = compute(command, argv, report=report, workdir=workdir, max_bytes=max_bytes)
+            out = compute(command, values, report=report, workdir=workdir, max_bytes=max_bytes)
             if out.status == 200:  # the body as a file: no large message on the pipe
                 out.body_file = os.path.join(workdir, _RESULT)
                 with open(out.body_file, "w", encoding="utf-8") as f:
@@ -435,14 +389,14 @@ class Pool:
     async def run(
         self,
         command: str,
-        argv: list[str] | dict[str, Any],
+        values: dict[str, Any],
         time_limit: float | None = None,
         *,
         slow: bool | None = None,
         on_start: Callable[[], None] | None = None,
         on_progress: Callable[[int, int], None] | None = None,
     ) -> Outcome:
-        """``command argv`` on a worker, within the time limit (504 beyond it).
+        """The operation ``command`` on ``values`` on a worker, within the time limit (504 after).
 
         Cancelling the task that awaits this stops the computation: before it has a worker it
         never runs; after, its worker is ended and replaced. Its directory is removed however
@@ -451,9 +405,9 @@ class Pool:
         Parameters
         ----------
         command : str
-            The subcommand.
-        argv : list of str
-            Its flags and values.
+            The operation.
+        values : dict
+            Its typed values.
         time_limit : float, optional
             Seconds it may take (the pool's limit without it), from when a ready worker has it.
         slow : bool, optional
@@ -472,7 +426,7 @@ class Pool:
         if self._idle is None or self._slow is None or self._closing:
             raise RuntimeError("the pool is not running (Pool.start)")
         limit = self.time_limit if time_limit is None else time_limit
-        slow = is_slow(command, argv) if slow is None else slow
+        slow = is_slow(command, values) if slow is None else slow
         held_slow = False
         worker: _Worker | None = None
         workdir: str | None = None
@@ -492,7 +446,7 @@ class Pool:
             if on_start is not None:
                 on_start()
             try:
-                out = await self._exchange(worker, command, argv, workdir, limit, on_progress)
+                out = await self._exchange(worker, command, values, workdir, limit, on_progress)
             except _Died:
                 code = await asyncio.to_thread(_exitcode, worker)
                 return Outcome(
@@ -519,7 +473,7 @@ class Pool:
         self,
         worker: _Worker,
         command: str,
-        argv: list[str] | dict[str, Any],
+        values: dict[str, Any],
         workdir: str,
         limit: float,
         on_progress: Callable[[int, int], None] | None,
@@ -531,7 +485,7 @@ class Pool:
             except RuntimeError:
                 raise _Died from None
         try:
-            worker.conn.send((command, argv, workdir, self.max_result_bytes))
+            worker.conn.send((command, values, workdir, self.max_result_bytes))
         except (BrokenPipeError, OSError):
             raise _Died from None
         loop = asyncio.get_running_loop()
