@@ -14,6 +14,7 @@ from linecontact.cylinder import (
     CylinderSliding,
     hysteresis_adhesion,
 )
+from linecontact.laws import LennardJones
 from linecontact.materials import adhesion_from_work
 from linecontact.results import Result
 from linecontact.sliding import sliding_contact, sliding_contact_for_load
@@ -103,7 +104,7 @@ def test_load_curve_in_si():
 def test_lennard_jones_load_curve_refuses_a_load_beyond_the_solver():
     lj = Cylinder.from_modulus(50e-9, 100e9, work_of_adhesion=0.1, equilibrium_spacing=0.3e-9)
     with pytest.raises(ValueError, match="max_load=1000000.0 N/m is beyond"):
-        lj.lennard_jones_load_curve(max_load=1e6)
+        lj.under(LennardJones).load_curve(max_load=1e6)
 
 
 def test_tangential_load():

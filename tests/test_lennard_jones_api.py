@@ -28,6 +28,7 @@ from linecontact.cylinder import (
     CylinderPullOff,
 )
 from linecontact.domain import DOMAIN
+from linecontact.laws import LennardJones
 from linecontact.laws import lennard_jones as lj_law
 from linecontact.lennard_jones import lj_contact_for_load, lj_curve, lj_pull_off, lj_state
 from linecontact.lennard_jones_groups import (
@@ -204,7 +205,7 @@ def fibre():
 def test_cylinder_contact_for_a_load_in_si(fibre):
     cyl, (R, w, z0, mu) = fibre
     unit = w * math.sqrt(R / z0)  # N/m
-    c = cyl.lennard_jones_contact(load=0.2)
+    c = cyl.under(LennardJones).contact(load=0.2)
     st = lj_contact_for_load(0.2 / unit, mu)
     assert isinstance(c, CylinderLennardJonesContact)
     assert c.load == 0.2 and c.state == "contact" and c.stable is True
@@ -217,7 +218,7 @@ def test_cylinder_contact_for_a_load_in_si(fibre):
 def test_cylinder_pull_off_in_si(fibre):
     cyl, (R, w, z0, mu) = fibre
     unit = w * math.sqrt(R / z0)
-    p = cyl.lennard_jones_pull_off()
+    p = cyl.under(LennardJones).pull_off()
     ref = lj_pull_off(mu)
     assert isinstance(p, CylinderLennardJonesPullOff)
     assert p.pull_off_force == pytest.approx(ref.F_pulloff * unit, rel=1e-8)
@@ -225,7 +226,7 @@ def test_cylinder_pull_off_in_si(fibre):
     assert p.central_gap_at_pull_off == pytest.approx(ref.central_gap_at_pulloff * z0, rel=1e-8)
     # below it no contact: said in N/m
     with pytest.raises(NoEquilibriumError, match=r"load=-5\.0 N/m .*pull-off force -\d.* N/m"):
-        cyl.lennard_jones_contact(load=-5.0)
+        cyl.under(LennardJones).contact(load=-5.0)
 
 
 def test_cylinder_refuses_what_the_law_does_not_do(fibre):
@@ -235,10 +236,10 @@ def test_cylinder_refuses_what_the_law_does_not_do(fibre):
     with pytest.raises(TypeError, match="law"):
         cyl.pull_off(law="lennard-jones")
     with pytest.raises(ValueError, match=r"beyond the loads .* N/m"):
-        cyl.lennard_jones_contact(load=1e3)
+        cyl.under(LennardJones).contact(load=1e3)
     hertz = Cylinder.from_modulus(50e-9, 20e9, adhesion_range=0.3e-9)
     with pytest.raises(ValueError, match="the Lennard-Jones law needs adhesion"):
-        hertz.lennard_jones_contact(load=0.1)
+        hertz.under(LennardJones).contact(load=0.1)
 
 
 # --------------------------------------------------------------------------------------------

@@ -39,6 +39,7 @@ import linecontact as lc
 from linecontact import ConvergenceError, Cylinder
 from linecontact.cli import build_parser, main
 from linecontact.domain import DOMAIN
+from linecontact.laws import LennardJones
 
 #: The out-of-range values sent to every numeric flag and keyword.
 VALUES = ("-1", "0", "1e300", "-1e300", "nan", "inf", "1e-300")
@@ -473,7 +474,11 @@ def _api_cases() -> list[tuple[str, Callable[..., Any], dict[str, Any]]]:
     mats = dict(E1=70e9, nu1=0.17, E2=160e9, nu2=0.22)
     inv = dict(radius=50e-9, modulus=50e9, equilibrium_spacing=0.3e-9)
     return [
-        ("Cylinder", Cylinder, dict(radius=50e-9, modulus=100e9, **sigma, dundurs_beta=0.1)),
+        ("Cylinder", Cylinder,
+         dict(radius=50e-9, modulus=100e9, adhesion=lc.Dugdale(**sigma), dundurs_beta=0.1)),
+        ("Dugdale", lc.Dugdale, sigma),
+        ("Dugdale (w, z0)", lc.Dugdale, w),
+        ("LennardJones", lc.LennardJones, w),
         ("Cylinder.from_modulus", Cylinder.from_modulus, dict(radius=50e-9, modulus=1e11, **sigma)),
         ("Cylinder.from_modulus (w, z0)", Cylinder.from_modulus,
          dict(radius=50e-9, modulus=1e11, **w)),
@@ -483,8 +488,8 @@ def _api_cases() -> list[tuple[str, Callable[..., Any], dict[str, Any]]]:
         ("contact (load)", cyl.contact, dict(load=1.0)),
         ("contact (width)", cyl.contact, dict(contact_half_width=5e-9)),
         ("load_curve", cyl.load_curve, dict(max_half_width=1e-8, num=20, num_noncontact=5)),
-        ("lennard_jones_contact", cylw.lennard_jones_contact, dict(load=1.0)),
-        ("lennard_jones_load_curve", cylw.lennard_jones_load_curve, dict(max_load=1.0)),
+        ("lennard_jones_contact", cylw.under(LennardJones).contact, dict(load=1.0)),
+        ("lennard_jones_load_curve", cylw.under(LennardJones).load_curve, dict(max_load=1.0)),
         ("sliding (load)", cyl.sliding, dict(receding_range=1e-9, load=0.05, friction_stress=5e8)),
         ("sliding (width)", cyl.sliding, dict(receding_range=1e-9, contact_half_width=5e-9)),
         ("sliding (h1_over_h2)", cyl.sliding, dict(h1_over_h2=2.0, load=0.05)),
@@ -569,6 +574,8 @@ API_KEYWORDS = [(name, key) for name, _, kw in API_CASES for key, v in kw.items(
 def test_the_si_api_names_its_own_keywords(case, keyword):
     fn, kwargs = next((f, kw) for name, f, kw in API_CASES if name == case)
     keywords = set(inspect.signature(fn).parameters) | set(kwargs)
+    if "adhesion" in kwargs:  # a law value's parameters are the cylinder's too
+        keywords |= set(kwargs["adhesion"].given)
     allowed = keywords | CYLINDER_KEYS
     for text in VALUES:
         value = float(text)

@@ -19,6 +19,7 @@ from linecontact.cylinder import (
     CylinderLoadCurve,
     CylinderSliding,
 )
+from linecontact.laws import LennardJones
 from linecontact.lennard_jones._groups import LennardJonesPullOff
 from linecontact.lennard_jones_groups import LennardJonesContact, LennardJonesLoadCurve
 from linecontact.normal import LoadCurve, NormalContact, PullOff
@@ -127,14 +128,14 @@ def test_lennard_jones():
     pytest.importorskip("scipy")
     c = Cylinder.from_modulus(R, 50e9, work_of_adhesion=W, equilibrium_spacing=Z0)
     h, Eh = c.adhesion_range, c.modulus * c.adhesion_range
-    p = c.lennard_jones_pull_off()
+    p = c.under(LennardJones).pull_off()
     q = p.nondimensional
     assert p.pull_off_force == float(q.F_pulloff_over_Eh) * Eh
     assert p.error_estimate == float(q.error_estimate_over_Eh) * Eh
     assert p.contact_half_width_at_pull_off == float(q.a_over_R_at_pulloff) * R
     assert p.central_gap_at_pull_off == float(q.central_gap_over_h_at_pulloff) * h
     assert p.jump_in_force == float(q.F_jump_in_over_Eh) * Eh or math.isnan(p.jump_in_force)
-    k = c.lennard_jones_contact(load=[0.5, 1.0])
+    k = c.under(LennardJones).contact(load=[0.5, 1.0])
     n = k.nondimensional
     np.testing.assert_array_equal(k.contact_half_width, np.multiply(n.a_over_R, R))
     np.testing.assert_array_equal(k.central_gap, np.multiply(n.central_gap_over_h, h))
@@ -142,7 +143,7 @@ def test_lennard_jones():
     np.testing.assert_array_equal(k.load, [0.5, 1.0])  # as given
     np.testing.assert_allclose(to_si(n, Scales.of(c))["load"], [0.5, 1.0], rtol=1e-12)
     assert isinstance(k, Result) and isinstance(p, Result)
-    u = c.lennard_jones_load_curve()
+    u = c.under(LennardJones).load_curve()
     m = u.nondimensional
     assert isinstance(u, CylinderLennardJonesLoadCurve) and isinstance(u, Result)
     np.testing.assert_array_equal(u.load, np.multiply(m.F_over_Eh, Eh))

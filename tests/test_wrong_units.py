@@ -22,6 +22,7 @@ import linecontact as lc
 from linecontact import inverse as inv
 from linecontact.cli import main
 from linecontact.errors import ModelValidityWarning, NoEquilibriumError, UnitsWarning
+from linecontact.laws import LennardJones
 
 #: The internal groups an SI message must not name.
 GROUPS = re.compile(r"R_over_h|sigma0_over_E|F_over_Eh")
@@ -50,7 +51,8 @@ def _cyl(v, **kw):
 
 def _direct(v):
     s0, h = lc.adhesion_from_work(v["work_of_adhesion"], v["equilibrium_spacing"])
-    return lc.Cylinder(v["radius"], v["modulus"], float(s0), float(h))
+    law = lc.Dugdale(cohesive_stress=float(s0), adhesion_range=float(h))
+    return lc.Cylinder(v["radius"], v["modulus"], law)
 
 
 F_GOOD = float(inv.pull_off_force(*GOOD.values()))
@@ -92,11 +94,11 @@ ENTRIES: dict[str, tuple[set[str], Callable]] = {
     "Cylinder.pull_off": (set(GOOD), lambda v: _cyl(v).pull_off()),
     "Cylinder.pull_off(lennard-jones)": (
         set(GOOD),
-        lambda v: _cyl(v).lennard_jones_pull_off(),
+        lambda v: _cyl(v).under(LennardJones).pull_off(),
     ),
     "Cylinder.contact(lennard-jones)": (
         set(GOOD),
-        lambda v: _cyl(v).lennard_jones_contact(load=0.5),
+        lambda v: _cyl(v).under(LennardJones).contact(load=0.5),
     ),
     "Cylinder.sliding_initiation": (
         set(GOOD),
@@ -279,7 +281,7 @@ def test_a_tangential_load_beyond_full_slip_is_said_in_newtons_per_metre():
 def test_the_lennard_jones_domain_is_said_for_the_wire_given():
     cyl = lc.Cylinder.from_modulus(1e-6, 2e7, work_of_adhesion=0.1, equilibrium_spacing=3e-10)
     with pytest.raises(ValueError) as exc:
-        cyl.lennard_jones_contact(load=0.1)
+        cyl.under(LennardJones).contact(load=0.1)
     message = str(exc.value)
     assert message.startswith(
         "under the Lennard-Jones law w R^(1/2) / (E z0^(3/2)) of this cylinder is 962.3 "
@@ -292,7 +294,7 @@ def test_the_lennard_jones_domain_is_said_for_the_wire_given():
     assert "a radius below 1.73e-07 m" in message and "a modulus above 4.81e+07 Pa" in message
     assert not GROUPS.search(message)
     # the pull-off itself is answered: the corrected JKR limit
-    p = cyl.lennard_jones_pull_off()
+    p = cyl.under(LennardJones).pull_off()
     assert p.method == "limit" and p.error_estimate > 0 and p.pull_off_force < 0
 
 

@@ -11,17 +11,19 @@ length over ``E h``, stresses over ``E``; compressive load positive):
   ``_coulomb`` counterparts) -- load histories with memory and the loss per cycle;
 - :func:`sliding_contact`, :func:`sliding_contact_for_load`, :func:`sliding_pull_off` --
   steady sliding with different trailing and leading adhesion (:mod:`linecontact.sliding`);
-- :mod:`linecontact.laws` -- a law is a module: ``laws.dugdale`` and ``laws.lennard_jones``
-  have the same ``pull_off``, ``contact_for_load`` and ``load_curve`` (the Lennard-Jones law
-  of Eq. 1 in the paper's groups);
+- :mod:`linecontact.laws` -- in the paper's groups a law is a module: ``laws.dugdale`` and
+  ``laws.lennard_jones`` have the same ``pull_off``, ``contact_for_load`` and ``load_curve``
+  (the Lennard-Jones law of Eq. 1); in SI units a value: :class:`Dugdale`,
+  :class:`LennardJones`, the ``adhesion`` of a :class:`Cylinder`;
 - :mod:`linecontact.closed_forms` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14);
 - :mod:`linecontact.sie` -- the Gauss--Chebyshev singular-integral core;
 - :func:`fit_pull_off`, :func:`work_of_adhesion_from_pull_off`,
   :func:`shear_strength_from_friction`, :func:`propagate` -- from measurements to properties
   with uncertainty (:mod:`linecontact.inverse`); :class:`Material` -- presets with sources;
-- :class:`Cylinder` -- the SI layer (materials, adhesion as (sigma0, h) or (w, z0)), one
-  method per problem (``contact``, ``pull_off``, ``sliding``, ``sliding_initiation``,
-  ``steady_rolling``, ``push``, ``tangential_history``, ``cyclic_loss``);
+- :class:`Cylinder` -- the SI layer (materials, adhesion a law value or (sigma0, h) or
+  (w, z0)), one method per problem (``contact``, ``pull_off``, ``load_curve``, ``sliding``,
+  ``sliding_initiation``, ``steady_rolling``, ``push``, ``tangential_history``,
+  ``cyclic_loss``), each solved under the cylinder's law or refused naming both;
 - :mod:`linecontact.output` -- results to JSON, JSON Lines, CSV or tables, with provenance;
   :func:`read` -- any of those files back as a ``pandas.DataFrame`` (provenance in ``.attrs``);
 - :func:`sweep`, :func:`open_sweep` -- parameter studies: a subcommand over every combination
@@ -46,6 +48,7 @@ with _imports_interruptible():
         work_of_adhesion_from_pull_off,
         work_of_adhesion_from_width,
     )
+    from .laws import Dugdale, LennardJones
     from .materials import (
         adhesion_from_work,
         compliance_constants,
@@ -90,6 +93,8 @@ __all__ = [
     "Material",
     "CouplingWarning",
     "Cylinder",
+    "Dugdale",
+    "LennardJones",
     "ModelValidityWarning",
     "NoEquilibriumError",
     "NormalContact",

@@ -52,6 +52,17 @@ MOVED: dict[str, Moved] = {
         "linecontact.Cylinder.sliding", "1.0.0", works=False
     ),
     "linecontact.reference": Moved("linecontact.closed_forms", "1.0.0", works=False),
+    # a law is a value of the body, not a prefix of its methods (issue 32): the methods of
+    # a Cylinder with adhesion=LennardJones(w, z0)
+    "linecontact.Cylinder.lennard_jones_contact": Moved(
+        "linecontact.Cylinder.contact", "1.0.0", works=False
+    ),
+    "linecontact.Cylinder.lennard_jones_pull_off": Moved(
+        "linecontact.Cylinder.pull_off", "1.0.0", works=False
+    ),
+    "linecontact.Cylinder.lennard_jones_load_curve": Moved(
+        "linecontact.Cylinder.load_curve", "1.0.0", works=False
+    ),
 }
 
 
@@ -64,6 +75,13 @@ class MovedNameError(ImportError):
 
 
 def _message(old: str, moved: Moved) -> str:
+    if old.startswith("linecontact.Cylinder.lennard_jones_"):
+        method = moved.new.rpartition(".")[2]
+        return (
+            f"{old} was deleted before 1.0: a law is the cylinder's value, use "
+            f"cyl.under(linecontact.LennardJones).{method}(...), or the {method} of a Cylinder "
+            f"built with adhesion=linecontact.LennardJones(w, z0): use {moved.new}"
+        )
     return f"{old} was deleted before 1.0: use {moved.new}"
 
 

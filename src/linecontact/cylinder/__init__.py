@@ -7,10 +7,12 @@ paper's groups, call the nondimensional solvers (:mod:`linecontact.normal`,
 [Pa], forces per unit length of cylinder [N/m], work of adhesion [J/m^2]. Materials and
 adhesion conventions: :mod:`linecontact.materials`.
 
-The package's modules: ``_cylinder.py`` (:class:`Cylinder`), ``_methods.py`` (the methods of
-the problems, which :class:`Cylinder` inherits), ``_problems.py`` (the tangential problems, the
-pushed fibre, the load histories), ``_sliding.py`` (steady sliding), ``_results.py`` (the SI result
-classes), ``_checks.py`` (the plausible ranges of the SI inputs and the checks of the widths).
+The package's modules: ``_cylinder.py`` (:class:`Cylinder`: its fields, factories, the
+normal problems under either law, the table of the problems written for each law),
+``_problems.py`` (the tangential problems, the pushed fibre, the load histories: functions
+that are the class's methods, ``self`` the cylinder), ``_sliding.py`` (steady sliding, the
+same way), ``_results.py`` (the SI result classes), ``_checks.py`` (the plausible ranges of the
+SI inputs and the checks of the widths).
 Import from ``linecontact.cylinder``: every name is here.
 """
 
@@ -37,13 +39,7 @@ from ._checks import (
     _which,
 )
 from ._cylinder import Cylinder, _si_load_curve
-from ._problems import (
-    _cylinder_tangential,
-    _full_slip,
-    _history_contact,
-    _history_solve,
-    _scalar,
-)
+from ._problems import _cylinder_tangential, _full_slip, _history_contact, _history_solve, _scalar
 from ._results import (
     CylinderContact,
     CylinderCyclicLoss,

@@ -5,11 +5,12 @@ from __future__ import annotations
 import math
 import warnings
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, Any, Literal
+from typing import TYPE_CHECKING, Any, ClassVar, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .. import _moved
 from .. import closed_forms as _cf
 from .. import domain as _domain
 from .. import normal as _normal
@@ -21,14 +22,15 @@ from .._validation import (
     scalar,
 )
 from ..errors import CouplingWarning, NoEquilibriumError, UnitsWarning
+from ..laws._values import Dugdale, Law, LennardJones
 from ..materials import (
     BETA_WARN,
-    _adhesion,
     _moduli,
     composite_modulus,
     dundurs_beta,
 )
 from ..units import Scales, to_si
+from . import _problems, _sliding
 from ._checks import (
     _CHECKED,
     _S_LJ,
@@ -39,7 +41,6 @@ from ._checks import (
     _warn_small_strain,
     _warn_widths,
 )
-from ._methods import _Problems
 from ._results import (
     CylinderContact,
     CylinderLennardJonesContact,
@@ -54,13 +55,17 @@ if TYPE_CHECKING:  # imported where used: the Lennard-Jones solver needs scipy
 
 
 @dataclass(frozen=True)
-class Cylinder(_Problems):
-    r"""A cylinder of radius ``R`` on a substrate, with Maugis--Dugdale adhesion.
+class Cylinder:
+    r"""A cylinder of radius ``R`` on a substrate, with its adhesion law: a body.
 
-    Build it with :meth:`from_materials` or :meth:`from_modulus`. Each problem is a method:
-    :meth:`contact`, :meth:`pull_off`, :meth:`load_curve`, :meth:`sliding`,
-    :meth:`sliding_initiation`, :meth:`steady_rolling`, :meth:`push`,
-    :meth:`tangential_history` and :meth:`cyclic_loss`.
+    Build it with :meth:`from_materials`, :meth:`from_modulus` or :meth:`from_presets`; the
+    adhesion is a law value (:class:`~linecontact.laws.Dugdale`, the default, or
+    :class:`~linecontact.laws.LennardJones`), given as ``adhesion=`` or by its parameters
+    (a Dugdale law). Each problem is a method: :meth:`contact`, :meth:`pull_off`,
+    :meth:`load_curve` (both laws), :meth:`sliding`, :meth:`sliding_initiation`,
+    :meth:`steady_rolling`, :meth:`push`, :meth:`tangential_history` and
+    :meth:`cyclic_loss` (the Dugdale law); a problem not written for the law is refused,
+    naming both.
 
     Attributes
     ----------
@@ -68,33 +73,49 @@ class Cylinder(_Problems):
         ``R`` [m] (the equivalent radius for two cylinders).
     modulus : float
         Composite plane-strain modulus ``E`` [Pa].
-    cohesive_stress : float
-        ``sigma0`` [Pa] (0: no adhesion).
-    adhesion_range : float
-        ``h`` [m].
+    adhesion : Law
+        The adhesion law and its SI parameters.
     dundurs_beta : float
         Dundurs' :math:`\beta = -B/A` (0 when only the composite modulus was given).
+    cohesive_stress, adhesion_range : float
+        ``sigma0`` [Pa] (0: no adhesion) and ``h`` [m] of the law's Dugdale step.
 
     Examples
     --------
     >>> cyl = Cylinder.from_modulus(50e-9, 100e9, cohesive_stress=1e9, adhesion_range=0.5e-9)
     >>> round(cyl.R_over_h, 9), cyl.sigma0_over_E
     (100.0, 0.01)
+    >>> from linecontact.laws import LennardJones
+    >>> lj = Cylinder.from_modulus(50e-9, 100e9, adhesion=LennardJones(0.1, 0.3e-9))
+    >>> round(lj.pull_off().pull_off_force, 3)
+    -3.107
     """
 
     radius: float
     modulus: float
-    cohesive_stress: float
-    adhesion_range: float
+    adhesion: Law
     dundurs_beta: float = 0.0
 
+    @property
+    def cohesive_stress(self) -> float:
+        r""":math:`\sigma_0` [Pa] of the law's Dugdale step (0: no adhesion)."""
+        return self.adhesion.cohesive_stress
+
+    @property
+    def adhesion_range(self) -> float:
+        """``h`` [m] of the law's Dugdale step."""
+        return self.adhesion.adhesion_range
+
     def __post_init__(self) -> None:
+        if not isinstance(self.adhesion, Law):
+            raise ValueError(
+                f"adhesion must be a law (linecontact.laws.Dugdale or LennardJones), got "
+                f"{self.adhesion!r}"
+            )
         # the fields as Python floats, checked (also when the class is built directly)
         for name, limits in (
             ("radius", {}),
             ("modulus", {}),
-            ("cohesive_stress", {"low_inclusive": True}),
-            ("adhesion_range", {}),
             # |beta| < 3/4 for any pair of materials (a rigid body on nu = -1: 3/4)
             (
                 "dundurs_beta",
@@ -135,24 +156,33 @@ class Cylinder(_Problems):
         beta: float,
         adhesion: tuple[float | None, float | None, float | None, float | None],
         modulus_name: str = "modulus",
+        law: Law | None = None,
     ) -> Cylinder:
         """The cylinder of a factory, its SI inputs checked under the names the caller gave."""
         cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing = adhesion
-        s0, h = _adhesion(cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
-        given: dict[str, ArrayLike | None] = {"cohesive_stress": s0, "adhesion_range": h}
-        if work_of_adhesion is not None and equilibrium_spacing is not None:
-            given = {
-                "work_of_adhesion": float(work_of_adhesion),
-                "equilibrium_spacing": float(equilibrium_spacing),
-            }
-        _check_cylinder_si(R, E, given, modulus_name=modulus_name, stacklevel=5)
+        if law is None:
+            law = Dugdale(
+                work_of_adhesion,
+                equilibrium_spacing,
+                cohesive_stress=cohesive_stress,
+                adhesion_range=adhesion_range,
+            )
+        elif any(v is not None for v in adhesion):
+            raise ValueError(
+                "give adhesion either as a law (adhesion=Dugdale(...) or LennardJones(...)) "
+                "or by its parameters (cohesive_stress, adhesion_range or work_of_adhesion, "
+                "equilibrium_spacing), not both"
+            )
+        elif not isinstance(law, Law):
+            raise ValueError(
+                f"adhesion must be a law (linecontact.laws.Dugdale or LennardJones), got {law!r}"
+            )
+        _check_cylinder_si(R, E, dict(law.given), modulus_name=modulus_name, stacklevel=5)
         token = _CHECKED.set(True)
         try:
-            cyl = cls(R, E, s0, h, beta)
+            return cls(R, E, law, beta)
         finally:
             _CHECKED.reset(token)
-        object.__setattr__(cyl, "_given", given)  # for the messages of the Lennard-Jones law
-        return cyl
 
     @classmethod
     def from_modulus(
@@ -164,12 +194,17 @@ class Cylinder(_Problems):
         adhesion_range: float | None = None,
         work_of_adhesion: float | None = None,
         equilibrium_spacing: float | None = None,
+        adhesion: Law | None = None,
     ) -> Cylinder:
-        """From the composite modulus ``E`` [Pa]; adhesion as ``(sigma0, h)`` or ``(w, z0)``."""
+        """From the composite modulus ``E`` [Pa].
+
+        The adhesion as a law value (``adhesion=LennardJones(w, z0)``), or a Dugdale law by
+        its parameters ``(sigma0, h)`` or ``(w, z0)``.
+        """
         R = scalar("radius", radius)
         E = scalar("modulus", modulus)
-        adhesion = (cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
-        return cls._build(R, E, 0.0, adhesion)
+        given = (cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
+        return cls._build(R, E, 0.0, given, law=adhesion)
 
     @classmethod
     def from_materials(
@@ -184,8 +219,12 @@ class Cylinder(_Problems):
         adhesion_range: float | None = None,
         work_of_adhesion: float | None = None,
         equilibrium_spacing: float | None = None,
+        adhesion: Law | None = None,
     ) -> Cylinder:
-        """From the moduli [Pa] and Poisson ratios of cylinder (1) and substrate (2)."""
+        """From the moduli [Pa] and Poisson ratios of cylinder (1) and substrate (2).
+
+        The adhesion as in :meth:`from_modulus`.
+        """
         R = scalar("radius", radius)
         for name, v in zip(("E1", "nu1", "E2", "nu2"), _moduli(E1, nu1, E2, nu2), strict=True):
             if v.ndim != 0:
@@ -209,8 +248,8 @@ class Cylinder(_Problems):
                 CouplingWarning,
                 stacklevel=2,
             )
-        adhesion = (cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
-        return cls._build(R, E, beta, adhesion, "composite modulus")
+        given = (cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing)
+        return cls._build(R, E, beta, given, "composite modulus", law=adhesion)
 
     @classmethod
     def from_presets(
@@ -223,6 +262,7 @@ class Cylinder(_Problems):
         adhesion_range: float | None = None,
         work_of_adhesion: float | None = None,
         equilibrium_spacing: float | None = None,
+        adhesion: Law | None = None,
     ) -> Cylinder:
         """From material presets (:mod:`linecontact.presets`) of cylinder and substrate.
 
@@ -236,6 +276,8 @@ class Cylinder(_Problems):
             :class:`~linecontact.presets.Material`.
         cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing : float, optional
             Adhesion as ``(sigma0, h)`` or ``(w, z0)``, as in :meth:`from_materials`.
+        adhesion : Law, optional
+            The adhesion as a law value, instead.
 
         Returns
         -------
@@ -273,6 +315,7 @@ class Cylinder(_Problems):
                 adhesion_range=adhesion_range,
                 work_of_adhesion=work_of_adhesion,
                 equilibrium_spacing=equilibrium_spacing,
+                adhesion=adhesion,
             )
         for w in caught:  # said where from_presets was called, not in here
             warnings.warn(w.message, stacklevel=2)
@@ -314,7 +357,7 @@ class Cylinder(_Problems):
         hi = _domain.DOMAIN["lj_mu"][2]
         R, E = self.radius, self.modulus
         w, z0 = self.work_of_adhesion, _S_LJ * self.adhesion_range
-        given = getattr(self, "_given", {})
+        given = self.adhesion.given
         if self.cohesive_stress <= 0:
             raise ValueError(
                 "the Lennard-Jones law needs adhesion: give the cylinder a work of adhesion "
@@ -373,12 +416,30 @@ class Cylinder(_Problems):
         gives ``state == "no-equilibrium"`` and NaN values; for a half-width, ``on_failure``
         is that of :func:`~linecontact.normal_contact` (a collocation point that misses its
         tolerance raises :class:`~linecontact.errors.ConvergenceError`, or is flagged in
-        ``nondimensional.converged``). README, "Conventions". The Lennard-Jones law's
-        contact: :meth:`lennard_jones_contact`.
+        ``nondimensional.converged``). README, "Conventions".
+
+        Under the Lennard-Jones law: the stable contact carrying ``load``, solved
+        self-consistently (:func:`linecontact.laws.lennard_jones.contact_for_load`), with the
+        law's :math:`w` and :math:`z_0` (a load below the pull-off force as above); a given
+        half-width, ``method`` and ``branch`` are the Dugdale law's.
         """
         if (contact_half_width is None) == (load is None):
             raise ValueError("give exactly one of contact_half_width or load")
         policy = failure_policy(on_failure)
+        if isinstance(self.adhesion, LennardJones):
+            given = [
+                k
+                for k, v, default in (
+                    ("contact_half_width", contact_half_width, None),
+                    ("method", method, "closed-form"),
+                    ("branch", branch, "stable"),
+                )
+                if v is not default and v != default
+            ]
+            if given:
+                self._not_written(f"the contact with {', '.join(given)}")
+            self._check_lennard_jones()
+            return self._for_load_lj("load", load, policy)  # type: ignore[arg-type,return-value]
         if method not in ("closed-form", "collocation"):
             raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
         if branch not in ("stable", "unstable"):
@@ -492,11 +553,14 @@ class Cylinder(_Problems):
             **si, stable=r.stable, state=r.state, nondimensional=r, scales=Scales.of(self)
         )
 
-    def pull_off(self) -> CylinderPullOff:
-        """Pull-off force under load control [N/m] (the Maugis--Dugdale law).
+    def pull_off(self) -> CylinderPullOff | CylinderLennardJonesPullOff:
+        """Pull-off force under load control [N/m], under the cylinder's law.
 
-        The Lennard-Jones law's: :meth:`lennard_jones_pull_off`.
+        The Lennard-Jones law's (:func:`linecontact.laws.lennard_jones.pull_off`) is a
+        :class:`CylinderLennardJonesPullOff`, with the law's ``w`` and ``z0``.
         """
+        if isinstance(self.adhesion, LennardJones):
+            return self._pull_off_lj()
         p = _normal.pull_off(self.R_over_h, self.sigma0_over_E)
         si = to_si(p, Scales.of(self))
         _warn_widths(
@@ -508,34 +572,52 @@ class Cylinder(_Problems):
         )
         return CylinderPullOff(**si, mechanism=p.mechanism, nondimensional=p)
 
-    # the Lennard-Jones law (a law is a method here, as it is a module in linecontact.laws)
-    def lennard_jones_contact(
-        self, *, load: ArrayLike, on_failure: FailurePolicy = "raise"
-    ) -> CylinderLennardJonesContact:
-        r"""The contact carrying ``load`` [N/m] under the Lennard-Jones law of Eq. (1).
+    def under(self, law: type[Law]) -> Cylinder:
+        """The same cylinder, with the same adhesion (the same Dugdale step) under ``law``.
 
-        Solved self-consistently (:func:`linecontact.laws.lennard_jones.contact_for_load`),
-        the stable branch, with the cylinder's work of adhesion :math:`w = \sigma_0 h` and
-        :math:`z_0 = 16 h/(9 \sqrt 3)` (for a cylinder built from ``(w, z0)`` these are the ``w``
-        and ``z0`` given, as the Maugis conversion of :func:`~linecontact.adhesion_from_work`
-        is undone). A load below the pull-off force raises
-        :class:`~linecontact.errors.NoEquilibriumError`, or with ``on_failure="report"``
-        gives ``state == "no-equilibrium"`` and NaN values.
+        >>> from linecontact.laws import LennardJones
+        >>> cyl = Cylinder.from_modulus(
+        ...     50e-9, 100e9, work_of_adhesion=0.1, equilibrium_spacing=0.3e-9
+        ... )
+        >>> round(cyl.under(LennardJones).pull_off().pull_off_force, 3)
+        -3.107
         """
-        policy = failure_policy(on_failure)
-        self._check_lennard_jones()
-        return self._for_load_lj("load", load, policy)
+        token = _CHECKED.set(True)  # checked when it was built
+        try:
+            return type(self)(
+                self.radius, self.modulus, self.adhesion.same_adhesion(law), self.dundurs_beta
+            )
+        finally:
+            _CHECKED.reset(token)
 
-    def lennard_jones_pull_off(self) -> CylinderLennardJonesPullOff:
-        """Pull-off force [N/m] under the Lennard-Jones law of Eq. (1).
+    #: The problems written for each law (the others are refused, naming both: one place).
+    WRITTEN: ClassVar[dict[str, tuple[type[Law], ...]]] = {
+        "contact": (Dugdale, LennardJones),
+        "pull_off": (Dugdale, LennardJones),
+        "load_curve": (Dugdale, LennardJones),
+        "sliding_initiation": (Dugdale,),
+        "steady_rolling": (Dugdale,),
+        "push": (Dugdale,),
+        "tangential_history": (Dugdale,),
+        "cyclic_loss": (Dugdale,),
+        "sliding": (Dugdale,),
+    }
 
-        With the cylinder's ``w`` and ``z0`` (as in :meth:`lennard_jones_contact`);
-        :func:`linecontact.laws.lennard_jones.pull_off` in SI units.
-        """
-        return self._pull_off_lj()
+    def _written(self, problem: str) -> None:
+        """Refuse ``problem`` where it is not written for this cylinder's law."""
+        if not isinstance(self.adhesion, self.WRITTEN[problem]):
+            self._not_written(problem)
+
+    def _not_written(self, problem: str) -> None:
+        """Refuse ``problem``: it is not written for this geometry under this law."""
+        raise ValueError(
+            f"{problem} is not written for a cylinder under the {self.adhesion.name} law "
+            f"(adhesion={self.adhesion!r}): give the cylinder a Dugdale law "
+            "(adhesion=Dugdale(...) or its parameters) for it"
+        )
 
     def _pull_off_lj(self) -> CylinderLennardJonesPullOff:
-        """:meth:`lennard_jones_pull_off` (its warnings point at the caller of the caller)."""
+        """The pull-off under the Lennard-Jones law (warnings point at the caller's caller)."""
         from ..laws import lennard_jones as _lj
 
         self._check_lennard_jones(pull_off=True)
@@ -609,20 +691,51 @@ class Cylinder(_Problems):
         a = self.contact(load=normal_load).contact_half_width
         return np.multiply(value, self.modulus * a)
 
-    # the problems as methods (the tangential ones, the pushed fibre and the load histories
-    # are the methods of _methods._Problems, the base of this class) -------------------------
+    # the tangential problems, the pushed fibre, the load histories and steady sliding: the
+    # functions of _problems.py and _sliding.py are these methods (self is the cylinder) --
+    sliding_initiation = _problems.sliding_initiation
+    steady_rolling = _problems.steady_rolling
+    push = _problems.push
+    tangential_history = _problems.tangential_history
+    cyclic_loss = _problems.cyclic_loss
+    sliding = _sliding.sliding
+
+    # the normal problems -------------------------------------------------------------------
     def load_curve(
         self,
         *,
         max_half_width: float | None = None,
         num: int = 200,
         num_noncontact: int = 40,
-    ) -> CylinderLoadCurve:
+        max_load: float | None = None,
+    ) -> CylinderLoadCurve | CylinderLennardJonesLoadCurve:
         """The load curve (:func:`linecontact.load_curve`) up to ``max_half_width`` [m].
 
         Returns the SI :class:`CylinderLoadCurve` (its ``nondimensional`` the
-        :class:`~linecontact.normal.LoadCurve`, with the pull-off).
+        :class:`~linecontact.normal.LoadCurve`, with the pull-off). Under the Lennard-Jones
+        law: the curve up to the compressive ``max_load`` [N/m]
+        (:func:`linecontact.laws.lennard_jones.load_curve`), a
+        :class:`CylinderLennardJonesLoadCurve`; ``max_half_width``, ``num`` and
+        ``num_noncontact`` are the Dugdale law's, ``max_load`` the Lennard-Jones law's.
         """
+        if isinstance(self.adhesion, LennardJones):
+            given = [
+                k
+                for k, v, default in (
+                    ("max_half_width", max_half_width, None),
+                    ("num", num, 200),
+                    ("num_noncontact", num_noncontact, 40),
+                )
+                if v is not default and v != default
+            ]
+            if given:
+                self._not_written(f"the load curve with {', '.join(given)}")
+            return self._load_curve_lj(max_load)
+        if max_load is not None:
+            raise ValueError(
+                "max_load ends the load curve of the Lennard-Jones law: the Dugdale law's "
+                "ends at max_half_width"
+            )
         a_max = None
         if max_half_width is not None:
             _domain.check_si("max_half_width", max_half_width, self.radius, "a_max_over_R", "m")
@@ -639,14 +752,10 @@ class Cylinder(_Problems):
         _warn_small_strain(curve.contact_half_width, self.radius, stacklevel=3)
         return curve
 
-    def lennard_jones_load_curve(
-        self, *, max_load: float | None = None
-    ) -> CylinderLennardJonesLoadCurve:
+    def _load_curve_lj(self, max_load: float | None) -> CylinderLennardJonesLoadCurve:
         """The load curve under the Lennard-Jones law up to the compressive ``max_load`` [N/m].
 
-        :func:`linecontact.laws.lennard_jones.load_curve` in SI units: a
-        :class:`CylinderLennardJonesLoadCurve` (its ``nondimensional`` the curve in the Dugdale
-        groups, with the pull-off).
+        Its ``nondimensional`` is the curve in the Dugdale groups, with the pull-off.
         """
         from .. import lennard_jones_groups as _ljg
         from ..laws import lennard_jones as _lj
@@ -672,8 +781,12 @@ class Cylinder(_Problems):
             turning_point=c.turning_point,
             nondimensional=c,
         )
-        _warn_small_strain(curve.contact_half_width, self.radius, stacklevel=3)
+        _warn_small_strain(curve.contact_half_width, self.radius, stacklevel=4)
         return curve
+
+    def __getattr__(self, name: str) -> Any:
+        # a method deleted before 1.0 (linecontact._moved): its error names the replacement
+        return _moved.resolve("linecontact.Cylinder", name)
 
 
 def _si_load_curve(cylinder: Cylinder, c: Any) -> CylinderLoadCurve:

@@ -1,4 +1,10 @@
-"""The tangential problems, the pushed fibre and the load histories in SI units."""
+"""The tangential problems, the pushed fibre and the load histories in SI units.
+
+Each public function here is a method of :class:`~linecontact.Cylinder` (the class binds it:
+``Cylinder.push = push``), written here so that ``_cylinder.py`` stays one room; ``self`` is
+the cylinder. The engines they share (``_cylinder_tangential``, ``_history_solve``) take
+checked values.
+"""
 
 from __future__ import annotations
 
@@ -9,6 +15,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .. import domain as _domain
 from .. import push as _push
+from .. import tangential as _tangential
 from .._validation import (
     FailurePolicy,
     broadcast,
@@ -20,9 +27,7 @@ from .._validation import (
 )
 from ..errors import NoEquilibriumError
 from ..tangential import (
-    sliding_initiation,
     sliding_initiation_coulomb,
-    steady_rolling,
     steady_rolling_coulomb,
 )
 from ..tangential.initiation import _CATTANEO_MINDLIN, _INITIATION
@@ -120,7 +125,7 @@ def _cylinder_tangential(
         if d is None:
             _domain.check_si("tangential_load", st, E * a, "T_over_Ea", "N/m")
         T = None if d is not None else st / (E * a)
-        fn = steady_rolling if rolling else sliding_initiation
+        fn = _tangential.steady_rolling if rolling else _tangential.sliding_initiation
         # broadcast with a so that every field has the shape of the points
         full = 2 * a * t0
         try:
@@ -193,8 +198,8 @@ def _check_hertz_width(name: str, F: ArrayLike, a_over_R: ArrayLike, R: float) -
         )
 
 
-def _sliding_initiation(
-    cylinder: Any,
+def sliding_initiation(
+    self: Any,
     normal_load: ArrayLike,
     *,
     friction_stress: ArrayLike | None = None,
@@ -204,31 +209,32 @@ def _sliding_initiation(
     method: str = "closed-form",
     on_failure: FailurePolicy = "raise",
 ) -> CylinderTangential:
-    """Initiation of sliding of a :class:`~linecontact.cylinder.Cylinder` (SI units).
+    """Initiation of sliding under ``normal_load`` [N/m] (Eqs 15-17, SI units).
 
     Parameters
     ----------
-    cylinder : Cylinder
-        Geometry, materials and adhesion.
     normal_load : array_like
         ``F`` [N/m]; the contact half-width ``a`` is that of the stable normal contact
         (:meth:`Cylinder.contact`). A load below the pull-off force raises
         :class:`~linecontact.errors.NoEquilibriumError`.
     friction_stress : array_like, optional
-        ``tau0`` [Pa], ``> 0``: the nano-scale law (:func:`sliding_initiation`).
+        ``tau0`` [Pa], ``> 0``: the nano-scale law
+        (:func:`linecontact.tangential.sliding_initiation`).
     friction_coefficient : array_like, optional
         ``mu``, ``> 0``: Coulomb friction on the Hertz contact
-        (:func:`sliding_initiation_coulomb`); the cylinder must have no adhesion and
-        ``F > 0``. Give exactly one of ``friction_stress`` and ``friction_coefficient``.
+        (:func:`linecontact.tangential.sliding_initiation_coulomb`); the cylinder must have
+        no adhesion and ``F > 0``. Give exactly one of ``friction_stress`` and
+        ``friction_coefficient``.
     d_over_a : array_like, optional
         Stick-zone half-width over ``a`` in ``[0, 1)``.
     tangential_load : array_like, optional
         ``T`` [N/m], ``>= 0`` (exactly one of ``d_over_a`` and ``tangential_load``).
     method : {"closed-form", "collocation"}
-        As in :func:`sliding_initiation`.
+        As in :func:`linecontact.tangential.sliding_initiation`.
     on_failure : {"raise", "report"}
-        As in :func:`sliding_initiation`: a tangential load at or above full slip raises
-        :class:`~linecontact.errors.NoEquilibriumError` (``"raise"``, default), or gives
+        As in :func:`linecontact.tangential.sliding_initiation`: a tangential load at or
+        above full slip raises :class:`~linecontact.errors.NoEquilibriumError` (``"raise"``,
+        default), or gives
         ``state == "sliding"`` (``"report"``); README, "Conventions". **Changed** after
         0.2.0: the keyword ``on_sliding`` (deleted) defaulted to ``"report"``. A normal load
         below the pull-off force raises either way.
@@ -245,10 +251,11 @@ def _sliding_initiation(
     >>> s.state, s.stick_zone_end < s.contact_half_width
     ('stick-slip', True)
     """
+    self._written("sliding_initiation")
     policy = failure_policy(on_failure)
     return _cylinder_tangential(
         "sliding initiation",
-        cylinder,
+        self,
         normal_load,
         friction_stress,
         friction_coefficient,
@@ -259,8 +266,8 @@ def _sliding_initiation(
     )
 
 
-def _steady_rolling(
-    cylinder: Any,
+def steady_rolling(
+    self: Any,
     normal_load: ArrayLike,
     *,
     friction_stress: ArrayLike | None = None,
@@ -270,9 +277,9 @@ def _steady_rolling(
     method: str = "closed-form",
     on_failure: FailurePolicy = "raise",
 ) -> CylinderTangential:
-    r"""Steady rolling of a driving :class:`~linecontact.cylinder.Cylinder` (SI units).
+    r"""Steady rolling of a driving cylinder under ``normal_load`` [N/m] (Eqs 23-29).
 
-    Parameters as in :meth:`Cylinder.sliding_initiation`, with ``d_over_a`` in ``(-1, 1)``
+    Parameters as in :meth:`sliding_initiation`, with ``d_over_a`` in ``(-1, 1)``
     the start of the leading-edge stick zone; ``tangential_load`` is the tractive force
     [N/m]. The result's ``creep_ratio`` is :math:`(V - \omega R)/V` (negative).
 
@@ -284,10 +291,11 @@ def _steady_rolling(
     >>> r.creep_ratio < 0
     True
     """
+    self._written("steady_rolling")
     policy = failure_policy(on_failure)
     return _cylinder_tangential(
         "steady rolling",
-        cylinder,
+        self,
         normal_load,
         friction_stress,
         friction_coefficient,
@@ -302,8 +310,8 @@ def _steady_rolling(
 # the pushed fibre in SI units
 
 
-def _pushed_fibre(
-    cylinder: Any,
+def push(
+    self: Any,
     *,
     friction_stress: float,
     height: ArrayLike,
@@ -314,7 +322,7 @@ def _pushed_fibre(
     tip_friction: ArrayLike | None = None,
     length: float | None = None,
 ) -> CylinderPush:
-    r"""Will a pushed :class:`~linecontact.cylinder.Cylinder` stay, roll or slide (SI units).
+    r"""Will the cylinder, pushed at ``height`` [m], stay, roll or slide (``docs/push.md``).
 
     The cylinder's adhesion is the advancing one (its ``cohesive_stress`` and
     ``adhesion_range`` ``h2``, e.g. from the advancing work of adhesion); the receding edge
@@ -323,8 +331,6 @@ def _pushed_fibre(
 
     Parameters
     ----------
-    cylinder : Cylinder
-        Geometry, materials, advancing adhesion.
     friction_stress : float
         ``tau0`` [Pa].
     height : array_like
@@ -353,14 +359,10 @@ def _pushed_fibre(
     >>> [str(m) for m in p.first_motion]
     ['slide', 'roll']
     """
+    self._written("push")
     if (receding_range is None) == (receding_work_of_adhesion is None):
         raise ValueError("give exactly one of receding_range [m] or receding_work_of_adhesion")
-    s0, h2, R, E = (
-        cylinder.cohesive_stress,
-        cylinder.adhesion_range,
-        cylinder.radius,
-        cylinder.modulus,
-    )
+    s0, h2, R, E = (self.cohesive_stress, self.adhesion_range, self.radius, self.modulus)
     if receding_range is not None:
         # h1 >= h2 (the hysteresis is not negative), as push's h1/h2 in [1, 1000]
         h1 = scalar(
@@ -414,7 +416,7 @@ def _pushed_fibre(
             p = _push.push(
                 R / h2,
                 h1 / h2,
-                cylinder.sigma0_over_E,
+                self.sigma0_over_E,
                 tau / E,
                 F,
                 np.asarray(H, float) / R,
@@ -431,7 +433,7 @@ def _pushed_fibre(
                 f"normal_load={Fi!r} N/m holds no contact: without adhesion (cohesive_stress "
                 "= 0) the fibre needs a compressive normal load (> 0)"
             ) from None
-        F_po = float(sliding_pull_off(R / h2, h1 / h2, cylinder.sigma0_over_E).F_pulloff_over_Eh2)
+        F_po = float(sliding_pull_off(R / h2, h1 / h2, self.sigma0_over_E).F_pulloff_over_Eh2)
         F_po *= Eh
         below = np.asarray(load < F_po)
         Fi = float(load[below].flat[0]) if np.any(below) else float(np.min(load))
@@ -450,7 +452,7 @@ def _pushed_fibre(
             f"{e.a_over_R:.6g} radii: {e.limit}"
         ) from None
 
-    si = to_si(p, Scales.of(cylinder))  # h2: the cylinder's (advancing) range
+    si = to_si(p, Scales.of(self))  # h2: the cylinder's (advancing) range
     _warn_widths(si["rest_half_width"], R, "the contact half-width at rest")
     _warn_widths(si["slide_half_width"], R, "the contact half-width while sliding")
     return CylinderPush(
@@ -460,7 +462,7 @@ def _pushed_fibre(
         state=p.state,
         length=length,
         nondimensional=p,
-        scales=Scales.of(cylinder),
+        scales=Scales.of(self),
     )
 
 
@@ -532,8 +534,8 @@ def _history_solve(
     return F, a, full, r, "coulomb" if is_coulomb else "constant"
 
 
-def _tangential_history(
-    cylinder: Any,
+def tangential_history(
+    self: Any,
     normal_load: float,
     tangential_load: ArrayLike,
     *,
@@ -541,11 +543,10 @@ def _tangential_history(
     friction_coefficient: float | None = None,
     method: str = "closed-form",
 ) -> CylinderTangentialHistory:
-    """The states of a :class:`~linecontact.cylinder.Cylinder` along a tangential history.
+    """The states along a history of ``tangential_load`` [N/m] at a fixed ``normal_load``.
 
     Parameters
     ----------
-    cylinder : Cylinder
     normal_load : float
         ``F`` [N/m], fixed; ``a`` is that of the stable normal contact.
     tangential_load : array_like, 1-D
@@ -571,9 +572,10 @@ def _tangential_history(
     """
     from ..tangential.history import tangential_history, tangential_history_coulomb
 
+    self._written("tangential_history")
     T = check_array("tangential_load", tangential_load, low=-np.inf)
     F, a, full, h, law = _history_solve(
-        cylinder,
+        self,
         normal_load,
         friction_stress,
         friction_coefficient,
@@ -583,7 +585,7 @@ def _tangential_history(
         tangential_history_coulomb,
         method,
     )
-    si = to_si(h, Scales.of(cylinder, a=a))
+    si = to_si(h, Scales.of(self, a=a))
     return CylinderTangentialHistory(
         law,
         F,
@@ -598,8 +600,8 @@ def _tangential_history(
     )
 
 
-def _cyclic_loss(
-    cylinder: Any,
+def cyclic_loss(
+    self: Any,
     normal_load: float,
     amplitude: ArrayLike,
     *,
@@ -607,11 +609,10 @@ def _cyclic_loss(
     friction_coefficient: float | None = None,
     method: str = "closed-form",
 ) -> CylinderCyclicLoss:
-    """Energy dissipated per cycle between ``-T*`` and ``+T*`` (SI units).
+    """The energy dissipated per cycle between ``-amplitude`` and ``+amplitude`` [N/m].
 
     Parameters
     ----------
-    cylinder : Cylinder
     normal_load : float
         ``F`` [N/m], fixed.
     amplitude : array_like
@@ -635,9 +636,10 @@ def _cyclic_loss(
     """
     from ..tangential.history import cyclic_loss, cyclic_loss_coulomb
 
+    self._written("cyclic_loss")
     A = check_array("amplitude", amplitude, low=0.0, low_inclusive=False)
     F, a, full, w, law = _history_solve(
-        cylinder,
+        self,
         normal_load,
         friction_stress,
         friction_coefficient,
@@ -647,7 +649,7 @@ def _cyclic_loss(
         cyclic_loss_coulomb,
         method,
     )
-    si = to_si(w, Scales.of(cylinder, a=a))
+    si = to_si(w, Scales.of(self, a=a))
     return CylinderCyclicLoss(
         law,
         F,

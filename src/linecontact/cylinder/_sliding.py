@@ -1,4 +1,8 @@
-"""Steady sliding of a :class:`~linecontact.cylinder.Cylinder` in SI units (Eqs 18-22)."""
+"""Steady sliding of a cylinder in SI units (Eqs 18-22).
+
+The function ``sliding`` is the method :meth:`Cylinder.sliding <linecontact.Cylinder.sliding>`
+(the class binds it); ``self`` is the cylinder.
+"""
 
 from __future__ import annotations
 
@@ -14,8 +18,8 @@ from ._checks import _small_strain_in_si, _warn_small_strain
 from ._results import CylinderSliding
 
 
-def _sliding(
-    cylinder: Any,
+def sliding(
+    self: Any,
     *,
     receding_range: float | None = None,
     h1_over_h2: float | None = None,
@@ -25,14 +29,13 @@ def _sliding(
     method: Literal["closed-form", "collocation"] = "collocation",
     on_failure: FailurePolicy = "raise",
 ) -> CylinderSliding:
-    r"""Steady sliding of ``cylinder`` (:func:`linecontact.sliding.sliding_contact`) in SI units.
+    r"""Steady sliding in SI units (Eqs 18-22; :func:`~linecontact.sliding.sliding_contact`).
 
     The cylinder's adhesion is the leading (advancing) edge's: ``sigma0`` and the range
     ``h2``; the trailing (receding) edge has the same ``sigma0`` and the range ``h1``.
 
     Parameters
     ----------
-    cylinder : Cylinder
     receding_range : float, optional
         ``h1`` [m]; or give ``h1_over_h2`` (exactly one).
     contact_half_width : array_like, optional
@@ -53,6 +56,7 @@ def _sliding(
     """
     from ..sliding import sliding_contact, sliding_contact_for_load
 
+    self._written("sliding")
     policy = failure_policy(on_failure)
     if (receding_range is None) == (h1_over_h2 is None):
         raise ValueError("give exactly one of receding_range [m] or h1_over_h2")
@@ -60,28 +64,28 @@ def _sliding(
         raise ValueError("give exactly one of contact_half_width [m] or load [N/m]")
     if receding_range is not None:
         h1 = positive("receding_range", receding_range)
-        _domain.check_si("receding_range", h1, cylinder.adhesion_range, "h1_over_h2", "m")
-        h1_over_h2 = cylinder.over(h1, "h")
+        _domain.check_si("receding_range", h1, self.adhesion_range, "h1_over_h2", "m")
+        h1_over_h2 = self.over(h1, "h")
     tau = None
     if friction_stress is not None:
         t = scalar("friction_stress", friction_stress, low=0.0, low_inclusive=True)
-        _domain.check_si("friction_stress", t, cylinder.modulus, "friction_tau0_over_E", "Pa")
-        tau = cylinder.over(t, "E")
-    groups: tuple[Any, Any, Any] = (cylinder.R_over_h, h1_over_h2, cylinder.sigma0_over_E)
+        _domain.check_si("friction_stress", t, self.modulus, "friction_tau0_over_E", "Pa")
+        tau = self.over(t, "E")
+    groups: tuple[Any, Any, Any] = (self.R_over_h, h1_over_h2, self.sigma0_over_E)
     if contact_half_width is not None:
         a = positive("contact_half_width", contact_half_width)
-        _domain.check_si("contact_half_width", a, cylinder.radius, "sliding_a_over_R", "m")
+        _domain.check_si("contact_half_width", a, self.radius, "sliding_a_over_R", "m")
         with _small_strain_in_si():  # said in metres below
             res = sliding_contact(
-                cylinder.over(a, "R"), *groups, tau0_over_E=tau, method=method, on_failure=policy
+                self.over(a, "R"), *groups, tau0_over_E=tau, method=method, on_failure=policy
             )
     else:
         F = check_array("load", load, low=-np.inf, low_inclusive=True)  # type: ignore[arg-type]
-        _domain.check_si("load", F, cylinder.scale("Eh"), "F_over_Eh2", "N/m")
+        _domain.check_si("load", F, self.scale("Eh"), "F_over_Eh2", "N/m")
         try:
             with _small_strain_in_si():
                 res = sliding_contact_for_load(
-                    cylinder.over(F, "Eh"),
+                    self.over(F, "Eh"),
                     *groups,
                     tau0_over_E=tau,
                     method=method,
@@ -91,10 +95,10 @@ def _sliding(
             Fi = float(np.reshape(F, -1)[e.index])
             raise ValueError(
                 f"load={Fi!r} N/m needs a contact of half-width "
-                f"{e.a_over_R * cylinder.radius:.6g} m, {e.a_over_R:.6g} radii: {e.limit}"
+                f"{e.a_over_R * self.radius:.6g} m, {e.a_over_R:.6g} radii: {e.limit}"
             ) from None
-    out = _si(cylinder, res)
-    _warn_small_strain(out.contact_half_width, cylinder.radius, stacklevel=4)  # the caller's
+    out = _si(self, res)
+    _warn_small_strain(out.contact_half_width, self.radius, stacklevel=4)  # the caller's
     return out
 
 

@@ -11,11 +11,13 @@ returning its own result type (loads over ``E h``, widths over ``R``, gaps over 
   self-consistently, with the Dugdale step's work of adhesion :math:`w = \sigma_0 h` and
   peak tension :math:`\sigma_0` (the Maugis matching).
 
-They replace the ``law="lennard-jones"`` keyword (deleted before 1.0) of
-:func:`linecontact.pull_off`, :func:`linecontact.contact_for_load` and
-:func:`linecontact.load_curve`.
+In SI units a law is a value (:mod:`linecontact.laws._values`): :class:`Dugdale` and
+:class:`LennardJones` hold their parameters, ``(sigma0, h)`` or ``(w, z0)``, and convert
+themselves to the groups these functions take; a :class:`~linecontact.Cylinder` is built
+with one (``adhesion=LennardJones(0.1, 0.3e-9)``) and its methods solve under it.
 """
 
 from . import dugdale, lennard_jones
+from ._values import LAWS, Dugdale, Law, LennardJones
 
-__all__ = ["dugdale", "lennard_jones"]
+__all__ = ["LAWS", "Dugdale", "Law", "LennardJones", "dugdale", "lennard_jones"]

@@ -19,6 +19,7 @@ import numpy as np
 
 from ..cylinder import Cylinder
 from ..domain import check_si
+from ..laws import LennardJones
 from ..output import Table
 from ..presets import Material, material_names
 from ._declare import Entry, Parameter
@@ -216,7 +217,14 @@ def si_given(args: Any, extra: Sequence[str] = ()) -> bool:
 
 
 def cylinder(args: Any, range_flag: str = "--h") -> Cylinder:
-    """The :class:`Cylinder` of the SI inputs, with errors that name the flags."""
+    """The :class:`Cylinder` of the SI inputs under ``--law``, with errors that name the flags."""
+    cyl = _cylinder(args, range_flag)
+    if getattr(args, "law", None) == "lennard-jones":
+        return cyl.under(LennardJones)
+    return cyl
+
+
+def _cylinder(args: Any, range_flag: str) -> Cylinder:
     work = _work_flag(range_flag)
     if args.radius is None:
         raise ValueError("SI inputs need --radius [m]")

@@ -113,7 +113,7 @@ def _cmd_normal_lj(args: Inputs, A, rho: float, s: float, cyl: Cylinder | None) 
         F = np.asarray(args.F_over_Eh, float)
         r = _lj.contact_for_load(F, rho, s, on_failure="report")
     else:
-        c = cyl.lennard_jones_contact(load=args.load, on_failure="report")
+        c = cyl.contact(load=args.load, on_failure="report")
         r = c.nondimensional
         F = np.asarray(r.F_over_Eh, float)
     state = np.asarray(r.state).reshape(-1)
@@ -220,7 +220,7 @@ def _normal_table(args, r: NormalContact, c, rho, s, cyl, state, reason, given) 
 
 
 def _cmd_pulloff_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> Table:
-    si = None if cyl is None else cyl.lennard_jones_pull_off()
+    si = None if cyl is None else cyl.pull_off()
     p = _lj.pull_off(rho, s) if si is None else si.nondimensional
     params = _parameters(args, rho, s, cyl)
     params.pop("kappa")
@@ -349,7 +349,7 @@ def _cmd_curve_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> T
         _check_lj_end(F_max, rho, s)
         c = _lj.load_curve(rho, s, F_max_over_Eh=F_max)
     else:
-        si = cyl.lennard_jones_load_curve(max_load=args.F_max)
+        si = cyl.load_curve(max_load=args.F_max)
         c = si.nondimensional
     po = c.pulloff
     is_po = np.zeros(c.F_over_Eh.shape, bool)

@@ -661,7 +661,7 @@
   const PYTHON = {
     pulloff: (v) => [wirePy(v), "result = cyl.pull_off()", "print(result)",
       ...(v.length ? [`print("on the whole wire [N]:", result.pull_off_force * ${one(v, "length")})`] : [])],
-    "lennard-jones": (v) => [wirePy(v), "result = cyl.lennard_jones_pull_off()", "print(result)"],
+    "lennard-jones": (v) => [wirePy(v), "result = cyl.under(lc.LennardJones).pull_off()", "print(result)"],
     contact: (v) => [wirePy(v), `result = cyl.contact(load=${list(v, "load")})`, "print(result)"],
     curve: (v) => [wirePy(v), "result = cyl.load_curve()", "print(result)"],
     cycle: (v) => [wirePy(v), `result = cyl.cyclic_loss(normal_load=${one(v, "load")}, friction_stress=${one(v, "tau0")}, amplitude=${list(v, "tangential_amplitude")})`, "print(result)"],
