@@ -57,18 +57,12 @@ def _paper_line() -> str:
         ref += f", {journal}"
         if volume:
             ref += f" {volume}"
-        if year:
-            ref += f" ({year})"
-        if pages:
-            ref += f" {pages}"
     elif PAPER.get("booktitle"):
         ref += f", in: {PAPER['booktitle']}, {PAPER['publisher']}"
-        if year:
-            ref += f" ({year})"
-        if pages:
-            ref += f" {pages}"
-    elif year:
+    if year:
         ref += f" ({year})"
+    if pages and (journal or PAPER.get("booktitle")):  # pages only of a journal or a book
+        ref += f" {pages}"
     if PAPER["doi"]:
         ref += f", doi:{PAPER['doi']}"
     elif PAPER.get("url"):
