@@ -124,3 +124,29 @@ def _iterate(step, state: tuple, params: tuple, maxiter: int, done=None):
             cur = tuple(v[keep] for v in cur)
             par = tuple(p[keep] for p in par)
     return tuple(out), its
+
+
+def _auto_sizes(sizes: NDArray, u: NDArray, tail: NDArray, tol: float, nsel: NDArray, solve):
+    """The collocation size of each point for ``n="auto"``, solving again where it grows.
+
+    The log source at the edge of an adhesive zone limits convergence to about
+    ``exp(-1.5 u n)``: each point whose error estimate ``tail`` (at its size ``nsel``) exceeds
+    ``tol`` moves to the first of ``sizes`` that reaches ``tol`` by that rate (at least the
+    second), then one size up as long as its estimate still exceeds ``tol``.
+    ``solve(nn, idx)`` solves the points ``idx`` (flat) at ``nn`` nodes and writes their
+    results, ``tail`` among them, into the caller's arrays in place.
+
+    Returns the size of each point.
+    """
+    need = np.log(1 / tol) / (1.5 * np.maximum(u, 1e-300))
+    pending = tail > tol
+    target = sizes[np.minimum(np.searchsorted(sizes, need), sizes.size - 1)]
+    nsel = np.where(pending, np.maximum(target, sizes[1]), nsel)
+    while pending.any():
+        for nn in np.unique(nsel[pending]):
+            solve(nn, np.nonzero(pending & (nsel == nn))[0])
+        pending = pending & (tail > tol) & (nsel < sizes[-1])
+        nsel = np.where(
+            pending, sizes[np.minimum(np.searchsorted(sizes, nsel) + 1, sizes.size - 1)], nsel
+        )
+    return nsel

@@ -29,7 +29,7 @@ the rest of the library. ``docs/inverse.md`` derives the models and their limits
 from __future__ import annotations
 
 import warnings
-from typing import Literal
+from typing import TYPE_CHECKING, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -55,6 +55,9 @@ from .cylinder._checks import _small_strain_in_si, _warn_small_strain
 from .errors import ModelValidityWarning
 from .fits import AdhesionFit, ShearStrengthFit, fit_pull_off, fit_shear_strength
 from .uncertainty import _UNREACHABLE, Estimate, propagate
+
+if TYPE_CHECKING:
+    from .domain import TooWideError
 
 __all__ = [
     "AdhesionFit",
@@ -171,6 +174,17 @@ def _work_from_width(
     return _work_in_domain(w, "raise", E, "m", half_width=a)
 
 
+def _too_wide_error(e: TooWideError, F: NDArray, R: NDArray, what: str) -> ValueError:
+    """The error for a load ``F`` [N/m] that needs ``what`` wider than the solvers' domain."""
+    i = e.index
+    Ri = float(np.reshape(R, -1)[i])
+    return ValueError(
+        f"normal_load={float(np.reshape(F, -1)[i])!r} N/m needs {what} of "
+        f"half-width {e.a_over_R * Ri:.6g} m, {e.a_over_R:.6g} radii at radius="
+        f"{Ri!r} m: {e.limit}"
+    )
+
+
 def _stable_width(F, R, E, w, z0, *, too_wide=None, pulled_off=np.nan):
     """Half-width [m] of the stable Maugis--Dugdale contact at the load F (arrays of one shape).
 
@@ -192,13 +206,7 @@ def _stable_width(F, R, E, w, z0, *, too_wide=None, pulled_off=np.nan):
         A = one(F, rho, s, E, h)
     except TooWideError as e:
         if too_wide is None:
-            i = e.index
-            Ri = float(np.reshape(R, -1)[i])
-            raise ValueError(
-                f"normal_load={float(np.reshape(F, -1)[i])!r} N/m needs a contact of "
-                f"half-width {e.a_over_R * Ri:.6g} m, {e.a_over_R:.6g} radii at radius="
-                f"{Ri!r} m: {e.limit}"
-            ) from None
+            raise _too_wide_error(e, F, R, "a contact") from None
         A = np.empty(np.shape(F))
         for i in np.ndindex(np.shape(F)):
             try:
@@ -317,13 +325,7 @@ def shear_strength_from_friction(
             with _small_strain_in_si():  # said of the width in metres below
                 c = sliding_contact_for_load(F / (E * h), rho, w1 / w, s, method="closed-form")
         except TooWideError as e:
-            i = e.index
-            Ri = float(np.reshape(R, -1)[i])
-            raise ValueError(
-                f"normal_load={float(np.reshape(F, -1)[i])!r} N/m needs a sliding contact of "
-                f"half-width {e.a_over_R * Ri:.6g} m, {e.a_over_R:.6g} radii at radius="
-                f"{Ri!r} m: {e.limit}"
-            ) from None
+            raise _too_wide_error(e, F, R, "a sliding contact") from None
         a = np.asarray(c.a_over_R) * R
         dw = w1 - w
     elif contact == "maugis-dugdale":

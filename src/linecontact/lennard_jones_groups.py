@@ -65,6 +65,10 @@ __all__ = [
 #: the contact widens with the load (like :math:`\sqrt{\mu F}`), and the meshes with it.
 LJ_LOAD_MAX = 25.0
 
+#: The inputs of both results (:attr:`linecontact.results.Result.inputs`): the Dugdale groups
+#: and the law's own group with the Maugis parameter of the matched step.
+_INPUTS = ("R_over_h", "sigma0_over_E", "law", "mu", "maugis_parameter")
+
 
 @dataclass(frozen=True)
 class LennardJonesLoadCurve(Result):
@@ -98,13 +102,7 @@ class LennardJonesLoadCurve(Result):
         The pull-off (refined between the samples).
     """
 
-    inputs: ClassVar[tuple[str, ...]] = (
-        "R_over_h",
-        "sigma0_over_E",
-        "law",
-        "mu",
-        "maugis_parameter",
-    )
+    inputs: ClassVar[tuple[str, ...]] = _INPUTS
     si: ClassVar[dict[str, tuple[str, str, str]]] = {
         "central_gap_over_h": ("central_gap", "h", "m"),
         "a_over_R": ("contact_half_width", "R", "m"),
@@ -159,13 +157,7 @@ class LennardJonesContact(Result):
         with ``on_failure="report"`` (its values are NaN).
     """
 
-    inputs: ClassVar[tuple[str, ...]] = (
-        "R_over_h",
-        "sigma0_over_E",
-        "law",
-        "mu",
-        "maugis_parameter",
-    )
+    inputs: ClassVar[tuple[str, ...]] = _INPUTS
     si: ClassVar[dict[str, tuple[str, str, str]]] = {
         "a_over_R": ("contact_half_width", "R", "m"),
         "central_gap_over_h": ("central_gap", "h", "m"),

@@ -57,18 +57,12 @@ def _paper_line() -> str:
         ref += f", {journal}"
         if volume:
             ref += f" {volume}"
-        if year:
-            ref += f" ({year})"
-        if pages:
-            ref += f" {pages}"
     elif PAPER.get("booktitle"):
         ref += f", in: {PAPER['booktitle']}, {PAPER['publisher']}"
-        if year:
-            ref += f" ({year})"
-        if pages:
-            ref += f" {pages}"
-    elif year:
+    if year:
         ref += f" ({year})"
+    if pages and (journal or PAPER.get("booktitle")):  # pages only of a journal or a book
+        ref += f" {pages}"
     if PAPER["doi"]:
         ref += f", doi:{PAPER['doi']}"
     elif PAPER.get("url"):
@@ -264,10 +258,33 @@ def _cmd_figures(args) -> int:
     return 0
 
 
-def register(sub) -> None:
-    """Add ``paper``, ``figures`` and ``cite`` to the subparsers ``sub``."""
+def _figure_arguments(parser, outdir: str, size_help: str) -> None:
+    """The options ``--outdir`` (default ``outdir``), ``--image-format`` and ``--size``.
+
+    Those of ``paper`` and ``figures``, with ``--format`` the deprecated ``--image-format``.
+    """
     from ._options import deprecated_alias
 
+    parser.add_argument(
+        "--outdir",
+        default=outdir,
+        metavar="DIR",
+        help="directory to write into, created if missing; files of the same names are "
+        "replaced (default: %(default)s)",
+    )
+    parser.add_argument(
+        "--image-format",
+        default="png",
+        metavar="LIST",
+        help="comma-separated file formats, any of png, svg, pdf; PNG at 150 dpi "
+        "(default: %(default)s)",
+    )
+    parser.add_argument("--size", default="9.6x5.4", metavar="WxH", help=size_help)
+    deprecated_alias(parser, "--format", "--image-format")
+
+
+def register(sub) -> None:
+    """Add ``paper``, ``figures`` and ``cite`` to the subparsers ``sub``."""
     pa = sub.add_parser(
         "paper",
         help="redraw the paper's Figs. 2-14 (PNG by default)",
@@ -279,28 +296,12 @@ def register(sub) -> None:
         epilog="examples:\n  linecontact paper\n"
         "  linecontact paper --outdir figs --image-format png,svg --size 12x6.75",
     )
-    pa.add_argument(
-        "--outdir",
-        default="paper-figures",
-        metavar="DIR",
-        help="directory to write into, created if missing; files of the same names are "
-        "replaced (default: %(default)s)",
-    )
-    pa.add_argument(
-        "--image-format",
-        default="png",
-        metavar="LIST",
-        help="comma-separated file formats, any of png, svg, pdf; PNG at 150 dpi "
-        "(default: %(default)s)",
-    )
-    pa.add_argument(
-        "--size",
-        default="9.6x5.4",
-        metavar="WxH",
-        help="width x height of every figure in inches, from 9.5x5.2 to 30x20 (fonts stay "
+    _figure_arguments(
+        pa,
+        "paper-figures",
+        "width x height of every figure in inches, from 9.5x5.2 to 30x20 (fonts stay "
         "the same size; the two-panel Fig. 8 too) (default: %(default)s)",
     )
-    deprecated_alias(pa, "--format", "--image-format")
     pa.set_defaults(func=_cmd_paper)
 
     fi = sub.add_parser(
@@ -318,28 +319,11 @@ def register(sub) -> None:
         epilog="examples:\n  linecontact figures\n"
         "  linecontact figures --outdir figs --image-format png,pdf",
     )
-    fi.add_argument(
-        "--outdir",
-        default="figures",
-        metavar="DIR",
-        help="directory to write into, created if missing; files of the same names are "
-        "replaced (default: %(default)s)",
+    _figure_arguments(
+        fi,
+        "figures",
+        "width x height of the figures in inches, from 9.5x5.2 to 30x20 (default: %(default)s)",
     )
-    fi.add_argument(
-        "--image-format",
-        default="png",
-        metavar="LIST",
-        help="comma-separated file formats, any of png, svg, pdf; PNG at 150 dpi "
-        "(default: %(default)s)",
-    )
-    fi.add_argument(
-        "--size",
-        default="9.6x5.4",
-        metavar="WxH",
-        help="width x height of the figures in inches, from 9.5x5.2 to 30x20 "
-        "(default: %(default)s)",
-    )
-    deprecated_alias(fi, "--format", "--image-format")
     fi.set_defaults(func=_cmd_figures)
 
     ci = sub.add_parser(

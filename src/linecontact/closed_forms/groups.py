@@ -17,6 +17,7 @@ J. Phys. D: Appl. Phys. 41 (2008) 155315. doi:10.1088/0022-3727/41/15/155315
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -67,6 +68,20 @@ def _maugis_parameter(rho, s):
     return 4 / np.pi ** (2 / 3) * s ** (2 / 3) * rho ** (1 / 3)
 
 
+def _closed_form(what: str, kernel: Callable[..., NDArray], **groups: ArrayLike) -> NDArray | float:
+    """``kernel`` of the checked, broadcast ``groups`` (in order), refused where it overflows.
+
+    The public closed forms in one place: each group checked against its domain, the groups
+    broadcast together, ``what`` named in the overflow message.
+    """
+    checked = {name: _domain.check(name, value) for name, value in groups.items()}
+    arrays = broadcast(**checked)
+    with np.errstate(over="ignore"):
+        val = kernel(*arrays)
+    val = _representable(what, val, **dict(zip(checked, arrays, strict=True)))
+    return out(val, scalar_or_array(*arrays))
+
+
 def kappa(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | float:
     r"""The single group of the Maugis--Dugdale line contact.
 
@@ -76,13 +91,7 @@ def kappa(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | float:
     JKR-like (compliant, short-range) end. :math:`\kappa = \lambda^{3/2}/\sqrt2`
     with :math:`\lambda` of :func:`maugis_parameter`.
     """
-    rho = _domain.check("R_over_h", R_over_h)
-    s = _domain.check("sigma0_over_E", sigma0_over_E)
-    rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
-    with np.errstate(over="ignore"):
-        val = _kappa(rho, s)
-    val = _representable("kappa", val, R_over_h=rho, sigma0_over_E=s)
-    return out(val, scalar_or_array(rho, s))
+    return _closed_form("kappa", _kappa, R_over_h=R_over_h, sigma0_over_E=sigma0_over_E)
 
 
 def maugis_parameter(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray | float:
@@ -93,10 +102,6 @@ def maugis_parameter(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> NDArray |
     With :math:`w = \sigma_0 h`: :math:`\lambda = (4/\pi^{2/3})(\sigma_0/E)^{2/3}(R/h)^{1/3}`.
     DMT-like for :math:`\lambda \lesssim 0.1`, JKR-like for :math:`\lambda \gtrsim 5`.
     """
-    rho = _domain.check("R_over_h", R_over_h)
-    s = _domain.check("sigma0_over_E", sigma0_over_E)
-    rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
-    with np.errstate(over="ignore"):
-        val = _maugis_parameter(rho, s)
-    val = _representable("the Maugis parameter", val, R_over_h=rho, sigma0_over_E=s)
-    return out(val, scalar_or_array(rho, s))
+    return _closed_form(
+        "the Maugis parameter", _maugis_parameter, R_over_h=R_over_h, sigma0_over_E=sigma0_over_E
+    )

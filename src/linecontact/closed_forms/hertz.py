@@ -18,10 +18,8 @@ import warnings
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .. import domain as _domain
-from .._numerics import _representable
-from .._validation import broadcast, out, scalar_or_array
 from ..errors import ModelValidityWarning
+from .groups import _closed_form
 
 __all__ = ["A_OVER_R_SMALL_STRAIN", "hertz_load"]
 
@@ -56,13 +54,7 @@ def _warn_wide(a_over_R: ArrayLike, stacklevel: int = 3) -> None:
 
 def hertz_load(a_over_R: ArrayLike, R_over_h: ArrayLike) -> NDArray | float:
     r"""Hertz line contact, Eq. (13): :math:`F/(Eh) = (\pi/4)(a/R)^2 (R/h)`."""
-    A = _domain.check("a_over_R", a_over_R)
-    rho = _domain.check("R_over_h", R_over_h)
-    A, rho = broadcast(a_over_R=A, R_over_h=rho)
-    with np.errstate(over="ignore"):
-        val = _hertz(A, rho)
-    val = _representable("the Hertz load", val, a_over_R=A, R_over_h=rho)
-    return out(val, scalar_or_array(A, rho))
+    return _closed_form("the Hertz load", _hertz, a_over_R=a_over_R, R_over_h=R_over_h)
 
 
 # --------------------------------------------------------------------------------------------

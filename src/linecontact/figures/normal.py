@@ -182,15 +182,30 @@ _STYLE_BRANCH = [
 ]
 
 
-def _load_figure(run: Run, number: int, rho: float):
-    """Figs. 2, 3: F/(Eh) versus a/R."""
+def _branch_axes(run: Run, rho: float, margins: Margins, title: str, ylabel: str):
+    """The states at ``R/h = rho`` and the axes of Figs. 2 to 5 (against ``a/R``)."""
     data = _data(run, rho)
     fig, ax = _new_axes(
-        run,
-        Margins(0.813, 2.214),
-        f"Fig. {number} ({_CITE}): normal load, $R/h = {rho:g}$",
-        r"contact half-width $a/R$",
-        r"load $F/(Eh)$",
+        run, margins, f"{title}, $R/h = {rho:g}$", r"contact half-width $a/R$", ylabel
+    )
+    return data, fig, ax
+
+
+def _branch_legends(ax, data: list[dict], colors, styles: list) -> None:
+    """The legends of Figs. 2 to 5: the values of sigma0/E, the branches and ``styles``."""
+    _legends(
+        ax,
+        r"$\sigma_0/E$",
+        colors,
+        _sigma_labels([d["sigma"] for d in data]),
+        [*_STYLE_BRANCH, *styles],
+    )
+
+
+def _load_figure(run: Run, number: int, rho: float):
+    """Figs. 2, 3: F/(Eh) versus a/R."""
+    data, fig, ax = _branch_axes(
+        run, rho, Margins(0.813, 2.214), f"Fig. {number} ({_CITE}): normal load", r"load $F/(Eh)$"
     )
     a = data[0]["a"][1:]
     ax.axhline(0.0, color="0.3", lw=0.8)
@@ -208,13 +223,11 @@ def _load_figure(run: Run, number: int, rho: float):
     lo = min(d["F_po"] for d in data)
     hi = float(_cf.hertz_load(A_MAX_OVER_R, rho))
     ax.set_ylim(lo - 0.06 * (hi - lo), hi + 0.05 * (hi - lo))
-    _legends(
+    _branch_legends(
         ax,
-        r"$\sigma_0/E$",
+        data,
         colors,
-        _sigma_labels([d["sigma"] for d in data]),
         [
-            *_STYLE_BRANCH,
             ("Hertz (Eq. 13)", dict(color="k", ls="--", lw=1.2)),
             (
                 f"JKR line contact, $w=\\sigma_0 h$,\n$\\sigma_0/E={big['sigma']:g}$",
@@ -228,25 +241,15 @@ def _load_figure(run: Run, number: int, rho: float):
 
 def _zone_figure(run: Run, number: int, rho: float):
     """Figs. 4, 5: c/R versus a/R."""
-    data = _data(run, rho)
-    fig, ax = _new_axes(
+    data, fig, ax = _branch_axes(
         run,
+        rho,
         Margins(0.783, 2.144),
-        f"Fig. {number} ({_CITE}): adhesive-zone width, $R/h = {rho:g}$",
-        r"contact half-width $a/R$",
+        f"Fig. {number} ({_CITE}): adhesive-zone width",
         r"adhesive-zone half-width $c/R$",
     )
     colors = _branch_figure(ax, data, "c")
-    _legends(
-        ax,
-        r"$\sigma_0/E$",
-        colors,
-        _sigma_labels([d["sigma"] for d in data]),
-        [
-            *_STYLE_BRANCH,
-            ("pull-off", dict(color="0.2", **_PO_KW)),
-        ],
-    )
+    _branch_legends(ax, data, colors, [("pull-off", dict(color="0.2", **_PO_KW))])
     return fig
 
 

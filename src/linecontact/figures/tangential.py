@@ -159,33 +159,53 @@ def _rolling_data(run: Run) -> dict:
     return run.data("rolling", compute, f"steady rolling ({len(TAU0_OVER_E)} values of tau0/E)")
 
 
-def _fig13(run: Run):
-    r = _rolling_data(run)
+def _rolling_axes(run: Run, number: int, left: float, what: str, ylabel: str):
+    """The axes of Fig. 13 or 14 (``what`` against the start of the stick zone), and colours."""
     fig, ax = _fig._new_axes(
         run,
-        Margins(0.873, 2.404, top=0.349),
-        f"Fig. 13 ({_fig._CITE}): steady rolling of a driving cylinder, tractive force",
+        Margins(left, 2.404, top=0.349),
+        f"Fig. {number} ({_fig._CITE}): steady rolling of a driving cylinder, {what}",
         r"start of the leading-edge stick zone $d/a$ (stick: $d < x < a$)",
-        r"tractive force $T/(Ea)$",
+        ylabel,
     )
-    colors = _fig._colors(len(TAU0_OVER_E))
+    return fig, ax, _fig._colors(len(TAU0_OVER_E))
+
+
+def _from_stick(d, y, end):
+    """The curve from full stick (``d = -a``, 0) along ``d``, to full slip (``d = a``, ``end``).
+
+    Without the full-slip point when ``end`` is None.
+    """
+    if end is None:
+        return np.concatenate([[-1], d]), np.concatenate([[0], y])
+    return np.concatenate([[-1], d, [1]]), np.concatenate([[0], y, [end]])
+
+
+def _rolling_curves(ax, r: dict, colors, field: str, closed_end, coulomb_end) -> None:
+    """Per ``tau0/E``: ``field`` of the closed form, the collocation and Carter's rolling.
+
+    ``closed_end(t0)`` and ``coulomb_end(t0)`` are the values at full slip (``closed_end``
+    None: the closed form is drawn without that point).
+    """
     d, d_col = r["d"], r["d_col"]
     for i, (t0, col) in enumerate(zip(TAU0_OVER_E, colors, strict=True)):
-        ax.plot(
-            np.concatenate([[-1], d, [1]]),
-            np.concatenate([[0], r["closed"].T_over_Ea[i], [2 * t0]]),
-            color=col,
-            lw=1.8,
-        )
-        ax.plot(d_col, r["col"].T_over_Ea[i], color=col, **_fig._COL_KW, zorder=5)
+        end = None if closed_end is None else closed_end(t0)
+        ax.plot(*_from_stick(d, getattr(r["closed"], field)[i], end), color=col, lw=1.8)
+        ax.plot(d_col, getattr(r["col"], field)[i], color=col, **_fig._COL_KW, zorder=5)
         cm = r["coulomb"][i]
-        ax.plot(
-            np.concatenate([[-1], d, [1]]),
-            np.concatenate([[0], cm.T_over_Ea, [2 * t0]]),
-            color=col,
-            lw=1.3,
-            ls="--",
-        )
+        ax.plot(*_from_stick(d, getattr(cm, field), coulomb_end(t0)), color=col, lw=1.3, ls="--")
+
+
+def _rolling_legend(ax, colors) -> None:
+    _fig._legends(
+        ax, r"$\tau_0/E$", colors, [f"{t:g}" for t in TAU0_OVER_E], _styles("Eq. 27", "Carter")
+    )
+
+
+def _fig13(run: Run):
+    r = _rolling_data(run)
+    fig, ax, colors = _rolling_axes(run, 13, 0.873, "tractive force", r"tractive force $T/(Ea)$")
+    _rolling_curves(ax, r, colors, "T_over_Ea", lambda t0: 2 * t0, lambda t0: 2 * t0)
     ax.set_xlim(-1, 1)
     ax.set_ylim(0, 2 * TAU0_OVER_E[-1] * 1.05)
     _ends(
@@ -195,39 +215,16 @@ def _fig13(run: Run):
         r"$d = -a$: full stick, $T = 0$",
         r"$d = a$: full slip, $T = 2a\tau_0$",
     )
-    _fig._legends(
-        ax, r"$\tau_0/E$", colors, [f"{t:g}" for t in TAU0_OVER_E], _styles("Eq. 27", "Carter")
-    )
+    _rolling_legend(ax, colors)
     return fig
 
 
 def _fig14(run: Run):
     r = _rolling_data(run)
-    fig, ax = _fig._new_axes(
-        run,
-        Margins(0.953, 2.404, top=0.349),
-        f"Fig. 14 ({_fig._CITE}): steady rolling of a driving cylinder, creep",
-        r"start of the leading-edge stick zone $d/a$ (stick: $d < x < a$)",
-        r"creep velocity $\dot C/V = (V - \omega R)/V$",
+    fig, ax, colors = _rolling_axes(
+        run, 14, 0.953, "creep", r"creep velocity $\dot C/V = (V - \omega R)/V$"
     )
-    colors = _fig._colors(len(TAU0_OVER_E))
-    d, d_col = r["d"], r["d_col"]
-    for i, (t0, col) in enumerate(zip(TAU0_OVER_E, colors, strict=True)):
-        ax.plot(
-            np.concatenate([[-1], d]),
-            np.concatenate([[0], r["closed"].creep_over_V[i]]),
-            color=col,
-            lw=1.8,
-        )
-        ax.plot(d_col, r["col"].creep_over_V[i], color=col, **_fig._COL_KW, zorder=5)
-        cm = r["coulomb"][i]
-        ax.plot(
-            np.concatenate([[-1], d, [1]]),
-            np.concatenate([[0], cm.creep_over_V, [-_coulomb_mu(t0) * _A_OVER_R]]),
-            color=col,
-            lw=1.3,
-            ls="--",
-        )
+    _rolling_curves(ax, r, colors, "creep_over_V", None, lambda t0: -_coulomb_mu(t0) * _A_OVER_R)
     ax.axhline(0.0, color="0.3", lw=0.8)
     ax.set_xlim(-1, 1)
     # the creep diverges at d -> a: show the range down to its value at d/a = 0.99
@@ -248,9 +245,7 @@ def _fig14(run: Run):
         r"$d \to a$: full slip, $\omega R > V$",
         va="bottom",
     )
-    _fig._legends(
-        ax, r"$\tau_0/E$", colors, [f"{t:g}" for t in TAU0_OVER_E], _styles("Eq. 27", "Carter")
-    )
+    _rolling_legend(ax, colors)
     return fig
 
 

@@ -341,22 +341,13 @@ def _collocation(A, rho, s, n, tol):
     u0 = np.arccosh(np.sqrt(1 + 2 / (rho * A * A)))  # rigid-cylinder estimate
     u, conv, (Rv, res_, cons, tail) = _newton_u_chunked(n0, A, s, rho, u0)
     nsel = np.full(A.size, n0)
-    if n == "auto":
-        # the log source at x = c limits convergence to about exp(-1.5 u n): pick n for tol,
-        # then move points whose error estimate still exceeds tol one size up
-        need = np.log(1 / tol) / (1.5 * np.maximum(u, 1e-300))
-        pending = tail > tol
-        target = sizes[np.minimum(np.searchsorted(sizes, need), sizes.size - 1)]
-        nsel = np.where(pending, np.maximum(target, sizes[1]), nsel)
-        while pending.any():
-            for nn in np.unique(nsel[pending]):
-                idx = np.nonzero(pending & (nsel == nn))[0]
-                ui, ci, (Ri, ri, co, ti) = _newton_u_chunked(nn, A[idx], s[idx], rho[idx], u[idx])
-                u[idx], conv[idx], Rv[idx], res_[idx], cons[idx], tail[idx] = ui, ci, Ri, ri, co, ti
-            pending = pending & (tail > tol) & (nsel < sizes[-1])
-            nsel = np.where(
-                pending, sizes[np.minimum(np.searchsorted(sizes, nsel) + 1, sizes.size - 1)], nsel
-            )
+    if n == "auto":  # the log source at x = c sets the size (_numerics._auto_sizes)
+
+        def solve(nn, idx):
+            ui, ci, (Ri, ri, co, ti) = _newton_u_chunked(nn, A[idx], s[idx], rho[idx], u[idx])
+            u[idx], conv[idx], Rv[idx], res_[idx], cons[idx], tail[idx] = ui, ci, Ri, ri, co, ti
+
+        nsel = _num._auto_sizes(sizes, u, tail, tol, nsel, solve)
     F = rho * A * (res_ - 2 * np.cosh(u) * s)
     C = A * np.cosh(u)
     converged = conv & (tail <= 10 * tol) & np.isfinite(F)

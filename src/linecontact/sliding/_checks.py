@@ -2,9 +2,12 @@
 
 from __future__ import annotations
 
+import numpy as np
+
 from .. import domain as _domain
 from .._validation import (
     check_solver_options,
+    failure_policy,
 )
 
 
@@ -19,3 +22,22 @@ def _check_method(method, n, tol):
     if method not in ("closed-form", "collocation"):
         raise ValueError(f"method must be 'closed-form' or 'collocation', got {method!r}")
     check_solver_options(n, tol, n_max=8192)
+
+
+def _check_state_inputs(
+    R_over_h2, h1_over_h2, sigma0_over_E, tau0_over_E, method, n, tol, on_failure
+):
+    """The groups, ``tau0_over_E`` (NaN when not given), the solver options and the policy.
+
+    The checks after the first argument of :func:`~linecontact.sliding.sliding_contact` and
+    :func:`~linecontact.sliding.sliding_contact_for_load`, in their order; returns
+    ``(rho, r, s, tau, policy)``.
+    """
+    rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
+    tau = (
+        np.full((), np.nan)
+        if tau0_over_E is None
+        else _domain.check("tau0_over_E", tau0_over_E, "friction_tau0_over_E")
+    )
+    _check_method(method, n, tol)
+    return rho, r, s, tau, failure_policy(on_failure)

@@ -12,6 +12,7 @@ from typing import cast
 import numpy as np
 from numpy.typing import NDArray
 
+from .. import _numerics as _num
 from .. import closed_forms as _cf
 from ..sie import SIZES, BoundedSolver, _chunks, log_end_moments
 from .closed_form import _initial_u, _newton2
@@ -133,22 +134,15 @@ def _collocation(A, rho, r, s, n, tol):
     idx = np.arange(P)
     u1, u2, e1, e2, ex = run(n0, idx, u1, u2)
     nsel = np.full(P, n0)
-    if n == "auto":
-        need = np.log(1 / tol) / (1.5 * np.maximum(np.minimum(u1, u2), 1e-300))
-        pending = ex["tail"] > tol
-        target = sizes[np.minimum(np.searchsorted(sizes, need), sizes.size - 1)]
-        nsel = np.where(pending, np.maximum(target, sizes[1]), nsel)
-        while pending.any():
-            for nn in np.unique(nsel[pending]):
-                sel = np.nonzero(pending & (nsel == nn))[0]
-                v1, v2, f1, f2, x2 = run(nn, sel, u1[sel], u2[sel])
-                u1[sel], u2[sel], e1[sel], e2[sel] = v1, v2, f1, f2
-                for k in ex:
-                    ex[k][sel] = x2[k]
-            pending = pending & (ex["tail"] > tol) & (nsel < sizes[-1])
-            nsel = np.where(
-                pending, sizes[np.minimum(np.searchsorted(sizes, nsel) + 1, sizes.size - 1)], nsel
-            )
+    if n == "auto":  # the thinner zone sets the size (_numerics._auto_sizes)
+
+        def solve(nn, sel):
+            v1, v2, f1, f2, x2 = run(nn, sel, u1[sel], u2[sel])
+            u1[sel], u2[sel], e1[sel], e2[sel] = v1, v2, f1, f2
+            for k in ex:
+                ex[k][sel] = x2[k]
+
+        nsel = _num._auto_sizes(sizes, np.minimum(u1, u2), ex["tail"], tol, nsel, solve)
     m1, m2 = np.cosh(u1), np.cosh(u2)
     F = rho * A * (ex["resultant"] - s * (m1 + m2))
     # strips: -sigma0 (int_a^c2 x + int_-c1^-a x) = sigma0 (c1^2 - c2^2)/2,

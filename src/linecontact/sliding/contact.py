@@ -19,7 +19,6 @@ from .. import domain as _domain
 from .._validation import (
     FailurePolicy,
     broadcast,
-    failure_policy,
     first_point,
     point_text,
     positions,
@@ -28,7 +27,7 @@ from .._validation import (
 from ..errors import ConvergenceError
 from ..results import Result, as_output
 from ..sie import BoundedSolution, BoundedSolver, _in_chunks
-from ._checks import _check_common, _check_method
+from ._checks import _check_state_inputs
 from .closed_form import _cf_coefficients, _cf_outputs, _closed_form
 from .collocation import _SIZES, _collocation
 from .pulloff import _pulloff_flat
@@ -449,14 +448,9 @@ def sliding_contact(
     True
     """
     A = _domain.check("a_over_R", a_over_R, "sliding_a_over_R")
-    rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
-    tau = (
-        np.full((), np.nan)
-        if tau0_over_E is None
-        else _domain.check("tau0_over_E", tau0_over_E, "friction_tau0_over_E")
+    rho, r, s, tau, policy = _check_state_inputs(
+        R_over_h2, h1_over_h2, sigma0_over_E, tau0_over_E, method, n, tol, on_failure
     )
-    _check_method(method, n, tol)
-    policy = failure_policy(on_failure)
     scalar = scalar_or_array(A, rho, r, s, tau)
     A, rho, r, s, tau = broadcast(
         a_over_R=A, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau

@@ -17,14 +17,13 @@ from .. import domain as _domain
 from .._validation import (
     FailurePolicy,
     broadcast,
-    failure_policy,
     first_point,
     point_text,
     scalar_or_array,
 )
 from ..errors import NoEquilibriumError
 from ..sie import _in_chunks
-from ._checks import _check_common, _check_method
+from ._checks import _check_state_inputs
 from .contact import SlidingContact, _pack, _solve_closed_form, _solve_split
 from .pulloff import _LAB_DEEP, _phi_at, _pulloff_flat
 
@@ -247,14 +246,9 @@ def sliding_contact_for_load(
     (True, True)
     """
     F = _domain.check("F_over_Eh2", F_over_Eh2)
-    rho, r, s = _check_common(R_over_h2, h1_over_h2, sigma0_over_E)
-    tau = (
-        np.full((), np.nan)
-        if tau0_over_E is None
-        else _domain.check("tau0_over_E", tau0_over_E, "friction_tau0_over_E")
+    rho, r, s, tau, policy = _check_state_inputs(
+        R_over_h2, h1_over_h2, sigma0_over_E, tau0_over_E, method, n, tol, on_failure
     )
-    _check_method(method, n, tol)
-    policy = failure_policy(on_failure)
     scalar = scalar_or_array(F, rho, r, s, tau)
     F, rho, r, s, tau = broadcast(
         F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau
