@@ -54,15 +54,12 @@ MOVED: dict[str, Moved] = {
     "linecontact.reference": Moved("linecontact.closed_forms", "1.0.0", works=False),
     # a law is a value of the body, not a prefix of its methods (issue 32): the methods of
     # a Cylinder with adhesion=LennardJones(w, z0)
-    "linecontact.Cylinder.lennard_jones_contact": Moved(
-        "linecontact.Cylinder.contact", "1.0.0", works=False
-    ),
-    "linecontact.Cylinder.lennard_jones_pull_off": Moved(
-        "linecontact.Cylinder.pull_off", "1.0.0", works=False
-    ),
-    "linecontact.Cylinder.lennard_jones_load_curve": Moved(
-        "linecontact.Cylinder.load_curve", "1.0.0", works=False
-    ),
+    **{
+        f"linecontact.Cylinder.lennard_jones_{name}": Moved(
+            f"linecontact.Cylinder.{name}", "1.0.0", works=False
+        )
+        for name in ("contact", "pull_off", "load_curve")
+    },
 }
 
 

@@ -334,8 +334,8 @@ class Cylinder:
 
     @property
     def work_of_adhesion(self) -> float:
-        r""":math:`w = \sigma_0 h` [J/m^2]."""
-        return self.cohesive_stress * self.adhesion_range
+        r""":math:`w = \sigma_0 h` [J/m^2] of the law."""
+        return self.adhesion.work_of_adhesion
 
     @property
     def maugis_parameter(self) -> float:

@@ -501,11 +501,12 @@ def _history_contact(cylinder, normal_load, friction_stress, friction_coefficien
 def _history_solve(
     cylinder, normal_load, stress, coefficient, name, loads, constant, coulomb, method
 ):
-    """``(F, a, full-slip load, result, law)``: ``loads`` [N/m] through the nondimensional call.
+    """``(F, a, full-slip load, result, law, SI fields)``: ``loads`` [N/m] solved.
 
-    ``constant(tau0/E, loads/(E a))`` or ``coulomb(mu, a/R, loads/(mu F))``; ``law`` is
-    ``"constant"`` or ``"coulomb"``. The loads are refused beyond the solvers' domain here,
-    as ``name`` [N/m] (the nondimensional call would name its group).
+    Through the nondimensional call ``constant(tau0/E, loads/(E a))`` or
+    ``coulomb(mu, a/R, loads/(mu F))``; ``law`` is ``"constant"`` or ``"coulomb"``. The loads
+    are refused beyond the solvers' domain here, as ``name`` [N/m] (the nondimensional call
+    would name its group).
     """
     from ..tangential.history import _T_LIMIT
 
@@ -531,7 +532,8 @@ def _history_solve(
         with _small_strain_in_si():
             r = constant(fr / E, loads / (E * a), method=method)
         full = 2 * a * fr
-    return F, a, full, r, "coulomb" if is_coulomb else "constant"
+    si = to_si(r, Scales.of(cylinder, a=a))
+    return F, a, full, r, "coulomb" if is_coulomb else "constant", si
 
 
 def tangential_history(
@@ -574,18 +576,17 @@ def tangential_history(
 
     self._written("tangential_history")
     T = check_array("tangential_load", tangential_load, low=-np.inf)
-    F, a, full, h, law = _history_solve(
+    solvers = (tangential_history, tangential_history_coulomb)
+    F, a, full, h, law, si = _history_solve(
         self,
         normal_load,
         friction_stress,
         friction_coefficient,
         "tangential_load",
         T,
-        tangential_history,
-        tangential_history_coulomb,
+        *solvers,
         method,
     )
-    si = to_si(h, Scales.of(self, a=a))
     return CylinderTangentialHistory(
         law,
         F,
@@ -638,18 +639,10 @@ def cyclic_loss(
 
     self._written("cyclic_loss")
     A = check_array("amplitude", amplitude, low=0.0, low_inclusive=False)
-    F, a, full, w, law = _history_solve(
-        self,
-        normal_load,
-        friction_stress,
-        friction_coefficient,
-        "amplitude",
-        A,
-        cyclic_loss,
-        cyclic_loss_coulomb,
-        method,
+    solvers = (cyclic_loss, cyclic_loss_coulomb)
+    F, a, full, w, law, si = _history_solve(
+        self, normal_load, friction_stress, friction_coefficient, "amplitude", A, *solvers, method
     )
-    si = to_si(w, Scales.of(self, a=a))
     return CylinderCyclicLoss(
         law,
         F,

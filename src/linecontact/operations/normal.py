@@ -368,10 +368,7 @@ def _cmd_curve_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> T
     if cyl is not None:
         names = {"central_gap": "central_gap_m", "contact_half_width": "a_m"}
         names.update(load="F_N_per_m", error_estimate="error_estimate_N_per_m")
-        extra.update(si_columns(si, names, totals={"load": "F_total_N"}, length=args.length))
-        show += ["a_m", "F_N_per_m"]
-        if args.length is not None:
-            show.append("F_total_N")
+        _curve_si(args, si, names, extra, show)
     show.append("pulloff")
     table = table_from_result(
         c,
@@ -386,6 +383,16 @@ def _cmd_curve_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> T
         show=show,
     )
     return table
+
+
+def _curve_si(
+    args: Inputs, si: Any, names: dict[str, str], extra: dict[str, Any], show: list[str]
+) -> None:
+    """The SI columns ``names`` of a load curve into ``extra``, their totals, and ``show``'s."""
+    extra.update(si_columns(si, names, totals={"load": "F_total_N"}, length=args.length))
+    show += ["a_m", "F_N_per_m"]
+    if args.length is not None:
+        show.append("F_total_N")
 
 
 def _cmd_curve(args: Inputs) -> Table:
@@ -429,10 +436,7 @@ def _cmd_curve(args: Inputs) -> Table:
     if cyl is not None:
         names = {"central_gap": "central_gap_m", "contact_half_width": "a_m"}
         names.update(adhesive_zone_half_width="c_m", load="F_N_per_m")
-        extra.update(si_columns(si, names, totals={"load": "F_total_N"}, length=args.length))
-        show += ["a_m", "F_N_per_m"]
-        if args.length is not None:
-            show.append("F_total_N")
+        _curve_si(args, si, names, extra, show)
     show.append("pulloff")
     table = table_from_result(
         c,
