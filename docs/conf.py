@@ -122,8 +122,9 @@ API_GROUPS: list[tuple[str, str, list[str]]] = [
     (
         "A cylinder on a substrate (SI units)",
         "The entry point: a wire, fibre or tube of radius ``R`` on a substrate, its materials "
-        "and its adhesion; every question below is a method of it.",
-        ["Cylinder", "Material"],
+        "and its adhesion law (a value: the Dugdale step or the Lennard-Jones law); every "
+        "question below is a method of it.",
+        ["Cylinder", "Dugdale", "LennardJones", "Material"],
     ),
     (
         "Materials and the groups of the problem",
