@@ -465,3 +465,25 @@ def test_the_fit_page_takes_a_good_csv_and_says_what_is_wrong_with_a_bad_one(
     text = page.inner_text("#form-error") + page.inner_text("#m-data")
     assert "radius" in text or "column" in text, text
     page.close()
+
+
+def test_every_page_field_is_its_operations_parameter_in_its_unit():
+    """The pages send what the operations declare, in their units (no 1000x without a word)."""
+    from linecontact.web._pages import PAGES, check
+
+    assert check() == []
+    wrong = {
+        name: {**page, "fields": [dict(f) for f in page["fields"]]} for name, page in PAGES.items()
+    }
+    radius = next(f for f in wrong["pulloff"]["fields"] if f["name"] == "radius")
+    radius["kind"] = "modulus"  # a radius sent as a modulus (in Pa)
+    wrong["contact"]["fields"].append({"name": "tip_radius", "kind": "length"})
+    wrong["cycle"] = {
+        **wrong["cycle"],
+        "plot": {"x": {"key": "W_J_per_m", "kind": "force"}, "ys": []},
+    }
+    got = check(wrong)
+    assert any("pulloff: field 'radius' is sent as modulus" in p and "'m'" in p for p in got), got
+    assert any("contact: field 'tip_radius' is no parameter of normal" in p for p in got), got
+    assert any("cycle: plotted 'W_J_per_m' is in 'J/m', drawn as force" in p for p in got), got
+    assert len(got) == 3

@@ -32,6 +32,7 @@ from ._jobs import (
     _with_warnings,
 )
 from ._pages import PAGES, index_html, page_html
+from ._pages import check as check_pages
 from ._params import (
     COMMANDS,
     MAX_POINTS,
@@ -353,6 +354,11 @@ def create_app(
     ASGI application
         Starlette's, behind the Host, Origin and body checks and the security headers.
     """
+    wrong = check_pages()  # a page that disagrees with its operation is never served
+    if wrong:
+        raise RuntimeError(
+            "the calculator's pages disagree with the operations: " + "; ".join(wrong)
+        )
     for name, value in (
         ("max_body", max_body),
         ("max_upload", max_upload),

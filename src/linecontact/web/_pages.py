@@ -17,7 +17,7 @@ from typing import Any
 from .._version import __version__
 from ..presets import material_names
 
-__all__ = ["PAGES", "UNITS", "index_html", "page_html"]
+__all__ = ["PAGES", "SI_UNIT", "UNITS", "check", "index_html", "page_html"]
 
 #: Units a field may be given in: kind -> (unit, factor to SI), the first the default.
 UNITS: dict[str, list[tuple[str, float]]] = {
@@ -269,6 +269,58 @@ PAGES: dict[str, dict[str, Any]] = {
         "mark": {"command": "pulloff", "key": "maugis_parameter", "label": "your wire"},
     },
 }
+
+
+#: The SI unit of each kind of field (the unit its value is sent in).
+SI_UNIT = {
+    "length": "m",
+    "modulus": "Pa",
+    "stress": "Pa",
+    "work": "J/m^2",
+    "force": "N/m",
+    "energy": "J/m",
+    "none": "",
+    "material": "",
+}
+
+
+def check(pages: dict[str, dict[str, Any]] | None = None) -> list[str]:
+    """What in the pages disagrees with the operations they call (empty: nothing).
+
+    Each field must be a parameter of its page's operation (of the marking operation for
+    the map's wire) and its kind's SI unit the unit the declaration gives it; each plotted
+    key's unit, as its name states it, the one of its kind. A page that passes cannot send
+    a value in a unit the operation does not take, nor label a result in another unit.
+    """
+    from .. import operations
+    from ..output import unit_of
+
+    problems = []
+    for name, page in (PAGES if pages is None else pages).items():
+        main = operations.get(page["command"])
+        aux = operations.get(page["mark"]["command"]) if "mark" in page else main
+        for f in page["fields"]:
+            op = aux if f.get("aux") else main
+            try:
+                p = op.parameter(f["name"])
+            except ValueError:
+                problems.append(f"{name}: field {f['name']!r} is no parameter of {op.name}")
+                continue
+            unit = SI_UNIT.get(f["kind"])
+            if unit is None or unit != p.unit:
+                problems.append(
+                    f"{name}: field {f['name']!r} is sent as {f['kind']} ({unit!r}), "
+                    f"{op.name} takes {p.option} in {p.unit or 'no unit'!r}"
+                )
+        plot = page.get("plot") or {}
+        for axis in [plot["x"], *plot["ys"]] if plot else []:
+            stated = unit_of(axis["key"])
+            unit = SI_UNIT.get(axis["kind"])
+            if (stated if stated != "1" else "") != unit:
+                problems.append(
+                    f"{name}: plotted {axis['key']!r} is in {stated!r}, drawn as {axis['kind']}"
+                )
+    return problems
 
 
 def _head(title: str) -> str:
