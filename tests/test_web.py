@@ -487,3 +487,15 @@ def test_every_page_field_is_its_operations_parameter_in_its_unit():
     assert any("contact: field 'tip_radius' is no parameter of normal" in p for p in got), got
     assert any("cycle: plotted 'W_J_per_m' is in 'J/m', drawn as force" in p for p in got), got
     assert len(got) == 3
+
+
+def test_an_error_that_names_its_parameter_is_that_fields(client):
+    """A ParameterError carries its parameter: the answer names it, not a word of the message."""
+    r = client.get("/api/v1/materials?names=ZnO,Unobtainium")
+    assert r.status_code == 422
+    error = r.json()["error"]
+    assert error["parameter"] == "names"
+    assert error["message"].startswith("NAME 'Unobtainium' is not a material preset")
+    ok = client.get("/api/v1/materials?names=ZnO,SiO2&long=true")
+    assert ok.status_code == 200
+    assert [rec["name"] for rec in ok.json()["results"]] == ["ZnO", "SiO2"]

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..errors import ParameterError
 from ..output import Table
 from ..presets import MATERIALS, Material
 from ._declare import Inputs, Operation, Parameter
@@ -18,8 +19,9 @@ def _compute(args: Inputs) -> Table:
             try:
                 mats.append(Material.from_name(name))
             except ValueError:
-                raise ValueError(
-                    f"NAME {name!r} is not a material preset: one of {', '.join(MATERIALS)}"
+                raise ParameterError(
+                    "names",
+                    f"NAME {name!r} is not a material preset: one of {', '.join(MATERIALS)}",
                 ) from None
     else:
         mats = list(MATERIALS.values())

@@ -177,19 +177,23 @@ def _call(command: str, values: dict[str, Any]) -> Outcome:
     words = operations.command_words(op, values)
     inputs = operations.Inputs(op, values, words=[*words, "--json"])
     got: list[Any] = []
-    status, message, said = _guarded(lambda: got.append(op.run(inputs)), lambda t: spell(t, inputs))
+    refused: list[str] = []  # the parameter an error names (a ParameterError's own)
+    status, message, said = _guarded(
+        lambda: got.append(op.run(inputs)), lambda t: spell(t, inputs), refused
+    )
     seconds = time.perf_counter() - start
     if status != 200 or not got:
-        return Outcome(status, flag=_flag_of(message), message=message, warnings=said)
+        return Outcome(status, flag=_flag(op, refused, message), message=message, warnings=said)
     return Outcome(200, body=render(got[0], "json"), warnings=said, seconds=seconds)
 
 
-def _guarded(work: Any, say: Any) -> tuple[int, str, list[str]]:
+def _guarded(work: Any, say: Any, refused: list[str]) -> tuple[int, str, list[str]]:
     """Run ``work()``: its status (200; 422 refused; 500 not converged), message and notes.
 
-    The message and each note (a warning, said once) in the words ``say`` gives them.
+    The message and each note (a warning, said once) in the words ``say`` gives them; the
+    parameter a :class:`~linecontact.errors.ParameterError` names goes into ``refused``.
     """
-    from ..errors import ConvergenceError
+    from ..errors import ConvergenceError, ParameterError
 
     said: list[str] = []
     status, message = 200, ""
@@ -201,11 +205,23 @@ def _guarded(work: Any, say: Any) -> tuple[int, str, list[str]]:
             status, message = 500, say(str(exc))
         except (ValueError, OverflowError) as exc:
             status, message = 422, say(str(exc))
+            if isinstance(exc, ParameterError):
+                refused.append(exc.parameter)
     for w in caught:
         note = say(str(w.message))
         if note not in said:
             said.append(note)
     return status, message, said
+
+
+def _flag(op: Any, refused: list[str], message: str) -> str | None:
+    """The flag of the parameter an error names: a ParameterError's own, else its first flag."""
+    for name in refused:
+        try:
+            return str(op.parameter(name).option)
+        except ValueError:  # a name that is no parameter of the operation
+            pass
+    return _flag_of(message)
 
 
 def _flag_of(message: str) -> str | None:
