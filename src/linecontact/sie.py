@@ -279,7 +279,43 @@ class BoundedSolution:
     extra: NDArray[np.float64] | None = None
 
 
-class BoundedSolver:
+class _Mapped:
+    """A rule on ``[-1, 1]`` mapped onto the interval: its nodes, collocation points, weights.
+
+    The base of the solvers: each sets ``n``, ``interval`` and the rule's ``nodes_unit``,
+    ``collocation_unit`` and ``weights_unit`` on ``[-1, 1]``.
+    """
+
+    n: int
+    interval: tuple[float, float]
+    nodes_unit: NDArray[np.float64]
+    collocation_unit: NDArray[np.float64]
+    weights_unit: NDArray[np.float64]
+
+    def _on(self, n: int, interval: tuple[float, float], n_min: int = 1) -> None:
+        """Check and keep ``n`` and ``interval``, with the interval's half-length and middle."""
+        self.n = _check_n(n, n_min)
+        self.interval = _check_interval(interval)
+        self._half = 0.5 * (self.interval[1] - self.interval[0])
+        self._mid = 0.5 * (self.interval[1] + self.interval[0])
+
+    @property
+    def nodes(self) -> NDArray[np.float64]:
+        """Quadrature nodes on the interval."""
+        return self._mid + self._half * self.nodes_unit
+
+    @property
+    def collocation(self) -> NDArray[np.float64]:
+        """Collocation points on the interval (``n + 1``, ``n`` or ``n - 1``: the solver's)."""
+        return self._mid + self._half * self.collocation_unit
+
+    @property
+    def weights(self) -> NDArray[np.float64]:
+        r"""Weights for :math:`\int_\alpha^\beta \phi\,h\,dt \approx \sum_i W_i g_i h(t_i)`."""
+        return self._half * self.weights_unit
+
+
+class BoundedSolver(_Mapped):
     r"""Collocation solver for solutions bounded at both ends.
 
     Parameters
@@ -310,10 +346,7 @@ class BoundedSolver:
     """
 
     def __init__(self, n: int, interval: tuple[float, float] = (-1.0, 1.0)) -> None:
-        self.n = _check_n(n)
-        self.interval = _check_interval(interval)
-        self._half = 0.5 * (self.interval[1] - self.interval[0])
-        self._mid = 0.5 * (self.interval[1] + self.interval[0])
+        self._on(n, interval)
         self.nodes_unit, self.weights_unit, self.collocation_unit = bounded_rule(self.n)
 
     @property
@@ -325,21 +358,6 @@ class BoundedSolver:
     def _values_from_coef(self) -> NDArray:
         """(n, n) matrix with g = b @ V (built on first use)."""
         return _bounded_operators(self.n)[1]
-
-    @property
-    def nodes(self) -> NDArray[np.float64]:
-        """Quadrature nodes on the interval."""
-        return self._mid + self._half * self.nodes_unit
-
-    @property
-    def collocation(self) -> NDArray[np.float64]:
-        """Collocation points on the interval (``n + 1`` of them)."""
-        return self._mid + self._half * self.collocation_unit
-
-    @property
-    def weights(self) -> NDArray[np.float64]:
-        r"""Weights for :math:`\int_\alpha^\beta \phi\,h\,dt \approx \sum_i W_i g_i h(t_i)`."""
-        return self._half * self.weights_unit
 
     def solve(
         self, f: ArrayLike, extra: ArrayLike | None = None, *, values: bool = True
@@ -528,7 +546,7 @@ def _mu_at_one(n: int) -> NDArray:
     return mu1
 
 
-class EndBoundedSolver:
+class EndBoundedSolver(_Mapped):
     r"""Collocation solver for solutions bounded at one end, unbounded at the other.
 
     Parameters
@@ -551,13 +569,10 @@ class EndBoundedSolver:
     def __init__(
         self, n: int, interval: tuple[float, float] = (-1.0, 1.0), bounded_at: str = "right"
     ) -> None:
-        self.n = _check_n(n)
-        self.interval = _check_interval(interval)
+        self._on(n, interval)
         if bounded_at not in ("right", "left"):
             raise ValueError(f"bounded_at must be 'right' or 'left', got {bounded_at!r}")
         self.bounded_at = bounded_at
-        self._half = 0.5 * (self.interval[1] - self.interval[0])
-        self._mid = 0.5 * (self.interval[1] + self.interval[0])
         i = np.arange(1, self.n + 1)
         t = np.cos(2 * np.pi * i / (2 * self.n + 1))
         x = np.cos(np.pi * (2 * i - 1) / (2 * self.n + 1))
@@ -568,21 +583,6 @@ class EndBoundedSolver:
         self.weights_unit = w
         mat = w[None, :] / (np.pi * (self.nodes_unit[None, :] - self.collocation_unit[:, None]))
         self._lu = _linalg().lu_factor(mat)
-
-    @property
-    def nodes(self) -> NDArray[np.float64]:
-        """Quadrature nodes on the interval."""
-        return self._mid + self._half * self.nodes_unit
-
-    @property
-    def collocation(self) -> NDArray[np.float64]:
-        """Collocation points on the interval (``n`` of them)."""
-        return self._mid + self._half * self.collocation_unit
-
-    @property
-    def weights(self) -> NDArray[np.float64]:
-        r"""Weights for :math:`\int_\alpha^\beta \phi\,h\,dt \approx \sum_i W_i g_i h(t_i)`."""
-        return self._half * self.weights_unit
 
     def solve(self, f: ArrayLike) -> NDArray[np.float64]:
         """Values of ``g`` at the nodes for the right-hand side ``f`` at the collocation points.
@@ -599,7 +599,7 @@ class EndBoundedSolver:
         return np.asarray(g) @ self.weights
 
 
-class UnboundedSolver:
+class UnboundedSolver(_Mapped):
     r"""Collocation solver for solutions unbounded at both ends, with a side condition.
 
     Parameters
@@ -617,10 +617,7 @@ class UnboundedSolver:
     """
 
     def __init__(self, n: int, interval: tuple[float, float] = (-1.0, 1.0)) -> None:
-        self.n = _check_n(n, 2)
-        self.interval = _check_interval(interval)
-        self._half = 0.5 * (self.interval[1] - self.interval[0])
-        self._mid = 0.5 * (self.interval[1] + self.interval[0])
+        self._on(n, interval, 2)
         i = np.arange(1, self.n + 1)
         self.nodes_unit = np.cos((2 * i - 1) * np.pi / (2 * self.n))
         self.weights_unit = np.full(self.n, np.pi / self.n)
@@ -631,21 +628,6 @@ class UnboundedSolver:
         )
         mat[-1] = self.weights_unit * self._half
         self._lu = _linalg().lu_factor(mat)
-
-    @property
-    def nodes(self) -> NDArray[np.float64]:
-        """Quadrature nodes on the interval."""
-        return self._mid + self._half * self.nodes_unit
-
-    @property
-    def collocation(self) -> NDArray[np.float64]:
-        """Collocation points on the interval (``n - 1`` of them)."""
-        return self._mid + self._half * self.collocation_unit
-
-    @property
-    def weights(self) -> NDArray[np.float64]:
-        r"""Weights for :math:`\int_\alpha^\beta \phi\,h\,dt \approx \sum_i W_i g_i h(t_i)`."""
-        return self._half * self.weights_unit
 
     def solve(self, f: ArrayLike, resultant: ArrayLike) -> NDArray[np.float64]:
         r"""Values of ``g`` at the nodes.
