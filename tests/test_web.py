@@ -499,3 +499,41 @@ def test_an_error_that_names_its_parameter_is_that_fields(client):
     ok = client.get("/api/v1/materials?names=ZnO,SiO2&long=true")
     assert ok.status_code == 200
     assert [rec["name"] for rec in ok.json()["results"]] == ["ZnO", "SiO2"]
+
+
+@pytest.mark.parametrize(
+    ("command", "query", "field"),
+    [
+        ("pulloff", "radius=-5e-8&modulus=1e11&work_of_adhesion=0.3&z0=3e-10", "radius"),
+        (
+            "cycle",
+            "radius=5e-8&modulus=1e11&work_of_adhesion=0.3&z0=3e-10&load=1&tau0=1e7"
+            "&tangential_amplitude=-0.1",
+            "tangential_amplitude",  # the library's "amplitude", the operation's field
+        ),
+        ("normal", "R_over_h=100&sigma0_over_E=0.01&F_over_Eh=nan", "F_over_Eh"),
+    ],
+)
+def test_a_library_refusal_names_the_field_it_carries(command, query, field):
+    """The library's checks raise a ParameterError with the parameter's name: the API's field."""
+    from urllib.parse import parse_qsl
+
+    from linecontact.web._jobs import _name
+    from linecontact.web._params import values_of
+    from linecontact.web._workers import compute
+
+    out = compute(command, values_of(command, parse_qsl(query)))
+    assert out.status == 422
+    assert _name(out.flag) == field
+
+
+def test_the_field_is_the_errors_own_not_the_first_flag_of_its_message():
+    from linecontact import operations
+    from linecontact.web._workers import _flag
+
+    op = operations.get("cycle")
+    message = "--load 1 N/m gives a contact too narrow for amplitude 0.1"
+    assert _flag(op, {}, ["amplitude"], message) == "--tangential-amplitude"  # library name
+    assert _flag(op, {}, ["tau0"], message) == "--tau0"  # the operation's own
+    assert _flag(op, {}, [], message) == "--load"  # no name carried: the message's flag
+    assert _flag(op, {}, ["no_such_name"], message) == "--load"

@@ -1,4 +1,8 @@
-"""Input checks at the public boundary: every message names the parameter and its range."""
+"""Input checks at the public boundary: every message names the parameter and its range.
+
+A refused value raises :class:`~linecontact.errors.ParameterError` (a ``ValueError``) that
+carries the parameter's name as the caller gave it: each shell says it in its spelling.
+"""
 
 from __future__ import annotations
 
@@ -7,6 +11,8 @@ from typing import Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
+
+from .errors import ParameterError
 
 
 def _first_bad(arr: NDArray, bad: NDArray) -> object:
@@ -26,16 +32,17 @@ def _real_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
     if value.__class__ is np.ndarray and value.dtype == np.float64:
         return value
     if value is None or isinstance(value, (bool, np.bool_, str, bytes)):
-        raise ValueError(_not_real(name, value))
+        raise ParameterError(name, _not_real(name, value))
     if isinstance(value, np.ma.MaskedArray):  # np.asarray would drop the mask silently
-        raise ValueError(
+        raise ParameterError(
+            name,
             f"{name} is a masked array: masked arrays are not supported: fill or compress "
-            "them first (numpy.ma.filled, numpy.ma.compressed)"
+            "them first (numpy.ma.filled, numpy.ma.compressed)",
         )
     try:
         raw = np.asarray(value)
     except (TypeError, ValueError):  # ragged nested sequences
-        raise ValueError(_not_real(name, value)) from None
+        raise ParameterError(name, _not_real(name, value)) from None
     if raw.dtype.kind not in "iuf":
         # object arrays of plain numbers (e.g. [1, 2.5] of mixed Python types) are fine
         if raw.dtype.kind != "O" or not all(
@@ -43,13 +50,14 @@ def _real_array(name: str, value: ArrayLike) -> NDArray[np.float64]:
             and not isinstance(v, (bool, np.bool_))
             for v in raw.flat
         ):
-            raise ValueError(_not_real(name, value))
+            raise ParameterError(name, _not_real(name, value))
     try:
         return np.asarray(raw, dtype=float)
     except OverflowError:  # a Python integer beyond the float range (10**400)
-        raise ValueError(
+        raise ParameterError(
+            name,
             f"{name} must be a real number within the floating-point range, got an integer "
-            "beyond it"
+            "beyond it",
         ) from None
 
 
@@ -113,13 +121,13 @@ def check_array(
     # "a finite number in (-inf, inf)" says no more than "a finite number"
     in_rng = "" if np.isinf(low) and np.isinf(high) else f" in {rng}"
     if arr.size == 0:
-        raise ValueError(f"{name} must not be empty")
+        raise ParameterError(name, f"{name} must not be empty")
     nan = np.isnan(arr)
     if nan.any():
-        raise ValueError(f"{name} must be a finite number{in_rng}, got nan")
+        raise ParameterError(name, f"{name} must be a finite number{in_rng}, got nan")
     if not allow_inf and np.isinf(arr).any():
-        raise ValueError(
-            f"{name} must be a finite number{in_rng}, got {_first_bad(arr, np.isinf(arr))}"
+        raise ParameterError(
+            name, f"{name} must be a finite number{in_rng}, got {_first_bad(arr, np.isinf(arr))}"
         )
     too_low = arr < low if low_inclusive else arr <= low
     too_high = arr > high if high_inclusive else arr >= high
@@ -127,7 +135,7 @@ def check_array(
         too_high = np.zeros_like(too_low)
     bad = too_low | too_high
     if bad.any():
-        raise ValueError(f"{name} must be in {rng}, got {_first_bad(arr, bad)}")
+        raise ParameterError(name, f"{name} must be in {rng}, got {_first_bad(arr, bad)}")
     return arr
 
 
@@ -144,9 +152,10 @@ def positions(name: str, value: ArrayLike, points_shape: tuple) -> NDArray[np.fl
     except ValueError:
         ok = False
     if not ok:
-        raise ValueError(
+        raise ParameterError(
+            name,
             f"{name} must have shape (m,) or broadcast to the points' shape plus "
-            f"one axis, {want}, got shape {x.shape}"
+            f"one axis, {want}, got shape {x.shape}",
         )
     return x
 
@@ -159,7 +168,9 @@ def scalar(name: str, value: ArrayLike, **limits) -> float:
     """
     arr = check_array(name, value, **limits)
     if arr.ndim != 0:
-        raise ValueError(f"{name} must be a single number, got an array of shape {arr.shape}")
+        raise ParameterError(
+            name, f"{name} must be a single number, got an array of shape {arr.shape}"
+        )
     return float(arr)
 
 

@@ -183,7 +183,8 @@ def _call(command: str, values: dict[str, Any]) -> Outcome:
     )
     seconds = time.perf_counter() - start
     if status != 200 or not got:
-        return Outcome(status, flag=_flag(op, refused, message), message=message, warnings=said)
+        flag = _flag(op, inputs.said_as, refused, message)
+        return Outcome(status, flag=flag, message=message, warnings=said)
     return Outcome(200, body=render(got[0], "json"), warnings=said, seconds=seconds)
 
 
@@ -214,13 +215,23 @@ def _guarded(work: Any, say: Any, refused: list[str]) -> tuple[int, str, list[st
     return status, message, said
 
 
-def _flag(op: Any, refused: list[str], message: str) -> str | None:
-    """The flag of the parameter an error names: a ParameterError's own, else its first flag."""
+def _flag(op: Any, said_as: dict[str, str], refused: list[str], message: str) -> str | None:
+    """The flag of the parameter an error names: a ParameterError's own, else its first flag.
+
+    The library's name (``normal_load``) is the operation's parameter it stands for in this
+    call (``said_as``), or of the same name, or of the flag the command line gives it.
+    """
+    from ..operations._messages import API_FLAGS
+
     for name in refused:
-        try:
-            return str(op.parameter(name).option)
-        except ValueError:  # a name that is no parameter of the operation
-            pass
+        key = name.lstrip("-").replace("-", "_")
+        for candidate in (said_as.get(key), key, API_FLAGS.get(key, "")[2:].replace("-", "_")):
+            if not candidate or candidate.startswith("--"):
+                continue
+            try:
+                return str(op.parameter(candidate).option)
+            except ValueError:  # no parameter of the operation
+                continue
     return _flag_of(message)
 
 
