@@ -19,6 +19,7 @@ import numpy as np
 
 from ..cylinder import Cylinder
 from ..domain import check_si
+from ..errors import ParameterError
 from ..laws import LennardJones
 from ..output import Table
 from ..presets import Material, material_names
@@ -195,7 +196,7 @@ SI_KEYS = (
 
 def _positive(flag: str, value: float | None) -> None:
     if value is not None and not (math.isfinite(value) and value > 0):
-        raise ValueError(f"{flag} must be a finite number > 0, got {value!r}")
+        raise ParameterError(flag, f"{flag} must be a finite number > 0, got {value!r}")
 
 
 def _work_flag(range_flag: str) -> str:
@@ -420,7 +421,9 @@ def half_widths(args: Any, cyl: Cylinder | None, load_attr: str):
         a = np.asarray(args.a, float)
         if not np.all(np.isfinite(a) & (a > 0)):
             bad = a[~(np.isfinite(a) & (a > 0))][0]
-            raise ValueError(f"--half-width must be a finite number > 0, got {bad!r}")
+            raise ParameterError(
+                "--half-width", f"--half-width must be a finite number > 0, got {bad!r}"
+            )
         key = "sliding_a_over_R" if load_attr == "F_over_Eh2" else "a_over_R"
         check_si("--half-width", a, cyl.radius, key, "m")  # type: ignore[union-attr]
         return a

@@ -12,6 +12,7 @@ from typing import Any
 
 import numpy as np
 
+from ..errors import ParameterError
 from ..measurements import read_measurements
 from ..output import Table
 from ._common import cylinder as _cylinder
@@ -36,9 +37,11 @@ def _sd(text: str) -> tuple[float, bool]:
 def _check_common(args: Any) -> None:
     """--samples, --seed and --plot, before any work."""
     if not 10 <= args.samples <= 1_000_000:
-        raise ValueError(f"--samples must be an integer in [10, 1000000], got {args.samples}")
+        raise ParameterError(
+            "--samples", f"--samples must be an integer in [10, 1000000], got {args.samples}"
+        )
     if args.seed < 0:
-        raise ValueError(f"--seed must be an integer >= 0, got {args.seed}")
+        raise ParameterError("--seed", f"--seed must be an integer >= 0, got {args.seed}")
     if args.plot:
         parent = os.path.dirname(os.path.abspath(args.plot))
         if not os.path.isdir(parent):
@@ -55,7 +58,9 @@ def _modulus(args: Any) -> tuple[float, dict[str, Any]]:
                 "give either --modulus or the materials (--E1 ... or presets), not both"
             )
         if not (math.isfinite(args.modulus) and args.modulus > 0):
-            raise ValueError(f"--modulus must be a finite number > 0, got {args.modulus!r}")
+            raise ParameterError(
+                "--modulus", f"--modulus must be a finite number > 0, got {args.modulus!r}"
+            )
         return args.modulus, {"modulus_Pa": args.modulus}
     # the SI layer's reader of the materials and presets (a radius and a range of its own,
     # unused: the radius given is checked where it is used, with the adhesion given)
@@ -86,9 +91,11 @@ def _one_sd(args, name: str, value: float | None) -> float:
     try:
         v, rel = _sd(text)
     except ValueError:
-        raise ValueError(f"{flag} must be a number or a percentage (5%), got {text!r}") from None
+        raise ParameterError(
+            flag, f"{flag} must be a number or a percentage (5%), got {text!r}"
+        ) from None
     if not (math.isfinite(v) and v >= 0):
-        raise ValueError(f"{flag} must be finite and >= 0, got {text!r}")
+        raise ParameterError(flag, f"{flag} must be finite and >= 0, got {text!r}")
     if value is None:
         raise ValueError(f"{flag} needs --{name.replace('_', '-')}")
     if not math.isfinite(value):  # the value's fault, not its uncertainty's

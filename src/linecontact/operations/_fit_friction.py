@@ -12,6 +12,7 @@ from typing import Any
 import numpy as np
 
 from .. import inverse as inv
+from ..errors import ParameterError
 from ..output import Table
 from ._fit_common import (
     _ESTIMATE,
@@ -45,7 +46,9 @@ def _friction_from_width(args: Any) -> Table:
             f"--friction-force must be a finite number > 0, got {args.friction_force!r}"
         )
     if not (math.isfinite(args.half_width) and args.half_width > 0):
-        raise ValueError(f"--half-width must be a finite number > 0, got {args.half_width!r}")
+        raise ParameterError(
+            "--half-width", f"--half-width must be a finite number > 0, got {args.half_width!r}"
+        )
     if args.receding_work_of_adhesion is not None and args.work_of_adhesion is None:
         raise ValueError("--work-of-adhesion-receding needs the advancing --work-of-adhesion")
     model = [
@@ -139,7 +142,9 @@ def run_friction(args: Any) -> Table:
             "(with the modulus or the materials)"
         )
     if args.length is not None and not (math.isfinite(args.length) and args.length > 0):
-        raise ValueError(f"--length must be a finite number > 0, got {args.length!r}")
+        raise ParameterError(
+            "--length", f"--length must be a finite number > 0, got {args.length!r}"
+        )
     if args.data is not None:
         if args.friction_force is not None or args.normal_load is not None:
             raise ValueError("give either --data FILE or one measurement (--load, ...)")

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .._progress import _isatty
+from ..errors import ParameterError
 from ..output import Table, table_from_result
 from ._declare import Entry, Inputs, Operation, Parameter
 
@@ -120,9 +121,11 @@ def grid(args: Inputs) -> tuple[np.ndarray, np.ndarray]:
 
     hi = domain_mu_max()
     if not (0.0 < args.tol < 1.0):  # also refuses nan
-        raise ValueError(f"--tol must be a number in (0, 1), got {args.tol!r}")
+        raise ParameterError("--tol", f"--tol must be a number in (0, 1), got {args.tol!r}")
     if args.workers is not None and args.workers < 1:
-        raise ValueError(f"--workers must be an integer >= 1, got {args.workers!r}")
+        raise ParameterError(
+            "--workers", f"--workers must be an integer >= 1, got {args.workers!r}"
+        )
     lo = MU_MIN if args.mu_min is None else args.mu_min
     top = min(MU_MAX, hi) if args.mu_max is None else args.mu_max
     if args.quick and args.mu_min is None:
@@ -136,15 +139,15 @@ def grid(args: Inputs) -> tuple[np.ndarray, np.ndarray]:
                 f"Lennard-Jones solver), got {v!r}"
             )
     if not lo < top:
-        raise ValueError(f"--mu-min must be below --mu-max, got {lo!r} >= {top!r}")
+        raise ParameterError("--mu-min", f"--mu-min must be below --mu-max, got {lo!r} >= {top!r}")
     for flag, v in (("--n-mu", args.n_mu), ("--n-y", args.n_y)):
         if args.quick and v is not None:
             raise ValueError(f"give either --quick or {flag}, not both")
     n = args.n_mu
     if n is not None and not 2 <= n <= 64:
-        raise ValueError(f"--n-mu must be an integer in [2, 64], got {n!r}")
+        raise ParameterError("--n-mu", f"--n-mu must be an integer in [2, 64], got {n!r}")
     if args.n_y is not None and not 2 <= args.n_y <= 1000:
-        raise ValueError(f"--n-y must be an integer in [2, 1000], got {args.n_y!r}")
+        raise ParameterError("--n-y", f"--n-y must be an integer in [2, 1000], got {args.n_y!r}")
     y_max = args.y_max
     if y_max is not None and not (math.isfinite(y_max) and Y_RANGE[0] < y_max <= 1e3):
         raise ValueError(

@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 
 from .. import inverse as inv
+from ..errors import ParameterError
 from ..measurements import per_length
 from ..output import Table
 from ._declare import Entry, Inputs, Operation, Parameter
@@ -77,7 +78,9 @@ def _cmd_adhesion(args: Inputs) -> Table:
     E, mat = _modulus(args)
     params: dict[str, Any] = dict(mat)
     if args.length is not None and not (math.isfinite(args.length) and args.length > 0):
-        raise ValueError(f"--length must be a finite number > 0, got {args.length!r}")
+        raise ParameterError(
+            "--length", f"--length must be a finite number > 0, got {args.length!r}"
+        )
     if args.data is not None:
         if args.pull_off_force is not None or args.radius is not None:
             raise ValueError(

@@ -8,6 +8,7 @@ import numpy as np
 
 from ..closed_forms import kappa, maugis_parameter
 from ..cylinder import Cylinder, _si_load_curve
+from ..errors import ParameterError
 from ..laws import lennard_jones as _lj
 from ..normal import NormalContact, contact_for_load, load_curve, normal_contact, pull_off
 from ..output import Table, table_from_result
@@ -341,7 +342,9 @@ def _cmd_curve_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> T
         if args.F_max_over_Eh is not None:
             raise ValueError("give either --F-max-over-Eh or --F-max [N/m], not both")
         if not (np.isfinite(args.F_max) and args.F_max > 0):
-            raise ValueError(f"--F-max must be a finite load > 0 [N/m], got {args.F_max!r}")
+            raise ParameterError(
+                "--F-max", f"--F-max must be a finite load > 0 [N/m], got {args.F_max!r}"
+            )
     elif cyl is not None and F_max is not None:
         raise ValueError("--F-max-over-Eh is nondimensional: with SI inputs give --F-max [N/m]")
     si: Any = None
@@ -408,7 +411,7 @@ def _cmd_curve(args: Inputs) -> Table:
     args.num_noncontact = 40 if args.num_noncontact is None else args.num_noncontact
     for flag, v in (("--num", args.num), ("--num-noncontact", args.num_noncontact)):
         if not 2 <= v <= MAX_POINTS:
-            raise ValueError(f"{flag} must be an integer in [2, {MAX_POINTS}], got {v!r}")
+            raise ParameterError(flag, f"{flag} must be an integer in [2, {MAX_POINTS}], got {v!r}")
     if cyl is None and args.a_max is not None:
         raise ValueError("--a-max [m] is an SI input: give --radius and the materials too")
     n = dict(num=args.num, num_noncontact=args.num_noncontact)

@@ -14,7 +14,7 @@ import numpy as np
 
 from ..cylinder import _check_cylinder_si, _plausible, hysteresis_adhesion
 from ..domain import SCALE_WORDS, check_si
-from ..errors import ModelValidityWarning, NoEquilibriumError
+from ..errors import ModelValidityWarning, NoEquilibriumError, ParameterError
 from ..output import Table, table_from_result
 from ..push import push
 from ..sliding import sliding_pull_off
@@ -105,7 +105,7 @@ def _cmd_push(args: Inputs) -> Table:
         if not np.all(ok):
             bad = float(heights[~ok][0])
             rng = f"(0, {diameter:g})" if tip else f"[0, {diameter:g}]"
-            raise ValueError(f"{flag} must be in {rng} m (2R), got {bad!r}")
+            raise ParameterError(flag, f"{flag} must be in {rng} m (2R), got {bad!r}")
         load = 0.0 if args.load is None else args.load
         check_si("--load", load, Eh, "F_over_Eh2", "N/m")
         if args.push is not None:
@@ -224,7 +224,7 @@ def _works_to_ranges(args: Inputs) -> None:
         ("--modulus", args.modulus),
     ):  # each by itself before they are combined (a radius nan: not a bad ratio)
         if v is not None and not (np.isfinite(v) and v > 0):
-            raise ValueError(f"{flag} must be a finite number > 0, got {v!r}")
+            raise ParameterError(flag, f"{flag} must be a finite number > 0, got {v!r}")
     if w2 > w1:
         raise ValueError(
             f"--work-of-adhesion-advancing must be <= --work-of-adhesion-receding (the "

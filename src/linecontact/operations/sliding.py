@@ -14,6 +14,7 @@ import numpy as np
 
 from ..cylinder import sliding_pull_off_force
 from ..domain import check_si
+from ..errors import ParameterError
 from ..output import Table, table_from_result
 from ..sliding import sliding_contact, sliding_contact_for_load, sliding_pull_off
 from ._common import (
@@ -69,9 +70,9 @@ def _setup(args: Inputs):
         return args.R_over_h2, args.h1_over_h2, args.sigma0_over_E, args.tau0_over_E, None
     cyl = cylinder(args, range_flag="--h2")
     if args.h1 is not None and not (np.isfinite(args.h1) and args.h1 > 0):
-        raise ValueError(f"--h1 must be a finite number > 0, got {args.h1!r}")
+        raise ParameterError("--h1", f"--h1 must be a finite number > 0, got {args.h1!r}")
     if args.tau0 is not None and not (np.isfinite(args.tau0) and args.tau0 >= 0):
-        raise ValueError(f"--tau0 must be a finite number >= 0, got {args.tau0!r}")
+        raise ParameterError("--tau0", f"--tau0 must be a finite number >= 0, got {args.tau0!r}")
     if args.h1 is not None:
         check_si("--h1", args.h1, cyl.scale("h"), "h1_over_h2", "m")
     if args.tau0 is not None:
