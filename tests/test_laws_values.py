@@ -21,7 +21,7 @@ R, E, W, Z0 = 50e-9, 100e9, 0.1, 0.3e-9
 
 
 def test_a_law_takes_either_spelling_and_matches_maugis():
-    by_work = Dugdale(W, Z0)
+    by_work = Dugdale(work_of_adhesion=W, equilibrium_spacing=Z0)
     s0 = MAUGIS_STRENGTH * W / Z0  # Maugis: the peak tension of the Lennard-Jones law
     assert by_work.cohesive_stress == pytest.approx(s0, rel=1e-15)
     assert by_work.adhesion_range == pytest.approx(W / s0, rel=1e-15)
@@ -54,6 +54,8 @@ def test_a_law_takes_either_spelling_and_matches_maugis():
     ],
 )
 def test_a_law_refuses_bad_parameters_by_name(kwargs, message):
+    with pytest.raises(TypeError):
+        Dugdale(W, Z0)  # type: ignore[misc]  # (w, h) or (w, z0)? keywords say which
     for law in (Dugdale, LennardJones):
         with pytest.raises(ValueError, match=message):
             law(**kwargs)
@@ -70,7 +72,7 @@ def test_the_cylinder_solves_under_its_law():
     )
     # and the one of the Dugdale cylinder of the same adhesion, put under the law
     dug = Cylinder.from_modulus(R, E, work_of_adhesion=W, equilibrium_spacing=Z0)
-    assert dug.adhesion == Dugdale(W, Z0)
+    assert dug.adhesion == Dugdale(work_of_adhesion=W, equilibrium_spacing=Z0)
     assert dug.under(LennardJones).pull_off().pull_off_force == p.pull_off_force
     assert dug.under(LennardJones).under(Dugdale) == dug
     # the Dugdale pull-off is another number (the laws differ at this Maugis parameter)
@@ -123,13 +125,17 @@ def test_the_table_of_problems_is_the_cylinders_methods():
 
 def test_a_law_is_given_once():
     with pytest.raises(ValueError, match="give adhesion either as a law"):
-        Cylinder.from_modulus(R, E, adhesion=Dugdale(W, Z0), work_of_adhesion=W)
+        Cylinder.from_modulus(
+            R, E, adhesion=Dugdale(work_of_adhesion=W, equilibrium_spacing=Z0), work_of_adhesion=W
+        )
     with pytest.raises(ValueError, match="adhesion must be a law"):
         Cylinder.from_modulus(R, E, adhesion=(W, Z0))  # type: ignore[arg-type]
     with pytest.raises(ValueError, match="adhesion must be a law"):
         Cylinder(R, E, 1e9)  # type: ignore[arg-type]
     with pytest.raises(ValueError, match="max_load ends the load curve of the Lennard-Jones law"):
-        Cylinder.from_modulus(R, E, adhesion=Dugdale(W, Z0)).load_curve(max_load=1.0)
+        Cylinder.from_modulus(
+            R, E, adhesion=Dugdale(work_of_adhesion=W, equilibrium_spacing=Z0)
+        ).load_curve(max_load=1.0)
 
 
 def test_the_presets_take_a_law():

@@ -162,8 +162,8 @@ class Cylinder:
         cohesive_stress, adhesion_range, work_of_adhesion, equilibrium_spacing = adhesion
         if law is None:
             law = Dugdale(
-                work_of_adhesion,
-                equilibrium_spacing,
+                work_of_adhesion=work_of_adhesion,
+                equilibrium_spacing=equilibrium_spacing,
                 cohesive_stress=cohesive_stress,
                 adhesion_range=adhesion_range,
             )

@@ -24,6 +24,10 @@ __all__ = ["Dugdale", "Law", "LennardJones"]
 class Law:
     r"""An adhesion law and its SI parameters (the base of :class:`Dugdale`, :class:`LennardJones`).
 
+    The parameters are keywords (``Dugdale(0.1, 3e-10)`` would leave open whether ``3e-10`` is
+    the range ``h`` or the spacing ``z0``, which differ by 2.6 %); :class:`LennardJones` also
+    takes its own ``(w, z0)`` in order.
+
     Parameters
     ----------
     work_of_adhesion, equilibrium_spacing : float, optional
@@ -49,9 +53,9 @@ class Law:
 
     def __init__(
         self,
+        *,
         work_of_adhesion: float | None = None,
         equilibrium_spacing: float | None = None,
-        *,
         cohesive_stress: float | None = None,
         adhesion_range: float | None = None,
     ) -> None:
@@ -95,7 +99,7 @@ class Dugdale(Law):
     --------
     >>> Dugdale(cohesive_stress=1e9, adhesion_range=0.5e-9).work_of_adhesion
     0.5
-    >>> law = Dugdale(0.1, 0.3e-9)  # (w, z0): the Maugis matching
+    >>> law = Dugdale(work_of_adhesion=0.1, equilibrium_spacing=0.3e-9)  # the Maugis matching
     >>> round(law.adhesion_range / 0.3e-9, 4)
     0.9743
     """
@@ -117,6 +121,21 @@ class LennardJones(Law):
     """
 
     name: ClassVar[str] = "lennard-jones"
+
+    def __init__(
+        self,
+        work_of_adhesion: float | None = None,
+        equilibrium_spacing: float | None = None,
+        *,
+        cohesive_stress: float | None = None,
+        adhesion_range: float | None = None,
+    ) -> None:
+        super().__init__(
+            work_of_adhesion=work_of_adhesion,
+            equilibrium_spacing=equilibrium_spacing,
+            cohesive_stress=cohesive_stress,
+            adhesion_range=adhesion_range,
+        )
 
 
 #: The laws by name (the operations' ``law``).
