@@ -99,6 +99,10 @@ def test_the_cylinder_solves_under_its_law():
         ("sliding", lambda c: c.sliding(h1_over_h2=2.0, load=0.05)),
         ("the contact with contact_half_width", lambda c: c.contact(contact_half_width=5e-9)),
         (
+            "the contact with contact_half_width",
+            lambda c: c.contact(contact_half_width=[5e-9, 6e-9]),  # an array: refused too
+        ),
+        (
             "the contact with contact_half_width, method",
             lambda c: c.contact(contact_half_width=5e-9, method="collocation"),
         ),

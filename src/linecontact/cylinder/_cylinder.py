@@ -429,12 +429,12 @@ class Cylinder:
         if isinstance(self.adhesion, LennardJones):
             given = [
                 k
-                for k, v, default in (
-                    ("contact_half_width", contact_half_width, None),
-                    ("method", method, "closed-form"),
-                    ("branch", branch, "stable"),
+                for k, other in (
+                    ("contact_half_width", contact_half_width is not None),
+                    ("method", method != "closed-form"),
+                    ("branch", branch != "stable"),
                 )
-                if v is not default and v != default
+                if other
             ]
             if given:
                 self._not_written(f"the contact with {', '.join(given)}")
@@ -721,12 +721,12 @@ class Cylinder:
         if isinstance(self.adhesion, LennardJones):
             given = [
                 k
-                for k, v, default in (
-                    ("max_half_width", max_half_width, None),
-                    ("num", num, 200),
-                    ("num_noncontact", num_noncontact, 40),
+                for k, other in (
+                    ("max_half_width", max_half_width is not None),
+                    ("num", num != 200),
+                    ("num_noncontact", num_noncontact != 40),
                 )
-                if v is not default and v != default
+                if other
             ]
             if given:
                 self._not_written(f"the load curve with {', '.join(given)}")
