@@ -136,6 +136,13 @@ def test_a_law_is_given_once():
         Cylinder.from_modulus(R, E, adhesion=(W, Z0))  # type: ignore[arg-type]
     with pytest.raises(ValueError, match="adhesion must be a law"):
         Cylinder(R, E, 1e9)  # type: ignore[arg-type]
+    cyl = Cylinder.from_modulus(R, E, work_of_adhesion=W, equilibrium_spacing=Z0)
+    for bad in ("lennard-jones", LennardJones(W, Z0), float):
+        with pytest.raises(ValueError, match=r"^law must be a law's class"):
+            cyl.under(bad)  # type: ignore[arg-type]
+    with pytest.raises(TypeError):
+        LennardJones(W, Z0, range=1e-9)  # type: ignore[call-arg]  # no such parameter
+    assert LennardJones(cohesive_stress=1e9, adhesion_range=1e-9).work_of_adhesion == 1.0
     with pytest.raises(ValueError, match="max_load ends the load curve of the Lennard-Jones law"):
         Cylinder.from_modulus(
             R, E, adhesion=Dugdale(work_of_adhesion=W, equilibrium_spacing=Z0)

@@ -496,6 +496,11 @@ def test_an_error_that_names_its_parameter_is_that_fields(client):
     error = r.json()["error"]
     assert error["parameter"] == "names"
     assert error["message"].startswith("NAME 'Unobtainium' is not a material preset")
+    spec = client.get("/api/v1/openapi.json").json()
+    names = next(
+        q for q in spec["paths"]["/api/v1/materials"]["get"]["parameters"] if q["name"] == "names"
+    )
+    assert "the CLI's NAME ..." in names["description"]  # a positional: no --names flag
     ok = client.get("/api/v1/materials?names=ZnO,SiO2&long=true")
     assert ok.status_code == 200
     assert [rec["name"] for rec in ok.json()["results"]] == ["ZnO", "SiO2"]

@@ -427,17 +427,12 @@ class Cylinder:
             raise ValueError("give exactly one of contact_half_width or load")
         policy = failure_policy(on_failure)
         if isinstance(self.adhesion, LennardJones):
-            given = [
-                k
-                for k, other in (
-                    ("contact_half_width", contact_half_width is not None),
-                    ("method", method != "closed-form"),
-                    ("branch", branch != "stable"),
-                )
-                if other
-            ]
-            if given:
-                self._not_written(f"the contact with {', '.join(given)}")
+            self._dugdale_only(
+                "the contact",
+                contact_half_width=contact_half_width is not None,
+                method=method != "closed-form",
+                branch=branch != "stable",
+            )
             self._check_lennard_jones()
             return self._for_load_lj("load", load, policy)  # type: ignore[arg-type,return-value]
         if method not in ("closed-form", "collocation"):
@@ -582,6 +577,8 @@ class Cylinder:
         >>> round(cyl.under(LennardJones).pull_off().pull_off_force, 3)
         -3.107
         """
+        if not (isinstance(law, type) and issubclass(law, Law)):
+            raise ValueError(f"law must be a law's class (Dugdale or LennardJones), got {law!r}")
         token = _CHECKED.set(True)  # checked when it was built
         try:
             return type(self)(
@@ -607,6 +604,12 @@ class Cylinder:
         """Refuse ``problem`` where it is not written for this cylinder's law."""
         if not isinstance(self.adhesion, self.WRITTEN[problem]):
             self._not_written(problem)
+
+    def _dugdale_only(self, problem: str, **given: bool) -> None:
+        """Refuse ``problem`` with the Dugdale law's keywords ``given`` (True: given)."""
+        named = [k for k, v in given.items() if v]
+        if named:
+            self._not_written(f"{problem} with {', '.join(named)}")
 
     def _not_written(self, problem: str) -> None:
         """Refuse ``problem``: it is not written for this geometry under this law."""
@@ -719,17 +722,12 @@ class Cylinder:
         ``num_noncontact`` are the Dugdale law's, ``max_load`` the Lennard-Jones law's.
         """
         if isinstance(self.adhesion, LennardJones):
-            given = [
-                k
-                for k, other in (
-                    ("max_half_width", max_half_width is not None),
-                    ("num", num != 200),
-                    ("num_noncontact", num_noncontact != 40),
-                )
-                if other
-            ]
-            if given:
-                self._not_written(f"the load curve with {', '.join(given)}")
+            self._dugdale_only(
+                "the load curve",
+                max_half_width=max_half_width is not None,
+                num=num != 200,
+                num_noncontact=num_noncontact != 40,
+            )
             return self._load_curve_lj(max_load)
         if max_load is not None:
             raise ValueError(

@@ -126,15 +126,13 @@ class LennardJones(Law):
         self,
         work_of_adhesion: float | None = None,
         equilibrium_spacing: float | None = None,
-        *,
-        cohesive_stress: float | None = None,
-        adhesion_range: float | None = None,
+        **dugdale_step: float | None,
     ) -> None:
+        # its own (w, z0) in order; the step (cohesive_stress, adhesion_range) as keywords
         super().__init__(
             work_of_adhesion=work_of_adhesion,
             equilibrium_spacing=equilibrium_spacing,
-            cohesive_stress=cohesive_stress,
-            adhesion_range=adhesion_range,
+            **dugdale_step,
         )
 
 

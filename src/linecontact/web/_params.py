@@ -81,7 +81,7 @@ def parameters_of(command: str) -> list[dict[str, Any]]:
     return [
         {
             "name": p.key,
-            "flag": p.option,
+            "flag": f"{p.metavar} ..." if p.positional else p.option,  # materials NAME ...
             "kind": _KINDS[p.kind],
             "many": p.many != "one",
             "choices": list(p.choices) if p.choices else None,
