@@ -45,7 +45,7 @@ from .lennard_jones import (  # lj_groups, pull_off_of: defined there, re-export
     maugis_parameter_of_mu,
     pull_off_of,
 )
-from .results import Result, as_output
+from .results import SI, Result, as_output
 
 __all__ = [
     "LJ_LOAD_MAX",
@@ -103,17 +103,11 @@ class LennardJonesLoadCurve(Result):
     """
 
     inputs: ClassVar[tuple[str, ...]] = _INPUTS
-    si: ClassVar[dict[str, tuple[str, str, str]]] = {
-        "central_gap_over_h": ("central_gap", "h", "m"),
-        "a_over_R": ("contact_half_width", "R", "m"),
-        "F_over_Eh": ("load", "Eh", "N/m"),
-        "error_estimate_over_Eh": ("error_estimate", "Eh", "N/m"),
-    }
 
-    F_over_Eh: NDArray
-    a_over_R: NDArray
-    central_gap_over_h: NDArray
-    error_estimate_over_Eh: NDArray
+    F_over_Eh: NDArray = field(metadata=SI("load", "Eh", "N/m"))
+    a_over_R: NDArray = field(metadata=SI("contact_half_width", "R", "m"))
+    central_gap_over_h: NDArray = field(metadata=SI("central_gap", "h", "m"))
+    error_estimate_over_Eh: NDArray = field(metadata=SI("error_estimate", "Eh", "N/m"))
     stable: NDArray
     turning_point: NDArray
     mu: float
@@ -158,17 +152,11 @@ class LennardJonesContact(Result):
     """
 
     inputs: ClassVar[tuple[str, ...]] = _INPUTS
-    si: ClassVar[dict[str, tuple[str, str, str]]] = {
-        "a_over_R": ("contact_half_width", "R", "m"),
-        "central_gap_over_h": ("central_gap", "h", "m"),
-        "F_over_Eh": ("load", "Eh", "N/m"),
-        "error_estimate_over_Eh": ("error_estimate", "Eh", "N/m"),
-    }
 
-    a_over_R: NDArray | float
-    central_gap_over_h: NDArray | float
-    F_over_Eh: NDArray | float
-    error_estimate_over_Eh: NDArray | float
+    a_over_R: NDArray | float = field(metadata=SI("contact_half_width", "R", "m"))
+    central_gap_over_h: NDArray | float = field(metadata=SI("central_gap", "h", "m"))
+    F_over_Eh: NDArray | float = field(metadata=SI("load", "Eh", "N/m"))
+    error_estimate_over_Eh: NDArray | float = field(metadata=SI("error_estimate", "Eh", "N/m"))
     R_over_h: NDArray | float
     sigma0_over_E: NDArray | float
     mu: NDArray | float

@@ -25,7 +25,7 @@ length over ``E h2``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import ClassVar
 
 import numpy as np
@@ -37,7 +37,7 @@ from .errors import ConvergenceError
 from .normal import pull_off
 from .normal.inverse import _contact_for_load
 from .normal.pulloff import _pulloff_arrays
-from .results import Result, as_output
+from .results import SI, Result, as_output
 from .sliding.inverse import _sliding_ends, _sliding_for_load
 from .tangential import sliding_initiation, steady_rolling
 
@@ -115,28 +115,18 @@ class Push(Result):
         "tau0_over_E",
         "F_over_Eh2",
     )
-    si: ClassVar[dict[str, tuple[str, str, str]]] = {
-        "H_over_R": ("height", "R", "m"),
-        "H_arm_over_R": ("moment_arm", "R", "m"),
-        "a_rest_over_R": ("rest_half_width", "R", "m"),
-        "a_slide_over_R": ("slide_half_width", "R", "m"),
-        "Q_roll_over_Eh2": ("rolling_resistance", "Eh", "N/m"),
-        "Q_slide_over_Eh2": ("sliding_resistance", "Eh", "N/m"),
-        "Q_onset_over_Eh2": ("slip_onset", "Eh", "N/m"),
-        "H_critical_over_R": ("critical_height", "R", "m"),
-    }
 
-    H_over_R: NDArray | float
-    H_arm_over_R: NDArray | float
+    H_over_R: NDArray | float = field(metadata=SI("height", "R", "m"))
+    H_arm_over_R: NDArray | float = field(metadata=SI("moment_arm", "R", "m"))
     tip_friction: NDArray | float
-    a_rest_over_R: NDArray | float
-    a_slide_over_R: NDArray | float
-    Q_roll_over_Eh2: NDArray | float
-    Q_slide_over_Eh2: NDArray | float
+    a_rest_over_R: NDArray | float = field(metadata=SI("rest_half_width", "R", "m"))
+    a_slide_over_R: NDArray | float = field(metadata=SI("slide_half_width", "R", "m"))
+    Q_roll_over_Eh2: NDArray | float = field(metadata=SI("rolling_resistance", "Eh", "N/m"))
+    Q_slide_over_Eh2: NDArray | float = field(metadata=SI("sliding_resistance", "Eh", "N/m"))
     friction_over_Eh2: NDArray | float
     hysteresis_over_Eh2: NDArray | float
-    Q_onset_over_Eh2: NDArray | float
-    H_critical_over_R: NDArray | float
+    Q_onset_over_Eh2: NDArray | float = field(metadata=SI("slip_onset", "Eh", "N/m"))
+    H_critical_over_R: NDArray | float = field(metadata=SI("critical_height", "R", "m"))
     first_motion: NDArray | str
     S_roll_over_Eh2: NDArray | float
     creep_over_V: NDArray | float

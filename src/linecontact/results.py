@@ -9,13 +9,22 @@ per quantity, with no Python object built per point.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, fields
+from dataclasses import Field, dataclass, fields
 from typing import Any, ClassVar
 
 import numpy as np
 from numpy.typing import NDArray
 
-__all__ = ["Result", "as_output"]
+__all__ = ["SI", "Result", "as_output"]
+
+
+def SI(name: str, scale: str, unit: str) -> dict[str, tuple[str, str, str]]:  # noqa: N802
+    """The metadata of a field that has an SI form: its SI name, scale and SI unit.
+
+    Declared beside the field, ``a_over_R: float = field(metadata=SI("contact_half_width",
+    "R", "m"))``; the scale is a name of :data:`linecontact.units.SCALES`.
+    """
+    return {"si": (name, scale, unit)}
 
 
 def as_output(value: Any, scalar: bool) -> Any:
@@ -34,7 +43,8 @@ class Result:
     Subclasses list the fields that are inputs of the problem in ``inputs`` (the output
     layer moves them to its ``parameters`` block when they are the same at every point),
     the derived per-point properties to export in ``derived``, the fields that are not per
-    point in ``whole``, and the SI form of their fields in ``si`` (:mod:`linecontact.units`).
+    point in ``whole``, and the SI form of a field beside it (``field(metadata=SI(...))``),
+    gathered into ``si`` (:mod:`linecontact.units`).
     Fields declared with ``repr=False`` (nested results) are not exported.
     """
 
@@ -47,7 +57,16 @@ class Result:
     whole: ClassVar[tuple[str, ...]] = ()
     #: The SI form of each field with one: ``{field: (SI name, scale, SI unit)}``, the scale
     #: a name of :data:`linecontact.units.SCALES` (:func:`linecontact.units.to_si` reads it).
+    #: Gathered from the fields' :func:`SI` metadata when the class is made: not written.
     si: ClassVar[dict[str, tuple[str, str, str]]] = {}
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        si = dict(cls.si)  # the base's, in its order
+        for name, declared in list(vars(cls).items()):  # in the order written
+            if isinstance(declared, Field) and "si" in declared.metadata:
+                si[name] = declared.metadata["si"]
+        cls.si = si
 
     def _names(self) -> list[str]:
         names = [f.name for f in fields(self) if f.repr and f.name not in self.whole]

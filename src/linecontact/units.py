@@ -1,9 +1,13 @@
 """The scales of a body and the SI form of a nondimensional result, declared once.
 
 A nondimensional result class declares, for each field that has an SI form, its SI name, the
-scale that multiplies it and the SI unit, in its class variable ``si``::
+scale that multiplies it and the SI unit, beside the field (:func:`linecontact.results.SI`)::
 
-    si = {"a_over_R": ("contact_half_width", "R", "m"), "F_over_Eh": ("load", "Eh", "N/m")}
+    a_over_R: float = field(metadata=SI("contact_half_width", "R", "m"))
+    F_over_Eh: float = field(metadata=SI("load", "Eh", "N/m"))
+
+and the class gathers them into its class variable ``si``
+(``{"a_over_R": ("contact_half_width", "R", "m"), ...}``).
 
 The scales are those of a body (:class:`Scales`: the radius ``R``, the composite modulus
 ``E``, the adhesion range ``h`` and, for the tangential problems at a fixed contact, its

@@ -8,14 +8,14 @@ The conversion of the Dugdale groups ``(R/h, sigma0/E)`` to the law's own units
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import ClassVar
 
 import numpy as np
 from numpy.typing import NDArray
 
 from .._validation import first_point
-from ..results import Result
+from ..results import SI, Result
 from ._curve import LJPullOff, lj_pull_off
 from ._matching import MAUGIS_MATCH_SIGMA0, maugis_parameter_of_mu, mu_of_dugdale
 
@@ -49,19 +49,16 @@ class LennardJonesPullOff(Result):
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E")
-    si: ClassVar[dict[str, tuple[str, str, str]]] = {
-        "F_pulloff_over_Eh": ("pull_off_force", "Eh", "N/m"),
-        "error_estimate_over_Eh": ("error_estimate", "Eh", "N/m"),
-        "a_over_R_at_pulloff": ("contact_half_width_at_pull_off", "R", "m"),
-        "central_gap_over_h_at_pulloff": ("central_gap_at_pull_off", "h", "m"),
-        "F_jump_in_over_Eh": ("jump_in_force", "Eh", "N/m"),
-    }
 
-    F_pulloff_over_Eh: NDArray | float
-    a_over_R_at_pulloff: NDArray | float
-    central_gap_over_h_at_pulloff: NDArray | float
-    F_jump_in_over_Eh: NDArray | float
-    error_estimate_over_Eh: NDArray | float
+    F_pulloff_over_Eh: NDArray | float = field(metadata=SI("pull_off_force", "Eh", "N/m"))
+    a_over_R_at_pulloff: NDArray | float = field(
+        metadata=SI("contact_half_width_at_pull_off", "R", "m")
+    )
+    central_gap_over_h_at_pulloff: NDArray | float = field(
+        metadata=SI("central_gap_at_pull_off", "h", "m")
+    )
+    F_jump_in_over_Eh: NDArray | float = field(metadata=SI("jump_in_force", "Eh", "N/m"))
+    error_estimate_over_Eh: NDArray | float = field(metadata=SI("error_estimate", "Eh", "N/m"))
     mu: NDArray | float
     maugis_parameter: NDArray | float
     R_over_h: NDArray | float

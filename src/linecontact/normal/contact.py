@@ -9,7 +9,7 @@ of the load minimum that the pull-off and the inverse solve on.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import ClassVar
 
 import numpy as np
@@ -29,7 +29,7 @@ from .._validation import (
     scalar_or_array,
 )
 from ..errors import ConvergenceError
-from ..results import Result, as_output
+from ..results import SI, Result, as_output
 from ..sie import SIZES, BoundedSolver, _chunks, _in_chunks, log_end_moments
 
 #: Collocation sizes tried by ``n="auto"``.
@@ -69,16 +69,11 @@ class NormalContact(Result):
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E", "method")
-    si: ClassVar[dict[str, tuple[str, str, str]]] = {
-        "a_over_R": ("contact_half_width", "R", "m"),
-        "c_over_R": ("adhesive_zone_half_width", "R", "m"),
-        "F_over_Eh": ("load", "Eh", "N/m"),
-    }
     derived: ClassVar[tuple[str, ...]] = ("c_over_a",)
 
-    a_over_R: NDArray | float
-    c_over_R: NDArray | float
-    F_over_Eh: NDArray | float
+    a_over_R: NDArray | float = field(metadata=SI("contact_half_width", "R", "m"))
+    c_over_R: NDArray | float = field(metadata=SI("adhesive_zone_half_width", "R", "m"))
+    F_over_Eh: NDArray | float = field(metadata=SI("load", "Eh", "N/m"))
     R_over_h: NDArray | float
     sigma0_over_E: NDArray | float
     method: str

@@ -10,7 +10,7 @@ from numpy.typing import NDArray
 
 from .. import closed_forms as _cf
 from .. import domain as _domain
-from ..results import Result
+from ..results import SI, Result
 from .contact import normal_contact
 from .noncontact import non_contact
 from .pulloff import PullOff, pull_off
@@ -41,18 +41,12 @@ class LoadCurve(Result):
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E")
-    si: ClassVar[dict[str, tuple[str, str, str]]] = {
-        "central_gap_over_h": ("central_gap", "h", "m"),
-        "a_over_R": ("contact_half_width", "R", "m"),
-        "c_over_R": ("adhesive_zone_half_width", "R", "m"),
-        "F_over_Eh": ("load", "Eh", "N/m"),
-    }
 
     branch: NDArray
-    central_gap_over_h: NDArray
-    a_over_R: NDArray
-    c_over_R: NDArray
-    F_over_Eh: NDArray
+    central_gap_over_h: NDArray = field(metadata=SI("central_gap", "h", "m"))
+    a_over_R: NDArray = field(metadata=SI("contact_half_width", "R", "m"))
+    c_over_R: NDArray = field(metadata=SI("adhesive_zone_half_width", "R", "m"))
+    F_over_Eh: NDArray = field(metadata=SI("load", "Eh", "N/m"))
     stable: NDArray
     turning_point: NDArray
     R_over_h: float

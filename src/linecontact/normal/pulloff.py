@@ -7,7 +7,7 @@ per parameter point on the closed form of :mod:`linecontact.normal.contact`.
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import ClassVar
 
 import numpy as np
@@ -20,7 +20,7 @@ from .._validation import (
     broadcast,
     scalar_or_array,
 )
-from ..results import Result, as_output
+from ..results import SI, Result, as_output
 from ..sie import _in_chunks
 from .contact import _ustar
 
@@ -65,17 +65,14 @@ class PullOff(Result):
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E")
-    si: ClassVar[dict[str, tuple[str, str, str]]] = {
-        "F_pulloff_over_Eh": ("pull_off_force", "Eh", "N/m"),
-        "a_over_R_at_pulloff": ("contact_half_width_at_pull_off", "R", "m"),
-        "F_zero_width_over_Eh": ("zero_width_force", "Eh", "N/m"),
-    }
 
-    F_pulloff_over_Eh: NDArray | float
-    a_over_R_at_pulloff: NDArray | float
+    F_pulloff_over_Eh: NDArray | float = field(metadata=SI("pull_off_force", "Eh", "N/m"))
+    a_over_R_at_pulloff: NDArray | float = field(
+        metadata=SI("contact_half_width_at_pull_off", "R", "m")
+    )
     c_over_R_at_pulloff: NDArray | float
     mechanism: NDArray | str
-    F_zero_width_over_Eh: NDArray | float
+    F_zero_width_over_Eh: NDArray | float = field(metadata=SI("zero_width_force", "Eh", "N/m"))
     F_minimum_over_Eh: NDArray | float
     a_over_R_at_minimum: NDArray | float
     R_over_h: NDArray | float

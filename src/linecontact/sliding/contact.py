@@ -7,7 +7,7 @@ from the solvers of :mod:`~linecontact.sliding.closed_form` and
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import ClassVar, Literal
 
 import numpy as np
@@ -25,7 +25,7 @@ from .._validation import (
     scalar_or_array,
 )
 from ..errors import ConvergenceError
-from ..results import Result, as_output
+from ..results import SI, Result, as_output
 from ..sie import BoundedSolution, BoundedSolver, _in_chunks
 from ._checks import _check_state_inputs
 from .closed_form import _cf_coefficients, _cf_outputs, _closed_form
@@ -90,29 +90,18 @@ class SlidingContact(Result):
         "method",
     )
 
-    si: ClassVar[dict[str, tuple[str, str, str]]] = {
-        "a_over_R": ("contact_half_width", "R", "m"),
-        "c1_over_R": ("trailing_zone_end", "R", "m"),
-        "c2_over_R": ("leading_zone_end", "R", "m"),
-        "e_over_R": ("eccentricity", "R", "m"),
-        "F_over_Eh2": ("load", "Eh", "N/m"),
-        "M_over_Eh2R": ("moment", "EhR", "N"),
-        "M_axis_over_Eh2R": ("moment_about_axis", "EhR", "N"),
-        "T_over_Eh2": ("friction_force", "Eh", "N/m"),
-    }
-
-    a_over_R: NDArray | float
-    c1_over_R: NDArray | float
-    c2_over_R: NDArray | float
-    e_over_R: NDArray | float
-    F_over_Eh2: NDArray | float
-    M_over_Eh2R: NDArray | float
-    M_axis_over_Eh2R: NDArray | float
+    a_over_R: NDArray | float = field(metadata=SI("contact_half_width", "R", "m"))
+    c1_over_R: NDArray | float = field(metadata=SI("trailing_zone_end", "R", "m"))
+    c2_over_R: NDArray | float = field(metadata=SI("leading_zone_end", "R", "m"))
+    e_over_R: NDArray | float = field(metadata=SI("eccentricity", "R", "m"))
+    F_over_Eh2: NDArray | float = field(metadata=SI("load", "Eh", "N/m"))
+    M_over_Eh2R: NDArray | float = field(metadata=SI("moment", "EhR", "N"))
+    M_axis_over_Eh2R: NDArray | float = field(metadata=SI("moment_about_axis", "EhR", "N"))
     R_over_h2: NDArray | float
     h1_over_h2: NDArray | float
     sigma0_over_E: NDArray | float
     tau0_over_E: NDArray | float
-    T_over_Eh2: NDArray | float
+    T_over_Eh2: NDArray | float = field(metadata=SI("friction_force", "Eh", "N/m"))
     method: str
     n_collocation: NDArray | int
     residual_trailing: NDArray | float

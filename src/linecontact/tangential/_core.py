@@ -10,9 +10,8 @@ variable, solves on the points that have a stick zone and returns the fields of 
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import ClassVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -29,7 +28,7 @@ from .._validation import (
     scalar_or_array,
 )
 from ..errors import ConvergenceError, NoEquilibriumError
-from ..results import Result, as_output
+from ..results import SI, Result, as_output
 from ..sie import SIZES as _SIE_SIZES
 from ..sie import BoundedSolver, _chunks
 
@@ -294,13 +293,8 @@ def _states(sliding, stick, shape):
 class _Tangential(Result):
     """Fields shared by the four tangential results (see the subclasses)."""
 
-    #: the SI form (``a`` the contact half-width); every subclass has ``T_over_Ea``
-    si: ClassVar[dict[str, tuple[str, str, str]]] = {
-        "d_over_a": ("stick_zone_end", "a", "m"),
-        "T_over_Ea": ("tangential_load", "Ea", "N/m"),
-    }
-
-    d_over_a: NDArray | float
+    # the SI forms scale by ``a``, the contact half-width; each subclass declares T_over_Ea
+    d_over_a: NDArray | float = field(metadata=SI("stick_zone_end", "a", "m"))
     T_over_T_full_slip: NDArray | float
     state: NDArray | str
     method: str

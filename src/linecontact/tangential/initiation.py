@@ -8,7 +8,7 @@ Units, sign conventions and references: :mod:`linecontact.tangential`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import ClassVar
 
 import numpy as np
@@ -16,6 +16,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .. import domain as _domain
 from .._validation import FailurePolicy, failure_policy
+from ..results import SI
 from ..sie import _log_moment_vector
 from ._core import (
     _CHECK_Y,
@@ -158,7 +159,7 @@ class SlidingInitiation(_Tangential):
 
     inputs: ClassVar[tuple[str, ...]] = ("tau0_over_E", "method")
 
-    T_over_Ea: NDArray | float
+    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
     tau0_over_E: NDArray | float
 
     def traction(self, x_over_a: ArrayLike) -> NDArray:
@@ -260,7 +261,7 @@ error_estimate, converged
     inputs: ClassVar[tuple[str, ...]] = ("mu", "a_over_R", "method")
 
     T_over_muF: NDArray | float
-    T_over_Ea: NDArray | float
+    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
     mu: NDArray | float
     a_over_R: NDArray | float
 

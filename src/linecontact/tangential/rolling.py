@@ -9,7 +9,7 @@ friction on the Hertz contact (Carter). Units, sign conventions and references:
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import ClassVar, cast
 
 import numpy as np
@@ -17,6 +17,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .. import domain as _domain
 from .._validation import FailurePolicy, failure_policy
+from ..results import SI
 from ._core import (
     _CHECK_Y,
     _STICK,
@@ -153,7 +154,7 @@ error_estimate, converged
 
     inputs: ClassVar[tuple[str, ...]] = ("tau0_over_E", "method")
 
-    T_over_Ea: NDArray | float
+    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
     creep_over_V: NDArray | float
     tau0_over_E: NDArray | float
 
@@ -209,7 +210,7 @@ error_estimate, converged
     inputs: ClassVar[tuple[str, ...]] = ("mu", "a_over_R", "method")
 
     T_over_muF: NDArray | float
-    T_over_Ea: NDArray | float
+    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
     creep_over_V: NDArray | float
     mu: NDArray | float
     a_over_R: NDArray | float

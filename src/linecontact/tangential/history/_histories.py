@@ -17,7 +17,7 @@ from numpy.typing import ArrayLike, NDArray
 from ... import domain as _domain
 from ..._validation import FailurePolicy, check_array, check_solver_options, failure_policy
 from ...errors import ConvergenceError
-from ...results import Result
+from ...results import SI, Result
 from ._collocation import N_INCREMENTAL, N_MAX_INCREMENTAL, _Incremental, _incremental
 from ._laws import _LAWS, _Law
 from ._masing_rules import _Masing, _masing
@@ -43,22 +43,15 @@ _SLIDING = "sliding"
 class _History(Result):
     """Shared fields and methods of the two history results (one point per step)."""
 
-    si: ClassVar[dict[str, tuple[str, str, str]]] = {
-        "T_over_Ea": ("tangential_load", "Ea", "N/m"),
-        "c_over_a": ("stick_zone_half_width", "a", "m"),
-        "displacement_over_a": ("displacement", "a", "m"),
-        "dissipation_over_Ea2": ("dissipation", "Ea2", "J/m"),
-    }
-
     step: NDArray
-    T_over_Ea: NDArray
+    T_over_Ea: NDArray = field(metadata=SI("tangential_load", "Ea", "N/m"))
     T_over_T_full_slip: NDArray
-    c_over_a: NDArray
+    c_over_a: NDArray = field(metadata=SI("stick_zone_half_width", "a", "m"))
     slip_direction: NDArray
     state: NDArray
     memory: NDArray
-    displacement_over_a: NDArray
-    dissipation_over_Ea2: NDArray
+    displacement_over_a: NDArray = field(metadata=SI("displacement", "a", "m"))
+    dissipation_over_Ea2: NDArray = field(metadata=SI("dissipation", "Ea2", "J/m"))
     method: str
     n_collocation: NDArray
     residual_stick: NDArray

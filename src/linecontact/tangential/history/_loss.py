@@ -8,7 +8,7 @@ incremental solver over one cycle.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import ClassVar
 
 import numpy as np
@@ -17,7 +17,7 @@ from numpy.typing import ArrayLike, NDArray
 from ... import domain as _domain
 from ..._validation import check_array
 from ...errors import ConvergenceError
-from ...results import Result, as_output
+from ...results import SI, Result, as_output
 from ._collocation import N_INCREMENTAL, N_MAX_INCREMENTAL, _incremental
 from ._histories import _SLIDING, _STICK_SLIP, _T_LIMIT, _check_method
 from ._laws import _LAWS, _Law
@@ -31,16 +31,10 @@ _EPS_LOSS = float(np.finfo(float).eps)
 
 @dataclass(frozen=True)
 class _Cyclic(Result):
-    si: ClassVar[dict[str, tuple[str, str, str]]] = {
-        "T_amplitude_over_Ea": ("amplitude", "Ea", "N/m"),
-        "W_over_Ea2": ("energy_per_cycle", "Ea2", "J/m"),
-        "c_over_a": ("stick_zone_half_width", "a", "m"),
-    }
-
-    T_amplitude_over_Ea: NDArray | float
+    T_amplitude_over_Ea: NDArray | float = field(metadata=SI("amplitude", "Ea", "N/m"))
     T_amplitude_over_T_full_slip: NDArray | float
-    W_over_Ea2: NDArray | float
-    c_over_a: NDArray | float
+    W_over_Ea2: NDArray | float = field(metadata=SI("energy_per_cycle", "Ea2", "J/m"))
+    c_over_a: NDArray | float = field(metadata=SI("stick_zone_half_width", "a", "m"))
     state: NDArray | str
     method: str
 
