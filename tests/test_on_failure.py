@@ -7,6 +7,7 @@ library's own calls (API and command line) never give a ``DeprecationWarning``.
 
 from __future__ import annotations
 
+import functools
 import inspect
 import warnings
 
@@ -329,3 +330,42 @@ def test_cli_commands_give_no_deprecation_warning(capsys, argv):
     code, out, err = _no_deprecation(capsys, *argv)
     assert code in (0, 1), err  # 1: a command whose every point has no state
     assert out
+
+
+def test_an_inversion_reports_an_unreachable_force_as_nan_and_propagate_agrees_either_way():
+    # the state travels as an argument: no context of propagate's changes what an inversion
+    # gives; asked to report, it gives nan where no w reaches and w elsewhere
+    F = float(inv.pull_off_force(50e-9, 50e9, 0.1, 0.3e-9))
+    forces = np.array([F, 0.5 * F, 1e-3, 2 * F])  # 1e-3 N/m: not tensile, no w reaches it
+    with pytest.raises(ValueError, match="cannot be produced by any work of adhesion"):
+        inv.work_of_adhesion_from_pull_off(forces, 50e-9, 50e9, 0.3e-9)
+    got = inv.work_of_adhesion_from_pull_off(forces, 50e-9, 50e9, 0.3e-9, on_failure="report")
+    assert np.isnan(got[2]) and np.all(np.isfinite(got[[0, 1, 3]]))
+    one = [
+        float(inv.work_of_adhesion_from_pull_off(f, 50e-9, 50e9, 0.3e-9)) for f in forces[[0, 1, 3]]
+    ]
+    assert np.allclose(got[[0, 1, 3]], one, rtol=1e-12)
+    with pytest.raises(ValueError, match="on_failure must be 'raise' or 'report'"):
+        inv.work_of_adhesion_from_pull_off(F, 50e-9, 50e9, 0.3e-9, on_failure="nan")
+    with pytest.raises(ValueError, match="on_failure must be 'raise' or 'report'"):
+        inv.work_of_adhesion_from_width(1e-9, 0.5, 50e-9, 50e9, 0.3e-9, on_failure=None)
+    # propagate: the raising function's batches are split around the unreachable draws, the
+    # reporting one's run whole; the same draws fail and the estimates agree
+    x = dict(pull_off_force=F, radius=50e-9, modulus=50e9, equilibrium_spacing=0.3e-9)
+    sds = dict(pull_off_force=abs(F))
+    raw = inv.propagate(inv.work_of_adhesion_from_pull_off, x, sds, n_samples=60)
+    rep = inv.propagate(
+        functools.partial(inv.work_of_adhesion_from_pull_off, on_failure="report"),
+        x,
+        sds,
+        n_samples=60,
+    )
+    assert 0 < raw.n_failed == rep.n_failed < 60
+    assert raw.value == pytest.approx(rep.value, rel=1e-12)
+    assert raw.sd == pytest.approx(rep.sd, rel=1e-9)
+
+
+def test_propagate_says_the_range_of_n_samples_it_takes():
+    x = dict(pull_off_force=-1.0, radius=50e-9, modulus=50e9, equilibrium_spacing=0.3e-9)
+    with pytest.raises(ValueError, match=r"n_samples must be an integer in \[10, 1e7\]"):
+        inv.propagate(inv.work_of_adhesion_from_pull_off, x, {}, n_samples=10_000_001)

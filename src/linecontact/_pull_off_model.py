@@ -19,10 +19,16 @@ from numpy.typing import ArrayLike, NDArray
 
 from . import closed_forms as _cf
 from . import normal as _normal
-from ._validation import broadcast, check_array, first_point, point_text
+from ._validation import (
+    FailurePolicy,
+    broadcast,
+    check_array,
+    failure_policy,
+    first_point,
+    point_text,
+)
 from .cylinder import _check_cylinder_si, _plausible
 from .materials import MAUGIS_STRENGTH
-from .uncertainty import _UNREACHABLE
 
 __all__ = [
     "dmt_pull_off_force",
@@ -185,6 +191,8 @@ def work_of_adhesion_from_pull_off(
     radius: ArrayLike,
     modulus: ArrayLike,
     equilibrium_spacing: ArrayLike,
+    *,
+    on_failure: FailurePolicy = "raise",
 ) -> NDArray:
     """The work of adhesion [J/m^2] whose Maugis--Dugdale pull-off is the one measured.
 
@@ -194,6 +202,10 @@ def work_of_adhesion_from_pull_off(
         Measured pull-off force per unit length [N/m], negative (tensile).
     radius, modulus, equilibrium_spacing : array_like
         ``R`` [m], the composite plane-strain modulus ``E`` [Pa], the range ``z0`` [m].
+    on_failure : {"raise", "report"}
+        A force that no ``w`` produces raises (``"raise"``, default) or gives NaN at its
+        point (``"report"``: what :func:`~linecontact.inverse.propagate` wants, so that a
+        batch of draws is not split around the unreachable ones).
 
     Returns
     -------
@@ -204,7 +216,7 @@ def work_of_adhesion_from_pull_off(
     ------
     ValueError
         For a force no ``w`` can produce (not negative, or beyond the reachable range,
-        which the message states in N/m).
+        which the message states in N/m), with ``on_failure="raise"``.
 
     Examples
     --------
@@ -217,7 +229,7 @@ def work_of_adhesion_from_pull_off(
         radius,
         modulus,
         equilibrium_spacing,
-        unreachable=_UNREACHABLE.get(),
+        unreachable="nan" if failure_policy(on_failure) == "report" else "raise",
         stacklevel=5,
     )
 

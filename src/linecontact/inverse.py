@@ -49,12 +49,12 @@ from ._pull_off_model import (
     simple_model_work_of_adhesion,
     work_of_adhesion_from_pull_off,
 )
-from ._validation import broadcast, check_array, first_point
+from ._validation import FailurePolicy, broadcast, check_array, failure_policy, first_point
 from .cylinder import _check_cylinder_si, _plausible, _warn_widths
 from .cylinder._checks import _small_strain_in_si, _warn_small_strain
 from .errors import ModelValidityWarning
 from .fits import AdhesionFit, ShearStrengthFit, fit_pull_off, fit_shear_strength
-from .uncertainty import _UNREACHABLE, Estimate, propagate
+from .uncertainty import Estimate, propagate
 
 if TYPE_CHECKING:
     from .domain import TooWideError
@@ -82,12 +82,16 @@ def work_of_adhesion_from_width(
     radius: ArrayLike,
     modulus: ArrayLike,
     equilibrium_spacing: ArrayLike,
+    *,
+    on_failure: FailurePolicy = "raise",
 ) -> NDArray:
     """The work of adhesion [J/m^2] whose stable contact at the load has the half-width measured.
 
     Forward model: the stable Maugis--Dugdale contact carrying ``normal_load``
     (:func:`linecontact.contact_for_load`); a wider contact needs more adhesion. A contact
-    narrower than Hertz's at that load needs none: it cannot be produced (``ValueError``).
+    narrower than Hertz's at that load needs none: it cannot be produced (``ValueError``;
+    NaN at its point with ``on_failure="report"``, as for
+    :func:`work_of_adhesion_from_pull_off`).
 
     Examples
     --------
@@ -104,7 +108,7 @@ def work_of_adhesion_from_width(
         radius,
         modulus,
         equilibrium_spacing,
-        unreachable=_UNREACHABLE.get(),
+        unreachable="nan" if failure_policy(on_failure) == "report" else "raise",
         stacklevel=5,
     )
 

@@ -546,7 +546,29 @@ def _mu_at_one(n: int) -> NDArray:
     return mu1
 
 
-class EndBoundedSolver(_Mapped):
+class _Dense(_Mapped):
+    """A solver whose node values solve one dense system, factored once (LU)."""
+
+    def _cauchy(self) -> NDArray[np.float64]:
+        r"""The rows :math:`W_i / (\pi (t_i - x_k))` of the collocation equations on ``[-1, 1]``."""
+        return self.weights_unit[None, :] / (
+            np.pi * (self.nodes_unit[None, :] - self.collocation_unit[:, None])
+        )
+
+    def _factor(self, mat: NDArray[np.float64]) -> None:
+        self._lu = _linalg().lu_factor(mat)
+
+    def _solved(self, rhs: NDArray[np.float64]) -> NDArray[np.float64]:
+        """The node values for right-hand sides ``rhs`` of shape ``(..., n)``."""
+        flat = rhs.reshape(-1, self.n).T
+        return _linalg().lu_solve(self._lu, flat).T.reshape(rhs.shape)
+
+    def resultant(self, g: ArrayLike) -> NDArray[np.float64]:
+        r""":math:`\int_\alpha^\beta \phi(t)\,dt` from the node values ``g``."""
+        return np.asarray(g) @ self.weights
+
+
+class EndBoundedSolver(_Dense):
     r"""Collocation solver for solutions bounded at one end, unbounded at the other.
 
     Parameters
@@ -581,25 +603,17 @@ class EndBoundedSolver(_Mapped):
         self.nodes_unit = self._sign * t
         self.collocation_unit = self._sign * x
         self.weights_unit = w
-        mat = w[None, :] / (np.pi * (self.nodes_unit[None, :] - self.collocation_unit[:, None]))
-        self._lu = _linalg().lu_factor(mat)
+        self._factor(self._cauchy())
 
     def solve(self, f: ArrayLike) -> NDArray[np.float64]:
         """Values of ``g`` at the nodes for the right-hand side ``f`` at the collocation points.
 
         ``f`` has shape ``(..., n)``; so has the result.
         """
-        rhs = _check_rhs("f", f, self.n, "n")
-        flat = rhs.reshape(-1, self.n).T
-        g = _linalg().lu_solve(self._lu, flat).T
-        return g.reshape(rhs.shape)
-
-    def resultant(self, g: ArrayLike) -> NDArray[np.float64]:
-        r""":math:`\int_\alpha^\beta \phi(t)\,dt` from the node values ``g``."""
-        return np.asarray(g) @ self.weights
+        return self._solved(_check_rhs("f", f, self.n, "n"))
 
 
-class UnboundedSolver(_Mapped):
+class UnboundedSolver(_Dense):
     r"""Collocation solver for solutions unbounded at both ends, with a side condition.
 
     Parameters
@@ -622,12 +636,7 @@ class UnboundedSolver(_Mapped):
         self.nodes_unit = np.cos((2 * i - 1) * np.pi / (2 * self.n))
         self.weights_unit = np.full(self.n, np.pi / self.n)
         self.collocation_unit = np.cos(np.arange(1, self.n) * np.pi / self.n)
-        mat = np.empty((self.n, self.n))
-        mat[:-1] = self.weights_unit[None, :] / (
-            np.pi * (self.nodes_unit[None, :] - self.collocation_unit[:, None])
-        )
-        mat[-1] = self.weights_unit * self._half
-        self._lu = _linalg().lu_factor(mat)
+        self._factor(np.vstack([self._cauchy(), self.weights_unit * self._half]))
 
     def solve(self, f: ArrayLike, resultant: ArrayLike) -> NDArray[np.float64]:
         r"""Values of ``g`` at the nodes.
@@ -647,14 +656,7 @@ class UnboundedSolver(_Mapped):
                 f"resultant must broadcast to the batch shape of f, "
                 f"{f.shape[:-1]}, got shape {np.shape(resultant)}"
             ) from None
-        rhs = np.concatenate([f, c[..., None]], axis=-1)
-        flat = rhs.reshape(-1, self.n).T
-        g = _linalg().lu_solve(self._lu, flat).T
-        return g.reshape(rhs.shape)
-
-    def resultant(self, g: ArrayLike) -> NDArray[np.float64]:
-        r""":math:`\int_\alpha^\beta \phi(t)\,dt` from the node values ``g``."""
-        return np.asarray(g) @ self.weights
+        return self._solved(np.concatenate([f, c[..., None]], axis=-1))
 
     def log_moment(self, g: ArrayLike, y: ArrayLike) -> NDArray[np.float64]:
         r""":math:`\int_\alpha^\beta \phi(t)\ln|y-t|\,dt` by product integration."""

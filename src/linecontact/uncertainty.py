@@ -5,18 +5,17 @@ distributions (a positive input's draws truncated at zero), runs the function on
 them at once (a batch that raises is split, so a failing draw costs a few calls) and gives
 an :class:`Estimate`: the value, the Monte Carlo standard deviation and 95 % interval, and
 the linearised ones beside them. The inverse problems of :mod:`linecontact.inverse`
-re-export both; while :func:`propagate` draws, its inversions give nan for a draw no
-solution reaches (:data:`_UNREACHABLE`) instead of failing the batch.
+re-export both; given ``on_failure="report"``, its inversions give nan for a draw no
+solution reaches, so that :func:`propagate` runs each batch once instead of splitting it.
 """
 
 from __future__ import annotations
 
-import contextvars
 import math
 import warnings
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import Any, ClassVar, Literal
+from typing import Any, ClassVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -25,12 +24,6 @@ from .errors import ModelValidityWarning
 from .results import Result
 
 __all__ = ["Estimate", "propagate"]
-
-#: ``"nan"`` while :func:`propagate` draws its samples: the inversions then give nan where no
-#: ``w`` reaches a draw, instead of the ``ValueError`` (which would fail its whole batch).
-_UNREACHABLE: contextvars.ContextVar[Literal["raise", "nan"]] = contextvars.ContextVar(
-    "linecontact_inverse_unreachable", default="raise"
-)
 
 
 @dataclass(frozen=True)
@@ -77,14 +70,19 @@ def propagate(
     ``fn(**inputs)`` must accept arrays (every function of this module does). Inputs with a
     standard uncertainty are drawn from normal distributions (samples of a positive input
     that fall at or below zero are redrawn: the distribution is truncated); a sample for
-    which ``fn`` raises or returns a non-finite value counts in ``n_failed``.
+    which ``fn`` raises or returns a non-finite value counts in ``n_failed``. A batch that
+    raises is split until the failing samples are found; a function that gives NaN where it
+    has no solution (the inversions of :mod:`linecontact.inverse` with
+    ``on_failure="report"``) runs once per batch, with the same result.
 
     Examples
     --------
     >>> from linecontact.inverse import pull_off_force, work_of_adhesion_from_pull_off
     >>> F = float(pull_off_force(50e-9, 50e9, 0.1, 0.3e-9))
     >>> x = dict(pull_off_force=F, radius=50e-9, modulus=50e9, equilibrium_spacing=0.3e-9)
-    >>> e = propagate(work_of_adhesion_from_pull_off, x, dict(radius=2e-9), n_samples=2000)
+    >>> from functools import partial
+    >>> fn = partial(work_of_adhesion_from_pull_off, on_failure="report")
+    >>> e = propagate(fn, x, dict(radius=2e-9), n_samples=2000)
     >>> round(e.value, 10), bool(0.001 < e.sd < 0.01), bool(abs(e.sd / e.sd_linear - 1) < 0.1)
     (0.1, True, True)
     """
@@ -93,7 +91,7 @@ def propagate(
         or isinstance(n_samples, bool)
         or not (10 <= n_samples <= 10_000_000)
     ):
-        raise ValueError(f"n_samples must be an integer in [10, 1e6], got {n_samples!r}")
+        raise ValueError(f"n_samples must be an integer in [10, 1e7], got {n_samples!r}")
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
         raise ValueError(f"seed must be an integer >= 0, got {seed!r}")
     for k, v in sds.items():
@@ -128,15 +126,9 @@ def propagate(
                     break
                 draw[bad] = rng.normal(x0[k], sd, int(bad.sum()))
         samples[k] = draw
-    # the inversions of this module give nan where a draw is unreachable (not a ValueError
-    # that fails the whole batch it is in), also when fn wraps them
-    token = _UNREACHABLE.set("nan")
-    try:
-        with warnings.catch_warnings():  # a draw outside small strain: said once for the value
-            warnings.simplefilter("ignore", ModelValidityWarning)
-            out = _robust(fn, samples, np.arange(n_samples))
-    finally:
-        _UNREACHABLE.reset(token)
+    with warnings.catch_warnings():  # a draw outside small strain: said once for the value
+        warnings.simplefilter("ignore", ModelValidityWarning)
+        out = _robust(fn, samples, np.arange(n_samples))
     ok = np.isfinite(out)
     n_failed = int(n_samples - ok.sum())
     good = out[ok]

@@ -40,65 +40,52 @@ with imports_interruptible():  # Ctrl-C here: status 130, one line (linecontact.
 
 __all__ = ["COMMANDS", "build_parser", "main"]
 
-#: Every subcommand, in the order of ``linecontact --help``: its module in this package
-#: (whose ``register(sub)`` adds it, with the module's other subcommands; ``_build`` for an
-#: operation, added alone from its declaration by ``_build.register(sub, name)``) and its one-line
-#: summary. A module is imported only when one of its subcommands runs or shows its help;
-#: the summary here is what ``linecontact --help`` shows (a test keeps it equal to the
-#: module's own).
-COMMANDS: dict[str, tuple[str, str]] = {
+#: Every subcommand, in the order of ``linecontact --help``, and its one-line summary: what
+#: ``linecontact --help`` shows (a test keeps it equal to the subcommand's own).
+_SUMMARIES: dict[str, str] = {
     "normal": (
-        "_build",
-        "adhesive-zone width and load for given contact half-widths, or the contact for loads",
+        "adhesive-zone width and load for given contact half-widths, or the contact for loads"
     ),
-    "pulloff": ("_build", "pull-off force under load control and its mechanism"),
-    "curve": (
-        "_build",
-        "the whole load curve: non-contact branch, contact branch, turning point, pull-off",
-    ),
-    "slide-init": (
-        "_build",
-        "initiation of sliding under a tangential force (stick zone, T/(Ea))",
-    ),
-    "roll": ("_build", "steady rolling of a driving cylinder (stick zone, T/(Ea), creep)"),
-    "cycle": ("_build", "cyclic tangential loading: energy dissipated per cycle, stick zone"),
-    "history": (
-        "_build",
-        "a tangential load history with memory: zones, slip, energy per step",
-    ),
-    "fit-adhesion": (
-        "_build",
-        "work of adhesion (and range) from pull-off forces, with uncertainty",
-    ),
-    "fit-friction": (
-        "_build",
-        "interfacial shear strength from friction forces, with uncertainty",
-    ),
+    "pulloff": "pull-off force under load control and its mechanism",
+    "curve": "the whole load curve: non-contact branch, contact branch, turning point, pull-off",
+    "slide-init": "initiation of sliding under a tangential force (stick zone, T/(Ea))",
+    "roll": "steady rolling of a driving cylinder (stick zone, T/(Ea), creep)",
+    "cycle": "cyclic tangential loading: energy dissipated per cycle, stick zone",
+    "history": "a tangential load history with memory: zones, slip, energy per step",
+    "fit-adhesion": "work of adhesion (and range) from pull-off forces, with uncertainty",
+    "fit-friction": "interfacial shear strength from friction forces, with uncertainty",
     "slide": (
-        "_build",
-        "steady sliding: adhesive zones, eccentricity, load and moment (trailing h1, leading h2)",
+        "steady sliding: adhesive zones, eccentricity, load and moment (trailing h1, leading h2)"
     ),
-    "push": ("_build", "a fibre pushed sideways: stay, roll or slide, and at what push"),
-    "paper": ("paper", "redraw the paper's Figs. 2-14 (PNG by default)"),
+    "push": "a fibre pushed sideways: stay, roll or slide, and at what push",
+    "paper": "redraw the paper's Figs. 2-14 (PNG by default)",
     "figures": (
-        "paper",
         "draw the figures beyond the paper: the pushed fibre's motion maps and force, "
-        "load-history loops and loss, the adhesion map",
+        "load-history loops and loss, the adhesion map"
     ),
-    "cite": ("paper", "how to cite linecontact and the paper"),
-    "map": (
-        "adhesion_map",
-        "the adhesion map of line contact: where Hertz, rigid, JKR, Maugis-Dugdale hold",
-    ),
-    "materials": (
-        "_build",
-        "the material presets (E, nu, range, source) of --cylinder-material",
-    ),
-    "sweep": (
-        "sweep",
-        "run a subcommand over every combination of its flags' values: labelled arrays out",
-    ),
-    "serve": ("serve", "a calculator in the browser and an HTTP API (local web server)"),
+    "cite": "how to cite linecontact and the paper",
+    "map": "the adhesion map of line contact: where Hertz, rigid, JKR, Maugis-Dugdale hold",
+    "materials": "the material presets (E, nu, range, source) of --cylinder-material",
+    "sweep": "run a subcommand over every combination of its flags' values: labelled arrays out",
+    "serve": "a calculator in the browser and an HTTP API (local web server)",
+}
+
+#: The subcommands that are no operation of the catalogue, and the module of this package
+#: whose ``register(sub)`` adds each (with the module's other subcommands).
+_SHELLS: dict[str, str] = {
+    "paper": "paper",
+    "figures": "paper",
+    "cite": "paper",
+    "map": "adhesion_map",
+    "sweep": "sweep",
+    "serve": "serve",
+}
+
+#: Every subcommand: its module in this package and its summary. An operation's module is
+#: ``_build``, which adds it alone from its declaration (``_build.register(sub, name)``). A
+#: module is imported only when one of its subcommands runs or shows its help.
+COMMANDS: dict[str, tuple[str, str]] = {
+    name: (_SHELLS.get(name, "_build"), summary) for name, summary in _SUMMARIES.items()
 }
 
 _COMMANDS = (

@@ -13,6 +13,7 @@ alone would have given is beside them.
 
 from __future__ import annotations
 
+import functools
 import math
 import os
 from typing import Any
@@ -261,7 +262,9 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
         params["pull_off_force_N_per_m"] = F
         what = "one pull-off force"
     fn(**values)  # a clear error for a measurement no w can produce
-    est = inv.propagate(fn, values, sds, n_samples=args.samples, seed=args.seed)
+    # nan for a draw that no w reaches: a batch of draws is not split around it
+    drawn = functools.partial(fn, on_failure="report")
+    est = inv.propagate(drawn, values, sds, n_samples=args.samples, seed=args.seed)
     rec: dict[str, Any] = {
         **_record(est, tuple((k, key.format("work_of_adhesion")) for k, key in _ESTIMATE)),
         "uncertainty": _uncertainty([flags[k] for k, v in sds.items() if v], args.samples),
