@@ -15,16 +15,7 @@ process (a test that makes the solver fail must reach the solver).
 
 from __future__ import annotations
 
-import pytest
 from hypothesis import settings
 
 settings.register_profile("linecontact", derandomize=True, database=None, deadline=None)
 settings.load_profile("linecontact")
-
-
-@pytest.fixture(autouse=True)
-def _no_lennard_jones_memory():
-    from linecontact.lennard_jones import _curve
-
-    _curve._LAST.clear()
-    _curve._LAST_PULL_OFF.clear()

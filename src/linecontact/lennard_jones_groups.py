@@ -37,8 +37,8 @@ from .errors import ConvergenceError, NoEquilibriumError
 from .lennard_jones import (  # lj_groups, pull_off_of: defined there, re-exported here
     MAUGIS_MATCH_SIGMA0,
     LennardJonesPullOff,
+    LJContinuation,
     LJState,
-    lj_contact_for_load,
     lj_curve,
     lj_groups,
     lj_pull_off,
@@ -270,7 +270,8 @@ def contact_for_load_in_dugdale_groups(
 ) -> LennardJonesContact:
     """:func:`~linecontact.lennard_jones.lj_contact_for_load` at validated, broadcast groups.
 
-    The points are solved one by one (each solve continues the curve from far away), by
+    The points are solved one by one (each continues the curve from the pull-off of its
+    ``mu``, searched once per ``mu``: :class:`~linecontact.lennard_jones.LJContinuation`), by
     increasing load within each ``mu``, so that a load below the pull-off is met first: it
     raises :class:`BelowPullOffError` (a :class:`~linecontact.errors.NoEquilibriumError`,
     naming the first such point) before any other point of its ``mu`` is solved, or with
@@ -294,11 +295,14 @@ def contact_for_load_in_dugdale_groups(
     n = np.zeros(P, int)
     bad = np.zeros(P, bool)
     solved: dict[tuple[float, float], LJState | None] = {}  # None: below the pull-off
+    curve: LJContinuation | None = None  # at one mu: its pull-off is searched once
     for i in np.lexsort((Fn, mu)):  # by mu, then by load
         key = (float(mu[i]), float(Fn[i]))
         if key not in solved:
+            if curve is None or curve.mu != key[0]:
+                curve = LJContinuation(key[0])
             try:
-                solved[key] = lj_contact_for_load(key[1], key[0])
+                solved[key] = curve.contact_for_load(key[1])
             except NoEquilibriumError:
                 solved[key] = None
             except ValueError as e:  # the inputs are valid: the solver's search failed

@@ -67,9 +67,8 @@ from ..closed_forms import lennard_jones_rigid_load, lennard_jones_rigid_pull_of
 from ..errors import ConvergenceError
 from ..lennard_jones import (
     MAUGIS_MATCH_SIGMA0,
+    LJContinuation,
     LJCurve,
-    lj_curve,
-    lj_state,
     maugis_parameter_of_mu,
 )
 from ..normal import contact_for_load
@@ -319,7 +318,8 @@ def full_law_branch(
 
     A state that does not fall between its neighbours in load (another branch) is left out.
     """
-    c = lj_curve(mu, F_max=F_max)
+    curve = LJContinuation(mu)  # the states between the curve's points go on from its own
+    c = curve.curve(F_max)
     po = c.pull_off
     on = c.central_gap_over_z0 < po.central_gap_at_pulloff
     Z = np.concatenate([[po.central_gap_at_pulloff], c.central_gap_over_z0[on]])
@@ -334,7 +334,7 @@ def full_law_branch(
 
     def insert(z: float, onset: bool = False) -> bool:
         nonlocal Z, F, H, E
-        st = lj_state(z, mu)
+        st = curve.state(z)
         i = int(np.searchsorted(-Z, -z))  # Z decreases: the states about z are i - 1 and i
         if not (0 < i < Z.size and F[i - 1] < st.F < F[i]):
             return False

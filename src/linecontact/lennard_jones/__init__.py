@@ -42,8 +42,9 @@ correction (``_limit.py``).
 The package: ``_solver.py`` (the meshes, the kernels, Newton, one state on three meshes),
 ``_branch.py`` (the curve along its edge: the far part, the climb, the extrema, the pull-off
 search), ``_curve.py`` (:func:`lj_curve`, :func:`lj_pull_off`, :func:`lj_state`,
-:func:`lj_contact_for_load` and their results), ``_limit.py`` (the pull-off beyond the
-self-consistent domain), ``_matching.py`` (the Maugis matching: :data:`MAUGIS_MATCH_SIGMA0`,
+:func:`lj_contact_for_load`, :class:`LJContinuation` and their results), ``_limit.py``
+(the pull-off beyond the self-consistent domain), ``_matching.py`` (the Maugis matching:
+:data:`MAUGIS_MATCH_SIGMA0`,
 :func:`mu_of_dugdale`, :func:`maugis_parameter_of_mu`) and ``_groups.py`` (the pull-off in
 the groups of the Dugdale problem). Every public name is re-exported here; the private ones
 are read where they are defined (patch ``_solver._iterate``, not
@@ -52,6 +53,7 @@ are read where they are defined (patch ``_solver._iterate``, not
 
 from ._curve import F_MAX_DEFAULT as F_MAX_DEFAULT
 from ._curve import (
+    LJContinuation,
     LJCurve,
     LJPullOff,
     LJState,
@@ -60,7 +62,6 @@ from ._curve import (
     lj_pull_off,
     lj_state,
 )
-from ._curve import forget as _forget  # noqa: F401 - for linecontact.sweeps
 from ._groups import LennardJonesPullOff, lj_groups, pull_off_in_dugdale_groups, pull_off_of
 from ._limit import MU_SELF_CONSISTENT
 from ._matching import (
@@ -71,6 +72,7 @@ from ._matching import (
 )
 
 __all__ = [
+    "LJContinuation",
     "LJCurve",
     "LennardJonesPullOff",
     "LJPullOff",

@@ -32,7 +32,6 @@ from ._solver import (
     _law,
     _md_guess,
     _Mesh,
-    _meshes,
     _solve,
     _solve_edge,
     _Solved,
@@ -66,14 +65,14 @@ def fail(what: str, mu: float, zeta0: float) -> ConvergenceError:
 
 def first(mu: float, grid: _Grid) -> _Solved:
     """The state at ``_START``: Newton from the rigid profile, continued in ``mu`` if need be."""
-    spec = grid.small()
-    s = _solve(_START, mu, spec, None)
+    meshes = grid.meshes(grid.small())
+    s = _solve(_START, mu, meshes, None)
     if s is not None:
         return s
     done, step, guess = 0.0, mu / 8, None
     while done < mu:
         nxt = min(mu, done + step)
-        t = _solve(_START, nxt, spec, guess)
+        t = _solve(_START, nxt, meshes, guess)
         if t is None:
             step *= 0.5
             if step < 1e-9 * mu:
@@ -89,19 +88,19 @@ def far(mu: float, grid: _Grid) -> list[_Solved]:
     out = [first(mu, grid)]
     for z in np.geomspace(_START, _EDGE_GAP, _N_FAR)[1:]:
         s = out[-1]
-        t = _solve(float(z), mu, s.mesh.spec, s.zeta)
+        t = _solve(float(z), mu, grid.meshes(s.mesh.spec), s.zeta)
         if t is None:
-            t = _down(mu, s, float(z))
+            t = _down(mu, grid, s, float(z))
         out.append(t)
     return out
 
 
-def _down(mu: float, s: _Solved, z: float) -> _Solved:
+def _down(mu: float, grid: _Grid, s: _Solved, z: float) -> _Solved:
     """``s`` continued in the central gap down to ``z`` by halved steps (far part only)."""
     dz = 0.5 * (s.zeta0 - z)
     while s.zeta0 > z:
         nxt = max(z, s.zeta0 - dz)
-        t = _solve(nxt, mu, s.mesh.spec, s.zeta)
+        t = _solve(nxt, mu, grid.meshes(s.mesh.spec), s.zeta)
         if t is None:
             dz *= 0.5
             if dz < 1e-9:
@@ -274,14 +273,14 @@ def _refine_gap(mu: float, grid: _Grid, states: list[_Solved], i: int, sign: flo
     The central gap decreases along the curve, so the bracket is ``i + 1, i, i - 1``; states
     on other meshes among them are solved again there at their central gaps.
     """
-    spec = grid.small()
-    small = _meshes(spec)[0]
+    meshes = grid.meshes(grid.small())
+    small = meshes[0]
     nodes = small.nodes
     known = [s for s in states[i - 1 : i + 2] if s.mesh is small]
 
     def solve(z: float) -> _Solved:
         near = min(known or states[i - 1 : i + 2], key=lambda s: abs(s.zeta0 - z))
-        t = _solve(z, mu, spec, np.interp(nodes, near.mesh.nodes, near.zeta))
+        t = _solve(z, mu, meshes, np.interp(nodes, near.mesh.nodes, near.zeta))
         if t is None:
             raise _Unsolved
         known.append(t)
@@ -527,5 +526,3 @@ __all__ = [
     "root",
     "turning_points",
 ]
-
-_ = _meshes  # the meshes of the far part are the small ones (``grid.small()``)

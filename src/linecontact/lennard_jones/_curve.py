@@ -2,7 +2,9 @@
 
 Pseudo-arclength continuation in the central gap, the load and the profile from far away
 through the turning points of the load; :func:`lj_curve`, :func:`lj_pull_off`,
-:func:`lj_state`, :func:`lj_contact_for_load` and their results.
+:func:`lj_state`, :func:`lj_contact_for_load` and their results, and
+:class:`LJContinuation`, the curve at one ``mu`` that a caller keeps to ask it several
+things (the warm start is the caller's: the module keeps no state between calls).
 """
 
 from __future__ import annotations
@@ -25,7 +27,6 @@ from ._solver import (
     _edge_meshes,
     _grid_for,
     _law,
-    _meshes,
     _solve,
     _Solved,
 )
@@ -182,6 +183,164 @@ def _pull_off_of(mu, po, jump) -> LJPullOff:
 F_MAX_DEFAULT = 7.5
 
 
+class LJContinuation:
+    r"""The load curve at one :math:`\mu`, followed once: a warm start its caller owns.
+
+    The states found along the curve (the far part, the edges) and the pull-off are kept
+    on the object: a curve and then states between its points (the adhesion map), or the
+    contacts for several loads, go on from them instead of from far away. Only speed
+    depends on it (a state continued from a neighbour agrees with a fresh one within the
+    solver's tolerance). A result depends on the calls made on its object alone, never on
+    what other calls met before: :func:`lj_curve`, :func:`lj_pull_off`, :func:`lj_state`
+    and :func:`lj_contact_for_load` each make a fresh one.
+
+    Parameters
+    ----------
+    mu : float
+        :math:`w \sqrt{R/z_0}/(E z_0)`, in ``[0, 400]`` (0: rigid).
+    m : int, optional
+        Elements of the uniform core on the finest mesh (multiple of 4).
+    """
+
+    def __init__(self, mu: float, m: int | None = None) -> None:
+        self.mu = _check_mu(mu)
+        self.m = m
+        self._grid = _grid_for(self.mu, m)
+        self._states: list[_Solved] = []  # along the curve, from far away
+        self._found: tuple[_Solved, _Solved | None] | None = None  # pull-off, jump-in
+
+    def _pull_off_states(self) -> tuple[_Solved, _Solved | None]:
+        """:func:`~._branch.pull_off_search`, once per object."""
+        if self._found is None:
+            self._found = _b.pull_off_search(self.mu, self._grid)
+        return self._found
+
+    def _along(self, done) -> list[_Solved]:
+        """The states along the curve until ``done`` holds of one (from those found)."""
+        states = self._states or _b.far(self.mu, self._grid)
+        if not any(done(states[: i + 1]) for i in range(len(states))):
+            states = _b.climb(self.mu, self._grid, states, done)
+        self._states = states
+        return states
+
+    def curve(self, F_max: float | None = None) -> LJCurve:
+        """The load curve from far away through its turning points to ``F_max``.
+
+        As :func:`lj_curve`.
+        """
+        mu, grid = self.mu, self._grid
+        F_max = F_MAX_DEFAULT if F_max is None else float(F_max)
+        if not (np.isfinite(F_max) and F_max > 0):
+            raise ValueError(f"F_max must be a finite load > 0, got {F_max!r}")
+        states = self._along(lambda st: st[-1].F >= F_max and st[-1].half_width > 0)
+        states = states[
+            : 1 + next(i for i, s in enumerate(states) if s.F >= F_max and s.half_width > 0)
+        ]
+        po, jump, turns = _b.turning_points(mu, grid, states)
+        z = np.array([s.central_gap for s in states])
+        F = np.array([s.F for s in states])
+        with np.errstate(divide="ignore", invalid="ignore"):
+            dF = np.gradient(F, z)
+        turning = np.zeros(z.size, bool)
+        turning[turns] = True
+        return LJCurve(
+            central_gap_over_z0=z,
+            F=F,
+            error_estimate=np.array([s.error for s in states]),
+            half_width=np.array([s.half_width for s in states]),
+            stable=dF < 0,
+            turning=turning,
+            mu=mu,
+            pull_off=_pull_off_of(mu, po, jump),
+        )
+
+    def pull_off(self) -> LJPullOff:
+        """The pull-off force and the jump-in load (as :func:`lj_pull_off`)."""
+        if self.mu > MU_SELF_CONSISTENT:
+            return _limit_of(self.mu)
+        po, jump = self._pull_off_states()
+        return _pull_off_of(self.mu, po, jump)
+
+    def state(self, central_gap_over_z0: float) -> LJState:
+        """The equilibrium state at the central gap ``zeta0`` (as :func:`lj_state`)."""
+        from .. import domain as _domain
+
+        z = float(_domain.scalar("central_gap_over_z0", central_gap_over_z0))
+        mu, grid = self.mu, self._grid
+        s = _b.first(mu, grid)
+        if z >= _EDGE_GAP:
+            t = _solve(z, mu, grid.meshes(s.mesh.spec), s.zeta)
+            if t is None:
+                t = _b._down(mu, grid, s, z) if z < s.zeta0 else None
+            if t is None:
+                raise _b.fail("state", mu, z)
+            return _state_of(t, mu)
+        states = self._along(lambda st: st[-1].central_gap <= z)
+        k = next(i for i, s in enumerate(states) if s.central_gap <= z)
+        a, b = states[k - 1], states[k]
+        pool = list(states[: k + 1])
+        if a.edge == 0.0:  # between the far part and the first edge: in the central gap
+            t = _solve(z, mu, grid.meshes(a.mesh.spec), a.zeta)
+            if t is None:
+                raise _b.fail("state", mu, z)
+            return _state_of(t, mu)
+
+        def g(e: float) -> float:
+            t = _b.at_edge(mu, grid, pool, e)
+            if t is None:
+                raise _b.fail("state", mu, z)
+            pool.append(t)
+            return t.central_gap - z
+
+        ga, gb = a.central_gap - z, b.central_gap - z
+        e = a.edge if ga == 0.0 else _b.root(g, a.edge, b.edge, ga, gb, 1e-12 * b.edge, 1e-13 * z)
+        near = min(pool, key=lambda t: abs(t.edge - e))
+        # the state found holds its edge; where it can, the one returned holds the central
+        # gap on all three meshes, so that its load's estimate is the error at that central
+        # gap (on the contact branch of a compliant contact the central gap hardly moves, and
+        # a coarse mesh may hold no state at it: then the state at the edge whose
+        # extrapolated gap is zeta0)
+        t = _solve(z, mu, _edge_meshes(grid, near.edge), near.zeta)
+        return _state_of(near if t is None else t, mu)
+
+    def contact_for_load(self, F: float) -> LJState:
+        """The state on the stable contact branch carrying the load ``F``.
+
+        As :func:`lj_contact_for_load`.
+        """
+        F = float(F)
+        if not np.isfinite(F):
+            raise ValueError(f"F must be finite, got {F!r}")
+        mu, grid = self.mu, self._grid
+        po, _ = self._pull_off_states()
+        if F < po.F:
+            raise NoEquilibriumError(
+                f"no equilibrium: the load F={F!r} is below the pull-off force {po.F!r} "
+                f"(mu={mu!r}); the contact has already pulled off"
+            )
+        if F == po.F:
+            return _state_of(po, mu)
+        branch = _b.climb(mu, grid, [po], lambda st: st[-1].F >= F)
+        a, b = branch[-2], branch[-1]
+        if F == b.F:
+            return _state_of(b, mu)
+        pool = list(branch)
+
+        def g(e: float) -> float:
+            for known in pool:
+                if known.edge == e:
+                    return known.F - F
+            t = _b.at_edge(mu, grid, pool, e)
+            if t is None:
+                raise _b.fail("contact for a load", mu, b.zeta0)
+            pool.append(t)
+            return t.F - F
+
+        ftol = 1e-12 * max(1.0, abs(F))
+        e = _b.root(g, a.edge, b.edge, a.F - F, b.F - F, 1e-13 * b.edge, ftol)
+        return _state_of(min(pool, key=lambda t: abs(t.edge - e)), mu)
+
+
 def lj_curve(mu: float, *, F_max: float | None = None, m: int | None = None) -> LJCurve:
     r"""The load curve ``F(g0)`` from far away through its turning points to ``F_max``.
 
@@ -195,31 +354,24 @@ def lj_curve(mu: float, *, F_max: float | None = None, m: int | None = None) -> 
     m : int
         Elements of the uniform core on the finest mesh (multiple of 4).
     """
-    mu = _check_mu(mu)
-    F_max = F_MAX_DEFAULT if F_max is None else float(F_max)
-    if not (np.isfinite(F_max) and F_max > 0):
-        raise ValueError(f"F_max must be a finite load > 0, got {F_max!r}")
-    grid = _grid_for(mu, m)
-    states = _along(mu, m, grid, lambda st: st[-1].F >= F_max and st[-1].half_width > 0)
-    states = states[
-        : 1 + next(i for i, s in enumerate(states) if s.F >= F_max and s.half_width > 0)
-    ]
-    po, jump, turns = _b.turning_points(mu, grid, states)
-    z = np.array([s.central_gap for s in states])
-    F = np.array([s.F for s in states])
-    with np.errstate(divide="ignore", invalid="ignore"):
-        dF = np.gradient(F, z)
-    turning = np.zeros(z.size, bool)
-    turning[turns] = True
-    return LJCurve(
-        central_gap_over_z0=z,
-        F=F,
-        error_estimate=np.array([s.error for s in states]),
-        half_width=np.array([s.half_width for s in states]),
-        stable=dF < 0,
-        turning=turning,
+    return LJContinuation(mu, m).curve(F_max)
+
+
+def _limit_of(mu: float) -> LJPullOff:
+    """The pull-off beyond the self-consistent domain: the corrected JKR limit."""
+    F, err, gap = limit_pull_off(mu)
+    return LJPullOff(
         mu=mu,
-        pull_off=_pull_off_of(mu, po, jump),
+        F_pulloff=F,
+        central_gap_at_pulloff=gap,
+        half_width_at_pulloff=0.0,
+        error_estimate=err,
+        F_jump_in=math.nan,
+        central_gap_at_jump_in=math.nan,
+        maugis_parameter=float(maugis_parameter_of_mu(mu)),
+        n=0,
+        converged=True,
+        method="limit",
     )
 
 
@@ -235,70 +387,8 @@ def lj_pull_off(mu: float, *, m: int | None = None) -> LJPullOff:
     if mu > MU_SELF_CONSISTENT:
         if m is not None:
             _check_m(m)
-        F, err, gap = limit_pull_off(mu)
-        return LJPullOff(
-            mu=mu,
-            F_pulloff=F,
-            central_gap_at_pulloff=gap,
-            half_width_at_pulloff=0.0,
-            error_estimate=err,
-            F_jump_in=math.nan,
-            central_gap_at_jump_in=math.nan,
-            maugis_parameter=float(maugis_parameter_of_mu(mu)),
-            n=0,
-            converged=True,
-            method="limit",
-        )
-    po, jump = _pull_off(mu, m, _grid_for(mu, m))
-    return _pull_off_of(mu, po, jump)
-
-
-#: The states of the last curve followed (far part and edges), by ``(mu, m)``: a state or a
-#: curve at the same ``mu`` goes on from them instead of from far away (the adhesion map asks
-#: for a curve and then for states between its points). Only speed depends on it.
-_LAST: dict[tuple[float, int | None], list[_Solved]] = {}
-
-
-#: The last pull-off found, by ``(mu, m)``: the contacts for several loads at one ``mu`` (the
-#: groups' ``contact_for_load`` solves them one by one) search it once. Only speed depends on
-#: it.
-_LAST_PULL_OFF: dict[tuple[float, int | None], tuple[_Solved, _Solved | None]] = {}
-
-
-def forget() -> None:
-    """Forget the last curve and pull-off: the next call starts as a fresh process does.
-
-    They (and the factorisations the meshes keep) change a result only within the solver's
-    tolerance, but a sweep's points must not depend on the order in which a process met
-    them (:mod:`linecontact.sweeps`).
-    """
-    _LAST.clear()
-    _LAST_PULL_OFF.clear()
-    _meshes.cache_clear()
-
-
-def _pull_off(mu: float, m: int | None, grid) -> tuple[_Solved, _Solved | None]:
-    """:func:`~._branch.pull_off_search` at ``mu``, or the last one found there."""
-    key = (mu, m)
-    if key not in _LAST_PULL_OFF:
-        found = _b.pull_off_search(mu, grid)
-        _LAST_PULL_OFF.clear()
-        _LAST_PULL_OFF[key] = found
-    return _LAST_PULL_OFF[key]
-
-
-def _along(mu: float, m: int | None, grid, done) -> list[_Solved]:
-    """The states along the curve at ``mu`` until ``done`` holds of one.
-
-    From the last curve followed at ``mu`` where there is one, else from far away.
-    """
-    key = (mu, m)
-    states = _LAST.get(key) or _b.far(mu, grid)
-    if not any(done(states[: i + 1]) for i in range(len(states))):
-        states = _b.climb(mu, grid, states, done)
-    _LAST.clear()
-    _LAST[key] = states
-    return states
+        return _limit_of(mu)
+    return LJContinuation(mu, m).pull_off()
 
 
 def lj_state(central_gap_over_z0: float, mu: float, *, m: int | None = None) -> LJState:
@@ -312,42 +402,7 @@ def lj_state(central_gap_over_z0: float, mu: float, *, m: int | None = None) -> 
     from .. import domain as _domain
 
     z = float(_domain.scalar("central_gap_over_z0", central_gap_over_z0))
-    mu = _check_mu(mu)
-    grid = _grid_for(mu, m)
-    s = _b.first(mu, grid)
-    if z >= _EDGE_GAP:
-        t = _solve(z, mu, s.mesh.spec, s.zeta)
-        if t is None:
-            t = _b._down(mu, s, z) if z < s.zeta0 else None
-        if t is None:
-            raise _b.fail("state", mu, z)
-        return _state_of(t, mu)
-    states = _along(mu, m, grid, lambda st: st[-1].central_gap <= z)
-    k = next(i for i, s in enumerate(states) if s.central_gap <= z)
-    a, b = states[k - 1], states[k]
-    pool = list(states[: k + 1])
-    if a.edge == 0.0:  # between the far part and the first edge: in the central gap
-        t = _solve(z, mu, a.mesh.spec, a.zeta)
-        if t is None:
-            raise _b.fail("state", mu, z)
-        return _state_of(t, mu)
-
-    def g(e: float) -> float:
-        t = _b.at_edge(mu, grid, pool, e)
-        if t is None:
-            raise _b.fail("state", mu, z)
-        pool.append(t)
-        return t.central_gap - z
-
-    ga, gb = a.central_gap - z, b.central_gap - z
-    e = a.edge if ga == 0.0 else _b.root(g, a.edge, b.edge, ga, gb, 1e-12 * b.edge, 1e-13 * z)
-    near = min(pool, key=lambda t: abs(t.edge - e))
-    # the state found holds its edge; where it can, the one returned holds the central gap on
-    # all three meshes, so that its load's estimate is the error at that central gap (on the
-    # contact branch of a compliant contact the central gap hardly moves, and a coarse mesh
-    # may hold no state at it: then the state at the edge whose extrapolated gap is zeta0)
-    t = _solve(z, mu, _edge_meshes(grid, near.edge), near.zeta)
-    return _state_of(near if t is None else t, mu)
+    return LJContinuation(mu, m).state(z)
 
 
 def lj_contact_for_load(F: float, mu: float, *, m: int | None = None) -> LJState:
@@ -358,32 +413,4 @@ def lj_contact_for_load(F: float, mu: float, *, m: int | None = None) -> LJState
     F = float(F)
     if not np.isfinite(F):
         raise ValueError(f"F must be finite, got {F!r}")
-    mu = _check_mu(mu)
-    grid = _grid_for(mu, m)
-    po, _ = _pull_off(mu, m, grid)
-    if F < po.F:
-        raise NoEquilibriumError(
-            f"no equilibrium: the load F={F!r} is below the pull-off force {po.F!r} "
-            f"(mu={mu!r}); the contact has already pulled off"
-        )
-    if F == po.F:
-        return _state_of(po, mu)
-    branch = _b.climb(mu, grid, [po], lambda st: st[-1].F >= F)
-    a, b = branch[-2], branch[-1]
-    if F == b.F:
-        return _state_of(b, mu)
-    pool = list(branch)
-
-    def g(e: float) -> float:
-        for known in pool:
-            if known.edge == e:
-                return known.F - F
-        t = _b.at_edge(mu, grid, pool, e)
-        if t is None:
-            raise _b.fail("contact for a load", mu, b.zeta0)
-        pool.append(t)
-        return t.F - F
-
-    ftol = 1e-12 * max(1.0, abs(F))
-    e = _b.root(g, a.edge, b.edge, a.F - F, b.F - F, 1e-13 * b.edge, ftol)
-    return _state_of(min(pool, key=lambda t: abs(t.edge - e)), mu)
+    return LJContinuation(mu, m).contact_for_load(F)

@@ -129,7 +129,7 @@ class _Mesh:
     spec: tuple[float, ...]
     #: the last factorised Jacobian ``(mu, lu)``: a chord Newton reuses it from one state
     #: to the next (it only speeds convergence; the residual decides, so a stale one is
-    #: never wrong)
+    #: never wrong). Each solve's own: the meshes of :meth:`_Grid.meshes`.
     lu: dict = field(default_factory=dict, repr=False)
 
 
@@ -159,13 +159,21 @@ def _graded_nodes(lo: float, hi: float, hb: float, hmax: float) -> NDArray:
     return np.concatenate(parts)
 
 
-@functools.lru_cache(maxsize=12)
-def _meshes(spec: tuple[float, ...]) -> tuple[_Mesh, _Mesh, _Mesh]:
-    """The fine, middle and coarse meshes of ``spec = (lo, hi, hb, hmax[, pin])`` (cached).
+_Arrays = tuple[NDArray, NDArray, NDArray]
 
-    The coarse mesh is :func:`_graded_nodes`, with the node ``pin`` added where given (an
-    edge held between its nodes); the others bisect it once and twice. The kernel is
-    computed on the fine mesh and derived exactly for the coarser ones.
+#: The meshes kept, by spec: by the process (their arrays) and by each solve (with its
+#: factorisations); the edges pinned between nodes make a spec each.
+_MESHES_KEPT = 12
+
+
+@functools.lru_cache(maxsize=_MESHES_KEPT)
+def _mesh_arrays(spec: tuple[float, ...]) -> tuple[_Arrays, _Arrays, _Arrays]:
+    """The nodes, kernel and weights of the fine, middle and coarse meshes of ``spec``.
+
+    ``spec = (lo, hi, hb, hmax[, pin])``. The coarse mesh is :func:`_graded_nodes`, with the
+    node ``pin`` added where given (an edge held between its nodes); the others bisect it
+    once and twice. The kernel is computed on the fine mesh and derived exactly for the
+    coarser ones. Cached: they are a function of ``spec`` alone, and read-only.
     """
     fine = _graded_nodes(*spec[:4])
     if len(spec) > 4:
@@ -177,11 +185,14 @@ def _meshes(spec: tuple[float, ...]) -> tuple[_Mesh, _Mesh, _Mesh]:
     for _ in range(2):
         fine = np.sort(np.concatenate([fine, 0.5 * (fine[1:] + fine[:-1])]))
     K = _kernel(fine)
-    out = [_Mesh(fine, K, _trapezoid(fine), spec)]
+    out = [(fine, K, _trapezoid(fine))]
     nodes = fine
     for _ in range(2):
         nodes, K = _coarsen(nodes, K)
-        out.append(_Mesh(nodes, K, _trapezoid(nodes), spec))
+        out.append((nodes, K, _trapezoid(nodes)))
+    for arrays in out:
+        for a in arrays:
+            a.setflags(write=False)
     return out[0], out[1], out[2]
 
 
@@ -199,6 +210,25 @@ class _Grid:
     ell: float
     hb: float
     hmax: float
+    #: the meshes of this solve, by spec (:meth:`meshes`)
+    store: dict = field(default_factory=dict, compare=False, repr=False)
+
+    def meshes(self, spec: tuple[float, ...]) -> tuple[_Mesh, _Mesh, _Mesh]:
+        """The fine, middle and coarse meshes of ``spec`` in this solve.
+
+        Their arrays are shared by every solve (:func:`_mesh_arrays`); their chord
+        factorisation (``lu``) is this solve's own, so that a result depends on the calls
+        made with this grid only, never on what another solve met before. The last
+        :data:`_MESHES_KEPT` specs are kept (each holds a dense kernel).
+        """
+        got = self.store.pop(spec, None)  # the most recent last: the store is an LRU
+        if got is None:
+            f, m, c = (_Mesh(n, K, w, spec) for n, K, w in _mesh_arrays(spec))
+            got = (f, m, c)
+            if len(self.store) >= _MESHES_KEPT:  # a kernel each: the oldest goes
+                del self.store[next(iter(self.store))]
+        self.store[spec] = got
+        return got
 
     def spec(self, e: float) -> tuple[float, float, float, float]:
         c = self.ell * round(e / self.ell)
@@ -379,14 +409,8 @@ class _Solved:
     central_gap: float = math.nan  # reported: zeta0, or its extrapolation at an edge held
 
 
-def _solve(
-    zeta0: float, mu: float, spec: tuple[float, ...] | tuple[_Mesh, _Mesh, _Mesh], guess
-) -> _Solved | None:
-    """One state at the central gap ``zeta0`` on three meshes; ``None`` where Newton fails.
-
-    The meshes of ``spec``, or the meshes given.
-    """
-    meshes = spec if isinstance(spec[0], _Mesh) else _meshes(spec)
+def _solve(zeta0: float, mu: float, meshes: tuple[_Mesh, _Mesh, _Mesh], guess) -> _Solved | None:
+    """One state at the central gap ``zeta0`` on three meshes; ``None`` where Newton fails."""
     fine = meshes[0]
     g = zeta0 + 0.5 * fine.nodes**2 if guess is None else guess
     zeta, res, ok = _newton(zeta0, mu, fine, g)
@@ -423,8 +447,8 @@ def _follow(mu: float, grid: _Grid, s: _Solved) -> _Solved:
     e = _half_width(s.mesh.nodes, s.zeta, _EDGE_GAP)
     if grid.holds(s.mesh.spec, e):
         return s
-    spec = grid.spec(e)
-    t = _solve(s.zeta0, mu, spec, _on(s, _meshes(spec)[0]))
+    meshes = grid.meshes(grid.spec(e))
+    t = _solve(s.zeta0, mu, meshes, _on(s, meshes[0]))
     return s if t is None else t
 
 
@@ -520,9 +544,9 @@ def _edge_meshes(grid: _Grid, e: float) -> tuple[_Mesh, _Mesh, _Mesh]:
     if e <= grid.small_end() * (1.0 + 1e-12):
         j = e / grid.hb
         on_node = abs(j - round(j)) <= 1e-9 * max(1.0, j)
-        return _meshes(grid.small() if on_node else (*grid.small(), e))
+        return grid.meshes(grid.small() if on_node else (*grid.small(), e))
     spec, k = grid.scaled(e)
-    f, m, c = _meshes(spec)
+    f, m, c = grid.meshes(spec)
     return _scaled_mesh(f, k), _scaled_mesh(m, k), _scaled_mesh(c, k)
 
 

@@ -16,7 +16,6 @@ from typing import Any
 import numpy as np
 
 from ..errors import ConvergenceError
-from ..lennard_jones import _forget
 from ..operations._messages import spell
 from ..output import unit_of
 from ._plan import Plan, template
@@ -112,7 +111,6 @@ def _words(p: Plan, values: dict[str, Any]) -> list[str]:
 
 def call(p: Plan, values: dict[str, Any], said: list[tuple[str, str]]) -> tuple[Any, str, str]:
     """Run the operation at ``values`` (name: value): (its table or None, state, reason)."""
-    _forget()  # each point as a fresh process computes it, whatever came before
     base = template(p)
     at = {
         a.dest: v if isinstance(v, list) or not a.many else [v]
