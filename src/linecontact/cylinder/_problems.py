@@ -59,18 +59,20 @@ def _cylinder_tangential(
     d_over_a,
     tangential_load,
     method,
-    policy,
+    on_failure,
 ) -> CylinderTangential:
-    if (friction_stress is None) == (friction_coefficient is None):
-        raise ValueError(
-            "give exactly one of friction_stress (constant tau0 [Pa]) or "
-            "friction_coefficient (Coulomb mu)"
-        )
+    """The tangential ``problem`` (``"sliding initiation"`` or ``"steady rolling"``) in SI units.
+
+    The engine of both methods, from their arguments as given: refused where the problem is
+    not written for the cylinder's law, every input checked before any solve.
+    """
+    cylinder._written(problem.replace(" ", "_"))
+    policy = failure_policy(on_failure)
+    coulomb = _is_coulomb(friction_stress, friction_coefficient)
     if (d_over_a is None) == (tangential_load is None):
         raise ValueError("give exactly one of d_over_a or tangential_load [N/m]")
     E = cylinder.modulus
     rolling = problem == "steady rolling"
-    coulomb = friction_coefficient is not None
     pb = (
         (_CARTER if coulomb else _ROLLING)
         if rolling
@@ -97,12 +99,7 @@ def _cylinder_tangential(
     broadcast(normal_load=F, **{fr_name: fr, st_name: st})
     d = st if d_over_a is not None else None
     if coulomb:
-        if cylinder.cohesive_stress != 0:
-            raise ValueError(
-                "Coulomb friction is the macro-scale counterpart for the "
-                "non-adhesive Hertz contact: use a Cylinder without adhesion "
-                "(cohesive_stress = 0), or give friction_stress"
-            )
+        _refuse_adhesion_with_coulomb(cylinder)
         contact = cylinder._for_load("normal_load", F)
         A = np.asarray(contact.contact_half_width) / cylinder.radius
         _check_hertz_width("normal_load", F, A, cylinder.radius)
@@ -150,6 +147,26 @@ def _cylinder_tangential(
         r,
         contact,
     )
+
+
+def _is_coulomb(friction_stress: Any, friction_coefficient: Any) -> bool:
+    """Whether the friction given is Coulomb's (``friction_coefficient``): exactly one given."""
+    if (friction_stress is None) == (friction_coefficient is None):
+        raise ValueError(
+            "give exactly one of friction_stress (constant tau0 [Pa]) or "
+            "friction_coefficient (Coulomb mu)"
+        )
+    return friction_coefficient is not None
+
+
+def _refuse_adhesion_with_coulomb(cylinder: Any) -> None:
+    """Refuse Coulomb friction on an adhesive cylinder: it is the Hertz contact's friction."""
+    if cylinder.cohesive_stress != 0:
+        raise ValueError(
+            "Coulomb friction is the macro-scale counterpart for the non-adhesive Hertz "
+            "contact: use a Cylinder without adhesion (cohesive_stress = 0), or give "
+            "friction_stress"
+        )
 
 
 def _full_slip(
@@ -251,8 +268,6 @@ def sliding_initiation(
     >>> s.state, s.stick_zone_end < s.contact_half_width
     ('stick-slip', True)
     """
-    self._written("sliding_initiation")
-    policy = failure_policy(on_failure)
     return _cylinder_tangential(
         "sliding initiation",
         self,
@@ -262,7 +277,7 @@ def sliding_initiation(
         d_over_a,
         tangential_load,
         method,
-        policy,
+        on_failure,
     )
 
 
@@ -291,8 +306,6 @@ def steady_rolling(
     >>> r.creep_ratio < 0
     True
     """
-    self._written("steady_rolling")
-    policy = failure_policy(on_failure)
     return _cylinder_tangential(
         "steady rolling",
         self,
@@ -302,7 +315,7 @@ def steady_rolling(
         d_over_a,
         tangential_load,
         method,
-        policy,
+        on_failure,
     )
 
 
@@ -472,21 +485,11 @@ def push(
 
 def _history_contact(cylinder, normal_load, friction_stress, friction_coefficient):
     """(F, a [m], friction scale, coulomb?) for the SI history functions, every input checked."""
-    if (friction_stress is None) == (friction_coefficient is None):
-        raise ValueError(
-            "give exactly one of friction_stress (constant tau0 [Pa]) or "
-            "friction_coefficient (Coulomb mu)"
-        )
-    coulomb = friction_coefficient is not None
+    coulomb = _is_coulomb(friction_stress, friction_coefficient)
     if coulomb:
         F = scalar("normal_load", normal_load)
         fr = _domain.scalar("friction_coefficient", friction_coefficient, "mu")
-        if cylinder.cohesive_stress != 0:
-            raise ValueError(
-                "Coulomb friction is the macro-scale counterpart for the non-adhesive Hertz "
-                "contact: use a Cylinder without adhesion (cohesive_stress = 0), or give "
-                "friction_stress"
-            )
+        _refuse_adhesion_with_coulomb(cylinder)
     else:
         F = scalar("normal_load", normal_load, low=-np.inf)
         fr = scalar("friction_stress", friction_stress)
