@@ -100,38 +100,27 @@ def _cylinder_tangential(
     d = st if d_over_a is not None else None
     if coulomb:
         _refuse_adhesion_with_coulomb(cylinder)
-        contact = cylinder._for_load("normal_load", F)
-        A = np.asarray(contact.contact_half_width) / cylinder.radius
-        _check_hertz_width("normal_load", F, A, cylinder.radius)
-        mu = fr
-        if d is None:
-            _domain.check_si("tangential_load", st, mu * F, "T_over_muF", "N/m")
-        T = None if d is not None else st / (mu * F)
-        coulomb_fn = steady_rolling_coulomb if rolling else sliding_initiation_coulomb
-        full = mu * F
-        try:
-            with _small_strain_in_si():  # the contact's width: said by _for_load
-                r: Any = coulomb_fn(mu, A, d, T_over_muF=T, method=method, on_failure=policy)
-        except NoEquilibriumError:
-            raise _full_slip(st, full, "mu F", st_name) from None
-        friction = "coulomb"
-    else:
-        contact = cylinder._for_load("normal_load", F)
-        a = np.asarray(contact.contact_half_width)
-        t0 = fr
-        if d is None:
-            _domain.check_si("tangential_load", st, E * a, "T_over_Ea", "N/m")
-        T = None if d is not None else st / (E * a)
-        fn = _tangential.steady_rolling if rolling else _tangential.sliding_initiation
-        # broadcast with a so that every field has the shape of the points
-        full = 2 * a * t0
-        try:
-            with _small_strain_in_si():
-                r = fn(t0 / E + 0 * a, d, T_over_Ea=T, method=method, on_failure=policy)
-        except NoEquilibriumError:
-            raise _full_slip(st, full, "2 a tau0", st_name) from None
-        friction = "constant"
+    contact = cylinder._for_load("normal_load", F)
     a = np.asarray(contact.contact_half_width)
+    if coulomb:
+        _check_hertz_width("normal_load", F, a / cylinder.radius, cylinder.radius)
+    unit, group, full = _tangential_scales(coulomb, fr, F, a, E)
+    if d is None:
+        _domain.check_si("tangential_load", st, unit, group, "N/m")
+    T = None if d is not None else st / unit
+    try:
+        with _small_strain_in_si():  # the contact's width: said by _for_load
+            if coulomb:
+                coulomb_fn = steady_rolling_coulomb if rolling else sliding_initiation_coulomb
+                A = a / cylinder.radius
+                r: Any = coulomb_fn(fr, A, d, T_over_muF=T, method=method, on_failure=policy)
+            else:
+                fn = _tangential.steady_rolling if rolling else _tangential.sliding_initiation
+                # broadcast with a so that every field has the shape of the points
+                r = fn(fr / E + 0 * a, d, T_over_Ea=T, method=method, on_failure=policy)
+    except NoEquilibriumError:
+        raise _full_slip(st, full, "mu F" if coulomb else "2 a tau0", st_name) from None
+    friction = "coulomb" if coulomb else "constant"
     si = to_si(r, Scales.of(cylinder, a=a))
     creep = r.creep_over_V if rolling else None
     return CylinderTangential(
@@ -147,6 +136,18 @@ def _cylinder_tangential(
         r,
         contact,
     )
+
+
+def _tangential_scales(coulomb: bool, fr: Any, F: Any, a: Any, E: float) -> tuple[Any, str, Any]:
+    """``(unit, group, full)``: the tangential load's unit [N/m], its group, the full-slip load.
+
+    With the friction ``fr``, the normal load ``F`` [N/m] and the half-width ``a`` [m]:
+    Coulomb friction (``fr`` is ``mu``) ``(mu F, "T_over_muF", mu F)``; a constant friction
+    stress (``fr`` is ``tau0`` [Pa]) ``(E a, "T_over_Ea", 2 a tau0)``.
+    """
+    if coulomb:
+        return fr * F, "T_over_muF", fr * F
+    return E * a, "T_over_Ea", 2 * a * fr
 
 
 def _is_coulomb(friction_stress: Any, friction_coefficient: Any) -> bool:
@@ -503,23 +504,21 @@ def _history_contact(cylinder, normal_load, friction_stress, friction_coefficien
 
 def _history_solve(
     cylinder, normal_load, stress, coefficient, name, loads, constant, coulomb, method
-):
-    """``(F, a, full-slip load, result, law, SI fields)``: ``loads`` [N/m] solved.
+) -> tuple[tuple[str, float, float, float], Any, dict[str, Any]]:
+    """``(head, result, SI fields)``: ``loads`` [N/m] solved.
 
     Through the nondimensional call ``constant(tau0/E, loads/(E a))`` or
-    ``coulomb(mu, a/R, loads/(mu F))``; ``law`` is ``"constant"`` or ``"coulomb"``. The loads
-    are refused beyond the solvers' domain here, as ``name`` [N/m] (the nondimensional call
-    would name its group).
+    ``coulomb(mu, a/R, loads/(mu F))``; ``head`` is ``(law, F, a, full-slip load)``, the
+    fields that both SI history results begin with (:class:`._results._HistoryResult`),
+    ``law`` ``"constant"`` or ``"coulomb"``. The loads are refused beyond the solvers' domain
+    here, as ``name`` [N/m] (the nondimensional call would name its group).
     """
     from ..tangential.history import _T_LIMIT
 
     F, a, fr, is_coulomb, _ = _history_contact(cylinder, normal_load, stress, coefficient)
     E = cylinder.modulus
-    unit, words = (
-        (fr * F, _domain.SCALE_WORDS["T_over_muF"])
-        if is_coulomb
-        else (E * a, _domain.SCALE_WORDS["T_over_Ea"])
-    )
+    unit, group, full = _tangential_scales(is_coulomb, fr, F, a, E)
+    words = _domain.SCALE_WORDS[group]
     with np.errstate(over="ignore"):
         bad = ~(np.abs(loads) <= _T_LIMIT * unit)
     if np.any(bad):
@@ -527,16 +526,13 @@ def _history_solve(
             f"{name} must be at most {_T_LIMIT * unit:.6g} N/m in magnitude ({_T_LIMIT:g} "
             f"{words}, the domain of the solvers), got {float(loads[bad].flat[0])!r}"
         )
-    if is_coulomb:
-        with _small_strain_in_si():  # the contact's width: said by _for_load
-            r = coulomb(fr, a / cylinder.radius, loads / (fr * F), method=method)
-        full = fr * F
-    else:
-        with _small_strain_in_si():
-            r = constant(fr / E, loads / (E * a), method=method)
-        full = 2 * a * fr
+    with _small_strain_in_si():  # the contact's width: said by _for_load
+        if is_coulomb:
+            r = coulomb(fr, a / cylinder.radius, loads / unit, method=method)
+        else:
+            r = constant(fr / E, loads / unit, method=method)
     si = to_si(r, Scales.of(cylinder, a=a))
-    return F, a, full, r, "coulomb" if is_coulomb else "constant", si
+    return ("coulomb" if is_coulomb else "constant", F, a, full), r, si
 
 
 def tangential_history(
@@ -580,7 +576,7 @@ def tangential_history(
     self._written("tangential_history")
     T = check_array("tangential_load", tangential_load, low=-np.inf)
     solvers = (tangential_history, tangential_history_coulomb)
-    F, a, full, h, law, si = _history_solve(
+    head, h, si = _history_solve(
         self,
         normal_load,
         friction_stress,
@@ -591,10 +587,7 @@ def tangential_history(
         method,
     )
     return CylinderTangentialHistory(
-        law,
-        F,
-        a,
-        full,
+        *head,
         T.reshape(-1),  # as given (not back from T/(E a))
         si["stick_zone_half_width"],
         si["displacement"],
@@ -643,14 +636,11 @@ def cyclic_loss(
     self._written("cyclic_loss")
     A = check_array("amplitude", amplitude, low=0.0, low_inclusive=False)
     solvers = (cyclic_loss, cyclic_loss_coulomb)
-    F, a, full, w, law, si = _history_solve(
+    head, w, si = _history_solve(
         self, normal_load, friction_stress, friction_coefficient, "amplitude", A, *solvers, method
     )
     return CylinderCyclicLoss(
-        law,
-        F,
-        a,
-        full,
+        *head,
         _scalar(A + 0 * np.asarray(w.W_over_Ea2)),  # as given, in the result's shape
         si["energy_per_cycle"],
         si["stick_zone_half_width"],
