@@ -37,6 +37,7 @@ from ._checks import (
     _first,
     _plausible,
     _small_strain_in_si,
+    _too_wide,
     _warn_widths,
 )
 from ._results import (
@@ -461,10 +462,7 @@ def push(
             *(np.shape(v) for v in (F, H, Q, tip_friction) if v is not None)
         )
         Fi = float(np.broadcast_to(load, points).reshape(-1)[e.index])
-        raise ValueError(
-            f"normal_load={Fi!r} N/m needs a contact of half-width {e.a_over_R * R:.6g} m, "
-            f"{e.a_over_R:.6g} radii: {e.limit}"
-        ) from None
+        raise _too_wide("normal_load", Fi, e, R) from None
 
     si = to_si(p, Scales.of(self))  # h2: the cylinder's (advancing) range
     _warn_widths(si["rest_half_width"], R, "the contact half-width at rest")
