@@ -6,12 +6,14 @@ import contextlib
 import contextvars
 import warnings
 from collections.abc import Iterator
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .. import closed_forms as _cf
 from .. import domain as _domain
+from .._validation import check_array
 from ..errors import ModelValidityWarning, UnitsWarning
 from ..materials import MAUGIS_STRENGTH
 
@@ -83,6 +85,33 @@ def _first(bad: NDArray, *values: ArrayLike) -> list[float]:
     """The values at the first point where ``bad`` (broadcast together), as floats."""
     i = int(np.flatnonzero(np.reshape(bad, -1))[0])
     return [float(np.reshape(np.broadcast_to(v, np.shape(bad)), -1)[i]) for v in values]
+
+
+def _normal_load(cylinder: Any, name: str, load: ArrayLike) -> tuple[NDArray, float]:
+    """``(F, E h)``: the normal ``load`` [N/m] checked under the caller's ``name``, its unit.
+
+    A load beyond the domain of ``F_over_Eh`` is refused in N/m, for this cylinder.
+    """
+    F = check_array(name, load, low=-np.inf, low_inclusive=True)
+    Eh = cylinder.modulus * cylinder.adhesion_range
+    _domain.check_si(name, F, Eh, "F_over_Eh", "N/m")
+    return F, Eh
+
+
+def _as_given(F: NDArray, like: ArrayLike) -> Any:
+    """The load ``F`` as it was given (not back from ``F/(E h)``), in the shape of ``like``."""
+    return F.item() if np.ndim(like) == 0 else np.broadcast_to(F, np.shape(like))
+
+
+def _too_wide(name: str, Fi: float, e: Any, R: float) -> ValueError:
+    """The error for the load ``name`` = ``Fi`` [N/m] whose contact is too wide (``e``).
+
+    ``e`` is the :class:`~linecontact.domain.TooWideError` of the solver; ``R`` [m] the radius.
+    """
+    return ValueError(
+        f"{name}={Fi!r} N/m needs a contact of half-width {e.a_over_R * R:.6g} m, "
+        f"{e.a_over_R:.6g} radii: {e.limit}"
+    )
 
 
 def _which(default: str, *candidates: tuple[str, ArrayLike, str | None]) -> str:

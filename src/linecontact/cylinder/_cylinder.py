@@ -16,7 +16,6 @@ from .. import domain as _domain
 from .. import normal as _normal
 from .._validation import (
     FailurePolicy,
-    check_array,
     failure_policy,
     positive,
     scalar,
@@ -36,8 +35,11 @@ from ._checks import (
     _S_LJ,
     _ZERO_WIDTH,
     PLAUSIBLE,
+    _as_given,
     _check_cylinder_si,
+    _normal_load,
     _small_strain_in_si,
+    _too_wide,
     _warn_small_strain,
     _warn_widths,
 )
@@ -467,9 +469,7 @@ class Cylinder:
         self, name: str, load: ArrayLike, branch: str = "stable", policy: FailurePolicy = "raise"
     ) -> CylinderContact:
         """The contact carrying ``load`` [N/m]; messages name the caller's parameter."""
-        F = check_array(name, load, low=-np.inf, low_inclusive=True)
-        Eh = self.modulus * self.adhesion_range
-        _domain.check_si(name, F, Eh, "F_over_Eh", "N/m")
+        F, Eh = _normal_load(self, name, load)
         if branch == "stable" and policy == "raise":
             # said in the units given ([N/m]), not only as F_over_Eh
             F_min = _normal.pull_off(self.R_over_h, self.sigma0_over_E).F_minimum_over_Eh * Eh
@@ -490,17 +490,13 @@ class Cylinder:
                 )
         except _domain.TooWideError as e:
             Fi = float(np.reshape(np.broadcast_to(F, np.shape(F)), -1)[e.index])
-            raise ValueError(
-                f"{name}={Fi!r} N/m needs a contact of half-width {e.a_over_R * self.radius:.6g}"
-                f" m, {e.a_over_R:.6g} radii: {e.limit}"
-            ) from None
+            raise _too_wide(name, Fi, e, self.radius) from None
         # the load asked for, not F/(Eh) times E h (which need not give back F exactly)
         c = self._wrap(r)
-        load_given = F.item() if np.ndim(c.load) == 0 else np.broadcast_to(F, np.shape(c.load))
         return CylinderContact(
             c.contact_half_width,
             c.adhesive_zone_half_width,
-            load_given,
+            _as_given(F, c.load),
             c.stable,
             c.state,
             r,
@@ -514,9 +510,7 @@ class Cylinder:
         from .. import lennard_jones_groups as _ljg
         from ..laws import lennard_jones as _lj
 
-        F = check_array(name, load, low=-np.inf, low_inclusive=True)
-        Eh = self.modulus * self.adhesion_range
-        _domain.check_si(name, F, Eh, "F_over_Eh", "N/m")
+        F, Eh = _normal_load(self, name, load)
         F_max = float(_ljg.load_max_over_Eh(self.R_over_h, self.sigma0_over_E)) * Eh
         if np.any(F > F_max):
             raise ValueError(
@@ -540,9 +534,7 @@ class Cylinder:
 
         si = to_si(r, Scales.of(self))
         # the load as given (not back from F/(E h))
-        si["load"] = (
-            F.item() if np.ndim(r.F_over_Eh) == 0 else np.broadcast_to(F, np.shape(r.F_over_Eh))
-        )
+        si["load"] = _as_given(F, r.F_over_Eh)
         _warn_widths(si["contact_half_width"], self.radius, stacklevel=4)
         return CylinderLennardJonesContact(
             **si, stable=r.stable, state=r.state, nondimensional=r, scales=Scales.of(self)

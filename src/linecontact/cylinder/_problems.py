@@ -37,6 +37,7 @@ from ._checks import (
     _first,
     _plausible,
     _small_strain_in_si,
+    _too_wide,
     _warn_widths,
 )
 from ._results import (
@@ -59,18 +60,20 @@ def _cylinder_tangential(
     d_over_a,
     tangential_load,
     method,
-    policy,
+    on_failure,
 ) -> CylinderTangential:
-    if (friction_stress is None) == (friction_coefficient is None):
-        raise ValueError(
-            "give exactly one of friction_stress (constant tau0 [Pa]) or "
-            "friction_coefficient (Coulomb mu)"
-        )
+    """The tangential ``problem`` (``"sliding initiation"`` or ``"steady rolling"``) in SI units.
+
+    The engine of both methods, from their arguments as given: refused where the problem is
+    not written for the cylinder's law, every input checked before any solve.
+    """
+    cylinder._written(problem.replace(" ", "_"))
+    policy = failure_policy(on_failure)
+    coulomb = _is_coulomb(friction_stress, friction_coefficient)
     if (d_over_a is None) == (tangential_load is None):
         raise ValueError("give exactly one of d_over_a or tangential_load [N/m]")
     E = cylinder.modulus
     rolling = problem == "steady rolling"
-    coulomb = friction_coefficient is not None
     pb = (
         (_CARTER if coulomb else _ROLLING)
         if rolling
@@ -97,44 +100,28 @@ def _cylinder_tangential(
     broadcast(normal_load=F, **{fr_name: fr, st_name: st})
     d = st if d_over_a is not None else None
     if coulomb:
-        if cylinder.cohesive_stress != 0:
-            raise ValueError(
-                "Coulomb friction is the macro-scale counterpart for the "
-                "non-adhesive Hertz contact: use a Cylinder without adhesion "
-                "(cohesive_stress = 0), or give friction_stress"
-            )
-        contact = cylinder._for_load("normal_load", F)
-        A = np.asarray(contact.contact_half_width) / cylinder.radius
-        _check_hertz_width("normal_load", F, A, cylinder.radius)
-        mu = fr
-        if d is None:
-            _domain.check_si("tangential_load", st, mu * F, "T_over_muF", "N/m")
-        T = None if d is not None else st / (mu * F)
-        coulomb_fn = steady_rolling_coulomb if rolling else sliding_initiation_coulomb
-        full = mu * F
-        try:
-            with _small_strain_in_si():  # the contact's width: said by _for_load
-                r: Any = coulomb_fn(mu, A, d, T_over_muF=T, method=method, on_failure=policy)
-        except NoEquilibriumError:
-            raise _full_slip(st, full, "mu F", st_name) from None
-        friction = "coulomb"
-    else:
-        contact = cylinder._for_load("normal_load", F)
-        a = np.asarray(contact.contact_half_width)
-        t0 = fr
-        if d is None:
-            _domain.check_si("tangential_load", st, E * a, "T_over_Ea", "N/m")
-        T = None if d is not None else st / (E * a)
-        fn = _tangential.steady_rolling if rolling else _tangential.sliding_initiation
-        # broadcast with a so that every field has the shape of the points
-        full = 2 * a * t0
-        try:
-            with _small_strain_in_si():
-                r = fn(t0 / E + 0 * a, d, T_over_Ea=T, method=method, on_failure=policy)
-        except NoEquilibriumError:
-            raise _full_slip(st, full, "2 a tau0", st_name) from None
-        friction = "constant"
+        _refuse_adhesion_with_coulomb(cylinder)
+    contact = cylinder._for_load("normal_load", F)
     a = np.asarray(contact.contact_half_width)
+    if coulomb:
+        _check_hertz_width("normal_load", F, a / cylinder.radius, cylinder.radius)
+    unit, group, full = _tangential_scales(coulomb, fr, F, a, E)
+    if d is None:
+        _domain.check_si("tangential_load", st, unit, group, "N/m")
+    T = None if d is not None else st / unit
+    try:
+        with _small_strain_in_si():  # the contact's width: said by _for_load
+            if coulomb:
+                coulomb_fn = steady_rolling_coulomb if rolling else sliding_initiation_coulomb
+                A = a / cylinder.radius
+                r: Any = coulomb_fn(fr, A, d, T_over_muF=T, method=method, on_failure=policy)
+            else:
+                fn = _tangential.steady_rolling if rolling else _tangential.sliding_initiation
+                # broadcast with a so that every field has the shape of the points
+                r = fn(fr / E + 0 * a, d, T_over_Ea=T, method=method, on_failure=policy)
+    except NoEquilibriumError:
+        raise _full_slip(st, full, "mu F" if coulomb else "2 a tau0", st_name) from None
+    friction = "coulomb" if coulomb else "constant"
     si = to_si(r, Scales.of(cylinder, a=a))
     creep = r.creep_over_V if rolling else None
     return CylinderTangential(
@@ -150,6 +137,38 @@ def _cylinder_tangential(
         r,
         contact,
     )
+
+
+def _tangential_scales(coulomb: bool, fr: Any, F: Any, a: Any, E: float) -> tuple[Any, str, Any]:
+    """``(unit, group, full)``: the tangential load's unit [N/m], its group, the full-slip load.
+
+    With the friction ``fr``, the normal load ``F`` [N/m] and the half-width ``a`` [m]:
+    Coulomb friction (``fr`` is ``mu``) ``(mu F, "T_over_muF", mu F)``; a constant friction
+    stress (``fr`` is ``tau0`` [Pa]) ``(E a, "T_over_Ea", 2 a tau0)``.
+    """
+    if coulomb:
+        return fr * F, "T_over_muF", fr * F
+    return E * a, "T_over_Ea", 2 * a * fr
+
+
+def _is_coulomb(friction_stress: Any, friction_coefficient: Any) -> bool:
+    """Whether the friction given is Coulomb's (``friction_coefficient``): exactly one given."""
+    if (friction_stress is None) == (friction_coefficient is None):
+        raise ValueError(
+            "give exactly one of friction_stress (constant tau0 [Pa]) or "
+            "friction_coefficient (Coulomb mu)"
+        )
+    return friction_coefficient is not None
+
+
+def _refuse_adhesion_with_coulomb(cylinder: Any) -> None:
+    """Refuse Coulomb friction on an adhesive cylinder: it is the Hertz contact's friction."""
+    if cylinder.cohesive_stress != 0:
+        raise ValueError(
+            "Coulomb friction is the macro-scale counterpart for the non-adhesive Hertz "
+            "contact: use a Cylinder without adhesion (cohesive_stress = 0), or give "
+            "friction_stress"
+        )
 
 
 def _full_slip(
@@ -251,8 +270,6 @@ def sliding_initiation(
     >>> s.state, s.stick_zone_end < s.contact_half_width
     ('stick-slip', True)
     """
-    self._written("sliding_initiation")
-    policy = failure_policy(on_failure)
     return _cylinder_tangential(
         "sliding initiation",
         self,
@@ -262,7 +279,7 @@ def sliding_initiation(
         d_over_a,
         tangential_load,
         method,
-        policy,
+        on_failure,
     )
 
 
@@ -291,8 +308,6 @@ def steady_rolling(
     >>> r.creep_ratio < 0
     True
     """
-    self._written("steady_rolling")
-    policy = failure_policy(on_failure)
     return _cylinder_tangential(
         "steady rolling",
         self,
@@ -302,7 +317,7 @@ def steady_rolling(
         d_over_a,
         tangential_load,
         method,
-        policy,
+        on_failure,
     )
 
 
@@ -447,10 +462,7 @@ def push(
             *(np.shape(v) for v in (F, H, Q, tip_friction) if v is not None)
         )
         Fi = float(np.broadcast_to(load, points).reshape(-1)[e.index])
-        raise ValueError(
-            f"normal_load={Fi!r} N/m needs a contact of half-width {e.a_over_R * R:.6g} m, "
-            f"{e.a_over_R:.6g} radii: {e.limit}"
-        ) from None
+        raise _too_wide("normal_load", Fi, e, R) from None
 
     si = to_si(p, Scales.of(self))  # h2: the cylinder's (advancing) range
     _warn_widths(si["rest_half_width"], R, "the contact half-width at rest")
@@ -472,21 +484,11 @@ def push(
 
 def _history_contact(cylinder, normal_load, friction_stress, friction_coefficient):
     """(F, a [m], friction scale, coulomb?) for the SI history functions, every input checked."""
-    if (friction_stress is None) == (friction_coefficient is None):
-        raise ValueError(
-            "give exactly one of friction_stress (constant tau0 [Pa]) or "
-            "friction_coefficient (Coulomb mu)"
-        )
-    coulomb = friction_coefficient is not None
+    coulomb = _is_coulomb(friction_stress, friction_coefficient)
     if coulomb:
         F = scalar("normal_load", normal_load)
         fr = _domain.scalar("friction_coefficient", friction_coefficient, "mu")
-        if cylinder.cohesive_stress != 0:
-            raise ValueError(
-                "Coulomb friction is the macro-scale counterpart for the non-adhesive Hertz "
-                "contact: use a Cylinder without adhesion (cohesive_stress = 0), or give "
-                "friction_stress"
-            )
+        _refuse_adhesion_with_coulomb(cylinder)
     else:
         F = scalar("normal_load", normal_load, low=-np.inf)
         fr = scalar("friction_stress", friction_stress)
@@ -500,23 +502,21 @@ def _history_contact(cylinder, normal_load, friction_stress, friction_coefficien
 
 def _history_solve(
     cylinder, normal_load, stress, coefficient, name, loads, constant, coulomb, method
-):
-    """``(F, a, full-slip load, result, law, SI fields)``: ``loads`` [N/m] solved.
+) -> tuple[tuple[str, float, float, float], Any, dict[str, Any]]:
+    """``(head, result, SI fields)``: ``loads`` [N/m] solved.
 
     Through the nondimensional call ``constant(tau0/E, loads/(E a))`` or
-    ``coulomb(mu, a/R, loads/(mu F))``; ``law`` is ``"constant"`` or ``"coulomb"``. The loads
-    are refused beyond the solvers' domain here, as ``name`` [N/m] (the nondimensional call
-    would name its group).
+    ``coulomb(mu, a/R, loads/(mu F))``; ``head`` is ``(law, F, a, full-slip load)``, the
+    fields that both SI history results begin with (:class:`._results._HistoryResult`),
+    ``law`` ``"constant"`` or ``"coulomb"``. The loads are refused beyond the solvers' domain
+    here, as ``name`` [N/m] (the nondimensional call would name its group).
     """
     from ..tangential.history import _T_LIMIT
 
     F, a, fr, is_coulomb, _ = _history_contact(cylinder, normal_load, stress, coefficient)
     E = cylinder.modulus
-    unit, words = (
-        (fr * F, _domain.SCALE_WORDS["T_over_muF"])
-        if is_coulomb
-        else (E * a, _domain.SCALE_WORDS["T_over_Ea"])
-    )
+    unit, group, full = _tangential_scales(is_coulomb, fr, F, a, E)
+    words = _domain.SCALE_WORDS[group]
     with np.errstate(over="ignore"):
         bad = ~(np.abs(loads) <= _T_LIMIT * unit)
     if np.any(bad):
@@ -524,16 +524,13 @@ def _history_solve(
             f"{name} must be at most {_T_LIMIT * unit:.6g} N/m in magnitude ({_T_LIMIT:g} "
             f"{words}, the domain of the solvers), got {float(loads[bad].flat[0])!r}"
         )
-    if is_coulomb:
-        with _small_strain_in_si():  # the contact's width: said by _for_load
-            r = coulomb(fr, a / cylinder.radius, loads / (fr * F), method=method)
-        full = fr * F
-    else:
-        with _small_strain_in_si():
-            r = constant(fr / E, loads / (E * a), method=method)
-        full = 2 * a * fr
+    with _small_strain_in_si():  # the contact's width: said by _for_load
+        if is_coulomb:
+            r = coulomb(fr, a / cylinder.radius, loads / unit, method=method)
+        else:
+            r = constant(fr / E, loads / unit, method=method)
     si = to_si(r, Scales.of(cylinder, a=a))
-    return F, a, full, r, "coulomb" if is_coulomb else "constant", si
+    return ("coulomb" if is_coulomb else "constant", F, a, full), r, si
 
 
 def tangential_history(
@@ -577,7 +574,7 @@ def tangential_history(
     self._written("tangential_history")
     T = check_array("tangential_load", tangential_load, low=-np.inf)
     solvers = (tangential_history, tangential_history_coulomb)
-    F, a, full, h, law, si = _history_solve(
+    head, h, si = _history_solve(
         self,
         normal_load,
         friction_stress,
@@ -588,10 +585,7 @@ def tangential_history(
         method,
     )
     return CylinderTangentialHistory(
-        law,
-        F,
-        a,
-        full,
+        *head,
         T.reshape(-1),  # as given (not back from T/(E a))
         si["stick_zone_half_width"],
         si["displacement"],
@@ -640,14 +634,11 @@ def cyclic_loss(
     self._written("cyclic_loss")
     A = check_array("amplitude", amplitude, low=0.0, low_inclusive=False)
     solvers = (cyclic_loss, cyclic_loss_coulomb)
-    F, a, full, w, law, si = _history_solve(
+    head, w, si = _history_solve(
         self, normal_load, friction_stress, friction_coefficient, "amplitude", A, *solvers, method
     )
     return CylinderCyclicLoss(
-        law,
-        F,
-        a,
-        full,
+        *head,
         _scalar(A + 0 * np.asarray(w.W_over_Ea2)),  # as given, in the result's shape
         si["energy_per_cycle"],
         si["stick_zone_half_width"],

@@ -406,7 +406,29 @@ class CylinderPush(_PerLength, Result):
 
 
 @dataclass(frozen=True)
-class CylinderTangentialHistory(Result):
+class _HistoryResult(Result):
+    """The fields that both SI load-history results begin with: the fixed normal contact.
+
+    The friction law (``"constant"`` or ``"coulomb"``), the normal load ``F`` [N/m], the
+    contact half-width ``a`` [m] and the full-slip load [N/m]: the inputs of every point of
+    :class:`CylinderTangentialHistory` and :class:`CylinderCyclicLoss`, which document them.
+    """
+
+    inputs: ClassVar[tuple[str, ...]] = (
+        "friction",
+        "normal_load",
+        "contact_half_width",
+        "full_slip_load",
+    )
+
+    friction: str
+    normal_load: float
+    contact_half_width: float
+    full_slip_load: float
+
+
+@dataclass(frozen=True)
+class CylinderTangentialHistory(_HistoryResult):
     """A tangential load history of a :class:`~linecontact.cylinder.Cylinder`, in SI units.
 
     Attributes
@@ -432,17 +454,6 @@ class CylinderTangentialHistory(Result):
         With the diagnostics, and ``traction``, ``slip`` and ``zones``.
     """
 
-    inputs: ClassVar[tuple[str, ...]] = (
-        "friction",
-        "normal_load",
-        "contact_half_width",
-        "full_slip_load",
-    )
-
-    friction: str
-    normal_load: float
-    contact_half_width: float
-    full_slip_load: float
     tangential_load: NDArray
     stick_zone_half_width: NDArray
     displacement: NDArray
@@ -452,7 +463,7 @@ class CylinderTangentialHistory(Result):
 
 
 @dataclass(frozen=True)
-class CylinderCyclicLoss(Result):
+class CylinderCyclicLoss(_HistoryResult):
     r"""Cyclic tangential loading of a :class:`~linecontact.cylinder.Cylinder`, in SI units.
 
     Attributes
@@ -470,17 +481,6 @@ class CylinderCyclicLoss(Result):
     nondimensional : CyclicLoss or CoulombCyclicLoss
     """
 
-    inputs: ClassVar[tuple[str, ...]] = (
-        "friction",
-        "normal_load",
-        "contact_half_width",
-        "full_slip_load",
-    )
-
-    friction: str
-    normal_load: float
-    contact_half_width: float
-    full_slip_load: float
     amplitude: NDArray | float
     energy_per_cycle: NDArray | float
     stick_zone_half_width: NDArray | float

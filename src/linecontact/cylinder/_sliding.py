@@ -14,7 +14,7 @@ from numpy.typing import ArrayLike
 from .. import domain as _domain
 from .._validation import FailurePolicy, check_array, failure_policy, positive, scalar
 from ..units import Scales, to_si
-from ._checks import _small_strain_in_si, _warn_small_strain
+from ._checks import _small_strain_in_si, _too_wide, _warn_small_strain
 from ._results import CylinderSliding
 
 
@@ -92,11 +92,7 @@ def sliding(
                     on_failure=policy,
                 )
         except _domain.TooWideError as e:
-            Fi = float(np.reshape(F, -1)[e.index])
-            raise ValueError(
-                f"load={Fi!r} N/m needs a contact of half-width "
-                f"{e.a_over_R * self.radius:.6g} m, {e.a_over_R:.6g} radii: {e.limit}"
-            ) from None
+            raise _too_wide("load", float(np.reshape(F, -1)[e.index]), e, self.radius) from None
     out = _si(self, res)
     _warn_small_strain(out.contact_half_width, self.radius, stacklevel=4)  # the caller's
     return out
