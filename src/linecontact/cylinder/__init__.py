@@ -24,7 +24,6 @@ from __future__ import annotations
 
 from .. import _moved
 from ._checks import (
-    _CHECKED,
     _S_LJ,
     _UNIT_SLIP,
     _ZERO_WIDTH,

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import contextlib
-import contextvars
 import warnings
 from collections.abc import Iterator
 from typing import Any
@@ -44,10 +43,6 @@ WIDTH_MIN = 1e-15
 
 #: sigma0 = S w / z0 and h = z0 / S (the Maugis convention of :mod:`linecontact.materials`)
 _S_LJ = MAUGIS_STRENGTH
-
-#: Set while a factory of :class:`Cylinder` builds one: the factory has checked the SI
-#: inputs under the names its caller used (``work_of_adhesion``, ``equilibrium_spacing``).
-_CHECKED: contextvars.ContextVar[bool] = contextvars.ContextVar("_CHECKED", default=False)
 
 
 def _implausible(name: str, value: ArrayLike, key: str | None = None) -> str | None:

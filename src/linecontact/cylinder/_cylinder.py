@@ -31,7 +31,6 @@ from ..materials import (
 from ..units import Scales, to_si
 from . import _problems, _sliding
 from ._checks import (
-    _CHECKED,
     _S_LJ,
     _ZERO_WIDTH,
     PLAUSIBLE,
@@ -109,12 +108,36 @@ class Cylinder:
         return self.adhesion.adhesion_range
 
     def __post_init__(self) -> None:
+        self._settle()
+        _check_cylinder_si(
+            self.radius,
+            self.modulus,
+            {"cohesive_stress": self.cohesive_stress, "adhesion_range": self.adhesion_range},
+            stacklevel=5,
+        )
+
+    @classmethod
+    def _made(cls, radius: float, modulus: float, adhesion: Law, beta: float) -> Cylinder:
+        """The cylinder of a factory that has checked its SI inputs under its caller's names.
+
+        The fields are settled as the constructor settles them, without the constructor's
+        check under the fields' names (the factory said it as ``work_of_adhesion``,
+        ``equilibrium_spacing``, ...): an argument of the build, not a state around it.
+        """
+        self = object.__new__(cls)
+        fields = {"radius": radius, "modulus": modulus, "adhesion": adhesion, "dundurs_beta": beta}
+        for name, value in fields.items():
+            object.__setattr__(self, name, value)
+        self._settle()
+        return self
+
+    def _settle(self) -> None:
+        """Check the fields and keep them as Python floats (also when built directly)."""
         if not isinstance(self.adhesion, Law):
             raise ValueError(
                 f"adhesion must be a law (linecontact.laws.Dugdale or LennardJones), got "
                 f"{self.adhesion!r}"
             )
-        # the fields as Python floats, checked (also when the class is built directly)
         for name, limits in (
             ("radius", {}),
             ("modulus", {}),
@@ -142,13 +165,6 @@ class Cylinder:
                     f"{self.cohesive_stress!r}, adhesion_range="
                     f"{self.adhesion_range!r} are too far apart in scale"
                 )
-        if not _CHECKED.get():  # a factory checked them under its caller's names
-            _check_cylinder_si(
-                self.radius,
-                self.modulus,
-                {"cohesive_stress": self.cohesive_stress, "adhesion_range": self.adhesion_range},
-                stacklevel=5,
-            )
 
     @classmethod
     def _build(
@@ -180,11 +196,7 @@ class Cylinder:
                 f"adhesion must be a law (linecontact.laws.Dugdale or LennardJones), got {law!r}"
             )
         _check_cylinder_si(R, E, dict(law.given), modulus_name=modulus_name, stacklevel=5)
-        token = _CHECKED.set(True)
-        try:
-            return cls(R, E, law, beta)
-        finally:
-            _CHECKED.reset(token)
+        return cls._made(R, E, law, beta)
 
     @classmethod
     def from_modulus(
@@ -571,13 +583,10 @@ class Cylinder:
         """
         if not (isinstance(law, type) and issubclass(law, Law)):
             raise ValueError(f"law must be a law's class (Dugdale or LennardJones), got {law!r}")
-        token = _CHECKED.set(True)  # checked when it was built
-        try:
-            return type(self)(
-                self.radius, self.modulus, self.adhesion.same_adhesion(law), self.dundurs_beta
-            )
-        finally:
-            _CHECKED.reset(token)
+        # checked when it was built
+        return self._made(
+            self.radius, self.modulus, self.adhesion.same_adhesion(law), self.dundurs_beta
+        )
 
     #: The problems written for each law (the others are refused, naming both: one place).
     WRITTEN: ClassVar[dict[str, tuple[type[Law], ...]]] = {
