@@ -22,6 +22,7 @@ FLOORS = {
         "linecontact._files",
         "linecontact._fingerprint",
         "linecontact._progress",
+        "linecontact._docs",
         "linecontact.errors",
         "linecontact._validation",
         "linecontact.domain",

@@ -18,6 +18,7 @@ from numpy.typing import ArrayLike, NDArray
 from .. import _numerics as _num
 from .. import closed_forms as _cf
 from .. import domain as _domain
+from .._docs import shared_docs
 from .._validation import (
     FailurePolicy,
     broadcast,
@@ -352,6 +353,7 @@ def _collocation(A, rho, s, n, tol):
     return {k: v.reshape(shape) for k, v in out.items()}
 
 
+@shared_docs
 def normal_contact(
     a_over_R: ArrayLike,
     R_over_h: ArrayLike,
@@ -377,14 +379,7 @@ def normal_contact(
         solver.
     method : {"closed-form", "collocation"}
         Solver (see the module docstring).
-    n : int or "auto"
-        Collocation nodes (``"auto"``: chosen per point for ``tol``).
-    tol : float
-        Target discretisation error of the collocation solver.
-    on_failure : {"raise", "report"}
-        A point that misses its tolerance raises
-        :class:`~linecontact.errors.ConvergenceError` (``"raise"``, default), or is
-        flagged in ``converged`` (``"report"``); README, "Conventions".
+    %(COLLOCATION)s
 
     Returns
     -------

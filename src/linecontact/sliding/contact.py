@@ -16,6 +16,7 @@ from numpy.typing import ArrayLike, NDArray
 from .. import _numerics as _num
 from .. import closed_forms as _cf
 from .. import domain as _domain
+from .._docs import shared_docs
 from .._validation import (
     FailurePolicy,
     broadcast,
@@ -380,6 +381,7 @@ def _pack(d, A, rho, r, s, tau, method, shape, scalar, policy, where, missing=No
     return SlidingContact(method=method, **vals)
 
 
+@shared_docs
 def sliding_contact(
     a_over_R: ArrayLike,
     R_over_h2: ArrayLike,
@@ -412,14 +414,7 @@ def sliding_contact(
         Solver (see the module docstring); both give the same state to about 1e-12. The
         default is the closed form, as for every other problem (up to 0.2.0 it was the
         collocation: pass ``method="collocation"`` for the paper's route).
-    n : int or "auto"
-        Collocation nodes (``"auto"``: chosen per point for ``tol``).
-    tol : float
-        Target discretisation error of the collocation solver.
-    on_failure : {"raise", "report"}
-        A point that misses its tolerance raises
-        :class:`~linecontact.errors.ConvergenceError` (``"raise"``, default), or is
-        flagged in ``converged`` (``"report"``); README, "Conventions".
+    %(COLLOCATION)s
 
     Returns
     -------
