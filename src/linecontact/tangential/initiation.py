@@ -14,25 +14,24 @@ from typing import ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .. import domain as _domain
-from .._validation import FailurePolicy, failure_policy
+from .._validation import FailurePolicy
 from ..results import SI
 from ..sie import _log_moment_vector
 from ._core import (
+    _CENTRED,
     _CHECK_Y,
     _SLIDING,
     _STICK,
-    _STICK_SLIP,
     N_COULOMB,
-    _build,
-    _cheb_u_series,
     _check_matrix,
+    _constant_friction,
+    _coulomb_friction,
+    _friction_traction,
+    _hertz_traction,
     _Problem,
-    _run,
     _solver,
     _tail,
     _Tangential,
-    _wide,
     _xlogy,
 )
 
@@ -62,9 +61,13 @@ def _init_rhs(delta, t):
     return -(2.0 / np.pi) * np.arctanh(delta[..., None] * t)
 
 
-def _init_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
+def _init_solve(delta: NDArray, n: int):
     s = _solver(n)
-    sol = s.solve(_init_rhs(delta, s.collocation_unit), values=False)
+    return s.solve(_init_rhs(delta, s.collocation_unit), values=False)
+
+
+def _init_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
+    sol = _init_solve(delta, n)
     b = sol.coefficients
     # Eq 17: T = 2 a tau0 - int tau; the bounded solution's resultant is d (pi/2) b_0
     T = 2.0 - delta * (np.pi / 2) * b[:, 0]
@@ -81,8 +84,7 @@ def _init_rate(delta):
 
 
 def _init_coefficients(delta: NDArray, n: int) -> NDArray:
-    s = _solver(n)
-    return s.solve(_init_rhs(delta, s.collocation_unit), values=False).coefficients
+    return _init_solve(delta, n).coefficients
 
 
 def _G(x):
@@ -109,10 +111,14 @@ def _init_slip_closed(x, delta):
 # Coulomb counterparts (lengths over a, stresses over mu p0)
 
 
-def _cm_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
+def _cm_solve(delta: NDArray, n: int):
     """Cattaneo--Mindlin: (1/pi) int tau/(s - x) = (mu/pi) int p/(s - x) = -x on |x| < d."""
     s = _solver(n)
-    sol = s.solve(-delta[:, None] * s.collocation_unit[None, :], values=False)
+    return s.solve(-delta[:, None] * s.collocation_unit[None, :], values=False)
+
+
+def _cm_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
+    sol = _cm_solve(delta, n)
     b = sol.coefficients
     # T/(mu F) = 1 - int tau / (mu p0 a pi/2)
     T = 1.0 - delta * b[:, 0]
@@ -170,23 +176,12 @@ class SlidingInitiation(_Tangential):
         :math:`d \le |x| \le a` (everywhere when sliding), zero outside the contact.
         """
         x, dlt, st = self._points(x_over_a)
-        t0 = np.asarray(self.tau0_over_E, dtype=float)[..., None]
-        ax = np.abs(x)
         if self.method == "closed-form":
             k = np.sqrt(np.clip((1 - dlt) * (1 + dlt), 0.0, None))
             inner = (2 / np.pi) * np.arctan2(k, np.sqrt(np.clip(dlt * dlt - x * x, 0.0, None)))
         else:
-            b = self._coefficients(_init_coefficients)
-            dd = np.atleast_1d(dlt[..., 0]).reshape(-1)
-            xx = np.broadcast_to(x, dd.shape + x.shape[-1:])
-            with np.errstate(divide="ignore", invalid="ignore"):
-                tt = np.where(dd[:, None] > 0, xx / dd[:, None], 2.0)
-            inner = 1.0 - _cheb_u_series(b, tt)
-            inner = inner.reshape(np.shape(dlt[..., 0]) + x.shape[-1:])
-        stick = (ax < dlt) & (st == _STICK_SLIP)
-        q = np.where(ax <= 1.0, np.where(stick, inner, 1.0), 0.0)
-        q = np.where(st == _STICK, 0.0, q)
-        return t0 * q
+            inner = 1.0 - self._series(x, dlt, _CENTRED, _init_coefficients)[1]
+        return _friction_traction(self.tau0_over_E, x, dlt, st, _CENTRED, inner)
 
     def slip(self, x_over_a: ArrayLike) -> NDArray:
         r"""Slip :math:`s/a` at :math:`x/a` (shape ``points.shape + (m,)``).
@@ -272,54 +267,35 @@ error_estimate, converged
         :math:`\mu p_0[\sqrt{1-x^2/a^2} - (d/a)\sqrt{1-x^2/d^2}]` in the stick zone.
         """
         x, dlt, st = self._points(x_over_a)
-        p0 = np.asarray(self.a_over_R, dtype=float)[..., None] / 2
-        mu = np.asarray(self.mu, dtype=float)[..., None]
-        xq = np.clip(x, -2.0, 2.0)  # the terms vanish beyond |x| = a; no overflow of x*x
-        hertz = np.sqrt(np.clip(1 - xq * xq, 0.0, None))
         if self.method == "closed-form":
+            xq = np.clip(x, -2.0, 2.0)  # no overflow of x*x
             corr = np.sqrt(np.clip(dlt * dlt - xq * xq, 0.0, None))
         else:
-            b = self._coefficients(
-                lambda d, n: (
-                    _solver(n)
-                    .solve(-d[:, None] * _solver(n).collocation_unit, values=False)
-                    .coefficients
-                )
-            )
-            dd = np.atleast_1d(dlt[..., 0]).reshape(-1)
-            xx = np.broadcast_to(x, dd.shape + x.shape[-1:])
-            with np.errstate(divide="ignore", invalid="ignore"):
-                tt = np.where(dd[:, None] > 0, xx / dd[:, None], 2.0)
-            corr = _cheb_u_series(b, tt).reshape(np.shape(dlt[..., 0]) + x.shape[-1:])
-        stick = (np.abs(x) < dlt) & (st == _STICK_SLIP)
-        q = hertz - np.where(stick, corr, 0.0)
-        q = np.where(st == _STICK, 0.0, q)
-        return mu * p0 * q
+            corr = self._series(x, dlt, _CENTRED, lambda d, n: _cm_solve(d, n).coefficients)[1]
+        return _hertz_traction(self.mu, self.a_over_R, x, dlt, st, _CENTRED, corr)
 
 
 _INITIATION = _Problem(
     "sliding_initiation",
+    SlidingInitiation,
     _init_kernel,
     _init_rate,
     _init_T,
     lambda d: -2 * d / np.sqrt((1 - d) * (1 + d)),
     _init_delta,
     2.0,
-    0.0,
-    True,
-    1.0,
+    _CENTRED,
 )
 _CATTANEO_MINDLIN = _Problem(
     "sliding_initiation_coulomb",
+    CoulombSlidingInitiation,
     _cm_kernel,
     lambda d: np.full(d.shape, np.inf),
     lambda d: (1 - d) * (1 + d),  # 1 - d^2, without cancellation as d -> 1 (T -> 0)
     lambda d: -2 * d,
     lambda r: np.sqrt(1 - r),
     1.0,
-    0.0,
-    True,
-    1.0,
+    _CENTRED,
     constant=False,
     n_auto=N_COULOMB,
 )
@@ -391,20 +367,9 @@ def sliding_initiation(
     >>> sliding_initiation(0.01, T_over_Ea=0.03, on_failure="report").state
     'sliding'
     """
-    policy = failure_policy(on_failure)
-    arrays, load, _, diag, scalar = _run(
-        _INITIATION,
-        d_over_a,
-        T_over_Ea,
-        "T_over_Ea",
-        method,
-        n,
-        tol,
-        policy,
-        {"tau0_over_E": _domain.check("tau0_over_E", tau0_over_E)},
+    return _constant_friction(
+        _INITIATION, tau0_over_E, d_over_a, T_over_Ea, method, n, tol, on_failure
     )
-    (t0,) = arrays
-    return _build(SlidingInitiation, method, scalar, T_over_Ea=load, tau0_over_E=t0, **diag)
 
 
 def sliding_initiation_coulomb(
@@ -452,26 +417,6 @@ def sliding_initiation_coulomb(
     >>> round(r.T_over_muF, 12)
     0.75
     """
-    policy = failure_policy(on_failure)
-    arrays, load, _, diag, scalar = _run(
-        _CATTANEO_MINDLIN,
-        d_over_a,
-        T_over_muF,
-        "T_over_muF",
-        method,
-        n,
-        tol,
-        policy,
-        {"mu": _domain.check("mu", mu), "a_over_R": _wide(_domain.check("a_over_R", a_over_R))},
-    )
-    m, A = arrays
-    return _build(
-        CoulombSlidingInitiation,
-        method,
-        scalar,
-        T_over_muF=load,
-        T_over_Ea=(np.pi / 4) * m * A * load,
-        mu=m,
-        a_over_R=A,
-        **diag,
+    return _coulomb_friction(
+        _CATTANEO_MINDLIN, mu, a_over_R, d_over_a, T_over_muF, method, n, tol, on_failure
     )
