@@ -12,10 +12,10 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import Generic, TypeVar
+from typing import ClassVar, Generic, TypeVar
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
 from .. import _validation
 from .. import closed_forms as _cf
@@ -289,6 +289,32 @@ def _states(sliding, stick, shape):
     return st.astype(str)
 
 
+@dataclass(frozen=True)
+class _Zone:
+    """Where the stick zone lies, given its end ``d`` (lengths over ``a``).
+
+    ``|x| < d`` for the initiation of sliding (``d`` from 1 at ``T = 0`` down to 0, full slip),
+    ``d < x < a`` for steady rolling (``d`` from -1 at ``T = 0`` up to 1, full slip: excluded).
+    """
+
+    d_low: float
+    d_low_inclusive: bool
+    d_stick: float  # delta at T = 0
+    inside: Callable[[NDArray, NDArray], NDArray]  # (x, d): the points of the stick zone
+    unit: Callable[[NDArray, NDArray], NDArray]  # (x, d): t in [-1, 1] over the stick zone
+
+
+def _centred_unit(x: NDArray, d: NDArray) -> NDArray:
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(d > 0, x / d, 2.0)
+
+
+#: The central stick zone ``|x| < d`` of the initiation of sliding.
+_CENTRED = _Zone(0.0, True, 1.0, lambda x, d: np.abs(x) < d, _centred_unit)
+#: The leading-edge stick zone ``d < x < a`` of steady rolling (``t`` exact at ``d`` and ``a``).
+_LEADING = _Zone(-1.0, False, -1.0, lambda x, d: x > d, lambda x, d: (2 * x - 1 - d) / (1 - d))
+
+
 # --------------------------------------------------------------------------------------------
 # results
 
@@ -297,7 +323,8 @@ def _states(sliding, stick, shape):
 class _Tangential(Result):
     """Fields shared by the four tangential results (see the subclasses)."""
 
-    # the SI forms scale by ``a``, the contact half-width; each subclass declares T_over_Ea
+    # the SI forms scale by ``a``, the contact half-width; the bases of the two friction laws
+    # declare T_over_Ea (after T_over_muF for Coulomb friction)
     d_over_a: NDArray | float = field(metadata=SI("stick_zone_end", "a", "m"))
     T_over_T_full_slip: NDArray | float
     state: NDArray | str
@@ -326,46 +353,69 @@ class _Tangential(Result):
             b[sel, :n] = kernel_solve(dlt[sel], int(n))
         return b
 
-    def _series(self, x: NDArray, dlt: NDArray, zone: _Zone, kernel_solve) -> tuple[NDArray, ...]:
+    #: Where the stick zone lies (set by each result).
+    _zone: ClassVar[_Zone]
+
+    def _series(self, x: NDArray, dlt: NDArray, kernel_solve) -> tuple[NDArray, NDArray]:
         """The collocation solution on the stick zone: ``t``, ``sqrt(1 - t^2) sum b_j U_j(t)``.
 
-        ``t`` maps the stick zone of ``zone`` onto [-1, 1]; ``x``, ``dlt`` as from
-        :meth:`_points`, ``kernel_solve`` as for :meth:`_coefficients`. Both of shape
-        ``points.shape + (m,)``.
+        ``t`` maps the stick zone onto [-1, 1]; ``x``, ``dlt`` as from :meth:`_points`,
+        ``kernel_solve`` as for :meth:`_coefficients`. Both of shape ``points.shape + (m,)``.
         """
         b = self._coefficients(kernel_solve)
         dd = np.atleast_1d(dlt[..., 0]).reshape(-1)
         xx = np.broadcast_to(x, dd.shape + x.shape[-1:])
-        tt = zone.unit(xx, dd[:, None])
+        tt = self._zone.unit(xx, dd[:, None])
         shape = np.shape(dlt[..., 0]) + x.shape[-1:]
         return tt.reshape(shape), _cheb_u_series(b, tt).reshape(shape)
 
-
-def _friction_traction(tau0_over_E, x, dlt, st, zone: _Zone, inner: NDArray) -> NDArray:
-    """Traction q/E under a constant friction stress, from ``inner`` (over tau0) in the stick zone.
-
-    ``tau0`` in the slip zones (everywhere when sliding), zero outside the contact and at
-    ``T = 0``; ``x``, ``dlt``, ``st`` as from :meth:`_Tangential._points`.
-    """
-    stick = zone.inside(x, dlt) & (st == _STICK_SLIP)
-    q = np.where(np.abs(x) <= 1.0, np.where(stick, inner, 1.0), 0.0)
-    q = np.where(st == _STICK, 0.0, q)
-    return np.asarray(tau0_over_E, dtype=float)[..., None] * q
+    def _stick(self, x: NDArray, dlt: NDArray) -> NDArray:  # pragma: no cover - the results'
+        """The traction of the stick zone over the friction scale, by the result's method."""
+        raise NotImplementedError
 
 
-def _hertz_traction(mu, a_over_R, x, dlt, st, zone: _Zone, corr: NDArray) -> NDArray:
-    """Traction q/E under Coulomb friction: mu p less ``corr`` (over mu p0) in the stick zone.
+@dataclass(frozen=True)
+class _ConstantStress(_Tangential):
+    """Fields and traction shared by the results under a constant friction stress ``tau0``."""
 
-    Zero at ``T = 0``; ``x``, ``dlt``, ``st`` as from :meth:`_Tangential._points`.
-    """
-    p0 = np.asarray(a_over_R, dtype=float)[..., None] / 2
-    m = np.asarray(mu, dtype=float)[..., None]
-    xq = np.clip(x, -2.0, 2.0)  # the terms vanish beyond |x| = a; no overflow of x*x
-    hertz = np.sqrt(np.clip(1 - xq * xq, 0.0, None))
-    stick = zone.inside(x, dlt) & (st == _STICK_SLIP)
-    q = hertz - np.where(stick, corr, 0.0)
-    q = np.where(st == _STICK, 0.0, q)
-    return m * p0 * q
+    inputs: ClassVar[tuple[str, ...]] = ("tau0_over_E", "method")
+
+    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
+
+    def _traction(self, x_over_a: ArrayLike, tau0_over_E) -> NDArray:
+        """Traction q/E: ``tau0`` in the slip zones (everywhere when sliding), :meth:`_stick`.
+
+        :meth:`_stick` in the stick zone, zero outside the contact and at ``T = 0``.
+        """
+        x, dlt, st = self._points(x_over_a)
+        inner = self._stick(x, dlt)
+        stick = self._zone.inside(x, dlt) & (st == _STICK_SLIP)
+        q = np.where(np.abs(x) <= 1.0, np.where(stick, inner, 1.0), 0.0)
+        q = np.where(st == _STICK, 0.0, q)
+        return np.asarray(tau0_over_E, dtype=float)[..., None] * q
+
+
+@dataclass(frozen=True)
+class _CoulombFriction(_Tangential):
+    """Fields and traction shared by the results under Coulomb friction on the Hertz contact."""
+
+    inputs: ClassVar[tuple[str, ...]] = ("mu", "a_over_R", "method")
+
+    T_over_muF: NDArray | float
+    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
+
+    def _traction(self, x_over_a: ArrayLike, mu, a_over_R) -> NDArray:
+        """Traction q/E: mu p less :meth:`_stick` (over mu p0) in the stick zone; 0 at ``T = 0``."""
+        x, dlt, st = self._points(x_over_a)
+        p0 = np.asarray(a_over_R, dtype=float)[..., None] / 2
+        m = np.asarray(mu, dtype=float)[..., None]
+        xq = np.clip(x, -2.0, 2.0)  # the terms vanish beyond |x| = a; no overflow of x*x
+        hertz = np.sqrt(np.clip(1 - xq * xq, 0.0, None))
+        corr = self._stick(x, dlt)
+        stick = self._zone.inside(x, dlt) & (st == _STICK_SLIP)
+        q = hertz - np.where(stick, corr, 0.0)
+        q = np.where(st == _STICK, 0.0, q)
+        return m * p0 * q
 
 
 def _cheb_u_series(b: NDArray, t: NDArray) -> NDArray:
@@ -381,32 +431,6 @@ def _cheb_u_series(b: NDArray, t: NDArray) -> NDArray:
 
 # --------------------------------------------------------------------------------------------
 # public functions (nondimensional)
-
-
-@dataclass(frozen=True)
-class _Zone:
-    """Where the stick zone lies, given its end ``d`` (lengths over ``a``).
-
-    ``|x| < d`` for the initiation of sliding (``d`` from 1 at ``T = 0`` down to 0, full slip),
-    ``d < x < a`` for steady rolling (``d`` from -1 at ``T = 0`` up to 1, full slip: excluded).
-    """
-
-    d_low: float
-    d_low_inclusive: bool
-    d_stick: float  # delta at T = 0
-    inside: Callable[[NDArray, NDArray], NDArray]  # (x, d): the points of the stick zone
-    unit: Callable[[NDArray, NDArray], NDArray]  # (x, d): t in [-1, 1] over the stick zone
-
-
-def _centred_unit(x: NDArray, d: NDArray) -> NDArray:
-    with np.errstate(divide="ignore", invalid="ignore"):
-        return np.where(d > 0, x / d, 2.0)
-
-
-#: The central stick zone ``|x| < d`` of the initiation of sliding.
-_CENTRED = _Zone(0.0, True, 1.0, lambda x, d: np.abs(x) < d, _centred_unit)
-#: The leading-edge stick zone ``d < x < a`` of steady rolling (``t`` exact at ``d`` and ``a``).
-_LEADING = _Zone(-1.0, False, -1.0, lambda x, d: x > d, lambda x, d: (2 * x - 1 - d) / (1 - d))
 
 
 @dataclass(frozen=True)

@@ -8,14 +8,12 @@ Units, sign conventions and references: :mod:`linecontact.tangential`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import ClassVar
+from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._validation import FailurePolicy
-from ..results import SI
 from ..sie import _log_moment_vector
 from ._core import (
     _CENTRED,
@@ -25,13 +23,12 @@ from ._core import (
     N_COULOMB,
     _check_matrix,
     _constant_friction,
+    _ConstantStress,
     _coulomb_friction,
-    _friction_traction,
-    _hertz_traction,
+    _CoulombFriction,
     _Problem,
     _solver,
     _tail,
-    _Tangential,
     _xlogy,
 )
 
@@ -127,7 +124,7 @@ def _cm_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
 
 
 @dataclass(frozen=True)
-class SlidingInitiation(_Tangential):
+class SlidingInitiation(_ConstantStress):
     r"""Initiation of sliding with constant friction stress ``tau0`` (Eqs 15--17).
 
     Attributes
@@ -163,9 +160,8 @@ class SlidingInitiation(_Tangential):
         Every tolerance met.
     """
 
-    inputs: ClassVar[tuple[str, ...]] = ("tau0_over_E", "method")
+    _zone = _CENTRED
 
-    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
     tau0_over_E: NDArray | float
 
     def traction(self, x_over_a: ArrayLike) -> NDArray:
@@ -175,13 +171,13 @@ class SlidingInitiation(_Tangential):
         stick-zone traction of the method used for :math:`|x| < d`, :math:`\tau_0/E` for
         :math:`d \le |x| \le a` (everywhere when sliding), zero outside the contact.
         """
-        x, dlt, st = self._points(x_over_a)
+        return self._traction(x_over_a, self.tau0_over_E)
+
+    def _stick(self, x: NDArray, dlt: NDArray) -> NDArray:
         if self.method == "closed-form":
             k = np.sqrt(np.clip((1 - dlt) * (1 + dlt), 0.0, None))
-            inner = (2 / np.pi) * np.arctan2(k, np.sqrt(np.clip(dlt * dlt - x * x, 0.0, None)))
-        else:
-            inner = 1.0 - self._series(x, dlt, _CENTRED, _init_coefficients)[1]
-        return _friction_traction(self.tau0_over_E, x, dlt, st, _CENTRED, inner)
+            return (2 / np.pi) * np.arctan2(k, np.sqrt(np.clip(dlt * dlt - x * x, 0.0, None)))
+        return 1.0 - self._series(x, dlt, _init_coefficients)[1]
 
     def slip(self, x_over_a: ArrayLike) -> NDArray:
         r"""Slip :math:`s/a` at :math:`x/a` (shape ``points.shape + (m,)``).
@@ -235,7 +231,7 @@ class SlidingInitiation(_Tangential):
 
 
 @dataclass(frozen=True)
-class CoulombSlidingInitiation(_Tangential):
+class CoulombSlidingInitiation(_CoulombFriction):
     r"""Cattaneo--Mindlin line contact: Hertz pressure, Coulomb friction ``mu``.
 
     Attributes
@@ -253,10 +249,8 @@ error_estimate, converged
         As in :class:`SlidingInitiation` (stresses over :math:`\mu p_0`).
     """
 
-    inputs: ClassVar[tuple[str, ...]] = ("mu", "a_over_R", "method")
+    _zone = _CENTRED
 
-    T_over_muF: NDArray | float
-    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
     mu: NDArray | float
     a_over_R: NDArray | float
 
@@ -266,13 +260,13 @@ error_estimate, converged
         :math:`\mu p` in the slip zones,
         :math:`\mu p_0[\sqrt{1-x^2/a^2} - (d/a)\sqrt{1-x^2/d^2}]` in the stick zone.
         """
-        x, dlt, st = self._points(x_over_a)
+        return self._traction(x_over_a, self.mu, self.a_over_R)
+
+    def _stick(self, x: NDArray, dlt: NDArray) -> NDArray:
         if self.method == "closed-form":
             xq = np.clip(x, -2.0, 2.0)  # no overflow of x*x
-            corr = np.sqrt(np.clip(dlt * dlt - xq * xq, 0.0, None))
-        else:
-            corr = self._series(x, dlt, _CENTRED, lambda d, n: _cm_solve(d, n).coefficients)[1]
-        return _hertz_traction(self.mu, self.a_over_R, x, dlt, st, _CENTRED, corr)
+            return np.sqrt(np.clip(dlt * dlt - xq * xq, 0.0, None))
+        return self._series(x, dlt, lambda d, n: _cm_solve(d, n).coefficients)[1]
 
 
 _INITIATION = _Problem(

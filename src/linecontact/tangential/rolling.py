@@ -9,28 +9,26 @@ friction on the Hertz contact (Carter). Units, sign conventions and references:
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import ClassVar, cast
+from dataclasses import dataclass
+from typing import cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._validation import FailurePolicy
-from ..results import SI
 from ._core import (
     _CHECK_Y,
     _LEADING,
     N_COULOMB,
     _check_matrix,
     _constant_friction,
+    _ConstantStress,
     _coulomb_friction,
-    _friction_traction,
-    _hertz_traction,
+    _CoulombFriction,
     _Problem,
     _rounding,
     _solver,
     _tail,
-    _Tangential,
     _xlogy,
 )
 
@@ -143,7 +141,7 @@ def _carter_coefficients(delta: NDArray, n: int) -> NDArray:
 
 
 @dataclass(frozen=True)
-class SteadyRolling(_Tangential):
+class SteadyRolling(_ConstantStress):
     r"""Steady rolling of a driving cylinder with constant friction stress (Eqs 23--29).
 
     Attributes
@@ -167,9 +165,8 @@ error_estimate, converged
         the extra collocation equation that fixes the creep.
     """
 
-    inputs: ClassVar[tuple[str, ...]] = ("tau0_over_E", "method")
+    _zone = _LEADING
 
-    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
     creep_over_V: NDArray | float
     tau0_over_E: NDArray | float
 
@@ -180,21 +177,21 @@ error_estimate, converged
         to 0 at the leading edge. ``x_over_a`` has shape ``(m,)``; the result has shape
         ``points.shape + (m,)``.
         """
-        x, dlt, st = self._points(x_over_a)
+        return self._traction(x_over_a, self.tau0_over_E)
+
+    def _stick(self, x: NDArray, dlt: NDArray) -> NDArray:
         if self.method == "closed-form":
             beta = (1 + dlt) / 2
-            inner = (2 / np.pi) * np.arctan2(
+            return (2 / np.pi) * np.arctan2(
                 np.sqrt(np.clip(beta * (1 - x), 0.0, None)), np.sqrt(np.clip(x - dlt, 0.0, None))
             )
-        else:
-            tt, tau_bar = self._series(x, dlt, _LEADING, _roll_coefficients)
-            # q on the cylinder = -(q on the substrate) = tau0 arccos(t)/pi - tau-bar
-            inner = np.arccos(np.clip(tt, -1, 1)) / np.pi - tau_bar
-        return _friction_traction(self.tau0_over_E, x, dlt, st, _LEADING, inner)
+        tt, tau_bar = self._series(x, dlt, _roll_coefficients)
+        # q on the cylinder = -(q on the substrate) = tau0 arccos(t)/pi - tau-bar
+        return np.arccos(np.clip(tt, -1, 1)) / np.pi - tau_bar
 
 
 @dataclass(frozen=True)
-class CoulombRolling(_Tangential):
+class CoulombRolling(_CoulombFriction):
     r"""Carter's steady rolling: Hertz pressure, Coulomb friction, driving cylinder.
 
     Attributes
@@ -214,10 +211,8 @@ error_estimate, converged
         As in :class:`SteadyRolling` (stresses over :math:`\mu p_0`).
     """
 
-    inputs: ClassVar[tuple[str, ...]] = ("mu", "a_over_R", "method")
+    _zone = _LEADING
 
-    T_over_muF: NDArray | float
-    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
     creep_over_V: NDArray | float
     mu: NDArray | float
     a_over_R: NDArray | float
@@ -228,15 +223,15 @@ error_estimate, converged
         :math:`\mu p_0[\sqrt{1-x^2/a^2} - (a'/a)\sqrt{1-(x-x_0)^2/a'^2}]` in the stick
         zone, :math:`x_0 = a - a'`; :math:`\mu p` in the slip zone. Shape ``points.shape + (m,)``.
         """
-        x, dlt, st = self._points(x_over_a)
+        return self._traction(x_over_a, self.mu, self.a_over_R)
+
+    def _stick(self, x: NDArray, dlt: NDArray) -> NDArray:
         if self.method == "closed-form":
             xq = np.clip(x, -2.0, 2.0)  # no overflow of x*x
             m = (1 + dlt) / 2
             h = (1 - dlt) / 2
-            corr = np.sqrt(np.clip(h * h - (xq - m) ** 2, 0.0, None))
-        else:
-            corr = self._series(x, dlt, _LEADING, _carter_coefficients)[1]
-        return _hertz_traction(self.mu, self.a_over_R, x, dlt, st, _LEADING, corr)
+            return np.sqrt(np.clip(h * h - (xq - m) ** 2, 0.0, None))
+        return self._series(x, dlt, _carter_coefficients)[1]
 
 
 _ROLLING = _Problem(
