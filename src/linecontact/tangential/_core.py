@@ -1,10 +1,14 @@
-r"""Shared machinery of the tangential problems: the collocation driver and the result base.
+r"""Shared machinery of the tangential problems: the collocation driver and the result bases.
 
 Used by :mod:`linecontact.tangential.initiation` and :mod:`linecontact.tangential.rolling`
 (units, conventions and references: :mod:`linecontact.tangential`). A problem is described
 by a :class:`_Problem` (its collocation kernel, convergence rate and closed forms, all in
-the units of ``T`` over ``a tau0`` or over ``mu F``); :func:`_run` validates the state
-variable, solves on the points that have a stick zone and returns the fields of the result.
+the units of ``T`` over ``a tau0`` or over ``mu F``, the :class:`_Zone` of its stick zone
+and its result class); :func:`_run` validates the state variable, solves on the points that
+have a stick zone and returns the fields of the result, and :func:`_constant_friction` /
+:func:`_coulomb_friction` are the public functions of each friction law around it. The
+results of each law share a base (:class:`_ConstantStress`, :class:`_CoulombFriction`) that
+assembles the traction from the result's stick-zone traction.
 """
 
 from __future__ import annotations
@@ -336,6 +340,9 @@ class _Tangential(Result):
     error_estimate: NDArray | float
     converged: NDArray | bool
 
+    #: Where the stick zone lies (set by each result).
+    _zone: ClassVar[_Zone]
+
     def _points(self, x_over_a):
         x = positions("x_over_a", x_over_a, np.shape(self.d_over_a))
         dlt = np.asarray(self.d_over_a, dtype=float)[..., None]
@@ -353,9 +360,6 @@ class _Tangential(Result):
             b[sel, :n] = kernel_solve(dlt[sel], int(n))
         return b
 
-    #: Where the stick zone lies (set by each result).
-    _zone: ClassVar[_Zone]
-
     def _series(self, x: NDArray, dlt: NDArray, kernel_solve) -> tuple[NDArray, NDArray]:
         """The collocation solution on the stick zone: ``t``, ``sqrt(1 - t^2) sum b_j U_j(t)``.
 
@@ -369,7 +373,7 @@ class _Tangential(Result):
         shape = np.shape(dlt[..., 0]) + x.shape[-1:]
         return tt.reshape(shape), _cheb_u_series(b, tt).reshape(shape)
 
-    def _stick(self, x: NDArray, dlt: NDArray) -> NDArray:  # pragma: no cover - the results'
+    def _stick(self, x: NDArray, dlt: NDArray) -> NDArray:  # pragma: no cover - in each result
         """The traction of the stick zone over the friction scale, by the result's method."""
         raise NotImplementedError
 
@@ -383,9 +387,10 @@ class _ConstantStress(_Tangential):
     T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
 
     def _traction(self, x_over_a: ArrayLike, tau0_over_E) -> NDArray:
-        """Traction q/E: ``tau0`` in the slip zones (everywhere when sliding), :meth:`_stick`.
+        """Traction q/E: ``tau0`` times :meth:`_stick` in the stick zone.
 
-        :meth:`_stick` in the stick zone, zero outside the contact and at ``T = 0``.
+        ``tau0`` in the slip zones (everywhere when sliding), zero outside the contact and at
+        ``T = 0``.
         """
         x, dlt, st = self._points(x_over_a)
         inner = self._stick(x, dlt)
@@ -601,16 +606,9 @@ def _constant_friction(
     the problem has a creep).
     """
     policy = _validation.failure_policy(on_failure)
+    params = {"tau0_over_E": _domain.check("tau0_over_E", tau0_over_E)}
     arrays, load, creep, diag, scalar = _run(
-        pb,
-        d_over_a,
-        T_over_Ea,
-        "T_over_Ea",
-        method,
-        n,
-        tol,
-        policy,
-        {"tau0_over_E": _domain.check("tau0_over_E", tau0_over_E)},
+        pb, d_over_a, T_over_Ea, "T_over_Ea", method, n, tol, policy, params
     )
     (t0,) = arrays
     if creep is not None:

@@ -123,6 +123,10 @@ def _cm_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
     return dict(T=T, tail=_tail(b), stick=res, cons=np.abs(sol.consistency))
 
 
+def _cm_coefficients(delta: NDArray, n: int) -> NDArray:
+    return _cm_solve(delta, n).coefficients
+
+
 @dataclass(frozen=True)
 class SlidingInitiation(_ConstantStress):
     r"""Initiation of sliding with constant friction stress ``tau0`` (Eqs 15--17).
@@ -266,7 +270,7 @@ error_estimate, converged
         if self.method == "closed-form":
             xq = np.clip(x, -2.0, 2.0)  # no overflow of x*x
             return np.sqrt(np.clip(dlt * dlt - xq * xq, 0.0, None))
-        return self._series(x, dlt, lambda d, n: _cm_solve(d, n).coefficients)[1]
+        return self._series(x, dlt, _cm_coefficients)[1]
 
 
 _INITIATION = _Problem(
