@@ -98,17 +98,9 @@ K. L. Johnson, *Contact Mechanics*, Cambridge University Press (1985), Ch. 7
 (Cattaneo--Mindlin) and Ch. 8 (Carter). doi:10.1017/CBO9781139171731
 """
 
+from . import history
 from ._core import N_COULOMB, SIZES
-from .history import (
-    CoulombCyclicLoss,
-    CoulombTangentialHistory,
-    CyclicLoss,
-    TangentialHistory,
-    cyclic_loss,
-    cyclic_loss_coulomb,
-    tangential_history,
-    tangential_history_coulomb,
-)
+from .history import *  # noqa: F403 (its __all__, re-exported below)
 from .initiation import (
     CoulombSlidingInitiation,
     SlidingInitiation,
@@ -120,14 +112,7 @@ from .rolling import CoulombRolling, SteadyRolling, steady_rolling, steady_rolli
 __all__ = [
     "N_COULOMB",
     "SIZES",
-    "CoulombCyclicLoss",
-    "CoulombTangentialHistory",
-    "CyclicLoss",
-    "TangentialHistory",
-    "cyclic_loss",
-    "cyclic_loss_coulomb",
-    "tangential_history",
-    "tangential_history_coulomb",
+    *history.__all__,
     "CoulombRolling",
     "CoulombSlidingInitiation",
     "SlidingInitiation",

@@ -1,10 +1,14 @@
-r"""Shared machinery of the tangential problems: the collocation driver and the result base.
+r"""Shared machinery of the tangential problems: the collocation driver and the result bases.
 
 Used by :mod:`linecontact.tangential.initiation` and :mod:`linecontact.tangential.rolling`
 (units, conventions and references: :mod:`linecontact.tangential`). A problem is described
 by a :class:`_Problem` (its collocation kernel, convergence rate and closed forms, all in
-the units of ``T`` over ``a tau0`` or over ``mu F``); :func:`_run` validates the state
-variable, solves on the points that have a stick zone and returns the fields of the result.
+the units of ``T`` over ``a tau0`` or over ``mu F``, the :class:`_Zone` of its stick zone
+and its result class); :func:`_run` validates the state variable, solves on the points that
+have a stick zone and returns the fields of the result, and :func:`_constant_friction` /
+:func:`_coulomb_friction` are the public functions of each friction law around it. The
+results of each law share a base (:class:`_ConstantStress`, :class:`_CoulombFriction`) that
+assembles the traction from the result's stick-zone traction.
 """
 
 from __future__ import annotations
@@ -12,10 +16,12 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import lru_cache
+from typing import ClassVar, Generic, TypeVar
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
 
+from .. import _validation
 from .. import closed_forms as _cf
 from .. import domain as _domain
 from .._validation import (
@@ -40,6 +46,8 @@ _N_CHECK = 16  # points of the stick zone where the stick condition is re-evalua
 _CHECK_THETA = np.pi * (np.arange(_N_CHECK) + 0.25) / _N_CHECK
 _CHECK_Y = np.cos(_CHECK_THETA)
 _FORCE_TOL = 1e-12  # Newton tolerance on T (relative to the full-slip load)
+
+_R = TypeVar("_R", bound="_Tangential")
 
 _STICK = "stick"
 _STICK_SLIP = "stick-slip"
@@ -285,6 +293,32 @@ def _states(sliding, stick, shape):
     return st.astype(str)
 
 
+@dataclass(frozen=True)
+class _Zone:
+    """Where the stick zone lies, given its end ``d`` (lengths over ``a``).
+
+    ``|x| < d`` for the initiation of sliding (``d`` from 1 at ``T = 0`` down to 0, full slip),
+    ``d < x < a`` for steady rolling (``d`` from -1 at ``T = 0`` up to 1, full slip: excluded).
+    """
+
+    d_low: float
+    d_low_inclusive: bool
+    d_stick: float  # delta at T = 0
+    inside: Callable[[NDArray, NDArray], NDArray]  # (x, d): the points of the stick zone
+    unit: Callable[[NDArray, NDArray], NDArray]  # (x, d): t in [-1, 1] over the stick zone
+
+
+def _centred_unit(x: NDArray, d: NDArray) -> NDArray:
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return np.where(d > 0, x / d, 2.0)
+
+
+#: The central stick zone ``|x| < d`` of the initiation of sliding.
+_CENTRED = _Zone(0.0, True, 1.0, lambda x, d: np.abs(x) < d, _centred_unit)
+#: The leading-edge stick zone ``d < x < a`` of steady rolling (``t`` exact at ``d`` and ``a``).
+_LEADING = _Zone(-1.0, False, -1.0, lambda x, d: x > d, lambda x, d: (2 * x - 1 - d) / (1 - d))
+
+
 # --------------------------------------------------------------------------------------------
 # results
 
@@ -293,7 +327,8 @@ def _states(sliding, stick, shape):
 class _Tangential(Result):
     """Fields shared by the four tangential results (see the subclasses)."""
 
-    # the SI forms scale by ``a``, the contact half-width; each subclass declares T_over_Ea
+    # the SI forms scale by ``a``, the contact half-width; the bases of the two friction laws
+    # declare T_over_Ea (after T_over_muF for Coulomb friction)
     d_over_a: NDArray | float = field(metadata=SI("stick_zone_end", "a", "m"))
     T_over_T_full_slip: NDArray | float
     state: NDArray | str
@@ -304,6 +339,9 @@ class _Tangential(Result):
     residual_consistency: NDArray | float
     error_estimate: NDArray | float
     converged: NDArray | bool
+
+    #: Where the stick zone lies (set by each result).
+    _zone: ClassVar[_Zone]
 
     def _points(self, x_over_a):
         x = positions("x_over_a", x_over_a, np.shape(self.d_over_a))
@@ -322,6 +360,68 @@ class _Tangential(Result):
             b[sel, :n] = kernel_solve(dlt[sel], int(n))
         return b
 
+    def _series(self, x: NDArray, dlt: NDArray, kernel_solve) -> tuple[NDArray, NDArray]:
+        """The collocation solution on the stick zone: ``t``, ``sqrt(1 - t^2) sum b_j U_j(t)``.
+
+        ``t`` maps the stick zone onto [-1, 1]; ``x``, ``dlt`` as from :meth:`_points`,
+        ``kernel_solve`` as for :meth:`_coefficients`. Both of shape ``points.shape + (m,)``.
+        """
+        b = self._coefficients(kernel_solve)
+        dd = np.atleast_1d(dlt[..., 0]).reshape(-1)
+        xx = np.broadcast_to(x, dd.shape + x.shape[-1:])
+        tt = self._zone.unit(xx, dd[:, None])
+        shape = np.shape(dlt[..., 0]) + x.shape[-1:]
+        return tt.reshape(shape), _cheb_u_series(b, tt).reshape(shape)
+
+    def _stick(self, x: NDArray, dlt: NDArray) -> NDArray:  # pragma: no cover - in each result
+        """The traction of the stick zone over the friction scale, by the result's method."""
+        raise NotImplementedError
+
+
+@dataclass(frozen=True)
+class _ConstantStress(_Tangential):
+    """Fields and traction shared by the results under a constant friction stress ``tau0``."""
+
+    inputs: ClassVar[tuple[str, ...]] = ("tau0_over_E", "method")
+
+    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
+
+    def _traction(self, x_over_a: ArrayLike, tau0_over_E) -> NDArray:
+        """Traction q/E: ``tau0`` times :meth:`_stick` in the stick zone.
+
+        ``tau0`` in the slip zones (everywhere when sliding), zero outside the contact and at
+        ``T = 0``.
+        """
+        x, dlt, st = self._points(x_over_a)
+        inner = self._stick(x, dlt)
+        stick = self._zone.inside(x, dlt) & (st == _STICK_SLIP)
+        q = np.where(np.abs(x) <= 1.0, np.where(stick, inner, 1.0), 0.0)
+        q = np.where(st == _STICK, 0.0, q)
+        return np.asarray(tau0_over_E, dtype=float)[..., None] * q
+
+
+@dataclass(frozen=True)
+class _CoulombFriction(_Tangential):
+    """Fields and traction shared by the results under Coulomb friction on the Hertz contact."""
+
+    inputs: ClassVar[tuple[str, ...]] = ("mu", "a_over_R", "method")
+
+    T_over_muF: NDArray | float
+    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
+
+    def _traction(self, x_over_a: ArrayLike, mu, a_over_R) -> NDArray:
+        """Traction q/E: mu p less :meth:`_stick` (over mu p0) in the stick zone; 0 at ``T = 0``."""
+        x, dlt, st = self._points(x_over_a)
+        p0 = np.asarray(a_over_R, dtype=float)[..., None] / 2
+        m = np.asarray(mu, dtype=float)[..., None]
+        xq = np.clip(x, -2.0, 2.0)  # the terms vanish beyond |x| = a; no overflow of x*x
+        hertz = np.sqrt(np.clip(1 - xq * xq, 0.0, None))
+        corr = self._stick(x, dlt)
+        stick = self._zone.inside(x, dlt) & (st == _STICK_SLIP)
+        q = hertz - np.where(stick, corr, 0.0)
+        q = np.where(st == _STICK, 0.0, q)
+        return m * p0 * q
+
 
 def _cheb_u_series(b: NDArray, t: NDArray) -> NDArray:
     """sqrt(1 - t^2) sum_j b_j U_j(t) (zero outside [-1, 1]); b (P, n), t (P, m)."""
@@ -339,25 +439,34 @@ def _cheb_u_series(b: NDArray, t: NDArray) -> NDArray:
 
 
 @dataclass(frozen=True)
-class _Problem:
+class _Problem(Generic[_R]):
     """What distinguishes the four problems (units: T over a tau0, or over mu F)."""
 
     name: str
+    result: type[_R]
     kernel: Callable[[NDArray, int], dict[str, NDArray]]
     rate: Callable[[NDArray], NDArray]
     T_closed: Callable[[NDArray], NDArray]  # T(delta)
     dT_closed: Callable[[NDArray], NDArray]  # dT/d delta
     delta_closed: Callable[[NDArray], NDArray]  # delta(T/T_full), for 0 <= T/T_full <= 1
     T_full: float
-    d_low: float
-    d_low_inclusive: bool
-    d_stick: float  # delta at T = 0
+    zone: _Zone
     constant: bool = True  # constant tau0 (load T_over_Ea) or Coulomb (load T_over_muF)
     creep_closed: Callable[[NDArray], NDArray] | None = None  # rolling only
     # the creep from T over the full-slip load, without the loss of precision of going
     # through d near full stick (rolling only)
     creep_of_r: Callable[[NDArray], NDArray] | None = None
     n_auto: int | None = None  # fixed n for n="auto" (Coulomb: linear right-hand sides)
+
+    @property
+    def d_low(self) -> float:
+        """The lower bound of ``d_over_a`` (its zone's)."""
+        return self.zone.d_low
+
+    @property
+    def d_low_inclusive(self) -> bool:
+        """Whether ``d_over_a`` may equal :attr:`d_low` (full slip, in the initiation)."""
+        return self.zone.d_low_inclusive
 
 
 def _run(
@@ -380,11 +489,12 @@ def _run(
     """
     _one_of(d_over_a, load, load_name)
     _check_options(method, n, tol)
+    zone = pb.zone
     names = list(params)
     arrays = list(params.values())
     if d_over_a is not None:
         dl = check_array(
-            "d_over_a", d_over_a, low=pb.d_low, low_inclusive=pb.d_low_inclusive, high=1.0
+            "d_over_a", d_over_a, low=zone.d_low, low_inclusive=zone.d_low_inclusive, high=1.0
         )
         given = ("d_over_a", dl)
     else:
@@ -401,7 +511,7 @@ def _run(
         r = pb.T_closed(dl) / pb.T_full  # T over the full-slip load
         T_target = None
         # the state follows from d (T rounds to the full-slip load long before d reaches 0)
-        sliding = dl == 0 if pb.d_low_inclusive else np.zeros(shape, bool)
+        sliding = dl == 0 if zone.d_low_inclusive else np.zeros(shape, bool)
         stick = np.zeros(shape, bool)
     else:
         r = g / (2 * arrays[0]) if pb.constant else g.copy()
@@ -423,7 +533,7 @@ def _run(
         pb.dT_closed,
         None if T_target is None else T_target.reshape(-1),
         pb.T_full,
-        lo=pb.d_low + (0.0 if pb.d_low_inclusive else 1e-16),
+        lo=zone.d_low + (0.0 if zone.d_low_inclusive else 1e-16),
         hi=1.0 - 1e-16,
     )
     act = active.reshape(-1)
@@ -431,7 +541,7 @@ def _run(
         T_unit = np.where(act, out["T"], pb.T_full * r.reshape(-1)).reshape(shape)
     else:
         T_unit = pb.T_full * r
-        dl = np.where(active, out["delta"].reshape(shape), np.where(stick, pb.d_stick, dl))
+        dl = np.where(active, out["delta"].reshape(shape), np.where(stick, zone.d_stick, dl))
     if pb.creep_closed is not None:
         if method == "collocation":
             creep = out["creep"]
@@ -487,7 +597,49 @@ def _build(cls, method, scalar, **vals):
     return cls(method=method, **{k: as_output(np.asarray(v), scalar) for k, v in vals.items()})
 
 
-def _wide(a_over_R: NDArray) -> NDArray:
-    """``a_over_R`` after the small-strain warning of the Coulomb problems' Hertz contact."""
-    _cf._warn_wide(a_over_R, stacklevel=4)
-    return a_over_R
+def _constant_friction(
+    pb: _Problem[_R], tau0_over_E, d_over_a, T_over_Ea, method, n, tol, on_failure
+) -> _R:
+    """The public function of a problem with constant friction stress ``tau0``.
+
+    Its result holds ``T_over_Ea`` and ``tau0_over_E`` (and ``creep_over_V`` where
+    the problem has a creep).
+    """
+    policy = _validation.failure_policy(on_failure)
+    params = {"tau0_over_E": _domain.check("tau0_over_E", tau0_over_E)}
+    arrays, load, creep, diag, scalar = _run(
+        pb, d_over_a, T_over_Ea, "T_over_Ea", method, n, tol, policy, params
+    )
+    (t0,) = arrays
+    if creep is not None:
+        diag["creep_over_V"] = t0 * creep
+    return _build(pb.result, method, scalar, T_over_Ea=load, tau0_over_E=t0, **diag)
+
+
+def _coulomb_friction(
+    pb: _Problem[_R], mu, a_over_R, d_over_a, T_over_muF, method, n, tol, on_failure
+) -> _R:
+    """The public function of a problem with Coulomb friction on the Hertz contact.
+
+    Its result holds ``T_over_muF``, ``T_over_Ea``, ``mu`` and ``a_over_R`` (and
+    ``creep_over_V`` where the problem has a creep).
+    """
+    policy = _validation.failure_policy(on_failure)
+    params = {"mu": _domain.check("mu", mu), "a_over_R": _domain.check("a_over_R", a_over_R)}
+    _cf._warn_wide(params["a_over_R"], stacklevel=4)  # the caller of the public function
+    arrays, load, creep, diag, scalar = _run(
+        pb, d_over_a, T_over_muF, "T_over_muF", method, n, tol, policy, params
+    )
+    m, A = arrays
+    if creep is not None:
+        diag["creep_over_V"] = m * A * creep
+    return _build(
+        pb.result,
+        method,
+        scalar,
+        T_over_muF=load,
+        T_over_Ea=(np.pi / 4) * m * A * load,
+        mu=m,
+        a_over_R=A,
+        **diag,
+    )

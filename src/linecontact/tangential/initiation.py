@@ -8,31 +8,27 @@ Units, sign conventions and references: :mod:`linecontact.tangential`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import ClassVar
+from dataclasses import dataclass
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .. import domain as _domain
-from .._validation import FailurePolicy, failure_policy
-from ..results import SI
+from .._validation import FailurePolicy
 from ..sie import _log_moment_vector
 from ._core import (
+    _CENTRED,
     _CHECK_Y,
     _SLIDING,
     _STICK,
-    _STICK_SLIP,
     N_COULOMB,
-    _build,
-    _cheb_u_series,
     _check_matrix,
+    _constant_friction,
+    _ConstantStress,
+    _coulomb_friction,
+    _CoulombFriction,
     _Problem,
-    _run,
     _solver,
     _tail,
-    _Tangential,
-    _wide,
     _xlogy,
 )
 
@@ -62,9 +58,13 @@ def _init_rhs(delta, t):
     return -(2.0 / np.pi) * np.arctanh(delta[..., None] * t)
 
 
-def _init_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
+def _init_solve(delta: NDArray, n: int):
     s = _solver(n)
-    sol = s.solve(_init_rhs(delta, s.collocation_unit), values=False)
+    return s.solve(_init_rhs(delta, s.collocation_unit), values=False)
+
+
+def _init_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
+    sol = _init_solve(delta, n)
     b = sol.coefficients
     # Eq 17: T = 2 a tau0 - int tau; the bounded solution's resultant is d (pi/2) b_0
     T = 2.0 - delta * (np.pi / 2) * b[:, 0]
@@ -81,8 +81,7 @@ def _init_rate(delta):
 
 
 def _init_coefficients(delta: NDArray, n: int) -> NDArray:
-    s = _solver(n)
-    return s.solve(_init_rhs(delta, s.collocation_unit), values=False).coefficients
+    return _init_solve(delta, n).coefficients
 
 
 def _G(x):
@@ -109,10 +108,14 @@ def _init_slip_closed(x, delta):
 # Coulomb counterparts (lengths over a, stresses over mu p0)
 
 
-def _cm_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
+def _cm_solve(delta: NDArray, n: int):
     """Cattaneo--Mindlin: (1/pi) int tau/(s - x) = (mu/pi) int p/(s - x) = -x on |x| < d."""
     s = _solver(n)
-    sol = s.solve(-delta[:, None] * s.collocation_unit[None, :], values=False)
+    return s.solve(-delta[:, None] * s.collocation_unit[None, :], values=False)
+
+
+def _cm_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
+    sol = _cm_solve(delta, n)
     b = sol.coefficients
     # T/(mu F) = 1 - int tau / (mu p0 a pi/2)
     T = 1.0 - delta * b[:, 0]
@@ -120,8 +123,12 @@ def _cm_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
     return dict(T=T, tail=_tail(b), stick=res, cons=np.abs(sol.consistency))
 
 
+def _cm_coefficients(delta: NDArray, n: int) -> NDArray:
+    return _cm_solve(delta, n).coefficients
+
+
 @dataclass(frozen=True)
-class SlidingInitiation(_Tangential):
+class SlidingInitiation(_ConstantStress):
     r"""Initiation of sliding with constant friction stress ``tau0`` (Eqs 15--17).
 
     Attributes
@@ -157,9 +164,8 @@ class SlidingInitiation(_Tangential):
         Every tolerance met.
     """
 
-    inputs: ClassVar[tuple[str, ...]] = ("tau0_over_E", "method")
+    _zone = _CENTRED
 
-    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
     tau0_over_E: NDArray | float
 
     def traction(self, x_over_a: ArrayLike) -> NDArray:
@@ -169,24 +175,13 @@ class SlidingInitiation(_Tangential):
         stick-zone traction of the method used for :math:`|x| < d`, :math:`\tau_0/E` for
         :math:`d \le |x| \le a` (everywhere when sliding), zero outside the contact.
         """
-        x, dlt, st = self._points(x_over_a)
-        t0 = np.asarray(self.tau0_over_E, dtype=float)[..., None]
-        ax = np.abs(x)
+        return self._traction(x_over_a, self.tau0_over_E)
+
+    def _stick(self, x: NDArray, dlt: NDArray) -> NDArray:
         if self.method == "closed-form":
             k = np.sqrt(np.clip((1 - dlt) * (1 + dlt), 0.0, None))
-            inner = (2 / np.pi) * np.arctan2(k, np.sqrt(np.clip(dlt * dlt - x * x, 0.0, None)))
-        else:
-            b = self._coefficients(_init_coefficients)
-            dd = np.atleast_1d(dlt[..., 0]).reshape(-1)
-            xx = np.broadcast_to(x, dd.shape + x.shape[-1:])
-            with np.errstate(divide="ignore", invalid="ignore"):
-                tt = np.where(dd[:, None] > 0, xx / dd[:, None], 2.0)
-            inner = 1.0 - _cheb_u_series(b, tt)
-            inner = inner.reshape(np.shape(dlt[..., 0]) + x.shape[-1:])
-        stick = (ax < dlt) & (st == _STICK_SLIP)
-        q = np.where(ax <= 1.0, np.where(stick, inner, 1.0), 0.0)
-        q = np.where(st == _STICK, 0.0, q)
-        return t0 * q
+            return (2 / np.pi) * np.arctan2(k, np.sqrt(np.clip(dlt * dlt - x * x, 0.0, None)))
+        return 1.0 - self._series(x, dlt, _init_coefficients)[1]
 
     def slip(self, x_over_a: ArrayLike) -> NDArray:
         r"""Slip :math:`s/a` at :math:`x/a` (shape ``points.shape + (m,)``).
@@ -240,7 +235,7 @@ class SlidingInitiation(_Tangential):
 
 
 @dataclass(frozen=True)
-class CoulombSlidingInitiation(_Tangential):
+class CoulombSlidingInitiation(_CoulombFriction):
     r"""Cattaneo--Mindlin line contact: Hertz pressure, Coulomb friction ``mu``.
 
     Attributes
@@ -258,10 +253,8 @@ error_estimate, converged
         As in :class:`SlidingInitiation` (stresses over :math:`\mu p_0`).
     """
 
-    inputs: ClassVar[tuple[str, ...]] = ("mu", "a_over_R", "method")
+    _zone = _CENTRED
 
-    T_over_muF: NDArray | float
-    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
     mu: NDArray | float
     a_over_R: NDArray | float
 
@@ -271,55 +264,36 @@ error_estimate, converged
         :math:`\mu p` in the slip zones,
         :math:`\mu p_0[\sqrt{1-x^2/a^2} - (d/a)\sqrt{1-x^2/d^2}]` in the stick zone.
         """
-        x, dlt, st = self._points(x_over_a)
-        p0 = np.asarray(self.a_over_R, dtype=float)[..., None] / 2
-        mu = np.asarray(self.mu, dtype=float)[..., None]
-        xq = np.clip(x, -2.0, 2.0)  # the terms vanish beyond |x| = a; no overflow of x*x
-        hertz = np.sqrt(np.clip(1 - xq * xq, 0.0, None))
+        return self._traction(x_over_a, self.mu, self.a_over_R)
+
+    def _stick(self, x: NDArray, dlt: NDArray) -> NDArray:
         if self.method == "closed-form":
-            corr = np.sqrt(np.clip(dlt * dlt - xq * xq, 0.0, None))
-        else:
-            b = self._coefficients(
-                lambda d, n: (
-                    _solver(n)
-                    .solve(-d[:, None] * _solver(n).collocation_unit, values=False)
-                    .coefficients
-                )
-            )
-            dd = np.atleast_1d(dlt[..., 0]).reshape(-1)
-            xx = np.broadcast_to(x, dd.shape + x.shape[-1:])
-            with np.errstate(divide="ignore", invalid="ignore"):
-                tt = np.where(dd[:, None] > 0, xx / dd[:, None], 2.0)
-            corr = _cheb_u_series(b, tt).reshape(np.shape(dlt[..., 0]) + x.shape[-1:])
-        stick = (np.abs(x) < dlt) & (st == _STICK_SLIP)
-        q = hertz - np.where(stick, corr, 0.0)
-        q = np.where(st == _STICK, 0.0, q)
-        return mu * p0 * q
+            xq = np.clip(x, -2.0, 2.0)  # no overflow of x*x
+            return np.sqrt(np.clip(dlt * dlt - xq * xq, 0.0, None))
+        return self._series(x, dlt, _cm_coefficients)[1]
 
 
 _INITIATION = _Problem(
     "sliding_initiation",
+    SlidingInitiation,
     _init_kernel,
     _init_rate,
     _init_T,
     lambda d: -2 * d / np.sqrt((1 - d) * (1 + d)),
     _init_delta,
     2.0,
-    0.0,
-    True,
-    1.0,
+    _CENTRED,
 )
 _CATTANEO_MINDLIN = _Problem(
     "sliding_initiation_coulomb",
+    CoulombSlidingInitiation,
     _cm_kernel,
     lambda d: np.full(d.shape, np.inf),
     lambda d: (1 - d) * (1 + d),  # 1 - d^2, without cancellation as d -> 1 (T -> 0)
     lambda d: -2 * d,
     lambda r: np.sqrt(1 - r),
     1.0,
-    0.0,
-    True,
-    1.0,
+    _CENTRED,
     constant=False,
     n_auto=N_COULOMB,
 )
@@ -391,20 +365,9 @@ def sliding_initiation(
     >>> sliding_initiation(0.01, T_over_Ea=0.03, on_failure="report").state
     'sliding'
     """
-    policy = failure_policy(on_failure)
-    arrays, load, _, diag, scalar = _run(
-        _INITIATION,
-        d_over_a,
-        T_over_Ea,
-        "T_over_Ea",
-        method,
-        n,
-        tol,
-        policy,
-        {"tau0_over_E": _domain.check("tau0_over_E", tau0_over_E)},
+    return _constant_friction(
+        _INITIATION, tau0_over_E, d_over_a, T_over_Ea, method, n, tol, on_failure
     )
-    (t0,) = arrays
-    return _build(SlidingInitiation, method, scalar, T_over_Ea=load, tau0_over_E=t0, **diag)
 
 
 def sliding_initiation_coulomb(
@@ -452,26 +415,6 @@ def sliding_initiation_coulomb(
     >>> round(r.T_over_muF, 12)
     0.75
     """
-    policy = failure_policy(on_failure)
-    arrays, load, _, diag, scalar = _run(
-        _CATTANEO_MINDLIN,
-        d_over_a,
-        T_over_muF,
-        "T_over_muF",
-        method,
-        n,
-        tol,
-        policy,
-        {"mu": _domain.check("mu", mu), "a_over_R": _wide(_domain.check("a_over_R", a_over_R))},
-    )
-    m, A = arrays
-    return _build(
-        CoulombSlidingInitiation,
-        method,
-        scalar,
-        T_over_muF=load,
-        T_over_Ea=(np.pi / 4) * m * A * load,
-        mu=m,
-        a_over_R=A,
-        **diag,
+    return _coulomb_friction(
+        _CATTANEO_MINDLIN, mu, a_over_R, d_over_a, T_over_muF, method, n, tol, on_failure
     )

@@ -9,30 +9,26 @@ friction on the Hertz contact (Carter). Units, sign conventions and references:
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import ClassVar, cast
+from dataclasses import dataclass
+from typing import cast
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .. import domain as _domain
-from .._validation import FailurePolicy, failure_policy
-from ..results import SI
+from .._validation import FailurePolicy
 from ._core import (
     _CHECK_Y,
-    _STICK,
-    _STICK_SLIP,
+    _LEADING,
     N_COULOMB,
-    _build,
-    _cheb_u_series,
     _check_matrix,
+    _constant_friction,
+    _ConstantStress,
+    _coulomb_friction,
+    _CoulombFriction,
     _Problem,
     _rounding,
-    _run,
     _solver,
     _tail,
-    _Tangential,
-    _wide,
     _xlogy,
 )
 
@@ -91,6 +87,10 @@ def _roll_solve(delta: NDArray, n: int, split: str = "endpoint"):
     return s.solve(f, extra=np.ones_like(f), values=False)
 
 
+def _roll_coefficients(delta: NDArray, n: int) -> NDArray:
+    return _roll_solve(delta, n).coefficients
+
+
 def _roll_kernel(delta: NDArray, n: int, split: str = "endpoint") -> dict[str, NDArray]:
     sol = _roll_solve(delta, n, split)
     b = sol.coefficients
@@ -111,13 +111,22 @@ def _roll_rate(delta):
     return _roll_u0(delta)
 
 
-def _carter_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
-    """Carter: (1/pi) int tau-bar/(s - x) = -x + lambda on d < x < a (q = -mu p + tau-bar)."""
+def _carter_solve(delta: NDArray, n: int):
+    """Carter: (1/pi) int tau-bar/(s - x) = -x + lambda on d < x < a (q = -mu p + tau-bar).
+
+    Returns the solution and the collocation points ``xs``.
+    """
     s = _solver(n)
     m = (1.0 + delta) / 2.0
     h = (1.0 - delta) / 2.0
     xs = m[:, None] + h[:, None] * s.collocation_unit[None, :]
-    sol = s.solve(-xs, extra=np.ones_like(xs), values=False)
+    return s.solve(-xs, extra=np.ones_like(xs), values=False), xs
+
+
+def _carter_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
+    sol, xs = _carter_solve(delta, n)
+    m = (1.0 + delta) / 2.0
+    h = (1.0 - delta) / 2.0
     b = sol.coefficients
     T = 1.0 - h * b[:, 0]
     lam = cast(NDArray, sol.extra)  # = -E creep/(2 mu p0 V); creep/V = -lam mu a/R
@@ -127,8 +136,12 @@ def _carter_kernel(delta: NDArray, n: int) -> dict[str, NDArray]:
     return dict(T=T, creep=-lam, tail=tail, stick=res, cons=np.abs(sol.consistency))
 
 
+def _carter_coefficients(delta: NDArray, n: int) -> NDArray:
+    return _carter_solve(delta, n)[0].coefficients
+
+
 @dataclass(frozen=True)
-class SteadyRolling(_Tangential):
+class SteadyRolling(_ConstantStress):
     r"""Steady rolling of a driving cylinder with constant friction stress (Eqs 23--29).
 
     Attributes
@@ -152,9 +165,8 @@ error_estimate, converged
         the extra collocation equation that fixes the creep.
     """
 
-    inputs: ClassVar[tuple[str, ...]] = ("tau0_over_E", "method")
+    _zone = _LEADING
 
-    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
     creep_over_V: NDArray | float
     tau0_over_E: NDArray | float
 
@@ -165,29 +177,21 @@ error_estimate, converged
         to 0 at the leading edge. ``x_over_a`` has shape ``(m,)``; the result has shape
         ``points.shape + (m,)``.
         """
-        x, dlt, st = self._points(x_over_a)
-        t0 = np.asarray(self.tau0_over_E, dtype=float)[..., None]
+        return self._traction(x_over_a, self.tau0_over_E)
+
+    def _stick(self, x: NDArray, dlt: NDArray) -> NDArray:
         if self.method == "closed-form":
             beta = (1 + dlt) / 2
-            inner = (2 / np.pi) * np.arctan2(
+            return (2 / np.pi) * np.arctan2(
                 np.sqrt(np.clip(beta * (1 - x), 0.0, None)), np.sqrt(np.clip(x - dlt, 0.0, None))
             )
-        else:
-            b = self._coefficients(lambda d, n: _roll_solve(d, n).coefficients)
-            dd = np.atleast_1d(dlt[..., 0]).reshape(-1)
-            xx = np.broadcast_to(x, dd.shape + x.shape[-1:])
-            tt = (2 * xx - 1 - dd[:, None]) / (1 - dd[:, None])  # exact at x = d and x = a
-            # q on the cylinder = -(q on the substrate) = tau0 arccos(t)/pi - tau-bar
-            inner = np.arccos(np.clip(tt, -1, 1)) / np.pi - _cheb_u_series(b, tt)
-            inner = inner.reshape(np.shape(dlt[..., 0]) + x.shape[-1:])
-        stick = (x > dlt) & (st == _STICK_SLIP)
-        q = np.where(np.abs(x) <= 1.0, np.where(stick, inner, 1.0), 0.0)
-        q = np.where(st == _STICK, 0.0, q)
-        return t0 * q
+        tt, tau_bar = self._series(x, dlt, _roll_coefficients)
+        # q on the cylinder = -(q on the substrate) = tau0 arccos(t)/pi - tau-bar
+        return np.arccos(np.clip(tt, -1, 1)) / np.pi - tau_bar
 
 
 @dataclass(frozen=True)
-class CoulombRolling(_Tangential):
+class CoulombRolling(_CoulombFriction):
     r"""Carter's steady rolling: Hertz pressure, Coulomb friction, driving cylinder.
 
     Attributes
@@ -207,10 +211,8 @@ error_estimate, converged
         As in :class:`SteadyRolling` (stresses over :math:`\mu p_0`).
     """
 
-    inputs: ClassVar[tuple[str, ...]] = ("mu", "a_over_R", "method")
+    _zone = _LEADING
 
-    T_over_muF: NDArray | float
-    T_over_Ea: NDArray | float = field(metadata=SI("tangential_load", "Ea", "N/m"))
     creep_over_V: NDArray | float
     mu: NDArray | float
     a_over_R: NDArray | float
@@ -221,50 +223,34 @@ error_estimate, converged
         :math:`\mu p_0[\sqrt{1-x^2/a^2} - (a'/a)\sqrt{1-(x-x_0)^2/a'^2}]` in the stick
         zone, :math:`x_0 = a - a'`; :math:`\mu p` in the slip zone. Shape ``points.shape + (m,)``.
         """
-        x, dlt, st = self._points(x_over_a)
-        p0 = np.asarray(self.a_over_R, dtype=float)[..., None] / 2
-        mu = np.asarray(self.mu, dtype=float)[..., None]
-        xq = np.clip(x, -2.0, 2.0)  # the terms vanish beyond |x| = a; no overflow of x*x
-        hertz = np.sqrt(np.clip(1 - xq * xq, 0.0, None))
-        m = (1 + dlt) / 2
-        h = (1 - dlt) / 2
+        return self._traction(x_over_a, self.mu, self.a_over_R)
+
+    def _stick(self, x: NDArray, dlt: NDArray) -> NDArray:
         if self.method == "closed-form":
-            corr = np.sqrt(np.clip(h * h - (xq - m) ** 2, 0.0, None))
-        else:
-
-            def coef(d, n):
-                mm, hh = (1 + d) / 2, (1 - d) / 2
-                xs = mm[:, None] + hh[:, None] * _solver(n).collocation_unit
-                return _solver(n).solve(-xs, extra=np.ones_like(xs), values=False).coefficients
-
-            b = self._coefficients(coef)
-            dd = np.atleast_1d(dlt[..., 0]).reshape(-1)
-            xx = np.broadcast_to(x, dd.shape + x.shape[-1:])
-            tt = (2 * xx - 1 - dd[:, None]) / (1 - dd[:, None])
-            corr = _cheb_u_series(b, tt).reshape(np.shape(dlt[..., 0]) + x.shape[-1:])
-        stick = (x > dlt) & (st == _STICK_SLIP)
-        q = hertz - np.where(stick, corr, 0.0)
-        q = np.where(st == _STICK, 0.0, q)
-        return mu * p0 * q
+            xq = np.clip(x, -2.0, 2.0)  # no overflow of x*x
+            m = (1 + dlt) / 2
+            h = (1 - dlt) / 2
+            return np.sqrt(np.clip(h * h - (xq - m) ** 2, 0.0, None))
+        return self._series(x, dlt, _carter_coefficients)[1]
 
 
 _ROLLING = _Problem(
     "steady_rolling",
+    SteadyRolling,
     _roll_kernel,
     _roll_rate,
     lambda d: 2 * _roll_sqrt_beta(d),
     lambda d: 1 / (2 * _roll_sqrt_beta(d)),
     lambda r: 2 * r * r - 1,
     2.0,
-    -1.0,
-    False,
-    -1.0,
+    _LEADING,
     creep_closed=_roll_creep_unit,
     # creep/V over tau0/E = -(2/pi) u0 = -(4/pi) artanh(T/(2 a tau0)), with r = T/(2 a tau0)
     creep_of_r=lambda r: -(4 / np.pi) * np.arctanh(r),
 )
 _CARTER = _Problem(
     "steady_rolling_coulomb",
+    CoulombRolling,
     _carter_kernel,
     lambda d: np.full(d.shape, np.inf),
     # 1 - ((1 - d)/2)^2 and its inverse, in forms that keep their relative precision at full
@@ -273,9 +259,7 @@ _CARTER = _Problem(
     lambda d: (1 - d) / 2,
     lambda r: -1 + 2 * r / (1 + np.sqrt(1 - r)),
     1.0,
-    -1.0,
-    False,
-    -1.0,
+    _LEADING,
     constant=False,
     creep_closed=lambda d: -(1 + d) / 2,
     creep_of_r=lambda r: -r / (1 + np.sqrt(1 - r)),
@@ -341,27 +325,8 @@ def steady_rolling(
     >>> abs(steady_rolling(0.01, 0.0, method="collocation").creep_over_V - r.creep_over_V) < 1e-14
     True
     """
-    policy = failure_policy(on_failure)
-    arrays, load, creep, diag, scalar = _run(
-        _ROLLING,
-        d_over_a,
-        T_over_Ea,
-        "T_over_Ea",
-        method,
-        n,
-        tol,
-        policy,
-        {"tau0_over_E": _domain.check("tau0_over_E", tau0_over_E)},
-    )
-    (t0,) = arrays
-    return _build(
-        SteadyRolling,
-        method,
-        scalar,
-        T_over_Ea=load,
-        creep_over_V=t0 * creep,
-        tau0_over_E=t0,
-        **diag,
+    return _constant_friction(
+        _ROLLING, tau0_over_E, d_over_a, T_over_Ea, method, n, tol, on_failure
     )
 
 
@@ -406,27 +371,6 @@ def steady_rolling_coulomb(
     >>> round(r.T_over_muF, 12), round(r.creep_over_V / (0.3 * 0.01), 12)
     (0.75, -0.5)
     """
-    policy = failure_policy(on_failure)
-    arrays, load, creep, diag, scalar = _run(
-        _CARTER,
-        d_over_a,
-        T_over_muF,
-        "T_over_muF",
-        method,
-        n,
-        tol,
-        policy,
-        {"mu": _domain.check("mu", mu), "a_over_R": _wide(_domain.check("a_over_R", a_over_R))},
-    )
-    m, A = arrays
-    return _build(
-        CoulombRolling,
-        method,
-        scalar,
-        T_over_muF=load,
-        T_over_Ea=(np.pi / 4) * m * A * load,
-        creep_over_V=m * A * creep,
-        mu=m,
-        a_over_R=A,
-        **diag,
+    return _coulomb_friction(
+        _CARTER, mu, a_over_R, d_over_a, T_over_muF, method, n, tol, on_failure
     )

@@ -4,11 +4,27 @@ Lengths over ``a``, stresses over the friction scale (``tau0``, or ``mu p0``), l
 the full-slip load (``r = T/T_full``), slips and displacements over ``a (stress scale)/E``,
 energies over ``E a^2 (stress scale/E)^2``: the closed forms of the Masing rules
 (``_masing_rules.py``) and the pieces of the incremental solver (``_collocation.py``).
+
+Each law (:data:`_Law`, one of :class:`_Constant` and :class:`_Coulomb`) has a ``name``,
+its full-slip load ``T_full`` over (stress scale) a, and
+
+* ``stick(r)``: the stick-zone half-width over a at the monotone load r = T/T_full in [0, 1];
+* ``displacement(r)``: the monotone displacement D/a (datum a) over (stress scale)/E;
+* ``virgin_loss(r)``: the energy dissipated by monotone loading from 0 to r, over
+  E a^2 (scale/E)^2;
+* ``traction(x, r)``: the monotone traction over the stress scale (x and r broadcast);
+* ``slip(x, r)``: the monotone slip relative to the centre, over a (scale)/E (nan beyond
+  |x| = 1);
+
+and the collocation pieces: ``B(x)``, the slip-zone traction (times the direction),
+``HB(x)``, its transform (1/pi) PV int_{-1}^{1} B(xi)/(xi - x) dxi for |x| < 1, and
+``logB(x)`` = int_{-1}^{1} B(xi) ln|x - xi| dxi.
 """
 
 from __future__ import annotations
 
 import math
+from typing import TypeAlias
 
 import numpy as np
 
@@ -27,48 +43,11 @@ def _series(x, coef_of_k, k0: int, kmax: int):
     return out
 
 
-class _Law:
-    """One friction law: full-slip load, monotone closed forms, and the collocation pieces."""
+class _Constant:
+    """Constant friction stress ``tau0``."""
 
-    name: str
-    T_full: float  # full-slip load over (stress scale) a
-
-    def stick(self, r):
-        """Stick-zone half-width over a at the monotone load r = T/T_full in [0, 1]."""
-        raise NotImplementedError
-
-    def displacement(self, r):
-        """Monotone displacement D/a (datum a) over (stress scale)/E."""
-        raise NotImplementedError
-
-    def virgin_loss(self, r):
-        """Energy dissipated by monotone loading from 0 to r, over E a^2 (scale/E)^2."""
-        raise NotImplementedError
-
-    def traction(self, x, r):
-        """Monotone traction over the stress scale; x and r broadcast."""
-        raise NotImplementedError
-
-    def slip(self, x, r):
-        """Monotone slip relative to the centre, over a (scale)/E (nan beyond |x| = 1)."""
-        raise NotImplementedError
-
-    # collocation pieces: the slip-zone traction B(x) (times the direction) and transforms
-    def B(self, x):
-        raise NotImplementedError
-
-    def HB(self, x):
-        """(1/pi) PV int_{-1}^{1} B(xi)/(xi - x) dxi for |x| < 1."""
-        raise NotImplementedError
-
-    def logB(self, x):
-        """int_{-1}^{1} B(xi) ln|x - xi| dxi."""
-        raise NotImplementedError
-
-
-class _Constant(_Law):
     name = "constant"
-    T_full = 2.0
+    T_full = 2.0  # full-slip load over (stress scale) a
 
     def stick(self, r):
         return np.sqrt(np.clip((1 - r) * (1 + r), 0.0, None))
@@ -112,9 +91,11 @@ class _Constant(_Law):
         return _xlogy(1 + x, np.abs(1 + x)) + _xlogy(1 - x, np.abs(1 - x)) - 2.0
 
 
-class _Coulomb(_Law):
+class _Coulomb:
+    """Coulomb friction on the Hertz contact (stress scale ``mu p0``)."""
+
     name = "coulomb"
-    T_full = np.pi / 2
+    T_full = np.pi / 2  # full-slip load over (stress scale) a
 
     def stick(self, r):
         return np.sqrt(np.clip(1 - r, 0.0, None))
@@ -159,5 +140,8 @@ class _Coulomb(_Law):
         c0, e = chebyshev_log_expansion(x, 2)
         return (np.pi / 2) * (e[..., 2] / 2 + c0)
 
+
+#: One friction law: either strategy, each with the same attributes and methods (module docstring).
+_Law: TypeAlias = _Constant | _Coulomb
 
 _LAWS: dict[str, _Law] = {"constant": _Constant(), "coulomb": _Coulomb()}

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import ClassVar
+from typing import ClassVar, TypeVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -17,7 +17,8 @@ from numpy.typing import ArrayLike, NDArray
 from ... import domain as _domain
 from ..._validation import check_array
 from ...errors import ConvergenceError
-from ...results import SI, Result, as_output
+from ...results import SI, Result
+from .._core import _build
 from ._collocation import N_INCREMENTAL, N_MAX_INCREMENTAL, _incremental
 from ._histories import _SLIDING, _STICK_SLIP, _T_LIMIT, _check_method
 from ._laws import _LAWS, _Law
@@ -27,6 +28,8 @@ from ._laws import _LAWS, _Law
 #: :math:`\epsilon (1 - c/a)^{-3/2}` (measured: 4e-7 at :math:`1 - c/a = 5 \times 10^{-7}`, Coulomb
 #: friction).
 _EPS_LOSS = float(np.finfo(float).eps)
+
+_C = TypeVar("_C", bound="_Cyclic")
 
 
 @dataclass(frozen=True)
@@ -140,8 +143,30 @@ def _too_small(tol: float, r: float, estimate: float, n: int) -> str:
     )
 
 
-def _cyclic(law: _Law, r: NDArray, scale: NDArray, method: str, n: int, tol: float):
-    """W over E a^2, the stick zone and the state for amplitudes r over the full-slip load."""
+def _amplitudes(name: str, value: ArrayLike) -> NDArray:
+    """The checked amplitudes ``value`` of the load ``name``: in ``(0, _T_LIMIT]``."""
+    return check_array(
+        name, value, low=0.0, low_inclusive=False, high=_T_LIMIT, high_inclusive=True
+    )
+
+
+def _cyclic(
+    cls: type[_C],
+    law: _Law,
+    T: NDArray,
+    r: NDArray,
+    scale: NDArray,
+    method: str,
+    n: int,
+    tol: float,
+    inputs: dict[str, NDArray],
+) -> _C:
+    """The result ``cls`` for the amplitudes ``T`` over E a, ``r`` over the full-slip load.
+
+    ``T``, ``r``, ``scale`` (the friction stress over E) and the ``inputs`` (the result's
+    other fields) broadcast to the points; W over E a^2, the stick zone and the state follow.
+    """
+    scalar = r.ndim == 0
     sliding = r >= 1.0
     rr = np.where(sliding, 0.0, r)
     if method == "closed-form":
@@ -170,7 +195,8 @@ def _cyclic(law: _Law, r: NDArray, scale: NDArray, method: str, n: int, tol: flo
     W = np.where(sliding, np.nan, scale * scale * w)
     c = np.where(sliding, np.nan, law.stick(rr))
     state = np.where(sliding, _SLIDING, _STICK_SLIP)
-    return W, c, state
+    loads = {"T_amplitude_over_Ea": T, "T_amplitude_over_T_full_slip": r}
+    return _build(cls, method, scalar, **loads, W_over_Ea2=W, c_over_a=c, state=state, **inputs)
 
 
 def cyclic_loss(
@@ -224,27 +250,9 @@ def cyclic_loss(
     """
     _check_method(method, n, tol)
     t0 = _domain.check("tau0_over_E", tau0_over_E)
-    A = check_array(
-        "T_amplitude_over_Ea",
-        T_amplitude_over_Ea,
-        low=0.0,
-        low_inclusive=False,
-        high=_T_LIMIT,
-        high_inclusive=True,
-    )
-    t0, A = np.broadcast_arrays(t0, A)
-    scalar = A.ndim == 0
+    t0, A = np.broadcast_arrays(t0, _amplitudes("T_amplitude_over_Ea", T_amplitude_over_Ea))
     r = A / (2 * t0)
-    W, c, state = _cyclic(_LAWS["constant"], r, t0, method, n, tol)
-    return CyclicLoss(
-        as_output(A, scalar),
-        as_output(r, scalar),
-        as_output(W, scalar),
-        as_output(c, scalar),
-        as_output(state, scalar),
-        method,
-        tau0_over_E=as_output(t0, scalar),
-    )
+    return _cyclic(CyclicLoss, _LAWS["constant"], A, r, t0, method, n, tol, {"tau0_over_E": t0})
 
 
 def cyclic_loss_coulomb(
@@ -285,26 +293,7 @@ def cyclic_loss_coulomb(
     _check_method(method, n, tol)
     m = _domain.check("mu", mu)
     A = _domain.check("a_over_R", a_over_R)
-    Q = check_array(
-        "T_amplitude_over_muF",
-        T_amplitude_over_muF,
-        low=0.0,
-        low_inclusive=False,
-        high=_T_LIMIT,
-        high_inclusive=True,
-    )
-    m, A, Q = np.broadcast_arrays(m, A, Q)
-    scalar = Q.ndim == 0
-    scale = m * A / 2
-    W, c, state = _cyclic(_LAWS["coulomb"], Q, scale, method, n, tol)
-    return CoulombCyclicLoss(
-        as_output((np.pi / 4) * m * A * Q, scalar),
-        as_output(Q, scalar),
-        as_output(W, scalar),
-        as_output(c, scalar),
-        as_output(state, scalar),
-        method,
-        T_amplitude_over_muF=as_output(Q, scalar),
-        mu=as_output(m, scalar),
-        a_over_R=as_output(A, scalar),
-    )
+    m, A, Q = np.broadcast_arrays(m, A, _amplitudes("T_amplitude_over_muF", T_amplitude_over_muF))
+    T = (np.pi / 4) * m * A * Q
+    inputs = dict(T_amplitude_over_muF=Q, mu=m, a_over_R=A)
+    return _cyclic(CoulombCyclicLoss, _LAWS["coulomb"], T, Q, m * A / 2, method, n, tol, inputs)
