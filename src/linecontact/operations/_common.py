@@ -48,6 +48,29 @@ def group_parameters(group: str = GROUPS_GROUP) -> tuple[Parameter, ...]:
     )
 
 
+def material_parameters(
+    group: str, cylinder: tuple[str, str], substrate: tuple[str, str], presets: tuple[str, str]
+) -> tuple[Parameter, ...]:
+    """``E1 nu1 E2 nu2`` and the two presets, in the section ``group``, with their help.
+
+    ``cylinder`` and ``substrate`` are the help of a body's Young's modulus [Pa] and Poisson
+    ratio; ``presets`` that of ``--cylinder-material`` and ``--substrate-material``.
+    """
+    moduli = tuple(
+        Parameter(name, help, unit=unit, group=group)
+        for name, help, unit in zip(
+            ("E1", "nu1", "E2", "nu2"), (*cylinder, *substrate), ("Pa", "", "Pa", ""), strict=True
+        )
+    )
+    return (
+        *moduli,
+        *(
+            Parameter(name, help, kind="text", metavar="NAME", group=group)
+            for name, help in zip(("cylinder_material", "substrate_material"), presets, strict=True)
+        ),
+    )
+
+
 def si_inputs(range_flag: str = "--h") -> tuple[tuple[Parameter, ...], tuple[Entry, ...]]:
     """The SI inputs: radius, moduli or presets, adhesion, the fibre's length; their entries.
 
@@ -66,24 +89,19 @@ def si_inputs(range_flag: str = "--h") -> tuple[tuple[Parameter, ...], tuple[Ent
             metavar="E",
             group=g,
         ),
-        Parameter("E1", "cylinder's Young's modulus [Pa] (with --nu1 ...)", unit="Pa", group=g),
-        Parameter("nu1", "cylinder's Poisson ratio, in (-1, 0.5]", group=g),
-        Parameter("E2", "substrate's Young's modulus [Pa]", unit="Pa", group=g),
-        Parameter("nu2", "substrate's Poisson ratio, in (-1, 0.5]", group=g),
-        Parameter(
-            "cylinder_material",
-            "cylinder's material preset, instead of --E1 --nu1 (case-insensitive; names: "
-            "`linecontact materials`)",
-            kind="text",
-            metavar="NAME",
-            group=g,
-        ),
-        Parameter(
-            "substrate_material",
-            "substrate's material preset, instead of --E2 --nu2 (names as for --cylinder-material)",
-            kind="text",
-            metavar="NAME",
-            group=g,
+        *material_parameters(
+            g,
+            (
+                "cylinder's Young's modulus [Pa] (with --nu1 ...)",
+                "cylinder's Poisson ratio, in (-1, 0.5]",
+            ),
+            ("substrate's Young's modulus [Pa]", "substrate's Poisson ratio, in (-1, 0.5]"),
+            (
+                "cylinder's material preset, instead of --E1 --nu1 (case-insensitive; names: "
+                "`linecontact materials`)",
+                "substrate's material preset, instead of --E2 --nu2 (names as for "
+                "--cylinder-material)",
+            ),
         ),
         Parameter(
             "sigma0", "adhesive (Dugdale) stress sigma0 [Pa]", unit="Pa", metavar="S", group=g
