@@ -11,6 +11,8 @@ law and the contact are in ``parameters``.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -20,10 +22,11 @@ from .. import tangential as tg
 from .._validation import check_array
 from ..cylinder import Cylinder
 from ..domain import check_si
-from ..output import Table, table_from_result
+from ..output import Table
 from ..tangential.history import _T_LIMIT
-from ._common import si_parameters
+from ._common import si_columns, si_parameters
 from ._declare import Entry, Inputs, Operation, Parameter
+from ._records import records
 from .tangential import (
     _FRICTION,
     _FRICTION_ENTRIES,
@@ -164,72 +167,51 @@ def _si_params(args, cyl, res, fr) -> dict[str, Any]:
     return params
 
 
-def _cmd_cycle(args: Inputs) -> Table:
-    coulomb, state, values, A, F_over_Eh, cyl = _inputs(
-        args, "T_amplitude_over_Ea", "T_amplitude_over_muF", "tangential_amplitude"
-    )
+@dataclass(frozen=True)
+class _Loading:
+    """What differs between ``cycle`` and ``history``: their flags, solver, columns, table."""
+
+    nd: str  # the loads over E a
+    coulomb_nd: str  # over mu F
+    si: str  # in N/m
+    solver: str  # the name of the SI method and of the nondimensional functions (+ _coulomb)
+    columns: dict[str, str]  # the SI fields of the result and their keys
+    total: tuple[str, str]  # the SI field whose total over --length is given, and its key
+    table: Callable[..., Table]
+
+
+def _compute(args: Inputs, how: _Loading) -> Table:
+    coulomb, state, values, A, F_over_Eh, cyl = _inputs(args, how.nd, how.coulomb_nd, how.si)
     if cyl is not None:
         fr = _si_friction(args, coulomb, cyl)
-        amp = _si_loads(args, cyl, state, values, coulomb)
-        res = cyl.cyclic_loss(args.load, amp, **fr, method=args.method)
-        extra: dict[str, Any] = {
-            "T_amplitude_N_per_m": res.amplitude,
-            "W_J_per_m": res.energy_per_cycle,
-            "c_m": res.stick_zone_half_width,
-        }
+        loads = _si_loads(args, cyl, state, values, coulomb)
+        res = getattr(cyl, how.solver)(args.load, loads, **fr, method=args.method)
+        extra: dict[str, Any] = si_columns(res, how.columns)
         if args.length is not None:
-            extra["W_total_J"] = cyl.total(res.energy_per_cycle, args.length)
-        table = _cycle_table(args, res.nondimensional, _si_params(args, cyl, res, fr), extra)
-        return table
+            field, key = how.total
+            extra[key] = cyl.total(getattr(res, field), args.length)
+        return how.table(args, res.nondimensional, _si_params(args, cyl, res, fr), extra)
     _friction_nd(args, coulomb, A)
     if coulomb:
-        Q = values if state == "T_amplitude_over_muF" else values / ((np.pi / 4) * args.mu * A)
-        r: Any = tg.cyclic_loss_coulomb(args.mu, A, Q, method=args.method)
+        Q = values if state == how.coulomb_nd else values / ((np.pi / 4) * args.mu * A)
+        r: Any = getattr(tg, how.solver + "_coulomb")(args.mu, A, Q, method=args.method)
     else:
-        r = tg.cyclic_loss(args.tau0_over_E, values, method=args.method)
-    return _cycle_table(args, r, _params(args, coulomb, A, F_over_Eh), {})
+        r = getattr(tg, how.solver)(args.tau0_over_E, values, method=args.method)
+    return how.table(args, r, _params(args, coulomb, A, F_over_Eh), {})
 
 
 def _cycle_table(args, r, params, extra):
     show = ["T_amplitude_over_Ea", "T_amplitude_over_T_full_slip", "W_over_Ea2", "c_over_a"]
     show += ["state", *extra]
     law = "Coulomb friction" if params["friction"] == "coulomb" else "constant friction stress"
-    return table_from_result(
+    return records(
+        args,
         r,
-        columns=extra,
-        parameters=params,
-        command=args.command_line(),
-        title=f"cyclic tangential loading, {law} ({r.method}): energy dissipated per cycle",
-        show=show,
+        params,
+        extra,
+        f"cyclic tangential loading, {law} ({r.method}): energy dissipated per cycle",
+        show,
     )
-
-
-def _cmd_history(args: Inputs) -> Table:
-    coulomb, state, values, A, F_over_Eh, cyl = _inputs(
-        args, "T_over_Ea", "T_over_muF", "tangential_load"
-    )
-    if cyl is not None:
-        fr = _si_friction(args, coulomb, cyl)
-        T = _si_loads(args, cyl, state, values, coulomb)
-        res = cyl.tangential_history(args.load, T, **fr, method=args.method)
-        extra: dict[str, Any] = {
-            "T_N_per_m": res.tangential_load,
-            "c_m": res.stick_zone_half_width,
-            "displacement_m": res.displacement,
-            "dissipation_J_per_m": res.dissipation,
-        }
-        if args.length is not None:
-            extra["dissipation_total_J"] = cyl.total(res.dissipation, args.length)
-        h = res.nondimensional
-        table = _history_table(args, h, _si_params(args, cyl, res, fr), extra)
-        return table
-    _friction_nd(args, coulomb, A)
-    if coulomb:
-        Q = values if state == "T_over_muF" else values / ((np.pi / 4) * args.mu * A)
-        h = tg.tangential_history_coulomb(args.mu, A, Q, method=args.method)
-    else:
-        h = tg.tangential_history(args.tau0_over_E, values, method=args.method)
-    return _history_table(args, h, _params(args, coulomb, A, F_over_Eh), {})
 
 
 def _history_table(args, h, params, extra):
@@ -239,14 +221,44 @@ def _history_table(args, h, params, extra):
     show = ["step", "T_over_Ea", "T_over_T_full_slip", "state", "c_over_a", "slip_direction"]
     show += ["memory", "displacement_over_a", "dissipation_over_Ea2", *extra]
     law = "Coulomb friction" if params["friction"] == "coulomb" else "constant friction stress"
-    return table_from_result(
-        h,
-        columns=cols,
-        parameters=params,
-        command=args.command_line(),
-        title=f"tangential load history, {law} ({h.method})",
-        show=show,
-    )
+    return records(args, h, params, cols, f"tangential load history, {law} ({h.method})", show)
+
+
+_CYCLE = _Loading(
+    "T_amplitude_over_Ea",
+    "T_amplitude_over_muF",
+    "tangential_amplitude",
+    "cyclic_loss",
+    {
+        "amplitude": "T_amplitude_N_per_m",
+        "energy_per_cycle": "W_J_per_m",
+        "stick_zone_half_width": "c_m",
+    },
+    ("energy_per_cycle", "W_total_J"),
+    _cycle_table,
+)
+_HISTORY = _Loading(
+    "T_over_Ea",
+    "T_over_muF",
+    "tangential_load",
+    "tangential_history",
+    {
+        "tangential_load": "T_N_per_m",
+        "stick_zone_half_width": "c_m",
+        "displacement": "displacement_m",
+        "dissipation": "dissipation_J_per_m",
+    },
+    ("dissipation", "dissipation_total_J"),
+    _history_table,
+)
+
+
+def _cmd_cycle(args: Inputs) -> Table:
+    return _compute(args, _CYCLE)
+
+
+def _cmd_history(args: Inputs) -> Table:
+    return _compute(args, _HISTORY)
 
 
 # --------------------------------------------------------------------------------------------

@@ -15,19 +15,19 @@ import numpy as np
 from ..cylinder import _check_cylinder_si, _plausible, hysteresis_adhesion
 from ..domain import SCALE_WORDS, check_si
 from ..errors import ModelValidityWarning, NoEquilibriumError, ParameterError
-from ..output import Table, table_from_result
+from ..output import Table
 from ..push import push
 from ..sliding import sliding_pull_off
 from ._common import (
     GROUPS_GROUP,
     SI_GROUP,
     cylinder,
-    si_columns,
     si_given,
     si_inputs,
     si_parameters,
 )
 from ._declare import Entry, Inputs, Operation, Parameter
+from ._records import records, si_shown
 
 __all__ = ["OPERATIONS"]
 
@@ -182,18 +182,17 @@ def _cmd_push(args: Inputs) -> Table:
         if args.tip_friction is not None:
             names["moment_arm"] = "H_arm_m"
             show.insert(1, "H_arm_m")
-        extra.update(si_columns(pushed, names, totals=totals, length=args.length))
         show += ["first_motion"] + (["state"] if Q is not None else [])
-        if args.length is not None:
-            show += ["Q_roll_total_N", "Q_slide_total_N"]
-    table = table_from_result(
+        cols, show = si_shown(args, pushed, names, totals, show)
+        extra.update(cols)
+    table = records(
+        args,
         res,
-        columns=extra,
+        params,
+        extra,
+        "a fibre pushed sideways: rolling and sliding resistance, first motion",
+        show,
         drop=drop,
-        parameters=params,
-        command=args.command_line(),
-        title="a fibre pushed sideways: rolling and sliding resistance, first motion",
-        show=show,
     )
     return table
 

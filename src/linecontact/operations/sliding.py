@@ -15,15 +15,13 @@ import numpy as np
 from ..cylinder import sliding_pull_off_force
 from ..domain import check_si
 from ..errors import ParameterError
-from ..output import Table, table_from_result
+from ..output import Table
 from ..sliding import sliding_contact, sliding_contact_for_load, sliding_pull_off
 from ._common import (
     GROUPS_GROUP,
     SI_GROUP,
     cylinder,
     half_widths,
-    null_missing,
-    si_columns,
     si_given,
     si_inputs,
     si_loads,
@@ -31,6 +29,7 @@ from ._common import (
     width_parameters,
 )
 from ._declare import Entry, Inputs, Operation, Parameter
+from ._records import convergence, records, si_shown
 
 __all__ = ["OPERATIONS"]
 
@@ -97,14 +96,7 @@ def _cmd_slide(args: Inputs) -> Table:
         else:  # A in m
             si = cyl.sliding(contact_half_width=A, **how)
             res = si.nondimensional
-        ok = np.asarray(res.converged, bool).reshape(-1)
-        state = np.where(ok, "contact", "not-converged")
-        reason = np.full(ok.shape, None, dtype=object)
-        A_over_R = np.reshape(res.a_over_R, -1)
-        for i in np.flatnonzero(~ok):
-            reason[i] = (
-                f"the {args.method} solver did not converge at a_over_R={float(A_over_R[i])!r}"
-            )
+        state, reason = convergence(res, args.method)
         given = "a_over_R"
     else:
         if cyl is None:
@@ -154,34 +146,28 @@ def _cmd_slide(args: Inputs) -> Table:
         names.update(leading_zone_end="c2_m", eccentricity="e_m", load="F_N_per_m")
         names["moment"] = "M_N"
         totals = {"load": "F_total_N", "moment": "M_total_N_m"}
-        show += ["a_m", "F_N_per_m", "M_N"]
+        shown = ["a_m", "F_N_per_m", "M_N"]
         if args.tau0 is not None:
             params["tau0_Pa"] = args.tau0
             names["friction_force"] = "T_N_per_m"
             totals["friction_force"] = "T_total_N"
-            show.append("T_N_per_m")
-        extra.update(si_columns(si, names, totals=totals, length=args.length))
-        if args.length is not None:
-            show += ["F_total_N", "M_total_N_m"]
-            if args.tau0 is not None:
-                show.append("T_total_N")
-    extra.update(state=state, reason=reason)
-    if np.any(state != "contact"):
-        show.append("state")
-    table = table_from_result(
+            shown.append("T_N_per_m")
+        cols, shown = si_shown(args, si, names, totals, shown)
+        extra.update(cols)
+        show += shown
+    return records(
+        args,
         res,
-        columns=extra,
-        drop=drop,
-        parameters=params,
-        command=args.command_line(),
-        title=(
+        params,
+        extra,
+        (
             f"steady sliding ({res.method}); M clockwise positive about the contact centre, "
             "compressive load positive"
         ),
-        show=show,
+        show,
+        contact=(state, reason, given),
+        drop=drop,
     )
-    table = null_missing(table, state != "contact", keep=(given, "state", "reason"))
-    return table
 
 
 # --------------------------------------------------------------------------------------------

@@ -20,9 +20,16 @@ from ..cylinder import Cylinder
 from ..domain import DOMAIN, check
 from ..errors import NoEquilibriumError
 from ..normal import contact_for_load, pull_off
-from ..output import Table, table_from_result
-from ._common import cylinder, group_parameters, si_given, si_inputs, si_parameters
+from ..output import Table
+from ._common import (
+    cylinder,
+    group_parameters,
+    si_given,
+    si_inputs,
+    si_parameters,
+)
 from ._declare import Entry, Inputs, Operation, Parameter
+from ._records import records
 
 __all__ = ["OPERATIONS"]
 
@@ -273,14 +280,7 @@ def _table(args, r, rolling: bool, coulomb: bool, params, extra):
     show += ["T_total_N"] if "T_total_N" in extra else []
     what = "steady rolling (driving cylinder)" if rolling else "initiation of sliding"
     law = "Coulomb friction" if coulomb else "constant friction stress"
-    return table_from_result(
-        r,
-        columns=extra,
-        parameters=params,
-        command=args.command_line(),
-        title=f"{what}, {law} ({r.method})",
-        show=show,
-    )
+    return records(args, r, params, extra, f"{what}, {law} ({r.method})", show)
 
 
 # --------------------------------------------------------------------------------------------
