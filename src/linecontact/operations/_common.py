@@ -222,6 +222,16 @@ def _work_flag(range_flag: str) -> str:
     return "--work-of-adhesion-advancing" if range_flag == "--h2" else "--work-of-adhesion"
 
 
+def flag(name: str) -> str:
+    """The command line's flag of the parameter ``name``: ``--`` and ``-`` for ``_``."""
+    return "--" + name.replace("_", "-")
+
+
+def flags(args: Any, *names: str, given: bool = True) -> list[str]:
+    """The flags of those of ``names`` given in ``args`` (``given=False``: not given)."""
+    return [flag(n) for n in names if (getattr(args, n) is not None) == given]
+
+
 def si_given(args: Any, extra: Sequence[str] = ()) -> bool:
     """Whether any SI input (or one of ``extra``) was given.
 
@@ -401,7 +411,7 @@ def half_widths(args: Any, cyl: Cylinder | None, load_attr: str):
 
     Exactly one of those, ``--<load_attr>`` or ``--load`` [N/m] must be given.
     """
-    flag = "--" + load_attr.replace("_", "-")
+    load_flag = flag(load_attr)
     given = [
         args.a_over_R is not None,
         args.a_over_R_range is not None,
@@ -411,7 +421,7 @@ def half_widths(args: Any, cyl: Cylinder | None, load_attr: str):
     ]
     if sum(given) != 1:
         raise ValueError(
-            f"give exactly one of --a-over-R, --a-over-R-range, {flag}, --half-width [m] or "
+            f"give exactly one of --a-over-R, --a-over-R-range, {load_flag}, --half-width [m] or "
             "--load [N/m]"
         )
     if (args.a is not None or args.load is not None) and cyl is None:
@@ -420,7 +430,8 @@ def half_widths(args: Any, cyl: Cylinder | None, load_attr: str):
         )
     if cyl is not None and (given[0] or given[1] or given[2]):
         raise ValueError(
-            f"--a-over-R, --a-over-R-range and {flag} are nondimensional: with SI inputs give "
+            f"--a-over-R, --a-over-R-range and {load_flag} are nondimensional: with SI inputs "
+            "give "
             "--half-width [m] or --load [N/m]"
         )
     if args.a_over_R_range is not None:

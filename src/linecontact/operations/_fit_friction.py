@@ -14,6 +14,7 @@ import numpy as np
 from .. import inverse as inv
 from ..errors import ParameterError
 from ..output import Table
+from ._common import flags
 from ._fit_common import (
     _ESTIMATE,
     EXACT,
@@ -51,19 +52,9 @@ def _friction_from_width(args: Any) -> Table:
         )
     if args.receding_work_of_adhesion is not None and args.work_of_adhesion is None:
         raise ValueError("--work-of-adhesion-receding needs the advancing --work-of-adhesion")
-    model = [
-        f
-        for f, v in (
-            ("--radius", args.radius),
-            ("--modulus", args.modulus),
-            ("--E1", args.E1),
-            ("--E2", args.E2),
-            ("--z0", args.z0),
-            ("--cylinder-material", args.cylinder_material),
-            ("--substrate-material", args.substrate_material),
-        )
-        if v is not None
-    ] + (["--contact"] if args.contact != "maugis-dugdale" else [])
+    model = flags(
+        args, "radius", "modulus", "E1", "E2", "z0", "cylinder_material", "substrate_material"
+    ) + (["--contact"] if args.contact != "maugis-dugdale" else [])
     if model:
         raise ValueError(
             f"{', '.join(model)}: not used with --half-width (a measured width needs no contact "

@@ -23,7 +23,7 @@ from .. import inverse as inv
 from ..errors import ParameterError
 from ..measurements import per_length
 from ..output import Table
-from ._common import material_parameters
+from ._common import flags, material_parameters
 from ._declare import Entry, Inputs, Operation, Parameter
 from ._fit_common import (
     _ESTIMATE,
@@ -89,18 +89,15 @@ def _cmd_adhesion(args: Inputs) -> Table:
             )
         if args.radius_sd is not None:
             raise ValueError("--radius-sd is for one measurement; with --data the radii are exact")
-        single = [
-            "--" + k.replace("_", "-")
-            for k in (
-                "pull_off_force_sd",
-                "pull_off_force_total",
-                "pull_off_force_total_sd",
-                "half_width",
-                "half_width_sd",
-                "normal_load",
-            )
-            if getattr(args, k) is not None
-        ]
+        single = flags(
+            args,
+            "pull_off_force_sd",
+            "pull_off_force_total",
+            "pull_off_force_total_sd",
+            "half_width",
+            "half_width_sd",
+            "normal_load",
+        )
         if single:
             raise ValueError(
                 f"{', '.join(single)}: for one measurement, not with --data (the uncertainties "

@@ -24,17 +24,18 @@ from ..cylinder import Cylinder
 from ..domain import check_si
 from ..output import Table
 from ..tangential.history import _T_LIMIT
-from ._common import si_columns, si_parameters
-from ._declare import Entry, Inputs, Operation, Parameter
+from ._common import flag, si_columns, si_parameters
+from ._declare import Inputs, Operation
 from ._records import records
 from .tangential import (
-    _FRICTION,
-    _FRICTION_ENTRIES,
-    _SI_ENTRIES,
     _check_friction,
+    _friction_nd,
     _given,
+    _loads,
     _normal_contact,
-    _normal_contact_parameters,
+    _params,
+    _si_friction,
+    tangential_operation,
 )
 
 __all__ = ["OPERATIONS"]
@@ -68,8 +69,8 @@ def _inputs(args: Inputs, nd: str, coulomb_nd: str, si: str):
     coulomb = args.friction == "coulomb"
     _check_friction(args, coulomb, coulomb_nd, nd)
     given = _given(args, nd, coulomb_nd, si)
-    flags = "--" + nd.replace("_", "-"), "--" + coulomb_nd.replace("_", "-")
-    si_flag = "--" + si.replace("_", "-")
+    flags = flag(nd), flag(coulomb_nd)
+    si_flag = flag(si)
     if len(given) != 1:
         raise ValueError(f"give exactly one of {flags[0]}, {flags[1]} (Coulomb) or {si_flag} [N/m]")
     (state,) = given
@@ -92,43 +93,6 @@ def _inputs(args: Inputs, nd: str, coulomb_nd: str, si: str):
             high_inclusive=state != si,
         )
     return coulomb, state, values, A, F_over_Eh, cyl
-
-
-def _friction_nd(args: Inputs, coulomb: bool, A) -> dict[str, Any]:
-    if coulomb:
-        if A is None:
-            raise ValueError(
-                "Coulomb friction needs the Hertz half-width: give --a-over-R (or --R-over-h "
-                "--sigma0-over-E 0 --F-over-Eh, or SI inputs)"
-            )
-        return {}
-    if args.tau0 is not None:
-        raise ValueError(
-            "--tau0 [Pa] is an SI input: give --radius, the materials and --load too, or use "
-            "--tau0-over-E"
-        )
-    if args.tau0_over_E is None:
-        raise ValueError("give the friction stress --tau0-over-E (or --friction coulomb --mu)")
-    return {}
-
-
-def _params(args, coulomb: bool, A, F_over_Eh) -> dict[str, Any]:
-    params: dict[str, Any] = {"friction": "coulomb" if coulomb else "constant"}
-    if A is not None:
-        params["a_over_R"] = float(A)
-    if F_over_Eh is not None:
-        params.update(R_over_h=args.R_over_h, sigma0_over_E=args.sigma0_over_E, F_over_Eh=F_over_Eh)
-    return params
-
-
-def _si_friction(args: Inputs, coulomb: bool, cyl: Cylinder) -> dict[str, Any]:
-    if coulomb:
-        return dict(friction_coefficient=args.mu)
-    if len(_given(args, "tau0", "tau0_over_E")) != 1:
-        raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
-    return dict(
-        friction_stress=args.tau0 if args.tau0 is not None else cyl.in_si(args.tau0_over_E, "E")
-    )
 
 
 def _si_loads(args: Inputs, cyl: Cylinder, state: str, values, coulomb) -> np.ndarray:
@@ -267,30 +231,16 @@ def _cmd_history(args: Inputs) -> Table:
 _LOADS = "tangential loads (exactly one)"
 
 
-def _operation(name: str, summary: str, loads: tuple[Parameter, ...], compute: Any) -> Operation:
-    return Operation(
+def _operation(name: str, summary: str, how: _Loading, helps: tuple[str, str, str]) -> Operation:
+    metavars = ("A", "Q", "T") if name == "cycle" else ("T", "T", "T")
+    loads = _loads(_LOADS, *zip((how.nd, how.coulomb_nd, how.si), helps, metavars, strict=True))
+    return tangential_operation(
         name,
         summary,
-        _DESCRIPTION[name],
-        tuple(_EXAMPLES[name]),
-        (
-            *_FRICTION,
-            *loads,
-            *_normal_contact_parameters(),
-            Parameter(
-                "method",
-                "Masing rules, or a stepwise check",
-                kind="text",
-                choices=("closed-form", "incremental"),
-                default="closed-form",
-            ),
-        ),
-        compute,
-        entries=(
-            *_FRICTION_ENTRIES,
-            *_SI_ENTRIES,
-            Entry(("F_over_Eh", "load"), "normal load F/(E h), or F [N/m] (SI)"),
-        ),
+        (_DESCRIPTION[name], _EXAMPLES[name]),
+        loads,
+        ("Masing rules, or a stepwise check", ("closed-form", "incremental")),
+        _cmd_cycle if name == "cycle" else _cmd_history,
         rows=tuple(p.name for p in loads) if name == "cycle" else (),
     )
 
@@ -299,59 +249,21 @@ OPERATIONS = {
     "cycle": _operation(
         "cycle",
         "cyclic tangential loading: energy dissipated per cycle, stick zone",
+        _CYCLE,
         (
-            Parameter(
-                "T_amplitude_over_Ea",
-                "amplitude T*/(E a), > 0",
-                many="several",
-                metavar="A",
-                group=_LOADS,
-            ),
-            Parameter(
-                "T_amplitude_over_muF",
-                "amplitude T*/(mu F), > 0 (Coulomb)",
-                many="several",
-                metavar="Q",
-                group=_LOADS,
-            ),
-            Parameter(
-                "tangential_amplitude",
-                "amplitude T* [N/m] (SI inputs)",
-                many="several",
-                unit="N/m",
-                metavar="T",
-                group=_LOADS,
-            ),
+            "amplitude T*/(E a), > 0",
+            "amplitude T*/(mu F), > 0 (Coulomb)",
+            "amplitude T* [N/m] (SI inputs)",
         ),
-        _cmd_cycle,
     ),
     "history": _operation(
         "history",
         "a tangential load history with memory: zones, slip, energy per step",
+        _HISTORY,
         (
-            Parameter(
-                "T_over_Ea",
-                "the loads T/(E a) at the ends of the steps, either sign",
-                many="several",
-                metavar="T",
-                group=_LOADS,
-            ),
-            Parameter(
-                "T_over_muF",
-                "the loads T/(mu F), either sign (Coulomb)",
-                many="several",
-                metavar="T",
-                group=_LOADS,
-            ),
-            Parameter(
-                "tangential_load",
-                "the loads T [N/m] (SI inputs)",
-                many="several",
-                unit="N/m",
-                metavar="T",
-                group=_LOADS,
-            ),
+            "the loads T/(E a) at the ends of the steps, either sign",
+            "the loads T/(mu F), either sign (Coulomb)",
+            "the loads T [N/m] (SI inputs)",
         ),
-        _cmd_history,
     ),
 }

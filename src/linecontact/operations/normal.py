@@ -14,6 +14,7 @@ from ..normal import NormalContact, contact_for_load, load_curve, normal_contact
 from ..output import Table
 from ._common import (
     MAX_POINTS,
+    flags,
     group_parameters,
     groups,
     half_widths,
@@ -303,16 +304,7 @@ def _check_lj_end(F_max: float | None, rho: float, s: float) -> None:
 
 
 def _cmd_curve_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> Table:
-    given = [
-        flag
-        for flag, v in (
-            ("--a-max-over-R", args.a_max_over_R),
-            ("--a-max", args.a_max),
-            ("--num", args.num),
-            ("--num-noncontact", args.num_noncontact),
-        )
-        if v is not None
-    ]
+    given = flags(args, "a_max_over_R", "a_max", "num", "num_noncontact")
     if given:
         raise ValueError(
             f"{', '.join(given)} {'applies' if len(given) == 1 else 'apply'} to --law dugdale: "

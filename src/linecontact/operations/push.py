@@ -22,6 +22,7 @@ from ._common import (
     GROUPS_GROUP,
     SI_GROUP,
     cylinder,
+    flags,
     si_given,
     si_inputs,
     si_parameters,
@@ -57,17 +58,9 @@ def _cmd_push(args: Inputs) -> Table:
         )
     cyl = None
     if not si:
-        missing = [
-            f
-            for f, v in (
-                ("--R-over-h2", args.R_over_h2),
-                ("--h1-over-h2", args.h1_over_h2),
-                ("--sigma0-over-E", args.sigma0_over_E),
-                ("--tau0-over-E", args.tau0_over_E),
-                ("--H-over-R", args.H_over_R),
-            )
-            if v is None
-        ]
+        missing = flags(
+            args, "R_over_h2", "h1_over_h2", "sigma0_over_E", "tau0_over_E", "H_over_R", given=False
+        )
         if missing:
             raise ValueError(f"give {', '.join(missing)} (or SI inputs with --radius)")
         rho, r, s, tau = args.R_over_h2, args.h1_over_h2, args.sigma0_over_E, args.tau0_over_E
