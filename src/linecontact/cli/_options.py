@@ -20,7 +20,6 @@ from ..operations._common import (  # noqa: F401 - the subcommands' names for th
     MAX_POINTS,
     SI_KEYS,
     _check_lennard_jones_groups,
-    _positive,
     _presets,
     _work_flag,
     check_widths,

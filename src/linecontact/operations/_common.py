@@ -154,6 +154,28 @@ def si_inputs(range_flag: str = "--h") -> tuple[tuple[Parameter, ...], tuple[Ent
     return params, entries
 
 
+def sliding_parameters(
+    groups: tuple[str, str, str, str], si: tuple[str, str]
+) -> tuple[tuple[Parameter, ...], tuple[Parameter, ...]]:
+    """The inputs of the sliding contact (``slide``, ``push``), with their help.
+
+    Its groups, R/h2, h1/h2, sigma0/E and tau0/E (``groups``, their help); and its SI inputs
+    beside :func:`si_inputs`, the receding range h1 [m] and the friction stress tau0 [Pa]
+    (``si``).
+    """
+    names = ("R_over_h2", "h1_over_h2", "sigma0_over_E", "tau0_over_E")
+    return (
+        tuple(
+            Parameter(name, help, metavar=metavar, group=GROUPS_GROUP)
+            for name, help, metavar in zip(names, groups, ("R/h2", "H", "S", "T"), strict=True)
+        ),
+        (
+            Parameter("h1", si[0], unit="m", group=SI_GROUP),
+            Parameter("tau0", si[1], unit="Pa", metavar="T", group=SI_GROUP),
+        ),
+    )
+
+
 def width_parameters(load_name: str, load_help: str, group: str) -> tuple[Parameter, ...]:
     """The inputs read by :func:`half_widths`: widths or loads, nondimensional or SI."""
     return (
@@ -212,7 +234,8 @@ SI_KEYS = (
 )
 
 
-def _positive(flag: str, value: float | None) -> None:
+def positive(flag: str, value: float | None) -> None:
+    """``value`` given as ``flag`` a finite number > 0, or not given (ParameterError)."""
     if value is not None and not (math.isfinite(value) and value > 0):
         raise ParameterError(flag, f"{flag} must be a finite number > 0, got {value!r}")
 
@@ -270,7 +293,7 @@ def _cylinder(args: Any, range_flag: str) -> Cylinder:
         )
     if (args.work_of_adhesion is None) != (args.z0 is None):
         raise ValueError(f"give both {work} and --z0")
-    _positive("--length", args.length)
+    positive("--length", args.length)
     adh = dict(
         cohesive_stress=args.sigma0,
         adhesion_range=args.h,

@@ -20,10 +20,9 @@ from typing import Any
 import numpy as np
 
 from .. import inverse as inv
-from ..errors import ParameterError
 from ..measurements import per_length
 from ..output import Table
-from ._common import flags, material_parameters
+from ._common import flags, material_parameters, positive
 from ._declare import Entry, Inputs, Operation, Parameter
 from ._fit_common import (
     _ESTIMATE,
@@ -78,10 +77,7 @@ def _cmd_adhesion(args: Inputs) -> Table:
         )
     E, mat = _modulus(args)
     params: dict[str, Any] = dict(mat)
-    if args.length is not None and not (math.isfinite(args.length) and args.length > 0):
-        raise ParameterError(
-            "--length", f"--length must be a finite number > 0, got {args.length!r}"
-        )
+    positive("--length", args.length)
     if args.data is not None:
         if args.pull_off_force is not None or args.radius is not None:
             raise ValueError(

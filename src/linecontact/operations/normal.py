@@ -281,6 +281,9 @@ def _cmd_pulloff(args: Inputs) -> Table:
 # --------------------------------------------------------------------------------------------
 # curve
 
+#: The points of a Dugdale load curve on each branch (the parameter, the branch, the default).
+_POINTS = {"num": ("contact", 200), "num_noncontact": ("non-contact", 40)}
+
 
 def _check_lj_end(F_max: float | None, rho: float, s: float) -> None:
     """``--F-max-over-Eh`` within the loads the Lennard-Jones solver is asked for (said so).
@@ -345,7 +348,7 @@ def _cmd_curve_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> T
             f"{po.F_pulloff_over_Eh:.6g} (error estimate {po.error_estimate_over_Eh:.2g})"
         ),
         si,
-        {"error_estimate": "error_estimate_N_per_m"},
+        {"load": "F_N_per_m", "error_estimate": "error_estimate_N_per_m"},
     )
 
 
@@ -361,13 +364,12 @@ def _curve_table(
 ) -> Table:
     """The records of a load curve ``c``, its pull-off marked by ``is_po``.
 
-    With SI inputs (``si``, the curve in SI units) its gap, width and load, the fields
-    ``names`` besides, and their totals.
+    With SI inputs (``si``, the curve in SI units) its gap and width, then the fields
+    ``names`` (in that order, the load among them), and the load's total.
     """
     extra: dict[str, Any] = {"pulloff": is_po}
     if si is not None:
         names = {"central_gap": "central_gap_m", "contact_half_width": "a_m", **names}
-        names["load"] = "F_N_per_m"
         cols, shown = si_shown(args, si, names, {"load": "F_total_N"}, ["a_m", "F_N_per_m"])
         extra.update(cols)
         show += shown
@@ -384,8 +386,9 @@ def _cmd_curve(args: Inputs) -> Table:
             "--F-max-over-Eh and --F-max apply to --law lennard-jones: the Dugdale curve ends "
             "at --a-max-over-R (or --a-max [m])"
         )
-    args.num = 200 if args.num is None else args.num
-    args.num_noncontact = 40 if args.num_noncontact is None else args.num_noncontact
+    for name, (_, default) in _POINTS.items():
+        if args.get(name) is None:
+            setattr(args, name, default)
     for flag, v in (("--num", args.num), ("--num-noncontact", args.num_noncontact)):
         if not 2 <= v <= MAX_POINTS:
             raise ParameterError(flag, f"{flag} must be an integer in [2, {MAX_POINTS}], got {v!r}")
@@ -421,7 +424,7 @@ def _cmd_curve(args: Inputs) -> Table:
             f"pull-off {po.F_pulloff_over_Eh:.6g} ({po.mechanism})"
         ),
         si,
-        {"adhesive_zone_half_width": "c_m"},
+        {"adhesive_zone_half_width": "c_m", "load": "F_N_per_m"},
     )
 
 
@@ -515,19 +518,15 @@ OPERATIONS = {
             Parameter(
                 "a_max", "largest half-width a [m] (SI)", unit="m", metavar="A", group=_SAMPLING
             ),
-            Parameter(
-                "num",
-                "points on the contact branch (default: 200; --law dugdale)",
-                kind="integer",
-                metavar="N",
-                group=_SAMPLING,
-            ),
-            Parameter(
-                "num_noncontact",
-                "points on the non-contact branch (default: 40; --law dugdale)",
-                kind="integer",
-                metavar="N",
-                group=_SAMPLING,
+            *(
+                Parameter(
+                    name,
+                    f"points on the {branch} branch (default: {n}; --law dugdale)",
+                    kind="integer",
+                    metavar="N",
+                    group=_SAMPLING,
+                )
+                for name, (branch, n) in _POINTS.items()
             ),
             Parameter(
                 "F_max_over_Eh",
@@ -550,7 +549,8 @@ OPERATIONS = {
             Entry(("a_max_over_R", "a_max"), "largest half-width a/R, or a [m] (docs/cli.md)"),
             Entry(
                 ("num", "num_noncontact"),
-                "points on the contact, non-contact branch (default: 200, 40)",
+                "points on the contact, non-contact branch (default: "
+                f"{', '.join(str(n) for _, n in _POINTS.values())})",
             ),
             Entry(
                 ("F_max_over_Eh", "F_max"),

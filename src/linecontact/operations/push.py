@@ -23,9 +23,11 @@ from ._common import (
     SI_GROUP,
     cylinder,
     flags,
+    positive,
     si_given,
     si_inputs,
     si_parameters,
+    sliding_parameters,
 )
 from ._declare import Entry, Inputs, Operation, Parameter
 from ._records import records, si_shown
@@ -215,8 +217,7 @@ def _works_to_ranges(args: Inputs) -> None:
         ("--radius", args.radius),
         ("--modulus", args.modulus),
     ):  # each by itself before they are combined (a radius nan: not a bad ratio)
-        if v is not None and not (np.isfinite(v) and v > 0):
-            raise ParameterError(flag, f"{flag} must be a finite number > 0, got {v!r}")
+        positive(flag, v)
     if w2 > w1:
         raise ValueError(
             f"--work-of-adhesion-advancing must be <= --work-of-adhesion-receding (the "
@@ -264,6 +265,15 @@ def _check_receding(args: Inputs) -> None:
 # the declaration
 
 _SI, _SI_ENTRIES = si_inputs(range_flag="--h2")
+_GROUPS, _SLIDING_SI = sliding_parameters(
+    (
+        "radius over the advancing range h2",
+        "receding over advancing range, in [1, 1000] (1: no hysteresis)",
+        "adhesive stress over modulus, >= 0",
+        "friction stress over modulus, > 0",
+    ),
+    ("receding (trailing-edge) adhesion range h1 [m]", "friction stress tau0 [Pa]"),
+)
 _G, _S = GROUPS_GROUP, SI_GROUP
 
 OPERATIONS = {
@@ -278,15 +288,7 @@ OPERATIONS = {
             "--h1 0.6e-9 --tau0 1e6 --height 25e-9 50e-9 100e-9",
         ),
         (
-            Parameter("R_over_h2", "radius over the advancing range h2", metavar="R/h2", group=_G),
-            Parameter(
-                "h1_over_h2",
-                "receding over advancing range, in [1, 1000] (1: no hysteresis)",
-                metavar="H",
-                group=_G,
-            ),
-            Parameter("sigma0_over_E", "adhesive stress over modulus, >= 0", metavar="S", group=_G),
-            Parameter("tau0_over_E", "friction stress over modulus, > 0", metavar="T", group=_G),
+            *_GROUPS,
             Parameter(
                 "F_over_Eh2",
                 "normal load over E h2 (default 0: adhesion alone)",
@@ -308,8 +310,7 @@ OPERATIONS = {
                 group=_G,
             ),
             *_SI,
-            Parameter("h1", "receding (trailing-edge) adhesion range h1 [m]", unit="m", group=_S),
-            Parameter("tau0", "friction stress tau0 [Pa]", unit="Pa", metavar="T", group=_S),
+            *_SLIDING_SI,
             Parameter("load", "normal load [N/m] (default 0)", unit="N/m", metavar="F", group=_S),
             Parameter(
                 "height",

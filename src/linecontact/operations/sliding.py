@@ -18,14 +18,15 @@ from ..errors import ParameterError
 from ..output import Table
 from ..sliding import sliding_contact, sliding_contact_for_load, sliding_pull_off
 from ._common import (
-    GROUPS_GROUP,
-    SI_GROUP,
     cylinder,
+    group_parameters,
     half_widths,
+    positive,
     si_given,
     si_inputs,
     si_loads,
     si_parameters,
+    sliding_parameters,
     width_parameters,
 )
 from ._declare import Entry, Inputs, Operation, Parameter
@@ -68,8 +69,7 @@ def _setup(args: Inputs):
             )
         return args.R_over_h2, args.h1_over_h2, args.sigma0_over_E, args.tau0_over_E, None
     cyl = cylinder(args, range_flag="--h2")
-    if args.h1 is not None and not (np.isfinite(args.h1) and args.h1 > 0):
-        raise ParameterError("--h1", f"--h1 must be a finite number > 0, got {args.h1!r}")
+    positive("--h1", args.h1)
     if args.tau0 is not None and not (np.isfinite(args.tau0) and args.tau0 >= 0):
         raise ParameterError("--tau0", f"--tau0 must be a finite number >= 0, got {args.tau0!r}")
     if args.h1 is not None:
@@ -174,6 +174,18 @@ def _cmd_slide(args: Inputs) -> Table:
 # the declaration
 
 _SI, _SI_ENTRIES = si_inputs(range_flag="--h2")
+_GROUPS, _SLIDING_SI = sliding_parameters(
+    (
+        "radius over the leading-edge adhesion range h2, > 0",
+        "trailing over leading range, > 0 (1: the normal contact)",
+        group_parameters()[1].help,  # sigma0_over_E's
+        "shear strength over E, >= 0: adds the friction force 2 a tau0",
+    ),
+    (
+        "trailing-edge adhesion range h1 [m] (or give --h1-over-h2)",
+        "interface shear strength tau0 [Pa]",
+    ),
+)
 _WIDTHS = "contact half-widths or loads (exactly one)"
 
 OPERATIONS = {
@@ -188,44 +200,9 @@ OPERATIONS = {
             "--load 0.05 --tau0 5e8",
         ),
         (
-            Parameter(
-                "R_over_h2",
-                "radius over the leading-edge adhesion range h2, > 0",
-                metavar="R/h2",
-                group=GROUPS_GROUP,
-            ),
-            Parameter(
-                "h1_over_h2",
-                "trailing over leading range, > 0 (1: the normal contact)",
-                metavar="H",
-                group=GROUPS_GROUP,
-            ),
-            Parameter(
-                "sigma0_over_E",
-                "adhesive stress over composite modulus, >= 0 (0: Hertz)",
-                metavar="S",
-                group=GROUPS_GROUP,
-            ),
-            Parameter(
-                "tau0_over_E",
-                "shear strength over E, >= 0: adds the friction force 2 a tau0",
-                metavar="T",
-                group=GROUPS_GROUP,
-            ),
+            *_GROUPS,
             *_SI,
-            Parameter(
-                "h1",
-                "trailing-edge adhesion range h1 [m] (or give --h1-over-h2)",
-                unit="m",
-                group=SI_GROUP,
-            ),
-            Parameter(
-                "tau0",
-                "interface shear strength tau0 [Pa]",
-                unit="Pa",
-                metavar="T",
-                group=SI_GROUP,
-            ),
+            *_SLIDING_SI,
             *width_parameters(
                 "F_over_Eh2", "normal loads over E h2 (the stable sliding contact)", _WIDTHS
             ),
