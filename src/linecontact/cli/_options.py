@@ -20,7 +20,6 @@ from ..operations._common import (  # noqa: F401 - the subcommands' names for th
     MAX_POINTS,
     SI_KEYS,
     _check_lennard_jones_groups,
-    _positive,
     _presets,
     _work_flag,
     check_widths,
@@ -137,16 +136,15 @@ def deprecated_alias(p: argparse.ArgumentParser, old: str, new: str, g: Any = No
     does; the run prints one ``warning:`` line that names ``new``. Not in the help.
     """
     target = p._option_string_actions[new]
-    kw: dict[str, Any] = {} if target.type is None else {"type": target.type}
+    # the target's own dest, count, choices and metavar (and type, where it has one)
+    kw = {k: getattr(target, k) for k in ("dest", "nargs", "choices", "metavar")}
+    if target.type is not None:
+        kw["type"] = target.type
     (g or p).add_argument(
         old,
         action=_Deprecated,
         target=target,
-        dest=target.dest,
-        nargs=target.nargs,
-        choices=target.choices,
         **kw,
-        metavar=target.metavar,
         default=argparse.SUPPRESS,
         help=argparse.SUPPRESS,
     )

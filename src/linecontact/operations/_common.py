@@ -48,6 +48,29 @@ def group_parameters(group: str = GROUPS_GROUP) -> tuple[Parameter, ...]:
     )
 
 
+def material_parameters(
+    group: str, cylinder: tuple[str, str], substrate: tuple[str, str], presets: tuple[str, str]
+) -> tuple[Parameter, ...]:
+    """``E1 nu1 E2 nu2`` and the two presets, in the section ``group``, with their help.
+
+    ``cylinder`` and ``substrate`` are the help of a body's Young's modulus [Pa] and Poisson
+    ratio; ``presets`` that of ``--cylinder-material`` and ``--substrate-material``.
+    """
+    moduli = tuple(
+        Parameter(name, help, unit=unit, group=group)
+        for name, help, unit in zip(
+            ("E1", "nu1", "E2", "nu2"), (*cylinder, *substrate), ("Pa", "", "Pa", ""), strict=True
+        )
+    )
+    return (
+        *moduli,
+        *(
+            Parameter(name, help, kind="text", metavar="NAME", group=group)
+            for name, help in zip(("cylinder_material", "substrate_material"), presets, strict=True)
+        ),
+    )
+
+
 def si_inputs(range_flag: str = "--h") -> tuple[tuple[Parameter, ...], tuple[Entry, ...]]:
     """The SI inputs: radius, moduli or presets, adhesion, the fibre's length; their entries.
 
@@ -66,24 +89,19 @@ def si_inputs(range_flag: str = "--h") -> tuple[tuple[Parameter, ...], tuple[Ent
             metavar="E",
             group=g,
         ),
-        Parameter("E1", "cylinder's Young's modulus [Pa] (with --nu1 ...)", unit="Pa", group=g),
-        Parameter("nu1", "cylinder's Poisson ratio, in (-1, 0.5]", group=g),
-        Parameter("E2", "substrate's Young's modulus [Pa]", unit="Pa", group=g),
-        Parameter("nu2", "substrate's Poisson ratio, in (-1, 0.5]", group=g),
-        Parameter(
-            "cylinder_material",
-            "cylinder's material preset, instead of --E1 --nu1 (case-insensitive; names: "
-            "`linecontact materials`)",
-            kind="text",
-            metavar="NAME",
-            group=g,
-        ),
-        Parameter(
-            "substrate_material",
-            "substrate's material preset, instead of --E2 --nu2 (names as for --cylinder-material)",
-            kind="text",
-            metavar="NAME",
-            group=g,
+        *material_parameters(
+            g,
+            (
+                "cylinder's Young's modulus [Pa] (with --nu1 ...)",
+                "cylinder's Poisson ratio, in (-1, 0.5]",
+            ),
+            ("substrate's Young's modulus [Pa]", "substrate's Poisson ratio, in (-1, 0.5]"),
+            (
+                "cylinder's material preset, instead of --E1 --nu1 (case-insensitive; names: "
+                "`linecontact materials`)",
+                "substrate's material preset, instead of --E2 --nu2 (names as for "
+                "--cylinder-material)",
+            ),
         ),
         Parameter(
             "sigma0", "adhesive (Dugdale) stress sigma0 [Pa]", unit="Pa", metavar="S", group=g
@@ -134,6 +152,28 @@ def si_inputs(range_flag: str = "--h") -> tuple[tuple[Parameter, ...], tuple[Ent
         ),
     )
     return params, entries
+
+
+def sliding_parameters(
+    groups: tuple[str, str, str, str], si: tuple[str, str]
+) -> tuple[tuple[Parameter, ...], tuple[Parameter, ...]]:
+    """The inputs of the sliding contact (``slide``, ``push``), with their help.
+
+    Its groups, R/h2, h1/h2, sigma0/E and tau0/E (``groups``, their help); and its SI inputs
+    beside :func:`si_inputs`, the receding range h1 [m] and the friction stress tau0 [Pa]
+    (``si``).
+    """
+    names = ("R_over_h2", "h1_over_h2", "sigma0_over_E", "tau0_over_E")
+    return (
+        tuple(
+            Parameter(name, help, metavar=metavar, group=GROUPS_GROUP)
+            for name, help, metavar in zip(names, groups, ("R/h2", "H", "S", "T"), strict=True)
+        ),
+        (
+            Parameter("h1", si[0], unit="m", group=SI_GROUP),
+            Parameter("tau0", si[1], unit="Pa", metavar="T", group=SI_GROUP),
+        ),
+    )
 
 
 def width_parameters(load_name: str, load_help: str, group: str) -> tuple[Parameter, ...]:
@@ -194,7 +234,8 @@ SI_KEYS = (
 )
 
 
-def _positive(flag: str, value: float | None) -> None:
+def positive(flag: str, value: float | None) -> None:
+    """``value`` given as ``flag`` a finite number > 0, or not given (ParameterError)."""
     if value is not None and not (math.isfinite(value) and value > 0):
         raise ParameterError(flag, f"{flag} must be a finite number > 0, got {value!r}")
 
@@ -202,6 +243,16 @@ def _positive(flag: str, value: float | None) -> None:
 def _work_flag(range_flag: str) -> str:
     """The flag of the one work of adhesion (with ``--z0``): advancing where h2 is the range."""
     return "--work-of-adhesion-advancing" if range_flag == "--h2" else "--work-of-adhesion"
+
+
+def flag(name: str) -> str:
+    """The command line's flag of the parameter ``name``: ``--`` and ``-`` for ``_``."""
+    return "--" + name.replace("_", "-")
+
+
+def flags(args: Any, *names: str, given: bool = True) -> list[str]:
+    """The flags of those of ``names`` given in ``args`` (``given=False``: not given)."""
+    return [flag(n) for n in names if (getattr(args, n) is not None) == given]
 
 
 def si_given(args: Any, extra: Sequence[str] = ()) -> bool:
@@ -242,7 +293,7 @@ def _cylinder(args: Any, range_flag: str) -> Cylinder:
         )
     if (args.work_of_adhesion is None) != (args.z0 is None):
         raise ValueError(f"give both {work} and --z0")
-    _positive("--length", args.length)
+    positive("--length", args.length)
     adh = dict(
         cohesive_stress=args.sigma0,
         adhesion_range=args.h,
@@ -383,7 +434,7 @@ def half_widths(args: Any, cyl: Cylinder | None, load_attr: str):
 
     Exactly one of those, ``--<load_attr>`` or ``--load`` [N/m] must be given.
     """
-    flag = "--" + load_attr.replace("_", "-")
+    load_flag = flag(load_attr)
     given = [
         args.a_over_R is not None,
         args.a_over_R_range is not None,
@@ -393,7 +444,7 @@ def half_widths(args: Any, cyl: Cylinder | None, load_attr: str):
     ]
     if sum(given) != 1:
         raise ValueError(
-            f"give exactly one of --a-over-R, --a-over-R-range, {flag}, --half-width [m] or "
+            f"give exactly one of --a-over-R, --a-over-R-range, {load_flag}, --half-width [m] or "
             "--load [N/m]"
         )
     if (args.a is not None or args.load is not None) and cyl is None:
@@ -402,7 +453,8 @@ def half_widths(args: Any, cyl: Cylinder | None, load_attr: str):
         )
     if cyl is not None and (given[0] or given[1] or given[2]):
         raise ValueError(
-            f"--a-over-R, --a-over-R-range and {flag} are nondimensional: with SI inputs give "
+            f"--a-over-R, --a-over-R-range and {load_flag} are nondimensional: with SI inputs "
+            "give "
             "--half-width [m] or --load [N/m]"
         )
     if args.a_over_R_range is not None:

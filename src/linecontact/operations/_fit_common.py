@@ -16,7 +16,7 @@ from ..errors import ParameterError
 from ..measurements import read_measurements
 from ..output import Table
 from ._common import cylinder as _cylinder
-from ._common import si_parameters
+from ._common import positive, si_parameters
 
 
 def _sd(text: str) -> tuple[float, bool]:
@@ -57,10 +57,7 @@ def _modulus(args: Any) -> tuple[float, dict[str, Any]]:
             raise ValueError(
                 "give either --modulus or the materials (--E1 ... or presets), not both"
             )
-        if not (math.isfinite(args.modulus) and args.modulus > 0):
-            raise ParameterError(
-                "--modulus", f"--modulus must be a finite number > 0, got {args.modulus!r}"
-            )
+        positive("--modulus", args.modulus)
         return args.modulus, {"modulus_Pa": args.modulus}
     # the SI layer's reader of the materials and presets (a radius and a range of its own,
     # unused: the radius given is checked where it is used, with the adhesion given)

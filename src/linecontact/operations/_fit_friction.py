@@ -12,8 +12,8 @@ from typing import Any
 import numpy as np
 
 from .. import inverse as inv
-from ..errors import ParameterError
 from ..output import Table
+from ._common import flags, positive
 from ._fit_common import (
     _ESTIMATE,
     EXACT,
@@ -45,25 +45,12 @@ def _friction_from_width(args: Any) -> Table:
         raise ValueError(
             f"--friction-force must be a finite number > 0, got {args.friction_force!r}"
         )
-    if not (math.isfinite(args.half_width) and args.half_width > 0):
-        raise ParameterError(
-            "--half-width", f"--half-width must be a finite number > 0, got {args.half_width!r}"
-        )
+    positive("--half-width", args.half_width)
     if args.receding_work_of_adhesion is not None and args.work_of_adhesion is None:
         raise ValueError("--work-of-adhesion-receding needs the advancing --work-of-adhesion")
-    model = [
-        f
-        for f, v in (
-            ("--radius", args.radius),
-            ("--modulus", args.modulus),
-            ("--E1", args.E1),
-            ("--E2", args.E2),
-            ("--z0", args.z0),
-            ("--cylinder-material", args.cylinder_material),
-            ("--substrate-material", args.substrate_material),
-        )
-        if v is not None
-    ] + (["--contact"] if args.contact != "maugis-dugdale" else [])
+    model = flags(
+        args, "radius", "modulus", "E1", "E2", "z0", "cylinder_material", "substrate_material"
+    ) + (["--contact"] if args.contact != "maugis-dugdale" else [])
     if model:
         raise ValueError(
             f"{', '.join(model)}: not used with --half-width (a measured width needs no contact "
@@ -141,10 +128,7 @@ def run_friction(args: Any) -> Table:
             "the contact width needs the cylinder: give --radius, --work-of-adhesion and --z0 "
             "(with the modulus or the materials)"
         )
-    if args.length is not None and not (math.isfinite(args.length) and args.length > 0):
-        raise ParameterError(
-            "--length", f"--length must be a finite number > 0, got {args.length!r}"
-        )
+    positive("--length", args.length)
     if args.data is not None:
         if args.friction_force is not None or args.normal_load is not None:
             raise ValueError("give either --data FILE or one measurement (--load, ...)")

@@ -21,9 +21,9 @@ from typing import Any
 import numpy as np
 
 from .. import inverse as inv
-from ..errors import ParameterError
 from ..measurements import per_length
 from ..output import Table
+from ._common import flags, material_parameters, positive
 from ._declare import Entry, Inputs, Operation, Parameter
 from ._fit_common import (
     _ESTIMATE,
@@ -78,10 +78,7 @@ def _cmd_adhesion(args: Inputs) -> Table:
         )
     E, mat = _modulus(args)
     params: dict[str, Any] = dict(mat)
-    if args.length is not None and not (math.isfinite(args.length) and args.length > 0):
-        raise ParameterError(
-            "--length", f"--length must be a finite number > 0, got {args.length!r}"
-        )
+    positive("--length", args.length)
     if args.data is not None:
         if args.pull_off_force is not None or args.radius is not None:
             raise ValueError(
@@ -89,18 +86,15 @@ def _cmd_adhesion(args: Inputs) -> Table:
             )
         if args.radius_sd is not None:
             raise ValueError("--radius-sd is for one measurement; with --data the radii are exact")
-        single = [
-            "--" + k.replace("_", "-")
-            for k in (
-                "pull_off_force_sd",
-                "pull_off_force_total",
-                "pull_off_force_total_sd",
-                "half_width",
-                "half_width_sd",
-                "normal_load",
-            )
-            if getattr(args, k) is not None
-        ]
+        single = flags(
+            args,
+            "pull_off_force_sd",
+            "pull_off_force_total",
+            "pull_off_force_total_sd",
+            "half_width",
+            "half_width_sd",
+            "normal_load",
+        )
         if single:
             raise ValueError(
                 f"{', '.join(single)}: for one measurement, not with --data (the uncertainties "
@@ -296,10 +290,32 @@ _ONE = "measurements: --data, or one (instead)"
 _SI = "the cylinder and the materials (SI)"
 
 
-def _parameters(name: str) -> tuple[Parameter, ...]:
-    def sd(of: str, help: str, group: str) -> Parameter:
-        return Parameter(f"{of}_sd", help, kind="text", metavar="SD", group=group)
+def _measured(p: Parameter, its: bool = False) -> tuple[Parameter, Parameter]:
+    """A measured value and its standard uncertainty ``<name>_sd`` ([its unit] or N%)."""
+    help = f"{'its standard uncertainty ' if its else ''}[{p.unit}] or N%%"
+    return p, Parameter(f"{p.name}_sd", help, kind="text", metavar="SD", group=p.group)
 
+
+def _normal_load(help: str) -> Parameter:
+    """The normal load [N/m] of one measurement (``--load``)."""
+    return Parameter(
+        "normal_load",
+        help,
+        unit="N/m",
+        metavar="F",
+        flag="--load",
+        aliases=("--normal-load",),
+        group=_ONE,
+    )
+
+
+def _half_width(help: str) -> tuple[Parameter, Parameter]:
+    """A measured contact half-width [m] and its uncertainty."""
+    return _measured(Parameter("half_width", help, unit="m", metavar="A", group=_ONE))
+
+
+def _parameters(name: str) -> tuple[Parameter, ...]:
+    preset = "a preset (linecontact materials)"
     common = (
         Parameter(
             "data",
@@ -308,66 +324,43 @@ def _parameters(name: str) -> tuple[Parameter, ...]:
             metavar="FILE",
             group=_ONE,
         ),
-        Parameter("radius", "radius [m]", unit="m", metavar="R", group=_SI),
-        sd("radius", "its standard uncertainty [m] or N%%", _SI),
-        Parameter("modulus", "composite modulus [Pa]", unit="Pa", metavar="E", group=_SI),
-        sd("modulus", "its standard uncertainty [Pa] or N%%", _SI),
-        Parameter("E1", "cylinder's Young's modulus [Pa]", unit="Pa", group=_SI),
-        Parameter("nu1", "cylinder's Poisson ratio", group=_SI),
-        Parameter("E2", "substrate's Young's modulus [Pa]", unit="Pa", group=_SI),
-        Parameter("nu2", "substrate's Poisson ratio", group=_SI),
-        Parameter(
-            "cylinder_material",
-            "a preset (linecontact materials)",
-            kind="text",
-            metavar="NAME",
-            group=_SI,
+        *_measured(Parameter("radius", "radius [m]", unit="m", metavar="R", group=_SI), its=True),
+        *_measured(
+            Parameter("modulus", "composite modulus [Pa]", unit="Pa", metavar="E", group=_SI),
+            its=True,
         ),
-        Parameter(
-            "substrate_material",
-            "a preset (linecontact materials)",
-            kind="text",
-            metavar="NAME",
-            group=_SI,
+        *material_parameters(
+            _SI,
+            ("cylinder's Young's modulus [Pa]", "cylinder's Poisson ratio"),
+            ("substrate's Young's modulus [Pa]", "substrate's Poisson ratio"),
+            (preset, preset),
         ),
-        Parameter("z0", "range of adhesion z0 [m] (fixed if given)", unit="m", group=_SI),
-        sd("z0", "its standard uncertainty [m] or N%%", _SI),
+        *_measured(
+            Parameter("z0", "range of adhesion z0 [m] (fixed if given)", unit="m", group=_SI),
+            its=True,
+        ),
         Parameter(
             "length", "fibre length [m], for forces given in N", unit="m", metavar="L", group=_SI
         ),
     )
     if name == "fit-adhesion":
+        force = "pull-off force [N/m], < 0"
         own: tuple[Parameter, ...] = (
-            Parameter(
-                "pull_off_force", "pull-off force [N/m], < 0", unit="N/m", metavar="F", group=_ONE
+            *_measured(Parameter("pull_off_force", force, unit="N/m", metavar="F", group=_ONE)),
+            *_measured(
+                Parameter(
+                    "pull_off_force_total",
+                    "pull-off force of the whole fibre [N], < 0, with --length",
+                    unit="N",
+                    metavar="F",
+                    group=_ONE,
+                )
             ),
-            sd("pull_off_force", "[N/m] or N%%", _ONE),
-            Parameter(
-                "pull_off_force_total",
-                "pull-off force of the whole fibre [N], < 0, with --length",
-                unit="N",
-                metavar="F",
-                group=_ONE,
-            ),
-            sd("pull_off_force_total", "[N] or N%%", _ONE),
-            Parameter(
-                "half_width",
+            *_half_width(
                 "a measured contact half-width [m] at --load (instead of a pull-off force): w "
-                "from the width",
-                unit="m",
-                metavar="A",
-                group=_ONE,
+                "from the width"
             ),
-            sd("half_width", "[m] or N%%", _ONE),
-            Parameter(
-                "normal_load",
-                "normal load [N/m] of --half-width",
-                unit="N/m",
-                metavar="F",
-                flag="--load",
-                aliases=("--normal-load",),
-                group=_ONE,
-            ),
+            _normal_load("normal load [N/m] of --half-width"),
             Parameter(
                 "bootstrap",
                 "bootstrap refits of a joint fit, or auto (default: %(default)s)",
@@ -384,8 +377,9 @@ def _parameters(name: str) -> tuple[Parameter, ...]:
         )
     else:
         own = (
-            Parameter("work_of_adhesion", "w [J/m^2]", unit="J/m^2", metavar="W", group=_SI),
-            sd("work_of_adhesion", "[J/m^2] or N%%", _SI),
+            *_measured(
+                Parameter("work_of_adhesion", "w [J/m^2]", unit="J/m^2", metavar="W", group=_SI)
+            ),
             Parameter(
                 "receding_work_of_adhesion",
                 "receding w [J/m^2]: the steady-sliding contact and dw = w1 - w",
@@ -395,25 +389,13 @@ def _parameters(name: str) -> tuple[Parameter, ...]:
                 aliases=("--receding-work-of-adhesion",),
                 group=_SI,
             ),
-            Parameter(
-                "normal_load",
-                "normal load [N/m]",
-                unit="N/m",
-                metavar="F",
-                flag="--load",
-                aliases=("--normal-load",),
-                group=_ONE,
+            _normal_load("normal load [N/m]"),
+            *_measured(
+                Parameter("friction_force", "[N/m], > 0", unit="N/m", metavar="f", group=_ONE)
             ),
-            Parameter("friction_force", "[N/m], > 0", unit="N/m", metavar="f", group=_ONE),
-            sd("friction_force", "[N/m] or N%%", _ONE),
-            Parameter(
-                "half_width",
-                "a measured contact half-width [m]: tau0 = (f - dw)/(2 A), no contact model",
-                unit="m",
-                metavar="A",
-                group=_ONE,
+            *_half_width(
+                "a measured contact half-width [m]: tau0 = (f - dw)/(2 A), no contact model"
             ),
-            sd("half_width", "[m] or N%%", _ONE),
             Parameter(
                 "contact",
                 "contact model of the width (default: %(default)s)",

@@ -11,6 +11,8 @@ law and the contact are in ``parameters``.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -20,18 +22,20 @@ from .. import tangential as tg
 from .._validation import check_array
 from ..cylinder import Cylinder
 from ..domain import check_si
-from ..output import Table, table_from_result
+from ..output import Table
 from ..tangential.history import _T_LIMIT
-from ._common import si_parameters
-from ._declare import Entry, Inputs, Operation, Parameter
+from ._common import flag, si_columns, si_parameters
+from ._declare import Inputs, Operation
+from ._records import records
 from .tangential import (
-    _FRICTION,
-    _FRICTION_ENTRIES,
-    _SI_ENTRIES,
     _check_friction,
+    _friction_nd,
     _given,
+    _loads,
     _normal_contact,
-    _normal_contact_parameters,
+    _params,
+    _si_friction,
+    tangential_operation,
 )
 
 __all__ = ["OPERATIONS"]
@@ -65,8 +69,8 @@ def _inputs(args: Inputs, nd: str, coulomb_nd: str, si: str):
     coulomb = args.friction == "coulomb"
     _check_friction(args, coulomb, coulomb_nd, nd)
     given = _given(args, nd, coulomb_nd, si)
-    flags = "--" + nd.replace("_", "-"), "--" + coulomb_nd.replace("_", "-")
-    si_flag = "--" + si.replace("_", "-")
+    flags = flag(nd), flag(coulomb_nd)
+    si_flag = flag(si)
     if len(given) != 1:
         raise ValueError(f"give exactly one of {flags[0]}, {flags[1]} (Coulomb) or {si_flag} [N/m]")
     (state,) = given
@@ -89,43 +93,6 @@ def _inputs(args: Inputs, nd: str, coulomb_nd: str, si: str):
             high_inclusive=state != si,
         )
     return coulomb, state, values, A, F_over_Eh, cyl
-
-
-def _friction_nd(args: Inputs, coulomb: bool, A) -> dict[str, Any]:
-    if coulomb:
-        if A is None:
-            raise ValueError(
-                "Coulomb friction needs the Hertz half-width: give --a-over-R (or --R-over-h "
-                "--sigma0-over-E 0 --F-over-Eh, or SI inputs)"
-            )
-        return {}
-    if args.tau0 is not None:
-        raise ValueError(
-            "--tau0 [Pa] is an SI input: give --radius, the materials and --load too, or use "
-            "--tau0-over-E"
-        )
-    if args.tau0_over_E is None:
-        raise ValueError("give the friction stress --tau0-over-E (or --friction coulomb --mu)")
-    return {}
-
-
-def _params(args, coulomb: bool, A, F_over_Eh) -> dict[str, Any]:
-    params: dict[str, Any] = {"friction": "coulomb" if coulomb else "constant"}
-    if A is not None:
-        params["a_over_R"] = float(A)
-    if F_over_Eh is not None:
-        params.update(R_over_h=args.R_over_h, sigma0_over_E=args.sigma0_over_E, F_over_Eh=F_over_Eh)
-    return params
-
-
-def _si_friction(args: Inputs, coulomb: bool, cyl: Cylinder) -> dict[str, Any]:
-    if coulomb:
-        return dict(friction_coefficient=args.mu)
-    if len(_given(args, "tau0", "tau0_over_E")) != 1:
-        raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
-    return dict(
-        friction_stress=args.tau0 if args.tau0 is not None else cyl.in_si(args.tau0_over_E, "E")
-    )
 
 
 def _si_loads(args: Inputs, cyl: Cylinder, state: str, values, coulomb) -> np.ndarray:
@@ -164,72 +131,51 @@ def _si_params(args, cyl, res, fr) -> dict[str, Any]:
     return params
 
 
-def _cmd_cycle(args: Inputs) -> Table:
-    coulomb, state, values, A, F_over_Eh, cyl = _inputs(
-        args, "T_amplitude_over_Ea", "T_amplitude_over_muF", "tangential_amplitude"
-    )
+@dataclass(frozen=True)
+class _Loading:
+    """What differs between ``cycle`` and ``history``: their flags, solver, columns, table."""
+
+    nd: str  # the loads over E a
+    coulomb_nd: str  # over mu F
+    si: str  # in N/m
+    solver: str  # the name of the SI method and of the nondimensional functions (+ _coulomb)
+    columns: dict[str, str]  # the SI fields of the result and their keys
+    total: tuple[str, str]  # the SI field whose total over --length is given, and its key
+    table: Callable[..., Table]
+
+
+def _compute(args: Inputs, how: _Loading) -> Table:
+    coulomb, state, values, A, F_over_Eh, cyl = _inputs(args, how.nd, how.coulomb_nd, how.si)
     if cyl is not None:
         fr = _si_friction(args, coulomb, cyl)
-        amp = _si_loads(args, cyl, state, values, coulomb)
-        res = cyl.cyclic_loss(args.load, amp, **fr, method=args.method)
-        extra: dict[str, Any] = {
-            "T_amplitude_N_per_m": res.amplitude,
-            "W_J_per_m": res.energy_per_cycle,
-            "c_m": res.stick_zone_half_width,
-        }
+        loads = _si_loads(args, cyl, state, values, coulomb)
+        res = getattr(cyl, how.solver)(args.load, loads, **fr, method=args.method)
+        extra: dict[str, Any] = si_columns(res, how.columns)
         if args.length is not None:
-            extra["W_total_J"] = cyl.total(res.energy_per_cycle, args.length)
-        table = _cycle_table(args, res.nondimensional, _si_params(args, cyl, res, fr), extra)
-        return table
+            field, key = how.total
+            extra[key] = cyl.total(getattr(res, field), args.length)
+        return how.table(args, res.nondimensional, _si_params(args, cyl, res, fr), extra)
     _friction_nd(args, coulomb, A)
     if coulomb:
-        Q = values if state == "T_amplitude_over_muF" else values / ((np.pi / 4) * args.mu * A)
-        r: Any = tg.cyclic_loss_coulomb(args.mu, A, Q, method=args.method)
+        Q = values if state == how.coulomb_nd else values / ((np.pi / 4) * args.mu * A)
+        r: Any = getattr(tg, how.solver + "_coulomb")(args.mu, A, Q, method=args.method)
     else:
-        r = tg.cyclic_loss(args.tau0_over_E, values, method=args.method)
-    return _cycle_table(args, r, _params(args, coulomb, A, F_over_Eh), {})
+        r = getattr(tg, how.solver)(args.tau0_over_E, values, method=args.method)
+    return how.table(args, r, _params(args, coulomb, A, F_over_Eh), {})
 
 
 def _cycle_table(args, r, params, extra):
     show = ["T_amplitude_over_Ea", "T_amplitude_over_T_full_slip", "W_over_Ea2", "c_over_a"]
     show += ["state", *extra]
     law = "Coulomb friction" if params["friction"] == "coulomb" else "constant friction stress"
-    return table_from_result(
+    return records(
+        args,
         r,
-        columns=extra,
-        parameters=params,
-        command=args.command_line(),
-        title=f"cyclic tangential loading, {law} ({r.method}): energy dissipated per cycle",
-        show=show,
+        params,
+        extra,
+        f"cyclic tangential loading, {law} ({r.method}): energy dissipated per cycle",
+        show,
     )
-
-
-def _cmd_history(args: Inputs) -> Table:
-    coulomb, state, values, A, F_over_Eh, cyl = _inputs(
-        args, "T_over_Ea", "T_over_muF", "tangential_load"
-    )
-    if cyl is not None:
-        fr = _si_friction(args, coulomb, cyl)
-        T = _si_loads(args, cyl, state, values, coulomb)
-        res = cyl.tangential_history(args.load, T, **fr, method=args.method)
-        extra: dict[str, Any] = {
-            "T_N_per_m": res.tangential_load,
-            "c_m": res.stick_zone_half_width,
-            "displacement_m": res.displacement,
-            "dissipation_J_per_m": res.dissipation,
-        }
-        if args.length is not None:
-            extra["dissipation_total_J"] = cyl.total(res.dissipation, args.length)
-        h = res.nondimensional
-        table = _history_table(args, h, _si_params(args, cyl, res, fr), extra)
-        return table
-    _friction_nd(args, coulomb, A)
-    if coulomb:
-        Q = values if state == "T_over_muF" else values / ((np.pi / 4) * args.mu * A)
-        h = tg.tangential_history_coulomb(args.mu, A, Q, method=args.method)
-    else:
-        h = tg.tangential_history(args.tau0_over_E, values, method=args.method)
-    return _history_table(args, h, _params(args, coulomb, A, F_over_Eh), {})
 
 
 def _history_table(args, h, params, extra):
@@ -239,14 +185,44 @@ def _history_table(args, h, params, extra):
     show = ["step", "T_over_Ea", "T_over_T_full_slip", "state", "c_over_a", "slip_direction"]
     show += ["memory", "displacement_over_a", "dissipation_over_Ea2", *extra]
     law = "Coulomb friction" if params["friction"] == "coulomb" else "constant friction stress"
-    return table_from_result(
-        h,
-        columns=cols,
-        parameters=params,
-        command=args.command_line(),
-        title=f"tangential load history, {law} ({h.method})",
-        show=show,
-    )
+    return records(args, h, params, cols, f"tangential load history, {law} ({h.method})", show)
+
+
+_CYCLE = _Loading(
+    "T_amplitude_over_Ea",
+    "T_amplitude_over_muF",
+    "tangential_amplitude",
+    "cyclic_loss",
+    {
+        "amplitude": "T_amplitude_N_per_m",
+        "energy_per_cycle": "W_J_per_m",
+        "stick_zone_half_width": "c_m",
+    },
+    ("energy_per_cycle", "W_total_J"),
+    _cycle_table,
+)
+_HISTORY = _Loading(
+    "T_over_Ea",
+    "T_over_muF",
+    "tangential_load",
+    "tangential_history",
+    {
+        "tangential_load": "T_N_per_m",
+        "stick_zone_half_width": "c_m",
+        "displacement": "displacement_m",
+        "dissipation": "dissipation_J_per_m",
+    },
+    ("dissipation", "dissipation_total_J"),
+    _history_table,
+)
+
+
+def _cmd_cycle(args: Inputs) -> Table:
+    return _compute(args, _CYCLE)
+
+
+def _cmd_history(args: Inputs) -> Table:
+    return _compute(args, _HISTORY)
 
 
 # --------------------------------------------------------------------------------------------
@@ -255,30 +231,16 @@ def _history_table(args, h, params, extra):
 _LOADS = "tangential loads (exactly one)"
 
 
-def _operation(name: str, summary: str, loads: tuple[Parameter, ...], compute: Any) -> Operation:
-    return Operation(
+def _operation(name: str, summary: str, how: _Loading, helps: tuple[str, str, str]) -> Operation:
+    metavars = ("A", "Q", "T") if name == "cycle" else ("T", "T", "T")
+    loads = _loads(_LOADS, *zip((how.nd, how.coulomb_nd, how.si), helps, metavars, strict=True))
+    return tangential_operation(
         name,
         summary,
-        _DESCRIPTION[name],
-        tuple(_EXAMPLES[name]),
-        (
-            *_FRICTION,
-            *loads,
-            *_normal_contact_parameters(),
-            Parameter(
-                "method",
-                "Masing rules, or a stepwise check",
-                kind="text",
-                choices=("closed-form", "incremental"),
-                default="closed-form",
-            ),
-        ),
-        compute,
-        entries=(
-            *_FRICTION_ENTRIES,
-            *_SI_ENTRIES,
-            Entry(("F_over_Eh", "load"), "normal load F/(E h), or F [N/m] (SI)"),
-        ),
+        (_DESCRIPTION[name], _EXAMPLES[name]),
+        loads,
+        ("Masing rules, or a stepwise check", ("closed-form", "incremental")),
+        _cmd_cycle if name == "cycle" else _cmd_history,
         rows=tuple(p.name for p in loads) if name == "cycle" else (),
     )
 
@@ -287,59 +249,21 @@ OPERATIONS = {
     "cycle": _operation(
         "cycle",
         "cyclic tangential loading: energy dissipated per cycle, stick zone",
+        _CYCLE,
         (
-            Parameter(
-                "T_amplitude_over_Ea",
-                "amplitude T*/(E a), > 0",
-                many="several",
-                metavar="A",
-                group=_LOADS,
-            ),
-            Parameter(
-                "T_amplitude_over_muF",
-                "amplitude T*/(mu F), > 0 (Coulomb)",
-                many="several",
-                metavar="Q",
-                group=_LOADS,
-            ),
-            Parameter(
-                "tangential_amplitude",
-                "amplitude T* [N/m] (SI inputs)",
-                many="several",
-                unit="N/m",
-                metavar="T",
-                group=_LOADS,
-            ),
+            "amplitude T*/(E a), > 0",
+            "amplitude T*/(mu F), > 0 (Coulomb)",
+            "amplitude T* [N/m] (SI inputs)",
         ),
-        _cmd_cycle,
     ),
     "history": _operation(
         "history",
         "a tangential load history with memory: zones, slip, energy per step",
+        _HISTORY,
         (
-            Parameter(
-                "T_over_Ea",
-                "the loads T/(E a) at the ends of the steps, either sign",
-                many="several",
-                metavar="T",
-                group=_LOADS,
-            ),
-            Parameter(
-                "T_over_muF",
-                "the loads T/(mu F), either sign (Coulomb)",
-                many="several",
-                metavar="T",
-                group=_LOADS,
-            ),
-            Parameter(
-                "tangential_load",
-                "the loads T [N/m] (SI inputs)",
-                many="several",
-                unit="N/m",
-                metavar="T",
-                group=_LOADS,
-            ),
+            "the loads T/(E a) at the ends of the steps, either sign",
+            "the loads T/(mu F), either sign (Coulomb)",
+            "the loads T [N/m] (SI inputs)",
         ),
-        _cmd_history,
     ),
 }

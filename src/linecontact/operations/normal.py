@@ -11,20 +11,20 @@ from ..cylinder import Cylinder, _si_load_curve
 from ..errors import ParameterError
 from ..laws import lennard_jones as _lj
 from ..normal import NormalContact, contact_for_load, load_curve, normal_contact, pull_off
-from ..output import Table, table_from_result
+from ..output import Table
 from ._common import (
     MAX_POINTS,
+    flags,
     group_parameters,
     groups,
     half_widths,
-    null_missing,
-    si_columns,
     si_inputs,
     si_loads,
     si_parameters,
     width_parameters,
 )
 from ._declare import Entry, Inputs, Operation, Parameter
+from ._records import convergence, records, si_shown
 
 __all__ = ["OPERATIONS"]
 
@@ -42,6 +42,14 @@ def _parameters(args, rho: float, s: float, cyl: Cylinder | None) -> dict[str, A
     params["maugis_parameter"] = maugis_parameter(rho, s)
     if cyl is not None:
         params.update(si_parameters(args, cyl))
+    return params
+
+
+def _lj_parameters(args, rho: float, s: float, cyl: Cylinder | None) -> dict[str, Any]:
+    """The parameters under the Lennard-Jones law (no kappa: the Dugdale law's)."""
+    params = _parameters(args, rho, s, cyl)
+    params.pop("kappa")
+    params["law"] = "lennard-jones"
     return params
 
 
@@ -66,15 +74,7 @@ def _cmd_normal(args: Inputs) -> Table:
         else:  # A in m
             c = cyl.contact(contact_half_width=A, method=args.method, on_failure="report")
             r = c.nondimensional
-        ok = np.asarray(r.converged, bool).reshape(-1)
-        state = np.where(ok, "contact", "not-converged")
-        reason = np.full(ok.shape, None, dtype=object)
-        A_over_R = np.reshape(r.a_over_R, -1)
-        for i in np.flatnonzero(~ok):
-            reason[i] = (
-                f"the {args.method} solver did not converge at a_over_R={float(A_over_R[i])!r} "
-                f"(error estimate {float(np.reshape(r.error_estimate, -1)[i]):.3g})"
-            )
+        state, reason = convergence(r, args.method, estimate=True)
         given = "a_over_R"
     else:
         if args.method != "closed-form":
@@ -126,33 +126,26 @@ def _cmd_normal_lj(args: Inputs, A, rho: float, s: float, cyl: Cylinder | None) 
             f"{_force(cyl, po.F_pulloff_over_Eh)} under the Lennard-Jones law (the "
             "contact has pulled off)"
         )
-    params = _parameters(args, rho, s, cyl)
-    params.pop("kappa")
-    params["law"] = "lennard-jones"
+    params = _lj_parameters(args, rho, s, cyl)
     extra: dict[str, Any] = {}
     show = ["a_over_R", "central_gap_over_h", "F_over_Eh", "error_estimate_over_Eh"]
     if cyl is not None:
         names = {"contact_half_width": "a_m", "central_gap": "central_gap_m"}
         names.update(load="F_N_per_m", error_estimate="error_estimate_N_per_m")
-        extra.update(si_columns(c, names, totals={"load": "F_total_N"}, length=args.length))
-        show += ["a_m", "F_N_per_m"]
-        if args.length is not None:
-            show.append("F_total_N")
-    extra.update(state=state, reason=reason)
-    if np.any(state != "contact"):
-        show.append("state")
-    table = table_from_result(
+        cols, shown = si_shown(args, c, names, {"load": "F_total_N"}, ["a_m", "F_N_per_m"])
+        extra.update(cols)
+        show += shown
+    return records(
+        args,
         r,
-        columns=extra,
-        drop=("state",),
-        parameters=params,
-        command=args.command_line(),
-        title="contact for a load under the Lennard-Jones law (matched to the Dugdale step: "
+        params,
+        extra,
+        "contact for a load under the Lennard-Jones law (matched to the Dugdale step: "
         "same w, same peak tension), compressive load positive",
-        show=show,
+        show,
+        contact=(state, reason, "F_over_Eh"),
+        drop=("state",),
     )
-    table = null_missing(table, state != "contact", keep=("F_over_Eh", "state", "reason"))
-    return table
 
 
 def _load_reasons(F, state, rho, s, branch, cyl) -> np.ndarray:
@@ -185,13 +178,9 @@ def _normal_table(args, r: NormalContact, c, rho, s, cyl, state, reason, given) 
     if cyl is not None:
         names = {"contact_half_width": "a_m", "adhesive_zone_half_width": "c_m"}
         names["load"] = "F_N_per_m"
-        extra.update(si_columns(c, names, totals={"load": "F_total_N"}, length=args.length))
-        show += ["a_m", "c_m", "F_N_per_m"]
-        if args.length is not None:
-            show.append("F_total_N")
-    extra.update(state=state, reason=reason)
-    if np.any(state != "contact"):
-        show.append("state")
+        cols, shown = si_shown(args, c, names, {"load": "F_total_N"}, ["a_m", "c_m", "F_N_per_m"])
+        extra.update(cols)
+        show += shown
     # the load is the difference of the Hertz and the adhesive terms: round-off is relative
     # to them, not to the load
     a = np.asarray(r.a_over_R, float)
@@ -203,17 +192,17 @@ def _normal_table(args, r: NormalContact, c, rho, s, cyl, state, reason, given) 
         scales["F_N_per_m"] = cyl.in_si(terms, "Eh")
         if args.length is not None:
             scales["F_total_N"] = cyl.total(scales["F_N_per_m"], args.length)
-    table = table_from_result(
+    return records(
+        args,
         r,
-        columns=extra,
+        params,
+        extra,
+        f"normal contact ({r.method}), compressive load positive",
+        show,
+        contact=(state, reason, given),
         drop=("state",),
-        parameters=params,
-        command=args.command_line(),
-        title=f"normal contact ({r.method}), compressive load positive",
         scales=scales,
-        show=show,
     )
-    return null_missing(table, state != "contact", keep=(given, "state", "reason"))
 
 
 # --------------------------------------------------------------------------------------------
@@ -223,9 +212,7 @@ def _normal_table(args, r: NormalContact, c, rho, s, cyl, state, reason, given) 
 def _cmd_pulloff_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> Table:
     si = None if cyl is None else cyl.pull_off()
     p = _lj.pull_off(rho, s) if si is None else si.nondimensional
-    params = _parameters(args, rho, s, cyl)
-    params.pop("kappa")
-    params["law"] = "lennard-jones"
+    params = _lj_parameters(args, rho, s, cyl)
     extra: dict[str, Any] = {}
     show = [
         "F_pulloff_over_Eh",
@@ -240,18 +227,17 @@ def _cmd_pulloff_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) ->
         names["contact_half_width_at_pull_off"] = "a_at_pulloff_m"
         names["central_gap_at_pull_off"] = "central_gap_at_pulloff_m"
         totals = {"pull_off_force": "F_pulloff_total_N"}
-        extra.update(si_columns(si, names, totals=totals, length=args.length))
-        show += ["F_pulloff_N_per_m"]
-        if args.length is not None:
-            show.append("F_pulloff_total_N")
-    table = table_from_result(
+        cols, shown = si_shown(args, si, names, totals, ["F_pulloff_N_per_m"])
+        extra.update(cols)
+        show += shown
+    table = records(
+        args,
         p,
-        columns=extra,
-        parameters=params,
-        command=args.command_line(),
-        title="pull-off under the Lennard-Jones law (matched to the Dugdale step: same w, "
+        params,
+        extra,
+        "pull-off under the Lennard-Jones law (matched to the Dugdale step: same w, "
         "same peak tension)",
-        show=show,
+        show,
     )
     return table
 
@@ -272,29 +258,31 @@ def _cmd_pulloff(args: Inputs) -> Table:
         names["contact_half_width_at_pull_off"] = "a_at_pulloff_m"
         names["zero_width_force"] = "F_zero_width_N_per_m"
         totals = {"pull_off_force": "F_pulloff_total_N"}
-        extra.update(si_columns(si, names, totals=totals, length=args.length))
-        show += ["F_pulloff_N_per_m", "a_at_pulloff_m"]
-        if args.length is not None:
-            show.append("F_pulloff_total_N")
+        cols, shown = si_shown(args, si, names, totals, ["F_pulloff_N_per_m", "a_at_pulloff_m"])
+        extra.update(cols)
+        show += shown
     # a width below 1e-12 R (a zero-width pull-off's, 1e-24 R and less) prints as 0 in a
     # table, as round-off does; JSON and CSV keep the number
     scales = {"a_over_R_at_pulloff": 1.0}
     if cyl is not None:
         scales["a_at_pulloff_m"] = cyl.radius
-    table = table_from_result(
+    table = records(
+        args,
         p,
-        columns=extra,
-        parameters=params,
-        command=args.command_line(),
-        title="pull-off under load control (the most tensile load a contact carries)",
+        params,
+        extra,
+        "pull-off under load control (the most tensile load a contact carries)",
+        show,
         scales=scales,
-        show=show,
     )
     return table
 
 
 # --------------------------------------------------------------------------------------------
 # curve
+
+#: The points of a Dugdale load curve on each branch (the parameter, the branch, the default).
+_POINTS = {"num": ("contact", 200), "num_noncontact": ("non-contact", 40)}
 
 
 def _check_lj_end(F_max: float | None, rho: float, s: float) -> None:
@@ -319,16 +307,7 @@ def _check_lj_end(F_max: float | None, rho: float, s: float) -> None:
 
 
 def _cmd_curve_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> Table:
-    given = [
-        flag
-        for flag, v in (
-            ("--a-max-over-R", args.a_max_over_R),
-            ("--a-max", args.a_max),
-            ("--num", args.num),
-            ("--num-noncontact", args.num_noncontact),
-        )
-        if v is not None
-    ]
+    given = flags(args, "a_max_over_R", "a_max", "num", "num_noncontact")
     if given:
         raise ValueError(
             f"{', '.join(given)} {'applies' if len(given) == 1 else 'apply'} to --law dugdale: "
@@ -357,45 +336,45 @@ def _cmd_curve_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> T
     po = c.pulloff
     is_po = np.zeros(c.F_over_Eh.shape, bool)
     is_po[int(np.argmin(c.F_over_Eh))] = True  # the sample nearest the refined pull-off
-    params = _parameters(args, rho, s, cyl)
-    params.pop("kappa")
-    params["law"] = "lennard-jones"
-    extra: dict[str, Any] = {"pulloff": is_po}
-    show = [
-        "central_gap_over_h",
-        "a_over_R",
-        "F_over_Eh",
-        "error_estimate_over_Eh",
-        "stable",
-    ]
-    if cyl is not None:
-        names = {"central_gap": "central_gap_m", "contact_half_width": "a_m"}
-        names.update(load="F_N_per_m", error_estimate="error_estimate_N_per_m")
-        _curve_si(args, si, names, extra, show)
-    show.append("pulloff")
-    table = table_from_result(
+    return _curve_table(
+        args,
         c,
-        columns=extra,
-        parameters=params,
-        command=args.command_line(),
-        title=(
+        _lj_parameters(args, rho, s, cyl),
+        is_po,
+        ["central_gap_over_h", "a_over_R", "F_over_Eh", "error_estimate_over_Eh", "stable"],
+        (
             "load curve under the Lennard-Jones law (matched to the Dugdale step: same w, same "
             "peak tension), the central gap decreasing; pull-off "
             f"{po.F_pulloff_over_Eh:.6g} (error estimate {po.error_estimate_over_Eh:.2g})"
         ),
-        show=show,
+        si,
+        {"load": "F_N_per_m", "error_estimate": "error_estimate_N_per_m"},
     )
-    return table
 
 
-def _curve_si(
-    args: Inputs, si: Any, names: dict[str, str], extra: dict[str, Any], show: list[str]
-) -> None:
-    """The SI columns ``names`` of a load curve into ``extra``, their totals, and ``show``'s."""
-    extra.update(si_columns(si, names, totals={"load": "F_total_N"}, length=args.length))
-    show += ["a_m", "F_N_per_m"]
-    if args.length is not None:
-        show.append("F_total_N")
+def _curve_table(
+    args: Inputs,
+    c: Any,
+    params: dict[str, Any],
+    is_po: np.ndarray,
+    show: list[str],
+    title: str,
+    si: Any,
+    names: dict[str, str],
+) -> Table:
+    """The records of a load curve ``c``, its pull-off marked by ``is_po``.
+
+    With SI inputs (``si``, the curve in SI units) its gap and width, then the fields
+    ``names`` (in that order, the load among them), and the load's total.
+    """
+    extra: dict[str, Any] = {"pulloff": is_po}
+    if si is not None:
+        names = {"central_gap": "central_gap_m", "contact_half_width": "a_m", **names}
+        cols, shown = si_shown(args, si, names, {"load": "F_total_N"}, ["a_m", "F_N_per_m"])
+        extra.update(cols)
+        show += shown
+    show.append("pulloff")
+    return records(args, c, params, extra, title, show)
 
 
 def _cmd_curve(args: Inputs) -> Table:
@@ -407,8 +386,9 @@ def _cmd_curve(args: Inputs) -> Table:
             "--F-max-over-Eh and --F-max apply to --law lennard-jones: the Dugdale curve ends "
             "at --a-max-over-R (or --a-max [m])"
         )
-    args.num = 200 if args.num is None else args.num
-    args.num_noncontact = 40 if args.num_noncontact is None else args.num_noncontact
+    for name, (_, default) in _POINTS.items():
+        if args.get(name) is None:
+            setattr(args, name, default)
     for flag, v in (("--num", args.num), ("--num-noncontact", args.num_noncontact)):
         if not 2 <= v <= MAX_POINTS:
             raise ParameterError(flag, f"{flag} must be an integer in [2, {MAX_POINTS}], got {v!r}")
@@ -433,26 +413,19 @@ def _cmd_curve(args: Inputs) -> Table:
     elif s > 0:
         touch = np.flatnonzero((c.branch == "non-contact") & (c.central_gap_over_h == 0))
         is_po[touch[-1:]] = True
-    params = _parameters(args, rho, s, cyl)
-    extra: dict[str, Any] = {"pulloff": is_po}
-    show = ["branch", "central_gap_over_h", "a_over_R", "c_over_R", "F_over_Eh", "stable"]
-    if cyl is not None:
-        names = {"central_gap": "central_gap_m", "contact_half_width": "a_m"}
-        names.update(adhesive_zone_half_width="c_m", load="F_N_per_m")
-        _curve_si(args, si, names, extra, show)
-    show.append("pulloff")
-    table = table_from_result(
+    return _curve_table(
+        args,
         c,
-        columns=extra,
-        parameters=params,
-        command=args.command_line(),
-        title=(
+        _parameters(args, rho, s, cyl),
+        is_po,
+        ["branch", "central_gap_over_h", "a_over_R", "c_over_R", "F_over_Eh", "stable"],
+        (
             f"load curve: non-contact branch (gap g0 from h to 0), then the contact branch; "
             f"pull-off {po.F_pulloff_over_Eh:.6g} ({po.mechanism})"
         ),
-        show=show,
+        si,
+        {"adhesive_zone_half_width": "c_m", "load": "F_N_per_m"},
     )
-    return table
 
 
 # --------------------------------------------------------------------------------------------
@@ -545,19 +518,15 @@ OPERATIONS = {
             Parameter(
                 "a_max", "largest half-width a [m] (SI)", unit="m", metavar="A", group=_SAMPLING
             ),
-            Parameter(
-                "num",
-                "points on the contact branch (default: 200; --law dugdale)",
-                kind="integer",
-                metavar="N",
-                group=_SAMPLING,
-            ),
-            Parameter(
-                "num_noncontact",
-                "points on the non-contact branch (default: 40; --law dugdale)",
-                kind="integer",
-                metavar="N",
-                group=_SAMPLING,
+            *(
+                Parameter(
+                    name,
+                    f"points on the {branch} branch (default: {n}; --law dugdale)",
+                    kind="integer",
+                    metavar="N",
+                    group=_SAMPLING,
+                )
+                for name, (branch, n) in _POINTS.items()
             ),
             Parameter(
                 "F_max_over_Eh",
@@ -580,7 +549,8 @@ OPERATIONS = {
             Entry(("a_max_over_R", "a_max"), "largest half-width a/R, or a [m] (docs/cli.md)"),
             Entry(
                 ("num", "num_noncontact"),
-                "points on the contact, non-contact branch (default: 200, 40)",
+                "points on the contact, non-contact branch (default: "
+                f"{', '.join(str(n) for _, n in _POINTS.values())})",
             ),
             Entry(
                 ("F_max_over_Eh", "F_max"),

@@ -15,19 +15,22 @@ import numpy as np
 from ..cylinder import _check_cylinder_si, _plausible, hysteresis_adhesion
 from ..domain import SCALE_WORDS, check_si
 from ..errors import ModelValidityWarning, NoEquilibriumError, ParameterError
-from ..output import Table, table_from_result
+from ..output import Table
 from ..push import push
 from ..sliding import sliding_pull_off
 from ._common import (
     GROUPS_GROUP,
     SI_GROUP,
     cylinder,
-    si_columns,
+    flags,
+    positive,
     si_given,
     si_inputs,
     si_parameters,
+    sliding_parameters,
 )
 from ._declare import Entry, Inputs, Operation, Parameter
+from ._records import records, si_shown
 
 __all__ = ["OPERATIONS"]
 
@@ -57,17 +60,9 @@ def _cmd_push(args: Inputs) -> Table:
         )
     cyl = None
     if not si:
-        missing = [
-            f
-            for f, v in (
-                ("--R-over-h2", args.R_over_h2),
-                ("--h1-over-h2", args.h1_over_h2),
-                ("--sigma0-over-E", args.sigma0_over_E),
-                ("--tau0-over-E", args.tau0_over_E),
-                ("--H-over-R", args.H_over_R),
-            )
-            if v is None
-        ]
+        missing = flags(
+            args, "R_over_h2", "h1_over_h2", "sigma0_over_E", "tau0_over_E", "H_over_R", given=False
+        )
         if missing:
             raise ValueError(f"give {', '.join(missing)} (or SI inputs with --radius)")
         rho, r, s, tau = args.R_over_h2, args.h1_over_h2, args.sigma0_over_E, args.tau0_over_E
@@ -182,18 +177,17 @@ def _cmd_push(args: Inputs) -> Table:
         if args.tip_friction is not None:
             names["moment_arm"] = "H_arm_m"
             show.insert(1, "H_arm_m")
-        extra.update(si_columns(pushed, names, totals=totals, length=args.length))
         show += ["first_motion"] + (["state"] if Q is not None else [])
-        if args.length is not None:
-            show += ["Q_roll_total_N", "Q_slide_total_N"]
-    table = table_from_result(
+        cols, show = si_shown(args, pushed, names, totals, show)
+        extra.update(cols)
+    table = records(
+        args,
         res,
-        columns=extra,
+        params,
+        extra,
+        "a fibre pushed sideways: rolling and sliding resistance, first motion",
+        show,
         drop=drop,
-        parameters=params,
-        command=args.command_line(),
-        title="a fibre pushed sideways: rolling and sliding resistance, first motion",
-        show=show,
     )
     return table
 
@@ -223,8 +217,7 @@ def _works_to_ranges(args: Inputs) -> None:
         ("--radius", args.radius),
         ("--modulus", args.modulus),
     ):  # each by itself before they are combined (a radius nan: not a bad ratio)
-        if v is not None and not (np.isfinite(v) and v > 0):
-            raise ParameterError(flag, f"{flag} must be a finite number > 0, got {v!r}")
+        positive(flag, v)
     if w2 > w1:
         raise ValueError(
             f"--work-of-adhesion-advancing must be <= --work-of-adhesion-receding (the "
@@ -272,6 +265,15 @@ def _check_receding(args: Inputs) -> None:
 # the declaration
 
 _SI, _SI_ENTRIES = si_inputs(range_flag="--h2")
+_GROUPS, _SLIDING_SI = sliding_parameters(
+    (
+        "radius over the advancing range h2",
+        "receding over advancing range, in [1, 1000] (1: no hysteresis)",
+        "adhesive stress over modulus, >= 0",
+        "friction stress over modulus, > 0",
+    ),
+    ("receding (trailing-edge) adhesion range h1 [m]", "friction stress tau0 [Pa]"),
+)
 _G, _S = GROUPS_GROUP, SI_GROUP
 
 OPERATIONS = {
@@ -286,15 +288,7 @@ OPERATIONS = {
             "--h1 0.6e-9 --tau0 1e6 --height 25e-9 50e-9 100e-9",
         ),
         (
-            Parameter("R_over_h2", "radius over the advancing range h2", metavar="R/h2", group=_G),
-            Parameter(
-                "h1_over_h2",
-                "receding over advancing range, in [1, 1000] (1: no hysteresis)",
-                metavar="H",
-                group=_G,
-            ),
-            Parameter("sigma0_over_E", "adhesive stress over modulus, >= 0", metavar="S", group=_G),
-            Parameter("tau0_over_E", "friction stress over modulus, > 0", metavar="T", group=_G),
+            *_GROUPS,
             Parameter(
                 "F_over_Eh2",
                 "normal load over E h2 (default 0: adhesion alone)",
@@ -316,8 +310,7 @@ OPERATIONS = {
                 group=_G,
             ),
             *_SI,
-            Parameter("h1", "receding (trailing-edge) adhesion range h1 [m]", unit="m", group=_S),
-            Parameter("tau0", "friction stress tau0 [Pa]", unit="Pa", metavar="T", group=_S),
+            *_SLIDING_SI,
             Parameter("load", "normal load [N/m] (default 0)", unit="N/m", metavar="F", group=_S),
             Parameter(
                 "height",

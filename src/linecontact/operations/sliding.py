@@ -15,22 +15,22 @@ import numpy as np
 from ..cylinder import sliding_pull_off_force
 from ..domain import check_si
 from ..errors import ParameterError
-from ..output import Table, table_from_result
+from ..output import Table
 from ..sliding import sliding_contact, sliding_contact_for_load, sliding_pull_off
 from ._common import (
-    GROUPS_GROUP,
-    SI_GROUP,
     cylinder,
+    group_parameters,
     half_widths,
-    null_missing,
-    si_columns,
+    positive,
     si_given,
     si_inputs,
     si_loads,
     si_parameters,
+    sliding_parameters,
     width_parameters,
 )
 from ._declare import Entry, Inputs, Operation, Parameter
+from ._records import convergence, records, si_shown
 
 __all__ = ["OPERATIONS"]
 
@@ -69,8 +69,7 @@ def _setup(args: Inputs):
             )
         return args.R_over_h2, args.h1_over_h2, args.sigma0_over_E, args.tau0_over_E, None
     cyl = cylinder(args, range_flag="--h2")
-    if args.h1 is not None and not (np.isfinite(args.h1) and args.h1 > 0):
-        raise ParameterError("--h1", f"--h1 must be a finite number > 0, got {args.h1!r}")
+    positive("--h1", args.h1)
     if args.tau0 is not None and not (np.isfinite(args.tau0) and args.tau0 >= 0):
         raise ParameterError("--tau0", f"--tau0 must be a finite number >= 0, got {args.tau0!r}")
     if args.h1 is not None:
@@ -97,14 +96,7 @@ def _cmd_slide(args: Inputs) -> Table:
         else:  # A in m
             si = cyl.sliding(contact_half_width=A, **how)
             res = si.nondimensional
-        ok = np.asarray(res.converged, bool).reshape(-1)
-        state = np.where(ok, "contact", "not-converged")
-        reason = np.full(ok.shape, None, dtype=object)
-        A_over_R = np.reshape(res.a_over_R, -1)
-        for i in np.flatnonzero(~ok):
-            reason[i] = (
-                f"the {args.method} solver did not converge at a_over_R={float(A_over_R[i])!r}"
-            )
+        state, reason = convergence(res, args.method)
         given = "a_over_R"
     else:
         if cyl is None:
@@ -154,40 +146,46 @@ def _cmd_slide(args: Inputs) -> Table:
         names.update(leading_zone_end="c2_m", eccentricity="e_m", load="F_N_per_m")
         names["moment"] = "M_N"
         totals = {"load": "F_total_N", "moment": "M_total_N_m"}
-        show += ["a_m", "F_N_per_m", "M_N"]
+        shown = ["a_m", "F_N_per_m", "M_N"]
         if args.tau0 is not None:
             params["tau0_Pa"] = args.tau0
             names["friction_force"] = "T_N_per_m"
             totals["friction_force"] = "T_total_N"
-            show.append("T_N_per_m")
-        extra.update(si_columns(si, names, totals=totals, length=args.length))
-        if args.length is not None:
-            show += ["F_total_N", "M_total_N_m"]
-            if args.tau0 is not None:
-                show.append("T_total_N")
-    extra.update(state=state, reason=reason)
-    if np.any(state != "contact"):
-        show.append("state")
-    table = table_from_result(
+            shown.append("T_N_per_m")
+        cols, shown = si_shown(args, si, names, totals, shown)
+        extra.update(cols)
+        show += shown
+    return records(
+        args,
         res,
-        columns=extra,
-        drop=drop,
-        parameters=params,
-        command=args.command_line(),
-        title=(
+        params,
+        extra,
+        (
             f"steady sliding ({res.method}); M clockwise positive about the contact centre, "
             "compressive load positive"
         ),
-        show=show,
+        show,
+        contact=(state, reason, given),
+        drop=drop,
     )
-    table = null_missing(table, state != "contact", keep=(given, "state", "reason"))
-    return table
 
 
 # --------------------------------------------------------------------------------------------
 # the declaration
 
 _SI, _SI_ENTRIES = si_inputs(range_flag="--h2")
+_GROUPS, _SLIDING_SI = sliding_parameters(
+    (
+        "radius over the leading-edge adhesion range h2, > 0",
+        "trailing over leading range, > 0 (1: the normal contact)",
+        group_parameters()[1].help,  # sigma0_over_E's
+        "shear strength over E, >= 0: adds the friction force 2 a tau0",
+    ),
+    (
+        "trailing-edge adhesion range h1 [m] (or give --h1-over-h2)",
+        "interface shear strength tau0 [Pa]",
+    ),
+)
 _WIDTHS = "contact half-widths or loads (exactly one)"
 
 OPERATIONS = {
@@ -202,44 +200,9 @@ OPERATIONS = {
             "--load 0.05 --tau0 5e8",
         ),
         (
-            Parameter(
-                "R_over_h2",
-                "radius over the leading-edge adhesion range h2, > 0",
-                metavar="R/h2",
-                group=GROUPS_GROUP,
-            ),
-            Parameter(
-                "h1_over_h2",
-                "trailing over leading range, > 0 (1: the normal contact)",
-                metavar="H",
-                group=GROUPS_GROUP,
-            ),
-            Parameter(
-                "sigma0_over_E",
-                "adhesive stress over composite modulus, >= 0 (0: Hertz)",
-                metavar="S",
-                group=GROUPS_GROUP,
-            ),
-            Parameter(
-                "tau0_over_E",
-                "shear strength over E, >= 0: adds the friction force 2 a tau0",
-                metavar="T",
-                group=GROUPS_GROUP,
-            ),
+            *_GROUPS,
             *_SI,
-            Parameter(
-                "h1",
-                "trailing-edge adhesion range h1 [m] (or give --h1-over-h2)",
-                unit="m",
-                group=SI_GROUP,
-            ),
-            Parameter(
-                "tau0",
-                "interface shear strength tau0 [Pa]",
-                unit="Pa",
-                metavar="T",
-                group=SI_GROUP,
-            ),
+            *_SLIDING_SI,
             *width_parameters(
                 "F_over_Eh2", "normal loads over E h2 (the stable sliding contact)", _WIDTHS
             ),

@@ -10,6 +10,7 @@ the normal contact are in ``parameters``.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -20,9 +21,17 @@ from ..cylinder import Cylinder
 from ..domain import DOMAIN, check
 from ..errors import NoEquilibriumError
 from ..normal import contact_for_load, pull_off
-from ..output import Table, table_from_result
-from ._common import cylinder, group_parameters, si_given, si_inputs, si_parameters
+from ..output import Table
+from ._common import (
+    cylinder,
+    flag,
+    group_parameters,
+    si_given,
+    si_inputs,
+    si_parameters,
+)
 from ._declare import Entry, Inputs, Operation, Parameter
+from ._records import records
 
 __all__ = ["OPERATIONS"]
 
@@ -128,8 +137,47 @@ def _check_friction(
         if args.mu is not None:
             raise ValueError("--mu is the Coulomb friction coefficient: add --friction coulomb")
         if getattr(args, coulomb_load) is not None:
-            flag, other = (f"--{k.replace('_', '-')}" for k in (coulomb_load, load))
-            raise ValueError(f"{flag} is for --friction coulomb; use {other}")
+            raise ValueError(f"{flag(coulomb_load)} is for --friction coulomb; use {flag(load)}")
+
+
+def _friction_nd(args: Inputs, coulomb: bool, A) -> dict[str, Any]:
+    """The friction of the groups checked: Coulomb's needs ``a/R``, the constant tau0/E."""
+    if coulomb:
+        if A is None:
+            raise ValueError(
+                "Coulomb friction needs the Hertz half-width: give --a-over-R (or --R-over-h "
+                "--sigma0-over-E 0 --F-over-Eh, or SI inputs)"
+            )
+        return {}
+    if args.tau0 is not None:
+        raise ValueError(
+            "--tau0 [Pa] is an SI input: give --radius, the materials and --load too, or use "
+            "--tau0-over-E"
+        )
+    if args.tau0_over_E is None:
+        raise ValueError("give the friction stress --tau0-over-E (or --friction coulomb --mu)")
+    return {}
+
+
+def _params(args, coulomb: bool, A, F_over_Eh) -> dict[str, Any]:
+    """The friction law and the normal contact of the groups, for the provenance."""
+    params: dict[str, Any] = {"friction": "coulomb" if coulomb else "constant"}
+    if A is not None:
+        params["a_over_R"] = float(A)
+    if F_over_Eh is not None:
+        params.update(R_over_h=args.R_over_h, sigma0_over_E=args.sigma0_over_E, F_over_Eh=F_over_Eh)
+    return params
+
+
+def _si_friction(args: Inputs, coulomb: bool, cyl: Cylinder) -> dict[str, Any]:
+    """The SI friction keywords: ``friction_coefficient`` or ``friction_stress`` [Pa]."""
+    if coulomb:
+        return dict(friction_coefficient=args.mu)
+    if len(_given(args, "tau0", "tau0_over_E")) != 1:
+        raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
+    return dict(
+        friction_stress=args.tau0 if args.tau0 is not None else cyl.in_si(args.tau0_over_E, "E")
+    )
 
 
 def _run(args: Inputs, rolling: bool) -> Table:
@@ -157,15 +205,10 @@ def _run(args: Inputs, rolling: bool) -> Table:
         else:
             non_negative(state, values)
     d = values if state == "d_over_a" else None
-    law = {"friction": "coulomb" if coulomb else "constant"}
     if cyl is not None:
-        return _run_si(args, rolling, coulomb, cyl, state, values, d, law)
+        return _run_si(args, rolling, coulomb, cyl, state, values, d)
+    _friction_nd(args, coulomb, A)
     if coulomb:
-        if A is None:
-            raise ValueError(
-                "Coulomb friction needs the Hertz half-width: give --a-over-R (or --R-over-h "
-                "--sigma0-over-E 0 --F-over-Eh, or SI inputs)"
-            )
         coulomb_fn = tg.steady_rolling_coulomb if rolling else tg.sliding_initiation_coulomb
         if state == "T_over_Ea":
             values = values / ((np.pi / 4) * args.mu * A)
@@ -173,36 +216,18 @@ def _run(args: Inputs, rolling: bool) -> Table:
         # a load at or beyond full slip is a record with state "sliding", not an error
         r: Any = coulomb_fn(args.mu, A, d, T_over_muF=T, method=args.method, on_failure="report")
     else:
-        if args.tau0 is not None:
-            raise ValueError(
-                "--tau0 [Pa] is an SI input: give --radius, the materials and --load too, or "
-                "use --tau0-over-E"
-            )
-        if args.tau0_over_E is None:
-            raise ValueError("give the friction stress --tau0-over-E (or --friction coulomb --mu)")
         fn = tg.steady_rolling if rolling else tg.sliding_initiation
         T_over_Ea = None if d is not None else values
         r = fn(args.tau0_over_E, d, T_over_Ea=T_over_Ea, method=args.method, on_failure="report")
-    params: dict[str, Any] = dict(law)
-    if A is not None:
-        params["a_over_R"] = float(A)
-    if F_over_Eh is not None:
-        params.update(R_over_h=args.R_over_h, sigma0_over_E=args.sigma0_over_E, F_over_Eh=F_over_Eh)
-    table = _table(args, r, rolling, coulomb, params, {})
+    table = _table(args, r, rolling, coulomb, _params(args, coulomb, A, F_over_Eh), {})
     return table
 
 
-def _run_si(args, rolling, coulomb, cyl: Cylinder, state, values, d, law) -> Table:
-    if coulomb:
-        fr: dict[str, Any] = dict(friction_coefficient=args.mu)
-    else:
-        if len(_given(args, "tau0", "tau0_over_E")) != 1:
-            raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
-        tau0 = args.tau0 if args.tau0 is not None else cyl.in_si(args.tau0_over_E, "E")
-        fr = dict(friction_stress=tau0)
+def _run_si(args, rolling, coulomb, cyl: Cylinder, state, values, d) -> Table:
+    fr = _si_friction(args, coulomb, cyl)
     fn = cyl.steady_rolling if rolling else cyl.sliding_initiation
     contact = cyl.contact(load=args.load, on_failure="report")
-    params: dict[str, Any] = dict(law)
+    params: dict[str, Any] = {"friction": "coulomb" if coulomb else "constant"}
     params.update(si_parameters(args, cyl))
     params["F_N_per_m"] = args.load
     if contact.state != "contact":
@@ -273,14 +298,7 @@ def _table(args, r, rolling: bool, coulomb: bool, params, extra):
     show += ["T_total_N"] if "T_total_N" in extra else []
     what = "steady rolling (driving cylinder)" if rolling else "initiation of sliding"
     law = "Coulomb friction" if coulomb else "constant friction stress"
-    return table_from_result(
-        r,
-        columns=extra,
-        parameters=params,
-        command=args.command_line(),
-        title=f"{what}, {law} ({r.method})",
-        show=show,
-    )
+    return records(args, r, params, extra, f"{what}, {law} ({r.method})", show)
 
 
 # --------------------------------------------------------------------------------------------
@@ -326,57 +344,70 @@ def _normal_contact_parameters() -> tuple[Parameter, ...]:
     )
 
 
-def _operation(name: str, summary: str, compute: Any) -> Operation:
-    state = "tangential state (exactly one)"
-    lo = "[0, 1)" if name == "slide-init" else "(-1, 1)"
+def _loads(group: str, *loads: tuple[str, str, str]) -> tuple[Parameter, ...]:
+    """The tangential states ``(name, help, metavar)``, several values each, in ``group``.
+
+    The last is the SI one, in N/m.
+    """
+    *nd, (name, help, metavar) = loads
+    return (
+        *(Parameter(n, h, many="several", metavar=m, group=group) for n, h, m in nd),
+        Parameter(name, help, many="several", unit="N/m", metavar=metavar, group=group),
+    )
+
+
+def tangential_operation(
+    name: str,
+    summary: str,
+    text: tuple[str, Sequence[str]],
+    loads: tuple[Parameter, ...],
+    method: tuple[str, tuple[str, ...]],
+    compute: Any,
+    **how: Any,
+) -> Operation:
+    """A tangential loading of the normal contact (``slide-init``, ``roll``, ``cycle``, ...).
+
+    Its parameters: the friction, the ``loads``, the normal contact and ``--method`` (its
+    help and choices, ``closed-form`` by default); ``text`` is its description and examples,
+    ``how`` the rest of the :class:`Operation`.
+    """
     return Operation(
         name,
         summary,
-        _DESCRIPTION[name],
-        tuple(_EXAMPLES[name]),
+        text[0],
+        tuple(text[1]),
         (
             *_FRICTION,
-            Parameter(
-                "d_over_a", f"stick-zone end d/a, in {lo}", many="several", metavar="D", group=state
-            ),
-            Parameter(
-                "T_over_Ea",
-                "tangential force per unit length over E a, >= 0",
-                many="several",
-                metavar="T",
-                group=state,
-            ),
-            Parameter(
-                "T_over_muF",
-                "tangential force over mu F, >= 0 (Coulomb)",
-                many="several",
-                metavar="T",
-                group=state,
-            ),
-            Parameter(
-                "tangential_load",
-                "tangential force per unit length T [N/m] (SI inputs)",
-                many="several",
-                unit="N/m",
-                metavar="T",
-                group=state,
-            ),
+            *loads,
             *_normal_contact_parameters(),
-            Parameter(
-                "method",
-                "the closed forms or collocation",
-                kind="text",
-                choices=("closed-form", "collocation"),
-                default="closed-form",
-            ),
+            Parameter("method", method[0], kind="text", choices=method[1], default="closed-form"),
         ),
         compute,
-        good=("stick", "stick-slip", "sliding"),
         entries=(
             *_FRICTION_ENTRIES,
             *_SI_ENTRIES,
             Entry(("F_over_Eh", "load"), "normal load F/(E h), or F [N/m] (SI)"),
         ),
+        **how,
+    )
+
+
+def _operation(name: str, summary: str, compute: Any) -> Operation:
+    lo = "[0, 1)" if name == "slide-init" else "(-1, 1)"
+    return tangential_operation(
+        name,
+        summary,
+        (_DESCRIPTION[name], _EXAMPLES[name]),
+        _loads(
+            "tangential state (exactly one)",
+            ("d_over_a", f"stick-zone end d/a, in {lo}", "D"),
+            ("T_over_Ea", "tangential force per unit length over E a, >= 0", "T"),
+            ("T_over_muF", "tangential force over mu F, >= 0 (Coulomb)", "T"),
+            ("tangential_load", "tangential force per unit length T [N/m] (SI inputs)", "T"),
+        ),
+        ("the closed forms or collocation", ("closed-form", "collocation")),
+        compute,
+        good=("stick", "stick-slip", "sliding"),
         rows=("d_over_a", "T_over_Ea", "T_over_muF", "tangential_load"),
     )
 
