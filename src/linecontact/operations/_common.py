@@ -262,8 +262,9 @@ def si_given(args: Any, extra: Sequence[str] = ()) -> bool:
     """
     si = any(getattr(args, k, None) is not None for k in (*SI_KEYS, *extra))
     if not si and getattr(args, "length", None) is not None:
-        raise ValueError(
-            "--length [m] gives the totals of SI forces: give --radius and the materials too"
+        raise ParameterError(
+            "--length",
+            "--length [m] gives the totals of SI forces: give --radius and the materials too",
         )
     return si
 
@@ -279,20 +280,22 @@ def cylinder(args: Any, range_flag: str = "--h") -> Cylinder:
 def _cylinder(args: Any, range_flag: str) -> Cylinder:
     work = _work_flag(range_flag)
     if args.radius is None:
-        raise ValueError("SI inputs need --radius [m]")
+        raise ParameterError("--radius", "SI inputs need --radius [m]")
     if args.h is None and args.work_of_adhesion is None and args.z0 is None:
-        raise ValueError(
+        raise ParameterError(
+            range_flag,
             f"SI inputs need the adhesion range {range_flag} [m] (it sets R/h even without "
-            f"adhesion), or {work} with --z0"
+            f"adhesion), or {work} with --z0",
         )
     if (args.sigma0 is not None or args.h is not None) and (
         args.work_of_adhesion is not None or args.z0 is not None
     ):
-        raise ValueError(
-            f"give adhesion either as --sigma0 and {range_flag}, or as {work} and --z0, not both"
+        raise ParameterError(
+            "--sigma0",
+            f"give adhesion either as --sigma0 and {range_flag}, or as {work} and --z0, not both",
         )
     if (args.work_of_adhesion is None) != (args.z0 is None):
-        raise ValueError(f"give both {work} and --z0")
+        raise ParameterError(work, f"give both {work} and --z0")
     positive("--length", args.length)
     adh = dict(
         cohesive_stress=args.sigma0,
@@ -304,25 +307,32 @@ def _cylinder(args: Any, range_flag: str) -> Cylinder:
     presets = _presets(args)
     if args.modulus is not None:
         if any(m is not None for m in presets):
-            raise ValueError(
+            raise ParameterError(
+                "--modulus",
                 "give either --modulus or the materials (--cylinder-material, "
-                "--substrate-material), not both"
+                "--substrate-material), not both",
             )
         if any(v is not None for v in mats):
-            raise ValueError("give either --modulus or --E1 --nu1 --E2 --nu2, not both")
+            raise ParameterError(
+                "--modulus", "give either --modulus or --E1 --nu1 --E2 --nu2, not both"
+            )
         return Cylinder.from_modulus(args.radius, args.modulus, **adh)
     for m, E, nu, flags, body in (
         (presets[0], args.E1, args.nu1, "--E1 --nu1", "cylinder"),
         (presets[1], args.E2, args.nu2, "--E2 --nu2", "substrate"),
     ):
         if m is not None and (E is not None or nu is not None):
-            raise ValueError(f"give the {body} either as --{body}-material or as {flags}, not both")
+            raise ParameterError(
+                f"--{body}-material",
+                f"give the {body} either as --{body}-material or as {flags}, not both",
+            )
     E1, nu1 = (args.E1, args.nu1) if presets[0] is None else (presets[0].E, presets[0].nu)
     E2, nu2 = (args.E2, args.nu2) if presets[1] is None else (presets[1].E, presets[1].nu)
     if any(v is None for v in (E1, nu1, E2, nu2)):
-        raise ValueError(
+        raise ParameterError(
+            "--modulus",
             "SI inputs need --modulus, or the materials: --cylinder-material or --E1 --nu1, "
-            "and --substrate-material or --E2 --nu2"
+            "and --substrate-material or --E2 --nu2",
         )
     return Cylinder.from_materials(args.radius, E1, nu1, E2, nu2, **adh)
 
@@ -341,9 +351,10 @@ def _presets(args: Any) -> tuple[Material | None, Material | None]:
         try:
             out.append(Material.from_name(name))
         except ValueError:
-            raise ValueError(
+            raise ParameterError(
+                flag,
                 f"{flag} {name!r} is not a material preset: one of "
-                f"{', '.join(material_names())} (linecontact materials lists them)"
+                f"{', '.join(material_names())} (linecontact materials lists them)",
             ) from None
     return out[0], out[1]
 
@@ -383,13 +394,16 @@ def groups(args: Any) -> tuple[float, float, Cylinder | None]:
     si = si_given(args)
     nd = args.R_over_h is not None or args.sigma0_over_E is not None
     if si and nd:
-        raise ValueError(
+        raise ParameterError(
+            "--R-over-h",
             "give either the nondimensional groups (--R-over-h, --sigma0-over-E) or SI inputs "
-            "(--radius, ...), not both"
+            "(--radius, ...), not both",
         )
     if not si:
         if args.R_over_h is None or args.sigma0_over_E is None:
-            raise ValueError("give --R-over-h and --sigma0-over-E (or SI inputs with --radius)")
+            raise ParameterError(
+                "--R-over-h", "give --R-over-h and --sigma0-over-E (or SI inputs with --radius)"
+            )
         if getattr(args, "law", None) == "lennard-jones" and args.command != "pulloff":
             _check_lennard_jones_groups(args.R_over_h, args.sigma0_over_E)
         return args.R_over_h, args.sigma0_over_E, None
@@ -418,12 +432,13 @@ def _check_lennard_jones_groups(rho: float, s: float) -> None:
     value = s * math.sqrt(rho) / k
     if value > hi:
         lam = float(maugis_parameter_of_mu(hi))
-        raise ValueError(
+        raise ParameterError(
+            "--sigma0-over-E",
             f"under the Lennard-Jones law --sigma0-over-E sqrt(--R-over-h) / {k:.4g} = "
             f"{value:.4g} must be at most {hi:g} for contacts and load curves (a Tabor-Maugis "
             f"parameter up to {lam:.3g}; the pull-off at any value): use --law dugdale, or "
             f"--sigma0-over-E below {s * hi / value:.3g}, or --R-over-h below "
-            f"{rho * (hi / value) ** 2:.3g}"
+            f"{rho * (hi / value) ** 2:.3g}",
         )
 
 
@@ -443,28 +458,35 @@ def half_widths(args: Any, cyl: Cylinder | None, load_attr: str):
         args.load is not None,
     ]
     if sum(given) != 1:
-        raise ValueError(
+        raise ParameterError(
+            "--a-over-R",
             f"give exactly one of --a-over-R, --a-over-R-range, {load_flag}, --half-width [m] or "
-            "--load [N/m]"
+            "--load [N/m]",
         )
     if (args.a is not None or args.load is not None) and cyl is None:
-        raise ValueError(
-            "--half-width and --load are SI inputs: give --radius and the materials too"
+        raise ParameterError(
+            "--half-width",
+            "--half-width and --load are SI inputs: give --radius and the materials too",
         )
     if cyl is not None and (given[0] or given[1] or given[2]):
-        raise ValueError(
+        raise ParameterError(
+            "--a-over-R",
             f"--a-over-R, --a-over-R-range and {load_flag} are nondimensional: with SI inputs "
             "give "
-            "--half-width [m] or --load [N/m]"
+            "--half-width [m] or --load [N/m]",
         )
     if args.a_over_R_range is not None:
         start, stop, num = args.a_over_R_range
         for name, v in (("START", start), ("STOP", stop)):
             if not (math.isfinite(v) and v > 0):
-                raise ValueError(f"--a-over-R-range {name} must be a finite number > 0, got {v!r}")
+                raise ParameterError(
+                    "--a-over-R-range",
+                    f"--a-over-R-range {name} must be a finite number > 0, got {v!r}",
+                )
         if not (math.isfinite(num) and float(num).is_integer() and 1 <= num <= MAX_POINTS):
-            raise ValueError(
-                f"--a-over-R-range NUM must be an integer in [1, {MAX_POINTS}], got {num!r}"
+            raise ParameterError(
+                "--a-over-R-range",
+                f"--a-over-R-range NUM must be an integer in [1, {MAX_POINTS}], got {num!r}",
             )
         return np.linspace(start, stop, int(num))
     if args.a_over_R is not None:

@@ -45,7 +45,9 @@ def _check_common(args: Any) -> None:
     if args.plot:
         parent = os.path.dirname(os.path.abspath(args.plot))
         if not os.path.isdir(parent):
-            raise ValueError(f"--plot {args.plot!r}: the directory {parent!r} does not exist")
+            raise ParameterError(
+                "--plot", f"--plot {args.plot!r}: the directory {parent!r} does not exist"
+            )
 
 
 def _modulus(args: Any) -> tuple[float, dict[str, Any]]:
@@ -54,8 +56,9 @@ def _modulus(args: Any) -> tuple[float, dict[str, Any]]:
         if any(getattr(args, k) is not None for k in ("E1", "nu1", "E2", "nu2")) or (
             args.cylinder_material or args.substrate_material
         ):
-            raise ValueError(
-                "give either --modulus or the materials (--E1 ... or presets), not both"
+            raise ParameterError(
+                "--modulus",
+                "give either --modulus or the materials (--E1 ... or presets), not both",
             )
         positive("--modulus", args.modulus)
         return args.modulus, {"modulus_Pa": args.modulus}
@@ -94,16 +97,18 @@ def _one_sd(args, name: str, value: float | None) -> float:
     if not (math.isfinite(v) and v >= 0):
         raise ParameterError(flag, f"{flag} must be finite and >= 0, got {text!r}")
     if value is None:
-        raise ValueError(f"{flag} needs --{name.replace('_', '-')}")
+        raise ParameterError(flag, f"{flag} needs --{name.replace('_', '-')}")
     if not math.isfinite(value):  # the value's fault, not its uncertainty's
-        raise ValueError(f"--{name.replace('_', '-')} must be a finite number, got {value!r}")
+        option = f"--{name.replace('_', '-')}"
+        raise ParameterError(option, f"{option} must be a finite number, got {value!r}")
     sd = abs(value) * v if rel else v
     # the Monte Carlo draws around the value: an uncertainty as large as the value itself
     # draws as many non-physical values as physical ones (and 1e300 overflows)
     if not sd <= abs(value):
-        raise ValueError(
+        raise ParameterError(
+            flag,
             f"{flag} must be at most the value itself ({abs(value)!r}, 100%): a larger standard "
-            f"uncertainty leaves no physical value to draw, got {text!r}"
+            f"uncertainty leaves no physical value to draw, got {text!r}",
         )
     return sd
 

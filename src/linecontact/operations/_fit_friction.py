@@ -12,6 +12,7 @@ from typing import Any
 import numpy as np
 
 from .. import inverse as inv
+from ..errors import ParameterError
 from ..output import Table
 from ._common import flags, positive
 from ._fit_common import (
@@ -38,31 +39,42 @@ _TAU_MAX = 1e15
 def _friction_from_width(args: Any) -> Table:
     """tau0 = (f - dw)/(2 a) from one friction force and one measured half-width (no model)."""
     if args.data is not None:
-        raise ValueError("--half-width is one measured width: give it without --data")
+        raise ParameterError(
+            "--half-width", "--half-width is one measured width: give it without --data"
+        )
     if args.friction_force is None:
-        raise ValueError("--half-width needs the friction force measured with it: --friction-force")
+        raise ParameterError(
+            "--half-width",
+            "--half-width needs the friction force measured with it: --friction-force",
+        )
     if not (math.isfinite(args.friction_force) and args.friction_force > 0):
-        raise ValueError(
-            f"--friction-force must be a finite number > 0, got {args.friction_force!r}"
+        raise ParameterError(
+            "--friction-force",
+            f"--friction-force must be a finite number > 0, got {args.friction_force!r}",
         )
     positive("--half-width", args.half_width)
     if args.receding_work_of_adhesion is not None and args.work_of_adhesion is None:
-        raise ValueError("--work-of-adhesion-receding needs the advancing --work-of-adhesion")
+        raise ParameterError(
+            "--work-of-adhesion-receding",
+            "--work-of-adhesion-receding needs the advancing --work-of-adhesion",
+        )
     model = flags(
         args, "radius", "modulus", "E1", "E2", "z0", "cylinder_material", "substrate_material"
     ) + (["--contact"] if args.contact != "maugis-dugdale" else [])
     if model:
-        raise ValueError(
+        raise ParameterError(
+            model[0],
             f"{', '.join(model)}: not used with --half-width (a measured width needs no contact "
-            "model)"
+            "model)",
         )
     if (
         args.receding_work_of_adhesion is not None
         and args.receding_work_of_adhesion < args.work_of_adhesion
     ):
-        raise ValueError(
+        raise ParameterError(
+            "--work-of-adhesion-receding",
             "--work-of-adhesion-receding must be at least --work-of-adhesion (the hysteresis "
-            "is not negative)"
+            "is not negative)",
         )
     dw = (
         args.receding_work_of_adhesion - args.work_of_adhesion
@@ -72,10 +84,11 @@ def _friction_from_width(args: Any) -> Table:
     values = dict(friction_force=args.friction_force, half_width=args.half_width)
     tau = (args.friction_force - dw) / (2 * args.half_width)
     if not tau <= _TAU_MAX:  # drawing around it would overflow; no material is that strong
-        raise ValueError(
+        raise ParameterError(
+            "--friction-force",
             f"--friction-force {args.friction_force!r} N/m over --half-width "
             f"{args.half_width!r} m gives a shear strength of {tau:.3g} Pa, beyond any "
-            f"material (above {_TAU_MAX:g} Pa): are they in N/m and m?"
+            f"material (above {_TAU_MAX:g} Pa): are they in N/m and m?",
         )
     sds = dict(
         friction_force=_one_sd(args, "friction_force", args.friction_force),
@@ -89,9 +102,10 @@ def _friction_from_width(args: Any) -> Table:
         seed=args.seed,
     )
     if est.value <= 0:
-        raise ValueError(
+        raise ParameterError(
+            "--friction-force",
             f"--friction-force {args.friction_force!r} N/m does not exceed the adhesion "
-            f"hysteresis {dw:.6g} J/m^2: no positive shear strength"
+            f"hysteresis {dw:.6g} J/m^2: no positive shear strength",
         )
     given = [f"--{k.replace('_', '-')}-sd" for k, v in sds.items() if v]
     rec = {
@@ -117,21 +131,25 @@ def run_friction(args: Any) -> Table:
     if args.half_width is not None:
         return _friction_from_width(args)
     if args.data is not None and args.friction_force_sd is not None:
-        raise ValueError(
+        raise ParameterError(
+            "--friction-force-sd",
             "--friction-force-sd is for one measurement: with --data give the uncertainties "
-            "in the file, an sd column right after the friction forces"
+            "in the file, an sd column right after the friction forces",
         )
     E, mat = _modulus(args)
     params: dict[str, Any] = dict(mat)
     if args.radius is None or args.work_of_adhesion is None or args.z0 is None:
-        raise ValueError(
+        raise ParameterError(
+            "--radius",
             "the contact width needs the cylinder: give --radius, --work-of-adhesion and --z0 "
-            "(with the modulus or the materials)"
+            "(with the modulus or the materials)",
         )
     positive("--length", args.length)
     if args.data is not None:
         if args.friction_force is not None or args.normal_load is not None:
-            raise ValueError("give either --data FILE or one measurement (--load, ...)")
+            raise ParameterError(
+                "--data", "give either --data FILE or one measurement (--load, ...)"
+            )
         data = _read(args, "friction")
         F, f = data["normal_load"], data["friction_force"]
         f_sd = data.get("friction_force_sd", np.zeros_like(f))
@@ -139,7 +157,9 @@ def run_friction(args: Any) -> Table:
         n = F.size
     else:
         if args.friction_force is None or args.normal_load is None:
-            raise ValueError("give --data FILE, or one measurement: --load and --friction-force")
+            raise ParameterError(
+                "--data", "give --data FILE, or one measurement: --load and --friction-force"
+            )
         F, f = np.array([args.normal_load]), np.array([args.friction_force])
         lines = np.array([0])
         f_sd = np.array([_one_sd(args, "friction_force", args.friction_force)])
@@ -183,7 +203,9 @@ def run_friction(args: Any) -> Table:
             try:
                 fn(f[i], F[i], **common)
             except ValueError as one:
-                raise ValueError(f"--data {args.data!r}, row {int(lines[i])}: {one}") from None
+                raise ParameterError(
+                    "--data", f"--data {args.data!r}, row {int(lines[i])}: {one}"
+                ) from None
         raise exc
     ests = [
         inv.propagate(

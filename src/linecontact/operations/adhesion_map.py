@@ -134,15 +134,16 @@ def grid(args: Inputs) -> tuple[np.ndarray, np.ndarray]:
         top = min(COARSE["mu_max"], hi)
     for flag, v in (("--mu-min", lo), ("--mu-max", top)):
         if not (math.isfinite(v) and 0.0 < v <= hi):
-            raise ValueError(
+            raise ParameterError(
+                flag,
                 f"{flag} must be a finite number in (0, {hi:g}] (the domain of the "
-                f"Lennard-Jones solver), got {v!r}"
+                f"Lennard-Jones solver), got {v!r}",
             )
     if not lo < top:
         raise ParameterError("--mu-min", f"--mu-min must be below --mu-max, got {lo!r} >= {top!r}")
     for flag, v in (("--n-mu", args.n_mu), ("--n-y", args.n_y)):
         if args.quick and v is not None:
-            raise ValueError(f"give either --quick or {flag}, not both")
+            raise ParameterError("--quick", f"give either --quick or {flag}, not both")
     n = args.n_mu
     if n is not None and not 2 <= n <= 64:
         raise ParameterError("--n-mu", f"--n-mu must be an integer in [2, 64], got {n!r}")
@@ -150,9 +151,10 @@ def grid(args: Inputs) -> tuple[np.ndarray, np.ndarray]:
         raise ParameterError("--n-y", f"--n-y must be an integer in [2, 1000], got {args.n_y!r}")
     y_max = args.y_max
     if y_max is not None and not (math.isfinite(y_max) and Y_RANGE[0] < y_max <= 1e3):
-        raise ValueError(
+        raise ParameterError(
+            "--y-max",
             f"--y-max must be a finite number in ({Y_RANGE[0]:g}, 1000] (pull-offs above "
-            f"pull-off), got {y_max!r}"
+            f"pull-off), got {y_max!r}",
         )
     if args.quick:
         return (

@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 
 from .. import inverse as inv
+from ..errors import ParameterError
 from ..measurements import per_length
 from ..output import Table
 from ._common import flags, material_parameters, positive
@@ -71,21 +72,24 @@ _EXAMPLES = {
 def _cmd_adhesion(args: Inputs) -> Table:
     _check_common(args)
     if args.data is None and args.bootstrap != "auto":
-        raise ValueError("--bootstrap is for a joint fit to --data")
+        raise ParameterError("--bootstrap", "--bootstrap is for a joint fit to --data")
     if args.pull_off_force_total is not None and args.pull_off_force_sd is not None:
-        raise ValueError(
-            "with --pull-off-force-total give its uncertainty as --pull-off-force-total-sd"
+        raise ParameterError(
+            "--pull-off-force-total",
+            "with --pull-off-force-total give its uncertainty as --pull-off-force-total-sd",
         )
     E, mat = _modulus(args)
     params: dict[str, Any] = dict(mat)
     positive("--length", args.length)
     if args.data is not None:
         if args.pull_off_force is not None or args.radius is not None:
-            raise ValueError(
-                "give either --data FILE or one measurement (--radius, --pull-off-force)"
+            raise ParameterError(
+                "--data", "give either --data FILE or one measurement (--radius, --pull-off-force)"
             )
         if args.radius_sd is not None:
-            raise ValueError("--radius-sd is for one measurement; with --data the radii are exact")
+            raise ParameterError(
+                "--radius-sd", "--radius-sd is for one measurement; with --data the radii are exact"
+            )
         single = flags(
             args,
             "pull_off_force_sd",
@@ -96,9 +100,10 @@ def _cmd_adhesion(args: Inputs) -> Table:
             "normal_load",
         )
         if single:
-            raise ValueError(
+            raise ParameterError(
+                single[0],
                 f"{', '.join(single)}: for one measurement, not with --data (the uncertainties "
-                "of the pull-off forces go into the file: an sd column after them)"
+                "of the pull-off forces go into the file: an sd column after them)",
             )
         data = _read(args, "pull-off")
         R, F = data["radius"], data["pull_off_force"]
@@ -109,21 +114,22 @@ def _cmd_adhesion(args: Inputs) -> Table:
             weak = (sd < 1e-12 * np.abs(F)) | (sd > 1e6 * np.abs(F))
             if np.any(weak):
                 i = int(np.flatnonzero(weak)[0])
-                raise ValueError(
+                raise ParameterError(
+                    "--data",
                     f"--data {args.data!r}, row {int(rows[i])}: the standard uncertainty "
-                    f"{float(sd[i])!r} must be between 1e-12 and 1e6 times the force (a weight)"
+                    f"{float(sd[i])!r} must be between 1e-12 and 1e6 times the force (a weight)",
                 )
         boot: Any = args.bootstrap
         if boot != "auto":
             try:
                 boot = int(boot)
             except ValueError:
-                raise ValueError(
-                    f"--bootstrap must be 'auto' or an integer, got {boot!r}"
+                raise ParameterError(
+                    "--bootstrap", f"--bootstrap must be 'auto' or an integer, got {boot!r}"
                 ) from None
         E_sd = _one_sd(args, "modulus", E)
         if args.z0 is None and args.z0_sd is not None:
-            raise ValueError("--z0-sd needs a fixed --z0 (a joint fit estimates z0)")
+            raise ParameterError("--z0-sd", "--z0-sd needs a fixed --z0 (a joint fit estimates z0)")
         z_sd = _one_sd(args, "z0", args.z0) if args.z0 is not None else 0.0
         # the inputs' uncertainties propagate by refits with them drawn (100, seed + 1)
         fit = inv.fit_pull_off(
@@ -196,11 +202,12 @@ def _cmd_adhesion(args: Inputs) -> Table:
 def _adhesion_one(args, E: float, params: dict[str, Any]):
     """The work of adhesion from one pull-off force (per length or total) or one width."""
     if args.plot:
-        raise ValueError("--plot draws a fit to --data")
+        raise ParameterError("--plot", "--plot draws a fit to --data")
     if args.radius is None or args.z0 is None:
-        raise ValueError(
+        raise ParameterError(
+            "--data",
             "give --data FILE, or one measurement: --radius, --z0 and --pull-off-force (or "
-            "--pull-off-force-total with --length, or --half-width with --load)"
+            "--pull-off-force-total with --length, or --half-width with --load)",
         )
     given = [
         k
@@ -208,9 +215,10 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
         if getattr(args, k) is not None
     ]
     if len(given) != 1:
-        raise ValueError(
+        raise ParameterError(
+            "--pull-off-force",
             "give one of --pull-off-force [N/m], --pull-off-force-total [N] (with --length) "
-            "or --half-width [m] (with --load)"
+            "or --half-width [m] (with --load)",
         )
     common = {"radius": args.radius, "modulus": E, "equilibrium_spacing": args.z0}
     flags = {"radius": "--radius-sd", "modulus": "--modulus-sd", "equilibrium_spacing": "--z0-sd"}
@@ -224,7 +232,9 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
     }
     if given == ["half_width"]:
         if args.normal_load is None:
-            raise ValueError("--half-width needs the normal load it was measured at: --load")
+            raise ParameterError(
+                "--half-width", "--half-width needs the normal load it was measured at: --load"
+            )
         fn: Any = inv.work_of_adhesion_from_width
         values = dict(half_width=args.half_width, normal_load=args.normal_load, **common)
         sds["half_width"] = _one_sd(args, "half_width", args.half_width)
@@ -232,14 +242,20 @@ def _adhesion_one(args, E: float, params: dict[str, Any]):
         what = "one contact width"
     else:
         if args.normal_load is not None:
-            raise ValueError("--load goes with --half-width, not with a pull-off force")
+            raise ParameterError(
+                "--load", "--load goes with --half-width, not with a pull-off force"
+            )
         if given == ["pull_off_force_total"]:
             if args.length is None:
-                raise ValueError("--pull-off-force-total [N] needs the fibre's --length [m]")
+                raise ParameterError(
+                    "--pull-off-force-total",
+                    "--pull-off-force-total [N] needs the fibre's --length [m]",
+                )
             if not math.isfinite(args.pull_off_force_total):
-                raise ValueError(
+                raise ParameterError(
+                    "--pull-off-force-total",
                     "--pull-off-force-total must be a finite number [N], got "
-                    f"{args.pull_off_force_total!r}"
+                    f"{args.pull_off_force_total!r}",
                 )
             total_sd = _one_sd(args, "pull_off_force_total", args.pull_off_force_total)
             F = per_length(args.pull_off_force_total, args.length, length_name="--length")

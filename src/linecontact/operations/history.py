@@ -22,6 +22,7 @@ from .. import tangential as tg
 from .._validation import check_array
 from ..cylinder import Cylinder
 from ..domain import check_si
+from ..errors import ParameterError
 from ..output import Table
 from ..tangential.history import _T_LIMIT
 from ._common import flag, si_columns, si_parameters
@@ -72,13 +73,16 @@ def _inputs(args: Inputs, nd: str, coulomb_nd: str, si: str):
     flags = flag(nd), flag(coulomb_nd)
     si_flag = flag(si)
     if len(given) != 1:
-        raise ValueError(f"give exactly one of {flags[0]}, {flags[1]} (Coulomb) or {si_flag} [N/m]")
+        raise ParameterError(
+            flags[0], f"give exactly one of {flags[0]}, {flags[1]} (Coulomb) or {si_flag} [N/m]"
+        )
     (state,) = given
     A, F_over_Eh, cyl = _normal_contact(args, coulomb)
     if cyl is None and state == si:
-        raise ValueError(
+        raise ParameterError(
+            si_flag,
             f"{si_flag} [N/m] is an SI input: give --radius, the materials and --load too, or "
-            f"use {flags[0]}"
+            f"use {flags[0]}",
         )
     # checked as given, before any conversion, so that a message names the flag typed
     if state in (nd, coulomb_nd) or state == "tangential_amplitude" or state == si:

@@ -65,9 +65,10 @@ def _cmd_normal(args: Inputs) -> Table:
     c: Any = None  # the SI result (SI inputs)
     if A is not None:
         if args.branch != "stable":
-            raise ValueError(
+            raise ParameterError(
+                "--branch",
                 "--branch applies to given loads (--F-over-Eh or --load): a contact half-width "
-                "fixes the state"
+                "fixes the state",
             )
         if cyl is None:
             r = normal_contact(A, rho, s, method=args.method, on_failure="report")
@@ -78,10 +79,11 @@ def _cmd_normal(args: Inputs) -> Table:
         given = "a_over_R"
     else:
         if args.method != "closed-form":
-            raise ValueError(
+            raise ParameterError(
+                "--method",
                 "--method collocation applies to given contact half-widths (--a-over-R, "
                 "--a-over-R-range or --a); the contact for a given load is found by the closed "
-                "form"
+                "form",
             )
         if cyl is None:
             F = np.asarray(args.F_over_Eh, float)
@@ -100,14 +102,16 @@ def _cmd_normal(args: Inputs) -> Table:
 
 def _cmd_normal_lj(args: Inputs, A, rho: float, s: float, cyl: Cylinder | None) -> Table:
     if A is not None:
-        raise ValueError(
+        raise ParameterError(
+            "--law",
             "--law lennard-jones finds the contact for given loads (--F-over-Eh or --load): "
-            "give loads, not contact half-widths"
+            "give loads, not contact half-widths",
         )
     if args.branch != "stable" or args.method != "closed-form":
-        raise ValueError(
+        raise ParameterError(
+            "--branch",
             "--branch and --method apply to --law dugdale: under the Lennard-Jones law the "
-            "contact for a load is the stable state beyond the pull-off"
+            "contact for a load is the stable state beyond the pull-off",
         )
     c: Any = None  # the SI result (SI inputs)
     if cyl is None:
@@ -298,34 +302,43 @@ def _check_lj_end(F_max: float | None, rho: float, s: float) -> None:
     with np.errstate(all="ignore"):
         limit = float(load_max_over_Eh(rho, s))
     if F_max > limit:
-        raise ValueError(
+        raise ParameterError(
+            "--F-max-over-Eh",
             f"--F-max-over-Eh={F_max!r} is beyond the loads the Lennard-Jones solver is asked "
             f"for, up to {limit:.6g} here (in its units; {LJ_LOAD_MAX:g} w sqrt(R/z0), ten "
             "times the rigid cylinder's pull-off); at such loads both laws approach Hertz, "
-            "and the Dugdale law (the default) gives the contact"
+            "and the Dugdale law (the default) gives the contact",
         )
 
 
 def _cmd_curve_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> Table:
     given = flags(args, "a_max_over_R", "a_max", "num", "num_noncontact")
     if given:
-        raise ValueError(
+        raise ParameterError(
+            given[0],
             f"{', '.join(given)} {'applies' if len(given) == 1 else 'apply'} to --law dugdale: "
             "the Lennard-Jones curve has the states of its continuation; give --F-max-over-Eh "
-            "(or --F-max [N/m]) for its end"
+            "(or --F-max [N/m]) for its end",
         )
     F_max = args.F_max_over_Eh
     if args.F_max is not None:
         if cyl is None:
-            raise ValueError("--F-max [N/m] is an SI input: give --radius and the materials too")
+            raise ParameterError(
+                "--F-max", "--F-max [N/m] is an SI input: give --radius and the materials too"
+            )
         if args.F_max_over_Eh is not None:
-            raise ValueError("give either --F-max-over-Eh or --F-max [N/m], not both")
+            raise ParameterError(
+                "--F-max-over-Eh", "give either --F-max-over-Eh or --F-max [N/m], not both"
+            )
         if not (np.isfinite(args.F_max) and args.F_max > 0):
             raise ParameterError(
                 "--F-max", f"--F-max must be a finite load > 0 [N/m], got {args.F_max!r}"
             )
     elif cyl is not None and F_max is not None:
-        raise ValueError("--F-max-over-Eh is nondimensional: with SI inputs give --F-max [N/m]")
+        raise ParameterError(
+            "--F-max-over-Eh",
+            "--F-max-over-Eh is nondimensional: with SI inputs give --F-max [N/m]",
+        )
     si: Any = None
     if cyl is None:
         _check_lj_end(F_max, rho, s)
@@ -382,9 +395,10 @@ def _cmd_curve(args: Inputs) -> Table:
     if args.law == "lennard-jones":
         return _cmd_curve_lj(args, rho, s, cyl)
     if args.F_max_over_Eh is not None or args.F_max is not None:
-        raise ValueError(
+        raise ParameterError(
+            "--F-max-over-Eh" if args.F_max_over_Eh is not None else "--F-max",
             "--F-max-over-Eh and --F-max apply to --law lennard-jones: the Dugdale curve ends "
-            "at --a-max-over-R (or --a-max [m])"
+            "at --a-max-over-R (or --a-max [m])",
         )
     for name, (_, default) in _POINTS.items():
         if args.get(name) is None:
@@ -393,7 +407,9 @@ def _cmd_curve(args: Inputs) -> Table:
         if not 2 <= v <= MAX_POINTS:
             raise ParameterError(flag, f"{flag} must be an integer in [2, {MAX_POINTS}], got {v!r}")
     if cyl is None and args.a_max is not None:
-        raise ValueError("--a-max [m] is an SI input: give --radius and the materials too")
+        raise ParameterError(
+            "--a-max", "--a-max [m] is an SI input: give --radius and the materials too"
+        )
     n = dict(num=args.num, num_noncontact=args.num_noncontact)
     si: Any = None
     if cyl is None or args.a_max is None:

@@ -54,9 +54,10 @@ def _cmd_push(args: Inputs) -> Table:
     nd_flags = (args.R_over_h2, args.sigma0_over_E, args.tau0_over_E, args.F_over_Eh2)
     nd = any(v is not None for v in (*nd_flags, args.H_over_R, args.Q_over_Eh2))
     if si and nd:
-        raise ValueError(
+        raise ParameterError(
+            "--R-over-h2",
             "give either the nondimensional groups (--R-over-h2, ...) or SI inputs "
-            "(--radius, ...), not both"
+            "(--radius, ...), not both",
         )
     cyl = None
     if not si:
@@ -64,7 +65,9 @@ def _cmd_push(args: Inputs) -> Table:
             args, "R_over_h2", "h1_over_h2", "sigma0_over_E", "tau0_over_E", "H_over_R", given=False
         )
         if missing:
-            raise ValueError(f"give {', '.join(missing)} (or SI inputs with --radius)")
+            raise ParameterError(
+                missing[0], f"give {', '.join(missing)} (or SI inputs with --radius)"
+            )
         rho, r, s, tau = args.R_over_h2, args.h1_over_h2, args.sigma0_over_E, args.tau0_over_E
         F = 0.0 if args.F_over_Eh2 is None else args.F_over_Eh2
         H = np.asarray(args.H_over_R, float)
@@ -74,13 +77,15 @@ def _cmd_push(args: Inputs) -> Table:
             _works_to_ranges(args)
         _check_receding(args)
         if args.tau0 is None:
-            raise ValueError("give the friction stress --tau0 [Pa]")
+            raise ParameterError("--tau0", "give the friction stress --tau0 [Pa]")
         if (args.height is None) == (args.tip_height is None):
-            raise ValueError("give exactly one of --height or --tip-height [m]")
+            raise ParameterError("--height", "give exactly one of --height or --tip-height [m]")
         if args.tip_height is not None and args.tip_friction is None:
             args.tip_friction = 0.0
         if args.tip_height is None and args.tip_friction is not None:
-            raise ValueError("--tip-friction goes with --tip-height (a tip), not --height")
+            raise ParameterError(
+                "--tip-friction", "--tip-friction goes with --tip-height (a tip), not --height"
+            )
         with warnings.catch_warnings():
             if any(w is not None for w in works):  # said for --z0 and the works already
                 warnings.filterwarnings(
@@ -196,9 +201,10 @@ def _works_to_ranges(args: Inputs) -> None:
     """The receding and advancing works of adhesion as sigma0, h2 and h1 (one sigma0)."""
     w1, w2 = args.work_of_adhesion_receding, args.work_of_adhesion_advancing
     if any(v is not None for v in (args.sigma0, args.h, args.h1)):
-        raise ValueError(
+        raise ParameterError(
+            "--z0",
             "give adhesion either as the two works of adhesion with --z0, or as --sigma0, "
-            "--h2 and --h1, not both"
+            "--h2 and --h1, not both",
         )
     missing = [
         flag
@@ -209,7 +215,10 @@ def _works_to_ranges(args: Inputs) -> None:
         if v is None
     ]
     if missing:  # the receding work is given (else this is not called)
-        raise ValueError(f"--work-of-adhesion-receding (W1) needs {' and '.join(missing)}")
+        raise ParameterError(
+            "--work-of-adhesion-receding",
+            f"--work-of-adhesion-receding (W1) needs {' and '.join(missing)}",
+        )
     for flag, v in (
         ("--work-of-adhesion-receding", w1),
         ("--work-of-adhesion-advancing", w2),
@@ -219,9 +228,10 @@ def _works_to_ranges(args: Inputs) -> None:
     ):  # each by itself before they are combined (a radius nan: not a bad ratio)
         positive(flag, v)
     if w2 > w1:
-        raise ValueError(
+        raise ParameterError(
+            "--work-of-adhesion-advancing",
             f"--work-of-adhesion-advancing must be <= --work-of-adhesion-receding (the "
-            f"hysteresis is not negative), got {w2!r} > {w1!r}"
+            f"hysteresis is not negative), got {w2!r} > {w1!r}",
         )
     # said for the flags typed (the cylinder is built from sigma0, h2 and h1)
     _plausible("--work-of-adhesion-receding", w1, key="work_of_adhesion")
@@ -242,22 +252,27 @@ def _check_receding(args: Inputs) -> None:
     receding work (or ``--h1``), the ranges (``--sigma0 --h2``) for ``--h1``.
     """
     if args.h1 is not None and args.h1_over_h2 is not None:
-        raise ValueError("give the receding range as --h1 [m] or as --h1-over-h2, not both")
+        raise ParameterError(
+            "--h1", "give the receding range as --h1 [m] or as --h1-over-h2, not both"
+        )
     if args.h1 is not None or args.h1_over_h2 is not None:
         return
     if args.work_of_adhesion is not None or args.z0 is not None:
         z0 = " and --z0 [m]" if args.z0 is None else ""
-        raise ValueError(
+        raise ParameterError(
+            "--work-of-adhesion-receding",
             "give the receding work of adhesion --work-of-adhesion-receding [J/m^2] (at least "
-            f"--work-of-adhesion-advancing){z0}, or the receding range --h1 [m]"
+            f"--work-of-adhesion-advancing){z0}, or the receding range --h1 [m]",
         )
     if args.sigma0 is not None or args.h is not None:
-        raise ValueError(
-            "give the receding (trailing-edge) range --h1 [m], at least --h2 (or --h1-over-h2)"
+        raise ParameterError(
+            "--h1",
+            "give the receding (trailing-edge) range --h1 [m], at least --h2 (or --h1-over-h2)",
         )
-    raise ValueError(
+    raise ParameterError(
+        "--sigma0",
         "give the adhesion: --sigma0 [Pa], --h2 and --h1 [m], or --work-of-adhesion-advancing, "
-        "--work-of-adhesion-receding [J/m^2] and --z0 [m]"
+        "--work-of-adhesion-receding [J/m^2] and --z0 [m]",
     )
 
 

@@ -50,22 +50,27 @@ def _setup(args: Inputs):
     si = si_given(args, extra=("h1", "tau0"))
     nd = any(v is not None for v in (args.R_over_h2, args.sigma0_over_E, args.tau0_over_E))
     if si and nd:
-        raise ValueError(
+        raise ParameterError(
+            "--R-over-h2",
             "give either the nondimensional groups (--R-over-h2, --sigma0-over-E, "
-            "--tau0-over-E) or SI inputs (--radius, ...), not both"
+            "--tau0-over-E) or SI inputs (--radius, ...), not both",
         )
     if args.h1_over_h2 is not None and args.h1 is not None:
-        raise ValueError("give the trailing range as --h1 [m] or as --h1-over-h2, not both")
+        raise ParameterError(
+            "--h1", "give the trailing range as --h1 [m] or as --h1-over-h2, not both"
+        )
     if args.h1_over_h2 is None and args.h1 is None:  # asked in the spelling of the others
-        raise ValueError(
+        raise ParameterError(
+            "--h1" if si else "--h1-over-h2",
             "give the trailing (receding) range --h1 [m] (or --h1-over-h2)"
             if si
-            else "give --h1-over-h2, the trailing over the leading range"
+            else "give --h1-over-h2, the trailing over the leading range",
         )
     if not si:
         if args.R_over_h2 is None or args.sigma0_over_E is None:
-            raise ValueError(
-                "give --R-over-h2, --h1-over-h2 and --sigma0-over-E (or SI inputs with --radius)"
+            raise ParameterError(
+                "--R-over-h2",
+                "give --R-over-h2, --h1-over-h2 and --sigma0-over-E (or SI inputs with --radius)",
             )
         return args.R_over_h2, args.h1_over_h2, args.sigma0_over_E, args.tau0_over_E, None
     cyl = cylinder(args, range_flag="--h2")

@@ -19,7 +19,7 @@ from .. import tangential as tg
 from .._validation import non_negative
 from ..cylinder import Cylinder
 from ..domain import DOMAIN, check
-from ..errors import NoEquilibriumError
+from ..errors import NoEquilibriumError, ParameterError
 from ..normal import contact_for_load, pull_off
 from ..output import Table
 from ._common import (
@@ -78,31 +78,38 @@ def _normal_contact(args: Inputs, coulomb: bool):
     groups = bool(_given(args, "R_over_h", "sigma0_over_E"))
     if si:
         if groups or args.a_over_R is not None or args.F_over_Eh is not None:
-            raise ValueError(
+            raise ParameterError(
+                "--R-over-h",
                 "--R-over-h, --sigma0-over-E, --a-over-R and --F-over-Eh are nondimensional: "
-                "with SI inputs give the normal load --load [N/m]"
+                "with SI inputs give the normal load --load [N/m]",
             )
         if args.load is None:
-            raise ValueError("SI inputs need the normal load --load [N/m]")
+            raise ParameterError("--load", "SI inputs need the normal load --load [N/m]")
         if coulomb and not _given(args, *_ADHESION_KEYS):
             args.h = args.radius  # no adhesion: the range h only sets an unused length scale
         return None, None, cylinder(args)
     if args.load is not None:
-        raise ValueError("--load [N/m] is an SI input: give --radius and the materials too")
+        raise ParameterError(
+            "--load", "--load [N/m] is an SI input: give --radius and the materials too"
+        )
     if groups:
         if args.a_over_R is not None:
-            raise ValueError(
+            raise ParameterError(
+                "--a-over-R",
                 "give either --a-over-R or the normal problem (--R-over-h, --sigma0-over-E, "
-                "--F-over-Eh), not both"
+                "--F-over-Eh), not both",
             )
         if args.R_over_h is None or args.sigma0_over_E is None:
-            raise ValueError("give both --R-over-h and --sigma0-over-E")
+            raise ParameterError("--R-over-h", "give both --R-over-h and --sigma0-over-E")
         if args.F_over_Eh is None:
-            raise ValueError("with --R-over-h and --sigma0-over-E give the normal load --F-over-Eh")
+            raise ParameterError(
+                "--R-over-h", "with --R-over-h and --sigma0-over-E give the normal load --F-over-Eh"
+            )
         if coulomb and args.sigma0_over_E != 0:
-            raise ValueError(
+            raise ParameterError(
+                "--sigma0-over-E",
                 "Coulomb friction is the counterpart for the non-adhesive Hertz contact: use "
-                "--sigma0-over-E 0 (or --friction constant)"
+                "--sigma0-over-E 0 (or --friction constant)",
             )
         try:
             c = contact_for_load(args.F_over_Eh, args.R_over_h, args.sigma0_over_E)
@@ -115,7 +122,7 @@ def _normal_contact(args: Inputs, coulomb: bool):
             ) from None
         return c.a_over_R, args.F_over_Eh, None
     if args.F_over_Eh is not None:
-        raise ValueError("--F-over-Eh needs --R-over-h and --sigma0-over-E")
+        raise ParameterError("--F-over-Eh", "--F-over-Eh needs --R-over-h and --sigma0-over-E")
     return args.a_over_R, None, None
 
 
@@ -128,34 +135,46 @@ def _check_friction(
     """The friction flags against the law; ``coulomb_load`` is the Coulomb-only load flag."""
     if coulomb:
         if _given(args, "tau0_over_E", "tau0"):
-            raise ValueError(
-                "--tau0-over-E and --tau0 are for --friction constant; Coulomb friction takes --mu"
+            raise ParameterError(
+                "--tau0-over-E",
+                "--tau0-over-E and --tau0 are for --friction constant; Coulomb friction takes --mu",
             )
         if args.mu is None:
-            raise ValueError("--friction coulomb needs the friction coefficient --mu")
+            raise ParameterError(
+                "--friction", "--friction coulomb needs the friction coefficient --mu"
+            )
     else:
         if args.mu is not None:
-            raise ValueError("--mu is the Coulomb friction coefficient: add --friction coulomb")
+            raise ParameterError(
+                "--mu", "--mu is the Coulomb friction coefficient: add --friction coulomb"
+            )
         if getattr(args, coulomb_load) is not None:
-            raise ValueError(f"{flag(coulomb_load)} is for --friction coulomb; use {flag(load)}")
+            raise ParameterError(
+                flag(coulomb_load),
+                f"{flag(coulomb_load)} is for --friction coulomb; use {flag(load)}",
+            )
 
 
 def _friction_nd(args: Inputs, coulomb: bool, A) -> dict[str, Any]:
     """The friction of the groups checked: Coulomb's needs ``a/R``, the constant tau0/E."""
     if coulomb:
         if A is None:
-            raise ValueError(
+            raise ParameterError(
+                "--a-over-R",
                 "Coulomb friction needs the Hertz half-width: give --a-over-R (or --R-over-h "
-                "--sigma0-over-E 0 --F-over-Eh, or SI inputs)"
+                "--sigma0-over-E 0 --F-over-Eh, or SI inputs)",
             )
         return {}
     if args.tau0 is not None:
-        raise ValueError(
+        raise ParameterError(
+            "--tau0",
             "--tau0 [Pa] is an SI input: give --radius, the materials and --load too, or use "
-            "--tau0-over-E"
+            "--tau0-over-E",
         )
     if args.tau0_over_E is None:
-        raise ValueError("give the friction stress --tau0-over-E (or --friction coulomb --mu)")
+        raise ParameterError(
+            "--tau0-over-E", "give the friction stress --tau0-over-E (or --friction coulomb --mu)"
+        )
     return {}
 
 
@@ -174,7 +193,7 @@ def _si_friction(args: Inputs, coulomb: bool, cyl: Cylinder) -> dict[str, Any]:
     if coulomb:
         return dict(friction_coefficient=args.mu)
     if len(_given(args, "tau0", "tau0_over_E")) != 1:
-        raise ValueError("give the friction stress as --tau0 [Pa] or --tau0-over-E")
+        raise ParameterError("--tau0", "give the friction stress as --tau0 [Pa] or --tau0-over-E")
     return dict(
         friction_stress=args.tau0 if args.tau0 is not None else cyl.in_si(args.tau0_over_E, "E")
     )
@@ -185,16 +204,18 @@ def _run(args: Inputs, rolling: bool) -> Table:
     _check_friction(args, coulomb)
     states = _given(args, "d_over_a", "T_over_Ea", "T_over_muF", "tangential_load")
     if len(states) != 1:
-        raise ValueError(
+        raise ParameterError(
+            "--d-over-a",
             "give exactly one of --d-over-a, --T-over-Ea, --T-over-muF (Coulomb) or "
-            "--tangential-load [N/m] (SI)"
+            "--tangential-load [N/m] (SI)",
         )
     (state,) = states
     A, F_over_Eh, cyl = _normal_contact(args, coulomb)
     if cyl is None and state == "tangential_load":
-        raise ValueError(
+        raise ParameterError(
+            "--tangential-load",
             "--tangential-load [N/m] is an SI input: give --radius, the materials and --load "
-            "too, or use --T-over-Ea"
+            "too, or use --T-over-Ea",
         )
     values = np.asarray(getattr(args, state), float)
     if state != "d_over_a":
