@@ -23,6 +23,7 @@ FLOORS = {
         "linecontact._fingerprint",
         "linecontact._progress",
         "linecontact._docs",
+        "linecontact._threads",
         "linecontact.errors",
         "linecontact._validation",
         "linecontact.domain",

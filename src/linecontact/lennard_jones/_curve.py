@@ -16,6 +16,7 @@ from typing import ClassVar
 import numpy as np
 from numpy.typing import NDArray
 
+from .._threads import on_one_blas_thread
 from ..errors import NoEquilibriumError
 from ..results import Result
 from . import _branch as _b
@@ -223,6 +224,7 @@ class LJContinuation:
         self._states = states
         return states
 
+    @on_one_blas_thread
     def curve(self, F_max: float | None = None) -> LJCurve:
         """The load curve from far away through its turning points to ``F_max``.
 
@@ -254,6 +256,7 @@ class LJContinuation:
             pull_off=_pull_off_of(mu, po, jump),
         )
 
+    @on_one_blas_thread
     def pull_off(self) -> LJPullOff:
         """The pull-off force and the jump-in load (as :func:`lj_pull_off`)."""
         if self.mu > MU_SELF_CONSISTENT:
@@ -261,6 +264,7 @@ class LJContinuation:
         po, jump = self._pull_off_states()
         return _pull_off_of(self.mu, po, jump)
 
+    @on_one_blas_thread
     def state(self, central_gap_over_z0: float) -> LJState:
         """The equilibrium state at the central gap ``zeta0`` (as :func:`lj_state`)."""
         from .. import domain as _domain
@@ -303,6 +307,7 @@ class LJContinuation:
         t = _solve(z, mu, _edge_meshes(grid, near.edge), near.zeta)
         return _state_of(near if t is None else t, mu)
 
+    @on_one_blas_thread
     def contact_for_load(self, F: float) -> LJState:
         """The state on the stable contact branch carrying the load ``F``.
 

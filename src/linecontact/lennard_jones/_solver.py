@@ -11,6 +11,7 @@ from __future__ import annotations
 import functools
 import math
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
@@ -289,18 +290,48 @@ def _law(zeta: NDArray) -> tuple[NDArray, NDArray]:
     return -(8.0 / 3.0) * (z3 - z9), (8.0 / 3.0) * (3.0 * z3 - 9.0 * z9) / zeta
 
 
+@functools.lru_cache(maxsize=1)
+def _lapack() -> tuple[Any, Any]:
+    """LAPACK's ``dgetrf`` and ``dgetrs``, called directly.
+
+    The thousands of small solves of a curve spent a tenth of their time in the checks of
+    ``scipy.linalg.lu_factor`` and ``lu_solve`` around the same two routines (issue 37).
+    """
+    from scipy.linalg import lapack  # here: ``import linecontact`` does not import scipy
+
+    return lapack.dgetrf, lapack.dgetrs
+
+
+def _lu_factor(J: NDArray) -> tuple[NDArray, NDArray]:
+    """The LU factors of ``J`` (overwritten), as ``scipy.linalg.lu_factor`` gives them.
+
+    A singular ``J`` gives factors whose solves are not finite: the chord Newton's residual
+    then says so (:func:`_iterate`).
+    """
+    lu, piv, info = _lapack()[0](J, overwrite_a=True)
+    if info < 0:  # pragma: no cover - an argument LAPACK refuses: a bug here, not the input's
+        raise ValueError(f"dgetrf: argument {-info} is illegal")
+    return lu, piv
+
+
+def _lu_solve(factors: tuple[NDArray, NDArray], b: NDArray) -> NDArray:
+    """``J^-1 b`` from :func:`_lu_factor`'s factors (``scipy.linalg.lu_solve``'s routine)."""
+    x, info = _lapack()[1](factors[0], factors[1], b)
+    if info < 0:  # pragma: no cover - as in _lu_factor
+        raise ValueError(f"dgetrs: argument {-info} is illegal")
+    return x
+
+
 def _factor(mu: float, mesh: _Mesh, dP: NDArray) -> tuple:
     r"""``(lu, J^-1 1)`` of :math:`J = I + (2\mu/\pi) K \mathrm{diag}(P')`, cached on the mesh.
 
     The next state reuses it (a neighbour's Jacobian only speeds convergence; the residual
     decides).
     """
-    import scipy.linalg  # here: ``import linecontact`` does not import scipy
-
     J = (2.0 * mu / math.pi) * mesh.K * dP[None, :]
     J[np.diag_indices_from(J)] += 1.0
-    lu = scipy.linalg.lu_factor(J, check_finite=False)
-    out = (lu, scipy.linalg.lu_solve(lu, np.ones(J.shape[0]), check_finite=False))
+    lu = _lu_factor(J)
+    out = (lu, _lu_solve(lu, np.ones(J.shape[0])))
     mesh.lu.clear()
     mesh.lu[mu] = out
     return out
@@ -319,8 +350,6 @@ def _iterate(
     ``(zeta, zeta0, residual, ok)``; the residual is the largest of the gap equation's relative to
     the gap (and of the edge condition).
     """
-    import scipy.linalg
-
     nodes, K = mesh.nodes, mesh.K
     half = 0.5 * nodes * nodes
     c = 2.0 * mu / math.pi
@@ -343,7 +372,7 @@ def _iterate(
         if cached is None:
             cached, fresh = _factor(mu, mesh, dP), True
         lu, y2 = cached
-        y1 = scipy.linalg.lu_solve(lu, -r, check_finite=False)
+        y1 = _lu_solve(lu, -r)
         if edge is None:
             dz, d0 = y1, 0.0
         else:  # J dz - d0 = -r ; (1 - t) dz_i + t dz_(i+1) = -q
