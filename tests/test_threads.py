@@ -82,3 +82,38 @@ def test_the_direct_lapack_calls_solve_as_scipy_does():
     with _threads.one_blas_thread():  # nested limits give back in order
         with _threads.one_blas_thread():
             assert _blas_threads() == [1] * len(_blas_threads())
+
+
+def test_overlapping_solves_of_several_threads_give_the_callers_settings_back():
+    """Threads that solve at once share the limit: none leaves the process on one thread.
+
+    The first thread enters, the second enters, the first leaves, the second leaves: each
+    limit given back on its own would leave the process with the second's "before" (one
+    thread) at the end.
+    """
+    import threading
+
+    import scipy.linalg  # noqa: F401
+
+    before = _blas_threads()
+    first_in, second_in, first_out = threading.Event(), threading.Event(), threading.Event()
+
+    def first() -> None:
+        with _threads.one_blas_thread():
+            first_in.set()
+            second_in.wait(10)
+        first_out.set()
+
+    def second() -> None:
+        first_in.wait(10)
+        with _threads.one_blas_thread():
+            second_in.set()
+            first_out.wait(10)
+
+    workers = [threading.Thread(target=first), threading.Thread(target=second)]
+    for w in workers:
+        w.start()
+    for w in workers:
+        w.join()
+    assert first_out.is_set()
+    assert _blas_threads() == before
