@@ -26,14 +26,12 @@ _API = (
     "t = time.perf_counter(); L.{call}; print(time.perf_counter() - t)\n"
 )
 
-#: mu = w sqrt(R/z0)/(E z0) of each case, and the Dugdale groups with that mu (R/h, S)
+#: the Python API's cases (mu = w sqrt(R/z0)/(E z0)) and the command line's (its groups)
 _CASES_API = [
     (f"lj_{what}({mu})", f"{what} mu={mu}") for what in ("pull_off", "curve") for mu in (1, 30, 400)
 ]
-_CASES_CLI = [
-    (["pulloff", "--R-over-h", "100", "--sigma0-over-E", "0.01", "--law", "lennard-jones"], "CLI pulloff"),
-    (["curve", "--R-over-h", "100", "--sigma0-over-E", "0.01", "--law", "lennard-jones"], "CLI curve"),
-]
+_GROUPS = ["--R-over-h", "100", "--sigma0-over-E", "0.01", "--law", "lennard-jones"]
+_CASES_CLI = [(["pulloff", *_GROUPS], "CLI pulloff"), (["curve", *_GROUPS], "CLI curve")]
 
 
 def _env() -> dict[str, str]:

@@ -28,6 +28,7 @@ from ._validation import (
     point_text,
 )
 from .cylinder import _check_cylinder_si, _plausible
+from .errors import ParameterError
 from .materials import MAUGIS_STRENGTH
 
 __all__ = [
@@ -270,13 +271,14 @@ def _work_from_pull_off(
         return _work_in_domain(np.where(bad, np.nan, w), "nan", E, "N/m", pull_off_force=F)
     if np.any(bad):
         _, at = first_point(bad, F=F, R=R, E=E, z0=z0, lo=F_lo, hi=F_hi)
-        raise ValueError(
+        raise ParameterError(
+            "pull_off_force",
             f"pull_off_force={at['F']!r} N/m cannot be produced by any work of "
             f"adhesion at radius={at['R']!r} m, modulus="
             f"{at['E']!r} Pa, equilibrium_spacing={at['z0']!r}"
             f" m: the reachable pull-off forces are ({at['lo']:.6g}, "
             f"{at['hi']:.6g}) N/m (an adhesive stress from {_S_MIN:g} to {_S_MAX:g} times the "
-            "modulus)"
+            "modulus)",
         )
     # the pull-off force falls (grows in magnitude) with w
     w = _bisect_log(lambda w: F - pull_off_force_at(R, E, w, z0), w_lo, w_hi, rtol)
@@ -302,10 +304,11 @@ def _work_in_domain(
         return np.where(bad, np.nan, w)
     name = next(iter(given))
     _, at = first_point(bad, w=w, v=given[name], E=E)
-    raise ValueError(
+    raise ParameterError(
+        name,
         f"{name}={at['v']!r} {unit} needs a work of adhesion of {at['w']:.3g} J/m^2 at modulus="
         f"{at['E']!r} Pa, beyond the domain of the solvers (at most {hi:g} J/m^2): is the "
-        "modulus in Pa?"
+        "modulus in Pa?",
     )
 
 

@@ -52,7 +52,7 @@ from ._pull_off_model import (
 from ._validation import FailurePolicy, broadcast, check_array, failure_policy, first_point
 from .cylinder import _check_cylinder_si, _plausible, _warn_widths
 from .cylinder._checks import _small_strain_in_si, _warn_small_strain
-from .errors import ModelValidityWarning
+from .errors import ModelValidityWarning, ParameterError
 from .fits import AdhesionFit, ShearStrengthFit, fit_pull_off, fit_shear_strength
 from .uncertainty import Estimate, propagate
 
@@ -153,12 +153,13 @@ def _work_from_width(
         a = np.where(bad, np.where(np.isfinite(a_hi), 0.5 * (a_lo + a_hi), 2 * a_lo + 1e-300), a)
     if np.any(bad) and not nan_mode:
         _, at = first_point(bad, a=a, F=F, lo=a_lo, hi=a_hi)
-        raise ValueError(
+        raise ParameterError(
+            "half_width",
             f"half_width={at['a']!r} m at normal_load="
             f"{at['F']!r} N/m cannot be produced by any work of adhesion: the "
             f"reachable half-widths are ({at['lo']:.6g}, "
             f"{at['hi']:.6g}) m (about Hertz's, without adhesion, at the "
-            "low end)"
+            "low end)",
         )
     w = _bisect_log(lambda w: width(w) - a, w_lo, w_hi)
     # under a tension the width jumps from none (pulled off) to that at pull-off: a width
@@ -169,11 +170,12 @@ def _work_from_width(
         return _work_in_domain(np.where(bad | off, np.nan, w), "nan", E, "m", half_width=a)
     if np.any(off):
         _, at = first_point(off, a=a, F=F, got=got)
-        raise ValueError(
+        raise ParameterError(
+            "half_width",
             f"half_width={at['a']!r} m at normal_load="
             f"{at['F']!r} N/m cannot be produced by any work of adhesion: the "
             f"narrowest stable contact carrying this load is {at['got']:.6g} m "
-            "wide (at its pull-off)"
+            "wide (at its pull-off)",
         )
     return _work_in_domain(w, "raise", E, "m", half_width=a)
 

@@ -28,6 +28,8 @@ from typing import Literal
 import numpy as np
 from numpy.typing import NDArray
 
+from .errors import ParameterError
+
 __all__ = ["KINDS", "per_length", "read_columns", "read_measurements"]
 
 #: the kinds of measurement file: kind -> {quantity: (kind of unit, required, with_sd)}
@@ -326,7 +328,9 @@ def read_measurements(
         and math.isfinite(length)
         and length > 0
     ):
-        raise ValueError(f"{length_name} must be a finite number > 0, got {length!r}")
+        raise ParameterError(
+            length_name, f"{length_name} must be a finite number > 0, got {length!r}"
+        )
     label = repr(os.fspath(path)) if source is None else source
     cols, _ = read_columns(path, KINDS[kind], length, source=label, length_name=length_name)
     lines = cols.pop("_line")
@@ -368,5 +372,7 @@ def per_length(total: float, length: float, *, length_name: str = "length") -> f
     -1.5
     """
     if not (math.isfinite(length) and length > 0):
-        raise ValueError(f"{length_name} must be a finite length > 0 [m], got {length!r}")
+        raise ParameterError(
+            length_name, f"{length_name} must be a finite length > 0 [m], got {length!r}"
+        )
     return total / length

@@ -77,10 +77,23 @@ def _modulus(args: Any) -> tuple[float, dict[str, Any]]:
 
 
 def _read(args: Any, kind: Any) -> dict[str, np.ndarray]:
-    """The measurements of ``--data`` (:func:`linecontact.measurements.read_measurements`)."""
-    return read_measurements(
-        args.data, kind, length=args.length, source=f"--data {args.data!r}", length_name="--length"
-    )
+    """The measurements of ``--data`` (:func:`linecontact.measurements.read_measurements`).
+
+    A file that cannot be read or is refused is the fault of ``--data`` (the message names
+    the file, the row and the column); a bad ``--length`` names itself.
+    """
+    try:
+        return read_measurements(
+            args.data,
+            kind,
+            length=args.length,
+            source=f"--data {args.data!r}",
+            length_name="--length",
+        )
+    except ParameterError:
+        raise
+    except ValueError as exc:
+        raise ParameterError("--data", str(exc)) from None
 
 
 def _one_sd(args, name: str, value: float | None) -> float:

@@ -219,14 +219,19 @@ def _flag(op: Any, said_as: dict[str, str], refused: list[str], message: str) ->
     """The flag of the parameter an error names: a ParameterError's own, else its first flag.
 
     The library's name (``normal_load``) is the operation's parameter it stands for in this
-    call (``said_as``), or of the same name, or of the flag the command line gives it.
+    call (``said_as``: a name, or the flags that make it, the first of which is the field:
+    ``--pull-off-force-total / --length``), or of the same name, or of the flag the command
+    line gives it. The first flag of the message only for an error that names nothing.
     """
     from ..operations._messages import API_FLAGS
 
     for name in refused:
         key = name.lstrip("-").replace("-", "_")
-        for candidate in (said_as.get(key), key, API_FLAGS.get(key, "")[2:].replace("-", "_")):
-            if not candidate or candidate.startswith("--"):
+        said = said_as.get(key) or ""
+        if said.startswith("--"):  # said as flags: the first is the one given
+            said = said.split()[0][2:].replace("-", "_")
+        for candidate in (said, key, API_FLAGS.get(key, "")[2:].replace("-", "_")):
+            if not candidate:
                 continue
             try:
                 return str(op.parameter(candidate).option)
