@@ -536,9 +536,10 @@ def test_the_field_is_the_errors_own_not_the_first_flag_of_its_message():
     from linecontact import operations
     from linecontact.web._workers import _flag
 
-    op = operations.get("cycle")
-    message = "--load 1 N/m gives a contact too narrow for amplitude 0.1"
-    assert _flag(op, {}, ["amplitude"], message) == "--tangential-amplitude"  # library name
-    assert _flag(op, {}, ["tau0"], message) == "--tau0"  # the operation's own
-    assert _flag(op, {}, [], message) == "--load"  # no name carried: the message's flag
-    assert _flag(op, {}, ["no_such_name"], message) == "--load"
+    op = operations.get("cycle")  # an error of "--load 1 N/m gives a contact too narrow ..."
+    assert _flag(op, {}, ["amplitude"]) == "--tangential-amplitude"  # the library's name
+    assert _flag(op, {}, ["tau0"]) == "--tau0"  # the operation's own
+    assert _flag(op, {"pull_off_force": "--tau0 / --length"}, ["pull_off_force"]) == "--tau0"
+    # no name carried (or none of the operation's): no field guessed from the words
+    assert _flag(op, {}, []) is None
+    assert _flag(op, {}, ["no_such_name"]) is None

@@ -183,7 +183,7 @@ def _call(command: str, values: dict[str, Any]) -> Outcome:
     )
     seconds = time.perf_counter() - start
     if status != 200 or not got:
-        flag = _flag(op, inputs.said_as, refused, message)
+        flag = _flag(op, inputs.said_as, refused)
         return Outcome(status, flag=flag, message=message, warnings=said)
     return Outcome(200, body=render(got[0], "json"), warnings=said, seconds=seconds)
 
@@ -215,13 +215,14 @@ def _guarded(work: Any, say: Any, refused: list[str]) -> tuple[int, str, list[st
     return status, message, said
 
 
-def _flag(op: Any, said_as: dict[str, str], refused: list[str], message: str) -> str | None:
-    """The flag of the parameter an error names: a ParameterError's own, else its first flag.
+def _flag(op: Any, said_as: dict[str, str], refused: list[str]) -> str | None:
+    """The flag of the parameter an error names (a ParameterError's own), or None.
 
     The library's name (``normal_load``) is the operation's parameter it stands for in this
     call (``said_as``: a name, or the flags that make it, the first of which is the field:
     ``--pull-off-force-total / --length``), or of the same name, or of the flag the command
-    line gives it. The first flag of the message only for an error that names nothing.
+    line gives it. An error that names none is said without a field: no flag is guessed
+    from its words.
     """
     from ..operations._messages import API_FLAGS
 
@@ -237,12 +238,7 @@ def _flag(op: Any, said_as: dict[str, str], refused: list[str], message: str) ->
                 return str(op.parameter(candidate).option)
             except ValueError:  # no parameter of the operation
                 continue
-    return _flag_of(message)
-
-
-def _flag_of(message: str) -> str | None:
-    m = re.search(r"(--[A-Za-z][\w-]*)", message)
-    return m.group(1) if m else None
+    return None  # an error that names no parameter: its message stands alone, no field
 
 
 def _serve(conn: Any) -> None:  # pragma: no cover - runs in the worker process
