@@ -246,6 +246,16 @@ def _cmd_pulloff_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) ->
     return table
 
 
+#: The record's key of each SI field of the pull-off (``Cylinder.pull_off``), in their order,
+#: and of its total over the fibre (with ``--length``): the sweep's blocks write the same.
+PULL_OFF_KEYS = {
+    "pull_off_force": "F_pulloff_N_per_m",
+    "contact_half_width_at_pull_off": "a_at_pulloff_m",
+    "zero_width_force": "F_zero_width_N_per_m",
+}
+PULL_OFF_TOTALS = {"pull_off_force": "F_pulloff_total_N"}
+
+
 def _cmd_pulloff(args: Inputs) -> Table:
     rho, s, cyl = groups(args)
     if args.law == "lennard-jones":
@@ -258,11 +268,8 @@ def _cmd_pulloff(args: Inputs) -> Table:
     extra: dict[str, Any] = {}
     show = ["F_pulloff_over_Eh", "a_over_R_at_pulloff", "mechanism", "F_zero_width_over_Eh"]
     if cyl is not None:
-        names = {"pull_off_force": "F_pulloff_N_per_m"}
-        names["contact_half_width_at_pull_off"] = "a_at_pulloff_m"
-        names["zero_width_force"] = "F_zero_width_N_per_m"
-        totals = {"pull_off_force": "F_pulloff_total_N"}
-        cols, shown = si_shown(args, si, names, totals, ["F_pulloff_N_per_m", "a_at_pulloff_m"])
+        shown_si = ["F_pulloff_N_per_m", "a_at_pulloff_m"]
+        cols, shown = si_shown(args, si, PULL_OFF_KEYS, PULL_OFF_TOTALS, shown_si)
         extra.update(cols)
         show += shown
     # a width below 1e-12 R (a zero-width pull-off's, 1e-24 R and less) prints as 0 in a

@@ -3,8 +3,12 @@
 ``linecontact pulloff`` under the Dugdale law is a closed form: a block of a million points
 is one call of :func:`linecontact.pull_off`. Each value of each swept flag is first checked
 as the command line checks it (the cylinder built with that value alone, its warnings kept);
-the records are then built as ``linecontact pulloff`` builds them (the same keys, the same
-units), which ``tests/test_sweep.py`` checks against the point-by-point path.
+the records are then built as ``linecontact pulloff`` builds them: the SI values by the
+scales the result declares (:func:`linecontact.units.to_si`), under the keys the operation
+writes (``PULL_OFF_KEYS``), which ``tests/test_sweep.py`` checks against the point-by-point
+path. (The composite modulus and the Dugdale step of ``(w, z0)`` are the library's
+functions; a body whose parameters are arrays of points would make this module one call of
+the SI layer, issue 32.)
 """
 
 from __future__ import annotations
@@ -22,7 +26,9 @@ from ..domain import DOMAIN
 from ..normal import pull_off
 from ..operations._common import _presets, groups
 from ..operations._messages import spell
+from ..operations.normal import PULL_OFF_KEYS, PULL_OFF_TOTALS
 from ..output import table_from_result, unit_of
+from ..units import Scales, to_si
 from ._plan import Plan
 from ._plan import template as _template
 
@@ -153,11 +159,9 @@ def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
         if item not in said:
             said.append(item)
     extra: dict[str, Any] = {}
-    if si:
-        Eh = E * h
-        extra["F_pulloff_N_per_m"] = np.multiply(r.F_pulloff_over_Eh, Eh)
-        extra["a_at_pulloff_m"] = np.multiply(r.a_over_R_at_pulloff, R)
-        extra["F_zero_width_N_per_m"] = np.multiply(r.F_zero_width_over_Eh, Eh)
+    if si:  # the SI form the result declares, under the keys the operation writes
+        in_si = to_si(r, Scales(R=R, E=E, h=h))
+        extra.update({key: in_si[name] for name, key in PULL_OFF_KEYS.items()})
         zero = np.asarray(r.mechanism) == "zero-width"
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
@@ -170,8 +174,10 @@ def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
             if item not in said:
                 said.append(item)
         length = get("length")
-        if length is not None:
-            extra["F_pulloff_total_N"] = np.multiply(extra["F_pulloff_N_per_m"], length)
+        if length is not None:  # each field over the fibre, as Cylinder's results give it
+            extra.update(
+                {key: np.multiply(in_si[name], length) for name, key in PULL_OFF_TOTALS.items()}
+            )
     table = table_from_result(r, columns=extra, drop=r.inputs)  # inputs: parameters
     cols = {k: np.asarray(c) for k, c in table.columns.items()}
     idx = np.flatnonzero(ok)
