@@ -122,9 +122,10 @@ def test_a_problem_not_written_for_the_law_is_refused_naming_both(problem, call)
 
 
 def test_the_table_of_problems_is_the_cylinders_methods():
-    for problem, laws in Cylinder.WRITTEN.items():
+    for problem, kinds in Cylinder.WRITTEN.items():
         assert callable(getattr(Cylinder, problem))
-        assert Dugdale in laws
+        assert Dugdale in kinds["round"]
+        assert set(kinds) <= {"round", "polygon"}
 
 
 def test_a_law_is_given_once():

@@ -30,6 +30,7 @@ FLOORS = {
         "linecontact.results",
         "linecontact.units",
         "linecontact.output",
+        "linecontact.geometry",
     ],
     "core": [
         "linecontact._numerics",
@@ -48,6 +49,7 @@ FLOORS = {
         "linecontact.lennard_jones_groups",
         "linecontact.laws",
         "linecontact.adhesion_map",
+        "linecontact.facet",
     ],
     "si": [
         "linecontact.cylinder",

@@ -42,7 +42,7 @@ RULES = {
         [rf"\b4{_NUM}\s*/\s*(?:\w+\.)?pi\b.*sqrt\(2{_NUM}\s*\*"],
     ),
     "JKR load": (
-        ("closed_forms/jkr.py", ("_jkr", "_jkr_half_width")),
+        ("closed_forms/jkr.py", ("_strip_pull_off", "_jkr_half_width")),
         [rf"sqrt\(2{_NUM}\s*\*\s*(?:\w+\.)?pi\s*\*"],
     ),
     "JKR pull-off": (

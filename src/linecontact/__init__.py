@@ -15,6 +15,10 @@ length over ``E h``, stresses over ``E``; compressive load positive):
   ``laws.lennard_jones`` have the same ``pull_off``, ``contact_for_load`` and ``load_curve``
   (the Lennard-Jones law of Eq. 1); in SI units a value: :class:`Dugdale`,
   :class:`LennardJones`, the ``adhesion`` of a :class:`Cylinder`;
+- :func:`facet_contact`, :func:`facet_contact_for_load`, :func:`facet_pull_off` -- a faceted
+  wire (a regular polygon with rounded corners) on its facet (:mod:`linecontact.facet`); in SI
+  units the :class:`Cylinder` with ``cross_section=Polygon(sides, corner_radius)``
+  (:mod:`linecontact.geometry`: :class:`Round`, :class:`Polygon`);
 - :mod:`linecontact.closed_forms` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14);
 - :mod:`linecontact.sie` -- the Gauss--Chebyshev singular-integral core;
 - :func:`fit_pull_off`, :func:`work_of_adhesion_from_pull_off`,
@@ -41,6 +45,14 @@ with _imports_interruptible():
     from .closed_forms import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
     from .cylinder import Cylinder
     from .errors import ConvergenceError, CouplingWarning, ModelValidityWarning, NoEquilibriumError
+    from .facet import (
+        FacetContact,
+        FacetPullOff,
+        facet_contact,
+        facet_contact_for_load,
+        facet_pull_off,
+    )
+    from .geometry import Polygon, Round
     from .inverse import (
         fit_pull_off,
         propagate,
@@ -94,12 +106,16 @@ __all__ = [
     "CouplingWarning",
     "Cylinder",
     "Dugdale",
+    "FacetContact",
+    "FacetPullOff",
     "LennardJones",
     "ModelValidityWarning",
     "NoEquilibriumError",
     "NormalContact",
+    "Polygon",
     "PullOff",
     "Push",
+    "Round",
     "SlidingContact",
     "SlidingPullOff",
     "TipPush",
@@ -112,6 +128,9 @@ __all__ = [
     "cyclic_loss_coulomb",
     "dundurs_beta",
     "equilibria",
+    "facet_contact",
+    "facet_contact_for_load",
+    "facet_pull_off",
     "fit_pull_off",
     "hertz_load",
     "jkr_load",

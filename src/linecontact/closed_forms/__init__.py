@@ -65,6 +65,9 @@ from .jkr import (
     _rigid_pull_off as _rigid_pull_off,
 )
 from .jkr import (
+    _strip_pull_off as _strip_pull_off,
+)
+from .jkr import (
     jkr_load,
 )
 from .lennard_jones_rigid import (

@@ -48,7 +48,16 @@ def jkr_load(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike)
 
 def _jkr(A, rho, s):
     r"""JKR line contact: :math:`F/(Eh) = (\pi/4) A^2 \rho - \sqrt{2\pi s \rho A}`."""
-    return np.pi / 4 * A * A * rho - np.sqrt(2 * np.pi * s * rho * A)
+    return np.pi / 4 * A * A * rho + _strip_pull_off(A, rho, s)
+
+
+def _strip_pull_off(A, rho, s):
+    r"""The JKR pull-off of a flat strip of half-width ``A R``: :math:`-\sqrt{2\pi s\rho A}`.
+
+    In SI units :math:`-\sqrt{2\pi a E w}` (Kendall's flat punch in plane strain; the
+    adhesive term of the JKR line contact), over :math:`E h` with :math:`w = \sigma_0 h`.
+    """
+    return -np.sqrt(2 * np.pi * s * rho * A)
 
 
 def _jkr_pull_off(rho, s):

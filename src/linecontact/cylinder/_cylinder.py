@@ -1,4 +1,4 @@
-""":class:`Cylinder`: radius, modulus, adhesion, Dundurs' beta; normal contact and pull-off."""
+""":class:`Cylinder`: radius, modulus, adhesion, Dundurs' beta, cross-section; normal contact."""
 
 from __future__ import annotations
 
@@ -21,6 +21,7 @@ from .._validation import (
     scalar,
 )
 from ..errors import CouplingWarning, NoEquilibriumError, UnitsWarning
+from ..geometry import ROUND, CrossSection
 from ..laws._values import Dugdale, Law, LennardJones
 from ..materials import (
     BETA_WARN,
@@ -29,7 +30,7 @@ from ..materials import (
     dundurs_beta,
 )
 from ..units import Scales, to_si
-from . import _problems, _sliding
+from . import _facet, _lj_problems, _problems, _sliding
 from ._checks import (
     _S_LJ,
     _ZERO_WIDTH,
@@ -44,7 +45,6 @@ from ._checks import (
 )
 from ._results import (
     CylinderContact,
-    CylinderLennardJonesContact,
     CylinderLennardJonesLoadCurve,
     CylinderLennardJonesPullOff,
     CylinderLoadCurve,
@@ -78,6 +78,11 @@ class Cylinder:
         The adhesion law and its SI parameters.
     dundurs_beta : float
         Dundurs' :math:`\beta = -B/A` (0 when only the composite modulus was given).
+    cross_section : CrossSection
+        :class:`~linecontact.geometry.Round` (the default) or a
+        :class:`~linecontact.geometry.Polygon` on its facet (``radius`` its circumradius):
+        :meth:`shaped` gives the same wire with another; the problems written for a polygon
+        are :meth:`contact` and :meth:`pull_off` under the Dugdale law (``WRITTEN``).
     cohesive_stress, adhesion_range : float
         ``sigma0`` [Pa] (0: no adhesion) and ``h`` [m] of the law's Dugdale step.
 
@@ -96,6 +101,7 @@ class Cylinder:
     modulus: float
     adhesion: Law
     dundurs_beta: float = 0.0
+    cross_section: CrossSection = ROUND
 
     @property
     def cohesive_stress(self) -> float:
@@ -117,7 +123,14 @@ class Cylinder:
         )
 
     @classmethod
-    def _made(cls, radius: float, modulus: float, adhesion: Law, beta: float) -> Cylinder:
+    def _made(
+        cls,
+        radius: float,
+        modulus: float,
+        adhesion: Law,
+        beta: float,
+        shape: CrossSection = ROUND,
+    ) -> Cylinder:
         """The cylinder of a factory that has checked its SI inputs under its caller's names.
 
         The fields are settled as the constructor settles them, without the constructor's
@@ -126,6 +139,7 @@ class Cylinder:
         """
         self = object.__new__(cls)
         fields = {"radius": radius, "modulus": modulus, "adhesion": adhesion, "dundurs_beta": beta}
+        fields["cross_section"] = shape
         for name, value in fields.items():
             object.__setattr__(self, name, value)
         self._settle()
@@ -148,6 +162,12 @@ class Cylinder:
             ),
         ):
             object.__setattr__(self, name, scalar(name, getattr(self, name), **limits))
+        if not isinstance(self.cross_section, CrossSection):
+            raise ValueError(
+                "cross_section must be a cross-section (linecontact.geometry.Round or "
+                f"Polygon), got {self.cross_section!r}"
+            )
+        self.cross_section.checked(self.radius)
         # the units of the groups must be representable: R/h, sigma0/E and E h (said in the
         # caller's names: the groups are the library's)
         for what, v in (
@@ -440,6 +460,9 @@ class Cylinder:
         if (contact_half_width is None) == (load is None):
             raise ValueError("give exactly one of contact_half_width or load")
         policy = failure_policy(on_failure)
+        if self.cross_section.kind != "round":
+            self._written("contact")
+            return _facet.contact(self, contact_half_width, load, method, branch, policy)
         if isinstance(self.adhesion, LennardJones):
             self._dugdale_only(
                 "the contact",
@@ -515,49 +538,15 @@ class Cylinder:
             scales=Scales.of(self),
         )
 
-    def _for_load_lj(
-        self, name: str, load: ArrayLike, policy: FailurePolicy = "raise"
-    ) -> CylinderLennardJonesContact:
-        """The contact carrying ``load`` [N/m] under the Lennard-Jones law (SI messages)."""
-        from .. import lennard_jones_groups as _ljg
-        from ..laws import lennard_jones as _lj
-
-        F, Eh = _normal_load(self, name, load)
-        F_max = float(_ljg.load_max_over_Eh(self.R_over_h, self.sigma0_over_E)) * Eh
-        if np.any(F > F_max):
-            raise ValueError(
-                f"{name}={float(F[F > F_max].flat[0])!r} N/m is beyond the loads the "
-                f"Lennard-Jones solver is asked for, up to {F_max:.6g} N/m here (ten times the "
-                "rigid cylinder's pull-off); at such loads both laws approach Hertz, and the "
-                "Dugdale law (the default) gives the contact"
-            )
-        try:
-            with _small_strain_in_si():  # said in metres below
-                r = _lj.contact_for_load(
-                    F / Eh, self.R_over_h, self.sigma0_over_E, on_failure=policy
-                )
-        except _ljg.BelowPullOffError as e:
-            Fi = float(np.reshape(F, -1)[e.index])
-            raise NoEquilibriumError(
-                f"no contact carries {name}={Fi!r} N/m under the Lennard-Jones law: it is "
-                f"below the pull-off force {e.F_pulloff_over_Eh * Eh!r} N/m (error estimate "
-                f"{e.error_estimate_over_Eh * Eh:.2g} N/m); the cylinder has pulled off"
-            ) from None
-
-        si = to_si(r, Scales.of(self))
-        # the load as given (not back from F/(E h))
-        si["load"] = _as_given(F, r.F_over_Eh)
-        _warn_widths(si["contact_half_width"], self.radius, stacklevel=4)
-        return CylinderLennardJonesContact(
-            **si, stable=r.stable, state=r.state, nondimensional=r, scales=Scales.of(self)
-        )
-
     def pull_off(self) -> CylinderPullOff | CylinderLennardJonesPullOff:
         """Pull-off force under load control [N/m], under the cylinder's law.
 
         The Lennard-Jones law's (:func:`linecontact.laws.lennard_jones.pull_off`) is a
         :class:`CylinderLennardJonesPullOff`, with the law's ``w`` and ``z0``.
         """
+        if self.cross_section.kind != "round":
+            self._written("pull_off")
+            return _facet.pull_off(self)
         if isinstance(self.adhesion, LennardJones):
             return self._pull_off_lj()
         p = _normal.pull_off(self.R_over_h, self.sigma0_over_E)
@@ -585,25 +574,31 @@ class Cylinder:
             raise ValueError(f"law must be a law's class (Dugdale or LennardJones), got {law!r}")
         # checked when it was built
         return self._made(
-            self.radius, self.modulus, self.adhesion.same_adhesion(law), self.dundurs_beta
+            self.radius,
+            self.modulus,
+            self.adhesion.same_adhesion(law),
+            self.dundurs_beta,
+            self.cross_section,
         )
 
-    #: The problems written for each law (the others are refused, naming both: one place).
-    WRITTEN: ClassVar[dict[str, tuple[type[Law], ...]]] = {
-        "contact": (Dugdale, LennardJones),
-        "pull_off": (Dugdale, LennardJones),
-        "load_curve": (Dugdale, LennardJones),
-        "sliding_initiation": (Dugdale,),
-        "steady_rolling": (Dugdale,),
-        "push": (Dugdale,),
-        "tangential_history": (Dugdale,),
-        "cyclic_loss": (Dugdale,),
-        "sliding": (Dugdale,),
+    #: The problems written for each cross-section's kind and law (the others are refused,
+    #: naming both: one place).
+    WRITTEN: ClassVar[dict[str, dict[str, tuple[type[Law], ...]]]] = {
+        "contact": {"round": (Dugdale, LennardJones), "polygon": (Dugdale,)},
+        "pull_off": {"round": (Dugdale, LennardJones), "polygon": (Dugdale,)},
+        "load_curve": {"round": (Dugdale, LennardJones)},
+        "sliding_initiation": {"round": (Dugdale,)},
+        "steady_rolling": {"round": (Dugdale,)},
+        "push": {"round": (Dugdale,)},
+        "tangential_history": {"round": (Dugdale,)},
+        "cyclic_loss": {"round": (Dugdale,)},
+        "sliding": {"round": (Dugdale,)},
     }
 
     def _written(self, problem: str) -> None:
-        """Refuse ``problem`` where it is not written for this cylinder's law."""
-        if not isinstance(self.adhesion, self.WRITTEN[problem]):
+        """Refuse ``problem`` where it is not written for this wire's cross-section and law."""
+        laws = self.WRITTEN[problem].get(self.cross_section.kind, ())
+        if not isinstance(self.adhesion, laws):
             self._not_written(problem)
 
     def _dugdale_only(self, problem: str, **given: bool) -> None:
@@ -614,27 +609,19 @@ class Cylinder:
 
     def _not_written(self, problem: str) -> None:
         """Refuse ``problem``: it is not written for this geometry under this law."""
+        shape = self.cross_section
+        if shape.kind != "round":
+            raise ValueError(
+                f"{problem} is not written for a {shape.name} wire (cross_section="
+                f"{shape!r}) under the {self.adhesion.name} law: for a polygon, the contact "
+                "and the pull-off under the Dugdale law are; the round wire "
+                "(cross_section=Round()) has every problem"
+            )
         raise ValueError(
             f"{problem} is not written for a cylinder under the {self.adhesion.name} law "
             f"(adhesion={self.adhesion!r}): give the cylinder a Dugdale law "
             "(adhesion=Dugdale(...) or its parameters) for it"
         )
-
-    def _pull_off_lj(self) -> CylinderLennardJonesPullOff:
-        """The pull-off under the Lennard-Jones law (warnings point at the caller's caller)."""
-        from ..laws import lennard_jones as _lj
-
-        self._check_lennard_jones(pull_off=True)
-        q = _lj.pull_off(self.R_over_h, self.sigma0_over_E)
-        si = {k: float(v) for k, v in to_si(q, Scales.of(self)).items()}
-        _warn_widths(
-            si["contact_half_width_at_pull_off"],
-            self.radius,
-            "the contact half-width at pull-off",
-            "the repulsive region vanishes before the pull-off",
-            stacklevel=4,
-        )
-        return CylinderLennardJonesPullOff(**si, method=str(q.method), nondimensional=q)
 
     # the SI form of the groups ---
     def scale(self, name: str) -> float:
@@ -703,6 +690,11 @@ class Cylinder:
     tangential_history = _problems.tangential_history
     cyclic_loss = _problems.cyclic_loss
     sliding = _sliding.sliding
+    shaped = _facet.shaped
+    # the Lennard-Jones law's contact, pull-off and load curve (self is the cylinder)
+    _for_load_lj = _lj_problems.for_load
+    _pull_off_lj = _lj_problems.pull_off
+    _load_curve_lj = _lj_problems.load_curve
 
     # the normal problems -------------------------------------------------------------------
     def load_curve(
@@ -722,6 +714,7 @@ class Cylinder:
         :class:`CylinderLennardJonesLoadCurve`; ``max_half_width``, ``num`` and
         ``num_noncontact`` are the Dugdale law's, ``max_load`` the Lennard-Jones law's.
         """
+        self._written("load_curve")
         if isinstance(self.adhesion, LennardJones):
             self._dugdale_only(
                 "the load curve",
@@ -749,38 +742,6 @@ class Cylinder:
             )
         curve = _si_load_curve(self, c)
         _warn_small_strain(curve.contact_half_width, self.radius, stacklevel=3)
-        return curve
-
-    def _load_curve_lj(self, max_load: float | None) -> CylinderLennardJonesLoadCurve:
-        """The load curve under the Lennard-Jones law up to the compressive ``max_load`` [N/m].
-
-        Its ``nondimensional`` is the curve in the Dugdale groups, with the pull-off.
-        """
-        from .. import lennard_jones_groups as _ljg
-        from ..laws import lennard_jones as _lj
-
-        self._check_lennard_jones()
-        F_max = None
-        if max_load is not None:
-            max_load = scalar("max_load", max_load)  # a compressive load, > 0
-            F_max = float(_ljg.load_max_over_Eh(self.R_over_h, self.sigma0_over_E))
-            limit = self.in_si(F_max, "Eh")
-            if max_load > limit:
-                raise ValueError(
-                    f"max_load={max_load!r} N/m is beyond the loads the Lennard-Jones solver is "
-                    f"asked for, up to {limit:.6g} N/m here (ten times the rigid cylinder's "
-                    "pull-off); at such loads both laws approach Hertz: use law='dugdale'"
-                )
-            F_max = self.over(max_load, "Eh")
-        with _small_strain_in_si():
-            c = _lj.load_curve(self.R_over_h, self.sigma0_over_E, F_max_over_Eh=F_max)
-        curve = CylinderLennardJonesLoadCurve(
-            **to_si(c, Scales.of(self)),
-            stable=c.stable,
-            turning_point=c.turning_point,
-            nondimensional=c,
-        )
-        _warn_small_strain(curve.contact_half_width, self.radius, stacklevel=4)
         return curve
 
     def __getattr__(self, name: str) -> Any:

@@ -20,6 +20,8 @@ import numpy as np
 from ..cylinder import Cylinder
 from ..domain import check_si
 from ..errors import ParameterError
+from ..facet.contact import check_geometry
+from ..geometry import NAMED_SIDES, Polygon
 from ..laws import LennardJones
 from ..output import Table
 from ..presets import Material, material_names
@@ -154,6 +156,96 @@ def si_inputs(range_flag: str = "--h") -> tuple[tuple[Parameter, ...], tuple[Ent
     return params, entries
 
 
+#: The help section of the wire's cross-section.
+SHAPE_GROUP = "cross-section (a faceted wire lying on a facet; docs/faceted.md)"
+
+
+def shape_parameters() -> tuple[tuple[Parameter, ...], tuple[Entry, ...]]:
+    """``cross_section`` and a polygon's corner radius, in metres (SI) or over ``R`` (groups).
+
+    With the entry that says the two corner radii in one line of help.
+    """
+    params = (
+        Parameter(
+            "cross_section",
+            f"round, or a regular polygon lying on a facet: {', '.join(NAMED_SIDES)} "
+            "(--radius or R: its circumradius)",
+            kind="text",
+            choices=("round", *NAMED_SIDES),
+            default="round",
+            metavar="SHAPE",
+            group=SHAPE_GROUP,
+        ),
+        Parameter(
+            "corner_radius",
+            "a polygon's corner radius r_c [m] (SI), 0 (sharp, the default) to the circumradius",
+            unit="m",
+            metavar="RC",
+            group=SHAPE_GROUP,
+        ),
+        Parameter(
+            "corner_radius_over_R",
+            "a polygon's corner radius over the circumradius, in [0, 1] (groups; 1: round)",
+            metavar="RC/R",
+            group=SHAPE_GROUP,
+        ),
+    )
+    entries = (
+        Entry(
+            ("corner_radius", "corner_radius_over_R"),
+            "a polygon's corner radius [m], or over R in [0, 1] (default 0: sharp)",
+        ),
+    )
+    return params, entries
+
+
+def shape(args: Any, cyl: Cylinder | None) -> dict[str, Any] | None:
+    """A polygon's groups (``sides``, ``corner_radius_over_R``), or None for the round wire.
+
+    With SI inputs the cylinder of :func:`cylinder` already carries the polygon.
+    """
+    name = getattr(args, "cross_section", None) or "round"
+    rc = getattr(args, "corner_radius", None)
+    rcR = getattr(args, "corner_radius_over_R", None)
+    if name == "round":
+        for value, f in ((rc, "--corner-radius"), (rcR, "--corner-radius-over-R")):
+            if value is not None:
+                raise ParameterError(
+                    f, f"{f} is a polygon's: give --cross-section {' or '.join(NAMED_SIDES)}"
+                )
+        return None
+    if cyl is not None:
+        if rcR is not None:
+            raise ParameterError(
+                "--corner-radius-over-R",
+                "with SI inputs give the corner radius as --corner-radius [m]",
+            )
+        return cyl.cross_section.groups(cyl.radius)
+    if rc is not None:
+        raise ParameterError(
+            "--corner-radius",
+            "--corner-radius [m] goes with SI inputs (--radius, ...): with the groups give "
+            "--corner-radius-over-R",
+        )
+    try:
+        n, r = check_geometry(NAMED_SIDES[name], 0.0 if rcR is None else rcR)
+    except ParameterError as e:
+        raise ParameterError(
+            "--corner-radius-over-R",
+            str(e).replace("corner_radius_over_R", "--corner-radius-over-R"),
+        ) from None
+    return {"sides": int(n), "corner_radius_over_R": float(r)}
+
+
+def shape_parameters_of(g: dict[str, Any], cyl: Cylinder | None) -> dict[str, Any]:
+    """The provenance of a polygon: its name, sides, corner radius over R (and in metres)."""
+    name = next(k for k, n in NAMED_SIDES.items() if n == g["sides"])
+    out: dict[str, Any] = {"cross_section": name, **g}
+    if cyl is not None:
+        out["corner_radius_m"] = cyl.cross_section.parameters()["corner_radius_m"]
+    return out
+
+
 def sliding_parameters(
     groups: tuple[str, str, str, str], si: tuple[str, str]
 ) -> tuple[tuple[Parameter, ...], tuple[Parameter, ...]]:
@@ -272,6 +364,16 @@ def si_given(args: Any, extra: Sequence[str] = ()) -> bool:
 def cylinder(args: Any, range_flag: str = "--h") -> Cylinder:
     """The :class:`Cylinder` of the SI inputs under ``--law``, with errors that name the flags."""
     cyl = _cylinder(args, range_flag)
+    name = getattr(args, "cross_section", None) or "round"
+    if name != "round":
+        rc = getattr(args, "corner_radius", None)
+        try:
+            cyl = cyl.shaped(Polygon(NAMED_SIDES[name], 0.0 if rc is None else rc))
+        except ParameterError as e:
+            message = (
+                str(e).replace("corner_radius", "--corner-radius").replace("radius =", "--radius")
+            )
+            raise ParameterError("--corner-radius", message) from None
     if getattr(args, "law", None) == "lennard-jones":
         return cyl.under(LennardJones)
     return cyl

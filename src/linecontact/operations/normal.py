@@ -9,6 +9,7 @@ import numpy as np
 from ..closed_forms import kappa, maugis_parameter
 from ..cylinder import Cylinder, _si_load_curve
 from ..errors import ParameterError
+from ..facet import facet_pull_off
 from ..laws import lennard_jones as _lj
 from ..normal import NormalContact, contact_for_load, load_curve, normal_contact, pull_off
 from ..output import Table
@@ -18,6 +19,9 @@ from ._common import (
     group_parameters,
     groups,
     half_widths,
+    shape,
+    shape_parameters,
+    shape_parameters_of,
     si_inputs,
     si_loads,
     si_parameters,
@@ -256,17 +260,35 @@ PULL_OFF_KEYS = {
 PULL_OFF_TOTALS = {"pull_off_force": "F_pulloff_total_N"}
 
 
+def _not_for_polygon(args: Inputs, g: dict[str, Any] | None) -> None:
+    """Refuse the Lennard-Jones law for a polygon: its problems are written for Dugdale's."""
+    if g is not None and args.law == "lennard-jones":
+        raise ParameterError(
+            "--law",
+            f"--law lennard-jones is not written for a {args.cross_section} wire: a polygon's "
+            "contact and pull-off are the Dugdale law's (--law dugdale)",
+        )
+
+
 def _cmd_pulloff(args: Inputs) -> Table:
     rho, s, cyl = groups(args)
+    g = shape(args, cyl)
+    _not_for_polygon(args, g)
     if args.law == "lennard-jones":
         return _cmd_pulloff_lj(args, rho, s, cyl)
     si = None if cyl is None else cyl.pull_off()
-    p = pull_off(rho, s) if si is None else si.nondimensional
+    if si is not None:
+        p = si.nondimensional
+    else:
+        p = pull_off(rho, s) if g is None else facet_pull_off(rho, s, **g)
     params = _parameters(args, rho, s, cyl)
     params.pop("kappa")
     params.pop("maugis_parameter")
     extra: dict[str, Any] = {}
     show = ["F_pulloff_over_Eh", "a_over_R_at_pulloff", "mechanism", "F_zero_width_over_Eh"]
+    if g is not None:
+        params.update(shape_parameters_of(g, cyl))
+        show += ["facet_half_width_over_R", "F_strip_jkr_over_Eh", "F_strength_over_Eh"]
     if cyl is not None:
         shown_si = ["F_pulloff_N_per_m", "a_at_pulloff_m"]
         cols, shown = si_shown(args, si, PULL_OFF_KEYS, PULL_OFF_TOTALS, shown_si)
@@ -462,6 +484,7 @@ _LAW = Parameter(
     default="dugdale",
 )
 _SI, _SI_ENTRIES = si_inputs()
+_SHAPE, _SHAPE_ENTRIES = shape_parameters()
 _WIDTHS = "contact half-widths or loads (exactly one)"
 _SAMPLING = "sampling"
 
@@ -507,16 +530,19 @@ OPERATIONS = {
         "pulloff",
         "pull-off force under load control and its mechanism",
         "The most tensile load a contact carries (paper Eq 14 and the snap-off) and its "
-        "mechanism, zero-width or snap-off. One record.",
+        "mechanism, zero-width or snap-off; of a faceted wire (--cross-section hexagon) on "
+        "its facet, with the facet's limits (docs/faceted.md). One record.",
         (
             "linecontact pulloff --R-over-h 100 --sigma0-over-E 0.01",
             "linecontact pulloff --radius 50e-9 --cylinder-material SiO2 --substrate-material Si "
             "--work-of-adhesion 0.1 --z0 0.3e-9 --json",
             "linecontact pulloff --R-over-h 100 --sigma0-over-E 0.01 --law lennard-jones",
+            "linecontact pulloff --cross-section hexagon --corner-radius 5e-9 --radius 50e-9 "
+            "--modulus 50e9 --work-of-adhesion 0.1 --z0 0.3e-9 --json",
         ),
-        (*group_parameters(), *_SI, _LAW),
+        (*group_parameters(), *_SI, _LAW, *_SHAPE),
         _cmd_pulloff,
-        entries=_SI_ENTRIES,
+        entries=(*_SI_ENTRIES, *_SHAPE_ENTRIES),
     ),
     "curve": Operation(
         "curve",

@@ -107,8 +107,8 @@ def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
     if any(a.dest not in _SI + _GROUPS + ("length",) or not a.unit for a in p.axes):
         return None
     template, bad, said = _checked(p)
-    if template.law != "dugdale":
-        return None
+    if template.law != "dugdale" or getattr(template, "cross_section", "round") != "round":
+        return None  # a polygon's pull-off is no closed form: point by point
     shape = tuple(sl.stop - sl.start for sl in block)
     grids = np.meshgrid(
         *(np.asarray(a.values[s], float) for a, s in zip(p.axes, block, strict=True)), indexing="ij"

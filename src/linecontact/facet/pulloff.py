@@ -1,0 +1,334 @@
+r"""Pull-off of a faceted wire and its contact under a load.
+
+:func:`facet_pull_off` and :func:`facet_contact_for_load`.
+The branch of :mod:`linecontact.facet.contact` may have more than one load minimum (one
+with the contact inside the facet, one over the rounded corners), so the pull-off is found
+by a scan of the whole branch in the contact half-width, refined around the lowest point
+(``docs/faceted.md``, Sec. 4); the vanishing-width end is the closed form of Sec. 3.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import ClassVar
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .. import closed_forms as _cf
+from .. import domain as _domain
+from .._validation import (
+    FailurePolicy,
+    broadcast,
+    failure_policy,
+    first_point,
+    point_text,
+    scalar_or_array,
+)
+from ..errors import NoEquilibriumError
+from ..results import SI, Result, as_output
+from . import _branch as _b
+from .contact import FacetContact, _flat, branch, check_geometry
+
+#: The scan of the branch: widths below the facet's edge (over ``f``), just below it
+#: (``1 - f`` decades) and beyond it over the corner (over ``r``).
+_BELOW = np.logspace(-9, 0, 64, endpoint=False)
+_EDGE = 1.0 - np.logspace(-1, -13, 40)
+_BEYOND = np.logspace(-13, np.log10(4.0), 96)
+#: Zooms of the bracket around the lowest point: each keeps 2 of 16 intervals.
+_ZOOM_POINTS = 17
+_ZOOMS = 16
+
+
+def _grid(f: NDArray, r: NDArray) -> NDArray:
+    """The scan's widths per point (NaN where a part does not apply), sorted."""
+    below = f[:, None] * np.concatenate([_BELOW, _EDGE])[None, :]
+    below = np.where(f[:, None] > 0, below, np.nan)
+    beyond = f[:, None] + r[:, None] * _BEYOND[None, :]
+    beyond = np.where(r[:, None] > 0, beyond, np.nan)
+    g = np.concatenate([below, beyond], axis=1)
+    return np.sort(g, axis=1)  # NaN last
+
+
+def _loads(A2: NDArray, f, r, rho, s, u0=None) -> tuple[NDArray, NDArray]:
+    """The load and ``u`` at each width of ``A2`` (points x widths); ``u0`` a start per point."""
+    K = A2.shape[1]
+    ok = np.isfinite(A2)
+    Af = np.where(ok, A2, 1.0).reshape(-1)
+    rep = [np.repeat(v, K) for v in (f, r, rho, s)]
+    start = None if u0 is None else np.repeat(u0, K)
+    u, _, F, _, conv, _ = branch(Af, *rep, u0=start)
+    F = np.where(ok.reshape(-1) & conv, F, np.inf).reshape(A2.shape)
+    return F, u.reshape(A2.shape)
+
+
+def _zero_width(f, r, rho, s):
+    """The vanishing-width end: ``c/R`` and ``F/(Eh)`` as ``a -> 0`` (a quadratic in ``c``)."""
+    # rho [(c - f)_+^2/(2r) + (4/pi) s c ln 2] = 1; first with c <= f
+    k = (4 / np.pi) * s * np.log(2.0) * rho
+    with np.errstate(divide="ignore"):
+        c_flat = np.where(k > 0, 1.0 / k, np.inf)
+    inside = c_flat <= f
+    # beyond the corner: (rho/(2r)) y^2 + k y + (k f - 1) = 0, y = c - f >= 0
+    rs = np.where(r > 0, r, 1.0)
+    qa = rho / (2 * rs)
+    qc = k * f - 1.0
+    # (a negative discriminant only where the zone ends inside the facet, y unused there)
+    y = -2 * qc / (k + np.sqrt(np.maximum(k * k - 4 * qa * qc, 0.0)))
+    c_out = np.where(r > 0, f + y, f)  # a sharp corner pins the zone at c = f
+    C = np.where(inside, c_flat, c_out)
+    return C, -2 * s * rho * C
+
+
+@dataclass(frozen=True)
+class FacetPullOff(Result):
+    r"""Pull-off of a faceted wire under load control: the lowest load of its branch.
+
+    Attributes
+    ----------
+    F_pulloff_over_Eh : ndarray or float
+        The pull-off force over ``E h`` (negative).
+    a_over_R_at_pulloff, c_over_R_at_pulloff : ndarray or float
+        The half-widths at pull-off (``a = 0`` where it is the vanishing-width end).
+    mechanism : ndarray of str or str
+        ``"inside-facet"``: the contact lets go from inside the facet (``a < f``), its
+        adhesive zone free; ``"corner-pinned"``: from inside the facet with the adhesive zone
+        held at a sharp corner (``c = f``); ``"whole-facet"``: from a contact covering the
+        facet (``a >= f``; the round wire's, ``f = 0``); ``"zero-width"``: at the
+        vanishing-width end of the branch.
+    F_zero_width_over_Eh : ndarray or float
+        The load at the vanishing-width end (for the round wire Eq. 14).
+    facet_half_width_over_R : ndarray or float
+        The flat half-width ``f`` of the facet.
+    F_strip_jkr_over_Eh, F_strength_over_Eh : ndarray or float
+        The two limits of a flat facet of half-width ``f``: the strip's JKR pull-off
+        :math:`-\sqrt{2\pi f E w}` and the strength cap :math:`-2 \sigma_0 f`, over ``E h``.
+    R_over_h, sigma0_over_E, sides, corner_radius_over_R : ndarray or float
+        The parameters, broadcast.
+    converged : ndarray or bool
+        The bracket of the minimum closed to ``1e-10`` of its width.
+    """
+
+    inputs: ClassVar[tuple[str, ...]] = (
+        "R_over_h",
+        "sigma0_over_E",
+        "sides",
+        "corner_radius_over_R",
+    )
+
+    F_pulloff_over_Eh: NDArray | float = field(metadata=SI("pull_off_force", "Eh", "N/m"))
+    a_over_R_at_pulloff: NDArray | float = field(
+        metadata=SI("contact_half_width_at_pull_off", "R", "m")
+    )
+    c_over_R_at_pulloff: NDArray | float
+    mechanism: NDArray | str
+    F_zero_width_over_Eh: NDArray | float = field(metadata=SI("zero_width_force", "Eh", "N/m"))
+    facet_half_width_over_R: NDArray | float
+    F_strip_jkr_over_Eh: NDArray | float
+    F_strength_over_Eh: NDArray | float
+    R_over_h: NDArray | float
+    sigma0_over_E: NDArray | float
+    sides: NDArray | int
+    corner_radius_over_R: NDArray | float
+    converged: NDArray | bool
+
+
+def _inputs(R_over_h, sigma0_over_E, sides, corner_radius_over_R):
+    rho = _domain.check("R_over_h", R_over_h)
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
+    n, r = check_geometry(sides, corner_radius_over_R)
+    scalar = scalar_or_array(rho, s, n, r)
+    rho, s, n, r = broadcast(R_over_h=rho, sigma0_over_E=s, sides=n, corner_radius_over_R=r)
+    return scalar, rho.shape, *_flat(rho, s, n, r)
+
+
+def _minimum(f, r, rho, s):
+    """The lowest load of the branch per point: (F, a, c, converged); flat arrays."""
+    P = f.size
+    A2 = _grid(f, r)
+    F2, U2 = _loads(A2, f, r, rho, s)
+    i = np.argmin(F2, axis=1)
+    rows = np.arange(P)
+    K = A2.shape[1]
+    lo = np.where(i > 0, A2[rows, np.maximum(i - 1, 0)], 0.5 * A2[rows, 0])
+    hi = A2[rows, np.minimum(i + 1, K - 1)]
+    hi = np.where(np.isfinite(hi) & (i + 1 < K), hi, A2[rows, i])
+    t = np.linspace(0.0, 1.0, _ZOOM_POINTS)
+    best_A = A2[rows, i]
+    best_F = F2[rows, i]
+    best_u = U2[rows, i]
+    for _ in range(_ZOOMS):
+        Az = lo[:, None] + (hi - lo)[:, None] * t[None, :]
+        Az = np.where(r[:, None] == 0, np.minimum(Az, f[:, None]), Az)
+        Fz, Uz = _loads(Az, f, r, rho, s, u0=best_u)
+        j = np.argmin(Fz, axis=1)
+        best_u = np.where(Fz[rows, j] <= best_F, Uz[rows, j], best_u)
+        better = Fz[rows, j] <= best_F
+        best_F = np.where(better, Fz[rows, j], best_F)
+        best_A = np.where(better, Az[rows, j], best_A)
+        lo = Az[rows, np.maximum(j - 1, 0)]
+        hi = Az[rows, np.minimum(j + 1, _ZOOM_POINTS - 1)]
+    conv = (hi - lo) <= 1e-9 * np.maximum(best_A, 1e-300) + 1e-300
+    _, C, F, _, _, _ = branch(best_A, f, r, rho, s)
+    return F, best_A, C, conv | np.isfinite(F)
+
+
+def facet_pull_off(
+    R_over_h: ArrayLike,
+    sigma0_over_E: ArrayLike,
+    *,
+    sides: ArrayLike = 6,
+    corner_radius_over_R: ArrayLike = 0.0,
+) -> FacetPullOff:
+    r"""Pull-off force of a faceted wire on its facet under load control.
+
+    The lowest load of the whole branch (the scan of ``docs/faceted.md``, Sec. 4), or its
+    vanishing-width end where that is lower.
+
+    Parameters
+    ----------
+    R_over_h : array_like
+        Circumradius over the range of the adhesive stress, ``[1e-3, 1e12]``.
+    sigma0_over_E : array_like
+        Adhesive (Dugdale) stress over the composite modulus, ``[0, 1e6]`` (0: no adhesion,
+        a pull-off force of 0 at the vanishing-width end, as for the round wire).
+    sides : array_like of int
+        Number of sides, ``>= 3``.
+    corner_radius_over_R : array_like
+        Corner radius over the circumradius, ``[0, 1]`` (1: the round wire).
+
+    Returns
+    -------
+    FacetPullOff
+
+    Examples
+    --------
+    >>> import linecontact as lc
+    >>> hexagon = lc.facet_pull_off(1e3, 0.01, sides=6, corner_radius_over_R=0.0)
+    >>> hexagon.mechanism, round(hexagon.F_pulloff_over_Eh, 6)
+    ('corner-pinned', -5.452786)
+    """
+    scalar, shape, rho, s, n, r = _inputs(R_over_h, sigma0_over_E, sides, corner_radius_over_R)
+    f = _b.facet_half_width(n, r)
+    F, A, C, conv = _minimum(f, r, rho, s)
+    C0, F0 = _zero_width(f, r, rho, s)
+    zero = F0 <= F
+    F = np.where(zero, F0, F)
+    A = np.where(zero, 0.0, A)
+    C = np.where(zero, C0, C)
+    pinned = (r == 0) & (C >= f * (1 - 1e-12)) & (A < f)
+    mech = np.where(
+        zero,
+        "zero-width",
+        np.where(pinned, "corner-pinned", np.where(A < f, "inside-facet", "whole-facet")),
+    )
+    jkr = _cf._strip_pull_off(f, rho, s)  # -sqrt(2 pi f E w) / (E h), w = sigma0 h
+    vals = dict(
+        F_pulloff_over_Eh=F,
+        a_over_R_at_pulloff=A,
+        c_over_R_at_pulloff=C,
+        mechanism=mech,
+        F_zero_width_over_Eh=F0,
+        facet_half_width_over_R=f,
+        F_strip_jkr_over_Eh=jkr,
+        F_strength_over_Eh=-2 * s * rho * f,
+        R_over_h=rho,
+        sigma0_over_E=s,
+        sides=n.astype(int),
+        corner_radius_over_R=r,
+        converged=conv,
+    )
+    return FacetPullOff(**{k: as_output(v.reshape(shape), scalar) for k, v in vals.items()})
+
+
+def facet_contact_for_load(
+    F_over_Eh: ArrayLike,
+    R_over_h: ArrayLike,
+    sigma0_over_E: ArrayLike,
+    *,
+    sides: ArrayLike = 6,
+    corner_radius_over_R: ArrayLike = 0.0,
+    on_failure: FailurePolicy = "raise",
+) -> FacetContact:
+    r"""The stable contact of a faceted wire under a load (the widest state carrying it).
+
+    Parameters
+    ----------
+    F_over_Eh : array_like
+        Load per unit length over ``E h`` (compressive positive), ``[-1e12, 1e12]``.
+    R_over_h, sigma0_over_E, sides, corner_radius_over_R : array_like
+        As in :func:`facet_contact`.
+    on_failure : {"raise", "report"}
+        A load below the pull-off force raises :class:`~linecontact.errors.NoEquilibriumError`
+        (``"raise"``) or gives NaN at that point (``"report"``).
+
+    Returns
+    -------
+    FacetContact
+        At a sharp corner a load of at least zero holds the contact at the facet's edges
+        (``a = c = f``, region ``"corner-pinned"``: the pressure is singular at the corners).
+    """
+    Ft = _domain.check("F_over_Eh", F_over_Eh)
+    policy = failure_policy(on_failure)
+    scalar, shape, rho, s, n, r = _inputs(R_over_h, sigma0_over_E, sides, corner_radius_over_R)
+    scalar = scalar and np.ndim(Ft) == 0
+    Ft, rho, s, n, r = broadcast(
+        F_over_Eh=Ft,
+        R_over_h=rho.reshape(shape),
+        sigma0_over_E=s.reshape(shape),
+        sides=n.reshape(shape),
+        corner_radius_over_R=r.reshape(shape),
+    )
+    shape = Ft.shape
+    Ft, rho, s, n, r = _flat(Ft, rho, s, n, r)
+    f = _b.facet_half_width(n, r)
+    A2 = _grid(f, r)
+    F2, _ = _loads(A2, f, r, rho, s)
+    # the widest crossing of F = Ft where F rises with a (the loaded, stable branch)
+    d = F2 - Ft[:, None]
+    up = (d[:, :-1] < 0) & (d[:, 1:] >= 0) & np.isfinite(F2[:, 1:])
+    K = A2.shape[1]
+    last = np.where(up.any(axis=1), K - 2 - np.argmax(up[:, ::-1], axis=1), -1)
+    found = last >= 0
+    rows = np.arange(Ft.size)
+    li = np.maximum(last, 0)
+    lo = A2[rows, li]
+    hi = A2[rows, li + 1]
+    sharp_loaded = (r == 0) & (Ft >= 0)
+    for _ in range(60):
+        mid = 0.5 * (lo + hi)
+        Fm, _ = _loads(mid[:, None], f, r, rho, s)
+        below = Fm[:, 0] < Ft
+        lo = np.where(below, mid, lo)
+        hi = np.where(below, hi, mid)
+    A = np.where(found, 0.5 * (lo + hi), np.nan)
+    A = np.where(sharp_loaded, f, A)
+    if policy == "raise" and not np.all(np.isfinite(A)):
+        _, at = first_point(~np.isfinite(A), F_over_Eh=Ft, R_over_h=rho, sigma0_over_E=s)
+        raise NoEquilibriumError(
+            f"no contact carries the load at {point_text(at)}: it is below the pull-off force "
+            f"(facet_pull_off) or beyond the widths solved (a/R up to f + 4 r_c/R)"
+        )
+    ok = np.isfinite(A)
+    Aok = np.where(ok, A, 1.0)
+    u, C, F, res, conv, pinned = branch(Aok, f, r, rho, s)
+    C = np.where(sharp_loaded, f, C)
+    F = np.where(sharp_loaded, Ft, F)
+    pinned |= sharp_loaded
+    region = np.where(pinned, "corner-pinned", np.where(Aok < f, "inside-facet", "whole-facet"))
+    nan = np.where(ok, 1.0, np.nan)
+    vals = dict(
+        a_over_R=A,
+        c_over_R=C * nan,
+        F_over_Eh=F * nan,
+        R_over_h=rho,
+        sigma0_over_E=s,
+        sides=n.astype(int),
+        corner_radius_over_R=r,
+        facet_half_width_over_R=f,
+        region=np.where(ok, region, "no-equilibrium"),
+        residual_separation=res * nan,
+        converged=conv & ok,
+        stable=ok,
+    )
+    return FacetContact(**{k: as_output(v.reshape(shape), scalar) for k, v in vals.items()})
