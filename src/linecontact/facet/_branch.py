@@ -179,7 +179,7 @@ def solve_u(
         active[idx] = ~done
     u = np.arcsinh(np.exp(t))
     # a sharp corner: the zone stops at c = f where the free one would pass it
-    sharp = (r == 0) & (A < f)
+    sharp = (r == 0) & (A <= f)
     uf = np.arccosh(np.maximum(f / np.where(A > 0, A, 1.0), 1.0))
     pinned = sharp & (u > uf)
     u = np.where(pinned, uf, u)
