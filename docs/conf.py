@@ -123,8 +123,9 @@ API_GROUPS: list[tuple[str, str, list[str]]] = [
         "A cylinder on a substrate (SI units)",
         "The entry point: a wire, fibre or tube of radius ``R`` on a substrate, its materials "
         "and its adhesion law (a value: the Dugdale step or the Lennard-Jones law); every "
-        "question below is a method of it.",
-        ["Cylinder", "Dugdale", "LennardJones", "Material"],
+        "question below is a method of it; its cross-section a value too (round, or a "
+        "polygon on its facet).",
+        ["Cylinder", "Dugdale", "LennardJones", "Round", "Polygon", "Material"],
     ),
     (
         "Materials and the groups of the problem",
@@ -155,6 +156,19 @@ API_GROUPS: list[tuple[str, str, list[str]]] = [
             "jkr_load",
             "NormalContact",
             "PullOff",
+        ],
+    ),
+    (
+        "A faceted wire on its facet (nondimensional)",
+        "A regular polygon (a hexagonal or pentagonal wire) with rounded corners lying on a "
+        "facet: its contact, its contact under a load and its pull-off, lengths over the "
+        "circumradius (:doc:`faceted`); in SI units ``Cylinder(...).shaped(Polygon(...))``.",
+        [
+            "facet_contact",
+            "facet_contact_for_load",
+            "facet_pull_off",
+            "FacetContact",
+            "FacetPullOff",
         ],
     ),
     (
