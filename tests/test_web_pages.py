@@ -217,6 +217,46 @@ def test_a_shared_link_with_a_modulus_shows_the_apis_number(server, page, capsys
     assert out["F_pulloff_N_per_m"] == api["F_pulloff_N_per_m"]
 
 
+#: A hexagonal wire with 5 nm corners, as a link (issue 33): the page, its Python lines,
+#: its command line and the API give one number.
+FACETED = (
+    "radius=5e-08&modulus=5e10&work_of_adhesion=0.1&z0=3e-10&cross_section=hexagon"
+    "&corner_radius=5e-09"
+)
+
+
+def test_a_faceted_wire_on_the_pulloff_page(server, page, capsys):
+    page.goto(f"{server}/pulloff?{FACETED}")
+    _answer(page)
+    api = _api(server, "pulloff", FACETED)["results"][0]
+    shown = float(page.get_attribute("#headline [data-key='F_pulloff_N_per_m']", "data-value"))
+    assert shown == api["F_pulloff_N_per_m"]
+    assert page.input_value("#f-cross_section") == "hexagon"
+    assert page.input_value("#f-corner_radius") == "5"  # shown in nm
+    ran = _run_python(page.inner_text("#py"), ["result.pull_off_force"])
+    assert ran["result.pull_off_force"] == pytest.approx(api["F_pulloff_N_per_m"], rel=1e-12)
+    cli = page.inner_text("#cli")
+    assert "--cross-section hexagon" in cli and "--corner-radius 5e-9" in cli
+    capsys.readouterr()
+    main([*shlex.split(cli)[1:], "--json"])
+    out = json.loads(capsys.readouterr().out)["results"][0]
+    assert out["F_pulloff_N_per_m"] == api["F_pulloff_N_per_m"]
+    # chosen on the form: a pentagon, its corner in nm; the round wire sends no shape
+    page.select_option("#f-cross_section", "pentagon")
+    page.fill("#f-corner_radius", "2")
+    url, _ = _compute(page)
+    assert _query(url)["cross_section"] == ["pentagon"]
+    assert float(_query(url)["corner_radius"][0]) == pytest.approx(2e-9)
+    page.goto(f"{server}/pulloff")
+    url, _ = _compute(page)
+    assert "cross_section" not in _query(url) and "cross-section" not in page.inner_text("#cli")
+    # a corner radius for a round wire: refused beside its field, in its words
+    page.fill("#f-corner_radius", "2")
+    page.click("#go")
+    page.wait_for_selector("#m-corner_radius.error", timeout=WAIT)
+    assert "polygon" in page.inner_text("#m-corner_radius")
+
+
 #: ZnO's and SiO2's Young's moduli and Poisson ratios, as the four keys of a link.
 FOUR = "E1=1.24e11&nu1=0.36&E2=7.2e10&nu2=0.17"
 

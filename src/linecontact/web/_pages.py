@@ -85,6 +85,12 @@ _WIRE = [
 
 _LENGTH = _f("length", "wire length L (optional)", "length", "", unit="um", optional=True)
 
+#: The wire's cross-section (its choices are the operation's) and a polygon's corner radius.
+_SHAPE = [
+    _f("cross_section", "cross-section", "choice", "round"),
+    _f("corner_radius", "corner radius r_c (a polygon's; 0: sharp)", "length", "", optional=True),
+]
+
 #: The pages: path -> title, what it answers, command, fields, fixed parameters, plot.
 #: The headline (the answer in words) and the Python lines of each page are written by
 #: ``static/app.js``, by the page's name.
@@ -94,7 +100,7 @@ PAGES: dict[str, dict[str, Any]] = {
         "question": "How hard must the wire be pulled to come off the substrate?",
         "command": "pulloff",
         "alts": _WIRE_ALTS,
-        "fields": [*_WIRE, {**_LENGTH, "default": "5e-06"}],
+        "fields": [*_WIRE, *_SHAPE, {**_LENGTH, "default": "5e-06"}],
         "plot": None,
     },
     "contact": {
@@ -281,6 +287,7 @@ SI_UNIT = {
     "energy": "J/m",
     "none": "",
     "material": "",
+    "choice": "",
 }
 
 
@@ -348,13 +355,19 @@ def index_html(note: str = "") -> str:
     )
 
 
-def _field(f: dict[str, Any]) -> str:
+def _field(f: dict[str, Any], command: str) -> str:
     name, kind = f["name"], f["kind"]
     label = f"<label for='f-{name}'>{html.escape(f['label'])}</label>"
-    if kind == "material":
+    if kind in ("material", "choice"):
+        if kind == "choice":  # the words the operation declares
+            from .. import operations
+
+            words = operations.get(command).parameter(name).choices or ()
+        else:
+            words = tuple(material_names())
         opts = "".join(
             f"<option{' selected' if m == f['default'] else ''}>{html.escape(m)}</option>"
-            for m in material_names()
+            for m in words
         )
         control = f"<select id='f-{name}' name='{name}'>{opts}</select>"
     else:
@@ -413,7 +426,7 @@ def page_html(name: str) -> str:
         for f in p["fields"]
     ]
     alts = "".join(_alternative(g, a) for g, a in (p.get("alts") or {}).items())
-    fields = "".join(_field(f) for f in p["fields"])
+    fields = "".join(_field(f, p["command"]) for f in p["fields"])
     upload = (
         "<div class='field'><label for='f-data'>measurements (CSV, units in the header)</label>"
         "<div class='control'><input type='file' id='f-data' name='data' accept='.csv'></div>"

@@ -84,6 +84,7 @@
   for (const g of Object.keys(spec.alts || {})) $("a-" + g).addEventListener("change", showAlternatives);
 
   const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
+  const chosen = (f) => f.kind === "material" || f.kind === "choice"; // a list, not a number
   const WITH_UNIT = /^([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*([^\d\s.,+-].*)$/;
   const norm = (u) => u.toLowerCase().replace(/[µμ]/g, "u").replace(/²/g, "^2").replace(/\s+/g, "");
 
@@ -92,6 +93,7 @@
     const el = $("f-" + f.name);
     const raw = el.value.trim();
     if (f.kind === "material") return { values: [raw] };
+    if (f.kind === "choice") return { values: raw === f.default ? [] : [raw] }; // the default: not sent
     if (raw === "") return { values: [] };
     const [unit, factor] = unitOf(f.name);
     const inUnit = unit ? ` (in ${unit}, the unit chosen beside it)` : "";
@@ -149,7 +151,7 @@
     const linked = [...q.keys()].some((k) => k in fields);
     for (const [g, a] of Object.entries(spec.alts || {})) { // the alternative the link gives
       for (const [opt] of a.options) {
-        if (spec.fields.some((f) => f.alt === `${g}:${opt}` && f.kind !== "material" && q.has(f.name))) $("a-" + g).value = opt;
+        if (spec.fields.some((f) => f.alt === `${g}:${opt}` && !chosen(f) && q.has(f.name))) $("a-" + g).value = opt;
       }
     }
     for (const f of spec.fields) {
@@ -157,8 +159,8 @@
       if (!el) continue;
       const u = $("u-" + f.name);
       if (u && q.has("u." + f.name) && (UNITS[f.kind] || []).some((x) => x[0] === q.get("u." + f.name))) u.value = q.get("u." + f.name);
-      const given = q.has(f.name) ? q.getAll(f.name).join(",") : linked && f.kind !== "material" ? "" : f.default;
-      if (f.kind === "material") { if (given) el.value = given; continue; }
+      const given = q.has(f.name) ? q.getAll(f.name).join(",") : linked && !chosen(f) ? "" : f.default;
+      if (chosen(f)) { if (given) el.value = given; continue; }
       const factor = unitOf(f.name)[1];
       el.value = given === "" ? "" : given.split(",").map((x) => (NUMBER.test(x.trim()) ? show(parseFloat(x) / factor) : x)).join(f.many ? ", " : ",");
     }
@@ -271,7 +273,7 @@
     if (name && name !== "data") {
       const [u] = unitOf(name);
       const typed = $("f-" + name).value.trim();
-      if (typed && fields[name].kind !== "material") text += ` (you typed ${typed}${u ? " " + u : ""})`;
+      if (typed && !chosen(fields[name])) text += ` (you typed ${typed}${u ? " " + u : ""})`;
       say(name, text, "error");
     } else if (name === "data") {
       say("data", text, "error");
@@ -655,9 +657,12 @@
     const mats = `${JSON.stringify(one(v, "cylinder_material"))}, ${JSON.stringify(one(v, "substrate_material"))}`;
     return `cyl = lc.Cylinder.from_presets(${R}, ${mats}, ${adhesion})`;
   }
-  const wirePy = (v) => cylinderPy(v, v.sigma0 || v.h
+  const shapedPy = (v) => (v.cross_section // a polygon on its facet (linecontact.geometry)
+    ? [`cyl = cyl.shaped(lc.geometry.cross_section(${JSON.stringify(one(v, "cross_section"))}, ${one(v, "corner_radius") || 0}))`]
+    : []);
+  const wirePy = (v) => [cylinderPy(v, v.sigma0 || v.h
     ? `cohesive_stress=${one(v, "sigma0")}, adhesion_range=${one(v, "h")}`
-    : `work_of_adhesion=${one(v, "work_of_adhesion")}, equilibrium_spacing=${one(v, "z0")}`);
+    : `work_of_adhesion=${one(v, "work_of_adhesion")}, equilibrium_spacing=${one(v, "z0")}`), ...shapedPy(v)].join("\n");
   const PYTHON = {
     pulloff: (v) => [wirePy(v), "result = cyl.pull_off()", "print(result)",
       ...(v.length ? [`print("on the whole wire [N]:", result.pull_off_force * ${one(v, "length")})`] : [])],
