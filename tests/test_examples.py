@@ -75,6 +75,14 @@ def test_sweep_pulloff(tmp_path):
         ("push_resistance.py", ["critical height H* =", "slide", "roll"]),
         ("cyclic_loss.py", ["full slip at T* =", "J/m per cycle"]),
         ("lennard_jones_curve.py", ["pull-off F/(Eh): Maugis-Dugdale", "Lennard-Jones"]),
+        (
+            "faceted_wire.py",
+            [
+                "facet width 50.00 nm, pull-off  -17.107 N/m (corner-pinned",
+                "strength cap  -18.099 N/m",
+                "a = 22.76 nm, tau0 =   11.0 MPa (10.1 times the round wire's a)",
+            ],
+        ),
     ],
 )
 def test_the_plotting_examples(tmp_path, name, says):
