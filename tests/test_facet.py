@@ -90,7 +90,7 @@ def test_collocation_agrees_with_the_closed_form(r, A_over_f):
 
 @pytest.mark.parametrize(
     ("rho", "s", "sides", "r"),
-    [(HEX_RHO, HEX_S, 6, 0.3), (HEX_RHO, HEX_S, 5, 0.1), (1e4, 0.01, 6, 0.05), (1e4, 0.01, 6, 1.0)],
+    [(1e3, 0.02, 6, 0.3), (1e3, 0.02, 5, 0.1), (1e4, 0.01, 6, 0.05), (1e4, 0.01, 6, 1.0)],
 )
 def test_the_pull_off_by_collocation(rho, s, sides, r):
     p = lc.facet_pull_off(rho, s, sides=sides, corner_radius_over_R=r)
@@ -142,6 +142,8 @@ def test_corner_radius_to_the_circumradius_converges_to_the_round_wire():
 # the defining integrals, by quadrature
 
 
+# quad says so where its estimate meets rounding before 1e-10: the comparison is at 1e-9
+@pytest.mark.filterwarnings("ignore::scipy.integrate.IntegrationWarning")
 @SETTINGS
 @given(
     r=st.floats(0.01, 1.0),
@@ -158,7 +160,7 @@ def test_the_closed_forms_are_the_defining_integrals(r, sides, A_rel, u):
         return math.copysign(max(abs(t) - f, 0.0) / r, t)
 
     # the load of the bounded solution without adhesion: E int_0^a t g'(t)/sqrt(a^2 - t^2) dt
-    tight = {"limit": 500, "epsabs": 0.0, "epsrel": 1e-11}
+    tight = {"limit": 500, "epsabs": 1e-15, "epsrel": 1e-10}
     PH = quad(lambda th: A * math.sin(th) * gp(A * math.sin(th)), 0, math.pi / 2, **tight)[0]
     got = float(_branch.hertz_load(np.array(A), np.array(f), np.array(r))) / r
     assert got == pytest.approx(PH, rel=1e-9, abs=1e-14)
@@ -261,6 +263,26 @@ def test_the_contact_for_a_load_gives_the_load_back(r):
         lc.facet_contact_for_load(
             1.01 * p.F_pulloff_over_Eh, HEX_RHO, HEX_S, sides=6, corner_radius_over_R=r
         )
+
+
+def test_the_mechanism_is_one_name_for_one_state():
+    """A rounded corner lets go at the vanishing width: one label, whatever the rounding."""
+    r = np.linspace(0.02, 0.9, 30)
+    p = lc.facet_pull_off(HEX_RHO, HEX_S, sides=6, corner_radius_over_R=r)
+    assert set(p.mechanism) == {"zero-width"}
+    np.testing.assert_array_equal(p.a_over_R_at_pulloff, 0.0)
+    np.testing.assert_array_equal(p.F_pulloff_over_Eh, p.F_zero_width_over_Eh)
+    sharp = lc.facet_pull_off(HEX_RHO, HEX_S, sides=6, corner_radius_over_R=0.0)
+    assert sharp.mechanism == "corner-pinned" and not sharp.beyond_corner_arc
+
+
+def test_a_zone_past_the_corners_arc_is_flagged():
+    """Below about h the parabola stands for the next facet: said, not hidden."""
+    rc = np.array([0.28e-9, 5e-9]) / 50e-9
+    p = lc.facet_pull_off(HEX_RHO, HEX_S, sides=6, corner_radius_over_R=rc)
+    assert list(p.beyond_corner_arc) == [True, False]
+    f, c = p.facet_half_width_over_R, p.c_over_R_at_pulloff
+    assert c[0] - f[0] > rc[0] * math.sin(math.pi / 3) >= 0
 
 
 # --------------------------------------------------------------------------------------------

@@ -103,6 +103,10 @@ class FacetPullOff(Result):
     F_strip_jkr_over_Eh, F_strength_over_Eh : ndarray or float
         The two limits of a flat facet of half-width ``f``: the strip's JKR pull-off
         :math:`-\sqrt{2\pi f E w}` and the strength cap :math:`-2 \sigma_0 f`, over ``E h``.
+    beyond_corner_arc : ndarray or bool
+        The adhesive zone at pull-off reaches past the corner's arc (``c - f > r_c
+        sin(2 pi/n)``), where the parabolic corner stands for the next facet: the result is
+        then doubtful (corners below about ``h``; a sharp corner, ``r_c = 0``, is exact).
     R_over_h, sigma0_over_E, sides, corner_radius_over_R : ndarray or float
         The parameters, broadcast.
     converged : ndarray or bool
@@ -126,6 +130,7 @@ class FacetPullOff(Result):
     facet_half_width_over_R: NDArray | float
     F_strip_jkr_over_Eh: NDArray | float
     F_strength_over_Eh: NDArray | float
+    beyond_corner_arc: NDArray | bool
     R_over_h: NDArray | float
     sigma0_over_E: NDArray | float
     sides: NDArray | int
@@ -212,16 +217,21 @@ def facet_pull_off(
     f = _b.facet_half_width(n, r)
     F, A, C, conv = _minimum(f, r, rho, s)
     C0, F0 = _zero_width(f, r, rho, s)
-    zero = F0 <= F
+    # the vanishing-width end where the branch's lowest point is it to rounding (the load is
+    # flat to 1e-15 at widths below 1e-4 R: the scan's lowest point there is any of them)
+    zero = F0 <= F + 1e-12 * np.abs(F)
     F = np.where(zero, F0, F)
     A = np.where(zero, 0.0, A)
     C = np.where(zero, C0, C)
     pinned = (r == 0) & (C >= f * (1 - 1e-12)) & (A < f)
     mech = np.where(
-        zero,
-        "zero-width",
-        np.where(pinned, "corner-pinned", np.where(A < f, "inside-facet", "whole-facet")),
+        pinned,
+        "corner-pinned",
+        np.where(zero, "zero-width", np.where(A < f, "inside-facet", "whole-facet")),
     )
+    # the parabolic corner stands for the corner's arc out to x = f + r_c sin(2 pi/n): an
+    # adhesive zone beyond it reaches where the next facet is (docs/faceted.md, Sec. 1)
+    beyond = (r > 0) & (C - f > r * np.sin(2 * np.pi / n))
     jkr = _cf._strip_pull_off(f, rho, s)  # -sqrt(2 pi f E w) / (E h), w = sigma0 h
     vals = dict(
         F_pulloff_over_Eh=F,
@@ -232,6 +242,7 @@ def facet_pull_off(
         facet_half_width_over_R=f,
         F_strip_jkr_over_Eh=jkr,
         F_strength_over_Eh=-2 * s * rho * f,
+        beyond_corner_arc=beyond,
         R_over_h=rho,
         sigma0_over_E=s,
         sides=n.astype(int),
