@@ -82,6 +82,7 @@ def contact(
         r = _fc.facet_contact(a / self.radius, **g)
         F = None
     else:
+        assert load is not None  # exactly one of the two (Cylinder.contact)
         F, Eh = _normal_load(self, "load", load)
         r = _fc.facet_contact_for_load(F / Eh, on_failure="report", **g)
         bad = np.asarray(r.region) == "no-equilibrium"

@@ -51,7 +51,7 @@ def facet_half_width(sides: NDArray, r: NDArray) -> NDArray:
     return (1.0 - r) * np.sin(np.pi / sides)
 
 
-def _f2(u: NDArray) -> tuple[NDArray, NDArray]:
+def _f2(u: NDArray) -> tuple[NDArray, dict[str, NDArray]]:
     """``f2(u) / cosh u`` (so that ``a f2 = c f2 / cosh u`` cannot overflow) and the pieces."""
     p = _cf._scaled(u)
     return p["F2"] / p["Ct"], p

@@ -55,9 +55,9 @@ def _loads(A2: NDArray, f, r, rho, s, u0=None) -> tuple[NDArray, NDArray]:
     K = A2.shape[1]
     ok = np.isfinite(A2)
     Af = np.where(ok, A2, 1.0).reshape(-1)
-    rep = [np.repeat(v, K) for v in (f, r, rho, s)]
+    fK, rK, rhoK, sK = (np.repeat(v, K) for v in (f, r, rho, s))
     start = None if u0 is None else np.repeat(u0, K)
-    u, _, F, _, conv, _ = branch(Af, *rep, u0=start)
+    u, _, F, _, conv, _ = branch(Af, fK, rK, rhoK, sK, u0=start)
     F = np.where(ok.reshape(-1) & conv, F, np.inf).reshape(A2.shape)
     return F, u.reshape(A2.shape)
 
