@@ -394,3 +394,46 @@ def test_the_command_line_refuses_bad_shapes_naming_the_flag(capsys, argv, flag)
     assert err.startswith("error:") or "error:" in err
     assert flag in err
     assert "Traceback" not in err
+
+
+# --------------------------------------------------------------------------------------------
+# the initiation of sliding at the facet's width (a constant friction stress)
+
+
+def test_sliding_starts_at_two_a_tau0_of_the_facets_contact(capsys):
+    """The constant-stress friction law makes the tangential problem at a given width the
+    round wire's (uncoupled, B = 0): full slip at 2 a tau0 with the facet's a."""
+    wire = lc.Cylinder.from_modulus(50e-9, 50e9, work_of_adhesion=0.1, equilibrium_spacing=3e-10)
+    hexagon = wire.shaped(lc.Polygon(6, 5e-9))
+    a = hexagon.contact(load=1.0).contact_half_width
+    r = hexagon.sliding_initiation(normal_load=1.0, friction_stress=1e8, tangential_load=[0.5, 2.0])
+    assert r.contact_half_width == pytest.approx(a, rel=1e-12)
+    assert r.full_slip_load == pytest.approx(2 * a * 1e8, rel=1e-12)
+    want = lc.sliding_initiation(1e8 / 50e9, T_over_Ea=np.array([0.5, 2.0]) / (50e9 * a))
+    np.testing.assert_allclose(r.stick_zone_end, want.d_over_a * a, rtol=1e-12)
+    # the command line, with SI inputs and with the groups, gives the same stick zones
+    capsys.readouterr()
+    argv = ["slide-init", "--cross-section", "hexagon", "--corner-radius", "5e-9", *ARGV]
+    assert (
+        main([*argv, "--load", "1", "--tau0", "1e8", "--tangential-load", "0.5", "2", "--json"])
+        == 0
+    )
+    doc = json.loads(capsys.readouterr().out)
+    np.testing.assert_allclose([x["d_m"] for x in doc["results"]], r.stick_zone_end, rtol=1e-12)
+    with pytest.raises(lc.NoEquilibriumError, match="2 a tau0"):
+        hexagon.sliding_initiation(normal_load=1.0, friction_stress=1e8, tangential_load=10.0)
+    with pytest.raises(ValueError, match="not written for a hexagon wire"):
+        hexagon.steady_rolling(normal_load=1.0, friction_stress=1e8, tangential_load=0.5)
+
+
+@pytest.mark.parametrize(
+    ("argv", "flag"),
+    [
+        (["--a-over-R", "0.1", "--tau0-over-E", "0.002", "--T-over-Ea", "0.1"], "--cross-section"),
+        (["--friction", "coulomb", "--mu", "0.3", "--a-over-R", "0.1"], "--friction"),
+    ],
+)
+def test_slide_init_refuses_a_shape_it_cannot_use(capsys, argv, flag):
+    capsys.readouterr()
+    assert main(["slide-init", "--cross-section", "hexagon", *argv]) == 2
+    assert flag in capsys.readouterr().err

@@ -82,7 +82,8 @@ class Cylinder:
         :class:`~linecontact.geometry.Round` (the default) or a
         :class:`~linecontact.geometry.Polygon` on its facet (``radius`` its circumradius):
         :meth:`shaped` gives the same wire with another; the problems written for a polygon
-        are :meth:`contact` and :meth:`pull_off` under the Dugdale law (``WRITTEN``).
+        are :meth:`contact`, :meth:`pull_off` and :meth:`sliding_initiation` (its constant
+        friction stress) under the Dugdale law (``WRITTEN``).
     cohesive_stress, adhesion_range : float
         ``sigma0`` [Pa] (0: no adhesion) and ``h`` [m] of the law's Dugdale step.
 
@@ -504,6 +505,8 @@ class Cylinder:
         self, name: str, load: ArrayLike, branch: str = "stable", policy: FailurePolicy = "raise"
     ) -> CylinderContact:
         """The contact carrying ``load`` [N/m]; messages name the caller's parameter."""
+        if self.cross_section.kind != "round":
+            return _facet.for_load(self, name, load, policy)
         F, Eh = _normal_load(self, name, load)
         if branch == "stable" and policy == "raise":
             # said in the units given ([N/m]), not only as F_over_Eh
@@ -587,7 +590,7 @@ class Cylinder:
         "contact": {"round": (Dugdale, LennardJones), "polygon": (Dugdale,)},
         "pull_off": {"round": (Dugdale, LennardJones), "polygon": (Dugdale,)},
         "load_curve": {"round": (Dugdale, LennardJones)},
-        "sliding_initiation": {"round": (Dugdale,)},
+        "sliding_initiation": {"round": (Dugdale,), "polygon": (Dugdale,)},
         "steady_rolling": {"round": (Dugdale,)},
         "push": {"round": (Dugdale,)},
         "tangential_history": {"round": (Dugdale,)},
@@ -613,8 +616,9 @@ class Cylinder:
         if shape.kind != "round":
             raise ValueError(
                 f"{problem} is not written for a {shape.name} wire (cross_section="
-                f"{shape!r}) under the {self.adhesion.name} law: for a polygon, the contact "
-                "and the pull-off under the Dugdale law are; the round wire "
+                f"{shape!r}) under the {self.adhesion.name} law: for a polygon, the contact, "
+                "the pull-off and the initiation of sliding (a constant friction stress) under "
+                "the Dugdale law are; the round wire "
                 "(cross_section=Round()) has every problem"
             )
         raise ValueError(

@@ -13,7 +13,7 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike
+from numpy.typing import ArrayLike, NDArray
 
 from .. import domain as _domain
 from .. import facet as _fc
@@ -69,36 +69,44 @@ def contact(
     policy: FailurePolicy,
 ) -> CylinderContact:
     """The contact of a polygonal wire at half-widths ``a`` [m] or loads ``F`` [N/m]."""
-    if method != "closed-form" or branch != "stable":
-        named = [
-            k for k, v in (("method", method != "closed-form"), ("branch", branch != "stable")) if v
-        ]
+    named = [
+        k for k, v in (("method", method != "closed-form"), ("branch", branch != "stable")) if v
+    ]
+    if named:
         self._not_written(f"the contact with {', '.join(named)}")
+    if load is not None:
+        return for_load(self, "load", load, policy)
+    a = positive("contact_half_width", contact_half_width)
+    _domain.check_si("contact_half_width", a, self.radius, "facet_a_over_R", "m")
+    r = _fc.facet_contact(a / self.radius, **_groups(self))
+    return _wrap(self, r, None)
+
+
+def for_load(self: Cylinder, name: str, load: ArrayLike, policy: FailurePolicy) -> CylinderContact:
+    """The stable contact carrying ``load`` [N/m]; messages name the caller's parameter."""
     g = _groups(self)
-    scales = Scales.of(self)
-    if contact_half_width is not None:
-        a = positive("contact_half_width", contact_half_width)
-        _domain.check_si("contact_half_width", a, self.radius, "facet_a_over_R", "m")
-        r = _fc.facet_contact(a / self.radius, **g)
-        F = None
-    else:
-        assert load is not None  # exactly one of the two (Cylinder.contact)
-        F, Eh = _normal_load(self, "load", load)
-        r = _fc.facet_contact_for_load(F / Eh, on_failure="report", **g)
-        bad = np.asarray(r.region) == "no-equilibrium"
-        if policy == "raise" and np.any(bad):
-            p = _fc.facet_pull_off(**g)
-            Fi = float(np.reshape(np.broadcast_to(F, bad.shape), -1)[np.argmax(bad.reshape(-1))])
-            raise NoEquilibriumError(
-                f"no contact carries load={Fi!r} N/m: it is below the pull-off force of this "
-                f"{self.cross_section.name} wire, {p.F_pulloff_over_Eh * Eh!r} N/m; the wire has "
-                "pulled off"
-            )
+    F, Eh = _normal_load(self, name, load)
+    r = _fc.facet_contact_for_load(F / Eh, on_failure="report", **g)
+    bad = np.asarray(r.region) == "no-equilibrium"
+    if policy == "raise" and np.any(bad):
+        p = _fc.facet_pull_off(**g)
+        Fi = float(np.reshape(np.broadcast_to(F, bad.shape), -1)[np.argmax(bad.reshape(-1))])
+        raise NoEquilibriumError(
+            f"no contact carries {name}={Fi!r} N/m: it is below the pull-off force of this "
+            f"{self.cross_section.name} wire, {p.F_pulloff_over_Eh * Eh!r} N/m; the wire has "
+            "pulled off"
+        )
+    return _wrap(self, r, F)
+
+
+def _wrap(self: Cylinder, r: _fc.FacetContact, F: NDArray | None) -> CylinderContact:
+    """The SI contact of ``r``; the load as given where one was (not back from ``F/(E h)``)."""
     # (no small-strain warning at a/R: a contact on the flat facet strains nothing; the
     # corner's parabola is the model's reading, docs/faceted.md)
+    scales = Scales.of(self)
     si = to_si(r, scales)
     state = np.where(np.asarray(r.region) == "no-equilibrium", "no-equilibrium", "contact")
-    if F is not None:  # the load asked for, not F/(E h) times E h
+    if F is not None:
         si["load"] = _as_given(F, si["load"])
     return CylinderContact(
         **si,

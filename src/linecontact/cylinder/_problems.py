@@ -101,6 +101,8 @@ def _cylinder_tangential(
     d = st if d_over_a is not None else None
     if coulomb:
         _refuse_adhesion_with_coulomb(cylinder)
+        if cylinder.cross_section.kind != "round":  # its shear bound is the Hertz pressure's
+            cylinder._not_written(f"{problem} with friction_coefficient (Coulomb friction)")
     contact = cylinder._for_load("normal_load", F)
     a = np.asarray(contact.contact_half_width)
     if coulomb:

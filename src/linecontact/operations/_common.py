@@ -160,10 +160,12 @@ def si_inputs(range_flag: str = "--h") -> tuple[tuple[Parameter, ...], tuple[Ent
 SHAPE_GROUP = "cross-section (a faceted wire lying on a facet; docs/faceted.md)"
 
 
-def shape_parameters() -> tuple[tuple[Parameter, ...], tuple[Entry, ...]]:
+def shape_parameters(
+    group: str = SHAPE_GROUP,
+) -> tuple[tuple[Parameter, ...], tuple[Entry, ...]]:
     """``cross_section`` and a polygon's corner radius, in metres (SI) or over ``R`` (groups).
 
-    With the entry that says the two corner radii in one line of help.
+    In the help section ``group``, with the entry that says the three in one line of help.
     """
     params = (
         Parameter(
@@ -174,26 +176,26 @@ def shape_parameters() -> tuple[tuple[Parameter, ...], tuple[Entry, ...]]:
             choices=("round", *NAMED_SIDES),
             default="round",
             metavar="SHAPE",
-            group=SHAPE_GROUP,
+            group=group,
         ),
         Parameter(
             "corner_radius",
             "a polygon's corner radius r_c [m] (SI), 0 (sharp, the default) to the circumradius",
             unit="m",
             metavar="RC",
-            group=SHAPE_GROUP,
+            group=group,
         ),
         Parameter(
             "corner_radius_over_R",
             "a polygon's corner radius over the circumradius, in [0, 1] (groups; 1: round)",
             metavar="RC/R",
-            group=SHAPE_GROUP,
+            group=group,
         ),
     )
     entries = (
         Entry(
-            ("corner_radius", "corner_radius_over_R"),
-            "a polygon's corner radius [m], or over R in [0, 1] (default 0: sharp)",
+            ("cross_section", "corner_radius", "corner_radius_over_R"),
+            "%(default)s, or a polygon on a facet; its corner radius [m], or over R",
         ),
     )
     return params, entries

@@ -20,12 +20,16 @@ from .._validation import non_negative
 from ..cylinder import Cylinder
 from ..domain import DOMAIN, check
 from ..errors import NoEquilibriumError, ParameterError
+from ..facet import facet_contact_for_load, facet_pull_off
 from ..normal import contact_for_load, pull_off
 from ..output import Table
 from ._common import (
     cylinder,
     flag,
     group_parameters,
+    shape,
+    shape_parameters,
+    shape_parameters_of,
     si_given,
     si_inputs,
     si_parameters,
@@ -87,7 +91,9 @@ def _normal_contact(args: Inputs, coulomb: bool):
             raise ParameterError("--load", "SI inputs need the normal load --load [N/m]")
         if coulomb and not _given(args, *_ADHESION_KEYS):
             args.h = args.radius  # no adhesion: the range h only sets an unused length scale
-        return None, None, cylinder(args)
+        cyl = cylinder(args)
+        shape(args, cyl)  # the corner radius given as the SI inputs want it
+        return None, None, cyl
     if args.load is not None:
         raise ParameterError(
             "--load", "--load [N/m] is an SI input: give --radius and the materials too"
@@ -111,10 +117,17 @@ def _normal_contact(args: Inputs, coulomb: bool):
                 "Coulomb friction is the counterpart for the non-adhesive Hertz contact: use "
                 "--sigma0-over-E 0 (or --friction constant)",
             )
+        g = shape(args, None)
         try:
-            c = contact_for_load(args.F_over_Eh, args.R_over_h, args.sigma0_over_E)
+            if g is not None:
+                c = facet_contact_for_load(args.F_over_Eh, args.R_over_h, args.sigma0_over_E, **g)
+            else:
+                c = contact_for_load(args.F_over_Eh, args.R_over_h, args.sigma0_over_E)
         except NoEquilibriumError:  # said with the flags (the minimum load: no flag of its own)
-            F_min = pull_off(args.R_over_h, args.sigma0_over_E).F_minimum_over_Eh
+            if g is not None:
+                F_min = facet_pull_off(args.R_over_h, args.sigma0_over_E, **g).F_pulloff_over_Eh
+            else:
+                F_min = pull_off(args.R_over_h, args.sigma0_over_E).F_minimum_over_Eh
             raise NoEquilibriumError(
                 f"no contact carries --F-over-Eh={args.F_over_Eh!r}: it is below the pull-off "
                 f"force, {F_min + 0.0:.6g} in the units of --F-over-Eh (the minimum load on the "
@@ -123,6 +136,12 @@ def _normal_contact(args: Inputs, coulomb: bool):
         return c.a_over_R, args.F_over_Eh, None
     if args.F_over_Eh is not None:
         raise ParameterError("--F-over-Eh", "--F-over-Eh needs --R-over-h and --sigma0-over-E")
+    if shape(args, None) is not None:
+        raise ParameterError(
+            "--cross-section",
+            "--cross-section shapes the normal contact (--R-over-h, --sigma0-over-E, "
+            "--F-over-Eh, or SI inputs): with --a-over-R the contact's width is given",
+        )
     return args.a_over_R, None, None
 
 
@@ -185,6 +204,9 @@ def _params(args, coulomb: bool, A, F_over_Eh) -> dict[str, Any]:
         params["a_over_R"] = float(A)
     if F_over_Eh is not None:
         params.update(R_over_h=args.R_over_h, sigma0_over_E=args.sigma0_over_E, F_over_Eh=F_over_Eh)
+        g = shape(args, None)
+        if g is not None:
+            params.update(shape_parameters_of(g, None))
     return params
 
 
@@ -202,6 +224,12 @@ def _si_friction(args: Inputs, coulomb: bool, cyl: Cylinder) -> dict[str, Any]:
 def _run(args: Inputs, rolling: bool) -> Table:
     coulomb = args.friction == "coulomb"
     _check_friction(args, coulomb)
+    if coulomb and (getattr(args, "cross_section", None) or "round") != "round":
+        raise ParameterError(
+            "--friction",
+            "--friction coulomb bounds the shear by the Hertz pressure of a round wire: a "
+            f"{args.cross_section} wire takes --friction constant (a friction stress)",
+        )
     states = _given(args, "d_over_a", "T_over_Ea", "T_over_muF", "tangential_load")
     if len(states) != 1:
         raise ParameterError(
@@ -250,6 +278,9 @@ def _run_si(args, rolling, coulomb, cyl: Cylinder, state, values, d) -> Table:
     contact = cyl.contact(load=args.load, on_failure="report")
     params: dict[str, Any] = {"friction": "coulomb" if coulomb else "constant"}
     params.update(si_parameters(args, cyl))
+    g = shape(args, cyl)
+    if g is not None:
+        params.update(shape_parameters_of(g, cyl))
     params["F_N_per_m"] = args.load
     if contact.state != "contact":
         # the normal load is below the pull-off force: no tangential state exists
@@ -384,13 +415,15 @@ def tangential_operation(
     loads: tuple[Parameter, ...],
     method: tuple[str, tuple[str, ...]],
     compute: Any,
+    shapes: tuple[tuple[Parameter, ...], tuple[Entry, ...]] = ((), ()),
     **how: Any,
 ) -> Operation:
     """A tangential loading of the normal contact (``slide-init``, ``roll``, ``cycle``, ...).
 
     Its parameters: the friction, the ``loads``, the normal contact and ``--method`` (its
-    help and choices, ``closed-form`` by default); ``text`` is its description and examples,
-    ``how`` the rest of the :class:`Operation`.
+    help and choices, ``closed-form`` by default), and ``shapes`` (the wire's cross-section
+    and their entries, where the problem is written for a polygon); ``text`` is its
+    description and examples, ``how`` the rest of the :class:`Operation`.
     """
     return Operation(
         name,
@@ -402,12 +435,14 @@ def tangential_operation(
             *loads,
             *_normal_contact_parameters(),
             Parameter("method", method[0], kind="text", choices=method[1], default="closed-form"),
+            *shapes[0],
         ),
         compute,
         entries=(
             *_FRICTION_ENTRIES,
             *_SI_ENTRIES,
             Entry(("F_over_Eh", "load"), "normal load F/(E h), or F [N/m] (SI)"),
+            *shapes[1],
         ),
         **how,
     )
@@ -428,6 +463,8 @@ def _operation(name: str, summary: str, compute: Any) -> Operation:
         ),
         ("the closed forms or collocation", ("closed-form", "collocation")),
         compute,
+        # a polygon's initiation of sliding: the constant friction stress at its contact
+        shapes=shape_parameters(_NORMAL) if name == "slide-init" else ((), ()),
         good=("stick", "stick-slip", "sliding"),
         rows=("d_over_a", "T_over_Ea", "T_over_muF", "tangential_load"),
     )
