@@ -437,3 +437,31 @@ def test_slide_init_refuses_a_shape_it_cannot_use(capsys, argv, flag):
     capsys.readouterr()
     assert main(["slide-init", "--cross-section", "hexagon", *argv]) == 2
     assert flag in capsys.readouterr().err
+
+
+def test_normal_gives_the_facets_contact_for_widths_and_loads(capsys):
+    wire = lc.Cylinder.from_modulus(50e-9, 50e9, work_of_adhesion=0.1, equilibrium_spacing=3e-10)
+    hexagon = wire.shaped(lc.Polygon(6, 5e-9))
+    capsys.readouterr()
+    argv = ["normal", "--cross-section", "hexagon", "--corner-radius", "5e-9", *ARGV]
+    assert main([*argv, "--load", "-20", "0", "1", "--json"]) == 0
+    cap = capsys.readouterr()
+    assert "small-strain" not in cap.err  # a contact on the facet: a/R is no strain
+    rows = json.loads(cap.out)["results"]
+    assert rows[0]["state"] == "no-equilibrium" and "pulled off" in rows[0]["reason"]
+    want = hexagon.contact(load=[0.0, 1.0])
+    np.testing.assert_allclose([r["a_m"] for r in rows[1:]], want.contact_half_width, rtol=1e-12)
+    assert [r["F_N_per_m"] for r in rows[1:]] == [0.0, 1.0]
+    assert (
+        main(
+            ["normal", "--cross-section", "pentagon", "--corner-radius-over-R", "0.1"]
+            + ["--R-over-h", "171", "--sigma0-over-E", "0.00684", "--a-over-R", "0.1", "--json"]
+        )
+        == 0
+    )
+    (row,) = json.loads(capsys.readouterr().out)["results"]
+    got = lc.facet_contact(0.1, 171.0, 0.00684, sides=5, corner_radius_over_R=0.1)
+    assert row["F_over_Eh"] == pytest.approx(got.F_over_Eh, rel=1e-12)
+    assert row["region"] == "inside-facet"
+    assert main([*argv, "--load", "0", "--method", "collocation"]) == 2
+    assert "--method" in capsys.readouterr().err

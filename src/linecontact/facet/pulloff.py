@@ -324,7 +324,7 @@ def facet_contact_for_load(
     Aok = np.where(ok, A, 1.0)
     u, C, F, res, conv, pinned = branch(Aok, f, r, rho, s)
     C = np.where(sharp_loaded, f, C)
-    F = np.where(sharp_loaded, Ft, F)
+    F = np.where(ok, Ft, F)  # the load asked for: the state carries it to the bisection's last bit
     pinned |= sharp_loaded
     region = np.where(pinned, "corner-pinned", np.where(Aok < f, "inside-facet", "whole-facet"))
     nan = np.where(ok, 1.0, np.nan)

@@ -9,7 +9,7 @@ import numpy as np
 from ..closed_forms import kappa, maugis_parameter
 from ..cylinder import Cylinder, _si_load_curve
 from ..errors import ParameterError
-from ..facet import facet_pull_off
+from ..facet import facet_contact, facet_contact_for_load, facet_pull_off
 from ..laws import lennard_jones as _lj
 from ..normal import NormalContact, contact_for_load, load_curve, normal_contact, pull_off
 from ..output import Table
@@ -63,7 +63,11 @@ def _lj_parameters(args, rho: float, s: float, cyl: Cylinder | None) -> dict[str
 
 def _cmd_normal(args: Inputs) -> Table:
     rho, s, cyl = groups(args)
+    g = shape(args, cyl)
+    _not_for_polygon(args, g)
     A = half_widths(args, cyl, "F_over_Eh")
+    if g is not None:
+        return _cmd_normal_facet(args, A, rho, s, cyl, g)
     if args.law == "lennard-jones":
         return _cmd_normal_lj(args, A, rho, s, cyl)
     c: Any = None  # the SI result (SI inputs)
@@ -102,6 +106,67 @@ def _cmd_normal(args: Inputs) -> Table:
         given = "F_over_Eh"
     table = _normal_table(args, r, c, rho, s, cyl, state, reason, given)
     return table
+
+
+def _cmd_normal_facet(
+    args: Inputs, A, rho: float, s: float, cyl: Cylinder | None, g: dict[str, Any]
+) -> Table:
+    """The contact of a polygonal wire on its facet at given half-widths or loads."""
+    for name, value, default in (
+        ("branch", args.branch, "stable"),
+        ("method", args.method, "closed-form"),
+    ):
+        if value != default:
+            raise ParameterError(
+                f"--{name}",
+                f"--{name} {value} is not written for a {args.cross_section} wire: its contact "
+                "is the closed form's, the stable state for a load",
+            )
+    c: Any = None  # the SI result (SI inputs)
+    if A is not None:
+        if cyl is None:
+            r = facet_contact(A, rho, s, **g)
+        else:  # A in m
+            c = cyl.contact(contact_half_width=A)
+            r = c.nondimensional
+        given = "a_over_R"
+    else:
+        if cyl is None:
+            F = np.asarray(args.F_over_Eh, float)
+            r = facet_contact_for_load(F, rho, s, on_failure="report", **g)
+        else:
+            c = cyl.contact(load=si_loads(args, cyl, "F_over_Eh"), on_failure="report")
+            r = c.nondimensional
+        given = "F_over_Eh"
+    bad = np.asarray(r.region).reshape(-1) == "no-equilibrium"
+    state = np.where(bad, "no-equilibrium", "contact")
+    reason = np.full(state.shape, None, dtype=object)
+    if bad.any():
+        po = facet_pull_off(rho, s, **g).F_pulloff_over_Eh
+        reason[bad] = (
+            f"no contact carries this load: it is below the pull-off force {_force(cyl, po)} "
+            f"of this {args.cross_section} wire (it has pulled off)"
+        )
+    params = _parameters(args, rho, s, cyl)
+    params.update(shape_parameters_of(g, cyl))
+    extra: dict[str, Any] = {}
+    show = ["a_over_R", "c_over_R", "F_over_Eh", "region", "stable"]
+    if cyl is not None:
+        names = {"contact_half_width": "a_m", "adhesive_zone_half_width": "c_m"}
+        names["load"] = "F_N_per_m"
+        cols, shown = si_shown(args, c, names, {"load": "F_total_N"}, ["a_m", "c_m", "F_N_per_m"])
+        extra.update(cols)
+        show += shown
+    return records(
+        args,
+        r,
+        params,
+        extra,
+        f"normal contact of a {args.cross_section} wire on its facet (closed form), "
+        "compressive load positive",
+        show,
+        contact=(state, reason, given),
+    )
 
 
 def _cmd_normal_lj(args: Inputs, A, rho: float, s: float, cyl: Cylinder | None) -> Table:
@@ -485,6 +550,7 @@ _LAW = Parameter(
 )
 _SI, _SI_ENTRIES = si_inputs()
 _SHAPE, _SHAPE_ENTRIES = shape_parameters()
+_SHAPE_OPTIONS, _ = shape_parameters("")  # among the options: normal's help fits a screen
 _WIDTHS = "contact half-widths or loads (exactly one)"
 _SAMPLING = "sampling"
 
@@ -520,11 +586,12 @@ OPERATIONS = {
                 default="closed-form",
             ),
             _LAW,
+            *_SHAPE_OPTIONS,
         ),
         _cmd_normal,
         good=("contact",),
         rows=("a_over_R", "F_over_Eh", "a", "load"),
-        entries=_SI_ENTRIES,
+        entries=(*_SI_ENTRIES, *_SHAPE_ENTRIES),
     ),
     "pulloff": Operation(
         "pulloff",
