@@ -465,3 +465,40 @@ def test_normal_gives_the_facets_contact_for_widths_and_loads(capsys):
     assert row["region"] == "inside-facet"
     assert main([*argv, "--load", "0", "--method", "collocation"]) == 2
     assert "--method" in capsys.readouterr().err
+
+
+# --------------------------------------------------------------------------------------------
+# the fits: tau0 from a friction force at the facet's width, w from a faceted pull-off
+
+
+def test_tau0_from_a_friction_force_at_the_facets_width():
+    hexagon = lc.Polygon(6, 5e-9)
+    wire = lc.Cylinder.from_modulus(50e-9, 50e9, work_of_adhesion=0.1, equilibrium_spacing=3e-10)
+    loads = np.array([0.0, 1.0, 5.0])
+    a = wire.shaped(hexagon).contact(load=loads).contact_half_width
+    # the friction force of a full slip at tau0 = 30 MPa (Cylinder.sliding_initiation's)
+    f = 2 * a * 3e7
+    tau = lc.shear_strength_from_friction(f, loads, 50e-9, 50e9, 0.1, 0.3e-9, cross_section=hexagon)
+    np.testing.assert_allclose(tau, 3e7, rtol=1e-12)
+    # read as a round wire, the same forces give a shear strength several times larger
+    tau_round = lc.shear_strength_from_friction(f, loads, 50e-9, 50e9, 0.1, 0.3e-9)
+    assert np.all(tau_round > 5 * tau)
+    with pytest.raises(ValueError, match="contact='maugis-dugdale'"):
+        lc.shear_strength_from_friction(
+            f, loads, 50e-9, 50e9, 0.1, 0.3e-9, cross_section=hexagon, contact="jkr"
+        )
+
+
+def test_w_from_pull_offs_of_faceted_wires_round_trips():
+    from linecontact.fits import pull_off_force, work_of_adhesion_from_pull_off
+
+    pentagon = lc.Polygon(5, 2e-9)
+    w = np.array([0.05, 0.1, 0.3])
+    F = pull_off_force(50e-9, 50e9, w, 0.3e-9, cross_section=pentagon)
+    wire = lc.Cylinder.from_modulus(50e-9, 50e9, work_of_adhesion=0.1, equilibrium_spacing=3e-10)
+    assert F[1] == pytest.approx(wire.shaped(pentagon).pull_off().pull_off_force, rel=1e-12)
+    back = work_of_adhesion_from_pull_off(F, 50e-9, 50e9, 0.3e-9, cross_section=pentagon)
+    np.testing.assert_allclose(back, w, rtol=1e-10)
+    # the round wire's reading of a faceted wire's pull-off: a work of adhesion far too large
+    round_w = work_of_adhesion_from_pull_off(F, 50e-9, 50e9, 0.3e-9)
+    assert np.all(round_w > 3 * w)

@@ -29,6 +29,8 @@ from ._validation import (
 )
 from .cylinder import _check_cylinder_si, _plausible
 from .errors import ParameterError
+from .facet import facet_pull_off
+from .geometry import CrossSection
 from .materials import MAUGIS_STRENGTH
 
 __all__ = [
@@ -52,16 +54,40 @@ def _groups(radius, modulus, w, z0):
     return radius / h, S_LJ * w / (z0 * modulus), h
 
 
+def _shape(cross_section: CrossSection | None, R: NDArray) -> dict[str, Any] | None:
+    """A polygon's groups at the radii ``R`` (None: the round wire), checked against them."""
+    if cross_section is None or cross_section.kind == "round":
+        return None
+    if not isinstance(cross_section, CrossSection):
+        raise ParameterError(
+            "cross_section",
+            f"cross_section must be linecontact.Round() or Polygon(...), got {cross_section!r}",
+        )
+    cross_section.checked(float(np.min(R)))  # a corner radius above a radius, named
+    return cross_section.groups(R)  # its groups at each radius
+
+
+def _pull_off_over_Eh(rho, s, shape: dict[str, Any] | None) -> NDArray:
+    """The pull-off over E h of the round wire, or of a polygon on its facet (its groups)."""
+    if shape is None:
+        return np.asarray(_normal.pull_off(rho, s).F_pulloff_over_Eh)
+    return np.asarray(facet_pull_off(rho, s, **shape).F_pulloff_over_Eh)
+
+
 def pull_off_force(
     radius: ArrayLike,
     modulus: ArrayLike,
     work_of_adhesion: ArrayLike,
     equilibrium_spacing: ArrayLike,
+    *,
+    cross_section: CrossSection | None = None,
 ) -> NDArray:
     r"""Maugis--Dugdale pull-off force per unit length [N/m] (negative), vectorised.
 
     The forward model of the pull-off inversions: :func:`linecontact.pull_off` at
-    :math:`R/h`, :math:`\sigma_0/E` of the adhesion ``(w, z0)``, times :math:`E h`.
+    :math:`R/h`, :math:`\sigma_0/E` of the adhesion ``(w, z0)``, times :math:`E h`; with
+    ``cross_section=Polygon(sides, corner_radius)`` that of a faceted wire on its facet
+    (:func:`linecontact.facet_pull_off`, ``radius`` its circumradius).
 
     Examples
     --------
@@ -76,7 +102,7 @@ def pull_off_force(
     )
     _check_cylinder_si(R, E, {"work_of_adhesion": w, "equilibrium_spacing": z0}, stacklevel=4)
     rho, s, h = _groups(R, E, w, z0)
-    return np.asarray(_normal.pull_off(rho, s).F_pulloff_over_Eh) * E * h
+    return _pull_off_over_Eh(rho, s, _shape(cross_section, R)) * E * h
 
 
 def jkr_pull_off_force(radius: ArrayLike, modulus: ArrayLike, work_of_adhesion: ArrayLike):
@@ -194,6 +220,7 @@ def work_of_adhesion_from_pull_off(
     equilibrium_spacing: ArrayLike,
     *,
     on_failure: FailurePolicy = "raise",
+    cross_section: CrossSection | None = None,
 ) -> NDArray:
     """The work of adhesion [J/m^2] whose Maugis--Dugdale pull-off is the one measured.
 
@@ -207,6 +234,9 @@ def work_of_adhesion_from_pull_off(
         A force that no ``w`` produces raises (``"raise"``, default) or gives NaN at its
         point (``"report"``: what :func:`~linecontact.inverse.propagate` wants, so that a
         batch of draws is not split around the unreachable ones).
+    cross_section : Polygon, optional
+        A faceted wire on its facet (``radius`` its circumradius): the pull-off of
+        :func:`pull_off_force` with it. Default: the round wire.
 
     Returns
     -------
@@ -232,6 +262,7 @@ def work_of_adhesion_from_pull_off(
         equilibrium_spacing,
         unreachable="nan" if failure_policy(on_failure) == "report" else "raise",
         stacklevel=5,
+        cross_section=cross_section,
     )
 
 
@@ -244,6 +275,7 @@ def _work_from_pull_off(
     rtol: float = 1e-15,
     unreachable: Literal["raise", "nan"] = "raise",
     stacklevel: int = 4,
+    cross_section: CrossSection | None = None,
 ) -> NDArray:
     """:func:`work_of_adhesion_from_pull_off` with the options of the module's own callers.
 
@@ -260,14 +292,22 @@ def _work_from_pull_off(
     _check_cylinder_si(
         R, E, {"work_of_adhesion": None, "equilibrium_spacing": z0}, stacklevel=stacklevel
     )
+    shape = _shape(cross_section, R)
+    # a polygon's search: sigma0/E up to 1 (its scan of the branch is not for stiffer glue)
     w_lo = _S_MIN * E * z0 / S_LJ
-    w_hi = _S_MAX * E * z0 / S_LJ
-    F_lo = pull_off_force_at(R, E, w_hi, z0)  # the strongest adhesion searched
-    F_hi = pull_off_force_at(R, E, w_lo, z0)  # the weakest
+    s_max = _S_MAX if shape is None else 1.0
+    w_hi = s_max * E * z0 / S_LJ
+
+    def force_at(R, E, w, z0):
+        rho, s, h = _groups(R, E, w, z0)
+        return _pull_off_over_Eh(rho, s, shape) * E * h
+
+    F_lo = force_at(R, E, w_hi, z0)  # the strongest adhesion searched
+    F_hi = force_at(R, E, w_lo, z0)  # the weakest
     bad = ~((F < F_hi) & (F > F_lo))
     if np.any(bad) and unreachable == "nan":  # for propagate: nan where no w reaches
         Fm = np.where(bad, 0.5 * (F_lo + F_hi), F)
-        w = _bisect_log(lambda w: Fm - pull_off_force_at(R, E, w, z0), w_lo, w_hi, rtol)
+        w = _bisect_log(lambda w: Fm - force_at(R, E, w, z0), w_lo, w_hi, rtol)
         return _work_in_domain(np.where(bad, np.nan, w), "nan", E, "N/m", pull_off_force=F)
     if np.any(bad):
         _, at = first_point(bad, F=F, R=R, E=E, z0=z0, lo=F_lo, hi=F_hi)
@@ -277,11 +317,11 @@ def _work_from_pull_off(
             f"adhesion at radius={at['R']!r} m, modulus="
             f"{at['E']!r} Pa, equilibrium_spacing={at['z0']!r}"
             f" m: the reachable pull-off forces are ({at['lo']:.6g}, "
-            f"{at['hi']:.6g}) N/m (an adhesive stress from {_S_MIN:g} to {_S_MAX:g} times the "
+            f"{at['hi']:.6g}) N/m (an adhesive stress from {_S_MIN:g} to {s_max:g} times the "
             "modulus)",
         )
     # the pull-off force falls (grows in magnitude) with w
-    w = _bisect_log(lambda w: F - pull_off_force_at(R, E, w, z0), w_lo, w_hi, rtol)
+    w = _bisect_log(lambda w: F - force_at(R, E, w, z0), w_lo, w_hi, rtol)
     return _work_in_domain(w, unreachable, E, "N/m", pull_off_force=F)
 
 

@@ -51,8 +51,11 @@ class CrossSection:
         """The cross-section checked against the wire's ``radius`` [m] (itself)."""
         return self
 
-    def groups(self, radius: float) -> dict[str, Any]:
-        """The groups the kernels take beside ``R/h`` and ``sigma0/E`` (lengths over ``R``)."""
+    def groups(self, radius: Any) -> dict[str, Any]:
+        """The groups the kernels take beside ``R/h`` and ``sigma0/E`` (lengths over ``R``).
+
+        ``radius`` [m] a number or an array of them (the groups then per radius).
+        """
         return {}
 
     def parameters(self) -> dict[str, Any]:
@@ -129,8 +132,8 @@ class Polygon(CrossSection):
         """The width of the flat facet [m]: ``2 (R - r_c) sin(pi/n)``."""
         return 2 * (radius - self.corner_radius) * math.sin(math.pi / self.sides)
 
-    def groups(self, radius: float) -> dict[str, Any]:
-        """``sides`` and ``corner_radius_over_R``."""
+    def groups(self, radius: Any) -> dict[str, Any]:
+        """``sides`` and ``corner_radius_over_R`` (an array for an array of radii)."""
         return {"sides": self.sides, "corner_radius_over_R": self.corner_radius / radius}
 
     def parameters(self) -> dict[str, Any]:

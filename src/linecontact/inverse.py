@@ -42,6 +42,7 @@ from ._pull_off_model import (
     S_LJ,
     _bisect_log,
     _groups,
+    _shape,
     _work_in_domain,
     dmt_pull_off_force,
     jkr_pull_off_force,
@@ -53,7 +54,9 @@ from ._validation import FailurePolicy, broadcast, check_array, failure_policy, 
 from .cylinder import _check_cylinder_si, _plausible, _warn_widths
 from .cylinder._checks import _small_strain_in_si, _warn_small_strain
 from .errors import ModelValidityWarning, ParameterError
+from .facet import facet_contact_for_load as _facet_contact_for_load
 from .fits import AdhesionFit, ShearStrengthFit, fit_pull_off, fit_shear_strength
+from .geometry import CrossSection
 from .uncertainty import Estimate, propagate
 
 if TYPE_CHECKING:
@@ -258,6 +261,7 @@ def shear_strength_from_friction(
     *,
     contact: str = "maugis-dugdale",
     receding_work_of_adhesion: ArrayLike | None = None,
+    cross_section: CrossSection | None = None,
 ) -> NDArray:
     r"""Interfacial shear strength ``tau0`` [Pa] from a sliding friction force per length.
 
@@ -272,6 +276,11 @@ def shear_strength_from_friction(
       (:func:`linecontact.sliding_contact_for_load`, ``work_of_adhesion`` the advancing one);
     * ``"jkr"``, ``"dmt"``, ``"hertz"``: the simple models, only when asked (JKR's line
       contact; Hertz at the load plus the rigid-cylinder adhesive force for DMT; Hertz).
+
+    With ``cross_section=Polygon(sides, corner_radius)`` the wire is faceted and lies on a
+    facet (``radius`` its circumradius): ``a`` is its stable Maugis--Dugdale contact
+    (:func:`linecontact.facet_contact_for_load`), several times the round wire's, and
+    ``tau0`` is smaller by as much (``docs/faceted.md``).
 
     Examples
     --------
@@ -311,7 +320,18 @@ def shear_strength_from_friction(
     _check_cylinder_si(R, E, {"work_of_adhesion": w, "equilibrium_spacing": z0}, stacklevel=4)
     rho, s, h = _groups(R, E, w, z0)
     dw = np.zeros_like(f)
-    if receding_work_of_adhesion is not None:
+    shape = _shape(cross_section, R)
+    if shape is not None and (contact != "maugis-dugdale" or receding_work_of_adhesion is not None):
+        raise ParameterError(
+            "cross_section",
+            f"a {cross_section!r} wire's contact is its Maugis-Dugdale contact on the facet: "
+            "give contact='maugis-dugdale' and no receding_work_of_adhesion with it",
+        )
+    if shape is not None:
+        _check_load("normal_load", F, E, z0, "F_over_Eh")
+        facet = _facet_contact_for_load(F / (E * h), rho, s, on_failure="report", **shape)
+        a = np.asarray(facet.a_over_R) * R
+    elif receding_work_of_adhesion is not None:
         if contact != "maugis-dugdale":
             raise ValueError("receding_work_of_adhesion needs contact='maugis-dugdale'")
         w1 = w1_given[0]
@@ -342,7 +362,8 @@ def shear_strength_from_friction(
         a = _hertz_width(F - dmt_pull_off_force(R, w, z0), R, E)
     else:  # JKR: the stable (wider) root of F = pi E a^2/(4R) - sqrt(2 pi w E a)
         a = _jkr_width(F, R, E, w)
-    _warn_small_strain(a, R, stacklevel=3)
+    if shape is None:  # a contact on the facet strains nothing for its a/R
+        _warn_small_strain(a, R, stacklevel=3)
     bad = ~(np.isfinite(a) & (a > 0))
     if np.any(bad):
         _, at = first_point(bad, F=F)

@@ -76,6 +76,7 @@ def contact(
         self._not_written(f"the contact with {', '.join(named)}")
     if load is not None:
         return for_load(self, "load", load, policy)
+    assert contact_half_width is not None  # exactly one of the two (Cylinder.contact)
     a = positive("contact_half_width", contact_half_width)
     _domain.check_si("contact_half_width", a, self.radius, "facet_a_over_R", "m")
     r = _fc.facet_contact(a / self.radius, **_groups(self))
