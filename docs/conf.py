@@ -167,8 +167,10 @@ API_GROUPS: list[tuple[str, str, list[str]]] = [
             "facet_contact",
             "facet_contact_for_load",
             "facet_pull_off",
+            "facet_load_curve",
             "FacetContact",
             "FacetPullOff",
+            "FacetLoadCurve",
         ],
     ),
     (

@@ -314,8 +314,8 @@ def test_the_body_refuses_what_is_not_written_for_a_polygon():
     hexagon = wire.shaped(lc.Polygon(6, 5e-9))
     with pytest.raises(ValueError, match="push is not written for a hexagon wire"):
         hexagon.push(height=10e-9, normal_load=1.0, friction_stress=1e8)
-    with pytest.raises(ValueError, match="load_curve is not written for a hexagon wire"):
-        hexagon.load_curve()
+    with pytest.raises(ValueError, match="cyclic_loss is not written for a hexagon wire"):
+        hexagon.cyclic_loss(normal_load=1.0, friction_stress=1e8, amplitude=0.1)
     with pytest.raises(ValueError, match="pull_off is not written for a hexagon wire .* "):
         hexagon.under(lc.LennardJones).pull_off()
     with pytest.raises(ValueError, match="corner_radius must be at most the circumradius"):
@@ -502,3 +502,36 @@ def test_w_from_pull_offs_of_faceted_wires_round_trips():
     # the round wire's reading of a faceted wire's pull-off: a work of adhesion far too large
     round_w = work_of_adhesion_from_pull_off(F, 50e-9, 50e9, 0.3e-9)
     assert np.all(round_w > 3 * w)
+
+
+# --------------------------------------------------------------------------------------------
+# the load curve
+
+
+@pytest.mark.parametrize("r", [0.0, 0.1, 1.0])
+def test_the_load_curve_marks_the_pull_off_and_is_the_branch(r):
+    c = lc.facet_load_curve(HEX_RHO, HEX_S, sides=6, corner_radius_over_R=r, num=60)
+    (i,) = np.flatnonzero(c.turning_point)
+    assert c.F_over_Eh[i] == pytest.approx(c.pulloff.F_pulloff_over_Eh, rel=1e-12)
+    assert c.F_over_Eh.min() >= c.pulloff.F_pulloff_over_Eh * (1 + 1e-12)
+    assert c.a_over_R[0] == 0 and c.F_over_Eh[0] == c.pulloff.F_zero_width_over_Eh
+    again = lc.facet_contact(c.a_over_R[1:], HEX_RHO, HEX_S, sides=6, corner_radius_over_R=r)
+    np.testing.assert_array_equal(again.F_over_Eh, c.F_over_Eh[1:])
+    if r == 1.0:  # the round wire's curve has the same contact branch
+        want = lc.normal_contact(c.a_over_R[1:], HEX_RHO, HEX_S)
+        np.testing.assert_allclose(c.F_over_Eh[1:], want.F_over_Eh, rtol=1e-11, atol=1e-14)
+    if r == 0.0:  # a sharp facet's curve ends at its edge
+        assert c.a_over_R[-1] == pytest.approx(c.pulloff.facet_half_width_over_R)
+
+
+def test_the_load_curve_in_si_and_on_the_command_line(capsys):
+    wire = lc.Cylinder.from_modulus(50e-9, 50e9, work_of_adhesion=0.1, equilibrium_spacing=3e-10)
+    curve = wire.shaped(lc.Polygon(6, 5e-9)).load_curve(num=20)
+    capsys.readouterr()
+    argv = ["curve", "--cross-section", "hexagon", "--corner-radius", "5e-9", *ARGV]
+    assert main([*argv, "--num", "20", "--json"]) == 0
+    rows = json.loads(capsys.readouterr().out)["results"]
+    np.testing.assert_allclose([x["F_N_per_m"] for x in rows], curve.load, rtol=1e-12)
+    assert [x["pulloff"] for x in rows] == list(curve.turning_point)
+    assert main([*argv, "--num-noncontact", "5"]) == 2
+    assert "--num-noncontact" in capsys.readouterr().err

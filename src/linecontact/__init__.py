@@ -15,7 +15,8 @@ length over ``E h``, stresses over ``E``; compressive load positive):
   ``laws.lennard_jones`` have the same ``pull_off``, ``contact_for_load`` and ``load_curve``
   (the Lennard-Jones law of Eq. 1); in SI units a value: :class:`Dugdale`,
   :class:`LennardJones`, the ``adhesion`` of a :class:`Cylinder`;
-- :func:`facet_contact`, :func:`facet_contact_for_load`, :func:`facet_pull_off` -- a faceted
+- :func:`facet_contact`, :func:`facet_contact_for_load`, :func:`facet_pull_off`,
+  :func:`facet_load_curve` -- a faceted
   wire (a regular polygon with rounded corners) on its facet (:mod:`linecontact.facet`); in SI
   units the :class:`Cylinder` with ``cross_section=Polygon(sides, corner_radius)``
   (:mod:`linecontact.geometry`: :class:`Round`, :class:`Polygon`);
@@ -47,9 +48,11 @@ with _imports_interruptible():
     from .errors import ConvergenceError, CouplingWarning, ModelValidityWarning, NoEquilibriumError
     from .facet import (
         FacetContact,
+        FacetLoadCurve,
         FacetPullOff,
         facet_contact,
         facet_contact_for_load,
+        facet_load_curve,
         facet_pull_off,
     )
     from .geometry import Polygon, Round
@@ -107,6 +110,7 @@ __all__ = [
     "Cylinder",
     "Dugdale",
     "FacetContact",
+    "FacetLoadCurve",
     "FacetPullOff",
     "LennardJones",
     "ModelValidityWarning",
@@ -130,6 +134,7 @@ __all__ = [
     "equilibria",
     "facet_contact",
     "facet_contact_for_load",
+    "facet_load_curve",
     "facet_pull_off",
     "fit_pull_off",
     "hertz_load",

@@ -82,8 +82,9 @@ class Cylinder:
         :class:`~linecontact.geometry.Round` (the default) or a
         :class:`~linecontact.geometry.Polygon` on its facet (``radius`` its circumradius):
         :meth:`shaped` gives the same wire with another; the problems written for a polygon
-        are :meth:`contact`, :meth:`pull_off` and :meth:`sliding_initiation` (its constant
-        friction stress) under the Dugdale law (``WRITTEN``).
+        are :meth:`contact`, :meth:`pull_off`, :meth:`load_curve` and
+        :meth:`sliding_initiation` (its constant friction stress) under the Dugdale law
+        (``WRITTEN``).
     cohesive_stress, adhesion_range : float
         ``sigma0`` [Pa] (0: no adhesion) and ``h`` [m] of the law's Dugdale step.
 
@@ -589,7 +590,7 @@ class Cylinder:
     WRITTEN: ClassVar[dict[str, dict[str, tuple[type[Law], ...]]]] = {
         "contact": {"round": (Dugdale, LennardJones), "polygon": (Dugdale,)},
         "pull_off": {"round": (Dugdale, LennardJones), "polygon": (Dugdale,)},
-        "load_curve": {"round": (Dugdale, LennardJones)},
+        "load_curve": {"round": (Dugdale, LennardJones), "polygon": (Dugdale,)},
         "sliding_initiation": {"round": (Dugdale,), "polygon": (Dugdale,)},
         "steady_rolling": {"round": (Dugdale,)},
         "push": {"round": (Dugdale,)},
@@ -617,8 +618,8 @@ class Cylinder:
             raise ValueError(
                 f"{problem} is not written for a {shape.name} wire (cross_section="
                 f"{shape!r}) under the {self.adhesion.name} law: for a polygon, the contact, "
-                "the pull-off and the initiation of sliding (a constant friction stress) under "
-                "the Dugdale law are; the round wire "
+                "the pull-off, the load curve and the initiation of sliding (a constant "
+                "friction stress) under the Dugdale law are; the round wire "
                 "(cross_section=Round()) has every problem"
             )
         raise ValueError(
@@ -719,6 +720,8 @@ class Cylinder:
         ``num_noncontact`` are the Dugdale law's, ``max_load`` the Lennard-Jones law's.
         """
         self._written("load_curve")
+        if self.cross_section.kind != "round":
+            return _facet.load_curve(self, max_half_width, num, num_noncontact)
         if isinstance(self.adhesion, LennardJones):
             self._dugdale_only(
                 "the load curve",

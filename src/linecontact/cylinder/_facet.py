@@ -22,7 +22,7 @@ from ..errors import NoEquilibriumError
 from ..geometry import CrossSection
 from ..units import Scales, to_si
 from ._checks import _as_given, _normal_load
-from ._results import CylinderContact, CylinderPullOff
+from ._results import CylinderContact, CylinderLoadCurve, CylinderPullOff
 
 #: ``self`` is a :class:`~linecontact.cylinder.Cylinder` (not imported: it imports this module).
 Cylinder = Any
@@ -115,6 +115,26 @@ def _wrap(self: Cylinder, r: _fc.FacetContact, F: NDArray | None) -> CylinderCon
         state=state.item() if state.ndim == 0 else state,
         nondimensional=r,  # type: ignore[arg-type]
         scales=scales,
+    )
+
+
+def load_curve(
+    self: Cylinder, max_half_width: float | None, num: int, num_noncontact: int
+) -> CylinderLoadCurve:
+    """The load curve of a polygonal wire (its contact branch) up to ``max_half_width`` [m]."""
+    if num_noncontact != 40:
+        self._not_written("the load curve with num_noncontact (a polygon's begins at touch-down)")
+    a_max = None
+    if max_half_width is not None:
+        _domain.check_si("max_half_width", max_half_width, self.radius, "facet_a_over_R", "m")
+        a_max = max_half_width / self.radius
+    c = _fc.facet_load_curve(**_groups(self), a_max_over_R=a_max, num=num)
+    return CylinderLoadCurve(
+        branch=c.branch,
+        **to_si(c, Scales.of(self)),
+        stable=c.stable,
+        turning_point=c.turning_point,
+        nondimensional=c,  # type: ignore[arg-type]
     )
 
 

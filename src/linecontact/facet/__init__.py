@@ -18,12 +18,15 @@ pull-off is that under load control.
 """
 
 from .contact import FacetContact, facet_contact
+from .curve import FacetLoadCurve, facet_load_curve
 from .pulloff import FacetPullOff, facet_contact_for_load, facet_pull_off
 
 __all__ = [
     "FacetContact",
+    "FacetLoadCurve",
     "FacetPullOff",
     "facet_contact",
     "facet_contact_for_load",
+    "facet_load_curve",
     "facet_pull_off",
 ]

@@ -9,7 +9,7 @@ import numpy as np
 from ..closed_forms import kappa, maugis_parameter
 from ..cylinder import Cylinder, _si_load_curve
 from ..errors import ParameterError
-from ..facet import facet_contact, facet_contact_for_load, facet_pull_off
+from ..facet import facet_contact, facet_contact_for_load, facet_load_curve, facet_pull_off
 from ..laws import lennard_jones as _lj
 from ..normal import NormalContact, contact_for_load, load_curve, normal_contact, pull_off
 from ..output import Table
@@ -486,6 +486,8 @@ def _curve_table(
 
 def _cmd_curve(args: Inputs) -> Table:
     rho, s, cyl = groups(args)
+    g = shape(args, cyl)
+    _not_for_polygon(args, g)
     if args.law == "lennard-jones":
         return _cmd_curve_lj(args, rho, s, cyl)
     if args.F_max_over_Eh is not None or args.F_max is not None:
@@ -506,6 +508,8 @@ def _cmd_curve(args: Inputs) -> Table:
         )
     n = dict(num=args.num, num_noncontact=args.num_noncontact)
     si: Any = None
+    if g is not None:
+        return _cmd_curve_facet(args, rho, s, cyl, g)
     if cyl is None or args.a_max is None:
         c = load_curve(rho, s, a_max_over_R=args.a_max_over_R, **n)
         if cyl is not None:  # the limit in radii: the same curve, in SI units
@@ -532,6 +536,45 @@ def _cmd_curve(args: Inputs) -> Table:
         (
             f"load curve: non-contact branch (gap g0 from h to 0), then the contact branch; "
             f"pull-off {po.F_pulloff_over_Eh:.6g} ({po.mechanism})"
+        ),
+        si,
+        {"adhesive_zone_half_width": "c_m", "load": "F_N_per_m"},
+    )
+
+
+def _cmd_curve_facet(args: Inputs, rho: float, s: float, cyl: Cylinder | None, g) -> Table:
+    """The load curve of a polygonal wire: its contact branch from touch-down."""
+    if args.get("num_noncontact") not in (None, _POINTS["num_noncontact"][1]):
+        raise ParameterError(
+            "--num-noncontact",
+            f"--num-noncontact: a {args.cross_section} wire's curve begins at touch-down (its "
+            "non-contact branch is not sampled)",
+        )
+    si: Any = None
+    if cyl is None:
+        if args.a_max is not None:
+            raise ParameterError(
+                "--a-max", "--a-max [m] is an SI input: give --radius and the materials too"
+            )
+        c = facet_load_curve(rho, s, a_max_over_R=args.a_max_over_R, num=args.num, **g)
+    else:
+        a_max = args.a_max
+        if a_max is None and args.a_max_over_R is not None:
+            a_max = cyl.in_si(args.a_max_over_R, "R")
+        si = cyl.load_curve(max_half_width=a_max, num=args.num)
+        c = si.nondimensional
+    po = c.pulloff
+    params = _parameters(args, rho, s, cyl)
+    params.update(shape_parameters_of(g, cyl))
+    return _curve_table(
+        args,
+        c,
+        params,
+        c.turning_point,
+        ["a_over_R", "c_over_R", "F_over_Eh", "region", "stable"],
+        (
+            f"load curve of a {args.cross_section} wire on its facet: the contact branch from "
+            f"touch-down; pull-off {po.F_pulloff_over_Eh:.6g} ({po.mechanism})"
         ),
         si,
         {"adhesive_zone_half_width": "c_m", "load": "F_N_per_m"},
@@ -624,6 +667,7 @@ OPERATIONS = {
             *group_parameters(),
             *_SI,
             _LAW,
+            *_SHAPE_OPTIONS,
             Parameter(
                 "a_max_over_R",
                 "largest contact half-width a/R (default: three times the width at pull-off, "
@@ -662,6 +706,7 @@ OPERATIONS = {
         _cmd_curve,
         entries=(
             *_SI_ENTRIES,
+            *_SHAPE_ENTRIES,
             Entry(("a_max_over_R", "a_max"), "largest half-width a/R, or a [m] (docs/cli.md)"),
             Entry(
                 ("num", "num_noncontact"),

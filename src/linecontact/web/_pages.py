@@ -110,6 +110,7 @@ PAGES: dict[str, dict[str, Any]] = {
         "alts": _WIRE_ALTS,
         "fields": [
             *_WIRE,
+            *_SHAPE,
             _f("load", "normal loads F (comma-separated)", "force", "0,1,5,10", many=True),
         ],
         "plot": {
@@ -122,7 +123,7 @@ PAGES: dict[str, dict[str, Any]] = {
         "question": "How does the load change with the contact width, and where does it pull off?",
         "command": "curve",
         "alts": _WIRE_ALTS,
-        "fields": list(_WIRE),
+        "fields": [*_WIRE, *_SHAPE],
         "plot": {
             "x": {"key": "a_m", "kind": "length", "label": "contact half-width a"},
             "ys": [{"key": "F_N_per_m", "kind": "force", "label": "load F"}],
