@@ -15,6 +15,7 @@ kernels take beside the paper's (``R/h``, ``sigma0/E``), each length over the ra
 from __future__ import annotations
 
 import math
+import numbers
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
@@ -99,12 +100,18 @@ class Polygon(CrossSection):
     corner_radius: float = 0.0
 
     def __post_init__(self) -> None:
-        n = self.sides
-        if isinstance(n, bool) or not isinstance(n, int | float) or n != n or n < 3 or n != int(n):
+        n = self.sides  # any real number type (a NumPy integer too) with an integer value
+        if (
+            isinstance(n, bool)
+            or not isinstance(n, numbers.Real)
+            or not math.isfinite(n)
+            or n < 3
+            or n != int(n)
+        ):
             raise ParameterError("sides", f"sides must be an integer >= 3, got {n!r}")
         object.__setattr__(self, "sides", int(n))
         r = self.corner_radius
-        if isinstance(r, bool) or not isinstance(r, int | float) or not (0 <= r < math.inf):
+        if isinstance(r, bool) or not isinstance(r, numbers.Real) or not (0 <= r < math.inf):
             raise ParameterError(
                 "corner_radius", f"corner_radius must be a finite number >= 0 [m], got {r!r}"
             )
