@@ -233,6 +233,16 @@ def _pairs(words):
             "--h",
             "1e-9",
         ],
+        # faceted wires (issue 33): the facet's scan over a whole block; corner radii above
+        # the radius refused point by point, in the same words
+        ["--cross-section", "hexagon", "--corner-radius", "0:2e-8:5", "--radius", "40e-9:60e-9:3"]
+        + ["--modulus", "5e10", "--work-of-adhesion", "0.1", "--z0", "0.3e-9"],
+        ["--cross-section", "pentagon", "--corner-radius-over-R", "0:1:6"]
+        + ["--R-over-h", "1:1e4:4:log", "--sigma0-over-E", "0.01"],
+        ["--cross-section", "hexagon", "--corner-radius", "0:8e-8:5", "--radius", "50e-9"]
+        + ["--modulus", "5e10", "--sigma0", "1e8", "--h", "0.3e-9", "--length", "1e-6"],
+        ["--radius", "50e-9", "--modulus", "5e10", "--sigma0", "1e8", "--h", "0.3e-9"]
+        + ["--length", "1e-6:1e-5:3"],
     ],
 )
 def test_the_pull_off_a_block_at_a_time_equals_it_point_by_point(words):

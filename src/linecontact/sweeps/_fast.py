@@ -8,7 +8,8 @@ scales the result declares (:func:`linecontact.units.to_si`), under the keys the
 writes (``PULL_OFF_KEYS``), which ``tests/test_sweep.py`` checks against the point-by-point
 path. (The composite modulus and the Dugdale step of ``(w, z0)`` are the library's
 functions; a body whose parameters are arrays of points would make this module one call of
-the SI layer, issue 32.)
+the SI layer, issue 32.) A polygon (``--cross-section``) takes the same path through
+:func:`linecontact.facet_pull_off`, its scan of the branch vectorised over the block.
 """
 
 from __future__ import annotations
@@ -23,6 +24,8 @@ import numpy as np
 from .. import materials as _materials
 from ..cylinder import _ZERO_WIDTH, _warn_widths
 from ..domain import DOMAIN
+from ..facet import facet_pull_off
+from ..geometry import NAMED_SIDES
 from ..normal import pull_off
 from ..operations._common import _presets, groups
 from ..operations._messages import spell
@@ -37,6 +40,8 @@ __all__ = ["pulloff_block"]
 #: The SI flags whose values the fast path sweeps (words, such as presets: point by point).
 _SI = ("radius", "modulus", "E1", "nu1", "E2", "nu2", "sigma0", "h", "work_of_adhesion", "z0")
 _GROUPS = ("R_over_h", "sigma0_over_E")
+#: A polygon's corner radius, in SI units or over R (with --cross-section).
+_SHAPE = ("corner_radius", "corner_radius_over_R")
 
 
 @functools.lru_cache(maxsize=4)
@@ -104,11 +109,12 @@ def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
 
     if p.command != "pulloff" or not p.axes:
         return None
-    if any(a.dest not in _SI + _GROUPS + ("length",) or not a.unit for a in p.axes):
+    if any(a.dest not in _SI + _GROUPS + _SHAPE + ("length",) or not a.unit for a in p.axes):
         return None
     template, bad, said = _checked(p)
-    if template.law != "dugdale" or getattr(template, "cross_section", "round") != "round":
-        return None  # a polygon's pull-off is no closed form: point by point
+    if template.law != "dugdale":
+        return None
+    polygon = NAMED_SIDES.get(getattr(template, "cross_section", None) or "round")
     shape = tuple(sl.stop - sl.start for sl in block)
     grids = np.meshgrid(
         *(np.asarray(a.values[s], float) for a, s in zip(p.axes, block, strict=True)), indexing="ij"
@@ -136,6 +142,8 @@ def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
             R, E, s0, h = _si_inputs(get, template)
         except (ValueError, OverflowError):
             return None
+        # one value a point, also where only other inputs are swept (a corner radius, a length)
+        R, E, s0, h = (np.broadcast_to(x, (int(ok.sum()),)) for x in (R, E, s0, h))
         rho, s = R / h, s0 / E
     else:
         rho = np.broadcast_to(get("R_over_h"), (int(ok.sum()),)).astype(float)
@@ -151,7 +159,13 @@ def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:
-            r = pull_off(rho, s)
+            if polygon is None:
+                r = pull_off(rho, s)
+            else:  # its scan of the branch, vectorised over the block
+                rc = get("corner_radius") if si else get("corner_radius_over_R")
+                rc = np.broadcast_to(np.asarray(0.0 if rc is None else rc, float), inside.shape)
+                rc = rc[inside]
+                r = facet_pull_off(rho, s, sides=polygon, corner_radius_over_R=rc / R if si else rc)
         except (ValueError, OverflowError):
             return None  # refused otherwise: the points one by one say which
     for w in caught:
@@ -165,7 +179,9 @@ def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
         zero = np.asarray(r.mechanism) == "zero-width"
         with warnings.catch_warnings(record=True) as caught:
             warnings.simplefilter("always")
-            for m, why in ((zero, _ZERO_WIDTH), (~zero, "")):
+            # (a polygon's contact lies on its facet: its widths are not checked, as the
+            # operation's records do not check them)
+            for m, why in ((zero, _ZERO_WIDTH), (~zero, "")) if polygon is None else ():
                 _warn_widths(
                     extra["a_at_pulloff_m"][m], R[m], "the contact half-width at pull-off", why
                 )
