@@ -87,7 +87,8 @@ def main() -> None:
     print("sharp hexagon against the strip's JKR pull-off (sigma0/E = 0.01):")
     for rr in (1e4, 1e6, 1e8, 1e10):
         h = facet_pull_off(rr, 0.01, sides=6, corner_radius_over_R=0.0)
-        print(f"  R/h = {rr:8.0e}: F/F_strip - 1 = {h.F_pulloff_over_Eh / h.F_strip_jkr_over_Eh - 1:.2e}")
+        gap = h.F_pulloff_over_Eh / h.F_strip_jkr_over_Eh - 1
+        print(f"  R/h = {rr:8.0e}: F/F_strip - 1 = {gap:.2e}")
 
 
 if __name__ == "__main__":

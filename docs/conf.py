@@ -168,9 +168,11 @@ API_GROUPS: list[tuple[str, str, list[str]]] = [
             "facet_contact_for_load",
             "facet_pull_off",
             "facet_load_curve",
+            "facet_tipping",
             "FacetContact",
             "FacetPullOff",
             "FacetLoadCurve",
+            "FacetTipping",
         ],
     ),
     (

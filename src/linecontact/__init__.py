@@ -50,10 +50,12 @@ with _imports_interruptible():
         FacetContact,
         FacetLoadCurve,
         FacetPullOff,
+        FacetTipping,
         facet_contact,
         facet_contact_for_load,
         facet_load_curve,
         facet_pull_off,
+        facet_tipping,
     )
     from .geometry import Polygon, Round
     from .inverse import (
@@ -112,6 +114,7 @@ __all__ = [
     "FacetContact",
     "FacetLoadCurve",
     "FacetPullOff",
+    "FacetTipping",
     "LennardJones",
     "ModelValidityWarning",
     "NoEquilibriumError",
@@ -136,6 +139,7 @@ __all__ = [
     "facet_contact_for_load",
     "facet_load_curve",
     "facet_pull_off",
+    "facet_tipping",
     "fit_pull_off",
     "hertz_load",
     "jkr_load",

@@ -20,13 +20,16 @@ pull-off is that under load control.
 from .contact import FacetContact, facet_contact
 from .curve import FacetLoadCurve, facet_load_curve
 from .pulloff import FacetPullOff, facet_contact_for_load, facet_pull_off
+from .tipping import FacetTipping, facet_tipping
 
 __all__ = [
     "FacetContact",
     "FacetLoadCurve",
     "FacetPullOff",
+    "FacetTipping",
     "facet_contact",
     "facet_contact_for_load",
     "facet_load_curve",
     "facet_pull_off",
+    "facet_tipping",
 ]

@@ -159,6 +159,7 @@ def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
     with warnings.catch_warnings(record=True) as caught:
         warnings.simplefilter("always")
         try:
+            r: Any
             if polygon is None:
                 r = pull_off(rho, s)
             else:  # its scan of the branch, vectorised over the block
