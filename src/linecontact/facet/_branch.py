@@ -54,7 +54,7 @@ def facet_half_width(sides: NDArray, r: NDArray) -> NDArray:
 
 
 def _edge(A: NDArray, f: NDArray) -> tuple[NDArray, NDArray]:
-    """``S = sqrt(a^2 - f^2)`` and ``alpha = arccos(f/a)`` (0 for ``a <= f``), accurate near ``a = f``.
+    """``S = sqrt(a^2 - f^2)``, ``alpha = arccos(f/a)`` (0 for ``a <= f``), exact near ``a = f``.
 
     ``(a - f)(a + f)`` and ``arctan2(S, f)``: ``arccos`` of the rounded ``f/a`` loses all of
     ``alpha`` within an ulp or two of the edge (``1 - f/a`` below the rounding of ``f/a``).
