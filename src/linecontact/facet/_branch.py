@@ -44,11 +44,32 @@ from .. import closed_forms as _cf
 #: then integrated by Gauss--Legendre over ``v`` in ``[0, u]`` (an analytic integrand).
 _U_QUADRATURE = 0.3
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(24)
+#: The Newton steps of :func:`solve_u` before it bisects every other step.
+_NEWTON_STEPS = 40
 
 
 def facet_half_width(sides: NDArray, r: NDArray) -> NDArray:
     """The flat half-width ``f = (1 - r) sin(pi/n)`` of the facet, over the circumradius."""
     return (1.0 - r) * np.sin(np.pi / sides)
+
+
+def _edge(A: NDArray, f: NDArray) -> tuple[NDArray, NDArray]:
+    """``S = sqrt(a^2 - f^2)``, ``alpha = arccos(f/a)`` (0 for ``a <= f``), exact near ``a = f``.
+
+    ``(a - f)(a + f)`` and ``arctan2(S, f)``: ``arccos`` of the rounded ``f/a`` loses all of
+    ``alpha`` within an ulp or two of the edge (``1 - f/a`` below the rounding of ``f/a``).
+    """
+    S = np.sqrt(np.maximum((A - f) * (A + f), 0.0))
+    return S, np.arctan2(S, f)
+
+
+def _x_minus_sin(x: NDArray) -> NDArray:
+    """``x - sin x`` for ``x >= 0``, by its series below 0.2 (where the difference cancels)."""
+    x2 = x * x
+    series = (
+        x * x2 / 6 * (1 - x2 / 20 * (1 - x2 / 42 * (1 - x2 / 72 * (1 - x2 / 110 * (1 - x2 / 156)))))
+    )
+    return np.where(x < 0.2, series, x - np.sin(x))
 
 
 def _f2(u: NDArray) -> tuple[NDArray, dict[str, NDArray]]:
@@ -60,8 +81,7 @@ def _f2(u: NDArray) -> tuple[NDArray, dict[str, NDArray]]:
 def slope(x: NDArray, A: NDArray, f: NDArray, r: NDArray) -> NDArray:
     """The separation's slope at ``x > a > f`` from the profile (no Dugdale part), times ``r``."""
     k = np.sqrt(np.maximum(x * x - A * A, 0.0))
-    S = np.sqrt(np.maximum(A * A - f * f, 0.0))
-    al = np.arccos(np.clip(f / A, -1.0, 1.0))
+    S, al = _edge(A, f)
     return (2 / np.pi) * (k * al + x * np.arctan2(k * f, x * S) - f * np.arctan2(k, S))
 
 
@@ -72,8 +92,7 @@ def profile_gap(A: NDArray, C: NDArray, u: NDArray, f: NDArray, r: NDArray) -> N
     if not np.any(on):
         return flat
     K = A * np.sinh(u)
-    S = np.sqrt(np.maximum(A * A - f * f, 0.0))
-    al = np.arccos(np.clip(f / A, -1.0, 1.0))
+    S, al = _edge(A, f)
     closed = (2 / np.pi) * (
         0.5 * al * (C * K - A * A * u)
         + 0.5 * (C * C + f * f) * np.arctan2(f * K, S * C)
@@ -93,9 +112,10 @@ def profile_gap(A: NDArray, C: NDArray, u: NDArray, f: NDArray, r: NDArray) -> N
 
 def hertz_load(A: NDArray, f: NDArray, r: NDArray) -> NDArray:
     """``r P_H / (E R)``: the load of the bounded solution without adhesion (times ``r``)."""
-    S = np.sqrt(np.maximum(A * A - f * f, 0.0))
-    al = np.arccos(np.clip(f / A, -1.0, 1.0))
-    return np.where(A > f, 0.5 * (A * A * al - f * S), 0.0)
+    # a^2 alpha - f S = a^2 (2 alpha - sin 2 alpha) / 2 (f = a cos alpha, S = a sin alpha),
+    # which cancels to O(alpha^3) just past the facet's edge
+    _, al = _edge(A, f)
+    return np.where(A > f, 0.25 * A * A * _x_minus_sin(2.0 * al), 0.0)
 
 
 def _residual(A, u, f, r, rho, s):
@@ -131,7 +151,7 @@ def solve_u(
     rho: NDArray,
     s: NDArray,
     u0: NDArray | None = None,
-    maxiter: int = 200,
+    maxiter: int = 400,
 ):
     """``u = arccosh(c/a)`` on the branch at ``a`` (flat arrays, ``s > 0``) and the residual.
 
@@ -148,13 +168,24 @@ def solve_u(
     t = np.log(np.sinh(start))
     res = np.full(P, np.inf)
     active = np.ones(P, bool)
+    # a sharp corner: the zone stops at c = f where the separation there is below h (the
+    # free zone would pass the corner, for a weak adhesion far past it: no iteration then)
+    sharp = (r == 0) & (A <= f)
+    uf = np.arccosh(np.maximum(f / np.where(A > 0, A, 1.0), 1.0))
+    pinned = np.zeros(P, bool)
+    if np.any(sharp):
+        k = np.nonzero(sharp)[0]
+        with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            Phi_f = _residual(A[k], uf[k], f[k], r[k], rho[k], s[k])[0]
+        pinned[k] = (uf[k] == 0) | (Phi_f <= 0)
+        active &= ~pinned
     for it in range(maxiter):
         idx = np.nonzero(active)[0]
         if idx.size == 0:
             break
         ti = t[idx]
-        ui = np.arcsinh(np.exp(ti))
         with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
+            ui = np.arcsinh(np.exp(ti))
             Phi, dPhi = _residual(A[idx], ui, f[idx], r[idx], rho[idx], s[idx])
             dPhi = dPhi * np.tanh(ui)
         Phi = np.where(np.isnan(Phi), np.inf, Phi)
@@ -172,19 +203,22 @@ def solve_u(
         mid = np.where(closed, 0.5 * (lo[idx] + hi[idx]), np.where(Phi < 0, ti + 2.0, ti - 2.0))
         bad = ~np.isfinite(tn) | (tn < lo[idx]) | (tn > hi[idx])
         # every fourth step a bisection of a closed bracket: Newton crawls where the
-        # separation's slope jumps (where the zone reaches a corner, c = f)
-        bad |= closed & (it % 4 == 3) & (np.abs(Phi) > 1e-8)
+        # separation's slope jumps (where the zone reaches a corner, c = f); past
+        # _NEWTON_STEPS every other step, whatever the residual: there Newton wanders in the
+        # residual's rounding noise (a zone ending just past a corner, c - f << f, or a
+        # contact just past the facet's edge, a - f << f) and the bracket must close
+        bisect = np.where(it < _NEWTON_STEPS, (it % 4 == 3) & (np.abs(Phi) > 1e-8), it % 2 == 1)
+        bad |= closed & bisect
         tn = np.where(bad, mid, tn)
         t[idx] = np.where(done, ti, tn)
         active[idx] = ~done
-    u = np.arcsinh(np.exp(t))
-    # a sharp corner: the zone stops at c = f where the free one would pass it
-    sharp = (r == 0) & (A <= f)
-    uf = np.arccosh(np.maximum(f / np.where(A > 0, A, 1.0), 1.0))
-    pinned = sharp & (u > uf)
+    with np.errstate(over="ignore"):  # t -> inf: a zone unbounded but for a sharp corner
+        u = np.arcsinh(np.exp(t))
+    # (and where the iteration passed it)
+    pinned |= sharp & (u > uf)
     u = np.where(pinned, uf, u)
     res = np.where(pinned, 0.0, res)
-    return u, np.abs(res), ~active, pinned
+    return u, np.abs(res), ~active | pinned, pinned
 
 
 def load(A: NDArray, u: NDArray, f: NDArray, r: NDArray, rho: NDArray, s: NDArray) -> NDArray:

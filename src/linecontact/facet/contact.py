@@ -77,9 +77,12 @@ def check_geometry(sides: ArrayLike, corner_radius_over_R: ArrayLike) -> tuple[N
     if n.dtype.kind not in "iuf" or n.size == 0:
         raise ParameterError("sides", f"sides must be an integer >= 3, got {sides!r}")
     nf = n.astype(float)
-    if not np.all(np.isfinite(nf)) or np.any(nf != np.round(nf)) or np.any(nf < 3):
-        bad = nf[~(np.isfinite(nf) & (nf == np.round(nf)) & (nf >= 3))].reshape(-1)[0]
-        raise ParameterError("sides", f"sides must be an integer >= 3, got {bad!r}")
+    # at most 2**53 (the integers a float holds exactly; a polygon that fine is round)
+    with np.errstate(invalid="ignore"):
+        ok = np.isfinite(nf) & (nf == np.round(nf)) & (nf >= 3) & (nf <= 2.0**53)
+    if not np.all(ok):
+        bad = nf[~ok].reshape(-1)[0]
+        raise ParameterError("sides", f"sides must be an integer >= 3 (at most 2**53), got {bad!r}")
     r = _domain.check("corner_radius_over_R", corner_radius_over_R)
     return nf.astype(int), r
 
@@ -167,6 +170,16 @@ def facet_contact(
             f"a rounded corner, got {point_text(at)}",
         )
     u, C, F, res, conv, pinned = branch(Af, f, rf, rhof, sf)
+    huge = ~np.isfinite(F) & (Af > f)
+    if np.any(huge):
+        # the Hertz part rho (a^2 alpha - f S) / (2 r) of a contact over a corner of radius
+        # r << 1e-100 R: a joint limit of a_over_R, R_over_h and corner_radius_over_R
+        _, at = first_point(huge, a_over_R=Af, R_over_h=rhof, corner_radius_over_R=rf)
+        raise ParameterError(
+            "corner_radius_over_R",
+            f"the load of a contact over a corner this sharp is beyond the floating-point "
+            f"range at {point_text(at)}: take a wider corner or a contact on the facet",
+        )
     if not conv.all():
         _, at = first_point(~conv, a_over_R=Af, R_over_h=rhof, sigma0_over_E=sf)
         raise ConvergenceError(f"facet_contact did not converge at {point_text(at)}")

@@ -33,7 +33,7 @@ from .contact import FacetContact, _flat, branch, check_geometry
 #: The scan of the branch: widths below the facet's edge (over ``f``), just below it
 #: (``1 - f`` decades) and beyond it over the corner (over ``r``).
 _BELOW = np.logspace(-9, 0, 64, endpoint=False)
-_EDGE = 1.0 - np.logspace(-1, -13, 40)
+_EDGE = np.append(1.0 - np.logspace(-1, -13, 40), 1.0)  # and the edge (a sharp corner's end)
 _BEYOND = np.logspace(-13, np.log10(4.0), 96)
 #: Zooms of the bracket around the lowest point: each keeps 2 of 16 intervals.
 _ZOOM_POINTS = 17
@@ -71,10 +71,12 @@ def _zero_width(f, r, rho, s):
     inside = c_flat <= f
     # beyond the corner: (rho/(2r)) y^2 + k y + (k f - 1) = 0, y = c - f >= 0
     rs = np.where(r > 0, r, 1.0)
-    qa = rho / (2 * rs)
+    with np.errstate(over="ignore"):  # a corner far sharper than h: qa = inf gives y = 0
+        qa = rho / (2 * rs)
     qc = k * f - 1.0
     # (a negative discriminant only where the zone ends inside the facet, y unused there)
-    y = -2 * qc / (k + np.sqrt(np.maximum(k * k - 4 * qa * qc, 0.0)))
+    with np.errstate(over="ignore"):
+        y = -2 * qc / (k + np.sqrt(np.maximum(k * k - 4 * qa * qc, 0.0)))
     c_out = np.where(r > 0, f + y, f)  # a sharp corner pins the zone at c = f
     C = np.where(inside, c_flat, c_out)
     return C, -2 * s * rho * C
