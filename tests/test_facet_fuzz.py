@@ -71,8 +71,8 @@ def outside(key: str) -> st.SearchStrategy[float]:
 SIDES = st.one_of(st.sampled_from([3, 4, 5, 6, 1000]), st.integers(3, 1000))
 #: corner radii: sharp, round, a hair off either, and every decade between
 CORNERS = st.one_of(
-    st.sampled_from([0.0, 1.0, 1e-300, 1e-12, 1.0 - 1e-12]),
-    _log_uniform(1e-16, 1.0),
+    st.sampled_from([0.0, 1.0, 1e-12, 1.0 - 1e-12]),
+    _log_uniform(1e-12, 1.0),
 )
 
 
@@ -123,9 +123,13 @@ def test_facet_contact_inside(a, rho, s, sides, r):
     # the separation meets h to rounding; where the zone ends within ulps of a corner much
     # sharper than h it jumps by rho ulp(f)^2 / (2 r) across one ulp of c: c = f to rounding
     # (and where a zone narrower than an ulp of a ends at c = a + ulp: the same jump)
+    # (and a zone ending a little past such a corner, c - f ~ sqrt(2 r h/R): there the
+    # separation (c - f)^2/(2r) moves by 2 eps c/(c - f) for a rounding eps of c, which the
+    # solver's resolution of c, ~1e-14 c, makes the residual)
     f = _f(sides, r)
     at_ulp = min(abs(c.c_over_R - f), c.c_over_R - c.a_over_R) <= 1e-12 * max(f, c.a_over_R)
-    assert c.residual_separation <= 1e-6 or at_ulp
+    near = 0 < c.c_over_R - f <= 1e-6 * f and c.residual_separation <= 1e-13 * f / (c.c_over_R - f)
+    assert c.residual_separation <= 1e-6 or at_ulp or near
     H = _hertz(a, rho, sides, r)
     assert H >= 0 and c.F_over_Eh <= H * (1 + 1e-12) + 1e-300
     if c.region == "corner-pinned":
@@ -133,9 +137,10 @@ def test_facet_contact_inside(a, rho, s, sides, r):
 
 
 def _known_pull_off_miss(rho, s, r):
-    """KNOWN, not fixed: a strong adhesion on a small wire (rho = 1e-3, s = 1e6, r = 1) has
-    states of the branch below the scan's minimum (the report of the facet fuzz)."""
-    return rho * 1e-6 < s and rho < 1.0
+    """None now: a strong adhesion on a small wire (rho = 1e-3, s = 1e6, r = 1) had states
+    below the scan's minimum (its pull-off contact 860 R wide); the scan goes on beyond its
+    widest width where its lowest point is there."""
+    return False
 
 
 @FUZZ
@@ -168,18 +173,13 @@ def test_facet_contact_for_load_carries_the_load(F, rho, s, sides, r):
     kw = dict(sides=sides, corner_radius_over_R=r)
     try:
         c = lc.facet_contact_for_load(F, rho, s, **kw)
-    except NoEquilibriumError:
-        # below the pull-off, or beyond the widths solved (a/R up to f + 4 r)
-        p = lc.facet_pull_off(rho, s, **kw)
-        po = p.F_pulloff_over_Eh
-        wide = _f(sides, r) + 4 * r
-        F_wide = lc.facet_contact(min(wide, 10.0), rho, s, **kw).F_over_Eh if r > 0 else 0.0
-        # KNOWN, not fixed: a load between F_zero_width and the load at the scan's narrowest
-        # width (1e-9 f) is refused though above the pull-off (F = 0 at s = 1e-300)
-        F_narrow = lc.facet_contact(max(_f(sides, r) * 1e-9, 1e-12), rho, s, **kw).F_over_Eh
-        assert (
-            F < po + 1e-9 * abs(po) + 1e-300 or F >= F_wide * (1 - 1e-9) or wide > 10
-        ) or F < F_narrow
+    except NoEquilibriumError:  # below the pull-off, and only there
+        po = lc.facet_pull_off(rho, s, **kw).F_pulloff_over_Eh
+        assert F < po + 1e-9 * abs(po) + 1e-300
+        return
+    except ValueError as e:  # a load whose contact is wider than the domain, a/R = 10
+        assert "needs a contact wider than a/R = 10" in str(e) and r > 0
+        assert F > lc.facet_contact(10.0, rho, s, **kw).F_over_Eh * (1 - 1e-9)
         return
     assert c.F_over_Eh == F
     assert _finite(c.a_over_R, c.c_over_R, c.residual_separation)
@@ -198,9 +198,10 @@ def test_facet_contact_for_load_carries_the_load(F, rho, s, sides, r):
     F0 = lc.facet_pull_off(rho, s, **kw).F_zero_width_over_Eh
     # (plus the load's change over a width's rounding, 1e-15 a: the bisection's resolution)
     H = _hertz(max(a, 1e-12), rho, sides, r)
-    step = abs(
-        back.F_over_Eh - lc.facet_contact(max(a, 1e-12) * (1 + 1e-12), rho, s, **kw).F_over_Eh
-    )
+    # (a sharp corner's contact ends at its facet's edge: the probe stays on the facet)
+    probe = max(a, 1e-12) * (1 + 1e-12)
+    probe = min(probe, _f(sides, r)) if r == 0 else probe
+    step = abs(back.F_over_Eh - lc.facet_contact(probe, rho, s, **kw).F_over_Eh)
     scale = abs(F) + abs(F0) + H
     assert abs(back.F_over_Eh - F) <= 1e-8 * scale + 10 * step
     assert back.c_over_R == pytest.approx(c.c_over_R, rel=1e-9, abs=1e-300)
@@ -242,8 +243,18 @@ def test_arrays_give_the_scalar_answers(points):
     kw = dict(sides=n, corner_radius_over_R=r)
     one = [dict(sides=int(ni), corner_radius_over_R=float(ri)) for ni, ri in zip(n, r, strict=True)]
 
-    c = lc.facet_contact(a, rho, s, **kw)
-    cs = [lc.facet_contact(a[i], rho[i], s[i], **one[i]) for i in range(len(a))]
+    def refused(fn, *args, **how):  # a documented joint limit: the array's and a point's
+        try:
+            return fn(*args, **how)
+        except ValueError as e:
+            assert "beyond the floating-point range" in str(e) or "wider than a/R = 10" in str(e)
+            return None
+
+    c = refused(lc.facet_contact, a, rho, s, **kw)
+    cs = [refused(lc.facet_contact, a[i], rho[i], s[i], **one[i]) for i in range(len(a))]
+    if c is None:
+        assert any(x is None for x in cs)
+        return
     for name in ("c_over_R", "F_over_Eh"):
         _same(getattr(c, name), [getattr(x, name) for x in cs])
     assert list(c.region) == [x.region for x in cs]
@@ -254,11 +265,18 @@ def test_arrays_give_the_scalar_answers(points):
         _same(getattr(p, name), [getattr(x, name) for x in ps])
     assert list(p.mechanism) == [x.mechanism for x in ps]
 
-    q = lc.facet_contact_for_load(F, rho, s, on_failure="report", **kw)
-    qs = [
-        lc.facet_contact_for_load(F[i], rho[i], s[i], on_failure="report", **one[i])
-        for i in range(len(a))
-    ]
+    def for_load(*args, **how):  # a load wider than the domain: refused, as the round wire's
+        try:
+            return lc.facet_contact_for_load(*args, on_failure="report", **how)
+        except ValueError as e:
+            assert "needs a contact wider than a/R = 10" in str(e)
+            return None
+
+    q = for_load(F, rho, s, **kw)
+    qs = [for_load(F[i], rho[i], s[i], **one[i]) for i in range(len(a))]
+    if q is None:  # the array refused: so is one of its points alone
+        assert any(x is None for x in qs)
+        return
     for name in ("a_over_R", "c_over_R", "F_over_Eh"):
         _same(getattr(q, name), [getattr(x, name) for x in qs])
     assert list(q.region) == [x.region for x in qs]
@@ -304,3 +322,13 @@ def test_a_sharp_corner_refuses_a_contact_wider_than_its_facet(sides, over):
     a = min(_f(sides, 0.0) * over, 10.0)
     with pytest.raises(ValueError, match=r"^a_over_R must be at most the facet's half-width"):
         lc.facet_contact(a, 100.0, 0.01, sides=sides, corner_radius_over_R=0.0)
+
+
+@pytest.mark.parametrize("r", [1e-300, 1e-16, 9.9e-13])
+def test_a_corner_finer_than_the_finest_is_refused_naming_it(r):
+    for call in (
+        lambda: lc.facet_pull_off(100.0, 0.01, corner_radius_over_R=r),
+        lambda: lc.facet_contact(0.1, 100.0, 0.01, corner_radius_over_R=r),
+    ):
+        with pytest.raises(ValueError, match=r"corner_radius_over_R must be 0 \(a sharp corner\)"):
+            call()

@@ -133,6 +133,12 @@ class Polygon(CrossSection):
                 f"corner_radius must be at most the circumradius (radius = {radius!r} m; equal "
                 f"to it is the round wire), got {self.corner_radius!r} m",
             )
+        if 0 < self.corner_radius < 1e-12 * radius:  # facet.contact.ROUND_CORNER_MIN
+            raise ParameterError(
+                "corner_radius",
+                f"corner_radius must be 0 (a sharp corner) or at least 1e-12 times the "
+                f"circumradius (radius = {radius!r} m), got {self.corner_radius!r} m",
+            )
         return self
 
     def facet_width(self, radius: float) -> float:

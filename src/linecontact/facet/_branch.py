@@ -195,8 +195,12 @@ def solve_u(
         with np.errstate(divide="ignore", invalid="ignore"):
             tn = ti - Phi / dPhi
         # a Newton step of 1e-14 ends it: the next is below the rounding of the residual
+        # (the step's test only near the root: where the separation jumps by orders, at a
+        # corner far sharper than h, a tiny step is no convergence; the bracket closes there)
         done = (np.abs(Phi) <= 2e-16) | (
-            np.isfinite(tn) & (np.abs(tn - ti) <= 1e-14 * np.maximum(1.0, np.abs(ti)))
+            np.isfinite(tn)
+            & (np.abs(tn - ti) <= 1e-14 * np.maximum(1.0, np.abs(ti)))
+            & (np.abs(Phi) <= 1e-6)
         )
         closed = np.isfinite(lo[idx]) & np.isfinite(hi[idx])
         done |= closed & (hi[idx] - lo[idx] <= 1e-15 * np.maximum(1.0, np.abs(ti)))

@@ -18,6 +18,9 @@ from ..errors import ConvergenceError, ParameterError
 from ..results import SI, Result, as_output
 from . import _branch as _b
 
+#: The finest rounded corner over the circumradius (below it, a corner is sharp: 0).
+ROUND_CORNER_MIN = 1e-12
+
 #: The relative step of the finite difference that decides the stability (dF/da > 0).
 _STEP = 1e-4
 
@@ -84,6 +87,15 @@ def check_geometry(sides: ArrayLike, corner_radius_over_R: ArrayLike) -> tuple[N
         bad = nf[~ok].reshape(-1)[0]
         raise ParameterError("sides", f"sides must be an integer >= 3 (at most 2**53), got {bad!r}")
     r = _domain.check("corner_radius_over_R", corner_radius_over_R)
+    # a rounded corner at least 1e-12 R (a finer one is sharper than any atom, and its
+    # parabola's loads leave the floating-point range): 0 is the sharp corner
+    fine = (r > 0) & (r < ROUND_CORNER_MIN)
+    if np.any(fine):
+        raise ParameterError(
+            "corner_radius_over_R",
+            f"corner_radius_over_R must be 0 (a sharp corner) or in [{ROUND_CORNER_MIN:g}, 1], "
+            f"got {float(r[fine].reshape(-1)[0])!r}",
+        )
     return nf.astype(int), r
 
 

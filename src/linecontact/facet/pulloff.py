@@ -25,16 +25,19 @@ from .._validation import (
     point_text,
     scalar_or_array,
 )
-from ..errors import NoEquilibriumError
+from ..errors import ConvergenceError, NoEquilibriumError, ParameterError
 from ..results import SI, Result, as_output
 from . import _branch as _b
 from .contact import FacetContact, _flat, branch, check_geometry
 
 #: The scan of the branch: widths below the facet's edge (over ``f``), just below it
-#: (``1 - f`` decades) and beyond it over the corner (over ``r``).
+#: (``1 - f`` decades) and beyond it over the corner (``_grid``: 96 widths, log-spaced).
 _BELOW = np.logspace(-9, 0, 64, endpoint=False)
 _EDGE = np.append(1.0 - np.logspace(-1, -13, 40), 1.0)  # and the edge (a sharp corner's end)
 _BEYOND = np.logspace(-13, np.log10(4.0), 96)
+#: Beyond the scan's widest width: four decades wider at a time, up to three times.
+_WIDER = np.geomspace(1.0, 1e4, 48)
+_EXTENSIONS = 3
 #: Zooms of the bracket around the lowest point: each keeps 2 of 16 intervals.
 _ZOOM_POINTS = 17
 _ZOOMS = 16
@@ -44,7 +47,12 @@ def _grid(f: NDArray, r: NDArray) -> NDArray:
     """The scan's widths per point (NaN where a part does not apply), sorted."""
     below = f[:, None] * np.concatenate([_BELOW, _EDGE])[None, :]
     below = np.where(f[:, None] > 0, below, np.nan)
-    beyond = f[:, None] + r[:, None] * _BEYOND[None, :]
+    # beyond the edge: from 1e-13 r to 4 r, or to the domain's widest contact where that is
+    # farther (a small corner under a strong adhesion: the model's own branch, every width)
+    lo = np.log(np.where(r > 0, 1e-13 * r, 1.0))  # in logarithms: r may be 1e-300
+    hi = np.log(np.where(r > 0, np.maximum(4 * r, _domain.DOMAIN["facet_a_over_R"][2] - f), 2.0))
+    steps = np.linspace(0.0, 1.0, _BEYOND.size)[None, :]
+    beyond = f[:, None] + np.exp(lo[:, None] + (hi - lo)[:, None] * steps)
     beyond = np.where(r[:, None] > 0, beyond, np.nan)
     g = np.concatenate([below, beyond], axis=1)
     return np.sort(g, axis=1)  # NaN last
@@ -164,6 +172,28 @@ def _minimum(f, r, rho, s):
     best_A = A2[rows, i]
     best_F = F2[rows, i]
     best_u = U2[rows, i]
+    # a lowest point at the scan's widest width (a strong adhesion on a round corner: its
+    # pull-off contact far wider than f + 4 r): the scan goes on, four decades at a time
+    last = K - 1 - np.argmax(np.isfinite(A2[:, ::-1]), axis=1)
+    at_end = (i == last) & (r > 0)
+    ends = np.zeros(P, bool)
+    for _ in range(_EXTENSIONS):
+        if not at_end.any():
+            break
+        k = np.nonzero(at_end)[0]
+        Ae = best_A[k, None] * _WIDER[None, :]
+        Fe, Ue = _loads(Ae, f[k], r[k], rho[k], s[k], u0=best_u[k])
+        j = np.argmin(Fe, axis=1)
+        rk = np.arange(k.size)
+        lower = Fe[rk, j] < best_F[k]
+        kk = k[lower]
+        jj, rr = j[lower], rk[lower]
+        lo[kk] = Ae[rr, np.maximum(jj - 1, 0)]
+        hi[kk] = Ae[rr, np.minimum(jj + 1, _WIDER.size - 1)]
+        best_A[kk], best_F[kk], best_u[kk] = Ae[rr, jj], Fe[rr, jj], Ue[rr, jj]
+        at_end[:] = False
+        at_end[kk[jj == _WIDER.size - 1]] = True
+    ends |= at_end  # still at the widest width searched: not converged
     for _ in range(_ZOOMS):
         Az = lo[:, None] + (hi - lo)[:, None] * t[None, :]
         Az = np.where(r[:, None] == 0, np.minimum(Az, f[:, None]), Az)
@@ -176,8 +206,8 @@ def _minimum(f, r, rho, s):
         lo = Az[rows, np.maximum(j - 1, 0)]
         hi = Az[rows, np.minimum(j + 1, _ZOOM_POINTS - 1)]
     conv = (hi - lo) <= 1e-9 * np.maximum(best_A, 1e-300) + 1e-300
-    _, C, F, _, _, _ = branch(best_A, f, r, rho, s)
-    return F, best_A, C, conv | np.isfinite(F)
+    _, C, F, _, ok, _ = branch(best_A, f, r, rho, s)
+    return F, best_A, C, conv & ok & np.isfinite(F) & ~ends
 
 
 def facet_pull_off(
@@ -221,7 +251,17 @@ def facet_pull_off(
     C0, F0 = _zero_width(f, r, rho, s)
     # the vanishing-width end where the branch's lowest point is it to rounding (the load is
     # flat to 1e-15 at widths below 1e-4 R: the scan's lowest point there is any of them)
-    zero = F0 <= F + 1e-12 * np.abs(F)
+    with np.errstate(invalid="ignore"):
+        zero = F0 <= F + 1e-12 * np.abs(F)
+    if np.any(~conv & ~zero):
+        _, at = first_point(~conv & ~zero, R_over_h=rho, sigma0_over_E=s, sides=n)
+        raise ConvergenceError(
+            f"facet_pull_off did not converge at {point_text(at)}, corner_radius_over_R="
+            f"{float(np.reshape(r, -1)[np.argmax(~conv & ~zero)])!r}: the load of the branch "
+            "falls on beyond the widest contact searched (1e12 times the facet's half-width "
+            "plus four corner radii)"
+        )
+    conv = conv | zero
     F = np.where(zero, F0, F)
     A = np.where(zero, 0.0, A)
     C = np.where(zero, C0, C)
@@ -295,15 +335,40 @@ def facet_contact_for_load(
     shape = Ft.shape
     Ft, rho, s, n, r = _flat(Ft, rho, s, n, r)
     f = _b.facet_half_width(n, r)
-    A2 = _grid(f, r)
-    F2, _ = _loads(A2, f, r, rho, s)
+    rows = np.arange(Ft.size)
+    # the scan with its vanishing-width end first (a = 0, the load F0: a load between F0
+    # and the narrowest width's is carried by a narrower contact still)
+    grid = _grid(f, r)
+    F_grid, _ = _loads(grid, f, r, rho, s)
+    A2 = np.concatenate([np.zeros((Ft.size, 1)), grid], axis=1)
+    F2 = np.concatenate([_zero_width(f, r, rho, s)[1][:, None], F_grid], axis=1)
+    # a load beyond the widest width's (a round corner): the scan goes on, wider
+    K = A2.shape[1]
+    end = K - 1 - np.argmax(np.isfinite(A2[:, ::-1]), axis=1)
+    wide = (r > 0) & (F2[rows, end] < Ft)
+    ext = np.full((Ft.size, _WIDER.size - 1), np.nan)
+    if wide.any():  # up to the domain's widest contact, a/R = 10
+        top = _domain.DOMAIN["facet_a_over_R"][2]
+        a_end = A2[wide, end[wide]]
+        steps = np.linspace(0.0, 1.0, _WIDER.size)[None, 1:]
+        ext[wide] = a_end[:, None] * (np.maximum(top / a_end, 1.0)[:, None] ** steps)
+    F_ext, _ = _loads(ext, f, r, rho, s)
+    A2 = np.concatenate([A2, ext], axis=1)
+    F2 = np.concatenate([F2, F_ext], axis=1)
+    too_wide = wide & ~(np.nanmax(np.where(np.isfinite(F_ext), F_ext, -np.inf), axis=1) >= Ft)
+    if np.any(too_wide):
+        _, at = first_point(too_wide, F_over_Eh=Ft, R_over_h=rho, sigma0_over_E=s)
+        raise ParameterError(
+            "F_over_Eh",
+            f"the load at {point_text(at)} needs a contact wider than a/R = 10, the end of the "
+            "domain of the solvers",
+        )
     # the widest crossing of F = Ft where F rises with a (the loaded, stable branch)
     d = F2 - Ft[:, None]
     up = (d[:, :-1] < 0) & (d[:, 1:] >= 0) & np.isfinite(F2[:, 1:])
     K = A2.shape[1]
     last = np.where(up.any(axis=1), K - 2 - np.argmax(up[:, ::-1], axis=1), -1)
     found = last >= 0
-    rows = np.arange(Ft.size)
     li = np.maximum(last, 0)
     lo = A2[rows, li]
     hi = A2[rows, li + 1]
@@ -320,7 +385,7 @@ def facet_contact_for_load(
         _, at = first_point(~np.isfinite(A), F_over_Eh=Ft, R_over_h=rho, sigma0_over_E=s)
         raise NoEquilibriumError(
             f"no contact carries the load at {point_text(at)}: it is below the pull-off force "
-            f"(facet_pull_off) or beyond the widths solved (a/R up to f + 4 r_c/R)"
+            "(facet_pull_off); the wire has pulled off"
         )
     ok = np.isfinite(A)
     Aok = np.where(ok, A, 1.0)
