@@ -149,14 +149,7 @@ def _cmd_normal_facet(
         )
     params = _parameters(args, rho, s, cyl)
     params.update(shape_parameters_of(g, cyl))
-    extra: dict[str, Any] = {}
-    show = ["a_over_R", "c_over_R", "F_over_Eh", "region", "stable"]
-    if cyl is not None:
-        names = {"contact_half_width": "a_m", "adhesive_zone_half_width": "c_m"}
-        names["load"] = "F_N_per_m"
-        cols, shown = si_shown(args, c, names, {"load": "F_total_N"}, ["a_m", "c_m", "F_N_per_m"])
-        extra.update(cols)
-        show += shown
+    extra, show = _contact_columns(args, c, cyl, ["a_over_R", "c_over_R", "F_over_Eh", "region"])
     return records(
         args,
         r,
@@ -242,18 +235,27 @@ def _load_reasons(F, state, rho, s, branch, cyl) -> np.ndarray:
     return reason
 
 
-def _normal_table(args, r: NormalContact, c, rho, s, cyl, state, reason, given) -> Table:
-    params = _parameters(args, rho, s, cyl)
-    if args.branch != "stable":
-        params["branch"] = args.branch
+def _contact_columns(args, c, cyl, show: list[str]) -> tuple[dict[str, Any], list[str]]:
+    """A contact's SI columns (``a_m``, ``c_m``, ``F_N_per_m``, the total) and those to show.
+
+    ``show``: the groups' columns shown before ``stable`` and the SI ones.
+    """
     extra: dict[str, Any] = {}
-    show = ["a_over_R", "c_over_R", "F_over_Eh", "c_over_a", "stable"]
+    show = [*show, "stable"]
     if cyl is not None:
         names = {"contact_half_width": "a_m", "adhesive_zone_half_width": "c_m"}
         names["load"] = "F_N_per_m"
         cols, shown = si_shown(args, c, names, {"load": "F_total_N"}, ["a_m", "c_m", "F_N_per_m"])
         extra.update(cols)
         show += shown
+    return extra, show
+
+
+def _normal_table(args, r: NormalContact, c, rho, s, cyl, state, reason, given) -> Table:
+    params = _parameters(args, rho, s, cyl)
+    if args.branch != "stable":
+        params["branch"] = args.branch
+    extra, show = _contact_columns(args, c, cyl, ["a_over_R", "c_over_R", "F_over_Eh", "c_over_a"])
     # the load is the difference of the Hertz and the adhesive terms: round-off is relative
     # to them, not to the load
     a = np.asarray(r.a_over_R, float)
