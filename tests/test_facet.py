@@ -535,3 +535,17 @@ def test_the_load_curve_in_si_and_on_the_command_line(capsys):
     assert [x["pulloff"] for x in rows] == list(curve.turning_point)
     assert main([*argv, "--num-noncontact", "5"]) == 2
     assert "--num-noncontact" in capsys.readouterr().err
+
+
+def test_the_collocation_converges_to_the_closed_form_with_its_size():
+    """The paper's machinery on a contact over the facet's kink: algebraic convergence (its
+    error swings with where the kink falls between nodes, falling overall)."""
+    f = 0.7 * math.sin(math.pi / 6)
+    A = 1.4 * f
+    want = lc.facet_contact(A, HEX_RHO, HEX_S, sides=6, corner_radius_over_R=0.3).F_over_Eh
+    err = {
+        n: abs(_colloc_state(A, HEX_RHO, HEX_S, 6, 0.3, n=n)[1] / want - 1)
+        for n in (64, 256, 1024, 8192)
+    }
+    assert err[64] > err[256] > err[1024] > err[8192]
+    assert err[8192] < 1e-6 < err[64]
