@@ -230,3 +230,17 @@ def test_sharp_corner_pins_the_zone():
     assert np.all((ratio > 3.9) & (ratio < 4.1)), err
     extrapolated = (4 * runs[-1, 1] - runs[-2, 1]) / 3
     np.testing.assert_allclose(extrapolated, ref.F_over_Eh, rtol=EXTRAPOLATED_RTOL, atol=0)
+
+
+@pytest.mark.parametrize(("rho", "s", "n", "r"), [(1e3, 0.02, 6, 0.3), (1e3, 0.02, 5, 0.1)])
+def test_elements_at_the_pull_off(rho, s, n, r):
+    """At the pull-off's width (a minimum inside the branch) the elements' load is the
+    pull-off force, and the elements' own loads a little to either side are above it."""
+    p = lc.facet_pull_off(rho, s, sides=n, corner_radius_over_R=r)
+    a0 = p.a_over_R_at_pulloff
+    assert p.mechanism == "inside-facet" and a0 > 0
+    _, extrapolated = convergence(a0, rho, s, n, r)
+    np.testing.assert_allclose(extrapolated[1], p.F_pulloff_over_Eh, rtol=EXTRAPOLATED_RTOL)
+    for side in (0.97, 1.03):
+        _, beside = convergence(a0 * side, rho, s, n, r)
+        assert beside[1] > extrapolated[1]
