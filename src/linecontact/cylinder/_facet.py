@@ -1,11 +1,13 @@
 """The polygonal wire's problems in SI units (``self`` is the cylinder).
 
-:meth:`Cylinder.contact` and :meth:`Cylinder.pull_off` of a wire whose cross-section is a
-:class:`~linecontact.geometry.Polygon`, and :meth:`Cylinder.shaped`.
+:meth:`Cylinder.contact` (and the contact for a load that the initiation of sliding
+takes), :meth:`Cylinder.pull_off` and :meth:`Cylinder.load_curve` of a wire whose
+cross-section is a :class:`~linecontact.geometry.Polygon`, and :meth:`Cylinder.shaped`.
 
 The results are the round wire's SI classes (:class:`CylinderContact`,
-:class:`CylinderPullOff`), built from the declarations of the facet's nondimensional results
-(:mod:`linecontact.facet`): a new cross-section needs no SI class of its own.
+:class:`CylinderPullOff`, :class:`CylinderLoadCurve`), built from the declarations of the
+facet's nondimensional results (:mod:`linecontact.facet`): a new cross-section needs no SI
+class of its own.
 """
 
 from __future__ import annotations
