@@ -255,10 +255,13 @@ def test_the_pull_off_a_block_at_a_time_equals_it_point_by_point(words):
     whole = evaluate(p, 0, bl[0])
     one = evaluate(p, 0, bl[0], fast=False)
     assert list(whole.data) == list(one.data)
+    # a polygon's scan picks its lowest point among nearly equal loads: an array and a scalar
+    # call may round them apart in the last bits (SIMD), so its records within 1e-10
+    rtol = 1e-10 if "--cross-section" in words else 1e-13
     for k, a in whole.data.items():
         b = one.data[k]
         if a.dtype.kind == "f":
-            np.testing.assert_allclose(a, b, rtol=1e-13, atol=0, equal_nan=True, err_msg=k)
+            np.testing.assert_allclose(a, b, rtol=rtol, atol=0, equal_nan=True, err_msg=k)
         else:
             assert (a == b).all(), k
     assert whole.units == one.units

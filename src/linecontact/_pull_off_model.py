@@ -56,13 +56,15 @@ def _groups(radius, modulus, w, z0):
 
 def _shape(cross_section: CrossSection | None, R: NDArray) -> dict[str, Any] | None:
     """A polygon's groups at the radii ``R`` (None: the round wire), checked against them."""
-    if cross_section is None or cross_section.kind == "round":
+    if cross_section is None:
         return None
-    if not isinstance(cross_section, CrossSection):
+    if not isinstance(cross_section, CrossSection):  # (a word such as "hexagon" too)
         raise ParameterError(
             "cross_section",
             f"cross_section must be linecontact.Round() or Polygon(...), got {cross_section!r}",
         )
+    if cross_section.kind == "round":
+        return None
     cross_section.checked(float(np.min(R)))  # a corner radius above a radius, named
     return cross_section.groups(R)  # its groups at each radius
 

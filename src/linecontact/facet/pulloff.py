@@ -61,13 +61,16 @@ def _grid(f: NDArray, r: NDArray) -> NDArray:
 def _loads(A2: NDArray, f, r, rho, s, u0=None) -> tuple[NDArray, NDArray]:
     """The load and ``u`` at each width of ``A2`` (points x widths); ``u0`` a start per point."""
     K = A2.shape[1]
-    ok = np.isfinite(A2)
-    Af = np.where(ok, A2, 1.0).reshape(-1)
-    fK, rK, rhoK, sK = (np.repeat(v, K) for v in (f, r, rho, s))
-    start = None if u0 is None else np.repeat(u0, K)
-    u, _, F, _, conv, _ = branch(Af, fK, rK, rhoK, sK, u0=start)
-    F = np.where(ok.reshape(-1) & conv, F, np.inf).reshape(A2.shape)
-    return F, u.reshape(A2.shape)
+    ok = np.isfinite(A2).reshape(-1)  # the widths that apply: only they are solved
+    F = np.full(ok.size, np.inf)
+    u = np.full(ok.size, np.nan)
+    if ok.any():
+        fK, rK, rhoK, sK = (np.repeat(v, K)[ok] for v in (f, r, rho, s))
+        start = None if u0 is None else np.repeat(u0, K)[ok]
+        uo, _, Fo, _, conv, _ = branch(A2.reshape(-1)[ok], fK, rK, rhoK, sK, u0=start)
+        F[ok] = np.where(conv, Fo, np.inf)
+        u[ok] = uo
+    return F.reshape(A2.shape), u.reshape(A2.shape)
 
 
 def _zero_width(f, r, rho, s):
@@ -346,7 +349,7 @@ def facet_contact_for_load(
     K = A2.shape[1]
     end = K - 1 - np.argmax(np.isfinite(A2[:, ::-1]), axis=1)
     wide = (r > 0) & (F2[rows, end] < Ft)
-    ext = np.full((Ft.size, _WIDER.size - 1), np.nan)
+    ext = np.full((Ft.size, _WIDER.size - 1), np.nan)  # (NaN: not solved, _loads)
     if wide.any():  # up to the domain's widest contact, a/R = 10
         top = _domain.DOMAIN["facet_a_over_R"][2]
         a_end = A2[wide, end[wide]]
