@@ -116,6 +116,28 @@ def test_the_api_returns_what_the_command_line_prints(client, capsys, command, q
     _close(got, want)
 
 
+def test_prefer_python_adds_the_lines_that_computed_the_answer(client):
+    plain = client.get(f"/api/v1/pulloff?{WIRE}")
+    asked = client.get(f"/api/v1/pulloff?{WIRE}", headers={"Prefer": "respond-async, python"})
+    assert "python" not in plain.json() and "Preference-Applied" not in plain.headers
+    assert asked.headers["Preference-Applied"] == "python" and "Prefer" in asked.headers["Vary"]
+    doc = asked.json()
+    assert list(doc)[-2:] == ["warnings", "python"]
+    code = doc.pop("python")
+    plain_doc = plain.json()
+    doc.pop("command"), plain_doc.pop("command")
+    _close(doc, plain_doc)  # the same answer, one key more
+    space: dict = {}
+    exec(code.replace("print(result)", ""), space)  # the server's lines, run here
+    assert space["result"].pull_off_force == pytest.approx(
+        plain.json()["results"][0]["F_pulloff_N_per_m"], rel=1e-12
+    )
+    groups = client.get(
+        "/api/v1/pulloff?R_over_h=100&sigma0_over_E=0.01", headers={"Prefer": "python"}
+    )
+    assert groups.json()["python"] == ""  # computed on the groups: no library call to write
+
+
 def test_negative_numbers_are_values(client):
     r = client.get("/api/v1/normal?R_over_h=100&sigma0_over_E=0.2&F_over_Eh=-1,-0.5e-1,1")
     assert r.status_code == 200 and len(r.json()["results"]) == 3

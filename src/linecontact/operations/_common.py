@@ -27,6 +27,7 @@ from ..output import Table
 from ..presets import Material, material_names
 from ._declare import Entry, Parameter
 from ._widths import check_widths  # noqa: F401 - the shells' name for it
+from ._written import made, note
 
 # --------------------------------------------------------------------------------------------
 # the declarations
@@ -370,14 +371,15 @@ def cylinder(args: Any, range_flag: str = "--h") -> Cylinder:
     if name != "round":
         rc = getattr(args, "corner_radius", None)
         try:
-            cyl = cyl.shaped(Polygon(NAMED_SIDES[name], 0.0 if rc is None else rc))
+            polygon = Polygon(NAMED_SIDES[name], 0.0 if rc is None else rc)
+            cyl = made(args, "cyl", cyl.shaped, polygon)
         except ParameterError as e:
             message = (
                 str(e).replace("corner_radius", "--corner-radius").replace("radius =", "--radius")
             )
             raise ParameterError("--corner-radius", message) from None
     if getattr(args, "law", None) == "lennard-jones":
-        return cyl.under(LennardJones)
+        return made(args, "cyl", cyl.under, LennardJones)
     return cyl
 
 
@@ -420,7 +422,7 @@ def _cylinder(args: Any, range_flag: str) -> Cylinder:
             raise ParameterError(
                 "--modulus", "give either --modulus or --E1 --nu1 --E2 --nu2, not both"
             )
-        return Cylinder.from_modulus(args.radius, args.modulus, **adh)
+        return made(args, "cyl", Cylinder.from_modulus, args.radius, args.modulus, **adh)
     for m, E, nu, flags, body in (
         (presets[0], args.E1, args.nu1, "--E1 --nu1", "cylinder"),
         (presets[1], args.E2, args.nu2, "--E2 --nu2", "substrate"),
@@ -438,7 +440,12 @@ def _cylinder(args: Any, range_flag: str) -> Cylinder:
             "SI inputs need --modulus, or the materials: --cylinder-material or --E1 --nu1, "
             "and --substrate-material or --E2 --nu2",
         )
-    return Cylinder.from_materials(args.radius, E1, nu1, E2, nu2, **adh)
+    cyl = made(args, "cyl", Cylinder.from_materials, args.radius, E1, nu1, E2, nu2, **adh)
+    pairs = zip(presets, ("E1, nu1", "E2, nu2"), strict=True)
+    named = [f"{m.name} ({w})" for m, w in pairs if m is not None]
+    if named:
+        note(args, f"the presets' moduli: {', '.join(named)}")
+    return cyl
 
 
 def _presets(args: Any) -> tuple[Material | None, Material | None]:

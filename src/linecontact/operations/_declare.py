@@ -296,6 +296,8 @@ class Inputs:
         }
         self.__dict__["command"] = operation.name
         self.__dict__["operation"] = operation
+        #: the library calls the computation made, as Python lines (:mod:`._written`)
+        self.__dict__["python"] = []
         #: the names the library's messages give parameters in this call, where the call
         #: chose them (``work_of_adhesion`` meaning the receding one): each shell says its
         #: spelling (compute adds to it); a value is a parameter's name, or words of flags

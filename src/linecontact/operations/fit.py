@@ -41,6 +41,7 @@ from ._fit_common import (
     _uncertainty,
 )
 from ._fit_friction import run_friction
+from ._written import made
 
 __all__ = ["OPERATIONS"]
 
@@ -132,7 +133,10 @@ def _cmd_adhesion(args: Inputs) -> Table:
             raise ParameterError("--z0-sd", "--z0-sd needs a fixed --z0 (a joint fit estimates z0)")
         z_sd = _one_sd(args, "z0", args.z0) if args.z0 is not None else 0.0
         # the inputs' uncertainties propagate by refits with them drawn (100, seed + 1)
-        fit = inv.fit_pull_off(
+        fit = made(
+            args,
+            "result",
+            inv.fit_pull_off,
             R,
             F,
             E,

@@ -28,6 +28,7 @@ from ..tangential.history import _T_LIMIT
 from ._common import flag, si_columns, si_parameters
 from ._declare import Inputs, Operation
 from ._records import records
+from ._written import made
 from .tangential import (
     _check_friction,
     _friction_nd,
@@ -153,7 +154,9 @@ def _compute(args: Inputs, how: _Loading) -> Table:
     if cyl is not None:
         fr = _si_friction(args, coulomb, cyl)
         loads = _si_loads(args, cyl, state, values, coulomb)
-        res = getattr(cyl, how.solver)(args.load, loads, **fr, method=args.method)
+        res = made(
+            args, "result", getattr(cyl, how.solver), args.load, loads, **fr, method=args.method
+        )
         extra: dict[str, Any] = si_columns(res, how.columns)
         if args.length is not None:
             field, key = how.total

@@ -29,6 +29,7 @@ from ._common import (
 )
 from ._declare import Entry, Inputs, Operation, Parameter
 from ._records import convergence, records, si_shown
+from ._written import made
 
 __all__ = ["OPERATIONS"]
 
@@ -81,7 +82,14 @@ def _cmd_normal(args: Inputs) -> Table:
         if cyl is None:
             r = normal_contact(A, rho, s, method=args.method, on_failure="report")
         else:  # A in m
-            c = cyl.contact(contact_half_width=A, method=args.method, on_failure="report")
+            c = made(
+                args,
+                "result",
+                cyl.contact,
+                contact_half_width=A,
+                method=args.method,
+                on_failure="report",
+            )
             r = c.nondimensional
         state, reason = convergence(r, args.method, estimate=True)
         given = "a_over_R"
@@ -98,7 +106,9 @@ def _cmd_normal(args: Inputs) -> Table:
             r = contact_for_load(F, rho, s, branch=args.branch, on_failure="report")
         else:
             load = si_loads(args, cyl, "F_over_Eh")
-            c = cyl.contact(load=load, branch=args.branch, on_failure="report")
+            c = made(
+                args, "result", cyl.contact, load=load, branch=args.branch, on_failure="report"
+            )
             r = c.nondimensional
             F = cyl.over(load, "Eh")
         state = np.asarray(r.state).reshape(-1)
@@ -127,7 +137,7 @@ def _cmd_normal_facet(
         if cyl is None:
             r = facet_contact(A, rho, s, **g)
         else:  # A in m
-            c = cyl.contact(contact_half_width=A)
+            c = made(args, "result", cyl.contact, contact_half_width=A)
             r = c.nondimensional
         given = "a_over_R"
     else:
@@ -135,7 +145,13 @@ def _cmd_normal_facet(
             F = np.asarray(args.F_over_Eh, float)
             r = facet_contact_for_load(F, rho, s, on_failure="report", **g)
         else:
-            c = cyl.contact(load=si_loads(args, cyl, "F_over_Eh"), on_failure="report")
+            c = made(
+                args,
+                "result",
+                cyl.contact,
+                load=si_loads(args, cyl, "F_over_Eh"),
+                on_failure="report",
+            )
             r = c.nondimensional
         given = "F_over_Eh"
     bad = np.asarray(r.region).reshape(-1) == "no-equilibrium"
@@ -180,7 +196,7 @@ def _cmd_normal_lj(args: Inputs, A, rho: float, s: float, cyl: Cylinder | None) 
         F = np.asarray(args.F_over_Eh, float)
         r = _lj.contact_for_load(F, rho, s, on_failure="report")
     else:
-        c = cyl.contact(load=args.load, on_failure="report")
+        c = made(args, "result", cyl.contact, load=args.load, on_failure="report")
         r = c.nondimensional
         F = np.asarray(r.F_over_Eh, float)
     state = np.asarray(r.state).reshape(-1)
@@ -285,7 +301,7 @@ def _normal_table(args, r: NormalContact, c, rho, s, cyl, state, reason, given) 
 
 
 def _cmd_pulloff_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> Table:
-    si = None if cyl is None else cyl.pull_off()
+    si = None if cyl is None else made(args, "result", cyl.pull_off)
     p = _lj.pull_off(rho, s) if si is None else si.nondimensional
     params = _lj_parameters(args, rho, s, cyl)
     extra: dict[str, Any] = {}
@@ -343,7 +359,7 @@ def _cmd_pulloff(args: Inputs) -> Table:
     _not_for_polygon(args, g)
     if args.law == "lennard-jones":
         return _cmd_pulloff_lj(args, rho, s, cyl)
-    si = None if cyl is None else cyl.pull_off()
+    si = None if cyl is None else made(args, "result", cyl.pull_off)
     if si is not None:
         p = si.nondimensional
     else:
@@ -440,7 +456,7 @@ def _cmd_curve_lj(args: Inputs, rho: float, s: float, cyl: Cylinder | None) -> T
         _check_lj_end(F_max, rho, s)
         c = _lj.load_curve(rho, s, F_max_over_Eh=F_max)
     else:
-        si = cyl.load_curve(max_load=args.F_max)
+        si = made(args, "result", cyl.load_curve, max_load=args.F_max)
         c = si.nondimensional
     po = c.pulloff
     is_po = np.zeros(c.F_over_Eh.shape, bool)
@@ -512,12 +528,12 @@ def _cmd_curve(args: Inputs) -> Table:
     si: Any = None
     if g is not None:
         return _cmd_curve_facet(args, rho, s, cyl, g)
-    if cyl is None or args.a_max is None:
+    if cyl is None or (args.a_max is None and args.a_max_over_R is not None):
         c = load_curve(rho, s, a_max_over_R=args.a_max_over_R, **n)
         if cyl is not None:  # the limit in radii: the same curve, in SI units
             si = _si_load_curve(cyl, c)
     else:
-        si = cyl.load_curve(max_half_width=args.a_max, **n)
+        si = made(args, "result", cyl.load_curve, max_half_width=args.a_max, **n)
         c = si.nondimensional
     po = c.pulloff
     # the pull-off state is the one `pulloff` reports, whatever its label: the load minimum
@@ -563,7 +579,7 @@ def _cmd_curve_facet(args: Inputs, rho: float, s: float, cyl: Cylinder | None, g
         a_max = args.a_max
         if a_max is None and args.a_max_over_R is not None:
             a_max = cyl.in_si(args.a_max_over_R, "R")
-        si = cyl.load_curve(max_half_width=a_max, num=args.num)
+        si = made(args, "result", cyl.load_curve, max_half_width=a_max, num=args.num)
         c = si.nondimensional
     po = c.pulloff
     params = _parameters(args, rho, s, cyl)

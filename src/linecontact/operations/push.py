@@ -31,6 +31,7 @@ from ._common import (
 )
 from ._declare import Entry, Inputs, Operation, Parameter
 from ._records import records, si_shown
+from ._written import made
 
 __all__ = ["OPERATIONS"]
 
@@ -112,7 +113,10 @@ def _cmd_push(args: Inputs) -> Table:
             check_si("--push", args.push, Eh, "T_over_Ea", "N/m", SCALE_WORDS["F_over_Eh2"])
         h1 = args.h1 if args.h1 is not None else cyl.in_si(args.h1_over_h2, "h")
         Q = args.push
-        pushed: Any = cyl.push(
+        pushed: Any = made(
+            args,
+            "result",
+            cyl.push,
             friction_stress=args.tau0,
             height=heights,
             receding_range=h1,

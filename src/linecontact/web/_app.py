@@ -277,12 +277,26 @@ async def _send_json(send: Any, status: int, doc: dict[str, Any]) -> None:
     await send({"type": "http.response.body", "body": body})
 
 
-def _respond(out: Outcome) -> Response:
+#: The preference (``Prefer: python``, RFC 7240) of a request that wants the Python lines
+#: of the library calls that computed its answer (the pages' "the same elsewhere").
+PYTHON_PREFERENCE = "python"
+
+
+def _prefers_python(request: Request) -> bool:
+    words = request.headers.get("prefer", "").replace(";", ",").split(",")
+    return any(w.strip().lower() == PYTHON_PREFERENCE for w in words)
+
+
+def _respond(out: Outcome, python: bool = False) -> Response:
+    """The answer; with ``python``, its JSON has the key ``"python"`` too (the lines)."""
     if out.status == 200:
-        headers = {"X-Linecontact-Seconds": f"{out.seconds:.6f}"}
+        headers = {"X-Linecontact-Seconds": f"{out.seconds:.6f}", "Vary": "Prefer"}
         if out.warnings:
             headers["X-Linecontact-Warnings"] = json.dumps(out.warnings)
         body = _with_warnings(out.body, out.warnings)
+        if python:
+            body = body[:-1] + ', "python": ' + json.dumps(out.python) + "}"
+            headers["Preference-Applied"] = PYTHON_PREFERENCE
         return Response(body + "\n", media_type="application/json", headers=headers)
     return JSONResponse(_error(_name(out.flag), out.message), status_code=out.status)
 
@@ -300,6 +314,7 @@ def _without_path(out: Outcome, path: str, given: str) -> Outcome:
     out.body = out.body.replace(quoted, named)
     out.message = out.message.replace(path, given)
     out.warnings = [w.replace(path, given) for w in out.warnings]
+    out.python = out.python.replace(path, given)
     return out
 
 
@@ -455,13 +470,14 @@ def create_app(
             command, values, slow = await parsed(request)
         except _RequestError as exc:
             return exc.response()
+        python = _prefers_python(request)
         if not request.headers.get("content-type", "").startswith("multipart/form-data"):
-            return _respond(await pool.run(command, values, slow=slow))
+            return _respond(await pool.run(command, values, slow=slow), python)
         with tempfile.TemporaryDirectory(prefix="upload-", dir=pool.root) as tmpdir:
             data, path, given = await upload(request, tmpdir)
             request_ = {**values, "data": data[1]} if data else values  # the file's path
             out = await pool.run(command, request_, slow=slow)
-            return _respond(_without_path(out, path, given))
+            return _respond(_without_path(out, path, given), python)
 
     async def start_job(request: Request) -> Response:
         try:
@@ -609,7 +625,9 @@ def _openapi(limits: dict[str, Any]) -> dict[str, Any]:
     responses = {
         "200": {"description": "exactly what `linecontact COMMAND --json` prints, then "
                 "`warnings`: the notes the command line prints on stderr (a list, [] when "
-                "none)"},
+                "none); with the header `Prefer: python`, then `python`: the Python lines "
+                "of the library calls that computed it (empty where it was computed on the "
+                "nondimensional groups), and the header `Preference-Applied: python`"},
         "400": {"description": "a malformed body (not JSON, not UTF-8, nested too deeply, "
                 "a malformed form)"},
         "403": {"description": "a Host header that does not name this server, or the Origin "
@@ -648,6 +666,14 @@ def _openapi(limits: dict[str, Any]) -> dict[str, Any]:
                     "explode": True,
                 }
             )
+        params.append(
+            {
+                "name": "Prefer",
+                "in": "header",
+                "description": "`python`: the answer carries the Python lines that computed it",
+                "schema": {"type": "string", "enum": [PYTHON_PREFERENCE]},
+            }
+        )
         paths[f"/api/v1/{command}"] = {
             "get": {
                 "summary": f"linecontact {command}",

@@ -84,6 +84,7 @@ class Outcome:
     warnings: list[str] = field(default_factory=list)
     seconds: float = 0.0
     body_file: str | None = None  # where a worker left the body (the server reads it)
+    python: str = ""  # the Python lines of the library calls that computed it (the pages')
 
 
 class _Progress(io.TextIOBase):
@@ -170,6 +171,7 @@ def _call(command: str, values: dict[str, Any]) -> Outcome:
     """The operation ``command`` on the typed ``values``: its JSON, or the error."""
     from .. import operations
     from ..operations._messages import spell
+    from ..operations._written import python as written
     from ..output import render
 
     start = time.perf_counter()
@@ -185,7 +187,8 @@ def _call(command: str, values: dict[str, Any]) -> Outcome:
     if status != 200 or not got:
         flag = _flag(op, inputs.said_as, refused)
         return Outcome(status, flag=flag, message=message, warnings=said)
-    return Outcome(200, body=render(got[0], "json"), warnings=said, seconds=seconds)
+    body = render(got[0], "json")
+    return Outcome(200, body=body, warnings=said, seconds=seconds, python=written(inputs))
 
 
 def _guarded(work: Any, say: Any, refused: list[str]) -> tuple[int, str, list[str]]:

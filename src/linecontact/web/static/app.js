@@ -646,73 +646,11 @@
     return words.join(" ");
   }
   const one = (v, k) => (v[k] ? v[k][0] : null);
-  const list = (v, k) => "[" + (v[k] || []).join(", ") + "]";
-  function cylinderPy(v, adhesion) { // the elasticity as the page took it: a modulus, the four, the presets
-    const R = one(v, "radius");
-    if (v.modulus) return `cyl = lc.Cylinder.from_modulus(${R}, ${one(v, "modulus")}, ${adhesion})`;
-    if (v.E1 || v.nu1 || v.E2 || v.nu2) {
-      const four = ["E1", "nu1", "E2", "nu2"].map((k) => one(v, k)).join(", ");
-      return `cyl = lc.Cylinder.from_materials(${R}, ${four}, ${adhesion})`;
-    }
-    const mats = `${JSON.stringify(one(v, "cylinder_material"))}, ${JSON.stringify(one(v, "substrate_material"))}`;
-    return `cyl = lc.Cylinder.from_presets(${R}, ${mats}, ${adhesion})`;
-  }
-  const shapedPy = (v) => (v.cross_section // a polygon on its facet (linecontact.geometry)
-    ? [`cyl = cyl.shaped(lc.geometry.cross_section(${JSON.stringify(one(v, "cross_section"))}, ${one(v, "corner_radius") || 0}))`]
-    : []);
-  const wirePy = (v) => [cylinderPy(v, v.sigma0 || v.h
-    ? `cohesive_stress=${one(v, "sigma0")}, adhesion_range=${one(v, "h")}`
-    : `work_of_adhesion=${one(v, "work_of_adhesion")}, equilibrium_spacing=${one(v, "z0")}`), ...shapedPy(v)].join("\n");
-  const PYTHON = {
-    pulloff: (v) => [wirePy(v), "result = cyl.pull_off()", "print(result)",
-      ...(v.length ? [`print("on the whole wire [N]:", result.pull_off_force * ${one(v, "length")})`] : [])],
-    "lennard-jones": (v) => [wirePy(v), "result = cyl.under(lc.LennardJones).pull_off()", "print(result)"],
-    contact: (v) => [wirePy(v), `result = cyl.contact(load=${list(v, "load")})`, "print(result)"],
-    curve: (v) => [wirePy(v), "result = cyl.load_curve()", "print(result)"],
-    cycle: (v) => [wirePy(v), `result = cyl.cyclic_loss(normal_load=${one(v, "load")}, friction_stress=${one(v, "tau0")}, amplitude=${list(v, "tangential_amplitude")})`, "print(result)"],
-    push(v) {
-      const lines = [];
-      let receding;
-      if (v.sigma0 || v.h2 || v.h1) {
-        lines.push(cylinderPy(v, `cohesive_stress=${one(v, "sigma0")}, adhesion_range=${one(v, "h2")}`));
-        receding = `receding_range=${one(v, "h1")}`;
-      } else {
-        lines.push(`# one sigma0, from the receding work of adhesion w1 with z0 (as the command line)`,
-          `sigma0, h1 = lc.adhesion_from_work(${one(v, "work_of_adhesion_receding")}, ${one(v, "z0")})`,
-          cylinderPy(v, `cohesive_stress=sigma0, adhesion_range=${one(v, "work_of_adhesion_advancing")} / sigma0`));
-        receding = "receding_range=h1";
-      }
-      const args = [`friction_stress=${one(v, "tau0")}`];
-      if (v.tip_height) args.push(`height=${list(v, "tip_height")}`, `tip_friction=${one(v, "tip_friction") || 0}`);
-      else args.push(`height=${list(v, "height")}`);
-      args.push(receding);
-      if (v.load) args.push(`normal_load=${one(v, "load")}`);
-      if (v.push) args.push(`push=${one(v, "push")}`);
-      if (v.length) args.push(`length=${one(v, "length")}`);
-      lines.push(`result = cyl.push(${args.join(", ")})`, "print(result.first_motion, result.rolling_resistance, result.sliding_resistance)");
-      return lines;
-    },
-    map: (v) => [wirePy(v), "print(cyl.maugis_parameter)  # your wire on the map",
-      "# the map itself (minutes; `linecontact map --quick` is the quick grid):",
-      "# from linecontact.adhesion_map import adhesion_map; m = adhesion_map()"],
-    fit(v, doc) {
-      const r = doc ? rec(doc) : null;
-      if (!r || !Array.isArray(r.radius_m)) return ["# upload the measurements and compute: the lines use their values"];
-      const E = (doc.parameters || {}).modulus_Pa;
-      return [
-        `radius = [${r.radius_m.join(", ")}]  # [m], from ${(doc.parameters || {}).data || "the file"}`,
-        `force = [${r.pull_off_force_N_per_m.join(", ")}]  # [N/m]`,
-        `modulus = ${E}  # [Pa], the composite modulus of ${one(v, "cylinder_material")} on ${one(v, "substrate_material")}`,
-        `result = lc.fit_pull_off(radius, force, modulus${v.z0 ? `, equilibrium_spacing=${one(v, "z0")}` : ""})`,
-        "print(result.work_of_adhesion, result.equilibrium_spacing)",
-      ];
-    },
-  };
-  function equivalent(values, aux, doc) {
-    const all = { ...values, ...aux };
-    $("cli").textContent = command(values, spec.upload ? ["--data", doc ? (doc.parameters || {}).data || "measurements.csv" : "measurements.csv"] : null);
-    const py = PYTHON[spec.page];
-    $("py").textContent = py ? "import linecontact as lc\n" + py(all, doc).join("\n") : "";
+  // the Python lines are the server's: the library calls that computed the answer, written
+  // as they were made (the page asks for them with "Prefer: python"; the map: its wire's)
+  function equivalent(values, python) {
+    $("cli").textContent = command(values, spec.upload ? ["--data", current && current.data || "measurements.csv"] : null);
+    $("py").textContent = python || "";
   }
   function noEquivalent() {
     $("cli").textContent = "(the command line and the Python lines follow once the fields marked above are right)";
@@ -722,16 +660,22 @@
   // ---------------------------------------------------------------------------------------
   // the page's extra requests: the map's wire, the push's flat push, the fit's curve
 
-  async function api(cmd, p) {
-    const r = await fetch("/api/v1/" + cmd + "?" + p.toString());
+  const PYTHON = { headers: { Prefer: "python" } }; // the answer's Python lines too
+  async function api(cmd, p, init) {
+    const r = await fetch("/api/v1/" + cmd + "?" + p.toString(), init);
     const doc = await r.json().catch(() => null);
     return [r.status, doc];
+  }
+  function withoutPython(doc) { // the answer as the API gives it, and its Python lines
+    const { python, ...rest } = doc || {};
+    return [rest, python || ""];
   }
 
   async function marked(aux) {
     if (!spec.mark) return null;
-    const [status, doc] = await api(spec.mark.command, params(aux, true));
-    if (status !== 200) { error(doc); return null; }
+    const [status, answer] = await api(spec.mark.command, params(aux, true), PYTHON);
+    if (status !== 200) { error(answer); return null; }
+    const [doc, python] = withoutPython(answer);
     const r = doc.results[0];
     const v = r[spec.mark.key];
     const head = p("Your wire: ", val(spec.mark.key, v, `Maugis parameter ${fmt(v)}`), `, ${regime(v)}; `,
@@ -739,7 +683,7 @@
     head.id = "mark-value";
     head.dataset.key = spec.mark.key;
     head.dataset.value = String(v);
-    return { x: v, label: spec.mark.label, head: [head], warnings: doc.warnings || [] };
+    return { x: v, label: spec.mark.label, head: [head], warnings: doc.warnings || [], python };
   }
 
   // the push of a flat pusher at the tip's heights: what the tip changes
@@ -869,11 +813,14 @@
 
   let current = null; // the inputs of the computation shown
   let generation = 0; // counts the computations asked for: older extra requests stop
-  async function done(doc) {
+  async function done(answer) {
+    const [doc, python] = withoutPython(answer);
     const mine = generation;
     const { values, aux } = current;
     const mark = await marked(aux);
     if (mine !== generation) return; // a newer computation was asked for
+    current.data = (doc.parameters || {}).data;
+    equivalent(values, python || (mark && mark.python)); // with the answer, not after its plot
     headline(doc, mark);
     warnings([...(doc.warnings || []), ...((mark && mark.warnings) || [])]);
     if (spec.page === "fit") fitPlot(doc, null);
@@ -884,7 +831,6 @@
     }
     results(doc);
     downloads(doc);
-    equivalent(values, aux, doc);
     $("status").textContent = `done: ${(doc.results || []).length} record(s)`;
     if (spec.page === "fit") {
       const rows = await fitCurve(doc, values);
@@ -935,7 +881,7 @@
       if (u && active(f) && (main.values[f.name] || aux.values[f.name]) && u.selectedIndex > 0) link.append("u." + f.name, u.value);
     }
     history.replaceState(null, "", location.pathname + "?" + link.toString());
-    equivalent(main.values, aux.values, null);
+    equivalent(main.values, "");
     $("status").textContent = "computing...";
     let r;
     try {
@@ -955,9 +901,9 @@
         for (const [k, v] of p.entries()) fd.append(k, v);
         const file = $("f-data").files[0];
         if (file) fd.append("data", file);
-        r = await fetch("/api/v1/" + spec.command, { method: "POST", body: fd });
+        r = await fetch("/api/v1/" + spec.command, { method: "POST", body: fd, ...PYTHON });
       } else {
-        r = await fetch("/api/v1/" + spec.command + "?" + p.toString());
+        r = await fetch("/api/v1/" + spec.command + "?" + p.toString(), PYTHON);
       }
     } catch (e) {
       $("status").textContent = "";
