@@ -222,7 +222,7 @@ def push(
     conv = slide.converged & (rest.converged | ~np.isfinite(rest.a))
     _raise_unconverged(p, conv, Q_over_Eh2 is not None)
     vals = dict(
-        H_over_R=p.H,
+        **p.named(),
         H_arm_over_R=p.arm,
         tip_friction=p.mu,
         a_rest_over_R=rest.a,
@@ -239,11 +239,6 @@ def push(
         Q_over_Eh2=p.Q,
         state=state,
         d_over_a_rest=d_rest,
-        R_over_h2=p.rho,
-        h1_over_h2=p.r,
-        sigma0_over_E=p.s,
-        tau0_over_E=p.tau,
-        F_over_Eh2=p.F,
         residual_load=res,
         converged=conv,
     )
@@ -284,6 +279,11 @@ class _Inputs:
     shape: tuple[int, ...]
     slide_ends: tuple[NDArray, NDArray]
     rest_ends: dict[str, NDArray]
+
+    def named(self) -> dict[str, NDArray]:
+        """The inputs of :func:`push` but the push and the tip, under its parameters' names."""
+        return dict(R_over_h2=self.rho, h1_over_h2=self.r, sigma0_over_E=self.s,
+                    tau0_over_E=self.tau, F_over_Eh2=self.F, H_over_R=self.H)  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -585,8 +585,7 @@ def _raise_unconverged(p: _Inputs, conv, given: bool) -> None:
     """Raise :class:`ConvergenceError` naming the first point not solved to round-off."""
     if np.all(conv):
         return
-    named = dict(R_over_h2=p.rho, h1_over_h2=p.r, sigma0_over_E=p.s, tau0_over_E=p.tau,
-                 F_over_Eh2=p.F, H_over_R=p.H)  # fmt: skip
+    named = p.named()
     if given:
         named["Q_over_Eh2"] = p.Q
     if p.tip:
