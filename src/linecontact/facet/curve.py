@@ -18,7 +18,7 @@ from .. import domain as _domain
 from ..errors import NoEquilibriumError, ParameterError
 from ..normal.curve import NUM_MAX
 from ..results import SI, Result
-from .contact import check_geometry, facet_contact
+from .contact import INPUTS, check_geometry, facet_contact
 from .pulloff import FacetPullOff, _zero_width, facet_contact_for_load, facet_pull_off
 
 
@@ -49,12 +49,7 @@ class FacetLoadCurve(Result):
         The pull-off result.
     """
 
-    inputs: ClassVar[tuple[str, ...]] = (
-        "R_over_h",
-        "sigma0_over_E",
-        "sides",
-        "corner_radius_over_R",
-    )
+    inputs: ClassVar[tuple[str, ...]] = INPUTS
 
     branch: NDArray
     central_gap_over_h: NDArray = field(metadata=SI("central_gap", "h", "m"))
