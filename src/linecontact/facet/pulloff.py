@@ -9,7 +9,7 @@ by a scan of the whole branch in the contact half-width, refined around the lowe
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import ClassVar
 
 import numpy as np
@@ -25,7 +25,8 @@ from .._validation import (
     point_text,
 )
 from ..errors import ConvergenceError, NoEquilibriumError, ParameterError
-from ..results import SI, Result, as_result
+from ..normal.pulloff import _PullOffBase
+from ..results import as_result
 from . import _branch as _b
 from .contact import INPUTS, FacetContact, _flat, branch, checked, contact_result, regions
 
@@ -93,7 +94,7 @@ def _zero_width(f, r, rho, s):
 
 
 @dataclass(frozen=True)
-class FacetPullOff(Result):
+class FacetPullOff(_PullOffBase):
     r"""Pull-off of a faceted wire under load control: the lowest load of its branch.
 
     Attributes
@@ -127,13 +128,6 @@ class FacetPullOff(Result):
 
     inputs: ClassVar[tuple[str, ...]] = INPUTS
 
-    F_pulloff_over_Eh: NDArray | float = field(metadata=SI("pull_off_force", "Eh", "N/m"))
-    a_over_R_at_pulloff: NDArray | float = field(
-        metadata=SI("contact_half_width_at_pull_off", "R", "m")
-    )
-    c_over_R_at_pulloff: NDArray | float
-    mechanism: NDArray | str
-    F_zero_width_over_Eh: NDArray | float = field(metadata=SI("zero_width_force", "Eh", "N/m"))
     facet_half_width_over_R: NDArray | float
     F_strip_jkr_over_Eh: NDArray | float
     F_strength_over_Eh: NDArray | float
