@@ -20,7 +20,7 @@ from .._validation import (
     broadcast,
     scalar_or_array,
 )
-from ..results import SI, Result, as_output
+from ..results import SI, Result, as_result
 from ..sie import _in_chunks
 from .contact import _ustar
 
@@ -194,10 +194,4 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     d = _pulloff_arrays(rho, s, scalar)
     del d["us"], d["phi_min"]
     lam = _cf._maugis_parameter(rho, s)
-    vals = {k: as_output(v if scalar else np.asarray(v), scalar) for k, v in d.items()}
-    return PullOff(
-        R_over_h=as_output(rho, scalar),
-        sigma0_over_E=as_output(s, scalar),
-        maugis_parameter=as_output(lam, scalar),
-        **vals,
-    )
+    return as_result(PullOff, scalar, R_over_h=rho, sigma0_over_E=s, maugis_parameter=lam, **d)
