@@ -10,7 +10,7 @@ per quantity, with no Python object built per point.
 from __future__ import annotations
 
 from dataclasses import Field, dataclass, fields
-from typing import Any, ClassVar
+from typing import Any, ClassVar, TypeVar
 
 import numpy as np
 from numpy.typing import NDArray
@@ -112,3 +112,18 @@ class Result:
         cols = {k: v.tolist() for k, v in self.columns().items()}
         keys = list(cols)
         return [dict(zip(keys, row, strict=True)) for row in zip(*cols.values(), strict=True)]
+
+
+_R = TypeVar("_R", bound=Result)
+
+
+def as_result(
+    cls: type[_R], scalar: bool, shape: tuple[int, ...] | None = None, /, **values: Any
+) -> _R:
+    """``cls(**values)``, each value as returned to the caller (:func:`as_output`).
+
+    ``shape``: the shape of the points, that flat arrays are given back in (reshaped first).
+    """
+    if shape is not None:
+        values = {k: np.reshape(v, shape) for k, v in values.items()}
+    return cls(**{k: as_output(v, scalar) for k, v in values.items()})

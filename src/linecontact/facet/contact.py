@@ -15,7 +15,7 @@ from numpy.typing import ArrayLike, NDArray
 from .. import domain as _domain
 from .._validation import broadcast, first_point, point_text, scalar_or_array
 from ..errors import ConvergenceError, ParameterError
-from ..results import SI, Result, as_output
+from ..results import SI, Result, as_result
 from . import _branch as _b
 
 #: The finest rounded corner over the circumradius (below it, a corner is sharp: 0).
@@ -23,6 +23,9 @@ ROUND_CORNER_MIN = 1e-12
 
 #: The relative step of the finite difference that decides the stability (dF/da > 0).
 _STEP = 1e-4
+
+#: The inputs of the faceted wire's results (:attr:`linecontact.results.Result.inputs`).
+INPUTS = ("R_over_h", "sigma0_over_E", "sides", "corner_radius_over_R")
 
 
 @dataclass(frozen=True)
@@ -53,12 +56,7 @@ class FacetContact(Result):
         at vanishing widths: a free adhesive zone is not, one pinned at a corner is).
     """
 
-    inputs: ClassVar[tuple[str, ...]] = (
-        "R_over_h",
-        "sigma0_over_E",
-        "sides",
-        "corner_radius_over_R",
-    )
+    inputs: ClassVar[tuple[str, ...]] = INPUTS
 
     a_over_R: NDArray | float = field(metadata=SI("contact_half_width", "R", "m"))
     c_over_R: NDArray | float = field(metadata=SI("adhesive_zone_half_width", "R", "m"))
@@ -101,6 +99,49 @@ def check_geometry(sides: ArrayLike, corner_radius_over_R: ArrayLike) -> tuple[N
 
 def _flat(*arrays):
     return [np.ascontiguousarray(v, dtype=float).reshape(-1) for v in arrays]
+
+
+def checked(R_over_h, sigma0_over_E, sides, corner_radius_over_R, **first):
+    """The parameters checked and broadcast with ``first`` (checked arrays, by name, first).
+
+    Returns whether every input is a scalar, the points' shape and the flat float arrays,
+    ``first``'s then ``rho, s, n, r``.
+    """
+    rho = _domain.check("R_over_h", R_over_h)
+    s = _domain.check("sigma0_over_E", sigma0_over_E)
+    n, r = check_geometry(sides, corner_radius_over_R)
+    named = dict(first, R_over_h=rho, sigma0_over_E=s, sides=n, corner_radius_over_R=r)
+    scalar = scalar_or_array(*named.values())
+    arrays = broadcast(**named)
+    return scalar, arrays[0].shape, *_flat(*arrays)
+
+
+def regions(pinned, A, f):
+    """The region of each contact: ``"corner-pinned"``, ``"inside-facet"`` or ``"whole-facet"``."""
+    return np.where(pinned, "corner-pinned", np.where(A < f, "inside-facet", "whole-facet"))
+
+
+def contact_result(
+    shape, scalar, A, C, F, region, res, conv, stable, rho, s, n, r, f
+) -> FacetContact:
+    """The :class:`FacetContact` of flat arrays, in the points' ``shape``."""
+    return as_result(
+        FacetContact,
+        scalar,
+        shape,
+        a_over_R=A,
+        c_over_R=C,
+        F_over_Eh=F,
+        R_over_h=rho,
+        sigma0_over_E=s,
+        sides=n.astype(int),
+        corner_radius_over_R=r,
+        facet_half_width_over_R=f,
+        region=region,
+        residual_separation=res,
+        converged=conv,
+        stable=stable,
+    )
 
 
 def branch(A, f, r, rho, s, u0=None):
@@ -162,15 +203,9 @@ def facet_contact(
     True
     """
     A = _domain.check("a_over_R", a_over_R, "facet_a_over_R")
-    rho = _domain.check("R_over_h", R_over_h)
-    s = _domain.check("sigma0_over_E", sigma0_over_E)
-    n, r = check_geometry(sides, corner_radius_over_R)
-    scalar = scalar_or_array(A, rho, s, n, r)
-    A, rho, s, n, r = broadcast(
-        a_over_R=A, R_over_h=rho, sigma0_over_E=s, sides=n, corner_radius_over_R=r
+    scalar, shape, Af, rhof, sf, nf, rf = checked(
+        R_over_h, sigma0_over_E, sides, corner_radius_over_R, a_over_R=A
     )
-    shape = A.shape
-    Af, rhof, sf, nf, rf = _flat(A, rho, s, n, r)
     f = _b.facet_half_width(nf, rf)
     sharp_wide = (rf == 0) & (Af > f)
     if np.any(sharp_wide):
@@ -204,19 +239,5 @@ def facet_contact(
     # (unstable, as the round wire's narrowest states) and one pinned at a corner holds
     clear = np.abs(Fh - Fl) > 1e-12 * np.maximum(np.abs(F), 1e-300)
     stable = np.where(clear, Fh > Fl, pinned)
-    region = np.where(pinned, "corner-pinned", np.where(Af < f, "inside-facet", "whole-facet"))
-    vals = dict(
-        a_over_R=Af,
-        c_over_R=C,
-        F_over_Eh=F,
-        R_over_h=rhof,
-        sigma0_over_E=sf,
-        sides=nf.astype(int),
-        corner_radius_over_R=rf,
-        facet_half_width_over_R=f,
-        region=region,
-        residual_separation=res,
-        converged=conv,
-        stable=stable,
-    )
-    return FacetContact(**{k: as_output(v.reshape(shape), scalar) for k, v in vals.items()})
+    region = regions(pinned, Af, f)
+    return contact_result(shape, scalar, Af, C, F, region, res, conv, stable, rhof, sf, nf, rf, f)

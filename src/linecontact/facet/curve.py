@@ -16,14 +16,13 @@ from numpy.typing import NDArray
 
 from .. import domain as _domain
 from ..errors import NoEquilibriumError, ParameterError
-from ..normal.curve import NUM_MAX
-from ..results import SI, Result
-from .contact import check_geometry, facet_contact
+from ..normal.curve import NUM_MAX, _LoadCurveBase
+from .contact import INPUTS, check_geometry, facet_contact
 from .pulloff import FacetPullOff, _zero_width, facet_contact_for_load, facet_pull_off
 
 
 @dataclass(frozen=True)
-class FacetLoadCurve(Result):
+class FacetLoadCurve(_LoadCurveBase):
     """The load curve of a faceted wire: its contact branch, the pull-off marked.
 
     Arrays are ordered from the vanishing-width end (``a = 0``) to the largest width; their
@@ -49,18 +48,8 @@ class FacetLoadCurve(Result):
         The pull-off result.
     """
 
-    inputs: ClassVar[tuple[str, ...]] = (
-        "R_over_h",
-        "sigma0_over_E",
-        "sides",
-        "corner_radius_over_R",
-    )
+    inputs: ClassVar[tuple[str, ...]] = INPUTS
 
-    branch: NDArray
-    central_gap_over_h: NDArray = field(metadata=SI("central_gap", "h", "m"))
-    a_over_R: NDArray = field(metadata=SI("contact_half_width", "R", "m"))
-    c_over_R: NDArray = field(metadata=SI("adhesive_zone_half_width", "R", "m"))
-    F_over_Eh: NDArray = field(metadata=SI("load", "Eh", "N/m"))
     region: NDArray
     stable: NDArray
     turning_point: NDArray

@@ -9,7 +9,7 @@ by a scan of the whole branch in the contact half-width, refined around the lowe
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import ClassVar
 
 import numpy as np
@@ -23,12 +23,12 @@ from .._validation import (
     failure_policy,
     first_point,
     point_text,
-    scalar_or_array,
 )
 from ..errors import ConvergenceError, NoEquilibriumError, ParameterError
-from ..results import SI, Result, as_output
+from ..normal.pulloff import _PullOffBase
+from ..results import as_result
 from . import _branch as _b
-from .contact import FacetContact, _flat, branch, check_geometry
+from .contact import INPUTS, FacetContact, _flat, branch, checked, contact_result, regions
 
 #: The scan of the branch: widths below the facet's edge (over ``f``), just below it
 #: (``1 - f`` decades) and beyond it over the corner (``_grid``: 96 widths, log-spaced).
@@ -94,7 +94,7 @@ def _zero_width(f, r, rho, s):
 
 
 @dataclass(frozen=True)
-class FacetPullOff(Result):
+class FacetPullOff(_PullOffBase):
     r"""Pull-off of a faceted wire under load control: the lowest load of its branch.
 
     Attributes
@@ -126,20 +126,8 @@ class FacetPullOff(Result):
         The bracket of the minimum closed to ``1e-10`` of its width.
     """
 
-    inputs: ClassVar[tuple[str, ...]] = (
-        "R_over_h",
-        "sigma0_over_E",
-        "sides",
-        "corner_radius_over_R",
-    )
+    inputs: ClassVar[tuple[str, ...]] = INPUTS
 
-    F_pulloff_over_Eh: NDArray | float = field(metadata=SI("pull_off_force", "Eh", "N/m"))
-    a_over_R_at_pulloff: NDArray | float = field(
-        metadata=SI("contact_half_width_at_pull_off", "R", "m")
-    )
-    c_over_R_at_pulloff: NDArray | float
-    mechanism: NDArray | str
-    F_zero_width_over_Eh: NDArray | float = field(metadata=SI("zero_width_force", "Eh", "N/m"))
     facet_half_width_over_R: NDArray | float
     F_strip_jkr_over_Eh: NDArray | float
     F_strength_over_Eh: NDArray | float
@@ -149,15 +137,6 @@ class FacetPullOff(Result):
     sides: NDArray | int
     corner_radius_over_R: NDArray | float
     converged: NDArray | bool
-
-
-def _inputs(R_over_h, sigma0_over_E, sides, corner_radius_over_R):
-    rho = _domain.check("R_over_h", R_over_h)
-    s = _domain.check("sigma0_over_E", sigma0_over_E)
-    n, r = check_geometry(sides, corner_radius_over_R)
-    scalar = scalar_or_array(rho, s, n, r)
-    rho, s, n, r = broadcast(R_over_h=rho, sigma0_over_E=s, sides=n, corner_radius_over_R=r)
-    return scalar, rho.shape, *_flat(rho, s, n, r)
 
 
 def _minimum(f, r, rho, s):
@@ -248,7 +227,7 @@ def facet_pull_off(
     >>> hexagon.mechanism, round(hexagon.F_pulloff_over_Eh, 6)
     ('corner-pinned', -5.452786)
     """
-    scalar, shape, rho, s, n, r = _inputs(R_over_h, sigma0_over_E, sides, corner_radius_over_R)
+    scalar, shape, rho, s, n, r = checked(R_over_h, sigma0_over_E, sides, corner_radius_over_R)
     f = _b.facet_half_width(n, r)
     F, A, C, conv = _minimum(f, r, rho, s)
     C0, F0 = _zero_width(f, r, rho, s)
@@ -278,7 +257,10 @@ def facet_pull_off(
     # adhesive zone beyond it reaches where the next facet is (docs/faceted.md, Sec. 1)
     beyond = (r > 0) & (C - f > r * np.sin(2 * np.pi / n))
     jkr = _cf._strip_pull_off(f, rho, s)  # -sqrt(2 pi f E w) / (E h), w = sigma0 h
-    vals = dict(
+    return as_result(
+        FacetPullOff,
+        scalar,
+        shape,
         F_pulloff_over_Eh=F,
         a_over_R_at_pulloff=A,
         c_over_R_at_pulloff=C,
@@ -294,7 +276,6 @@ def facet_pull_off(
         corner_radius_over_R=r,
         converged=conv,
     )
-    return FacetPullOff(**{k: as_output(v.reshape(shape), scalar) for k, v in vals.items()})
 
 
 def facet_contact_for_load(
@@ -326,8 +307,9 @@ def facet_contact_for_load(
     """
     Ft = _domain.check("F_over_Eh", F_over_Eh)
     policy = failure_policy(on_failure)
-    scalar, shape, rho, s, n, r = _inputs(R_over_h, sigma0_over_E, sides, corner_radius_over_R)
+    scalar, shape, rho, s, n, r = checked(R_over_h, sigma0_over_E, sides, corner_radius_over_R)
     scalar = scalar and np.ndim(Ft) == 0
+    # (broadcast in two steps: a message names the parameters' common shape against the load)
     Ft, rho, s, n, r = broadcast(
         F_over_Eh=Ft,
         R_over_h=rho.reshape(shape),
@@ -396,20 +378,7 @@ def facet_contact_for_load(
     C = np.where(sharp_loaded, f, C)
     F = np.where(ok, Ft, F)  # the load asked for: the state carries it to the bisection's last bit
     pinned |= sharp_loaded
-    region = np.where(pinned, "corner-pinned", np.where(Aok < f, "inside-facet", "whole-facet"))
+    region = np.where(ok, regions(pinned, Aok, f), "no-equilibrium")
     nan = np.where(ok, 1.0, np.nan)
-    vals = dict(
-        a_over_R=A,
-        c_over_R=C * nan,
-        F_over_Eh=F * nan,
-        R_over_h=rho,
-        sigma0_over_E=s,
-        sides=n.astype(int),
-        corner_radius_over_R=r,
-        facet_half_width_over_R=f,
-        region=np.where(ok, region, "no-equilibrium"),
-        residual_separation=res * nan,
-        converged=conv & ok,
-        stable=ok,
-    )
-    return FacetContact(**{k: as_output(v.reshape(shape), scalar) for k, v in vals.items()})
+    C, F, res = C * nan, F * nan, res * nan
+    return contact_result(shape, scalar, A, C, F, region, res, conv & ok, ok, rho, s, n, r, f)

@@ -43,7 +43,7 @@ from .. import closed_forms as _cf
 from .. import domain as _domain
 from .._validation import broadcast, first_point, point_text, scalar_or_array
 from ..errors import NoEquilibriumError, ParameterError
-from ..results import Result, as_output
+from ..results import Result, as_result
 from . import _branch as _b
 from .contact import check_geometry
 from .pulloff import facet_pull_off
@@ -175,7 +175,9 @@ def facet_tipping(
     M = tipping_moment(F, f, Fs)  # over E h R
     T_tip = M / H
     T_slide = 2 * f * rho * tau
-    vals = dict(
+    return as_result(
+        FacetTipping,
+        scalar,
         T_tip_over_Eh=T_tip,
         T_slide_over_Eh=T_slide,
         first_motion=np.where(T_tip < T_slide, "tip", "slide"),
@@ -190,4 +192,3 @@ def facet_tipping(
         sigma0_over_E=s,
         sides=n.astype(int),
     )
-    return FacetTipping(**{k: as_output(np.asarray(v), scalar) for k, v in vals.items()})

@@ -20,7 +20,22 @@ NUM_MAX = 10**7
 
 
 @dataclass(frozen=True)
-class LoadCurve(Result):
+class _LoadCurveBase(Result):
+    """The fields that open a load curve: each state's branch, gap, widths and load.
+
+    Those of :class:`LoadCurve` and of the faceted wire's
+    :class:`~linecontact.facet.FacetLoadCurve` (the SI layer writes both alike).
+    """
+
+    branch: NDArray
+    central_gap_over_h: NDArray = field(metadata=SI("central_gap", "h", "m"))
+    a_over_R: NDArray = field(metadata=SI("contact_half_width", "R", "m"))
+    c_over_R: NDArray = field(metadata=SI("adhesive_zone_half_width", "R", "m"))
+    F_over_Eh: NDArray = field(metadata=SI("load", "Eh", "N/m"))
+
+
+@dataclass(frozen=True)
+class LoadCurve(_LoadCurveBase):
     """The whole load curve: non-contact branch then the contact branch.
 
     Arrays are ordered from the largest central gap (:math:`g_0 = h`, :math:`F = 0`) through
@@ -42,11 +57,6 @@ class LoadCurve(Result):
 
     inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E")
 
-    branch: NDArray
-    central_gap_over_h: NDArray = field(metadata=SI("central_gap", "h", "m"))
-    a_over_R: NDArray = field(metadata=SI("contact_half_width", "R", "m"))
-    c_over_R: NDArray = field(metadata=SI("adhesive_zone_half_width", "R", "m"))
-    F_over_Eh: NDArray = field(metadata=SI("load", "Eh", "N/m"))
     stable: NDArray
     turning_point: NDArray
     R_over_h: float

@@ -25,7 +25,7 @@ from .._validation import (
     scalar_or_array,
 )
 from ..errors import ConvergenceError, NoEquilibriumError
-from ..results import as_output
+from ..results import as_result
 from ..sie import _in_chunks
 from .contact import NormalContact, _closed_form_from_u
 from .pulloff import _pulloff_arrays, pull_off
@@ -250,7 +250,10 @@ def _contact_for_load(F, rho, s, branch: str, policy: str, scalar: bool, d=None)
     _cf._warn_wide(np.where(bad, np.nan, A))
     z: NDArray | float = 0.0 if scalar else np.zeros(F.shape)
     nan = np.where(bad, np.nan, 1.0)
-    vals = dict(
+    return as_result(
+        NormalContact,
+        scalar,
+        method="closed-form",
         a_over_R=A * nan,
         c_over_R=C * nan,
         F_over_Eh=F_asked,  # the load asked for; its residual is the error_estimate
@@ -264,8 +267,6 @@ def _contact_for_load(F, rho, s, branch: str, policy: str, scalar: bool, d=None)
         stable=stable & ~bad,
         state=np.where(bad, "no-equilibrium", "contact"),
     )
-    vals = {k: as_output(v if scalar else np.asarray(v), scalar) for k, v in vals.items()}
-    return NormalContact(method="closed-form", **vals)
 
 
 @dataclass(frozen=True)

@@ -15,7 +15,7 @@ from .._validation import (
     check_array,
     scalar_or_array,
 )
-from ..results import Result, as_output
+from ..results import Result, as_result
 
 
 @dataclass(frozen=True)
@@ -73,7 +73,9 @@ def non_contact(
     den = k + np.hypot(k, np.sqrt(rhs))
     C = rhs / np.where(rhs > 0, den, 1.0)
     F = -2 * s * rho * C
-    vals = dict(
+    return as_result(
+        NonContact,
+        scalar,
         central_gap_over_h=g,
         c_over_R=C,
         F_over_Eh=F,
@@ -81,4 +83,3 @@ def non_contact(
         sigma0_over_E=s,
         stable=np.zeros(g.shape, bool),
     )
-    return NonContact(**{k_: as_output(v, scalar) for k_, v in vals.items()})

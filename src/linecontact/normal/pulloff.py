@@ -20,7 +20,7 @@ from .._validation import (
     broadcast,
     scalar_or_array,
 )
-from ..results import SI, Result, as_output
+from ..results import SI, Result, as_result
 from ..sie import _in_chunks
 from .contact import _ustar
 
@@ -39,7 +39,24 @@ ZERO_WIDTH_LOAD_RTOL = 1e-2
 
 
 @dataclass(frozen=True)
-class PullOff(Result):
+class _PullOffBase(Result):
+    """The fields that open a pull-off: its force, the state it lets go from, and how.
+
+    Those of :class:`PullOff` and of the faceted wire's
+    :class:`~linecontact.facet.FacetPullOff`, with the load at vanishing width.
+    """
+
+    F_pulloff_over_Eh: NDArray | float = field(metadata=SI("pull_off_force", "Eh", "N/m"))
+    a_over_R_at_pulloff: NDArray | float = field(
+        metadata=SI("contact_half_width_at_pull_off", "R", "m")
+    )
+    c_over_R_at_pulloff: NDArray | float
+    mechanism: NDArray | str
+    F_zero_width_over_Eh: NDArray | float = field(metadata=SI("zero_width_force", "Eh", "N/m"))
+
+
+@dataclass(frozen=True)
+class PullOff(_PullOffBase):
     """Pull-off under load control: the global minimum of the load on the contact branch.
 
     Attributes
@@ -66,13 +83,6 @@ class PullOff(Result):
 
     inputs: ClassVar[tuple[str, ...]] = ("R_over_h", "sigma0_over_E")
 
-    F_pulloff_over_Eh: NDArray | float = field(metadata=SI("pull_off_force", "Eh", "N/m"))
-    a_over_R_at_pulloff: NDArray | float = field(
-        metadata=SI("contact_half_width_at_pull_off", "R", "m")
-    )
-    c_over_R_at_pulloff: NDArray | float
-    mechanism: NDArray | str
-    F_zero_width_over_Eh: NDArray | float = field(metadata=SI("zero_width_force", "Eh", "N/m"))
     F_minimum_over_Eh: NDArray | float
     a_over_R_at_minimum: NDArray | float
     R_over_h: NDArray | float
@@ -184,10 +194,4 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     d = _pulloff_arrays(rho, s, scalar)
     del d["us"], d["phi_min"]
     lam = _cf._maugis_parameter(rho, s)
-    vals = {k: as_output(v if scalar else np.asarray(v), scalar) for k, v in d.items()}
-    return PullOff(
-        R_over_h=as_output(rho, scalar),
-        sigma0_over_E=as_output(s, scalar),
-        maugis_parameter=as_output(lam, scalar),
-        **vals,
-    )
+    return as_result(PullOff, scalar, R_over_h=rho, sigma0_over_E=s, maugis_parameter=lam, **d)
