@@ -66,6 +66,8 @@ BAND_SEED = 0
 _N_CURVE = 200
 _MARGINS = Margins(left=0.95, right=3.3)
 _FRICTION_MARGINS = Margins(left=1.05, right=2.9)
+#: The data points of both figures: black-edged circles, black error bars with caps.
+_DATA_KW = dict(ls="none", marker="o", mec="k", ecolor="k", capsize=3)
 # the bounds of the fit's parameters (linecontact.inverse.fit_pull_off): the band's samples
 # are kept inside them
 _LN_W = (math.log(1e-8), math.log(1e3))
@@ -280,15 +282,11 @@ def _adhesion_figure(fit: AdhesionFit, run: Run, units: tuple[str, str] = ("m", 
         R * kx,
         F * ky,
         yerr=np.where(have_sd, sd, 0.0) * ky if have_sd.any() else None,
-        ls="none",
-        marker="o",
+        **_DATA_KW,
         ms=6,
         mfc="white",
-        mec="k",
         mew=1.3,
-        ecolor="k",
         elinewidth=1.1,
-        capsize=3,
         zorder=5,
         label="data" + (r" $\pm$ sd" if have_sd.any() else ""),
     )
@@ -503,14 +501,10 @@ def _friction_figure(run: Run, F, f, tau, lo, hi, mods, fsd, combined=None):
         F,
         tau * mpa,
         yerr=np.where(np.isfinite(yerr), np.clip(yerr, 0, None), 0.0),
-        ls="none",
-        marker="o",
+        **_DATA_KW,
         ms=6,
         mfc="k",
-        mec="k",
-        ecolor="k",
         elinewidth=1.1,
-        capsize=3,
         zorder=5,
         label="Maugis–Dugdale, each point\n(95 % interval)",
     )
@@ -519,13 +513,9 @@ def _friction_figure(run: Run, F, f, tau, lo, hi, mods, fsd, combined=None):
         F,
         f,
         yerr=None if fsd is None else np.where(np.isfinite(fsd), fsd, 0.0),
-        ls="none",
-        marker="o",
+        **_DATA_KW,
         ms=5,
         mfc="white",
-        mec="k",
-        ecolor="k",
-        capsize=3,
         label="measured" + ("" if fsd is None else r" $\pm$ sd"),
     )
     ax2.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8.5, frameon=False)

@@ -4,10 +4,14 @@ from __future__ import annotations
 
 import numpy as np
 
+from .. import _numerics as _num
+from .. import closed_forms as _cf
 from .. import domain as _domain
 from .._validation import (
+    broadcast,
     check_solver_options,
     failure_policy,
+    scalar_or_array,
 )
 
 
@@ -41,3 +45,26 @@ def _check_state_inputs(
     )
     _check_method(method, n, tol)
     return rho, r, s, tau, failure_policy(on_failure)
+
+
+def _broadcast_state(first_name: str, first, rho, r, s, tau):
+    """The checked state inputs broadcast together, with ``kappa`` checked.
+
+    ``first`` is the checked first argument of :func:`~linecontact.sliding.sliding_contact`
+    or :func:`~linecontact.sliding.sliding_contact_for_load` (named ``first_name`` when the
+    shapes do not broadcast), the rest as :func:`_check_state_inputs` returns them; returns
+    ``(scalar, first, rho, r, s, tau)``, ``scalar`` when every input is a scalar.
+    """
+    scalar = scalar_or_array(first, rho, r, s, tau)
+    first, rho, r, s, tau = broadcast(
+        **{first_name: first}, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau
+    )
+    _cf._check_kappa(rho, s, "R_over_h2")
+    return scalar, first, rho, r, s, tau
+
+
+def _flat_points(scalar: bool, *values):
+    """The broadcast inputs as NumPy scalars (``scalar``: the scalar fast path) or flat floats."""
+    if scalar:
+        return _num._scalars(*values)
+    return tuple(np.ascontiguousarray(v, dtype=float).reshape(-1) for v in values)

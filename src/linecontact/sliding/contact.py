@@ -19,16 +19,14 @@ from .. import domain as _domain
 from .._docs import shared_docs
 from .._validation import (
     FailurePolicy,
-    broadcast,
     first_point,
     point_text,
     positions,
-    scalar_or_array,
 )
 from ..errors import ConvergenceError
 from ..results import SI, Result, as_output
 from ..sie import BoundedSolution, BoundedSolver, _in_chunks
-from ._checks import _check_state_inputs
+from ._checks import _broadcast_state, _check_state_inputs, _flat_points
 from .closed_form import _cf_coefficients, _cf_outputs, _closed_form
 from .collocation import _SIZES, _collocation
 from .pulloff import _pulloff_flat
@@ -435,19 +433,11 @@ def sliding_contact(
     rho, r, s, tau, policy = _check_state_inputs(
         R_over_h2, h1_over_h2, sigma0_over_E, tau0_over_E, method, n, tol, on_failure
     )
-    scalar = scalar_or_array(A, rho, r, s, tau)
-    A, rho, r, s, tau = broadcast(
-        a_over_R=A, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau
-    )
-    _cf._check_kappa(rho, s, "R_over_h2")
+    scalar, A, rho, r, s, tau = _broadcast_state("a_over_R", A, rho, r, s, tau)
     _cf._warn_wide(A)
     shape = A.shape
-    if scalar and method == "closed-form":  # the same kernels on NumPy scalars
-        A, rho, r, s, tau = _num._scalars(A, rho, r, s, tau)
-    else:
-        A, rho, r, s, tau = (
-            np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (A, rho, r, s, tau)
-        )
+    # the closed form runs the same kernels on NumPy scalars
+    A, rho, r, s, tau = _flat_points(scalar and method == "closed-form", A, rho, r, s, tau)
     # a contact half-width far outside the solvers' range overflows on the way; _pack's
     # convergence check reports it
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):

@@ -16,14 +16,12 @@ from .. import closed_forms as _cf
 from .. import domain as _domain
 from .._validation import (
     FailurePolicy,
-    broadcast,
     first_point,
     point_text,
-    scalar_or_array,
 )
 from ..errors import NoEquilibriumError
 from ..sie import _in_chunks
-from ._checks import _check_state_inputs
+from ._checks import _broadcast_state, _check_state_inputs, _flat_points
 from .contact import SlidingContact, _pack, _solve_closed_form, _solve_split
 from .pulloff import _LAB_DEEP, _phi_at, _pulloff_flat
 
@@ -249,18 +247,10 @@ def sliding_contact_for_load(
     rho, r, s, tau, policy = _check_state_inputs(
         R_over_h2, h1_over_h2, sigma0_over_E, tau0_over_E, method, n, tol, on_failure
     )
-    scalar = scalar_or_array(F, rho, r, s, tau)
-    F, rho, r, s, tau = broadcast(
-        F_over_Eh2=F, R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s, tau0_over_E=tau
-    )
-    _cf._check_kappa(rho, s, "R_over_h2")
+    scalar, F, rho, r, s, tau = _broadcast_state("F_over_Eh2", F, rho, r, s, tau)
     shape = F.shape
-    if scalar:  # the search runs on NumPy scalars (see _numerics._where)
-        F, rho, r, s, tau = _num._scalars(F, rho, r, s, tau)
-    else:
-        F, rho, r, s, tau = (
-            np.ascontiguousarray(v, dtype=float).reshape(-1) for v in (F, rho, r, s, tau)
-        )
+    # with scalar inputs the search runs on NumPy scalars (see _numerics._where)
+    F, rho, r, s, tau = _flat_points(scalar, F, rho, r, s, tau)
     return _sliding_for_load(F, rho, r, s, tau, method, n, tol, policy, shape, scalar)
 
 

@@ -25,7 +25,7 @@ from ..errors import ConvergenceError
 from ..normal import ZERO_WIDTH_LOAD_RTOL
 from ..results import Result, as_output
 from ..sie import _in_chunks
-from ._checks import _check_common
+from ._checks import _check_common, _flat_points
 from .closed_form import _cf_load, _closed_form, _newton2
 
 #: As :data:`linecontact.normal.SNAP_OFF_MIN_WIDTH_OVER_H`: the pull-off is a snap-off when
@@ -306,10 +306,8 @@ def sliding_pull_off(
     rho, r, s = broadcast(R_over_h2=rho, h1_over_h2=r, sigma0_over_E=s)
     _cf._check_kappa(rho, s, "R_over_h2")
     shape = rho.shape
-    if scalar:  # the same kernels on NumPy scalars (the grid is a batch of 41 either way)
-        rho, r, s = _num._scalars(rho, r, s)
-    else:
-        rho, r, s = (np.ascontiguousarray(v, float).reshape(-1) for v in (rho, r, s))
+    # with scalar inputs the same kernels on NumPy scalars (the grid is a batch of 41 either way)
+    rho, r, s = _flat_points(scalar, rho, r, s)
     kap = _cf._kappa(rho, s)
     where = _num._where
     # h1/h2 far from 1 (1e-300, 1e12) overflows on the way to a finite answer; a result that
