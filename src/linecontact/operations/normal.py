@@ -63,9 +63,7 @@ def _lj_parameters(args, rho: float, s: float, cyl: Cylinder | None) -> dict[str
 
 
 def _cmd_normal(args: Inputs) -> Table:
-    rho, s, cyl = groups(args)
-    g = shape(args, cyl)
-    _not_for_polygon(args, g)
+    rho, s, cyl, g = _wire(args)
     A = half_widths(args, cyl, "F_over_Eh")
     if g is not None:
         return _cmd_normal_facet(args, A, rho, s, cyl, g)
@@ -343,20 +341,24 @@ PULL_OFF_KEYS = {
 PULL_OFF_TOTALS = {"pull_off_force": "F_pulloff_total_N"}
 
 
-def _not_for_polygon(args: Inputs, g: dict[str, Any] | None) -> None:
-    """Refuse the Lennard-Jones law for a polygon: its problems are written for Dugdale's."""
+def _wire(args: Inputs) -> tuple[float, float, Cylinder | None, dict[str, Any] | None]:
+    """``(R/h, sigma0/E, Cylinder or None, a polygon's groups or None)`` of a normal problem.
+
+    The Lennard-Jones law is refused for a polygon: its problems are written for Dugdale's.
+    """
+    rho, s, cyl = groups(args)
+    g = shape(args, cyl)
     if g is not None and args.law == "lennard-jones":
         raise ParameterError(
             "--law",
             f"--law lennard-jones is not written for a {args.cross_section} wire: a polygon's "
             "contact and pull-off are the Dugdale law's (--law dugdale)",
         )
+    return rho, s, cyl, g
 
 
 def _cmd_pulloff(args: Inputs) -> Table:
-    rho, s, cyl = groups(args)
-    g = shape(args, cyl)
-    _not_for_polygon(args, g)
+    rho, s, cyl, g = _wire(args)
     if args.law == "lennard-jones":
         return _cmd_pulloff_lj(args, rho, s, cyl)
     si = None if cyl is None else made(args, "result", cyl.pull_off)
@@ -503,9 +505,7 @@ def _curve_table(
 
 
 def _cmd_curve(args: Inputs) -> Table:
-    rho, s, cyl = groups(args)
-    g = shape(args, cyl)
-    _not_for_polygon(args, g)
+    rho, s, cyl, g = _wire(args)
     if args.law == "lennard-jones":
         return _cmd_curve_lj(args, rho, s, cyl)
     if args.F_max_over_Eh is not None or args.F_max is not None:
