@@ -39,6 +39,8 @@ DOMAIN: dict[str, tuple[float, bool, float, bool]] = {
     "facet_a_over_R": (1e-12, True, 10.0, True),
     "corner_radius_over_R": (0.0, True, 1.0, True),
     "push_H_over_R": (0.0, False, 2.0, True),  # a push's height: up to the wire's top
+    # the sphere (linecontact.sphere): its force [N] over E h R
+    "F_over_EhR": (-1e12, True, 1e12, True),
     "central_gap_over_z0": (0.01, True, 1e6, True),  # the Lennard-Jones law on a rigid cylinder
     # w sqrt(R/z0)/(E z0), the group of the Lennard-Jones law: its curves, states and contacts
     # are solved self-consistently up to lennard_jones._limit.MU_SELF_CONSISTENT; its pull-off

@@ -1,0 +1,31 @@
+r"""The adhesive sphere: an AFM tip or a colloidal probe on a flat (``docs/sphere.md``).
+
+The Maugis--Dugdale sphere (Maugis 1992), vectorised over parameter points like the line
+contact, in the wire's input groups: ``R/h`` and ``sigma0/E`` (Hertz at ``sigma0 = 0``, JKR
+and DMT its limits of the Maugis parameter :math:`\lambda`). Lengths over ``R`` (the contact
+radius ``a/R``), the approach over ``h``, the force [N] over ``E h R``; Maugis' unit
+:math:`\pi w R` on each result as ``F_over_piwR``.
+
+- :func:`sphere_contact` -- the states at given contact radii;
+- :func:`sphere_contact_for_load` -- the stable contact under a load;
+- :func:`sphere_pull_off` -- the pull-off under load or displacement control;
+- :func:`sphere_load_curve` -- the curve through both branches, the pull-offs marked.
+
+The closed forms of its limits are in :mod:`linecontact.closed_forms.sphere`.
+"""
+
+from __future__ import annotations
+
+from .contact import SphereContact, sphere_contact
+from .curve import SphereLoadCurve, sphere_load_curve
+from .pulloff import SpherePullOff, sphere_contact_for_load, sphere_pull_off
+
+__all__ = [
+    "SphereContact",
+    "SphereLoadCurve",
+    "SpherePullOff",
+    "sphere_contact",
+    "sphere_contact_for_load",
+    "sphere_load_curve",
+    "sphere_pull_off",
+]
