@@ -37,7 +37,7 @@ _TERMS = 15
 
 
 def _t_minus_atan(t: NDArray) -> NDArray:
-    """:math:`t - \\arctan t` without cancellation (``t >= 0``)."""
+    r""":math:`t - \arctan t` without cancellation (``t >= 0``)."""
     small = t < _SERIES
     ts = np.where(small, t, 0.0)
     t2 = ts * ts
@@ -73,10 +73,10 @@ def _brackets(alpha: NDArray, q: NDArray) -> tuple[NDArray, NDArray, NDArray, ND
 
 
 def zone(alpha: NDArray, rho: NDArray, s: NDArray) -> tuple[NDArray, NDArray]:
-    """``q`` of the gap condition at each point, and its residual (log of the left + 1).
+    r"""``q`` of the gap condition at each point, and its residual (log of the left + 1).
 
-    Newton's method on :math:`L(v) = \\ln((\\rho/\\pi) A_1 + (4 s\\rho/\\pi) A_2)`,
-    :math:`v = \\ln q`: close to a log-sum of powers of ``q``, convex and increasing, so
+    Newton's method on :math:`L(v) = \ln((\rho/\pi) A_1 + (4 s\rho/\pi) A_2)`,
+    :math:`v = \ln q`: close to a log-sum of powers of ``q``, convex and increasing, so
     that its steps converge from anywhere in a few; a bracket that bisection keeps guards
     them. A point stops one step after its step falls below 1e-12 (quadratic convergence:
     then to rounding).
@@ -137,18 +137,22 @@ def slopes(alpha, rho, s, q) -> tuple[NDArray, NDArray]:
     k1, k2 = rho / np.pi, 4 * s * rho / np.pi
     with np.errstate(divide="ignore", invalid="ignore"):
         u = 2 * theta
-        # d A1/d alpha = -alpha (2 theta - sin 2 theta); d A2/d alpha = -(alpha/x) q^2/(x (x + alpha))
+        # dA1/d alpha = -alpha (2 theta - sin 2 theta), dA2/d alpha = -(alpha/x) q^2/(x (x + alpha))
         u_minus_sin = np.where(u < 0.5, _u_minus_sin(u), u - np.sin(u))
         Ha = k1 * (-alpha * u_minus_sin) + k2 * (-(alpha / x) * q * q / (x * (x + alpha)))
         Hq = k1 * dA1 + k2 * dA2
         dq = -Ha / Hq
-    dF = 4 * alpha * alpha * rho - 4 * s * rho * alpha * theta - 4 * s * rho * (alpha + q * theta) * dq
+    dF = (
+        4 * alpha * alpha * rho
+        - 4 * s * rho * alpha * theta
+        - 4 * s * rho * (alpha + q * theta) * dq
+    )
     dD = 2 * alpha * rho - 2 * s * rho * dq
     return dF, dD
 
 
 def _u_minus_sin(u: NDArray) -> NDArray:
-    """:math:`u - \\sin u` by its series (``u < 1/2``: 10 terms)."""
+    r""":math:`u - \sin u` by its series (``u < 1/2``: 10 terms)."""
     u2 = u * u
     acc = np.zeros_like(u)
     fact = [6.0]

@@ -82,7 +82,9 @@ def checked(**values: ArrayLike) -> tuple[bool, list[NDArray]]:
     """The inputs checked against the domain and broadcast: ``(scalar, arrays)``."""
     arrays = [_domain.check(name, v) for name, v in values.items()]
     scalar = scalar_or_array(*arrays)
-    return scalar, [np.asarray(v, float) for v in broadcast(**dict(zip(values, arrays, strict=True)))]
+    return scalar, [
+        np.asarray(v, float) for v in broadcast(**dict(zip(values, arrays, strict=True)))
+    ]
 
 
 def states(alpha: NDArray, rho: NDArray, s: NDArray) -> dict[str, NDArray]:

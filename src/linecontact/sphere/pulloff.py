@@ -26,10 +26,10 @@ from . import _branch as _b
 from .contact import INPUTS, SphereContact, checked, states
 
 #: Contact radii in Maugis' unit :math:`(\pi w R^2/K)^{1/3}` where a minimum is looked for.
-GRID = np.geomspace(1e-7, 20.0, 281)
+GRID = np.geomspace(1e-7, 20.0, 121)
 
-#: Bisection steps on the logarithm of the radius (to rounding from the grid's spacing).
-_STEPS = 64
+#: The most steps that refine a minimum on the logarithm of the radius (to rounding).
+_STEPS = 100
 
 Control = Literal["load", "displacement"]
 
@@ -65,9 +65,7 @@ class SpherePullOff(Result):
     c_over_R_at_pulloff: NDArray | float = field(
         metadata=SI("adhesive_zone_radius_at_pull_off", "R", "m")
     )
-    delta_over_h_at_pulloff: NDArray | float = field(
-        metadata=SI("approach_at_pull_off", "h", "m")
-    )
+    delta_over_h_at_pulloff: NDArray | float = field(metadata=SI("approach_at_pull_off", "h", "m"))
     mechanism: NDArray | str
     control: str
     R_over_h: NDArray | float
@@ -85,8 +83,8 @@ class SpherePullOff(Result):
             )
 
 
-def _unit(rho: NDArray, s: NDArray) -> NDArray:
-    """Maugis' unit of length over ``R``: :math:`(3\\pi s/(4\\rho))^{1/3}`."""
+def _unit(rho: NDArray | float, s: NDArray | float) -> NDArray:
+    r"""Maugis' unit of length over ``R``: :math:`(3\pi s/(4\rho))^{1/3}`."""
     return np.cbrt(3 * np.pi * s / (4 * rho))
 
 
@@ -96,8 +94,9 @@ def _slope(alpha, rho, s, of: int) -> NDArray:
 
 
 def _minimum(rho: NDArray, s: NDArray, of: int) -> tuple[NDArray, NDArray]:
-    """The radius of the lowest interior minimum of the load (``of=0``) or the approach
-    (``of=1``) at each point, and its value; NaN where there is none.
+    """The lowest interior minimum of the load (``of=0``) or the approach (``of=1``).
+
+    At each point its radius and its value; NaN where the branch has none.
     """
     n = rho.size
     alpha = GRID[None, :] * _unit(rho, s)[:, None]
@@ -108,12 +107,25 @@ def _minimum(rho: NDArray, s: NDArray, of: int) -> tuple[NDArray, NDArray]:
     turns = (slope[:, :-1] < 0) & (slope[:, 1:] >= 0)
     point, k = np.nonzero(turns)
     lo, hi = np.log(alpha[point, k]), np.log(alpha[point, k + 1])
+    f_lo, f_hi = slope[point, k], slope[point, k + 1]
     r, t = rho[point], s[point]
+    # the Illinois method on the slope's sign change (false position, the stale end's value
+    # halved): superlinear, and the bracket always holds the root
+    side = np.zeros(lo.shape, int)
     for _ in range(_STEPS):
-        mid = 0.5 * (lo + hi)
-        down = _slope(np.exp(mid), r, t, of) < 0
+        with np.errstate(divide="ignore", invalid="ignore"):
+            mid = (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
+        mid = np.where(np.isfinite(mid) & (mid > lo) & (mid < hi), mid, 0.5 * (lo + hi))
+        f = _slope(np.exp(mid), r, t, of)
+        down = f < 0
+        f_lo_new = np.where(down, f, np.where(side == 1, 0.5 * f_lo, f_lo))
+        f_hi_new = np.where(~down, f, np.where(side == -1, 0.5 * f_hi, f_hi))
+        side = np.where(down, -1, 1)
         lo, hi = np.where(down, mid, lo), np.where(down, hi, mid)
-    a = np.exp(0.5 * (lo + hi))
+        f_lo, f_hi = f_lo_new, f_hi_new
+        if np.all(hi - lo <= 4e-16 * np.maximum(1.0, np.abs(lo))):
+            break
+    a = np.exp(np.where(np.abs(f_lo) < np.abs(f_hi), lo, hi))
     value = _b.branch(a, r, t)[1 + of]
     best_a = np.full(n, np.nan)
     best_v = np.full(n, np.inf)
