@@ -50,6 +50,7 @@ FLOORS = {
         "linecontact.laws",
         "linecontact.adhesion_map",
         "linecontact.facet",
+        "linecontact.sphere",
     ],
     "si": [
         "linecontact.cylinder",

@@ -20,7 +20,12 @@ length over ``E h``, stresses over ``E``; compressive load positive):
   wire (a regular polygon with rounded corners) on its facet (:mod:`linecontact.facet`); in SI
   units the :class:`Cylinder` with ``cross_section=Polygon(sides, corner_radius)``
   (:mod:`linecontact.geometry`: :class:`Round`, :class:`Polygon`);
-- :mod:`linecontact.closed_forms` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14);
+- :func:`sphere_contact`, :func:`sphere_contact_for_load`, :func:`sphere_pull_off`,
+  :func:`sphere_load_curve` -- the Maugis--Dugdale sphere (an AFM tip, a colloidal probe:
+  :mod:`linecontact.sphere`, force over ``E h R``); in SI units the :class:`Sphere` (forces
+  in N), a :class:`Body` as the :class:`Cylinder` is;
+- :mod:`linecontact.closed_forms` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14; the
+  sphere's Hertz, JKR, DMT);
 - :mod:`linecontact.sie` -- the Gauss--Chebyshev singular-integral core;
 - :func:`fit_pull_off`, :func:`work_of_adhesion_from_pull_off`,
   :func:`shear_strength_from_friction`, :func:`propagate` -- from measurements to properties
@@ -44,7 +49,7 @@ with _imports_interruptible():
     from . import _moved, laws
     from ._version import __version__
     from .closed_forms import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
-    from .cylinder import Cylinder
+    from .cylinder import Body, Cylinder, Sphere
     from .errors import ConvergenceError, CouplingWarning, ModelValidityWarning, NoEquilibriumError
     from .facet import (
         FacetContact,
@@ -93,6 +98,15 @@ with _imports_interruptible():
         sliding_contact_for_load,
         sliding_pull_off,
     )
+    from .sphere import (
+        SphereContact,
+        SphereLoadCurve,
+        SpherePullOff,
+        sphere_contact,
+        sphere_contact_for_load,
+        sphere_load_curve,
+        sphere_pull_off,
+    )
     from .sweeps import open_sweep, sweep
     from .tangential import (
         cyclic_loss,
@@ -106,6 +120,15 @@ with _imports_interruptible():
     )
 
 __all__ = [
+    "Body",
+    "Sphere",
+    "SphereContact",
+    "SphereLoadCurve",
+    "SpherePullOff",
+    "sphere_contact",
+    "sphere_contact_for_load",
+    "sphere_load_curve",
+    "sphere_pull_off",
     "ConvergenceError",
     "Material",
     "CouplingWarning",

@@ -38,6 +38,8 @@ import math
 import numpy as np
 from numpy.typing import ArrayLike
 
+from ..materials import MAUGIS_STRENGTH
+
 __all__ = [
     "LAMBDA_OVER_TABOR",
     "sphere_dmt_load",
@@ -47,9 +49,9 @@ __all__ = [
     "sphere_maugis_parameter",
 ]
 
-#: lambda over Tabor's mu for the Dugdale step matched to the Lennard-Jones peak tension:
-#: (32/(9 sqrt 3)) (9/(16 pi))^(1/3).
-LAMBDA_OVER_TABOR = 32 / (9 * math.sqrt(3)) * (9 / (16 * math.pi)) ** (1 / 3)
+#: lambda over Tabor's mu for the Dugdale step matched to the Lennard-Jones peak tension
+#: (``MAUGIS_STRENGTH = 16/(9 sqrt 3)``): 2 MAUGIS_STRENGTH (9/(16 pi))^(1/3).
+LAMBDA_OVER_TABOR = 2 * MAUGIS_STRENGTH * (9 / (16 * math.pi)) ** (1 / 3)
 
 #: The pull-offs over pi w R: JKR under load and displacement control, DMT.
 JKR_LOAD_CONTROL = -1.5
@@ -94,13 +96,21 @@ def sphere_jkr_load(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: Arr
 
 
 def _jkr(alpha, rho, s):
-    return _hertz(alpha, rho) - np.sqrt(8 * np.pi * s * rho * alpha**3)
+    return _hertz(alpha, rho) - _jkr_adhesive(alpha, rho, s)
+
+
+def _jkr_adhesive(alpha, rho, s):
+    r"""JKR's adhesive load :math:`\sqrt{8\pi w E a^3}` over ``E h R``.
+
+    Its approach's term, :math:`\sqrt{2\pi w a/E}`, is it over ``2 E a``.
+    """
+    return np.sqrt(8 * np.pi * s * rho * alpha**3)
 
 
 def sphere_jkr_approach(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike):
     """JKR: the approach over ``h`` of a contact radius ``a/R``."""
     alpha, rho, s = (np.asarray(v, float) for v in (a_over_R, R_over_h, sigma0_over_E))
-    return rho * alpha**2 - np.sqrt(2 * np.pi * s * rho * alpha)
+    return rho * alpha**2 - _jkr_adhesive(alpha, rho, s) / (2 * alpha)
 
 
 def sphere_dmt_load(a_over_R: ArrayLike, R_over_h: ArrayLike, sigma0_over_E: ArrayLike):

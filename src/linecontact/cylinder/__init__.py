@@ -7,7 +7,9 @@ paper's groups, call the nondimensional solvers (:mod:`linecontact.normal`,
 [Pa], forces per unit length of cylinder [N/m], work of adhesion [J/m^2]. Materials and
 adhesion conventions: :mod:`linecontact.materials`.
 
-The package's modules: ``_cylinder.py`` (:class:`Cylinder`: its fields, factories, the
+The package's modules: ``_body.py`` (:class:`Body`: what every body shares, its fields and
+factories), ``_sphere.py`` (:class:`Sphere`: an AFM tip, its contact, pull-off and load curve
+in N), ``_cylinder.py`` (:class:`Cylinder`: its fields, factories, the
 normal problems under either law, the table of the problems written for each law),
 ``_problems.py`` (the tangential problems, the pushed fibre, the load histories: functions
 that are the class's methods, ``self`` the cylinder), ``_sliding.py`` (steady sliding, the
@@ -23,6 +25,7 @@ Import from ``linecontact.cylinder``: every name is here.
 from __future__ import annotations
 
 from .. import _moved
+from ._body import Body
 from ._checks import (
     _S_LJ,
     _UNIT_SLIP,
@@ -53,8 +56,14 @@ from ._results import (
     CylinderTangentialHistory,
 )
 from ._sliding import hysteresis_adhesion, sliding_pull_off_force
+from ._sphere import Sphere, SphereContactSI, SphereLoadCurveSI, SpherePullOffSI
 
 __all__ = [
+    "Body",
+    "Sphere",
+    "SphereContactSI",
+    "SphereLoadCurveSI",
+    "SpherePullOffSI",
     "CylinderPush",
     "PLAUSIBLE",
     "Cylinder",

@@ -50,7 +50,7 @@ def shaped(self: Cylinder, cross_section: CrossSection) -> Cylinder:
         self.modulus,
         self.adhesion,
         self.dundurs_beta,
-        cross_section.checked(self.radius),
+        cross_section=cross_section.checked(self.radius),
     )
 
 

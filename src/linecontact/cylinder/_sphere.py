@@ -1,0 +1,244 @@
+r""":class:`Sphere`: an AFM tip or a colloidal probe on a substrate, in SI units.
+
+The same body as a wire's (:class:`~linecontact.cylinder._body.Body`: radius, composite
+modulus, adhesion law, built from a modulus, the materials or presets), with the sphere's
+problems: its contact, pull-off (load or displacement control) and load curve under the
+Dugdale law (:mod:`linecontact.sphere`, the Maugis--Dugdale sphere). Forces are in N
+(the scale ``E h R``), not per unit length. A problem that is a wire's only (sliding,
+rolling, the push, the load histories) or the Lennard-Jones law is refused, naming the pair.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, ClassVar, Literal
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from .. import sphere as _sphere
+from ..closed_forms.sphere import sphere_maugis_parameter
+from ..laws._values import Dugdale
+from ..results import Result
+from ..units import Scales, to_si
+from ._body import Body
+from ._checks import _S_LJ
+
+__all__ = ["Sphere", "SphereContactSI", "SphereLoadCurveSI", "SpherePullOffSI"]
+
+
+@dataclass(frozen=True)
+class SphereContactSI(Result):
+    """A sphere's contact state in SI units, with its nondimensional result.
+
+    Attributes
+    ----------
+    contact_radius, adhesive_zone_radius : ndarray or float
+        ``a`` and ``c`` [m].
+    load : ndarray or float
+        ``F`` [N], compressive positive.
+    approach : ndarray or float
+        ``delta`` [m], the far points' displacement towards each other.
+    stable, stable_displacement : ndarray or bool
+        Stable under load and under displacement control.
+    nondimensional : SphereContact
+    """
+
+    contact_radius: NDArray | float
+    adhesive_zone_radius: NDArray | float
+    load: NDArray | float
+    approach: NDArray | float
+    stable: NDArray | bool
+    stable_displacement: NDArray | bool
+    nondimensional: _sphere.SphereContact = field(repr=False)
+
+
+@dataclass(frozen=True)
+class SpherePullOffSI(Result):
+    """A sphere's pull-off in SI units.
+
+    Attributes
+    ----------
+    pull_off_force : float
+        [N], negative (0 without adhesion).
+    contact_radius_at_pull_off, adhesive_zone_radius_at_pull_off : float
+        [m] (``a = 0``: it lets go at zero radius).
+    approach_at_pull_off : float
+        [m].
+    mechanism : str
+        As in :class:`~linecontact.sphere.SpherePullOff`.
+    control : str
+        ``"load"`` or ``"displacement"``.
+    nondimensional : SpherePullOff
+    """
+
+    pull_off_force: NDArray | float
+    contact_radius_at_pull_off: NDArray | float
+    adhesive_zone_radius_at_pull_off: NDArray | float
+    approach_at_pull_off: NDArray | float
+    mechanism: NDArray | str
+    control: str
+    nondimensional: _sphere.SpherePullOff = field(repr=False)
+
+
+@dataclass(frozen=True)
+class SphereLoadCurveSI(Result):
+    """A sphere's load curve in SI units (both branches, the pull-offs marked).
+
+    Attributes
+    ----------
+    branch : ndarray of str
+    contact_radius, adhesive_zone_radius, load, approach : ndarray
+        As in :class:`SphereContactSI`.
+    stable, stable_displacement, pull_off_load, pull_off_displacement : ndarray of bool
+    nondimensional : SphereLoadCurve
+    """
+
+    branch: NDArray
+    contact_radius: NDArray
+    adhesive_zone_radius: NDArray
+    load: NDArray
+    approach: NDArray
+    stable: NDArray
+    stable_displacement: NDArray
+    pull_off_load: NDArray
+    pull_off_displacement: NDArray
+    nondimensional: _sphere.SphereLoadCurve = field(repr=False)
+
+
+@dataclass(frozen=True)
+class Sphere(Body):
+    r"""A sphere of radius ``R`` on a substrate, with its adhesion law: a body.
+
+    Build it as a wire is built: :meth:`from_modulus`, :meth:`from_materials` or
+    :meth:`from_presets`, the adhesion as ``(sigma0, h)``, ``(w, z0)`` or a law value. Its
+    problems are :meth:`contact`, :meth:`pull_off` and :meth:`load_curve` under the Dugdale
+    law; forces in N.
+
+    Examples
+    --------
+    >>> tip = Sphere.from_modulus(20e-9, 50e9, work_of_adhesion=0.1, equilibrium_spacing=0.3e-9)
+    >>> p = tip.pull_off()
+    >>> print(f"{p.pull_off_force * 1e9:.3f} nN, {p.mechanism}, lambda {tip.maugis_parameter:.3f}")
+    -11.965 nN, contact, lambda 0.166
+    """
+
+    #: The problems of a sphere (and the laws they are written for).
+    WRITTEN: ClassVar[dict[str, tuple[type, ...]]] = {
+        "contact": (Dugdale,),
+        "pull_off": (Dugdale,),
+        "load_curve": (Dugdale,),
+    }
+
+    def __getattr__(self, name: str) -> Any:
+        from ._cylinder import Cylinder
+
+        if name in Cylinder.WRITTEN:
+            raise AttributeError(
+                f"{name} is not written for a sphere: its problems are "
+                f"{', '.join(self.WRITTEN)} (under the Dugdale law); {name} is a wire's "
+                "(Cylinder)"
+            )
+        raise AttributeError(f"'Sphere' object has no attribute {name!r}")
+
+    def _written(self, problem: str) -> None:
+        if not isinstance(self.adhesion, self.WRITTEN[problem]):
+            raise ValueError(
+                f"{problem} is not written for a sphere under the {self.adhesion.name} law "
+                f"(adhesion={self.adhesion!r}): the sphere's problems are the Dugdale law's"
+            )
+
+    # groups ---
+    @property
+    def maugis_parameter(self) -> float:
+        r"""Maugis' :math:`\lambda = 2\sigma_0 (R/(\pi w K^2))^{1/3}` (0: Hertz; large: JKR)."""
+        return float(sphere_maugis_parameter(self.R_over_h, self.sigma0_over_E))
+
+    @property
+    def tabor_parameter(self) -> float:
+        r"""Tabor's :math:`\mu = (R w^2/(E^2 z_0^3))^{1/3}`, ``z0 = 16h/(9\sqrt3)`` the law's."""
+        z0 = _S_LJ * self.adhesion_range
+        w = self.work_of_adhesion
+        return (self.radius * w * w / (self.modulus**2 * z0**3)) ** (1 / 3)
+
+    def _scales(self) -> Scales:
+        return Scales.of(self)
+
+    # problems ---
+    def contact(
+        self,
+        *,
+        load: ArrayLike | None = None,
+        contact_radius: ArrayLike | None = None,
+        on_failure: str = "raise",
+    ) -> SphereContactSI:
+        """The contact under a ``load`` [N] (the stable state) or at a ``contact_radius`` [m].
+
+        Give exactly one. ``on_failure="report"``: a load below the pull-off gives NaN.
+        """
+        self._written("contact")
+        if (load is None) == (contact_radius is None):
+            raise ValueError("give exactly one of load [N] or contact_radius [m]")
+        rho, s = self.R_over_h, self.sigma0_over_E
+        if load is not None:
+            F = np.divide(np.asarray(load, float), self.scale("EhR"))
+            r = _sphere.sphere_contact_for_load(F, rho, s, on_failure=on_failure)
+        else:
+            a_over_R = np.asarray(contact_radius, float) / self.radius
+            r = _sphere.sphere_contact(a_over_R, rho, s)
+        si = to_si(r, self._scales())
+        return SphereContactSI(
+            contact_radius=si["contact_radius"],
+            adhesive_zone_radius=si["adhesive_zone_radius"],
+            load=si["load"],
+            approach=si["approach"],
+            stable=r.stable,
+            stable_displacement=r.stable_displacement,
+            nondimensional=r,
+        )
+
+    def pull_off(self, control: Literal["load", "displacement"] = "load") -> SpherePullOffSI:
+        """The pull-off [N] under load or displacement control."""
+        self._written("pull_off")
+        p = _sphere.sphere_pull_off(self.R_over_h, self.sigma0_over_E, control=control)
+        si = to_si(p, self._scales())
+        return SpherePullOffSI(
+            pull_off_force=si["pull_off_force"],
+            contact_radius_at_pull_off=si["contact_radius_at_pull_off"],
+            adhesive_zone_radius_at_pull_off=si["adhesive_zone_radius_at_pull_off"],
+            approach_at_pull_off=si["approach_at_pull_off"],
+            mechanism=p.mechanism,
+            control=control,
+            nondimensional=p,
+        )
+
+    def load_curve(
+        self, *, max_radius: float | None = None, num: int = 200, num_noncontact: int = 40
+    ) -> SphereLoadCurveSI:
+        """The load curve, both branches, the pull-offs marked.
+
+        Up to the contact radius ``max_radius`` [m]; default: where the load is ten times
+        the pull-off in compression.
+        """
+        self._written("load_curve")
+        a_max = None if max_radius is None else max_radius / self.radius
+        c = _sphere.sphere_load_curve(
+            self.R_over_h,
+            self.sigma0_over_E,
+            a_max_over_R=a_max,
+            num=num,
+            num_noncontact=num_noncontact,
+        )
+        si = to_si(c, self._scales())
+        return SphereLoadCurveSI(
+            branch=c.branch,
+            contact_radius=si["contact_radius"],
+            adhesive_zone_radius=si["adhesive_zone_radius"],
+            load=si["load"],
+            approach=si["approach"],
+            stable=c.stable,
+            stable_displacement=c.stable_displacement,
+            pull_off_load=c.pull_off_load,
+            pull_off_displacement=c.pull_off_displacement,
+            nondimensional=c,
+        )
