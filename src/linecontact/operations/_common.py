@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from ..cylinder import Cylinder
+from ..cylinder import Body, Cylinder, Sphere
 from ..domain import check_si
 from ..errors import ParameterError
 from ..facet.contact import check_geometry
@@ -202,7 +202,45 @@ def shape_parameters(
     return params, entries
 
 
-def shape(args: Any, cyl: Cylinder | None) -> dict[str, Any] | None:
+#: The bodies (``--body``): a wire, or a sphere (an AFM tip, a colloidal probe).
+BODIES: dict[str, type[Body]] = {"wire": Cylinder, "sphere": Sphere}
+
+
+def body_parameter(group: str = SHAPE_GROUP) -> Parameter:
+    """``body``: a wire (forces per unit length) or a sphere (forces in N)."""
+    return Parameter(
+        "body",
+        "wire (forces per unit length) or sphere (an AFM tip or a colloidal probe: forces "
+        "in N, docs/sphere.md)",
+        kind="text",
+        choices=tuple(BODIES),
+        default="wire",
+        metavar="BODY",
+        group=group,
+    )
+
+
+def is_sphere(args: Any) -> bool:
+    """Whether the call's body is a sphere (``--body sphere``)."""
+    return getattr(args, "body", None) == "sphere"
+
+
+def sphere_inputs(args: Any) -> None:
+    """Refuse what a sphere has not: the Lennard-Jones law, ``--length``, a cross-section."""
+    if getattr(args, "law", None) == "lennard-jones":
+        raise ParameterError(
+            "--law",
+            "--law lennard-jones is not written for a sphere (--body sphere): its contact, "
+            "pull-off and load curve are the Dugdale law's (--law dugdale)",
+        )
+    if getattr(args, "length", None) is not None:
+        raise ParameterError(
+            "--length", "--length is a wire's (its totals): a sphere's forces are in N"
+        )
+    shape(args, None)  # a sphere is round
+
+
+def shape(args: Any, cyl: Body | None) -> dict[str, Any] | None:
     """A polygon's groups (``sides``, ``corner_radius_over_R``), or None for the round wire.
 
     With SI inputs the cylinder of :func:`cylinder` already carries the polygon.
@@ -210,6 +248,12 @@ def shape(args: Any, cyl: Cylinder | None) -> dict[str, Any] | None:
     name = getattr(args, "cross_section", None) or "round"
     rc = getattr(args, "corner_radius", None)
     rcR = getattr(args, "corner_radius_over_R", None)
+    if is_sphere(args):
+        given = [f for f, v in (("--corner-radius", rc), ("--corner-radius-over-R", rcR)) if v]
+        if name != "round" or given:
+            flag = "--cross-section" if name != "round" else given[0]
+            raise ParameterError(flag, f"{flag} is a wire's: a sphere (--body sphere) is round")
+        return None
     if name == "round":
         for value, f in ((rc, "--corner-radius"), (rcR, "--corner-radius-over-R")):
             if value is not None:
@@ -223,7 +267,7 @@ def shape(args: Any, cyl: Cylinder | None) -> dict[str, Any] | None:
                 "--corner-radius-over-R",
                 "with SI inputs give the corner radius as --corner-radius [m]",
             )
-        return cyl.cross_section.groups(cyl.radius)
+        return cyl.cross_section.groups(cyl.radius)  # type: ignore[attr-defined]
     if rc is not None:
         raise ParameterError(
             "--corner-radius",
@@ -364,9 +408,17 @@ def si_given(args: Any, extra: Sequence[str] = ()) -> bool:
     return si
 
 
-def cylinder(args: Any, range_flag: str = "--h") -> Cylinder:
-    """The :class:`Cylinder` of the SI inputs under ``--law``, with errors that name the flags."""
-    cyl = _cylinder(args, range_flag)
+def cylinder(args: Any, range_flag: str = "--h") -> Any:
+    """The body of the SI inputs under ``--law``, with errors that name the flags.
+
+    ``--body``: a :class:`Cylinder` (a wire, the default) or a :class:`Sphere`.
+    """
+    if is_sphere(args):
+        sphere_inputs(args)
+    body = _cylinder(args, range_flag)
+    if not isinstance(body, Cylinder):  # a sphere
+        return body
+    cyl = body
     name = getattr(args, "cross_section", None) or "round"
     if name != "round":
         rc = getattr(args, "corner_radius", None)
@@ -383,7 +435,9 @@ def cylinder(args: Any, range_flag: str = "--h") -> Cylinder:
     return cyl
 
 
-def _cylinder(args: Any, range_flag: str) -> Cylinder:
+def _cylinder(args: Any, range_flag: str) -> Body:
+    kind = BODIES[getattr(args, "body", None) or "wire"]
+    name = "sphere" if kind is Sphere else "cyl"  # the variable of the Python lines
     work = _work_flag(range_flag)
     if args.radius is None:
         raise ParameterError("--radius", "SI inputs need --radius [m]")
@@ -422,7 +476,7 @@ def _cylinder(args: Any, range_flag: str) -> Cylinder:
             raise ParameterError(
                 "--modulus", "give either --modulus or --E1 --nu1 --E2 --nu2, not both"
             )
-        return made(args, "cyl", Cylinder.from_modulus, args.radius, args.modulus, **adh)
+        return made(args, name, kind.from_modulus, args.radius, args.modulus, **adh)
     for m, E, nu, flags, body in (
         (presets[0], args.E1, args.nu1, "--E1 --nu1", "cylinder"),
         (presets[1], args.E2, args.nu2, "--E2 --nu2", "substrate"),
@@ -440,7 +494,7 @@ def _cylinder(args: Any, range_flag: str) -> Cylinder:
             "SI inputs need --modulus, or the materials: --cylinder-material or --E1 --nu1, "
             "and --substrate-material or --E2 --nu2",
         )
-    cyl = made(args, "cyl", Cylinder.from_materials, args.radius, E1, nu1, E2, nu2, **adh)
+    cyl = made(args, name, kind.from_materials, args.radius, E1, nu1, E2, nu2, **adh)
     pairs = zip(presets, ("E1, nu1", "E2, nu2"), strict=True)
     named = [f"{m.name} ({w})" for m, w in pairs if m is not None]
     if named:

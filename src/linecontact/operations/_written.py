@@ -26,7 +26,7 @@ __all__ = ["made", "note", "python"]
 
 
 def made(args: Any, name: str, call: Callable[..., Any], *pos: Any, **kw: Any) -> Any:
-    """``call(*pos, **kw)``, written down on ``args`` as ``name = <the call>``.
+    """``call(*pos, **kw)``, written down on ``args`` as ``name = <the call>`` once made.
 
     Parameters
     ----------
@@ -40,8 +40,13 @@ def made(args: Any, name: str, call: Callable[..., Any], *pos: Any, **kw: Any) -
     *pos, **kw
         Its arguments, as the call takes them; a keyword at its default is not written.
     """
-    args.python.append(_Call(name, call, pos, kw))  # written when asked for (arrays: long)
-    return call(*pos, **kw)
+    owner = getattr(call, "__self__", None)
+    on = ""
+    if owner is not None and not isinstance(owner, type):  # a method of a value made before
+        on = next((c.name for c in reversed(args.python) if c.made is owner), "cyl")
+    result = call(*pos, **kw)
+    args.python.append(_Call(name, call, pos, kw, on=on, made=result))  # written when asked
+    return result
 
 
 def note(args: Any, comment: str) -> None:
@@ -65,17 +70,19 @@ class _Call:
     call: Callable[..., Any]
     pos: tuple[Any, ...]
     kw: dict[str, Any]
+    on: str = ""  # the variable whose method it is ("" for a function or a class's)
+    made: Any = dataclasses.field(default=None, repr=False, compare=False)
     comment: str = ""
 
     def __str__(self) -> str:
-        line = f"{self.name} = {_callee(self.call)}({_arguments(self.call, self.pos, self.kw)})"
+        callee = f"{self.on}.{self.call.__name__}" if self.on else _callee(self.call)
+        line = f"{self.name} = {callee}({_arguments(self.call, self.pos, self.kw)})"
         return f"{line}  # {self.comment}" if self.comment else line
 
 
 def _callee(call: Callable[..., Any]) -> str:
+    """A function's or a class method's name from the package (``lc.Cylinder.from_modulus``)."""
     owner = getattr(call, "__self__", None)
-    if owner is not None and not isinstance(owner, type):  # a method of a value named before
-        return f"cyl.{call.__name__}"
     return _name(owner if owner is not None else call) + (
         f".{call.__name__}" if owner is not None else ""
     )

@@ -13,18 +13,22 @@ from ..facet import facet_contact, facet_contact_for_load, facet_load_curve, fac
 from ..laws import lennard_jones as _lj
 from ..normal import NormalContact, contact_for_load, load_curve, normal_contact, pull_off
 from ..output import Table
+from . import sphere as _sphere
 from ._common import (
     MAX_POINTS,
+    body_parameter,
     flags,
     group_parameters,
     groups,
     half_widths,
+    is_sphere,
     shape,
     shape_parameters,
     shape_parameters_of,
     si_inputs,
     si_loads,
     si_parameters,
+    sphere_inputs,
     width_parameters,
 )
 from ._declare import Entry, Inputs, Operation, Parameter
@@ -64,6 +68,16 @@ def _lj_parameters(args, rho: float, s: float, cyl: Cylinder | None) -> dict[str
 
 def _cmd_normal(args: Inputs) -> Table:
     rho, s, cyl, g = _wire(args)
+    if is_sphere(args):
+        return _sphere.normal(args, rho, s, cyl)
+    for name, flag, instead in (
+        ("F_over_EhR", "--F-over-EhR", "--F-over-Eh"),
+        ("force", "--force", "--load [N/m]"),
+    ):
+        if args.get(name) is not None:
+            raise ParameterError(
+                flag, f"{flag} is a sphere's load (--body sphere): a wire's is {instead}"
+            )
     A = half_widths(args, cyl, "F_over_Eh")
     if g is not None:
         return _cmd_normal_facet(args, A, rho, s, cyl, g)
@@ -341,11 +355,14 @@ PULL_OFF_KEYS = {
 PULL_OFF_TOTALS = {"pull_off_force": "F_pulloff_total_N"}
 
 
-def _wire(args: Inputs) -> tuple[float, float, Cylinder | None, dict[str, Any] | None]:
-    """``(R/h, sigma0/E, Cylinder or None, a polygon's groups or None)`` of a normal problem.
+def _wire(args: Inputs) -> tuple[float, float, Any, dict[str, Any] | None]:
+    """``(R/h, sigma0/E, the body or None, a polygon's groups or None)`` of a normal problem.
 
-    The Lennard-Jones law is refused for a polygon: its problems are written for Dugdale's.
+    The Lennard-Jones law is refused for a polygon: its problems are written for Dugdale's;
+    and for a sphere (``--body sphere``), whose own refusals :func:`sphere_inputs` says.
     """
+    if is_sphere(args):
+        sphere_inputs(args)
     rho, s, cyl = groups(args)
     g = shape(args, cyl)
     if g is not None and args.law == "lennard-jones":
@@ -359,6 +376,8 @@ def _wire(args: Inputs) -> tuple[float, float, Cylinder | None, dict[str, Any] |
 
 def _cmd_pulloff(args: Inputs) -> Table:
     rho, s, cyl, g = _wire(args)
+    if is_sphere(args):
+        return _sphere.pulloff(args, rho, s, cyl)
     if args.law == "lennard-jones":
         return _cmd_pulloff_lj(args, rho, s, cyl)
     si = None if cyl is None else made(args, "result", cyl.pull_off)
@@ -506,6 +525,8 @@ def _curve_table(
 
 def _cmd_curve(args: Inputs) -> Table:
     rho, s, cyl, g = _wire(args)
+    if is_sphere(args):
+        return _sphere.curve(args, rho, s, cyl)
     if args.law == "lennard-jones":
         return _cmd_curve_lj(args, rho, s, cyl)
     if args.F_max_over_Eh is not None or args.F_max is not None:
@@ -611,8 +632,24 @@ _LAW = Parameter(
 )
 _SI, _SI_ENTRIES = si_inputs()
 _SHAPE, _SHAPE_ENTRIES = shape_parameters()
-_SHAPE_OPTIONS, _ = shape_parameters("")  # among the options: normal's help fits a screen
 _WIDTHS = "contact half-widths or loads (exactly one)"
+_SHAPE_OPTIONS, _ = shape_parameters("")  # among the options: normal's help fits a screen
+#: --body and the wire's cross-section, one entry of the help
+_BODY_ENTRY = Entry(
+    ("body", *_SHAPE_ENTRIES[0].names),
+    "%(default)s or sphere [N]; a wire's section, r_c [m], r_c/R",
+)
+#: a sphere's loads, beside the wire's (one entry each: the help fits a screen)
+_SPHERE_LOADS = (
+    Parameter(
+        "F_over_EhR", "a sphere's loads over E h R", many="several", metavar="F", group=_WIDTHS
+    ),
+    Parameter("force", "a sphere's loads F [N] (SI)", many="several", unit="N", group=_WIDTHS),
+)
+_LOAD_ENTRIES = (
+    Entry(("F_over_Eh", "F_over_EhR"), "loads over E h (a wire, per length) or E h R (a sphere)"),
+    Entry(("load", "force"), "loads F [N/m] (a wire) or [N] (a sphere) (SI inputs)"),
+)
 _SAMPLING = "sampling"
 
 OPERATIONS = {
@@ -623,7 +660,6 @@ OPERATIONS = {
         "the adhesive zone and the load F; or for each load its contact (docs/cli.md).",
         (
             "linecontact normal --R-over-h 100 --sigma0-over-E 0.01 --a-over-R 0.01 0.05",
-            "linecontact normal --R-over-h 100 --sigma0-over-E 0.2 --F-over-Eh -1 0 1 --json",
             "linecontact normal --radius 50e-9 --modulus 100e9 --sigma0 1e9 --h 0.5e-9 --load 0 1",
         ),
         (
@@ -646,13 +682,15 @@ OPERATIONS = {
                 choices=("closed-form", "collocation"),
                 default="closed-form",
             ),
+            *_SPHERE_LOADS,
             _LAW,
+            body_parameter(""),
             *_SHAPE_OPTIONS,
         ),
         _cmd_normal,
         good=("contact",),
-        rows=("a_over_R", "F_over_Eh", "a", "load"),
-        entries=(*_SI_ENTRIES, *_SHAPE_ENTRIES),
+        rows=("a_over_R", "F_over_Eh", "a", "load", "F_over_EhR", "force"),
+        entries=(*_SI_ENTRIES, _BODY_ENTRY, *_LOAD_ENTRIES),
     ),
     "pulloff": Operation(
         "pulloff",
@@ -668,9 +706,9 @@ OPERATIONS = {
             "linecontact pulloff --cross-section hexagon --corner-radius 5e-9 --radius 50e-9 "
             "--modulus 50e9 --work-of-adhesion 0.1 --z0 0.3e-9 --json",
         ),
-        (*group_parameters(), *_SI, _LAW, *_SHAPE),
+        (*group_parameters(), *_SI, _LAW, body_parameter(), *_SHAPE),
         _cmd_pulloff,
-        entries=(*_SI_ENTRIES, *_SHAPE_ENTRIES),
+        entries=(*_SI_ENTRIES, _BODY_ENTRY),
     ),
     "curve": Operation(
         "curve",
@@ -685,6 +723,7 @@ OPERATIONS = {
             *group_parameters(),
             *_SI,
             _LAW,
+            body_parameter(""),
             *_SHAPE_OPTIONS,
             Parameter(
                 "a_max_over_R",
@@ -724,7 +763,7 @@ OPERATIONS = {
         _cmd_curve,
         entries=(
             *_SI_ENTRIES,
-            *_SHAPE_ENTRIES,
+            _BODY_ENTRY,
             Entry(("a_max_over_R", "a_max"), "largest half-width a/R, or a [m] (docs/cli.md)"),
             Entry(
                 ("num", "num_noncontact"),

@@ -54,6 +54,7 @@ class SphereContact(Result):
     """
 
     inputs: ClassVar[tuple[str, ...]] = INPUTS
+    derived: ClassVar[tuple[str, ...]] = ("F_over_piwR",)
 
     a_over_R: NDArray | float = field(metadata=SI("contact_radius", "R", "m"))
     c_over_R: NDArray | float = field(metadata=SI("adhesive_zone_radius", "R", "m"))

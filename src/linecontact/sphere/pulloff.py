@@ -57,6 +57,7 @@ class SpherePullOff(Result):
     """
 
     inputs: ClassVar[tuple[str, ...]] = INPUTS
+    derived: ClassVar[tuple[str, ...]] = ("F_pulloff_over_piwR",)
 
     F_pulloff_over_EhR: NDArray | float = field(metadata=SI("pull_off_force", "EhR", "N"))
     a_over_R_at_pulloff: NDArray | float = field(

@@ -112,8 +112,8 @@ def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
     if any(a.dest not in _SI + _GROUPS + _SHAPE + ("length",) or not a.unit for a in p.axes):
         return None
     template, bad, said = _checked(p)
-    if template.law != "dugdale":
-        return None
+    if template.law != "dugdale" or getattr(template, "body", "wire") != "wire":
+        return None  # the Lennard-Jones law, a sphere: point by point through the operation
     polygon = NAMED_SIDES.get(getattr(template, "cross_section", None) or "round")
     shape = tuple(sl.stop - sl.start for sl in block)
     grids = np.meshgrid(

@@ -1,0 +1,173 @@
+"""The sphere's computations of ``normal``, ``pulloff`` and ``curve`` (``--body sphere``).
+
+The same operations as the wire's (their declarations are :mod:`.normal`'s, with
+``--body``), on the Maugis--Dugdale sphere (:mod:`linecontact.sphere`; in SI units
+:class:`~linecontact.Sphere`, forces in N): the groups ``--R-over-h``, ``--sigma0-over-E``
+or the SI inputs; the loads of ``normal`` as ``--F-over-EhR`` or ``--force`` [N] (a wire's
+``--F-over-Eh``, ``--load`` [N/m] are refused). The records' SI keys state the newton:
+``F_pulloff_N``, ``F_N``, with ``a_m`` the contact radius and ``delta_m`` the approach.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ..closed_forms.sphere import sphere_maugis_parameter
+from ..domain import check_si
+from ..errors import ParameterError
+from ..output import Table
+from ..sphere import sphere_contact, sphere_contact_for_load, sphere_load_curve, sphere_pull_off
+from ._common import half_widths, si_parameters
+from ._declare import Inputs
+from ._records import records, si_shown
+from ._written import made
+
+#: The records' key of each SI field of the sphere's pull-off, contact and curve.
+PULL_OFF_KEYS = {
+    "pull_off_force": "F_pulloff_N",
+    "contact_radius_at_pull_off": "a_at_pulloff_m",
+    "adhesive_zone_radius_at_pull_off": "c_at_pulloff_m",
+    "approach_at_pull_off": "delta_at_pulloff_m",
+}
+CONTACT_KEYS = {
+    "contact_radius": "a_m",
+    "adhesive_zone_radius": "c_m",
+    "load": "F_N",
+    "approach": "delta_m",
+}
+
+
+def _parameters(args: Inputs, rho: float, s: float, body: Any) -> dict[str, Any]:
+    params: dict[str, Any] = {"body": "sphere", "R_over_h": rho, "sigma0_over_E": s}
+    params["maugis_parameter"] = float(sphere_maugis_parameter(rho, s))
+    if body is not None:
+        params.update(si_parameters(args, body))
+    return params
+
+
+def pulloff(args: Inputs, rho: float, s: float, body: Any) -> Table:
+    """``pulloff --body sphere``: the load-controlled pull-off, in N with SI inputs."""
+    si = None if body is None else made(args, "result", body.pull_off)
+    p = sphere_pull_off(rho, s) if si is None else si.nondimensional
+    show = ["F_pulloff_over_EhR", "F_pulloff_over_piwR", "a_over_R_at_pulloff", "mechanism"]
+    extra: dict[str, Any] = {}
+    if si is not None:
+        cols, shown = si_shown(args, si, PULL_OFF_KEYS, {}, ["F_pulloff_N", "a_at_pulloff_m"])
+        extra.update(cols)
+        show += shown
+    return records(
+        args,
+        p,
+        _parameters(args, rho, s, body),
+        extra,
+        "pull-off of a sphere under load control (Maugis-Dugdale; F/(pi w R): -2 DMT, -1.5 JKR)",
+        show,
+        drop=("control",),
+    )
+
+
+def _refuse_wire_loads(args: Inputs) -> None:
+    for name, flag, instead in (
+        ("F_over_Eh", "--F-over-Eh", "--F-over-EhR"),
+        ("load", "--load", "--force [N]"),
+    ):
+        if args.get(name) is not None:
+            raise ParameterError(
+                flag, f"{flag} is a wire's load per unit length: a sphere's is {instead}"
+            )
+
+
+def normal(args: Inputs, rho: float, s: float, body: Any) -> Table:
+    """``normal --body sphere``: the states at contact radii, or the contacts under loads."""
+    _refuse_wire_loads(args)
+    for name, flag, word in (
+        ("branch", "--branch", "stable"),
+        ("method", "--method", "closed-form"),
+    ):
+        if args.get(name) != word:
+            raise ParameterError(flag, f"{flag} is a wire's: a sphere's contact is {word}")
+    loads = [v for v in (args.F_over_EhR, args.force) if v is not None]
+    widths = [v for v in (args.a_over_R, args.a_over_R_range, args.a) if v is not None]
+    if len(loads) + len(widths) != 1:
+        raise ParameterError(
+            "--a-over-R",
+            "give exactly one of --a-over-R, --a-over-R-range, --F-over-EhR, --half-width [m] "
+            "(a sphere's contact radius) or --force [N]",
+        )
+    if args.force is not None and body is None:
+        raise ParameterError("--force", "--force [N] is an SI input: give --radius and the rest")
+    if args.F_over_EhR is not None and body is not None:
+        raise ParameterError(
+            "--F-over-EhR", "--F-over-EhR is nondimensional: with SI inputs give --force [N]"
+        )
+    c: Any = None
+    if widths:
+        args.load = None  # the wire's check of the widths, none of its loads given
+        A = half_widths(args, body, "F_over_Eh")
+        if body is None:
+            r = sphere_contact(A, rho, s)
+        else:
+            c = made(args, "result", body.contact, contact_radius=A)
+            r = c.nondimensional
+        given = "a_over_R"
+    else:
+        if body is None:
+            r = sphere_contact_for_load(np.asarray(args.F_over_EhR, float), rho, s)
+        else:
+            force = np.asarray(args.force, float)
+            check_si("--force", force, body.scale("EhR"), "F_over_EhR", "N")
+            c = made(args, "result", body.contact, load=force)
+            r = c.nondimensional
+        given = "F_over_EhR"
+    show = ["a_over_R", "c_over_R", "F_over_EhR", "delta_over_h", "stable"]
+    extra: dict[str, Any] = {}
+    if c is not None:
+        cols, shown = si_shown(args, c, CONTACT_KEYS, {}, list(CONTACT_KEYS.values()))
+        extra.update(cols)
+        show += shown
+    del given  # every point has its contact (a load below the pull-off is refused)
+    return records(
+        args,
+        r,
+        _parameters(args, rho, s, body),
+        extra,
+        "normal contact of a sphere (Maugis-Dugdale), compressive load positive",
+        show,
+    )
+
+
+def curve(args: Inputs, rho: float, s: float, body: Any) -> Table:
+    """``curve --body sphere``: both branches, the pull-offs under load and displacement."""
+    for name, flag in (("F_max_over_Eh", "--F-max-over-Eh"), ("F_max", "--F-max")):
+        if args.get(name) is not None:
+            raise ParameterError(
+                flag, f"{flag} is the Lennard-Jones wire's: a sphere's ends at --a-max"
+            )
+    n = {"num": 200 if args.num is None else args.num}
+    n["num_noncontact"] = 40 if args.num_noncontact is None else args.num_noncontact
+    si: Any = None
+    if body is None or args.a_max is None and args.a_max_over_R is not None:
+        c = sphere_load_curve(rho, s, a_max_over_R=args.a_max_over_R, **n)
+    else:
+        si = made(args, "result", body.load_curve, max_radius=args.a_max, **n)
+        c = si.nondimensional
+    show = ["branch", "central_gap_over_h", "a_over_R", "c_over_R", "F_over_EhR", "delta_over_h"]
+    show += ["stable", "pull_off_load", "pull_off_displacement"]
+    extra: dict[str, Any] = {}
+    if si is not None:
+        cols, shown = si_shown(args, si, CONTACT_KEYS, {}, list(CONTACT_KEYS.values()))
+        extra.update(cols)
+        show += shown
+    po, pd = c.pulloff, c.pulloff_displacement
+    return records(
+        args,
+        c,
+        _parameters(args, rho, s, body),
+        extra,
+        f"load curve of a sphere: non-contact branch, then contact; pull-off "
+        f"{po.F_pulloff_over_EhR:.6g} (load control, {po.mechanism}), "
+        f"{pd.F_pulloff_over_EhR:.6g} (displacement control, {pd.mechanism})",
+        show,
+    )
