@@ -70,6 +70,31 @@ CASES = {
         ["F_pulloff_over_Eh", "mechanism", "F_pulloff_N_per_m", "F_pulloff_total_N"],
         1,
     ),
+    ("pulloff", "sphere"): (
+        ["pulloff", "--body", "sphere", *SI],
+        ["F_pulloff_over_EhR", "F_pulloff_over_piwR", "mechanism", "F_pulloff_N", "a_at_pulloff_m"],
+        1,
+    ),
+    ("normal", "sphere"): (
+        ["normal", "--body", "sphere", *SI, "--force", "-1e-8", "0", "1e-7"],
+        ["a_over_R", "F_over_EhR", "delta_over_h", "a_m", "c_m", "F_N", "delta_m", "stable"],
+        3,
+    ),
+    ("curve", "sphere"): (
+        [
+            "curve",
+            "--body",
+            "sphere",
+            "--R-over-h",
+            "1e4",
+            "--sigma0-over-E",
+            "0.001",
+            "--num",
+            "7",
+        ],
+        ["branch", "a_over_R", "F_over_EhR", "delta_over_h", "pull_off_load"],
+        7 + 40 + 1,  # the branches and the pull-off inserted (the other: at zero radius)
+    ),
     ("curve", "nd"): (
         [
             "curve",

@@ -18,6 +18,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .. import sphere as _sphere
 from ..closed_forms.sphere import sphere_maugis_parameter
+from ..errors import NoEquilibriumError
 from ..laws._values import Dugdale
 from ..results import Result
 from ..units import Scales, to_si
@@ -182,7 +183,15 @@ class Sphere(Body):
         rho, s = self.R_over_h, self.sigma0_over_E
         if load is not None:
             F = np.divide(np.asarray(load, float), self.scale("EhR"))
-            r = _sphere.sphere_contact_for_load(F, rho, s, on_failure=on_failure)
+            try:
+                r = _sphere.sphere_contact_for_load(F, rho, s, on_failure=on_failure)
+            except NoEquilibriumError:  # said in N
+                po = self.pull_off().pull_off_force
+                low = float(np.asarray(load, float)[np.asarray(load, float) < po].flat[0])
+                raise NoEquilibriumError(
+                    f"load = {low!r} N is below the pull-off force {po!r} N of this sphere: "
+                    "no contact carries it (it has come off)"
+                ) from None
         else:
             a_over_R = np.asarray(contact_radius, float) / self.radius
             r = _sphere.sphere_contact(a_over_R, rho, s)

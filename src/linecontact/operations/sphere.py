@@ -14,7 +14,6 @@ from typing import Any
 
 import numpy as np
 
-from ..closed_forms.sphere import sphere_maugis_parameter
 from ..domain import check_si
 from ..errors import ParameterError
 from ..output import Table
@@ -40,8 +39,8 @@ CONTACT_KEYS = {
 
 
 def _parameters(args: Inputs, rho: float, s: float, body: Any) -> dict[str, Any]:
+    # the Maugis parameter is each result's own field (a record's, per point)
     params: dict[str, Any] = {"body": "sphere", "R_over_h": rho, "sigma0_over_E": s}
-    params["maugis_parameter"] = float(sphere_maugis_parameter(rho, s))
     if body is not None:
         params.update(si_parameters(args, body))
     return params
@@ -79,6 +78,18 @@ def _refuse_wire_loads(args: Inputs) -> None:
             )
 
 
+def _above_pull_off(flag: str, loads: np.ndarray, rho, s, scale: float, unit: str) -> None:
+    """Refuse a load below the pull-off (no contact carries it), in the flag's unit."""
+    po = float(sphere_pull_off(rho, s).F_pulloff_over_EhR) * scale
+    low = loads[loads < po]
+    if low.size:
+        raise ParameterError(
+            flag,
+            f"{flag} {float(low[0])!r}{unit} is below the pull-off force {po:.6g}{unit}: no "
+            "contact carries it (the sphere has come off)",
+        )
+
+
 def normal(args: Inputs, rho: float, s: float, body: Any) -> Table:
     """``normal --body sphere``: the states at contact radii, or the contacts under loads."""
     _refuse_wire_loads(args)
@@ -111,23 +122,23 @@ def normal(args: Inputs, rho: float, s: float, body: Any) -> Table:
         else:
             c = made(args, "result", body.contact, contact_radius=A)
             r = c.nondimensional
-        given = "a_over_R"
     else:
         if body is None:
-            r = sphere_contact_for_load(np.asarray(args.F_over_EhR, float), rho, s)
+            F = np.asarray(args.F_over_EhR, float)
+            _above_pull_off("--F-over-EhR", F, rho, s, 1.0, "")
+            r = sphere_contact_for_load(F, rho, s)
         else:
             force = np.asarray(args.force, float)
             check_si("--force", force, body.scale("EhR"), "F_over_EhR", "N")
+            _above_pull_off("--force", force, rho, s, body.scale("EhR"), " N")
             c = made(args, "result", body.contact, load=force)
             r = c.nondimensional
-        given = "F_over_EhR"
     show = ["a_over_R", "c_over_R", "F_over_EhR", "delta_over_h", "stable"]
     extra: dict[str, Any] = {}
     if c is not None:
         cols, shown = si_shown(args, c, CONTACT_KEYS, {}, list(CONTACT_KEYS.values()))
         extra.update(cols)
         show += shown
-    del given  # every point has its contact (a load below the pull-off is refused)
     return records(
         args,
         r,

@@ -1,0 +1,135 @@
+"""The sphere in every shell: one number from Python, the command line, a sweep and the API.
+
+``--body sphere`` on ``pulloff``, ``normal`` and ``curve`` gives the records of
+:class:`linecontact.Sphere` (forces in N: ``F_pulloff_N``, ``F_N``); what a sphere has not
+(the Lennard-Jones law, a cross-section, ``--length``, a wire's loads per length) is refused
+with one ``error:`` line naming the flag, exit status 2; the Python lines of a sphere's
+computation run and give its number.
+"""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+import linecontact as lc
+from linecontact import operations
+from linecontact.cli import main
+from linecontact.operations._declare import Inputs
+from linecontact.operations._written import python
+
+SI = ["--radius", "1e-6", "--modulus", "50e9", "--sigma0", "1e8", "--h", "1e-9"]
+TIP = dict(radius=1e-6, modulus=50e9, cohesive_stress=1e8, adhesion_range=1e-9)
+
+
+def _cli(capsys, argv: list[str]) -> list[dict]:
+    capsys.readouterr()
+    main([*argv, "--json"])
+    return json.loads(capsys.readouterr().out)["results"]
+
+
+def test_the_pull_off_is_one_number_in_python_the_cli_and_a_sweep(capsys):
+    tip = lc.Sphere.from_modulus(
+        TIP["radius"], TIP["modulus"], cohesive_stress=1e8, adhesion_range=1e-9
+    )
+    want = tip.pull_off().pull_off_force
+    rec = _cli(capsys, ["pulloff", "--body", "sphere", *SI])[0]
+    assert rec["F_pulloff_N"] == want
+    assert rec["F_pulloff_over_EhR"] * 50e9 * 1e-9 * 1e-6 == pytest.approx(want, rel=1e-15)
+    ds = lc.sweep("pulloff", body="sphere", radius=[1e-6, 2e-6], modulus=50e9, sigma0=1e8, h=1e-9)
+    assert ds["F_pulloff_N"].values[0] == want
+    two = lc.Sphere.from_modulus(2e-6, 50e9, cohesive_stress=1e8, adhesion_range=1e-9)
+    assert ds["F_pulloff_N"].values[1] == two.pull_off().pull_off_force
+
+
+def test_the_contact_and_the_curve_are_one_number_in_python_and_the_cli(capsys):
+    tip = lc.Sphere.from_modulus(1e-6, 50e9, cohesive_stress=1e8, adhesion_range=1e-9)
+    forces = [-1e-8, 0.0, 1e-7]
+    got = tip.contact(load=forces)
+    recs = _cli(capsys, ["normal", "--body", "sphere", *SI, "--force", *map(str, forces)])
+    assert [r["a_m"] for r in recs] == got.contact_radius.tolist()
+    assert [r["delta_m"] for r in recs] == got.approach.tolist()
+    # at the radii found, the state gives the loads back
+    back = tip.contact(contact_radius=got.contact_radius).load
+    # a load of 0 is a difference of terms of the pull-off's size: rounding of that size
+    scale = abs(tip.pull_off().pull_off_force)
+    np.testing.assert_allclose(back, forces, rtol=1e-12, atol=1e-13 * scale)
+    curve = tip.load_curve(num=20, num_noncontact=5)
+    recs = _cli(capsys, ["curve", "--body", "sphere", *SI, "--num", "20", "--num-noncontact", "5"])
+    assert [r["F_N"] for r in recs] == curve.load.tolist()
+    assert min(r["F_N"] for r in recs) == tip.pull_off().pull_off_force
+
+
+def test_the_groups_give_the_nondimensional_solvers_numbers(capsys):
+    rec = _cli(
+        capsys, ["pulloff", "--body", "sphere", "--R-over-h", "1e4", "--sigma0-over-E", "1e-3"]
+    )[0]
+    p = lc.sphere_pull_off(1e4, 1e-3)
+    assert rec["F_pulloff_over_EhR"] == p.F_pulloff_over_EhR
+    assert rec["F_pulloff_over_piwR"] == pytest.approx(-1.85145076263, rel=1e-11)
+    recs = _cli(
+        capsys,
+        ["normal", "--body", "sphere", "--R-over-h", "1e4", "--sigma0-over-E", "1e-3",
+         "--F-over-EhR", "0", "0.01"],
+    )  # fmt: skip
+    r = lc.sphere_contact_for_load([0.0, 0.01], 1e4, 1e-3)
+    assert [x["a_over_R"] for x in recs] == r.a_over_R.tolist()
+
+
+@pytest.mark.parametrize(
+    ("argv", "flag"),
+    [
+        (["pulloff", "--body", "sphere", *SI, "--law", "lennard-jones"], "--law"),
+        (["pulloff", "--body", "sphere", "--R-over-h", "10", "--sigma0-over-E", "0.1",
+          "--law", "lennard-jones"], "--law"),
+        (["pulloff", "--body", "sphere", *SI, "--cross-section", "hexagon"], "--cross-section"),
+        (["pulloff", "--body", "sphere", *SI, "--corner-radius", "1e-9"], "--corner-radius"),
+        (["pulloff", "--body", "sphere", *SI, "--length", "1e-6"], "--length"),
+        (["normal", "--body", "sphere", *SI, "--load", "1"], "--load"),
+        (["normal", "--body", "sphere", "--R-over-h", "10", "--sigma0-over-E", "0.1",
+          "--F-over-Eh", "1"], "--F-over-Eh"),
+        (["normal", *SI, "--force", "1e-9"], "--force"),
+        (["normal", "--body", "sphere", *SI, "--force", "-1"], "--force"),
+        (["normal", "--body", "sphere", *SI, "--force", "1e-9", "--branch", "unstable"],
+         "--branch"),
+        (["curve", "--body", "sphere", *SI, "--F-max", "1"], "--F-max"),
+        (["pulloff", "--body", "ball", *SI], "--body"),
+    ],
+)  # fmt: skip
+def test_what_a_sphere_has_not_is_one_error_line_naming_the_flag(capsys, argv, flag):
+    capsys.readouterr()
+    try:
+        status = main(argv)
+    except SystemExit as e:  # argparse's own refusal (an invalid choice)
+        status = e.code
+    err = capsys.readouterr().err.strip().splitlines()
+    assert status == 2 and len(err) == 1, err
+    assert "error:" in err[0] and flag in err[0], err[0]
+
+
+def test_a_spheres_python_lines_give_its_number():
+    op = operations.get("pulloff")
+    values = {"body": "sphere", "radius": 1e-6, "modulus": 5e10, "sigma0": 1e8, "h": 1e-9}
+    inputs = Inputs(op, values)
+    table = op.run(inputs)
+    code = python(inputs)
+    assert "sphere = lc.Sphere.from_modulus(1e-6, 5e10, cohesive_stress=1e8" in code
+    assert "result = sphere.pull_off()" in code
+    space: dict = {}
+    exec(code.replace("print(result)", ""), space)  # the lines written, nothing else
+    assert space["result"].pull_off_force == table.columns["F_pulloff_N"][0]
+
+
+def test_python_refuses_a_wires_problem_and_another_law_naming_the_pair():
+    tip = lc.Sphere.from_modulus(1e-6, 50e9, cohesive_stress=1e8, adhesion_range=1e-9)
+    with pytest.raises(AttributeError, match="push is not written for a sphere"):
+        tip.push  # noqa: B018 - the attribute's refusal is the test
+    lj = lc.Sphere.from_modulus(1e-6, 50e9, adhesion=lc.LennardJones(0.1, 3e-10))
+    with pytest.raises(ValueError, match="pull_off is not written for a sphere under the lennard"):
+        lj.pull_off()
+    with pytest.raises(ValueError, match="give exactly one of load"):
+        tip.contact()
+    with pytest.raises(lc.NoEquilibriumError, match=r"load = -1e-06 N is below the pull-off"):
+        tip.contact(load=[0.0, -1e-6])
