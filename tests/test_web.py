@@ -94,6 +94,12 @@ def _cli(capsys, argv):
         ),
         (
             "pulloff",
+            "body=sphere&radius=1e-6&modulus=5e10&sigma0=1e8&h=1e-9",
+            ["--body", "sphere", "--radius", "1e-6", "--modulus", "5e10", "--sigma0", "1e8",
+             "--h", "1e-9"],
+        ),
+        (
+            "pulloff",
             "cylinder_material=ZnO&substrate_material=SiO2&radius=50e-9&work_of_adhesion=0.3&z0=3e-10",
             ["--cylinder-material", "ZnO", "--substrate-material", "SiO2", "--radius", "50e-9",
              "--work-of-adhesion", "0.3", "--z0", "3e-10"],

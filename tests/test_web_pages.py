@@ -562,6 +562,13 @@ def test_the_push_page_takes_the_works_of_adhesion_and_a_tip(server, page):
             [("result.load", "F_N_per_m"), ("result.contact_half_width", "a_m")],
         ),
         ("lennard-jones", {}, "pulloff", [("result.pull_off_force", "F_pulloff_N_per_m")]),
+        ("sphere", {}, "pulloff", [("result.pull_off_force", "F_pulloff_N")]),
+        (
+            "sphere",
+            {"radius": ("1", "um"), "work_of_adhesion": ("50", "mJ/m^2")},
+            "pulloff",
+            [("result.pull_off_force", "F_pulloff_N")],
+        ),
     ],
 )
 def test_a_pages_python_lines_give_the_apis_numbers(server, page, name, fill, command, pairs):

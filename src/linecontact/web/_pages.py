@@ -222,6 +222,20 @@ PAGES: dict[str, dict[str, Any]] = {
             "ys": [{"key": "W_J_per_m", "kind": "energy", "label": "energy lost per cycle W"}],
         },
     },
+    "sphere": {
+        "title": "An AFM tip or a colloidal probe: pull-off",
+        "question": "How hard must a sphere (an AFM tip, a colloidal probe) be pulled to come "
+        "off the substrate?",
+        "command": "pulloff",
+        "fixed": {"body": "sphere"},
+        "alts": _WIRE_ALTS,
+        "fields": [
+            _f("cylinder_material", "tip material", "material", "Si", alt="elastic:presets"),
+            *[f for f in _WIRE if f["name"] not in ("cylinder_material", "radius")],
+            _f("radius", "tip radius R", "length", "2e-08"),
+        ],
+        "plot": None,
+    },
     "lennard-jones": {
         "title": "The Lennard-Jones law: pull-off",
         "question": "The pull-off under the full Lennard-Jones law (not Dugdale's step).",

@@ -328,6 +328,16 @@
         maugis(r.maugis_parameter),
       ];
     },
+    sphere(doc) {
+      const r = rec(doc);
+      return [
+        p("It comes off at a pull of ", val("F_pulloff_N", r.F_pulloff_N, newtons(Math.abs(r.F_pulloff_N))),
+          `, by the ${r.mechanism} mechanism (${fmt(r.F_pulloff_over_piwR)} pi w R; JKR: -1.5, DMT: -2); the contact radius at pull-off is `,
+          val("a_at_pulloff_m", r.a_at_pulloff_m, qty(r.a_at_pulloff_m, "length", ["radius"])),
+          `. (The records give the pull-off force as ${fmt(r.F_pulloff_N)} N: a tensile load is negative.)`),
+        maugis(r.maugis_parameter),
+      ];
+    },
     "lennard-jones"(doc) {
       const r = rec(doc);
       return [
