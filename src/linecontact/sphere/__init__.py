@@ -9,7 +9,10 @@ radius ``a/R``), the approach over ``h``, the force [N] over ``E h R``; Maugis' 
 - :func:`sphere_contact` -- the states at given contact radii;
 - :func:`sphere_contact_for_load` -- the stable contact under a load;
 - :func:`sphere_pull_off` -- the pull-off under load or displacement control;
-- :func:`sphere_load_curve` -- the curve through both branches, the pull-offs marked.
+- :func:`sphere_load_curve` -- the curve through both branches, the pull-offs marked;
+- :func:`sphere_models` -- which model holds (Hertz, DMT, JKR against Maugis--Dugdale);
+  :func:`cos_alpha`, :func:`maugis_parameter_of_cos_alpha` -- the COS transition parameter
+  fitted to the library's own curves.
 
 The closed forms of its limits are in :mod:`linecontact.closed_forms.sphere`.
 """
@@ -18,9 +21,14 @@ from __future__ import annotations
 
 from .contact import SphereContact, sphere_contact
 from .curve import SphereLoadCurve, sphere_load_curve
+from .models import SphereModels, cos_alpha, maugis_parameter_of_cos_alpha, sphere_models
 from .pulloff import SpherePullOff, sphere_contact_for_load, sphere_pull_off
 
 __all__ = [
+    "SphereModels",
+    "cos_alpha",
+    "maugis_parameter_of_cos_alpha",
+    "sphere_models",
     "SphereContact",
     "SphereLoadCurve",
     "SpherePullOff",
