@@ -176,6 +176,28 @@ API_GROUPS: list[tuple[str, str, list[str]]] = [
         ],
     ),
     (
+        "The sphere: an AFM tip or a colloidal probe",
+        "The Maugis-Dugdale sphere in the wire's input groups, force over ``E h R``: its "
+        "contact, its contact under a load, its pull-offs and load curve; which model holds, "
+        "and the COS alpha fitted to its curves (:doc:`sphere`). In SI units the body "
+        "``Sphere`` (forces in N), a ``Body`` as the ``Cylinder`` is.",
+        [
+            "Sphere",
+            "Body",
+            "sphere_contact",
+            "sphere_contact_for_load",
+            "sphere_pull_off",
+            "sphere_load_curve",
+            "sphere_models",
+            "cos_alpha",
+            "maugis_parameter_of_cos_alpha",
+            "SphereContact",
+            "SpherePullOff",
+            "SphereLoadCurve",
+            "SphereModels",
+        ],
+    ),
+    (
         "Sliding and rolling",
         "Steady sliding, the initiation of sliding and steady rolling, with the nano-scale "
         "friction law (constant shear stress) or Coulomb friction.",

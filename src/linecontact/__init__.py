@@ -101,10 +101,14 @@ with _imports_interruptible():
     from .sphere import (
         SphereContact,
         SphereLoadCurve,
+        SphereModels,
         SpherePullOff,
+        cos_alpha,
+        maugis_parameter_of_cos_alpha,
         sphere_contact,
         sphere_contact_for_load,
         sphere_load_curve,
+        sphere_models,
         sphere_pull_off,
     )
     from .sweeps import open_sweep, sweep
@@ -129,6 +133,10 @@ __all__ = [
     "sphere_contact_for_load",
     "sphere_load_curve",
     "sphere_pull_off",
+    "SphereModels",
+    "cos_alpha",
+    "maugis_parameter_of_cos_alpha",
+    "sphere_models",
     "ConvergenceError",
     "Material",
     "CouplingWarning",

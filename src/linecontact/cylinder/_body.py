@@ -39,13 +39,11 @@ class Body:
     radius : float
         ``R`` [m] (the equivalent radius of two bodies).
     modulus : float
-        Composite modulus ``E`` [Pa], :math:`1/E = (1-
-    u_1^2)/E_1 + (1-
-    u_2^2)/E_2`.
+        Composite modulus ``E`` [Pa], :math:`1/E = (1-\nu_1^2)/E_1 + (1-\nu_2^2)/E_2`.
     adhesion : Law
         The adhesion law and its SI parameters.
     dundurs_beta : float
-        Dundurs' :math:`eta = -B/A` (0 when only the composite modulus was given).
+        Dundurs' :math:`\beta = -B/A` (0 when only the composite modulus was given).
     cohesive_stress, adhesion_range : float
         ``sigma0`` [Pa] (0: no adhesion) and ``h`` [m] of the law's Dugdale step.
     """
