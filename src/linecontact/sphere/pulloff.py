@@ -26,7 +26,7 @@ from . import _branch as _b
 from .contact import INPUTS, SphereContact, checked, states
 
 #: Contact radii in Maugis' unit :math:`(\pi w R^2/K)^{1/3}` where a minimum is looked for.
-GRID = np.geomspace(1e-7, 20.0, 121)
+GRID = np.geomspace(1e-7, 20.0, 31)
 
 #: The most steps that refine a minimum on the logarithm of the radius (to rounding).
 _STEPS = 100
@@ -111,21 +111,26 @@ def _minimum(rho: NDArray, s: NDArray, of: int) -> tuple[NDArray, NDArray]:
     f_lo, f_hi = slope[point, k], slope[point, k + 1]
     r, t = rho[point], s[point]
     # the Illinois method on the slope's sign change (false position, the stale end's value
-    # halved): superlinear, and the bracket always holds the root
+    # halved): superlinear, and the bracket always holds the root; a bracket stops once it
+    # is rounding wide or its next point is one of its ends
     side = np.zeros(lo.shape, int)
+    act = np.arange(lo.size)
     for _ in range(_STEPS):
-        with np.errstate(divide="ignore", invalid="ignore"):
-            mid = (lo * f_hi - hi * f_lo) / (f_hi - f_lo)
-        mid = np.where(np.isfinite(mid) & (mid > lo) & (mid < hi), mid, 0.5 * (lo + hi))
-        f = _slope(np.exp(mid), r, t, of)
-        down = f < 0
-        f_lo_new = np.where(down, f, np.where(side == 1, 0.5 * f_lo, f_lo))
-        f_hi_new = np.where(~down, f, np.where(side == -1, 0.5 * f_hi, f_hi))
-        side = np.where(down, -1, 1)
-        lo, hi = np.where(down, mid, lo), np.where(down, hi, mid)
-        f_lo, f_hi = f_lo_new, f_hi_new
-        if np.all(hi - lo <= 4e-16 * np.maximum(1.0, np.abs(lo))):
+        if act.size == 0:
             break
+        L, H, FL, FH, S = lo[act], hi[act], f_lo[act], f_hi[act], side[act]
+        with np.errstate(divide="ignore", invalid="ignore"):
+            mid = (L * FH - H * FL) / (FH - FL)
+        mid = np.where(np.isfinite(mid) & (mid > L) & (mid < H), mid, 0.5 * (L + H))
+        f = _slope(np.exp(mid), r[act], t[act], of)
+        down = f < 0
+        f_lo[act] = np.where(down, f, np.where(S == 1, 0.5 * FL, FL))
+        f_hi[act] = np.where(~down, f, np.where(S == -1, 0.5 * FH, FH))
+        side[act] = np.where(down, -1, 1)
+        lo[act], hi[act] = np.where(down, mid, L), np.where(down, H, mid)
+        width = hi[act] - lo[act]
+        stuck = (mid <= L) | (mid >= H) | (f == 0)
+        act = act[~(stuck | (width <= 4e-16 * np.maximum(1.0, np.abs(mid))))]
     a = np.exp(np.where(np.abs(f_lo) < np.abs(f_hi), lo, hi))
     value = _b.branch(a, r, t)[1 + of]
     best_a = np.full(n, np.nan)
