@@ -27,7 +27,6 @@ from typing import ClassVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
-from scipy.optimize import brentq, minimize_scalar
 
 from ..closed_forms.sphere import (
     DMT_PULL_OFF,
@@ -169,6 +168,8 @@ def _cos_radius(alpha: float, load: NDArray, a0: float, Fc: float) -> NDArray:
 
 
 def _cos_fit(lam: float) -> float:
+    from scipy.optimize import minimize_scalar  # imported where used: a slow import
+
     rho = 1e6
     s = float(np.sqrt((lam / 2) ** 3 * 16 * np.pi / (9 * rho)))
     Fc = float(sphere_pull_off(rho, s).F_pulloff_over_EhR)
@@ -226,6 +227,8 @@ def maugis_parameter_of_cos_alpha(alpha: float) -> float:
             f"alpha must be in [{lo:.4g}, {hi:.4g}] (the fits at lambda {_LAMBDA_RANGE[0]:g} "
             f"and {_LAMBDA_RANGE[1]:g}), got {alpha!r}",
         )
+    from scipy.optimize import brentq  # imported where used: a slow import
+
     ends = np.log(_LAMBDA_RANGE)
     t = brentq(lambda v: cos_alpha(np.clip(np.exp(v), *_LAMBDA_RANGE)) - a, *ends, xtol=1e-10)
     return float(np.exp(t))
