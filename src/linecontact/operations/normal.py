@@ -70,14 +70,7 @@ def _cmd_normal(args: Inputs) -> Table:
     rho, s, cyl, g = _wire(args)
     if is_sphere(args):
         return _sphere.normal(args, rho, s, cyl)
-    for name, flag, instead in (
-        ("F_over_EhR", "--F-over-EhR", "--F-over-Eh"),
-        ("force", "--force", "--load [N/m]"),
-    ):
-        if args.get(name) is not None:
-            raise ParameterError(
-                flag, f"{flag} is a sphere's load (--body sphere): a wire's is {instead}"
-            )
+    _sphere.refuse_other_loads(args, "wire")
     A = half_widths(args, cyl, "F_over_Eh")
     if g is not None:
         return _cmd_normal_facet(args, A, rho, s, cyl, g)

@@ -46,36 +46,59 @@ def _parameters(args: Inputs, rho: float, s: float, body: Any) -> dict[str, Any]
     return params
 
 
+def _table(
+    args: Inputs,
+    result: Any,
+    si: Any,
+    keys: dict[str, str],
+    shown: list[str],
+    where: tuple[float, float, Any],
+    title: str,
+    show: list[str],
+    **how: Any,
+) -> Table:
+    """The records of a sphere's ``result``, its SI columns ``keys`` (``shown``) with ``si``."""
+    extra: dict[str, Any] = {}
+    if si is not None:
+        cols, more = si_shown(args, si, keys, {}, shown)
+        extra.update(cols)
+        show = [*show, *more]
+    return records(args, result, _parameters(args, *where), extra, title, show, **how)
+
+
 def pulloff(args: Inputs, rho: float, s: float, body: Any) -> Table:
     """``pulloff --body sphere``: the load-controlled pull-off, in N with SI inputs."""
     si = None if body is None else made(args, "result", body.pull_off)
     p = sphere_pull_off(rho, s) if si is None else si.nondimensional
-    show = ["F_pulloff_over_EhR", "F_pulloff_over_piwR", "a_over_R_at_pulloff", "mechanism"]
-    extra: dict[str, Any] = {}
-    if si is not None:
-        cols, shown = si_shown(args, si, PULL_OFF_KEYS, {}, ["F_pulloff_N", "a_at_pulloff_m"])
-        extra.update(cols)
-        show += shown
-    return records(
+    return _table(
         args,
         p,
-        _parameters(args, rho, s, body),
-        extra,
+        si,
+        PULL_OFF_KEYS,
+        ["F_pulloff_N", "a_at_pulloff_m"],
+        (rho, s, body),
         "pull-off of a sphere under load control (Maugis-Dugdale; F/(pi w R): -2 DMT, -1.5 JKR)",
-        show,
+        ["F_pulloff_over_EhR", "F_pulloff_over_piwR", "a_over_R_at_pulloff", "mechanism"],
         drop=("control",),
     )
 
 
-def _refuse_wire_loads(args: Inputs) -> None:
-    for name, flag, instead in (
-        ("F_over_Eh", "--F-over-Eh", "--F-over-EhR"),
-        ("load", "--load", "--force [N]"),
-    ):
+#: Each body's loads of ``normal``: the parameter, its flag, and the other body's spelling.
+_LOADS = {
+    "wire": (("F_over_Eh", "--F-over-Eh", "--F-over-EhR"), ("load", "--load", "--force [N]")),
+    "sphere": (
+        ("F_over_EhR", "--F-over-EhR", "--F-over-Eh"),
+        ("force", "--force", "--load [N/m]"),
+    ),
+}
+
+
+def refuse_other_loads(args: Inputs, body: str) -> None:
+    """Refuse the other body's loads of ``normal`` (``body``: the body of the call)."""
+    other = "sphere" if body == "wire" else "wire"
+    for name, flag, instead in _LOADS[other]:
         if args.get(name) is not None:
-            raise ParameterError(
-                flag, f"{flag} is a wire's load per unit length: a sphere's is {instead}"
-            )
+            raise ParameterError(flag, f"{flag} is a {other}'s load: a {body}'s is {instead}")
 
 
 def _above_pull_off(flag: str, loads: np.ndarray, rho, s, scale: float, unit: str) -> None:
@@ -92,7 +115,7 @@ def _above_pull_off(flag: str, loads: np.ndarray, rho, s, scale: float, unit: st
 
 def normal(args: Inputs, rho: float, s: float, body: Any) -> Table:
     """``normal --body sphere``: the states at contact radii, or the contacts under loads."""
-    _refuse_wire_loads(args)
+    refuse_other_loads(args, "sphere")
     for name, flag, word in (
         ("branch", "--branch", "stable"),
         ("method", "--method", "closed-form"),
@@ -133,19 +156,15 @@ def normal(args: Inputs, rho: float, s: float, body: Any) -> Table:
             _above_pull_off("--force", force, rho, s, body.scale("EhR"), " N")
             c = made(args, "result", body.contact, load=force)
             r = c.nondimensional
-    show = ["a_over_R", "c_over_R", "F_over_EhR", "delta_over_h", "stable"]
-    extra: dict[str, Any] = {}
-    if c is not None:
-        cols, shown = si_shown(args, c, CONTACT_KEYS, {}, list(CONTACT_KEYS.values()))
-        extra.update(cols)
-        show += shown
-    return records(
+    return _table(
         args,
         r,
-        _parameters(args, rho, s, body),
-        extra,
+        c,
+        CONTACT_KEYS,
+        list(CONTACT_KEYS.values()),
+        (rho, s, body),
         "normal contact of a sphere (Maugis-Dugdale), compressive load positive",
-        show,
+        ["a_over_R", "c_over_R", "F_over_EhR", "delta_over_h", "stable"],
     )
 
 
@@ -165,20 +184,16 @@ def curve(args: Inputs, rho: float, s: float, body: Any) -> Table:
         si = made(args, "result", body.load_curve, max_radius=args.a_max, **n)
         c = si.nondimensional
     show = ["branch", "central_gap_over_h", "a_over_R", "c_over_R", "F_over_EhR", "delta_over_h"]
-    show += ["stable", "pull_off_load", "pull_off_displacement"]
-    extra: dict[str, Any] = {}
-    if si is not None:
-        cols, shown = si_shown(args, si, CONTACT_KEYS, {}, list(CONTACT_KEYS.values()))
-        extra.update(cols)
-        show += shown
     po, pd = c.pulloff, c.pulloff_displacement
-    return records(
+    return _table(
         args,
         c,
-        _parameters(args, rho, s, body),
-        extra,
+        si,
+        CONTACT_KEYS,
+        list(CONTACT_KEYS.values()),
+        (rho, s, body),
         f"load curve of a sphere: non-contact branch, then contact; pull-off "
         f"{po.F_pulloff_over_EhR:.6g} (load control, {po.mechanism}), "
         f"{pd.F_pulloff_over_EhR:.6g} (displacement control, {pd.mechanism})",
-        show,
+        [*show, "stable", "pull_off_load", "pull_off_displacement"],
     )

@@ -71,12 +71,18 @@ class SphereContact(Result):
     @property
     def F_over_piwR(self):  # noqa: N802 - Maugis' unit of force
         r"""The load in Maugis' unit :math:`\pi w R` (NaN without adhesion)."""
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return np.where(
-                np.asarray(self.sigma0_over_E) > 0,
-                np.asarray(self.F_over_EhR) / (np.pi * np.asarray(self.sigma0_over_E)),
-                np.nan,
-            )
+        return over_piwR(self.F_over_EhR, self.sigma0_over_E)
+
+
+def over_piwR(F_over_EhR, sigma0_over_E):  # noqa: N802 - Maugis' unit of force
+    r"""A force over ``E h R`` in Maugis' unit :math:`\pi w R = \pi (\sigma_0/E)\, E h R`.
+
+    NaN without adhesion (``sigma0 = 0``: no unit).
+    """
+    s = np.asarray(sigma0_over_E, float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        out = np.where(s > 0, np.asarray(F_over_EhR, float) / (np.pi * s), np.nan)
+    return out.item() if out.ndim == 0 else out
 
 
 def checked(**values: ArrayLike) -> tuple[bool, list[NDArray]]:

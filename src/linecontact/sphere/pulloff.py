@@ -23,7 +23,7 @@ from ..closed_forms.sphere import _sphere_maugis_parameter
 from ..errors import NoEquilibriumError, ParameterError
 from ..results import SI, Result, as_result
 from . import _branch as _b
-from .contact import INPUTS, SphereContact, checked, states
+from .contact import INPUTS, SphereContact, checked, over_piwR, states
 
 #: Contact radii in Maugis' unit :math:`(\pi w R^2/K)^{1/3}` where a minimum is looked for.
 GRID = np.geomspace(1e-7, 20.0, 31)
@@ -76,12 +76,7 @@ class SpherePullOff(Result):
     @property
     def F_pulloff_over_piwR(self):  # noqa: N802 - Maugis' unit of force
         r"""The pull-off in Maugis' unit :math:`\pi w R` (-3/2: JKR, -2: DMT)."""
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return np.where(
-                np.asarray(self.sigma0_over_E) > 0,
-                np.asarray(self.F_pulloff_over_EhR) / (np.pi * np.asarray(self.sigma0_over_E)),
-                np.nan,
-            )
+        return over_piwR(self.F_pulloff_over_EhR, self.sigma0_over_E)
 
 
 def _unit(rho: NDArray | float, s: NDArray | float) -> NDArray:
