@@ -100,7 +100,9 @@ _H_EDGE = 0.12
 _GROWTH = 0.10
 _FAR_END = 40.0
 _TOL = 1e-11
-_MAXIT = 40
+_MAXIT = 60
+#: A chord step is kept while the residual falls at least by this factor.
+_CHORD = 0.6
 
 
 # ---------------------------------------------------------------------------------------
@@ -199,14 +201,23 @@ def _constraint(mesh: _Mesh, tau: float) -> tuple[int, float, float]:
     return i, float((e * e - x[i]) / (x[i + 1] - x[i])), g
 
 
-def _state(mu: float, mesh: _Mesh, tau: float, zeta: NDArray, delta: float) -> _State | None:
-    """Newton on the gaps and the approach with ``tau`` held; ``None`` where it fails."""
+def _state(
+    mu: float, mesh: _Mesh, tau: float, zeta: NDArray, delta: float, lu: dict | None = None
+) -> _State | None:
+    """Newton on the gaps and the approach with ``tau`` held; ``None`` where it fails.
+
+    A chord iteration: the factorised Jacobian in ``lu`` (a neighbour's) is reused while
+    each step lowers the residual at least by :data:`_CHORD`, and refactorised here where it
+    does not; with a fresh one a step that does not lower the residual is halved (up to
+    eight times) before the solve gives up.
+    """
     from scipy.linalg import lu_factor, lu_solve
 
     c = mu**1.5
     half = 0.5 * mesh.mid**2
     i, w, g = _constraint(mesh, tau)
     zeta = zeta.copy()
+    lu = {} if lu is None else lu
 
     def residual(z: NDArray, d: float):
         P, dP = _law(z)
@@ -215,30 +226,41 @@ def _state(mu: float, mesh: _Mesh, tau: float, zeta: NDArray, delta: float) -> _
         return r, q, dP, max(float(np.max(np.abs(r) / z)), abs(q))
 
     r, q, dP, res = residual(zeta, delta)
+    fresh = False
     for _ in range(_MAXIT):
         if res <= _TOL:
             break
         if not np.isfinite(res):
             return None
-        J = -c * mesh.A * dP[None, :]
-        J[np.diag_indices_from(J)] += 1.0
-        lu = lu_factor(J, overwrite_a=True, check_finite=False)
-        y1 = lu_solve(lu, -r, check_finite=False)
-        y2 = lu_solve(lu, np.ones(zeta.size), check_finite=False)
+        if "f" not in lu:
+            J = -c * mesh.A * dP[None, :]
+            J[np.diag_indices_from(J)] += 1.0
+            f = lu_factor(J, overwrite_a=True, check_finite=False)
+            lu["f"], lu["y2"] = f, lu_solve(f, np.ones(zeta.size), check_finite=False)
+            fresh = True
+        y1 = lu_solve(lu["f"], -r, check_finite=False)
+        y2 = lu["y2"]
         dd = ((1.0 - w) * y1[i] + w * y1[i + 1] + q) / ((1.0 - w) * y2[i] + w * y2[i + 1])
         dz = y1 - dd * y2
         lam = 1.0
         while np.any(zeta + lam * dz <= 0.3 * zeta) and lam > 1e-4:
             lam *= 0.5
-        for _ in range(8):
+        for _ in range(8 if fresh else 1):
             new = residual(zeta + lam * dz, delta + lam * dd)
             if new[3] < res:
                 break
             lam *= 0.5
         else:
-            return None
+            if fresh:
+                return None
+            lu.clear()  # a neighbour's Jacobian: factorise here
+            continue
+        ratio = new[3] / res
         zeta, delta = zeta + lam * dz, delta + lam * dd
         r, q, dP, res = new
+        fresh = False
+        if ratio > _CHORD:
+            lu.clear()
     else:
         return None
     P = _law(zeta)[0]
@@ -290,6 +312,7 @@ class _Path:
     def __init__(self, mu: float, mesh: _Mesh) -> None:
         self.mu, self.mesh = mu, mesh
         self.states: list[_State] = []
+        self.lu: dict = {}  # the chord Newton's factorisation, shared along the path
 
     def solve(self, tau: float) -> _State | None:
         if self.states:
@@ -297,7 +320,7 @@ class _Path:
         else:
             g = _EDGE_GAP - tau
             z, d = g + 0.5 * self.mesh.mid**2, -g
-        s = _state(self.mu, self.mesh, tau, z, d)
+        s = _state(self.mu, self.mesh, tau, z, d, self.lu)
         if s is not None:
             self.states.append(s)
         return s
