@@ -67,7 +67,7 @@ MD_TABLE = {
 }
 
 
-@functools.lru_cache(maxsize=None)
+@functools.cache
 def pull_off(mu: float, m: float = 1.0) -> SphereLJPullOff:
     return sphere_lj_pull_off(mu, m=m)
 
@@ -200,7 +200,7 @@ def test_results_are_frozen_results():
     p = pull_off(1.0)
     assert isinstance(p, Result)
     with pytest.raises(AttributeError):
-        p.F_pulloff_over_piwR = 0.0  # type: ignore[misc]
+        p.F_pulloff_over_piwR = 0.0
     assert p.to_dict()["tabor_parameter"] == 1.0
     assert p.maugis_parameter == pytest.approx(1.1570, abs=1e-4)
 

@@ -43,9 +43,10 @@ rings' mid-points. The ring edges are a smooth map of a uniform grid: uniform (e
 :math:`h`) out to a radius beyond the contact where the curve ends, then growing
 geometrically (by 10 % an element of the coarse mesh) to :math:`L \ge 40`; beyond :math:`L` the
 attraction of the rigid gap is added to the load in closed form,
-:math:`-\tfrac83 \zeta(L)^{-2}` (its effect on the displacements inside is below
-:math:`10^{-7}`). :math:`h` resolves the edge of the contact, where the gap rises from
-:math:`z_0` to a few :math:`z_0` over about :math:`\mu_T^{-3/2}` (a JKR crack opening).
+:math:`-\tfrac83 \zeta(L)^{-2}` (about :math:`4 \times 10^{-6}` at :math:`L = 40`; its
+displacements inside are left out). :math:`h` resolves the edge of the contact, where
+the gap rises from :math:`z_0` to a few :math:`z_0` over about :math:`\mu_T^{-3/2}`
+(a JKR crack opening).
 
 **The curve** is followed by one monotone parameter :math:`\tau`: far away the gap at the
 centre (:math:`\tau = 1.5 - \zeta(0)`, from :math:`-4.5`), then the edge
