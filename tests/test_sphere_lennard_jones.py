@@ -1,0 +1,239 @@
+r"""The self-consistent Lennard-Jones sphere (:mod:`linecontact.sphere.lennard_jones`).
+
+Forces over :math:`\pi w R`, Tabor's :math:`\mu_T`. Each result is checked two ways.
+
+- **Rigid limit** (:math:`\mu_T \to 0`: Bradley and Derjaguin, -2). At :math:`\mu_T = 0` the
+  pull-off is -2.00000014 (estimate 7.4e-6) at a central gap 1.00003, and the curve's loads
+  are the closed form :math:`-\tfrac83(\zeta_0^{-2} - \zeta_0^{-8}/4)` at their central gaps.
+  The departure from -2 grows as :math:`\mu_T^{3/2}` (the elastic term's factor): 1.03e-3 at
+  :math:`\mu_T = 0.01`, 5.32e-3 at 0.03 (exponent 1.50).
+- **JKR limit** (-1.5). The departure falls slowly: 0.0836, 0.0510, 0.0257 at
+  :math:`\mu_T` = 2, 3, 5 (local exponents 1.22 and 1.34; the edge zone over the contact
+  shrinks as :math:`\mu_T^{-2}`, so the exponent still rises). Independently, the radius where
+  the gap is :math:`1.5 z_0` at pull-off tends to JKR's contact radius at pull-off,
+  :math:`(9\pi/8)^{1/3} \mu_T^{1/2}`: 0.973, 0.980, 0.989 of it at :math:`\mu_T` = 2, 3, 5.
+- **Against the Maugis--Dugdale sphere** at the matched :math:`\lambda = 1.1570\,\mu_T`
+  (:func:`linecontact.sphere.sphere_pull_off`); Greenwood (1997) finds it within a few per
+  cent of the Lennard-Jones pull-off. Measured (default mesh)::
+
+      mu_T    lambda   F_LJ           estimate   F_MD          F_MD/F_LJ - 1
+      0.01    0.0116   -1.9989695     7.4e-06    -1.9978707    -0.055 %
+      0.03    0.0347   -1.9946800     7.4e-06    -1.9891124    -0.279 %
+      0.1     0.1157   -1.9689564     7.8e-06    -1.9398602    -1.48 %
+      0.3     0.3471   -1.8701878     1.0e-05    -1.7887232    -4.36 %
+      0.5     0.5785   -1.7874827     1.5e-05    -1.6904829    -5.43 %
+      1       1.157    -1.6706648     2.2e-05    -1.5822725    -5.29 %
+      2       2.314    -1.5835974     2.5e-05    -1.5268351    -3.58 %
+      3       3.471    -1.5510287     1.4e-05    -1.5127690    -2.47 %
+      5       5.785    -1.5257171     5.9e-06    -1.5047803    -1.37 %
+
+  The Dugdale step is always the weaker (less tensile), most so (5.4 %) about
+  :math:`\mu_T = 0.5`; it tends to the Lennard-Jones pull-off in both limits.
+- **Refinement**: the estimate is the Richardson correction, an honest and generous bound:
+  the result at ``m = 1`` differs from that at ``m = 4`` (four times finer rings) by 1.0e-8
+  (:math:`\mu_T = 0.1`) and 4.4e-9 (:math:`\mu_T = 1`) against estimates of 7.8e-6 and
+  2.2e-5. Independently, the minima on the nested meshes converge at second order (the ratio
+  of successive differences is 4.0).
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+
+import numpy as np
+import pytest
+
+from linecontact.errors import ConvergenceError, ParameterError
+from linecontact.results import Result
+from linecontact.sphere import lennard_jones as lj
+from linecontact.sphere import sphere_pull_off
+from linecontact.sphere.lennard_jones import (
+    MU_MAX,
+    SphereLJPullOff,
+    sphere_lj_curve,
+    sphere_lj_pull_off,
+)
+
+JKR_RADIUS = (9 * math.pi / 8) ** (1 / 3)  # JKR's contact radius at pull-off over mu^(1/2)
+
+#: mu_T: (F_LJ, F_MD/F_LJ - 1), measured (the table above)
+MD_TABLE = {
+    0.01: (-1.9989695, -0.00055),
+    0.1: (-1.9689564, -0.0148),
+    0.3: (-1.8701878, -0.0436),
+    1.0: (-1.6706648, -0.0529),
+    3.0: (-1.5510287, -0.0247),
+}
+
+
+@functools.cache
+def pull_off(mu: float, m: float = 1.0) -> SphereLJPullOff:
+    return sphere_lj_pull_off(mu, m=m)
+
+
+def md_pull_off(mu: float) -> float:
+    lam = 1.1570 * mu
+    rho = 1e6
+    s = math.sqrt((lam / 2) ** 3 * 16 * math.pi / (9 * rho))
+    return float(sphere_pull_off(rho, s).F_pulloff_over_piwR)
+
+
+# ---------------------------------------------------------------------------------------
+# the rigid limit
+
+
+def test_rigid_sphere_pulls_off_at_minus_two():
+    p = pull_off(0.0)
+    assert abs(p.F_pulloff_over_piwR + 2.0) < 1e-6
+    assert abs(p.F_pulloff_over_piwR + 2.0) < 3 * p.error_estimate
+    assert abs(p.central_gap_over_z0 - 1.0) < 1e-4  # Derjaguin: the minimum where P(g0) = 0
+    assert p.converged and p.maugis_parameter == 0.0
+
+
+def test_rigid_curve_is_the_derjaguin_closed_form():
+    c = sphere_lj_curve(0.0, F_max=0.5)
+    g = c.central_gap_over_z0
+    exact = -(8 / 3) * (g**-2 - g**-8 / 4)
+    near = g >= 0.95  # to past the pull-off (deeper, the repulsion's loads of 1e2 to 1e5)
+    assert np.count_nonzero(near) >= 15
+    err = np.max(np.abs(c.F_over_piwR - exact)[near])
+    assert err < 3e-4  # one mesh (h = 0.05): 2.4e-4 measured
+    finer = sphere_lj_curve(0.0, F_max=0.5, m=2.0)
+    g = finer.central_gap_over_z0
+    near = g >= 0.95
+    err2 = np.max(np.abs(finer.F_over_piwR - -(8 / 3) * (g**-2 - g**-8 / 4))[near])
+    assert 3.5 < err / err2 < 4.5  # second order
+    assert abs(c.F_pulloff_over_piwR + 2.0) < 1e-4
+    assert np.isnan(c.F_jump_in_over_piwR)
+
+
+def test_small_tabor_parameter_tends_to_the_rigid_pull_off():
+    d1 = pull_off(0.01).F_pulloff_over_piwR + 2.0
+    d3 = pull_off(0.03).F_pulloff_over_piwR + 2.0
+    assert 0 < d1 < 1.1e-3 and 0 < d3 < 5.5e-3
+    exponent = math.log(d3 / d1) / math.log(3.0)
+    assert 1.4 < exponent < 1.6  # the elastic term's factor mu^(3/2)
+
+
+# ---------------------------------------------------------------------------------------
+# the JKR limit
+
+
+def test_large_tabor_parameter_tends_to_jkr():
+    mus = (2.0, 3.0, 5.0)
+    d = [-1.5 - pull_off(mu).F_pulloff_over_piwR for mu in mus]
+    assert d[0] > d[1] > d[2] > 0  # more tensile than JKR, and closer as mu grows
+    assert d[2] < 0.03
+    for k in range(2):
+        exponent = -math.log(d[k + 1] / d[k]) / math.log(mus[k + 1] / mus[k])
+        assert 1.1 < exponent < 1.5
+
+
+def test_edge_at_pull_off_tends_to_the_jkr_radius():
+    ratio = [pull_off(mu).edge_radius / (JKR_RADIUS * math.sqrt(mu)) for mu in (2.0, 3.0, 5.0)]
+    assert 0.96 < ratio[0] < ratio[1] < ratio[2] < 1.0
+    assert ratio[2] > 0.985
+
+
+# ---------------------------------------------------------------------------------------
+# against Maugis-Dugdale at the matched lambda
+
+
+@pytest.mark.parametrize("mu", sorted(MD_TABLE))
+def test_against_maugis_dugdale_at_matched_lambda(mu):
+    p = pull_off(mu)
+    F_lj, rel = MD_TABLE[mu]
+    assert abs(p.F_pulloff_over_piwR - F_lj) < 1e-6
+    measured = md_pull_off(mu) / p.F_pulloff_over_piwR - 1.0
+    assert abs(measured - rel) < 2e-4
+    assert -0.06 < measured < 0.0  # within a few per cent, the Dugdale step the weaker
+
+
+# ---------------------------------------------------------------------------------------
+# refinement
+
+
+@pytest.mark.parametrize("mu", [0.1, 1.0])
+def test_error_estimate_is_honest(mu):
+    p, finer = pull_off(mu), pull_off(mu, 4.0)
+    assert abs(p.F_pulloff_over_piwR - finer.F_pulloff_over_piwR) < 3 * p.error_estimate
+    assert finer.error_estimate < p.error_estimate / 8  # second order: 16 times less
+    assert finer.n_rings > 3 * p.n_rings
+
+
+@pytest.mark.parametrize("mu", [0.0, 1.0])
+def test_minima_converge_at_second_order(mu):
+    p, q = pull_off(mu), pull_off(mu, 2.0)
+    assert q.F_coarse == pytest.approx(p.F_fine, abs=1e-8)  # the nested meshes (to Brent's)
+    ratio = (p.F_coarse - p.F_fine) / (q.F_coarse - q.F_fine)
+    assert 3.7 < ratio < 4.3
+
+
+# ---------------------------------------------------------------------------------------
+# the curve
+
+
+def test_curve_is_s_shaped_at_large_tabor_parameter():
+    c = sphere_lj_curve(3.0)
+    p = pull_off(3.0)
+    assert abs(c.F_pulloff_over_piwR - p.F_pulloff_over_piwR) < 10 * p.error_estimate
+    assert np.min(c.F_over_piwR) >= c.F_pulloff_over_piwR - 1e-12
+    assert -0.5 < c.F_jump_in_over_piwR < 0.0  # the load-control jump-in
+    assert c.F_over_piwR[-1] >= 1.0
+    # under load control: stable far out, unstable, stable (jump-in), unstable, stable
+    flips = np.count_nonzero(np.diff(c.stable.astype(int)))
+    assert flips >= 3
+    assert c.stable[-1] and c.stable_displacement[-1] and c.stable_displacement[0]
+    assert not c.stable[0]
+    assert np.all(np.diff(c.contact_radius[c.contact_radius > 0]) >= -1e-9)
+
+
+def test_curve_without_s_shape_at_small_tabor_parameter():
+    c = sphere_lj_curve(0.1)
+    assert np.isnan(c.F_jump_in_over_piwR)
+    assert np.count_nonzero(np.diff(c.stable.astype(int))) == 1  # only the pull-off
+    assert np.all(c.stable_displacement)
+
+
+def test_results_are_frozen_results():
+    p = pull_off(1.0)
+    assert isinstance(p, Result)
+    with pytest.raises(AttributeError):
+        p.F_pulloff_over_piwR = 0.0
+    assert p.to_dict()["tabor_parameter"] == 1.0
+    assert p.maugis_parameter == pytest.approx(1.1570, abs=1e-4)
+
+
+# ---------------------------------------------------------------------------------------
+# bad input
+
+
+@pytest.mark.parametrize("bad", [-0.1, MU_MAX * 1.01, math.nan, math.inf, "x", None])
+def test_bad_tabor_parameter_is_refused(bad):
+    with pytest.raises(ParameterError, match=r"tabor_parameter .*\[0, 5") as e:
+        sphere_lj_pull_off(bad)
+    assert e.value.parameter == "tabor_parameter"
+    assert isinstance(e.value, ValueError)
+    with pytest.raises(ParameterError, match="tabor_parameter"):
+        sphere_lj_curve(bad)
+
+
+@pytest.mark.parametrize("bad", [0.1, 100.0, math.nan, "fine"])
+def test_bad_resolution_is_refused(bad):
+    with pytest.raises(ParameterError, match=r"m must be a number in \[0.25, 16\]") as e:
+        sphere_lj_pull_off(1.0, m=bad)
+    assert e.value.parameter == "m"
+
+
+@pytest.mark.parametrize("bad", [-1.0, 11.0, math.nan, "big"])
+def test_bad_curve_end_is_refused(bad):
+    with pytest.raises(ParameterError, match=r"F_max .*\[0, 10\]") as e:
+        sphere_lj_curve(1.0, F_max=bad)
+    assert e.value.parameter == "F_max"
+
+
+def test_a_solve_that_does_not_converge_raises_naming_the_parameters(monkeypatch):
+    monkeypatch.setattr(lj, "_MAXIT", 1)
+    with pytest.raises(ConvergenceError, match=r"tabor_parameter=1\.0.*tau="):
+        sphere_lj_pull_off(1.0)
