@@ -179,7 +179,8 @@ API_GROUPS: list[tuple[str, str, list[str]]] = [
         "The sphere: an AFM tip or a colloidal probe",
         "The Maugis-Dugdale sphere in the wire's input groups, force over ``E h R``: its "
         "contact, its contact under a load, its pull-offs and load curve; which model holds, "
-        "and the COS alpha fitted to its curves (:doc:`sphere`). In SI units the body "
+        "and the COS alpha fitted to its curves; the self-consistent Lennard-Jones sphere "
+        "(:doc:`sphere`). In SI units the body "
         "``Sphere`` (forces in N), a ``Body`` as the ``Cylinder`` is.",
         [
             "Sphere",
@@ -191,10 +192,14 @@ API_GROUPS: list[tuple[str, str, list[str]]] = [
             "sphere_models",
             "cos_alpha",
             "maugis_parameter_of_cos_alpha",
+            "sphere_lj_pull_off",
+            "sphere_lj_curve",
             "SphereContact",
             "SpherePullOff",
             "SphereLoadCurve",
             "SphereModels",
+            "SphereLJPullOff",
+            "SphereLJCurve",
         ],
     ),
     (

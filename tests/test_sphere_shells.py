@@ -81,9 +81,11 @@ def test_the_groups_give_the_nondimensional_solvers_numbers(capsys):
 @pytest.mark.parametrize(
     ("argv", "flag"),
     [
-        (["pulloff", "--body", "sphere", *SI, "--law", "lennard-jones"], "--law"),
-        (["pulloff", "--body", "sphere", "--R-over-h", "10", "--sigma0-over-E", "0.1",
+        (["normal", "--body", "sphere", *SI, "--law", "lennard-jones", "--force", "0"], "--law"),
+        (["curve", "--body", "sphere", "--R-over-h", "10", "--sigma0-over-E", "0.1",
           "--law", "lennard-jones"], "--law"),
+        (["pulloff", "--body", "sphere", "--R-over-h", "1e8", "--sigma0-over-E", "0.1",
+          "--law", "lennard-jones"], "--law"),  # Tabor's parameter over 5
         (["pulloff", "--body", "sphere", *SI, "--cross-section", "hexagon"], "--cross-section"),
         (["pulloff", "--body", "sphere", *SI, "--corner-radius", "1e-9"], "--corner-radius"),
         (["pulloff", "--body", "sphere", *SI, "--length", "1e-6"], "--length"),
@@ -127,9 +129,34 @@ def test_python_refuses_a_wires_problem_and_another_law_naming_the_pair():
     with pytest.raises(AttributeError, match="push is not written for a sphere"):
         tip.push  # noqa: B018 - the attribute's refusal is the test
     lj = lc.Sphere.from_modulus(1e-6, 50e9, adhesion=lc.LennardJones(0.1, 3e-10))
-    with pytest.raises(ValueError, match="pull_off is not written for a sphere under the lennard"):
-        lj.pull_off()
+    with pytest.raises(ValueError, match="contact is not written for a sphere under the lennard"):
+        lj.contact(load=0.0)
+    with pytest.raises(ValueError, match="under displacement control is not written"):
+        lj.pull_off(control="displacement")
     with pytest.raises(ValueError, match="give exactly one of load"):
         tip.contact()
     with pytest.raises(lc.NoEquilibriumError, match=r"load = -1e-06 N is below the pull-off"):
         tip.contact(load=[0.0, -1e-6])
+
+
+def test_the_lennard_jones_spheres_pull_off_is_one_number_in_python_and_the_cli(capsys):
+    tip = lc.Sphere.from_modulus(20e-9, 50e9, work_of_adhesion=0.1, equilibrium_spacing=3e-10)
+    lj = tip.under(lc.LennardJones)
+    want = lj.pull_off()
+    si = ["--radius", "20e-9", "--modulus", "50e9", "--work-of-adhesion", "0.1", "--z0", "3e-10"]
+    rec = _cli(capsys, ["pulloff", "--body", "sphere", "--law", "lennard-jones", *si])[0]
+    assert rec["F_pulloff_N"] == want.pull_off_force
+    # in pi w R: the Lennard-Jones sphere's own number, and below the matched Dugdale step's
+    assert want.pull_off_force / (np.pi * 0.1 * 20e-9) == pytest.approx(
+        want.nondimensional.F_pulloff_over_piwR, rel=1e-12
+    )
+    assert want.pull_off_force < tip.pull_off().pull_off_force < 0
+    nd = ["--R-over-h", str(tip.R_over_h), "--sigma0-over-E", str(tip.sigma0_over_E)]
+    capsys.readouterr()
+    main(["pulloff", "--body", "sphere", "--law", "lennard-jones", *nd, "--json"])
+    doc = json.loads(capsys.readouterr().out)
+    assert doc["parameters"]["tabor_parameter"] == pytest.approx(tip.tabor_parameter, rel=1e-12)
+    rec = doc["results"][0]
+    assert rec["F_pulloff_over_piwR"] == pytest.approx(
+        want.nondimensional.F_pulloff_over_piwR, rel=1e-9
+    )

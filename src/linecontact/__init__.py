@@ -23,7 +23,8 @@ length over ``E h``, stresses over ``E``; compressive load positive):
 - :func:`sphere_contact`, :func:`sphere_contact_for_load`, :func:`sphere_pull_off`,
   :func:`sphere_load_curve` -- the Maugis--Dugdale sphere (an AFM tip, a colloidal probe:
   :mod:`linecontact.sphere`, force over ``E h R``); in SI units the :class:`Sphere` (forces
-  in N), a :class:`Body` as the :class:`Cylinder` is;
+  in N), a :class:`Body` as the :class:`Cylinder` is; :func:`sphere_lj_pull_off`,
+  :func:`sphere_lj_curve` -- the self-consistent Lennard-Jones sphere (Greenwood 1997);
 - :mod:`linecontact.closed_forms` -- closed forms (Hertz, JKR, Maugis--Dugdale, Eq. 14; the
   sphere's Hertz, JKR, DMT);
 - :mod:`linecontact.sie` -- the Gauss--Chebyshev singular-integral core;
@@ -100,6 +101,8 @@ with _imports_interruptible():
     )
     from .sphere import (
         SphereContact,
+        SphereLJCurve,
+        SphereLJPullOff,
         SphereLoadCurve,
         SphereModels,
         SpherePullOff,
@@ -107,6 +110,8 @@ with _imports_interruptible():
         maugis_parameter_of_cos_alpha,
         sphere_contact,
         sphere_contact_for_load,
+        sphere_lj_curve,
+        sphere_lj_pull_off,
         sphere_load_curve,
         sphere_models,
         sphere_pull_off,
@@ -134,6 +139,10 @@ __all__ = [
     "sphere_load_curve",
     "sphere_pull_off",
     "SphereModels",
+    "SphereLJCurve",
+    "SphereLJPullOff",
+    "sphere_lj_curve",
+    "sphere_lj_pull_off",
     "cos_alpha",
     "maugis_parameter_of_cos_alpha",
     "sphere_models",

@@ -19,7 +19,7 @@ from numpy.typing import ArrayLike, NDArray
 from .. import sphere as _sphere
 from ..closed_forms.sphere import sphere_maugis_parameter
 from ..errors import NoEquilibriumError
-from ..laws._values import Dugdale
+from ..laws._values import Dugdale, Law, LennardJones
 from ..results import Result
 from ..units import Scales, to_si
 from ._body import Body
@@ -63,14 +63,15 @@ class SpherePullOffSI(Result):
     pull_off_force : float
         [N], negative (0 without adhesion).
     contact_radius_at_pull_off, adhesive_zone_radius_at_pull_off : float
-        [m] (``a = 0``: it lets go at zero radius).
+        [m] (``a = 0``: it lets go at zero radius). Under the Lennard-Jones law: where the
+        gap crosses ``z0`` and ``1.5 z0``.
     approach_at_pull_off : float
         [m].
     mechanism : str
-        As in :class:`~linecontact.sphere.SpherePullOff`.
+        As in :class:`~linecontact.sphere.SpherePullOff`; ``"lennard-jones"`` under that law.
     control : str
         ``"load"`` or ``"displacement"``.
-    nondimensional : SpherePullOff
+    nondimensional : SpherePullOff or SphereLJPullOff
     """
 
     pull_off_force: NDArray | float
@@ -79,7 +80,7 @@ class SpherePullOffSI(Result):
     approach_at_pull_off: NDArray | float
     mechanism: NDArray | str
     control: str
-    nondimensional: _sphere.SpherePullOff = field(repr=False)
+    nondimensional: Any = field(repr=False)  # SpherePullOff, or SphereLJPullOff
 
 
 @dataclass(frozen=True)
@@ -127,7 +128,7 @@ class Sphere(Body):
     #: The problems of a sphere (and the laws they are written for).
     WRITTEN: ClassVar[dict[str, tuple[type, ...]]] = {
         "contact": (Dugdale,),
-        "pull_off": (Dugdale,),
+        "pull_off": (Dugdale, LennardJones),
         "load_curve": (Dugdale,),
     }
 
@@ -206,9 +207,24 @@ class Sphere(Body):
             nondimensional=r,
         )
 
+    def under(self, law: type[Law]) -> Sphere:
+        """The same sphere with the same adhesion (the same ``w``, the same peak) under ``law``."""
+        if not (isinstance(law, type) and issubclass(law, Law)):
+            raise ValueError(f"law must be a law's class (Dugdale or LennardJones), got {law!r}")
+        return self._made(
+            self.radius, self.modulus, self.adhesion.same_adhesion(law), self.dundurs_beta
+        )
+
     def pull_off(self, control: Literal["load", "displacement"] = "load") -> SpherePullOffSI:
-        """The pull-off [N] under load or displacement control."""
+        """The pull-off [N] under load or displacement control.
+
+        Under the Lennard-Jones law, the self-consistent sphere
+        (:func:`linecontact.sphere.lennard_jones.sphere_lj_pull_off`) under load control, for
+        Tabor's parameter up to its ``MU_MAX``.
+        """
         self._written("pull_off")
+        if isinstance(self.adhesion, LennardJones):
+            return self._pull_off_lj(control)
         p = _sphere.sphere_pull_off(self.R_over_h, self.sigma0_over_E, control=control)
         si = to_si(p, self._scales())
         return SpherePullOffSI(
@@ -219,6 +235,35 @@ class Sphere(Body):
             mechanism=p.mechanism,
             control=control,
             nondimensional=p,
+        )
+
+    def _pull_off_lj(self, control: str) -> SpherePullOffSI:
+        from ..sphere import lennard_jones as _lj
+
+        if control != "load":
+            raise ValueError(
+                f"the pull-off under {control} control is not written for a sphere under the "
+                "lennard-jones law: under load control it is"
+            )
+        mu = self.tabor_parameter
+        if mu > _lj.MU_MAX:
+            raise ValueError(
+                f"Tabor's parameter of this sphere is {mu:.4g} (radius={self.radius!r} m, "
+                f"modulus={self.modulus!r} Pa, adhesion={self.adhesion!r}): the Lennard-Jones "
+                f"sphere is solved up to {_lj.MU_MAX:g}; use the Dugdale law (any value), or a "
+                f"radius below {self.radius * (_lj.MU_MAX / mu) ** 3:.3g} m"
+            )
+        r = _lj.sphere_lj_pull_off(mu)
+        z0 = _S_LJ * self.adhesion_range
+        root = (self.radius * z0) ** 0.5
+        return SpherePullOffSI(
+            pull_off_force=r.F_pulloff_over_piwR * np.pi * self.work_of_adhesion * self.radius,
+            contact_radius_at_pull_off=r.contact_radius * root,
+            adhesive_zone_radius_at_pull_off=r.edge_radius * root,
+            approach_at_pull_off=r.approach_over_z0 * z0,
+            mechanism="lennard-jones",
+            control="load",
+            nondimensional=r,
         )
 
     def load_curve(

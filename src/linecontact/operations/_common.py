@@ -226,12 +226,16 @@ def is_sphere(args: Any) -> bool:
 
 
 def sphere_inputs(args: Any) -> None:
-    """Refuse what a sphere has not: the Lennard-Jones law, ``--length``, a cross-section."""
-    if getattr(args, "law", None) == "lennard-jones":
+    """Refuse what a sphere has not: ``--length``, a cross-section, a law but Dugdale's.
+
+    Under the Lennard-Jones law its pull-off is written, not its contact and load curve.
+    """
+    if getattr(args, "law", None) == "lennard-jones" and args.command != "pulloff":
         raise ParameterError(
             "--law",
-            "--law lennard-jones is not written for a sphere (--body sphere): its contact, "
-            "pull-off and load curve are the Dugdale law's (--law dugdale)",
+            f"--law lennard-jones is not written for a sphere's {args.command} (--body "
+            "sphere): its pull-off is; its contact and load curve are the Dugdale law's "
+            "(--law dugdale)",
         )
     if getattr(args, "length", None) is not None:
         raise ParameterError(
@@ -417,6 +421,8 @@ def cylinder(args: Any, range_flag: str = "--h") -> Any:
         sphere_inputs(args)
     body = _cylinder(args, range_flag)
     if not isinstance(body, Cylinder):  # a sphere
+        if getattr(args, "law", None) == "lennard-jones":
+            return made(args, "sphere", body.under, LennardJones)  # type: ignore[attr-defined]
         return body
     cyl = body
     name = getattr(args, "cross_section", None) or "round"
@@ -573,7 +579,7 @@ def groups(args: Any) -> tuple[float, float, Cylinder | None]:
             _check_lennard_jones_groups(args.R_over_h, args.sigma0_over_E)
         return args.R_over_h, args.sigma0_over_E, None
     cyl = cylinder(args)
-    if getattr(args, "law", None) == "lennard-jones":
+    if getattr(args, "law", None) == "lennard-jones" and isinstance(cyl, Cylinder):
         # its domain said for this cylinder, in SI units (the pull-off: every mu)
         cyl._check_lennard_jones(pull_off=getattr(args, "command", None) == "pulloff")
     return cyl.R_over_h, cyl.sigma0_over_E, cyl

@@ -16,6 +16,7 @@ import numpy as np
 
 from ..domain import check_si
 from ..errors import ParameterError
+from ..materials import MAUGIS_STRENGTH
 from ..output import Table
 from ..sphere import sphere_contact, sphere_contact_for_load, sphere_load_curve, sphere_pull_off
 from ._common import half_widths, si_parameters
@@ -68,6 +69,8 @@ def _table(
 
 def pulloff(args: Inputs, rho: float, s: float, body: Any) -> Table:
     """``pulloff --body sphere``: the load-controlled pull-off, in N with SI inputs."""
+    if args.law == "lennard-jones":
+        return _pulloff_lj(args, rho, s, body)
     si = None if body is None else made(args, "result", body.pull_off)
     p = sphere_pull_off(rho, s) if si is None else si.nondimensional
     return _table(
@@ -80,6 +83,38 @@ def pulloff(args: Inputs, rho: float, s: float, body: Any) -> Table:
         "pull-off of a sphere under load control (Maugis-Dugdale; F/(pi w R): -2 DMT, -1.5 JKR)",
         ["F_pulloff_over_EhR", "F_pulloff_over_piwR", "a_over_R_at_pulloff", "mechanism"],
         drop=("control",),
+    )
+
+
+def _pulloff_lj(args: Inputs, rho: float, s: float, body: Any) -> Table:
+    """The self-consistent Lennard-Jones sphere's pull-off (Tabor's parameter up to 5)."""
+    from ..sphere import lennard_jones as _lj
+
+    if s <= 0:
+        raise ParameterError(
+            "--sigma0-over-E", "the Lennard-Jones law needs adhesion: --sigma0-over-E > 0"
+        )
+    mu = float(np.cbrt(rho * s * s / MAUGIS_STRENGTH**3))  # (R w^2/(E^2 z0^3))^(1/3)
+    if mu > _lj.MU_MAX:
+        raise ParameterError(
+            "--law",
+            f"--law lennard-jones: Tabor's parameter (R w^2/(E^2 z0^3))^(1/3) of this sphere "
+            f"is {mu:.4g}, over {_lj.MU_MAX:g}, the largest the Lennard-Jones sphere is "
+            "solved for: use --law dugdale (any value)",
+        )
+    si = None if body is None else made(args, "result", body.pull_off)
+    p = _lj.sphere_lj_pull_off(mu) if si is None else si.nondimensional
+    return _table(
+        args,
+        p,
+        si,
+        PULL_OFF_KEYS,
+        ["F_pulloff_N"],
+        (rho, s, body),
+        "pull-off of a sphere under the Lennard-Jones law (self-consistent, Greenwood 1997; "
+        "load control; F/(pi w R): -2 rigid, -1.5 JKR)",
+        ["F_pulloff_over_piwR", "error_estimate", "maugis_parameter"],
+        drop=("F_coarse", "F_fine", "converged"),
     )
 
 

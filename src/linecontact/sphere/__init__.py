@@ -12,7 +12,9 @@ radius ``a/R``), the approach over ``h``, the force [N] over ``E h R``; Maugis' 
 - :func:`sphere_load_curve` -- the curve through both branches, the pull-offs marked;
 - :func:`sphere_models` -- which model holds (Hertz, DMT, JKR against Maugis--Dugdale);
   :func:`cos_alpha`, :func:`maugis_parameter_of_cos_alpha` -- the COS transition parameter
-  fitted to the library's own curves.
+  fitted to the library's own curves;
+- :func:`sphere_lj_pull_off`, :func:`sphere_lj_curve` -- the self-consistent Lennard-Jones
+  sphere (Greenwood 1997) in Tabor's parameter, up to ``lennard_jones.MU_MAX``.
 
 The closed forms of its limits are in :mod:`linecontact.closed_forms.sphere`.
 """
@@ -21,10 +23,15 @@ from __future__ import annotations
 
 from .contact import SphereContact, sphere_contact
 from .curve import SphereLoadCurve, sphere_load_curve
+from .lennard_jones import SphereLJCurve, SphereLJPullOff, sphere_lj_curve, sphere_lj_pull_off
 from .models import SphereModels, cos_alpha, maugis_parameter_of_cos_alpha, sphere_models
 from .pulloff import SpherePullOff, sphere_contact_for_load, sphere_pull_off
 
 __all__ = [
+    "SphereLJCurve",
+    "SphereLJPullOff",
+    "sphere_lj_curve",
+    "sphere_lj_pull_off",
     "SphereModels",
     "cos_alpha",
     "maugis_parameter_of_cos_alpha",
