@@ -690,7 +690,8 @@ OPERATIONS = {
         "pull-off force under load control and its mechanism",
         "The most tensile load a contact carries (paper Eq 14 and the snap-off) and its "
         "mechanism, zero-width or snap-off; of a faceted wire (--cross-section hexagon) on "
-        "its facet, with the facet's limits (docs/faceted.md). One record.",
+        "its facet, with the facet's limits (docs/faceted.md); of a sphere (--body sphere: "
+        "an AFM tip, in N; docs/sphere.md). One record.",
         (
             "linecontact pulloff --R-over-h 100 --sigma0-over-E 0.01",
             "linecontact pulloff --radius 50e-9 --cylinder-material SiO2 --substrate-material Si "
@@ -698,6 +699,8 @@ OPERATIONS = {
             "linecontact pulloff --R-over-h 100 --sigma0-over-E 0.01 --law lennard-jones",
             "linecontact pulloff --cross-section hexagon --corner-radius 5e-9 --radius 50e-9 "
             "--modulus 50e9 --work-of-adhesion 0.1 --z0 0.3e-9 --json",
+            "linecontact pulloff --body sphere --radius 20e-9 --cylinder-material Si "
+            "--substrate-material SiO2 --work-of-adhesion 0.1 --z0 0.3e-9",
         ),
         (*group_parameters(), *_SI, _LAW, body_parameter(), *_SHAPE),
         _cmd_pulloff,
