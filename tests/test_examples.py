@@ -76,6 +76,13 @@ def test_sweep_pulloff(tmp_path):
         ("cyclic_loss.py", ["full slip at T* =", "J/m per cycle"]),
         ("lennard_jones_curve.py", ["pull-off F/(Eh): Maugis-Dugdale", "Lennard-Jones"]),
         (
+            "afm_tip.py",
+            [
+                "    10   0.129  0.111  transition  dmt       -1.9306   +0.223   -0.036",
+                "  1000   0.598  0.517  transition  jkr       -1.6842",
+            ],
+        ),
+        (
             "faceted_wire.py",
             [
                 "facet width 50.00 nm, pull-off  -17.107 N/m (corner-pinned",
