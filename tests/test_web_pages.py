@@ -563,6 +563,14 @@ def test_the_push_page_takes_the_works_of_adhesion_and_a_tip(server, page):
         ),
         ("lennard-jones", {}, "pulloff", [("result.pull_off_force", "F_pulloff_N_per_m")]),
         ("sphere", {}, "pulloff", [("result.pull_off_force", "F_pulloff_N")]),
+        ("sphere-contact", {}, "normal", [("result.contact_radius", "a_m")]),
+        (
+            "sphere-contact",
+            {"force": ("2, 20", "nN"), "radius": ("0.1", "um")},
+            "normal",
+            [("result.contact_radius", "a_m"), ("result.approach", "delta_m")],
+        ),
+        ("sphere-curve", {}, "curve", [("result.load", "F_N"), ("result.approach", "delta_m")]),
         (
             "sphere",
             {"radius": ("1", "um"), "work_of_adhesion": ("50", "mJ/m^2")},

@@ -26,6 +26,7 @@ UNITS: dict[str, list[tuple[str, float]]] = {
     "stress": [("MPa", 1e6), ("GPa", 1e9), ("Pa", 1.0)],
     "work": [("J/m^2", 1.0), ("mJ/m^2", 1e-3)],
     "force": [("N/m", 1.0), ("mN/m", 1e-3), ("nN/um", 1e-3)],
+    "newton": [("nN", 1e-9), ("uN", 1e-6), ("N", 1.0)],
     "energy": [("J/m", 1.0), ("nJ/m", 1e-9), ("pJ/m", 1e-12)],
     "none": [("", 1.0)],
 }
@@ -89,6 +90,13 @@ _LENGTH = _f("length", "wire length L (optional)", "length", "", unit="um", opti
 _SHAPE = [
     _f("cross_section", "cross-section", "choice", "round"),
     _f("corner_radius", "corner radius r_c (a polygon's; 0: sharp)", "length", "", optional=True),
+]
+
+#: A tip's fields: the wire's, its material a tip's (Si) and its radius 20 nm.
+_TIP = [
+    _f("cylinder_material", "tip material", "material", "Si", alt="elastic:presets"),
+    *[f for f in _WIRE if f["name"] not in ("cylinder_material", "radius")],
+    _f("radius", "tip radius R", "length", "2e-08"),
 ]
 
 #: The pages: path -> title, what it answers, command, fields, fixed parameters, plot.
@@ -229,12 +237,36 @@ PAGES: dict[str, dict[str, Any]] = {
         "command": "pulloff",
         "fixed": {"body": "sphere"},
         "alts": _WIRE_ALTS,
-        "fields": [
-            _f("cylinder_material", "tip material", "material", "Si", alt="elastic:presets"),
-            *[f for f in _WIRE if f["name"] not in ("cylinder_material", "radius")],
-            _f("radius", "tip radius R", "length", "2e-08"),
-        ],
+        "fields": _TIP,
         "plot": None,
+    },
+    "sphere-contact": {
+        "title": "An AFM tip or a colloidal probe: contact radius under a load",
+        "question": "How large is the contact of a sphere under these loads?",
+        "command": "normal",
+        "fixed": {"body": "sphere"},
+        "alts": _WIRE_ALTS,
+        "fields": [
+            *_TIP,
+            _f("force", "loads F (comma-separated)", "newton", "0,1e-9,5e-9,1e-8", many=True),
+        ],
+        "plot": {
+            "x": {"key": "F_N", "kind": "newton", "label": "load F"},
+            "ys": [{"key": "a_m", "kind": "length", "label": "contact radius a"}],
+        },
+    },
+    "sphere-curve": {
+        "title": "An AFM tip or a colloidal probe: the load curve",
+        "question": "How does the load of a sphere change with its approach, and where does "
+        "it pull off?",
+        "command": "curve",
+        "fixed": {"body": "sphere"},
+        "alts": _WIRE_ALTS,
+        "fields": list(_TIP),
+        "plot": {
+            "x": {"key": "delta_m", "kind": "length", "label": "approach delta"},
+            "ys": [{"key": "F_N", "kind": "newton", "label": "load F"}],
+        },
     },
     "lennard-jones": {
         "title": "The Lennard-Jones law: pull-off",
@@ -299,6 +331,7 @@ SI_UNIT = {
     "stress": "Pa",
     "work": "J/m^2",
     "force": "N/m",
+    "newton": "N",
     "energy": "J/m",
     "none": "",
     "material": "",

@@ -338,6 +338,18 @@
         maugis(r.maugis_parameter),
       ];
     },
+    "sphere-contact"(doc) {
+      const rs = doc.results || [];
+      const list = rs.map((r) => [`under F = `, val("F_N", r.F_N, newtons(r.F_N)), ": a = ",
+        val("a_m", r.a_m, qty(r.a_m, "length", ["radius"])), ", approach ", val("delta_m", r.delta_m, qty(r.delta_m, "length", ["z0", "h"]))]);
+      return [p("The contact radius a:"), items(list)];
+    },
+    "sphere-curve"(doc) {
+      const rs = doc.results || [];
+      const r = rs.find((x) => x.pull_off_load === true) || rs.reduce((m, x) => (!m || x.F_N < m.F_N ? x : m), null) || {};
+      return [p("It comes off at a pull of ", val("F_N", r.F_N, newtons(Math.abs(r.F_N))), " (load control), at a contact radius a = ",
+        val("a_m", r.a_m, qty(r.a_m, "length", ["radius"])), `; the curve has ${rs.length} points.`)];
+    },
     "lennard-jones"(doc) {
       const r = rec(doc);
       return [
