@@ -160,3 +160,17 @@ def test_the_lennard_jones_spheres_pull_off_is_one_number_in_python_and_the_cli(
     assert rec["F_pulloff_over_piwR"] == pytest.approx(
         want.nondimensional.F_pulloff_over_piwR, rel=1e-9
     )
+
+
+def test_a_sweep_of_the_contact_and_the_curve_gives_pythons_numbers():
+    pytest.importorskip("xarray")
+    common = dict(body="sphere", radius=[20e-9, 1e-6], modulus=50e9, sigma0=1e8, h=1e-9)
+    ds = lc.sweep("normal", force=[0.0, 1e-8], **common)
+    curve = lc.sweep("curve", num=10, num_noncontact=3, **common)
+    for R in (20e-9, 1e-6):
+        tip = lc.Sphere.from_modulus(R, 50e9, cohesive_stress=1e8, adhesion_range=1e-9)
+        got = ds["a_m"].sel(radius=R).transpose("force").values.tolist()
+        assert got == tip.contact(load=[0.0, 1e-8]).contact_radius.tolist()
+        c = tip.load_curve(num=10, num_noncontact=3)
+        F = curve["F_N"].sel(radius=R).values
+        assert F[: c.load.size].tolist() == c.load.tolist()
