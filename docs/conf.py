@@ -194,6 +194,8 @@ API_GROUPS: list[tuple[str, str, list[str]]] = [
             "maugis_parameter_of_cos_alpha",
             "sphere_lj_pull_off",
             "sphere_lj_curve",
+            "sphere_work_of_adhesion_from_pull_off",
+            "sphere_shear_strength_from_friction",
             "SphereContact",
             "SpherePullOff",
             "SphereLoadCurve",

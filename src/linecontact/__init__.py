@@ -68,6 +68,8 @@ with _imports_interruptible():
         fit_pull_off,
         propagate,
         shear_strength_from_friction,
+        sphere_shear_strength_from_friction,
+        sphere_work_of_adhesion_from_pull_off,
         work_of_adhesion_from_pull_off,
         work_of_adhesion_from_width,
     )
@@ -143,6 +145,8 @@ __all__ = [
     "SphereLJPullOff",
     "sphere_lj_curve",
     "sphere_lj_pull_off",
+    "sphere_shear_strength_from_friction",
+    "sphere_work_of_adhesion_from_pull_off",
     "cos_alpha",
     "maugis_parameter_of_cos_alpha",
     "sphere_models",

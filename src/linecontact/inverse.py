@@ -15,6 +15,9 @@ The inverse problems of the SI layer, each with the forward model it inverts:
   Maugis--Dugdale contact at the normal load (or the steady-sliding contact when an adhesion
   hysteresis :math:`\Delta w = w_\text{receding} - w_\text{advancing}` is given), or JKR, DMT or
   Hertz when asked;
+* :func:`sphere_work_of_adhesion_from_pull_off` and :func:`sphere_shear_strength_from_friction`:
+  the same for a sphere (an AFM tip; forces in N), from the Maugis--Dugdale sphere
+  (:mod:`linecontact.sphere`);
 * :func:`propagate`: the standard uncertainty and the 95 % interval of any of these by Monte
   Carlo (seeded, vectorised through the solvers), with the linearised estimate beside it
   (:mod:`linecontact.uncertainty`, re-exported here).
@@ -57,6 +60,9 @@ from .errors import ModelValidityWarning, ParameterError
 from .facet import facet_contact_for_load as _facet_contact_for_load
 from .fits import AdhesionFit, ShearStrengthFit, fit_pull_off, fit_shear_strength
 from .geometry import CrossSection
+from .materials import MAUGIS_STRENGTH
+from .sphere import sphere_contact_for_load as _sphere_contact_for_load
+from .sphere import sphere_pull_off as _sphere_pull_off
 from .uncertainty import Estimate, propagate
 
 if TYPE_CHECKING:
@@ -74,6 +80,8 @@ __all__ = [
     "propagate",
     "pull_off_force",
     "shear_strength_from_friction",
+    "sphere_shear_strength_from_friction",
+    "sphere_work_of_adhesion_from_pull_off",
     "work_of_adhesion_from_pull_off",
     "work_of_adhesion_from_width",
 ]
@@ -391,3 +399,144 @@ def shear_strength_from_friction(
 def _jkr_width(F, R, E, w):
     """Stable JKR line-contact half-width at the load F (nan below the pull-off)."""
     return R * _cf._jkr_half_width(F / (E * R), 1.0, w / (E * R))
+
+
+# ------------------------------------------------------------------------------------------
+# the sphere (an AFM tip, a colloidal probe): forces in N
+
+
+def _sphere_groups(w, R, E, z0):
+    """``(R/h, sigma0/E)`` of a sphere whose Dugdale step is matched to ``(w, z0)``."""
+    sigma0 = MAUGIS_STRENGTH * w / z0
+    return R * sigma0 / w, sigma0 / E
+
+
+def sphere_work_of_adhesion_from_pull_off(
+    pull_off_force: ArrayLike,
+    radius: ArrayLike,
+    modulus: ArrayLike,
+    equilibrium_spacing: ArrayLike,
+) -> NDArray | float:
+    r"""The work of adhesion [J/m^2] whose Maugis--Dugdale sphere pulls off at the force given.
+
+    The pull-off of a sphere under load control lies between DMT's :math:`-2\pi w R` and
+    JKR's :math:`-\tfrac32\pi w R`, and its size grows with ``w`` (the Maugis parameter
+    grows as :math:`w^{2/3}`), so ``w`` lies in :math:`[|F|/(2\pi R), |F|/(1.5\pi R)]`:
+    the Illinois method on its logarithm in that bracket, to rounding.
+
+    Parameters
+    ----------
+    pull_off_force : array_like
+        The measured pull-off force [N], negative (tensile).
+    radius, modulus, equilibrium_spacing : array_like
+        ``R`` [m], the composite modulus ``E`` [Pa], the range ``z0`` [m] (the Dugdale step
+        matched to the Lennard-Jones law's peak: ``sigma0 = 16 w/(9 sqrt 3 z0)``).
+
+    Returns
+    -------
+    ndarray or float
+        ``w`` [J/m^2]; arrays broadcast together.
+
+    Examples
+    --------
+    >>> from linecontact import Sphere
+    >>> F = Sphere.from_modulus(1e-6, 50e9, work_of_adhesion=0.05, equilibrium_spacing=3e-10)
+    >>> w = sphere_work_of_adhesion_from_pull_off(F.pull_off().pull_off_force, 1e-6, 50e9, 3e-10)
+    >>> print(f"{w:.12f}")
+    0.050000000000
+    """
+    F = check_array("pull_off_force", pull_off_force, low=-np.inf, high=0.0, high_inclusive=False)
+    R = check_array("radius", radius, low=0.0)
+    E = check_array("modulus", modulus, low=0.0)
+    z0 = check_array("equilibrium_spacing", equilibrium_spacing, low=0.0)
+    scalar = all(np.ndim(v) == 0 for v in (pull_off_force, radius, modulus, equilibrium_spacing))
+    F, R, E, z0 = (
+        np.asarray(v, float).reshape(-1)
+        for v in broadcast(pull_off_force=F, radius=R, modulus=E, equilibrium_spacing=z0)
+    )
+
+    def excess(v: NDArray) -> NDArray:  # the pull-off at w = e^v less the one measured, over it
+        rho, s = _sphere_groups(np.exp(v), R, E, z0)
+        got = np.asarray(_sphere_pull_off(rho, s).F_pulloff_over_EhR) * (E * (R / rho) * R)
+        return got / F - 1  # > 0: more tensile than measured (too much adhesion)
+
+    lo = np.log(-F / (2 * np.pi * R) * (1 - 1e-12))
+    hi = np.log(-F / (1.5 * np.pi * R) * (1 + 1e-12))
+    g_lo, g_hi = excess(lo), excess(hi)
+    # the Illinois method (false position, the stale end's value halved) inside the bracket
+    side = np.zeros(F.shape, int)
+    for _ in range(100):
+        with np.errstate(divide="ignore", invalid="ignore"):
+            v = (lo * g_hi - hi * g_lo) / (g_hi - g_lo)
+        v = np.where(np.isfinite(v) & (v > lo) & (v < hi), v, 0.5 * (lo + hi))
+        g = excess(v)
+        low = g < 0
+        g_lo = np.where(low, g, np.where(side == 1, 0.5 * g_lo, g_lo))
+        g_hi = np.where(~low, g, np.where(side == -1, 0.5 * g_hi, g_hi))
+        side = np.where(low, -1, 1)
+        lo, hi = np.where(low, v, lo), np.where(low, hi, v)
+        if np.all((np.abs(g) <= 4e-16) | (hi - lo <= 2e-16 * np.abs(v))):
+            break
+    w = np.exp(v)
+    return w.item() if scalar else w
+
+
+def sphere_shear_strength_from_friction(
+    friction_force: ArrayLike,
+    normal_load: ArrayLike,
+    radius: ArrayLike,
+    modulus: ArrayLike,
+    work_of_adhesion: ArrayLike,
+    equilibrium_spacing: ArrayLike,
+) -> NDArray | float:
+    r"""The interfacial shear strength [Pa] of a sphere sliding at a friction force.
+
+    :math:`\tau_0 = f/(\pi a^2)`, the friction over the contact area of the Maugis--Dugdale
+    sphere under the normal load (the area a friction force measured by an AFM acts on).
+
+    Parameters
+    ----------
+    friction_force : array_like
+        ``f`` [N], positive.
+    normal_load : array_like
+        ``F`` [N], compressive positive, above the pull-off.
+    radius, modulus, work_of_adhesion, equilibrium_spacing : array_like
+        ``R`` [m], ``E`` [Pa], ``w`` [J/m^2], ``z0`` [m].
+
+    Returns
+    -------
+    ndarray or float
+        ``tau0`` [Pa].
+
+    Examples
+    --------
+    >>> tau = sphere_shear_strength_from_friction(1e-9, 5e-9, 20e-9, 50e9, 0.1, 3e-10)
+    >>> print(f"{tau / 1e6:.1f} MPa")
+    89.9 MPa
+    """
+    f = check_array("friction_force", friction_force, low=0.0)
+    scalar = all(
+        np.ndim(v) == 0
+        for v in (
+            friction_force,
+            normal_load,
+            radius,
+            modulus,
+            work_of_adhesion,
+            equilibrium_spacing,
+        )
+    )
+    F = check_array("normal_load", normal_load, low=-np.inf)
+    R = check_array("radius", radius, low=0.0)
+    E = check_array("modulus", modulus, low=0.0)
+    w = check_array("work_of_adhesion", work_of_adhesion, low=0.0)
+    z0 = check_array("equilibrium_spacing", equilibrium_spacing, low=0.0)
+    f, F, R, E, w, z0 = (np.asarray(v, float) for v in broadcast(
+        friction_force=f, normal_load=F, radius=R, modulus=E, work_of_adhesion=w,
+        equilibrium_spacing=z0,
+    ))  # fmt: skip
+    rho, s = _sphere_groups(w, R, E, z0)
+    unit = E * (R / rho) * R  # E h R [N]
+    a = np.asarray(_sphere_contact_for_load(F / unit, rho, s).a_over_R) * R
+    tau = f / (np.pi * a * a)
+    return tau.item() if scalar else tau
