@@ -268,6 +268,7 @@ def test_the_load_curve_passes_through_both_pull_offs():
 def test_every_pull_off_lies_between_jkr_and_dmt(rho, s):
     p = sphere_pull_off(rho, s)
     d = sphere_pull_off(rho, s, control="displacement")
+    assert p.converged and d.converged and abs(p.residual_separation) < 1e-12, (rho, s)
     assert -2 - 1e-12 <= p.F_pulloff_over_piwR <= -1.5 + 1e-12, (rho, s)
     assert p.F_pulloff_over_piwR <= d.F_pulloff_over_piwR + 1e-12, (rho, s)
     assert -2 - 1e-12 <= d.F_pulloff_over_piwR <= -5 / 6 + 1e-12, (rho, s)

@@ -23,7 +23,7 @@ from ..closed_forms.sphere import _sphere_maugis_parameter
 from ..errors import NoEquilibriumError, ParameterError
 from ..results import SI, Result, as_result
 from . import _branch as _b
-from .contact import INPUTS, SphereContact, checked, over_piwR, states
+from .contact import INPUTS, RESIDUAL_TOL, SphereContact, checked, over_piwR, states
 
 #: Contact radii in Maugis' unit :math:`(\pi w R^2/K)^{1/3}` where a minimum is looked for.
 GRID = np.geomspace(1e-7, 20.0, 31)
@@ -54,6 +54,11 @@ class SpherePullOff(Result):
         ``"load"`` or ``"displacement"``.
     R_over_h, sigma0_over_E, maugis_parameter : ndarray or float
         The parameters and Maugis' :math:`\lambda`.
+    residual_separation : ndarray or float
+        The logarithm of the gap at ``c`` over ``h`` in the state let go from (0 at the
+        solution; the ``a -> 0`` end's quadratic, else the branch's).
+    converged : ndarray or bool
+        The gap condition met to :data:`~linecontact.sphere.contact.RESIDUAL_TOL`.
     """
 
     inputs: ClassVar[tuple[str, ...]] = INPUTS
@@ -72,6 +77,8 @@ class SpherePullOff(Result):
     R_over_h: NDArray | float
     sigma0_over_E: NDArray | float
     maugis_parameter: NDArray | float
+    residual_separation: NDArray | float
+    converged: NDArray | bool
 
     @property
     def F_pulloff_over_piwR(self):  # noqa: N802 - Maugis' unit of force
@@ -180,10 +187,13 @@ def sphere_pull_off(
     adhesive = s > 0
     x0, F0, d0 = _b.separated(np.zeros(rho.shape), rho, s)  # the a -> 0 end
     C, D = x0.copy(), d0.copy()
+    # the gap condition at the state let go from: the a -> 0 end's quadratic, its residual
+    with np.errstate(divide="ignore"):
+        res = np.log(rho * x0 * x0 / 2 + 2 * (1 - 2 / np.pi) * s * rho * x0)
     if np.any(adhesive):
         r, t = rho[adhesive], s[adhesive]
         a_min, v_min = _minimum(r, t, of)
-        x, Fm, dm, _, _ = _b.branch(np.nan_to_num(a_min, nan=1.0), r, t)
+        x, Fm, dm, _, res_m = _b.branch(np.nan_to_num(a_min, nan=1.0), r, t)
         # the end is the pull-off where the branch has no minimum, or a higher one (load
         # control: the zone then separates with less tension; displacement: it peels on)
         end_value = (F0 if of == 0 else d0)[adhesive]
@@ -192,6 +202,7 @@ def sphere_pull_off(
         F[adhesive] = np.where(inner, Fm, F0[adhesive])
         C[adhesive] = np.where(inner, x, x0[adhesive])
         D[adhesive] = np.where(inner, dm, d0[adhesive])
+        res[adhesive] = np.where(inner, res_m, res[adhesive])
         name = "contact" if of == 0 else "jump-out"
         mech[adhesive] = np.where(inner, name, "zero-radius")
     return as_result(
@@ -207,6 +218,8 @@ def sphere_pull_off(
         R_over_h=rho,
         sigma0_over_E=s,
         maugis_parameter=_sphere_maugis_parameter(rho, s),
+        residual_separation=res,
+        converged=np.abs(res) <= RESIDUAL_TOL,
     )
 
 
