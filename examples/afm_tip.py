@@ -1,5 +1,5 @@
 r"""An AFM tip on silica: which model, and the pull-off of a sharp and a blunt tip
-=============================================================================
+==============================================================================
 
 A silicon AFM tip (radius 10 nm to 1 µm) on silica, work of adhesion 0.1 J/m²,
 :math:`z_0` = 0.3 nm (illustrative; the moduli are the presets of :mod:`linecontact.presets`):
