@@ -88,6 +88,7 @@ def test_the_groups_give_the_nondimensional_solvers_numbers(capsys):
           "--law", "lennard-jones"], "--law"),  # Tabor's parameter over 5
         (["pulloff", "--body", "sphere", *SI, "--cross-section", "hexagon"], "--cross-section"),
         (["pulloff", "--body", "sphere", *SI, "--corner-radius", "1e-9"], "--corner-radius"),
+        (["pulloff", "--body", "sphere", *SI, "--corner-radius", "0"], "--corner-radius"),
         (["pulloff", "--body", "sphere", *SI, "--length", "1e-6"], "--length"),
         (["normal", "--body", "sphere", *SI, "--load", "1"], "--load"),
         (["normal", "--body", "sphere", "--R-over-h", "10", "--sigma0-over-E", "0.1",

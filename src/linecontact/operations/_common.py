@@ -253,7 +253,8 @@ def shape(args: Any, cyl: Body | None) -> dict[str, Any] | None:
     rc = getattr(args, "corner_radius", None)
     rcR = getattr(args, "corner_radius_over_R", None)
     if is_sphere(args):
-        given = [f for f, v in (("--corner-radius", rc), ("--corner-radius-over-R", rcR)) if v]
+        flags = (("--corner-radius", rc), ("--corner-radius-over-R", rcR))
+        given = [f for f, v in flags if v is not None]
         if name != "round" or given:
             flag = "--cross-section" if name != "round" else given[0]
             raise ParameterError(flag, f"{flag} is a wire's: a sphere (--body sphere) is round")
