@@ -95,6 +95,7 @@ def test_the_groups_give_the_nondimensional_solvers_numbers(capsys):
           "--F-over-Eh", "1"], "--F-over-Eh"),
         (["normal", *SI, "--force", "1e-9"], "--force"),
         (["normal", "--body", "sphere", *SI, "--force", "-1"], "--force"),
+        (["normal", "--body", "sphere", *SI, "--force", "1e12"], "--force"),
         (["normal", "--body", "sphere", *SI, "--force", "1e-9", "--branch", "unstable"],
          "--branch"),
         (["curve", "--body", "sphere", *SI, "--F-max", "1"], "--F-max"),
@@ -138,6 +139,10 @@ def test_python_refuses_a_wires_problem_and_another_law_naming_the_pair():
         tip.contact()
     with pytest.raises(lc.NoEquilibriumError, match=r"load = -1e-06 N is below the pull-off"):
         tip.contact(load=[0.0, -1e-6])
+    with pytest.raises(ValueError, match=r"load must be in \[-5e\+07, 5e\+07\] N"):
+        tip.contact(load=1e10)
+    with pytest.raises(ValueError, match=r"contact_radius must be in"):
+        tip.contact(contact_radius=-1.0)
 
 
 def test_the_lennard_jones_spheres_pull_off_is_one_number_in_python_and_the_cli(capsys):

@@ -129,6 +129,7 @@ SCALE_WORDS: dict[str, str] = {
     "a_max_over_R": "radii",
     "F_over_Eh": "times the modulus times the adhesion range",
     "F_over_Eh2": "times the modulus times the adhesion range",
+    "F_over_EhR": "times the modulus times the adhesion range times the radius",
     "tau0_over_E": "times the modulus",
     "friction_tau0_over_E": "times the modulus",
     "T_over_Ea": "times the modulus times the contact half-width",

@@ -16,6 +16,7 @@ from typing import Any, ClassVar, Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .. import domain as _domain
 from .. import sphere as _sphere
 from ..closed_forms.sphere import sphere_maugis_parameter
 from ..errors import NoEquilibriumError
@@ -183,6 +184,7 @@ class Sphere(Body):
             raise ValueError("give exactly one of load [N] or contact_radius [m]")
         rho, s = self.R_over_h, self.sigma0_over_E
         if load is not None:
+            _domain.check_si("load", load, self.scale("EhR"), "F_over_EhR", "N")
             F = np.divide(np.asarray(load, float), self.scale("EhR"))
             try:
                 r = _sphere.sphere_contact_for_load(F, rho, s, on_failure=on_failure)
@@ -194,7 +196,9 @@ class Sphere(Body):
                     "no contact carries it (it has come off)"
                 ) from None
         else:
-            a_over_R = np.asarray(contact_radius, float) / self.radius
+            radii = np.asarray(contact_radius, float)
+            _domain.check_si("contact_radius", radii, self.radius, "a_over_R", "m")
+            a_over_R = radii / self.radius
             r = _sphere.sphere_contact(a_over_R, rho, s)
         si = to_si(r, self._scales())
         return SphereContactSI(
