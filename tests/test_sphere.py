@@ -272,7 +272,11 @@ def test_every_pull_off_lies_between_jkr_and_dmt(rho, s):
     assert -2 - 1e-12 <= p.F_pulloff_over_piwR <= -1.5 + 1e-12, (rho, s)
     assert p.F_pulloff_over_piwR <= d.F_pulloff_over_piwR + 1e-12, (rho, s)
     assert -2 - 1e-12 <= d.F_pulloff_over_piwR <= -5 / 6 + 1e-12, (rho, s)
-    r = sphere_contact_for_load(0.0, rho, s)
+    try:
+        r = sphere_contact_for_load(0.0, rho, s)
+    except ValueError as e:  # the far corner: a contact wider than the domain's 10 R
+        assert "beyond 10" in str(e) and p.a_over_R_at_pulloff > 1, (rho, s, e)
+        return
     assert r.converged and r.stable and r.a_over_R > 0, (rho, s)
 
 

@@ -1,7 +1,8 @@
 """Fuzz the adhesive sphere (``linecontact.sphere``, ``Sphere``, ``--body sphere``).
 
 Over the whole validated domain (:data:`linecontact.domain.DOMAIN`, its edges included:
-``R/h`` in ``[1e-3, 1e12]``, ``sigma0/E`` in ``[0, 1e6]`` down to the subnormal numbers,
+``R/h`` in ``[1e-3, 1e12]``, ``sigma0/E`` 0 or in ``[1e-100, 1e6]`` (a sphere's: below,
+its adhesion is lost to rounding, and a value there is refused, naming it),
 ``a/R`` in ``[1e-150, 10]``, ``F/(E h R)`` in ``[-1e12, 1e12]``):
 
 1. inside the domain every function returns finite numbers with converged diagnostics, or
@@ -41,7 +42,7 @@ from linecontact import (
     sphere_work_of_adhesion_from_pull_off,
 )
 from linecontact.cli import main
-from linecontact.errors import ModelValidityWarning
+from linecontact.errors import ModelValidityWarning, ParameterError
 from linecontact.sphere import (
     sphere_contact,
     sphere_contact_for_load,
@@ -69,12 +70,22 @@ def log_uniform(lo: float, hi: float, edges: tuple[float, ...] = ()) -> st.Searc
 
 
 RHO = log_uniform(-3, 12, (1e-3, 1e12, 1.0))
-SIGMA = st.one_of(
-    st.sampled_from([0.0, SUBNORMAL, 1e-320, 1e-310, 1e-300, 1e6]),
-    log_uniform(-300, 6),
-)
-SIGMA_POS = st.one_of(st.sampled_from([SUBNORMAL, 1e-320, 1e-300, 1e6]), log_uniform(-300, 6))
+SIGMA = st.one_of(st.sampled_from([0.0, 1e-100, 1e6]), log_uniform(-100, 6))
+SIGMA_POS = st.one_of(st.sampled_from([1e-100, 1e6]), log_uniform(-100, 6))
 ALPHA = log_uniform(-150, 1, (1e-150, 10.0))
+
+
+def too_wide(call):
+    """``call()``, or None where its contact is wider than the domain's 10 R (refused, named).
+
+    At the domain's far corner (small R/h, large sigma0/E) even the pull-off's contact is
+    wider than the sphere: a load there is refused, naming ``F_over_EhR`` (or ``load``).
+    """
+    try:
+        return call()
+    except ParameterError as e:
+        assert "beyond 10" in str(e) or "(10 radii, the domain" in str(e), e
+        return None
 
 
 def finite(*values) -> bool:
@@ -95,8 +106,6 @@ def test_contact_at_a_radius_is_finite_and_converged(alpha, rho, s):
 
 @settings(FUZZ, max_examples=3 * EXAMPLES)
 @given(rho=RHO, s=SIGMA)
-@example(rho=1e-3, s=SUBNORMAL)  # pull-off -0.0 over pi w R: the unit underflows
-@example(rho=1e-3, s=1e-320)  # -1.885 pi w R: sigma0/E rounded in the subnormal range
 def test_pull_off_lies_between_dmt_and_jkr(rho, s):
     po = sphere_pull_off(rho, s)
     pd = sphere_pull_off(rho, s, control="displacement")
@@ -135,17 +144,19 @@ def loads(rho: float, s: float, po: float, pick: float, kind: int) -> float:
 @given(rho=RHO, s=SIGMA, pick=st.floats(0, 1), kind=st.integers(0, 3))
 @example(rho=1.0, s=0.0, pick=(-250 + 300) / 312, kind=1)  # Hertz, F = 1e-250: a wrong root
 @example(rho=1e12, s=1e-100, pick=1.0, kind=1)  # F = 1e12: overflow in the Newton step
-@example(rho=1e6, s=SUBNORMAL, pick=0.5, kind=1)  # log(0) at the bracket's lower end
 def test_contact_for_load_gives_back_its_load(rho, s, pick, kind):
     po = float(sphere_pull_off(rho, s).F_pulloff_over_EhR)
     F = loads(rho, s, po, pick, kind)
-    r = sphere_contact_for_load(F, rho, s)
+    r = too_wide(lambda: sphere_contact_for_load(F, rho, s))
+    if r is None:
+        return
     assert finite(r.a_over_R, r.c_over_R, r.F_over_EhR, r.delta_over_h)
     assert r.converged and r.stable
     assert 1e-150 <= r.a_over_R <= 10 or F == po
     assert abs(r.F_over_EhR - F) <= 1e-10 * max(abs(F), abs(po))
-    back = sphere_contact(r.a_over_R, rho, s)
-    assert abs(back.F_over_EhR - F) <= 1e-10 * max(abs(F), abs(po))
+    if r.a_over_R >= 1e-150:  # at a pull-off of zero radius: a/R below the domain
+        back = sphere_contact(r.a_over_R, rho, s)
+        assert abs(back.F_over_EhR - F) <= 1e-10 * max(abs(F), abs(po))
 
 
 @settings(FUZZ, max_examples=EXAMPLES)
@@ -154,7 +165,9 @@ def test_below_the_pull_off_no_contact_and_the_stable_radius_grows(rho, s):
     po = float(sphere_pull_off(rho, s).F_pulloff_over_EhR)
     unit = max(abs(po), 1e-30)
     F = np.clip(np.concatenate([[po], po + unit * np.geomspace(1e-6, 1e4, 25)]), -1e12, 1e12)
-    r = sphere_contact_for_load(F, rho, s)
+    r = too_wide(lambda: sphere_contact_for_load(F, rho, s))
+    if r is None:
+        return
     assert np.all(np.diff(r.a_over_R) >= 0)
     assert np.all(r.stable[1:])
     if s > 0:
@@ -170,7 +183,9 @@ def test_report_marks_a_load_below_the_pull_off_as_not_converged(rho, s):
     # and stable False
     po = float(sphere_pull_off(rho, s).F_pulloff_over_EhR)
     below = max(2 * po - 1e-300, -1e12)
-    r = sphere_contact_for_load([below, 0.0], rho, s, on_failure="report")
+    r = too_wide(lambda: sphere_contact_for_load([below, 0.0], rho, s, on_failure="report"))
+    if r is None:
+        return
     assert np.isnan(r.a_over_R[0]) and np.isnan(r.F_over_EhR[0])
     assert not r.converged[0] and not r.stable[0]
     assert finite(r.a_over_R[1]) and r.converged[1]
@@ -178,10 +193,11 @@ def test_report_marks_a_load_below_the_pull_off_as_not_converged(rho, s):
 
 @settings(FUZZ, max_examples=EXAMPLES)
 @given(rho=RHO, s=SIGMA_POS, pick=st.floats(0, 1), kind=st.integers(0, 3))
-@example(rho=1e-3, s=SUBNORMAL, pick=0.0, kind=2)  # 0/0: the pull-off underflows to 0
 def test_models_are_finite(rho, s, pick, kind):
     po = float(sphere_pull_off(rho, s).F_pulloff_over_EhR)
-    m = sphere_models(loads(rho, s, po, pick, kind), rho, s)
+    m = too_wide(lambda: sphere_models(loads(rho, s, po, pick, kind), rho, s))
+    if m is None:
+        return
     assert finite(m.pull_off_error_hertz, m.pull_off_error_dmt, m.pull_off_error_jkr)
     assert m.regime in ("DMT", "JKR", "transition") and m.best in ("hertz", "dmt", "jkr")
 
@@ -194,7 +210,6 @@ def test_models_are_finite(rho, s, pick, kind):
     num=st.integers(2, 60),
     num_noncontact=st.integers(0, 20),
 )
-@example(rho=206.948, s=SUBNORMAL, a_max=None, num=2, num_noncontact=40)  # geomspace from 0
 def test_load_curve_is_finite(rho, s, a_max, num, num_noncontact):
     c = sphere_load_curve(rho, s, a_max_over_R=a_max, num=num, num_noncontact=num_noncontact)
     assert finite(c.a_over_R, c.c_over_R, c.F_over_EhR, c.delta_over_h)
@@ -414,7 +429,9 @@ def test_si_sphere_is_finite_and_consistent(R, E, w, z0, pick):
         assert finite(po.pull_off_force, po.approach_at_pull_off, pd.pull_off_force)
         assert po.pull_off_force < 0 and pd.pull_off_force >= po.pull_off_force
         F = po.pull_off_force * pick
-        c = tip.contact(load=F)
+        c = too_wide(lambda: tip.contact(load=F))
+        if c is None:
+            return
         assert finite(c.contact_radius, c.load, c.approach)
         assert abs(c.load - F) <= 1e-9 * max(abs(F), abs(po.pull_off_force))
         curve = tip.load_curve(num=10, num_noncontact=3)
@@ -425,3 +442,18 @@ def test_si_sphere_is_finite_and_consistent(R, E, w, z0, pick):
         assert np.isfinite(tau) and tau > 0
         with pytest.raises(NoEquilibriumError):
             tip.contact(load=2 * po.pull_off_force)
+
+
+@pytest.mark.parametrize("s", [SUBNORMAL, 1e-320, 1e-300, 9.9e-101])
+def test_an_adhesion_lost_to_rounding_is_refused_naming_it(s):
+    # found by the fuzzing: at subnormal sigma0/E the pull-off was -0.0 or -1.885 pi w R, a
+    # log(0) warned, the load curve's geometric radii began at 0 (issue 34's session)
+    for call in (
+        lambda: sphere_pull_off(1e-3, s),
+        lambda: sphere_contact(0.01, 1e6, s),
+        lambda: sphere_contact_for_load(0.0, 1e6, s),
+        lambda: sphere_models(0.0, 1e-3, s),
+        lambda: sphere_load_curve(206.948, s, num=2),
+    ):
+        with pytest.raises(ValueError, match=r"sigma0_over_E must be 0 \(no adhesion"):
+            call()

@@ -19,7 +19,7 @@ from numpy.typing import ArrayLike, NDArray
 from .. import domain as _domain
 from .. import sphere as _sphere
 from ..closed_forms.sphere import sphere_maugis_parameter
-from ..errors import NoEquilibriumError
+from ..errors import NoEquilibriumError, ParameterError
 from ..laws._values import Dugdale, Law, LennardJones
 from ..results import Result
 from ..units import Scales, to_si
@@ -188,6 +188,14 @@ class Sphere(Body):
             F = np.divide(np.asarray(load, float), self.scale("EhR"))
             try:
                 r = _sphere.sphere_contact_for_load(F, rho, s, on_failure=on_failure)
+            except ParameterError as e:  # wider than the domain's radii: said in N and m
+                if e.parameter != "F_over_EhR":
+                    raise
+                raise ParameterError(
+                    "load",
+                    f"load = {float(np.max(load))!r} N needs a contact radius beyond "
+                    f"{10 * self.radius:.6g} m (10 radii, the domain of the solvers)",
+                ) from None
             except NoEquilibriumError:  # said in N
                 po = self.pull_off().pull_off_force
                 low = float(np.asarray(load, float)[np.asarray(load, float) < po].flat[0])

@@ -19,6 +19,7 @@ from ..errors import ParameterError
 from ..materials import MAUGIS_STRENGTH
 from ..output import Table
 from ..sphere import sphere_contact, sphere_contact_for_load, sphere_load_curve, sphere_pull_off
+from ..sphere.contact import checked
 from ._common import half_widths, si_parameters
 from ._declare import Inputs
 from ._records import records, si_shown
@@ -90,6 +91,7 @@ def _pulloff_lj(args: Inputs, rho: float, s: float, body: Any) -> Table:
     """The self-consistent Lennard-Jones sphere's pull-off (Tabor's parameter up to 5)."""
     from ..sphere import lennard_jones as _lj
 
+    checked(R_over_h=rho, sigma0_over_E=s)  # the domain of the groups, as the Dugdale law's
     if s <= 0:
         raise ParameterError(
             "--sigma0-over-E", "the Lennard-Jones law needs adhesion: --sigma0-over-E > 0"
@@ -189,6 +191,7 @@ def normal(args: Inputs, rho: float, s: float, body: Any) -> Table:
             force = np.asarray(args.force, float)
             check_si("--force", force, body.scale("EhR"), "F_over_EhR", "N")
             _above_pull_off("--force", force, rho, s, body.scale("EhR"), " N")
+            args.said_as["load"] = "force"  # the SI layer's name of --force
             c = made(args, "result", body.contact, load=force)
             r = c.nondimensional
     return _table(
@@ -212,8 +215,18 @@ def curve(args: Inputs, rho: float, s: float, body: Any) -> Table:
             )
     n = {"num": 200 if args.num is None else args.num}
     n["num_noncontact"] = 40 if args.num_noncontact is None else args.num_noncontact
+    if args.a_max is not None and args.a_max_over_R is not None:
+        raise ParameterError(
+            "--a-max", "give the largest contact radius as --a-max [m] or --a-max-over-R, not both"
+        )
+    if args.a_max is not None and body is None:
+        raise ParameterError(
+            "--a-max", "--a-max [m] is an SI input: give --radius and the rest, or --a-max-over-R"
+        )
+    if args.a_max is not None:
+        check_si("--a-max", args.a_max, body.radius, "a_max_over_R", "m")
     si: Any = None
-    if body is None or args.a_max is None and args.a_max_over_R is not None:
+    if body is None or args.a_max_over_R is not None:
         c = sphere_load_curve(rho, s, a_max_over_R=args.a_max_over_R, **n)
     else:
         si = made(args, "result", body.load_curve, max_radius=args.a_max, **n)

@@ -16,7 +16,7 @@ from numpy.typing import ArrayLike, NDArray
 from .. import domain as _domain
 from .._validation import broadcast, first_point, point_text, scalar_or_array
 from ..closed_forms.sphere import _sphere_maugis_parameter
-from ..errors import ConvergenceError
+from ..errors import ConvergenceError, ParameterError
 from ..results import SI, Result, as_result
 from . import _branch as _b
 
@@ -85,9 +85,28 @@ def over_piwR(F_over_EhR, sigma0_over_E):  # noqa: N802 - Maugis' unit of force
     return out.item() if out.ndim == 0 else out
 
 
+#: The weakest adhesion a sphere is solved for (``sigma0/E``; below it, but 0, the unit of
+#: force ``pi w R`` and the zone's scale are lost to rounding): give 0, Hertz.
+SIGMA0_OVER_E_MIN = 1e-100
+
+
+def check_adhesion(s: NDArray) -> None:
+    """Refuse ``sigma0/E`` between 0 and :data:`SIGMA0_OVER_E_MIN` (ParameterError)."""
+    weak = (s > 0) & (s < SIGMA0_OVER_E_MIN)
+    if np.any(weak):
+        bad = float(np.asarray(s)[weak].reshape(-1)[0])
+        raise ParameterError(
+            "sigma0_over_E",
+            f"sigma0_over_E must be 0 (no adhesion: Hertz) or in [{SIGMA0_OVER_E_MIN:g}, 1e6] "
+            f"for a sphere, got {bad!r} (the adhesion is lost to rounding below)",
+        )
+
+
 def checked(**values: ArrayLike) -> tuple[bool, list[NDArray]]:
     """The inputs checked against the domain and broadcast: ``(scalar, arrays)``."""
     arrays = [_domain.check(name, v) for name, v in values.items()]
+    if "sigma0_over_E" in values:
+        check_adhesion(arrays[list(values).index("sigma0_over_E")])
     scalar = scalar_or_array(*arrays)
     return scalar, [
         np.asarray(v, float) for v in broadcast(**dict(zip(values, arrays, strict=True)))

@@ -18,7 +18,7 @@ from .. import domain as _domain
 from ..errors import ParameterError
 from ..results import SI, Result
 from . import _branch as _b
-from .contact import INPUTS, states
+from .contact import INPUTS, check_adhesion, states
 from .pulloff import SpherePullOff, _unit, sphere_contact_for_load, sphere_pull_off
 
 #: The most points of each branch.
@@ -82,7 +82,7 @@ def sphere_load_curve(
         As in :func:`~linecontact.sphere.sphere_contact`.
     a_max_over_R : float, optional
         The largest contact radius over ``R``; default: where the load is ten times the
-        load-control pull-off in compression (Hertz: ``a/R = 0.05``).
+        load-control pull-off in compression, at most 10 (Hertz: ``a/R = 0.05``).
     num, num_noncontact : int
         Points of the contact branch (geometric in ``a``, the pull-offs inserted) and of
         the non-contact branch (0: none), each at most :data:`NUM_MAX`.
@@ -99,6 +99,7 @@ def sphere_load_curve(
     """
     rho = _domain.scalar("R_over_h", R_over_h)
     s = _domain.scalar("sigma0_over_E", sigma0_over_E)
+    check_adhesion(np.asarray(s))
     for name, value, low in (("num", num, 2), ("num_noncontact", num_noncontact, 0)):
         if not isinstance(value, int | np.integer) or not low <= value <= NUM_MAX:
             raise ParameterError(
@@ -108,7 +109,10 @@ def sphere_load_curve(
     pd = sphere_pull_off(rho, s, control="displacement")
     if a_max_over_R is None:
         load = 10 * abs(float(po.F_pulloff_over_EhR)) if s > 0 else 0.0
-        a_end = float(sphere_contact_for_load(load, rho, s).a_over_R) if s > 0 else 0.05
+        try:
+            a_end = float(sphere_contact_for_load(load, rho, s).a_over_R) if s > 0 else 0.05
+        except ParameterError:  # wider than the domain's 10 R: the curve ends there
+            a_end = _domain.DOMAIN["a_over_R"][2]
     else:
         a_end = _domain.scalar("a_max_over_R", a_max_over_R)
     a0 = float(_unit(rho, s)) * 1e-4 if s > 0 else a_end * 1e-4

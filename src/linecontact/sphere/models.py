@@ -28,6 +28,7 @@ from typing import ClassVar
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .._validation import check_array
 from ..closed_forms.sphere import (
     DMT_PULL_OFF,
     JKR_LOAD_CONTROL,
@@ -200,13 +201,11 @@ def cos_alpha(maugis_parameter: ArrayLike) -> NDArray | float:
     >>> print(f"{cos_alpha(1.0):.3f}")
     0.685
     """
-    lam = np.asarray(maugis_parameter, float)
     lo, hi = _LAMBDA_RANGE
-    if not np.all((lam >= lo) & (lam <= hi)):
-        bad = lam[~((lam >= lo) & (lam <= hi))].reshape(-1)[0]
-        raise ParameterError(
-            "maugis_parameter", f"maugis_parameter must be in [{lo:g}, {hi:g}], got {bad!r}"
-        )
+    lam = check_array(
+        "maugis_parameter", maugis_parameter, low=lo, low_inclusive=True, high=hi,
+        high_inclusive=True,
+    )  # fmt: skip
     out = np.array([_cos_fit(float(x)) for x in lam.reshape(-1)]).reshape(lam.shape)
     return out.item() if out.ndim == 0 else out
 

@@ -18,6 +18,7 @@ from typing import ClassVar, Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .. import domain as _domain
 from .._validation import failure_policy
 from ..closed_forms.sphere import _sphere_maugis_parameter
 from ..errors import NoEquilibriumError, ParameterError
@@ -272,7 +273,9 @@ def sphere_contact_for_load(
             f"(R_over_h = {float(rho[i])!r}, sigma0_over_E = {float(s[i])!r}): the sphere "
             "has come off"
         )
-    # the root of F(a) = F on [a_po, hi], bisection on log a with Newton's steps
+    # the root of F(a) = F on [a_po, hi]: Newton's steps on log a, safeguarded (rtsafe): a
+    # step that leaves the bracket, or does not halve the one before last, is a bisection;
+    # it starts at Hertz's radius for the load, where that is inside the bracket
     unit = np.where(s > 0, _unit(rho, s), 1.0)
     lo = np.log(np.maximum(a_po, 1e-200 * unit))
     hi = np.log(np.maximum(np.cbrt(np.maximum(F, 0.0) / rho) * 4, 40 * unit))
@@ -281,22 +284,43 @@ def sphere_contact_for_load(
         if not np.any(short):
             break
         hi = np.where(short, hi + 2.0, hi)
-    v = 0.5 * (lo + hi)
-    for _ in range(200):
+    with np.errstate(divide="ignore"):
+        hertz = np.log(np.cbrt(0.75 * np.maximum(F, 0.0) / rho))
+    v = np.where((hertz > lo) & (hertz < hi), hertz, 0.5 * (lo + hi))
+    dx_old = dx = hi - lo
+    for _ in range(400):
         a = np.exp(v)
         _, Fa, _, q, _ = _b.branch(a, rho, s)
         dF = _b.slopes(a, rho, s, q)[0]
         over = Fa > F
         hi, lo = np.where(over, v, hi), np.where(over, lo, v)
-        with np.errstate(divide="ignore", invalid="ignore"):
-            new = v - (Fa - F) / (dF * a)
-        new = np.where(np.isfinite(new) & (new > lo) & (new < hi), new, 0.5 * (lo + hi))
-        done = np.abs(new - v) <= 4e-16 * np.maximum(1.0, np.abs(v))
+        with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+            step = (Fa - F) / (dF * a)
+        new = v - step
+        slow = np.abs(step) > 0.5 * np.abs(dx_old)
+        bisect = ~np.isfinite(new) | (new < lo) | (new > hi) | slow
+        new = np.where(bisect, 0.5 * (lo + hi), new)
+        # a point whose load is met, or whose Newton step is below rounding, stays
+        done = (Fa == F) | (~bisect & (np.abs(step) <= 4e-16 * np.maximum(1.0, np.abs(v))))
+        new = np.where(done, v, new)
+        dx_old, dx = dx, np.abs(new - v)
         v = new
         if np.all(done | below):
             break
     alpha = np.where(below, np.nan, np.exp(v))
+    wide = ~below & (alpha > _domain.DOMAIN["a_over_R"][2])
+    if np.any(wide):  # a load beyond the radii the sphere is solved for
+        i = int(np.flatnonzero(wide)[0])
+        raise ParameterError(
+            "F_over_EhR",
+            f"F_over_EhR = {float(F[i])!r} needs a contact radius a/R = {float(alpha[i]):.6g}, "
+            f"beyond {_domain.DOMAIN['a_over_R'][2]:g} (R_over_h = {float(rho[i])!r}, "
+            f"sigma0_over_E = {float(s[i])!r}): the sphere is solved for a/R up to it",
+        )
     vals = states(np.where(below, 1.0, alpha), rho, s)
+    vals["stable"] = ~below  # the branch beyond the pull-off, its end included
     for key in ("a_over_R", "c_over_R", "F_over_EhR", "delta_over_h", "residual_separation"):
         vals[key] = np.where(below, np.nan, vals[key])
+    for key in ("converged", "stable_displacement"):  # no state: none of these
+        vals[key] = np.where(below, False, vals[key])
     return as_result(SphereContact, scalar, shape, **vals)
