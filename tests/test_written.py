@@ -215,3 +215,13 @@ def test_a_value_as_python(value, text):
 def test_a_value_with_no_python_spelling_is_refused():
     with pytest.raises(TypeError, match="no Python line for a value of type object"):
         _value(object())
+
+
+def test_the_lines_are_written_only_where_asked_for():
+    pytest.importorskip("starlette")
+    from linecontact.web._workers import compute
+
+    values = {"radius": 5e-8, "modulus": 4.8e10, "work_of_adhesion": 0.3, "z0": 3e-10}
+    assert compute("pulloff", values).python == ""  # the API's own answer: none written
+    lines = compute("pulloff", values, python=True).python
+    assert lines.startswith("import linecontact as lc\ncyl = lc.Cylinder.from_modulus(5e-8")

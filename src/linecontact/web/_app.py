@@ -472,11 +472,11 @@ def create_app(
             return exc.response()
         python = _prefers_python(request)
         if not request.headers.get("content-type", "").startswith("multipart/form-data"):
-            return _respond(await pool.run(command, values, slow=slow), python)
+            return _respond(await pool.run(command, values, slow=slow, python=python), python)
         with tempfile.TemporaryDirectory(prefix="upload-", dir=pool.root) as tmpdir:
             data, path, given = await upload(request, tmpdir)
             request_ = {**values, "data": data[1]} if data else values  # the file's path
-            out = await pool.run(command, request_, slow=slow)
+            out = await pool.run(command, request_, slow=slow, python=python)
             return _respond(_without_path(out, path, given), python)
 
     async def start_job(request: Request) -> Response:

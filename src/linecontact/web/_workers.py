@@ -107,6 +107,7 @@ def compute(
     report: Any = None,
     workdir: str | None = None,
     max_bytes: int | None = None,
+    python: bool = False,
 ) -> Outcome:
     """The operation ``command`` on typed values, in this process (a worker's job).
 
@@ -122,6 +123,8 @@ def compute(
         The computation's directory (the server names it in no answer).
     max_bytes : int, optional
         The largest JSON text returned: a larger result is refused (413) rather than returned.
+    python : bool
+        Write the Python lines of the library calls made (``Outcome.python``; a page's).
 
     Returns
     -------
@@ -132,8 +135,8 @@ def compute(
         values = {**values, "workers": 1, "progress": report is not None}
         if report is not None:
             with contextlib.redirect_stderr(_Progress(report)):
-                return _sized(_unnamed(_call(command, values), workdir), max_bytes)
-    return _sized(_unnamed(_call(command, values), workdir), max_bytes)
+                return _sized(_unnamed(_call(command, values, python), workdir), max_bytes)
+    return _sized(_unnamed(_call(command, values, python), workdir), max_bytes)
 
 
 #: What the map's answer says in place of the server's directory (its files are not served).
@@ -167,7 +170,7 @@ def _sized(out: Outcome, max_bytes: int | None) -> Outcome:
     )
 
 
-def _call(command: str, values: dict[str, Any]) -> Outcome:
+def _call(command: str, values: dict[str, Any], python: bool = False) -> Outcome:
     """The operation ``command`` on the typed ``values``: its JSON, or the error."""
     from .. import operations
     from ..operations._messages import spell
@@ -188,7 +191,8 @@ def _call(command: str, values: dict[str, Any]) -> Outcome:
         flag = _flag(op, inputs.said_as, refused)
         return Outcome(status, flag=flag, message=message, warnings=said)
     body = render(got[0], "json")
-    return Outcome(200, body=body, warnings=said, seconds=seconds, python=written(inputs))
+    lines = written(inputs) if python else ""  # asked for: a large call's are long
+    return Outcome(200, body=body, warnings=said, seconds=seconds, python=lines)
 
 
 def _guarded(work: Any, say: Any, refused: list[str]) -> tuple[int, str, list[str]]:
@@ -259,9 +263,11 @@ def _serve(conn: Any) -> None:  # pragma: no cover - runs in the worker process
         if job is None:
             return
         try:
-            command, values, workdir, max_bytes = job
+            command, values, workdir, max_bytes, python = job
             report = lambda n, total: conn.send(("progress", n, total))  # noqa: E731
-            out = compute(command, values, report=report, workdir=workdir, max_bytes=max_bytes)
+            out = compute(
+                command, values, report=report, workdir=workdir, max_bytes=max_bytes, python=python
+            )
             if out.status == 200:  # the body as a file: no large message on the pipe
                 out.body_file = os.path.join(workdir, _RESULT)
                 with open(out.body_file, "w", encoding="utf-8") as f:
@@ -426,6 +432,7 @@ class Pool:
         slow: bool | None = None,
         on_start: Callable[[], None] | None = None,
         on_progress: Callable[[int, int], None] | None = None,
+        python: bool = False,
     ) -> Outcome:
         """The operation ``command`` on ``values`` on a worker, within the time limit (504 after).
 
@@ -447,6 +454,8 @@ class Pool:
             Called when it gets its worker.
         on_progress : callable, optional
             ``on_progress(done, total)`` where the computation reports its progress.
+        python : bool
+            Write the Python lines of the calls made (``Outcome.python``).
 
         Returns
         -------
@@ -477,7 +486,9 @@ class Pool:
             if on_start is not None:
                 on_start()
             try:
-                out = await self._exchange(worker, command, values, workdir, limit, on_progress)
+                out = await self._exchange(
+                    worker, command, values, workdir, limit, on_progress, python
+                )
             except _Died:
                 code = await asyncio.to_thread(_exitcode, worker)
                 return Outcome(
@@ -508,6 +519,7 @@ class Pool:
         workdir: str,
         limit: float,
         on_progress: Callable[[int, int], None] | None,
+        python: bool = False,
     ) -> Outcome:
         """Send the computation, hear its progress, and take its outcome."""
         if not worker.ready:  # a new worker: its imports are not the computation's time
@@ -516,7 +528,7 @@ class Pool:
             except RuntimeError:
                 raise _Died from None
         try:
-            worker.conn.send((command, values, workdir, self.max_result_bytes))
+            worker.conn.send((command, values, workdir, self.max_result_bytes, python))
         except (BrokenPipeError, OSError):
             raise _Died from None
         loop = asyncio.get_running_loop()
