@@ -47,6 +47,7 @@ __all__ = [
     "sphere_jkr_approach",
     "sphere_jkr_load",
     "sphere_maugis_parameter",
+    "sphere_tabor_parameter",
 ]
 
 #: lambda over Tabor's mu for the Dugdale step matched to the Lennard-Jones peak tension
@@ -70,6 +71,20 @@ def sphere_maugis_parameter(R_over_h: ArrayLike, sigma0_over_E: ArrayLike):
 
 def _sphere_maugis_parameter(rho, s):
     return 2 * np.cbrt(9 * s * s * rho / (16 * np.pi))
+
+
+def sphere_tabor_parameter(R_over_h: ArrayLike, sigma0_over_E: ArrayLike):
+    r"""Tabor's :math:`\mu = (R w^2/(E^2 z_0^3))^{1/3}` of the law matched to the Dugdale step.
+
+    With :math:`w = \sigma_0 h` and :math:`z_0 = S h` (``S = MAUGIS_STRENGTH``):
+    :math:`\mu = ((R/h)(\sigma_0/E)^2/S^3)^{1/3}`; the Maugis parameter is
+    :data:`LAMBDA_OVER_TABOR` times it.
+
+    >>> print(f"{sphere_maugis_parameter(100.0, 0.01) / sphere_tabor_parameter(100.0, 0.01):.4f}")
+    1.1570
+    """
+    rho, s = np.asarray(R_over_h, float), np.asarray(sigma0_over_E, float)
+    return np.cbrt(rho * s * s / MAUGIS_STRENGTH**3)
 
 
 def sphere_hertz_load(a_over_R: ArrayLike, R_over_h: ArrayLike):

@@ -18,7 +18,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from .. import domain as _domain
 from .. import sphere as _sphere
-from ..closed_forms.sphere import sphere_maugis_parameter
+from ..closed_forms.sphere import sphere_maugis_parameter, sphere_tabor_parameter
 from ..errors import NoEquilibriumError, ParameterError
 from ..laws._values import Dugdale, Law, LennardJones
 from ..results import Result
@@ -160,9 +160,7 @@ class Sphere(Body):
     @property
     def tabor_parameter(self) -> float:
         r"""Tabor's :math:`\mu = (R w^2/(E^2 z_0^3))^{1/3}`, ``z0 = 16h/(9\sqrt3)`` the law's."""
-        z0 = _S_LJ * self.adhesion_range
-        w = self.work_of_adhesion
-        return (self.radius * w * w / (self.modulus**2 * z0**3)) ** (1 / 3)
+        return float(sphere_tabor_parameter(self.R_over_h, self.sigma0_over_E))
 
     def _scales(self) -> Scales:
         return Scales.of(self)
@@ -287,7 +285,10 @@ class Sphere(Body):
         the pull-off in compression.
         """
         self._written("load_curve")
-        a_max = None if max_radius is None else max_radius / self.radius
+        a_max = None
+        if max_radius is not None:
+            _domain.check_si("max_radius", max_radius, self.radius, "a_max_over_R", "m")
+            a_max = max_radius / self.radius
         c = _sphere.sphere_load_curve(
             self.R_over_h,
             self.sigma0_over_E,

@@ -14,9 +14,9 @@ from typing import Any
 
 import numpy as np
 
+from ..closed_forms.sphere import sphere_tabor_parameter
 from ..domain import check_si
 from ..errors import ParameterError
-from ..materials import MAUGIS_STRENGTH
 from ..output import Table
 from ..sphere import sphere_contact, sphere_contact_for_load, sphere_load_curve, sphere_pull_off
 from ..sphere.contact import checked
@@ -96,7 +96,7 @@ def _pulloff_lj(args: Inputs, rho: float, s: float, body: Any) -> Table:
         raise ParameterError(
             "--sigma0-over-E", "the Lennard-Jones law needs adhesion: --sigma0-over-E > 0"
         )
-    mu = float(np.cbrt(rho * s * s / MAUGIS_STRENGTH**3))  # (R w^2/(E^2 z0^3))^(1/3)
+    mu = float(sphere_tabor_parameter(rho, s))
     if mu > _lj.MU_MAX:
         raise ParameterError(
             "--law",
