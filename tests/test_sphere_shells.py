@@ -87,8 +87,6 @@ def test_the_groups_give_the_nondimensional_solvers_numbers(capsys):
         (["normal", "--body", "sphere", *SI, "--law", "lennard-jones", "--force", "0"], "--law"),
         (["curve", "--body", "sphere", "--R-over-h", "10", "--sigma0-over-E", "0.1",
           "--law", "lennard-jones"], "--law"),
-        (["pulloff", "--body", "sphere", "--R-over-h", "1e8", "--sigma0-over-E", "0.1",
-          "--law", "lennard-jones"], "--law"),  # Tabor's parameter over 5
         (["pulloff", "--body", "sphere", *SI, "--cross-section", "hexagon"], "--cross-section"),
         (["pulloff", "--body", "sphere", *SI, "--corner-radius", "1e-9"], "--corner-radius"),
         (["pulloff", "--body", "sphere", *SI, "--corner-radius", "0"], "--corner-radius"),
@@ -178,6 +176,22 @@ def test_the_lennard_jones_spheres_pull_off_is_one_number_in_python_and_the_cli(
     assert rec["F_pulloff_over_piwR"] == pytest.approx(
         want.nondimensional.F_pulloff_over_piwR, rel=1e-9
     )
+
+
+def test_a_colloidal_probe_beyond_the_self_consistent_range_is_the_limit_form(capsys):
+    # a 50 um probe on a soft substrate: Tabor's parameter beyond 20
+    probe = lc.Sphere.from_modulus(
+        50e-6, 1e9, work_of_adhesion=0.1, equilibrium_spacing=3e-10
+    ).under(lc.LennardJones)
+    assert 25 < probe.tabor_parameter < 30
+    got = probe.pull_off()
+    assert got.nondimensional.method == "limit"
+    assert got.pull_off_force == pytest.approx(-1.5 * np.pi * 0.1 * 50e-6, rel=2e-3)  # JKR
+    si = ["--radius", "50e-6", "--modulus", "1e9", "--work-of-adhesion", "0.1", "--z0", "3e-10"]
+    rec = _cli(capsys, ["pulloff", "--body", "sphere", "--law", "lennard-jones", *si])[0]
+    assert rec["F_pulloff_N"] == pytest.approx(got.pull_off_force, rel=ULP)
+    assert rec["method"] == "limit"
+    assert rec["error_estimate"] == pytest.approx(got.nondimensional.error_estimate, rel=ULP)
 
 
 def test_a_sweep_of_the_contact_and_the_curve_gives_pythons_numbers():

@@ -228,9 +228,10 @@ class Sphere(Body):
     def pull_off(self, control: Literal["load", "displacement"] = "load") -> SpherePullOffSI:
         """The pull-off [N] under load or displacement control.
 
-        Under the Lennard-Jones law, the self-consistent sphere
-        (:func:`linecontact.sphere.lennard_jones.sphere_lj_pull_off`) under load control, for
-        Tabor's parameter up to its ``MU_MAX``.
+        Under the Lennard-Jones law, the Lennard-Jones sphere
+        (:func:`linecontact.sphere.lennard_jones.sphere_lj_pull_off`) under load control:
+        self-consistent up to Tabor's parameter ``MU_SELF_CONSISTENT``, beyond it the JKR limit
+        with its fitted correction (``nondimensional.method``).
         """
         self._written("pull_off")
         if isinstance(self.adhesion, LennardJones):
@@ -255,15 +256,7 @@ class Sphere(Body):
                 f"the pull-off under {control} control is not written for a sphere under the "
                 "lennard-jones law: under load control it is"
             )
-        mu = self.tabor_parameter
-        if mu > _lj.MU_MAX:
-            raise ValueError(
-                f"Tabor's parameter of this sphere is {mu:.4g} (radius={self.radius!r} m, "
-                f"modulus={self.modulus!r} Pa, adhesion={self.adhesion!r}): the Lennard-Jones "
-                f"sphere is solved up to {_lj.MU_MAX:g}; use the Dugdale law (any value), or a "
-                f"radius below {self.radius * (_lj.MU_MAX / mu) ** 3:.3g} m"
-            )
-        r = _lj.sphere_lj_pull_off(mu)
+        r = _lj.sphere_lj_pull_off(self.tabor_parameter)
         z0 = _S_LJ * self.adhesion_range
         root = (self.radius * z0) ** 0.5
         return SpherePullOffSI(

@@ -88,7 +88,7 @@ def pulloff(args: Inputs, rho: float, s: float, body: Any) -> Table:
 
 
 def _pulloff_lj(args: Inputs, rho: float, s: float, body: Any) -> Table:
-    """The self-consistent Lennard-Jones sphere's pull-off (Tabor's parameter up to 5)."""
+    """The Lennard-Jones sphere's pull-off (self-consistent up to Tabor's parameter 20)."""
     from ..sphere import lennard_jones as _lj
 
     checked(R_over_h=rho, sigma0_over_E=s)  # the domain of the groups, as the Dugdale law's
@@ -97,13 +97,6 @@ def _pulloff_lj(args: Inputs, rho: float, s: float, body: Any) -> Table:
             "--sigma0-over-E", "the Lennard-Jones law needs adhesion: --sigma0-over-E > 0"
         )
     mu = float(sphere_tabor_parameter(rho, s))
-    if mu > _lj.MU_MAX:
-        raise ParameterError(
-            "--law",
-            f"--law lennard-jones: Tabor's parameter (R w^2/(E^2 z0^3))^(1/3) of this sphere "
-            f"is {mu:.4g}, over {_lj.MU_MAX:g}, the largest the Lennard-Jones sphere is "
-            "solved for: use --law dugdale (any value)",
-        )
     si = None if body is None else made(args, "result", body.pull_off)
     p = _lj.sphere_lj_pull_off(mu) if si is None else si.nondimensional
     return _table(
@@ -113,9 +106,10 @@ def _pulloff_lj(args: Inputs, rho: float, s: float, body: Any) -> Table:
         PULL_OFF_KEYS,
         ["F_pulloff_N"],
         (rho, s, body),
-        "pull-off of a sphere under the Lennard-Jones law (self-consistent, Greenwood 1997; "
-        "load control; F/(pi w R): -2 rigid, -1.5 JKR)",
-        ["F_pulloff_over_piwR", "error_estimate", "maugis_parameter"],
+        "pull-off of a sphere under the Lennard-Jones law (self-consistent to Tabor's "
+        "parameter 20, Greenwood 1997, beyond it the JKR limit corrected; load control; "
+        "F/(pi w R): -2 rigid, -1.5 JKR)",
+        ["F_pulloff_over_piwR", "error_estimate", "maugis_parameter", "method"],
         drop=("F_coarse", "F_fine", "converged"),
     )
 

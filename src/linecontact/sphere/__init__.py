@@ -14,7 +14,8 @@ radius ``a/R``), the approach over ``h``, the force [N] over ``E h R``; Maugis' 
   :func:`cos_alpha`, :func:`maugis_parameter_of_cos_alpha` -- the COS transition parameter
   fitted to the library's own curves;
 - :func:`sphere_lj_pull_off`, :func:`sphere_lj_curve` -- the self-consistent Lennard-Jones
-  sphere (Greenwood 1997) in Tabor's parameter, up to ``lennard_jones.MU_MAX``.
+  sphere (Greenwood 1997) in Tabor's parameter: self-consistent up to
+  ``lennard_jones.MU_SELF_CONSISTENT``, the pull-off beyond by the JKR limit corrected.
 
 The closed forms of its limits are in :mod:`linecontact.closed_forms.sphere`.
 """

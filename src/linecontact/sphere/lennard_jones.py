@@ -38,25 +38,34 @@ The Dugdale step matched to the law (same :math:`w`, same peak tension :math:`\s
 **Discretisation.** :math:`P` is constant on rings; a ring's displacement is that of its
 outer loaded disc less its inner one, exactly (a disc of radius :math:`b` under a unit
 pressure displaces the surface by :math:`(4b/\pi) E(r/b)` inside and
-:math:`(4r/\pi)[E(b/r) - (1 - b^2/r^2) K(b/r)]` outside, over :math:`E`). Collocation at the
-rings' mid-points. The ring edges are a smooth map of a uniform grid: uniform (element
-:math:`h`) out to a radius beyond the contact where the curve ends, then growing
-geometrically (by 10 % an element of the coarse mesh) to :math:`L \ge 40`; beyond :math:`L` the
+:math:`(4r/\pi)[E(m) - (1 - m) K(m)]`, :math:`m = b^2/r^2`, outside, over :math:`E`; the
+bracket by its series for :math:`m \le 1/4`, where it cancels). Collocation at the rings'
+mid-points. The rings are graded about the edge of the contact: a smooth map of a uniform
+grid gives elements :math:`h = \min(0.05, 0.12\,\mu_T^{-3/2})` (``m = 1``) over 40
+elements either side of the edge, where the gap rises from :math:`z_0` to a few
+:math:`z_0` over about :math:`\mu_T^{-3/2}` (a JKR crack opening), growing by 10 % an
+element away from it up to :math:`\max(0.05, 0.05\,e)` (inwards to the centre, outwards
+over 4 more units) and beyond that growing again to :math:`L \ge 40`; beyond :math:`L` the
 attraction of the rigid gap is added to the load in closed form,
 :math:`-\tfrac83 \zeta(L)^{-2}` (about :math:`4 \times 10^{-6}` at :math:`L = 40`; its
-displacements inside are left out). :math:`h` resolves the edge of the contact, where
-the gap rises from :math:`z_0` to a few :math:`z_0` over about :math:`\mu_T^{-3/2}`
-(a JKR crack opening).
+displacements inside are left out). A few hundred rings at every :math:`\mu_T`, where a
+uniform mesh over the contact would need :math:`\mu_T^2` times more.
 
 **The curve** is followed by one monotone parameter :math:`\tau`: far away the gap at the
 centre (:math:`\tau = 1.5 - \zeta(0)`, from :math:`-4.5`), then the edge
 (:math:`\tau = e`, the radius where the gap is :math:`1.5\, z_0`): the states hold it by a
-bordered Newton system (the gaps and :math:`\Delta` unknown). The edge moves one way through
+bordered Newton system (the gaps and :math:`\Delta` unknown), each on rings graded about
+its own edge (made anew when the edge has moved half the fine band), its first guess a
+neighbour's gaps with radii scaled by the ratio of the edges. The edge moves one way through
 the jump-in, the pull-off and the compressive branch, where neither the load nor the approach
 would (as the line solver, :mod:`linecontact.lennard_jones`). The pull-off under load control
-is the minimum of the load along the curve, refined by Brent's method in :math:`\tau`, on a
-mesh and on the mesh with every ring halved; the result is the Richardson extrapolation of
-the two (second order, measured) and its error estimate their difference over three.
+is the minimum of the load along the curve (followed at half the resolution), refined by
+Brent's method in :math:`\tau` on rings that follow the edge, then within the fine band of
+one mesh about it (made again until the minimum lies inside) and of the same mesh with every
+ring halved; the result is the Richardson extrapolation of the two (second order, measured)
+and its error estimate their difference over three. Beyond
+:data:`MU_SELF_CONSISTENT` the pull-off is the JKR limit with a fitted correction, its
+error estimate the whole correction (:func:`sphere_lj_pull_off`).
 
 References
 ----------
@@ -78,16 +87,21 @@ from ..errors import ConvergenceError, ParameterError
 from ..results import Result
 
 __all__ = [
-    "MU_MAX",
+    "MU_SELF_CONSISTENT",
     "SphereLJCurve",
     "SphereLJPullOff",
     "sphere_lj_curve",
     "sphere_lj_pull_off",
 ]
 
-#: The largest Tabor parameter solved (the uniform mesh resolves its edge, about
-#: :math:`\mu_T^{-3/2}` wide, over the whole contact).
-MU_MAX = 5.0
+#: The largest Tabor parameter solved self-consistently; beyond, the pull-off is the JKR
+#: limit with a fitted correction (:func:`sphere_lj_pull_off`) and the curve is refused.
+MU_SELF_CONSISTENT = 20.0
+#: :math:`F/F_\text{JKR} - 1 = C \mu_T^{-p}` (:math:`F_\text{JKR} = -1.5`): least squares in
+#: ``ln`` on the self-consistent pull-offs at :math:`\mu_T` = 10, 12, 14, 17, 20 (default
+#: mesh; ``benchmarks/sphere.py`` reproduces the fit).
+_C = 0.2334371
+_P = 1.5738267
 #: The gap over :math:`z_0` that marks the edge the curve follows.
 _EDGE_GAP = 1.5
 #: The central gap where a curve starts.
@@ -97,6 +111,10 @@ _N_FAR = 9
 _H = 0.05
 #: The element over the edge length :math:`\mu_T^{-3/2}` (``m = 1``).
 _H_EDGE = 0.12
+#: The fine band's half-width about the edge, in elements.
+_BAND = 40
+#: How far beyond the band the elements stay no larger than the cap (the attraction's tail).
+_REACH = 4.0
 #: Growth of the coarse elements beyond the uniform part, and the mesh's end.
 _GROWTH = 0.10
 _FAR_END = 40.0
@@ -110,13 +128,37 @@ _CHORD = 0.6
 # the rings
 
 
+#: :math:`E(m) - (1 - m)K(m) = (\pi/2)\sum_{n \ge 1} a_{n-1} m^n/(2n)`,
+#: :math:`a_n = \binom{2n}{n}^2/16^n`: the series' coefficients, for :math:`m \le 1/4`
+#: (30 terms: the next below :math:`10^{-19}`).
+_SERIES = np.cumprod(np.r_[1.0, [((2 * n - 1) / (2 * n)) ** 2 for n in range(1, 30)]]) / (
+    2.0 * np.arange(1, 31)
+)
+
+
+def _e_less_k(m: NDArray) -> NDArray:
+    r""":math:`E(m) - (1 - m)K(m)`, without cancellation at small ``m`` (the series there)."""
+    from scipy.special import ellipe, ellipk
+
+    out = np.empty_like(m)
+    small = m <= 0.25
+    x = m[small]
+    acc = np.zeros_like(x)
+    for c in _SERIES[::-1]:
+        acc = (acc + c) * x
+    out[small] = 0.5 * math.pi * acc
+    y = m[~small]
+    out[~small] = ellipe(y) - (1.0 - y) * ellipk(y)
+    return out
+
+
 def _disc(r: NDArray, b: NDArray) -> NDArray:
     r"""The displacement at ``r`` of a disc of radius ``b`` under a unit pressure, times ``E``.
 
-    :math:`(4b/\pi) E(r/b)` inside, :math:`(4r/\pi)[E - (1 - m) K](m = b^2/r^2)` outside; the
-    bracket as :math:`m (K - R_D(0, 1 - m, 1)/3)`, which does not cancel for small ``m``.
+    :math:`(4b/\pi) E(r/b)` inside, :math:`(4r/\pi)[E - (1 - m) K](m = b^2/r^2)` outside
+    (:func:`_e_less_k`).
     """
-    from scipy.special import ellipe, ellipk, elliprd
+    from scipy.special import ellipe
 
     out = np.empty(np.broadcast_shapes(r.shape, b.shape))
     rr, bb = np.broadcast_arrays(r, b)
@@ -124,49 +166,111 @@ def _disc(r: NDArray, b: NDArray) -> NDArray:
     ri, bi = rr[inside], bb[inside]
     out[inside] = (4.0 / math.pi) * bi * ellipe((ri / bi) ** 2)
     ro, bo = rr[~inside], bb[~inside]
-    m = (bo / ro) ** 2
-    out[~inside] = (4.0 / math.pi) * ro * m * (ellipk(m) - elliprd(0.0, 1.0 - m, 1.0) / 3.0)
+    out[~inside] = (4.0 / math.pi) * ro * _e_less_k((bo / ro) ** 2)
     return out
 
 
 @dataclass(frozen=True, eq=False)
 class _Mesh:
-    """Rings ``[edges[j], edges[j+1]]``, collocation at ``mid``; the influence matrix ``A``."""
+    """Rings ``[edges[j], edges[j+1]]``, collocation at ``mid``; the influence matrix ``A``.
+
+    Fine (element ``h``) over ``centre +- band``, the edge of the contact it is made for.
+    """
 
     edges: NDArray
     mid: NDArray
     A: NDArray  # gap at mid[i] from a unit P on ring j, over mu^(3/2)
     area: NDArray  # b_(j+1)^2 - b_j^2: F/(pi w R) = area @ P (+ the tail)
-    centre: NDArray  # the displacement at r = 0 of a unit P on ring j: 2 (b_(j+1) - b_j)
+    centre_disp: NDArray  # the displacement at r = 0 of a unit P on ring j: 2 (b_(j+1) - b_j)
+    centre: float
+    band: float
+    h: float
 
 
-def _map(t: NDArray, h: float, t_band: float, a: float) -> NDArray:
-    """Radius of the grid coordinate ``t``: ``h t`` to ``t_band``, then growing as ``exp(a t)``."""
-    rho_b = h * t_band
-    beyond = rho_b + h * np.expm1(a * (t - t_band)) / a
-    return np.where(t <= t_band, h * t, beyond)
+class _Grading:
+    r"""The map from the grid coordinate :math:`t` to the radius: the rings' sizes.
 
-
-def _rings(mu: float, rho_band: float, m: float, level: int) -> _Mesh:
-    r"""The rings at resolution ``m``, ``level`` times bisected in the grid coordinate.
-
-    Uniform elements :math:`h = \min(0.05, 0.12\,\mu_T^{-3/2})/m` out to ``rho_band``, then
-    growing by :math:`10/m` % per element to :data:`_FAR_END` (or four times ``rho_band``).
+    The element is ``h`` over ``[c - B, c + B]``; away from it, at a distance :math:`d`,
+    it grows as :math:`h + a d` (by the factor :math:`e^{a}` an element) up to ``cap``,
+    inwards to the centre, outwards over the distance ``reach``, and beyond that grows
+    again from ``cap``. :math:`t(\varrho) = \int_0^\varrho d\varrho'/s(\varrho')` in closed
+    form, and its inverse.
     """
+
+    def __init__(self, h: float, c: float, B: float, a: float, cap: float, reach: float) -> None:
+        self.h, self.a, self.cap, self.reach = h, a, max(cap, h), reach
+        self.lo, self.hi = max(c - B, 0.0), c + B
+        self.t_lo = float(self._t_in(self.lo))
+        self.t_hi = self.t_lo + (self.hi - self.lo) / h
+        self.t_reach = self.t_hi + float(self._t_in(reach))
+
+    def _t_in(self, d: float | NDArray) -> NDArray:
+        """Elements over the distance ``d`` graded from ``h`` (capped)."""
+        h, a, cap = self.h, self.a, self.cap
+        d_cap = (cap - h) / a
+        d = np.asarray(d, float)
+        return np.where(
+            d <= d_cap, np.log1p(a * d / h) / a, math.log(cap / h) / a + (d - d_cap) / cap
+        )
+
+    def _d_in(self, t: NDArray) -> NDArray:
+        h, a, cap = self.h, self.a, self.cap
+        t_cap = math.log(cap / h) / a
+        return np.where(t <= t_cap, h * np.expm1(a * t) / a, (cap - h) / a + (t - t_cap) * cap)
+
+    def t(self, rho: float) -> float:
+        if rho <= self.lo:
+            return self.t_lo - float(self._t_in(self.lo - rho))
+        if rho <= self.hi:
+            return self.t_lo + (rho - self.lo) / self.h
+        d = rho - self.hi
+        if d <= self.reach:
+            return self.t_hi + float(self._t_in(d))
+        return self.t_reach + math.log1p(self.a * (d - self.reach) / self.cap) / self.a
+
+    def rho(self, t: NDArray) -> NDArray:
+        a = self.a
+        inner = self.lo - self._d_in(np.maximum(self.t_lo - t, 0.0))
+        band = self.lo + (t - self.t_lo) * self.h
+        outer = self.hi + self._d_in(np.clip(t - self.t_hi, 0.0, self.t_reach - self.t_hi))
+        beyond = self.cap * np.expm1(a * np.maximum(t - self.t_reach, 0.0)) / a
+        return np.select(
+            [t < self.t_lo, t <= self.t_hi, t <= self.t_reach],
+            [inner, band, outer],
+            outer + beyond,
+        )
+
+
+def _element(mu: float, m: float) -> float:
+    r"""The element at the edge: :math:`\min(0.05, 0.12\,\mu_T^{-3/2})/m`."""
     edge = _H_EDGE * mu**-1.5 if mu > 0 else math.inf
-    h = min(_H, edge) / m
-    t_band = math.ceil(rho_band / h)
-    far = max(_FAR_END, 4.0 * rho_band)
-    a = math.log1p(_GROWTH) / m  # the elements beyond scale with 1/m too
-    t_end = t_band + math.ceil(math.log1p(a * (far - h * t_band) / h) / a)
+    return min(_H, edge) / m
+
+
+def _rings(mu: float, centre: float, m: float, level: int, far: float) -> _Mesh:
+    r"""The rings at resolution ``m`` about the edge ``centre``, ``level`` times bisected.
+
+    Elements :math:`h = \min(0.05, 0.12\,\mu_T^{-3/2})/m` over ``centre`` :math:`\pm`
+    :data:`_BAND` elements of the default resolution, growing away from it by
+    :math:`10/m` % an element up to :math:`\max(0.05, 0.05\,c)/m` (inwards to the centre,
+    outwards over :data:`_REACH`, beyond which they grow again) to ``far``. The same map for
+    every ``level``: a level's rings are the previous level's, halved.
+    """
+    h = _element(mu, m)
+    a = math.log1p(_GROWTH) / m
+    band = _BAND * _element(mu, 1.0)  # the same at every resolution
+    g = _Grading(h, centre, band, a, max(_H, 0.05 * centre) / m, _REACH)
+    T = g.t(far)
+    n = math.ceil(T)
     k = 2**level
-    t = np.arange(t_end * k + 1) / k
-    edges = _map(t, h, t_band, a)
-    mid = _map(t[:-1] + 0.5 / k, h, t_band, a)
+    t = np.arange(n * k + 1) * (T / (n * k))
+    edges = g.rho(t)
+    edges[0] = 0.0
+    mid = g.rho(t[:-1] + 0.5 * T / (n * k))
     D = _disc(mid[:, None], edges[None, 1:])
     A = D.copy()
     A[:, 1:] -= D[:, :-1]
-    return _Mesh(edges, mid, A, np.diff(edges**2), 2.0 * np.diff(edges))
+    return _Mesh(edges, mid, A, np.diff(edges**2), 2.0 * np.diff(edges), centre, band, h)
 
 
 def _law(z: NDArray) -> tuple[NDArray, NDArray]:
@@ -187,6 +291,7 @@ class _State:
     F: float  # over pi w R
     central_gap: float
     contact_radius: float  # where the gap crosses z0 (0 where it exceeds z0 everywhere)
+    x: NDArray  # the collocation radii of the mesh it was solved on
 
 
 def _constraint(mesh: _Mesh, tau: float) -> tuple[int, float, float]:
@@ -267,8 +372,8 @@ def _state(
     P = _law(zeta)[0]
     z_far = zeta[-1] + 0.5 * (mesh.edges[-1] ** 2 - mesh.mid[-1] ** 2)
     F = float(mesh.area @ P) - (8.0 / 3.0) / z_far**2
-    gap0 = -delta + c * float(mesh.centre @ P)
-    return _State(tau, zeta, delta, F, gap0, _crossing(mesh.mid, zeta, 1.0))
+    gap0 = -delta + c * float(mesh.centre_disp @ P)
+    return _State(tau, zeta, delta, F, gap0, _crossing(mesh.mid, zeta, 1.0), mesh.mid)
 
 
 def _crossing(x: NDArray, zeta: NDArray, level: float) -> float:
@@ -283,17 +388,34 @@ def _crossing(x: NDArray, zeta: NDArray, level: float) -> float:
     return float(x[i] + t * (x[i + 1] - x[i]))
 
 
-def _guess(states: list[_State], tau: float) -> tuple[NDArray, float]:
-    """Linear extrapolation in ``tau`` from the two nearest states (no lower than either)."""
+def _on(s: _State, x: NDArray, tau: float) -> NDArray:
+    r"""``s``'s gaps at the radii ``x``, its edge moved to ``tau`` (radii scaled by the ratio).
+
+    Beyond its last radius the rigid gap's growth :math:`\varrho^2/2` is added.
+    """
+    y = x * (s.tau / tau) if (tau > 0.0 and s.tau > 0.0) else x
+    z = np.interp(y, s.x, s.zeta)
+    out = y > s.x[-1]
+    z[out] += 0.5 * (y[out] ** 2 - s.x[-1] ** 2)
+    return z
+
+
+def _guess(states: list[_State], tau: float, x: NDArray) -> tuple[NDArray, float]:
+    """Linear extrapolation in ``tau`` from the two nearest states (no lower than either).
+
+    Each on the radii ``x`` with its edge moved to ``tau`` (:func:`_on`).
+    """
     near = sorted(states, key=lambda s: abs(s.tau - tau))
     s = near[0]
     other = [p for p in near[1:] if p.tau != s.tau]
+    zs = _on(s, x, tau)
     if not other:
-        return s.zeta, s.delta
+        return zs, s.delta
     p = other[0]
+    zp = _on(p, x, tau)
     t = (tau - s.tau) / (s.tau - p.tau)
-    z = s.zeta + t * (s.zeta - p.zeta)
-    return np.maximum(z, 0.9 * np.minimum(s.zeta, p.zeta)), s.delta + t * (s.delta - p.delta)
+    z = zs + t * (zs - zp)
+    return np.maximum(z, 0.9 * np.minimum(zs, zp)), s.delta + t * (s.delta - p.delta)
 
 
 def _fail(what: str, mu: float, tau: float) -> ConvergenceError:
@@ -308,50 +430,78 @@ def _fail(what: str, mu: float, tau: float) -> ConvergenceError:
 
 
 class _Path:
-    """The states of one mesh along ``tau``, solved from their nearest neighbours."""
+    """States along ``tau``, each solved from its nearest neighbours.
 
-    def __init__(self, mu: float, mesh: _Mesh) -> None:
-        self.mu, self.mesh = mu, mesh
+    On one mesh about the edge ``centre``, or (``centre=None``) on meshes that follow the
+    edge: made anew about it wherever it has left the inner half of the fine band.
+    """
+
+    def __init__(
+        self, mu: float, m: float, far: float, *, centre: float | None = None, level: int = 0
+    ) -> None:
+        self.mu, self.m, self.far_end, self.level = mu, m, far, level
+        self.follow = centre is None
+        self.mesh = _rings(mu, 0.0 if centre is None else centre, m, level, far)
         self.states: list[_State] = []
-        self.lu: dict = {}  # the chord Newton's factorisation, shared along the path
+        self.lu: dict = {}  # the chord Newton's factorisation, shared along a mesh
+        self.known: dict[float, _State] = {}
+        self.meshes = 1
+
+    def _mesh_for(self, tau: float) -> _Mesh:
+        e = max(tau, 0.0)
+        if self.follow and abs(e - self.mesh.centre) > 0.5 * self.mesh.band:
+            self.mesh = _rings(self.mu, e, self.m, self.level, self.far_end)
+            self.lu.clear()
+            self.meshes += 1
+        return self.mesh
 
     def solve(self, tau: float) -> _State | None:
+        """The state at ``tau``, from the nearest ones; else reached in halved steps.
+
+        ``None`` where neither converges.
+        """
+        known = self.known.get(tau)
+        if known is not None:
+            return known
+        s = self._direct(tau)
+        return self._walk(tau) if s is None and self.states else s
+
+    def _direct(self, tau: float) -> _State | None:
+        mesh = self._mesh_for(tau)
         if self.states:
-            z, d = _guess(self.states, tau)
+            z, d = _guess(self.states, tau, mesh.mid)
         else:
             g = _EDGE_GAP - tau
-            z, d = g + 0.5 * self.mesh.mid**2, -g
-        s = _state(self.mu, self.mesh, tau, z, d, self.lu)
+            z, d = g + 0.5 * mesh.mid**2, -g
+        s = _state(self.mu, mesh, tau, z, d, self.lu)
         if s is not None:
             self.states.append(s)
+            self.known[tau] = s
         return s
+
+    def _walk(self, tau: float) -> _State | None:
+        lo = min(self.states, key=lambda p: abs(p.tau - tau)).tau
+        step = 0.5 * (tau - lo)
+        while abs(step) > 1e-9 * max(1.0, abs(tau)):
+            t = self._direct(lo + step)
+            if t is None:
+                step *= 0.5
+                continue
+            lo, left = t.tau, tau - t.tau
+            if abs(left) < 1e-12 * max(1.0, abs(tau)):
+                return t
+            step = math.copysign(min(2.0 * abs(step), abs(left)), left)
+        return None
 
     def far(self) -> list[_State]:
         out: list[_State] = []
         for g in np.geomspace(_START, _EDGE_GAP, _N_FAR):
-            s = self._reach(_EDGE_GAP - float(g), out)
+            tau = _EDGE_GAP - float(g)
+            s = self.solve(tau)
+            if s is None:
+                raise _fail("curve", self.mu, tau)
             out.append(s)
         return out
-
-    def _reach(self, tau: float, out: list[_State]) -> _State:
-        s = self.solve(tau)
-        if s is not None:
-            return s
-        lo = out[-1].tau if out else tau
-        step = 0.5 * (tau - lo)
-        while True:  # halved steps from the last state
-            if abs(step) < 1e-9:
-                raise _fail("curve", self.mu, tau)
-            t = self.solve(lo + step)
-            if t is None:
-                step *= 0.5
-                continue
-            lo = t.tau
-            if lo >= tau:
-                return t
-            step = min(2 * step, tau - lo)
-            if abs(tau - lo) < 1e-12:
-                return t
 
     def climb(self, start: list[_State], done, h: float) -> list[_State]:
         """``start`` continued in the edge until ``done(states)``."""
@@ -370,8 +520,13 @@ class _Path:
             step = min(1.5 * step, max(4.0 * h, 0.08 * t.tau))
         return out
 
-    def minimum(self, a: float, b: float, c: float, sign: float = 1.0) -> _State:
-        """The minimum of ``sign`` times the load in ``tau``, bracketed by ``a < b < c`` (Brent)."""
+    def minimum(
+        self, a: float, b: float, c: float, sign: float = 1.0, *, bounded: bool = False
+    ) -> _State:
+        """The minimum of ``sign`` times the load in ``tau``, bracketed by ``a < b < c`` (Brent).
+
+        ``bounded``: searched within ``[a, c]`` only (``b`` unused).
+        """
         from scipy.optimize import minimize_scalar
 
         cache: dict[float, _State] = {}
@@ -383,28 +538,32 @@ class _Path:
             cache[float(tau)] = s
             return sign * s.F
 
-        r = minimize_scalar(f, bracket=(a, b, c), method="brent", options={"xtol": 1e-7})
+        if bounded:
+            tol = 1e-4 * (c - a)
+            r = minimize_scalar(f, bounds=(a, c), method="bounded", options={"xatol": tol})
+        else:
+            r = minimize_scalar(f, bracket=(a, b, c), method="brent", options={"xtol": 1e-7})
         best = min(cache.values(), key=lambda s: sign * s.F)
         return cache.get(float(r.x), best)
 
 
-def _band(mu: float, F_max: float) -> float:
-    r"""The uniform part's end: beyond the JKR contact at ``F_max`` (and :math:`\varrho = 4`)."""
+def _far(mu: float, F_max: float) -> float:
+    r"""The mesh's end: :data:`_FAR_END`, or four times the JKR contact at ``F_max``."""
     a3 = 0.75 * math.pi * mu**1.5 * (F_max + 3.0 + math.sqrt(6.0 * F_max + 9.0))
-    return max(4.0, 1.5 * a3 ** (1.0 / 3.0) + 2.0)
+    return max(_FAR_END, 4.0 * (1.5 * a3 ** (1.0 / 3.0) + 2.0))
 
 
-def _check_mu(mu) -> float:
+def _check_mu(mu, hi: float = math.inf) -> float:
+    """Tabor's parameter, a finite number in ``[0, hi]``."""
+    span = f"[0, {hi:g}]" if math.isfinite(hi) else "[0, inf) (finite)"
     try:
         x = float(mu)
     except (TypeError, ValueError):
         raise ParameterError(
-            "tabor_parameter", f"tabor_parameter must be a number in [0, {MU_MAX}], got {mu!r}"
+            "tabor_parameter", f"tabor_parameter must be a number in {span}, got {mu!r}"
         ) from None
-    if not (0.0 <= x <= MU_MAX):
-        raise ParameterError(
-            "tabor_parameter", f"tabor_parameter must lie in [0, {MU_MAX}], got {mu!r}"
-        )
+    if not (0.0 <= x <= hi) or not math.isfinite(x):
+        raise ParameterError("tabor_parameter", f"tabor_parameter must lie in {span}, got {mu!r}")
     return x
 
 
@@ -451,9 +610,14 @@ class SphereLJPullOff(Result):
     maugis_parameter : float
         The matched Dugdale step's :math:`\lambda = 1.1570\,\mu_T` [-].
     n_rings : int
-        Rings of the finer mesh.
+        Rings of the finer mesh (0 for the limit form).
     converged : bool
         Always ``True`` (a state that does not converge raises ``ConvergenceError``).
+    method : str
+        ``"self-consistent"`` (:math:`\mu_T \le` :data:`MU_SELF_CONSISTENT`) or ``"limit"``:
+        the JKR limit with its fitted correction, whose error estimate is the whole
+        correction (``F_coarse`` and ``F_fine`` NaN; the state that of JKR's sphere, the
+        central gap from the law linearised about :math:`z_0`).
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("tabor_parameter",)
@@ -470,6 +634,7 @@ class SphereLJPullOff(Result):
     maugis_parameter: float
     n_rings: int
     converged: bool
+    method: str = "self-consistent"
 
 
 @dataclass(frozen=True)
@@ -536,20 +701,16 @@ def _past_minimum(states: list[_State], a_end: float) -> bool:
     return len(states) - i > 3 and states[-1].tau > a_end and states[i].tau > 0.0
 
 
-def _first_step(mesh: _Mesh) -> float:
-    return float(mesh.edges[1] - mesh.edges[0])
-
-
-def _coarse_minimum(path: _Path, states: list[_State]) -> _State:
-    F = np.array([s.F for s in states])
-    i = int(np.argmin(F))
+def _lowest(mu: float, states: list[_State], sign: float = 1.0) -> int:
+    """The index of the lowest ``sign`` times the load, not at either end."""
+    i = int(np.argmin([sign * s.F for s in states]))
     if i == 0 or i == len(states) - 1:
-        raise _fail("pull-off search (no minimum of the load)", path.mu, states[i].tau)
-    return path.minimum(states[i - 1].tau, states[i].tau, states[i + 1].tau)
+        raise _fail("pull-off search (no minimum of the load)", mu, states[i].tau)
+    return i
 
 
-def _vertex(path: _Path, tau: float, d: float) -> _State:
-    """The minimum of the load near ``tau`` on ``path``'s mesh.
+def _vertex(path: _Path, tau: float, d: float, sign: float = 1.0) -> _State:
+    """The minimum of ``sign`` times the load near ``tau`` on ``path``'s mesh.
 
     Bracketed from ``tau - d, tau, tau + d`` (steps growing by 1.6 downhill until the load
     rises), then Brent's method (:meth:`_Path.minimum`).
@@ -558,28 +719,65 @@ def _vertex(path: _Path, tau: float, d: float) -> _State:
     def at(x: float) -> _State:
         t = path.solve(x)
         if t is None:
-            raise _fail("pull-off on the finer mesh", path.mu, x)
+            raise _fail("extremum refinement", path.mu, x)
         return t
 
     a, b, c = at(tau - d), at(tau), at(tau + d)
     for _ in range(60):
-        if b.F < a.F and b.F < c.F:
-            return path.minimum(a.tau, b.tau, c.tau)
-        if a.F < c.F:  # downhill towards smaller tau
+        fa, fb, fc = sign * a.F, sign * b.F, sign * c.F
+        if fb < fa and fb < fc:
+            return path.minimum(a.tau, b.tau, c.tau, sign)
+        if fa < fc:  # downhill towards smaller tau
             a, b, c = at(a.tau - 1.6 * (b.tau - a.tau)), a, b
         else:
             a, b, c = b, c, at(c.tau + 1.6 * (c.tau - b.tau))
-    raise _fail("pull-off on the finer mesh (no minimum)", path.mu, tau)
+    raise _fail("extremum refinement (no extremum)", path.mu, tau)
+
+
+def _refined(path: _Path, states: list[_State], i: int, sign: float = 1.0) -> tuple[_State, float]:
+    """The extremum near ``states[i]`` on one mesh about it: ``(state, centre)``.
+
+    Found first on meshes that follow the edge (``path``), then within the fine band of one
+    mesh about it, made again about the extremum found there until that lies inside the
+    band's ends (at most six times).
+    """
+    best = _vertex(path, states[i].tau, 0.25 * (states[i + 1].tau - states[i - 1].tau), sign)
+    for _ in range(6):
+        centre = max(best.tau, 0.0)
+        fixed = _Path(path.mu, path.m, path.far_end, centre=centre, level=path.level)
+        fixed.states = [best]
+        best = _in_band(fixed, sign)
+        if abs(max(best.tau, 0.0) - centre) <= 0.45 * fixed.mesh.band:
+            return best, centre
+    raise _fail("extremum refinement (the mesh does not settle)", path.mu, best.tau)
+
+
+def _in_band(path: _Path, sign: float = 1.0) -> _State:
+    """The extremum within 0.9 of the fine band of ``path``'s (one) mesh."""
+    c, B = path.mesh.centre, 0.5 * path.mesh.band
+    return path.minimum(c - B, c, c + B, sign, bounded=True)
 
 
 @on_one_blas_thread
 def sphere_lj_pull_off(tabor_parameter: float, *, m: float = 1.0) -> SphereLJPullOff:
-    r"""The load-control pull-off of the self-consistent Lennard-Jones sphere.
+    r"""The load-control pull-off of the Lennard-Jones sphere, at every Tabor parameter.
+
+    Self-consistent (the module's solver, over two meshes) for :math:`\mu_T \le`
+    :data:`MU_SELF_CONSISTENT`; beyond, the JKR limit with a fitted correction,
+
+    .. math::
+
+        \frac{F}{\pi w R} = -\frac32\left(1 + C\mu_T^{-p}\right), \qquad
+        C = 0.2334,\; p = 1.574,
+
+    fitted to the self-consistent pull-offs at :math:`\mu_T = 10 \ldots 20`; its error
+    estimate is the whole correction (in the overlap :math:`\mu_T = 20 \ldots 30` the
+    self-consistent pull-off differs from it by far less: ``docs/sphere.md``).
 
     Parameters
     ----------
     tabor_parameter : float
-        Tabor's :math:`\mu_T = (R w^2/(E^2 z_0^3))^{1/3}` [-], in ``[0, MU_MAX]`` (0: the
+        Tabor's :math:`\mu_T = (R w^2/(E^2 z_0^3))^{1/3}` [-], finite and at least 0 (0: the
         rigid sphere).
     m : float, optional
         The resolution: the rings' width over the default's, inverted, in ``[0.25, 16]``.
@@ -604,14 +802,57 @@ def sphere_lj_pull_off(tabor_parameter: float, *, m: float = 1.0) -> SphereLJPul
     """
     mu = _check_mu(tabor_parameter)
     m = _check_m(m)
-    band = _band(mu, -1.5)
-    coarse = _Path(mu, _rings(mu, band, m, 0))
-    h = _first_step(coarse.mesh)
-    states = coarse.climb(coarse.far(), lambda st: _past_minimum(st, 0.5), h)
-    lo = _coarse_minimum(coarse, states)
-    fine = _Path(mu, _rings(mu, band, m, 1))
-    fine.states.append(_on(lo, coarse.mesh, fine.mesh))
-    hi = _vertex(fine, lo.tau, 0.1 * h)
+    if mu > MU_SELF_CONSISTENT:
+        return _limit(mu)
+    return _self_consistent(mu, m)
+
+
+def _limit(mu: float) -> SphereLJPullOff:
+    r"""The JKR limit, corrected (:func:`sphere_lj_pull_off` beyond the self-consistent range).
+
+    The state is JKR's sphere at its load-control pull-off, in the module's units: the
+    contact radius :math:`a^3 = (9\pi/8)\,\mu_T^{3/2}`, the approach
+    :math:`a^2 - \sqrt{2\pi a \mu_T^{3/2}}` less the gap :math:`z_0` where the surfaces
+    touch, and the pressure at the centre :math:`2a/(\pi\mu_T^{3/2}) - \sqrt{2/(\pi a
+    \mu_T^{3/2})}` turned into a gap by the law linearised about :math:`z_0`,
+    :math:`P = -16(\zeta - 1)`; the contact radius (the gap at :math:`z_0`) where that
+    pressure changes sign, :math:`a\sqrt{1 - B/A}` for :math:`P = A\sqrt{1 - r^2/a^2} -
+    B/\sqrt{1 - r^2/a^2}`, the edge JKR's :math:`a`.
+    """
+    correction = _C * mu**-_P
+    c = mu**1.5
+    a = (9.0 * math.pi / 8.0 * c) ** (1.0 / 3.0)
+    hertz, crack = 2.0 * a / (math.pi * c), math.sqrt(2.0 / (math.pi * a * c))
+    P0 = hertz - crack
+    return SphereLJPullOff(
+        tabor_parameter=mu,
+        F_pulloff_over_piwR=-1.5 * (1.0 + correction),
+        error_estimate=1.5 * correction,
+        F_coarse=math.nan,
+        F_fine=math.nan,
+        central_gap_over_z0=1.0 - P0 / 16.0,
+        approach_over_z0=a * a - math.sqrt(2.0 * math.pi * a * c) - 1.0,
+        contact_radius=a * math.sqrt(max(1.0 - crack / hertz, 0.0)),
+        edge_radius=a,
+        maugis_parameter=_lambda(mu),
+        n_rings=0,
+        converged=True,
+        method="limit",
+    )
+
+
+def _self_consistent(mu: float, m: float = 1.0) -> SphereLJPullOff:
+    """The self-consistent pull-off (any ``mu`` the solver reaches; the overlap's checks)."""
+    far = _far(mu, -1.5)
+    scout = _Path(mu, 0.5 * m, far)  # the curve to past its minimum at half the resolution
+    states = scout.climb(scout.far(), lambda st: _past_minimum(st, 0.5), _element(mu, 0.5 * m))
+    i = _lowest(mu, states)
+    path = _Path(mu, m, far)
+    path.states = states[i - 1 : i + 2]
+    lo, centre = _refined(path, states, i)
+    fine = _Path(mu, m, far, centre=centre, level=1)
+    fine.states.append(lo)
+    hi = _in_band(fine)
     F0, F1 = lo.F, hi.F
     return SphereLJPullOff(
         tabor_parameter=mu,
@@ -635,11 +876,6 @@ def _lambda(mu: float) -> float:
     return LAMBDA_OVER_TABOR * mu
 
 
-def _on(s: _State, a: _Mesh, b: _Mesh) -> _State:
-    """``s`` interpolated onto the mesh ``b`` (a first guess there)."""
-    return _State(s.tau, np.interp(b.mid, a.mid, s.zeta), s.delta, s.F, s.central_gap, 0.0)
-
-
 def _extrema(F: NDArray) -> tuple[list[int], list[int]]:
     """Indices of the interior local minima and maxima of the sampled load."""
     n = F.size
@@ -659,7 +895,7 @@ def sphere_lj_curve(tabor_parameter: float, *, F_max: float = 1.0, m: float = 1.
     Parameters
     ----------
     tabor_parameter : float
-        Tabor's :math:`\mu_T` [-], in ``[0, MU_MAX]``.
+        Tabor's :math:`\mu_T` [-], in ``[0, MU_SELF_CONSISTENT]``.
     F_max : float, optional
         The compressive load where the curve ends [:math:`\pi w R`], in ``[0, 10]``.
     m : float, optional
@@ -676,7 +912,7 @@ def sphere_lj_curve(tabor_parameter: float, *, F_max: float = 1.0, m: float = 1.
     ConvergenceError
         A state that Newton does not solve, naming ``tabor_parameter``.
     """
-    mu = _check_mu(tabor_parameter)
+    mu = _check_mu(tabor_parameter, MU_SELF_CONSISTENT)
     m = _check_m(m)
     try:
         F_end = float(F_max)
@@ -684,17 +920,16 @@ def sphere_lj_curve(tabor_parameter: float, *, F_max: float = 1.0, m: float = 1.
         raise ParameterError("F_max", f"F_max must be a number in [0, 10], got {F_max!r}") from None
     if not (0.0 <= F_end <= 10.0):
         raise ParameterError("F_max", f"F_max must be a number in [0, 10], got {F_max!r}")
-    path = _Path(mu, _rings(mu, _band(mu, F_end), m, 0))
-    h = _first_step(path.mesh)
+    path = _Path(mu, m, _far(mu, F_end))
+    h = _element(mu, m)
     states = path.climb(path.far(), lambda st: _past_minimum(st, 0.5) and st[-1].F >= F_end, h)
     F = np.array([s.F for s in states])
-    po = _coarse_minimum(path, states)
-    i_po = int(np.argmin(F))
+    i_po = _lowest(mu, states)
+    po = _refined(path, states, i_po)[0]
     jump = math.nan
     before = [i for i in _extrema(F)[1] if i < i_po]
     if before:
-        i = before[-1]
-        jump = path.minimum(states[i - 1].tau, states[i].tau, states[i + 1].tau, -1.0).F
+        jump = _refined(path, states, before[-1], -1.0)[0].F
     delta = np.array([s.delta for s in states])
     dF, dd = np.gradient(F), np.gradient(delta)
     return SphereLJCurve(
