@@ -79,7 +79,7 @@ def _line(ax, label: str):
 # every figure
 
 
-def test_the_stems_are_the_jobs_and_the_extra_route_draws_them():
+def test_the_jobs_are_the_three_figure_functions():
     assert [j.stem for j in sf.jobs()] == list(sf.STEMS) == list(BUILDERS)
     assert [j.build for j in sf.jobs()] == list(BUILDERS.values())
 

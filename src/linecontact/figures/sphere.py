@@ -441,7 +441,7 @@ def alpha_figure(run: Run | None = None):
 def jobs() -> list[Job]:
     """The sphere's figures (costs measured on a 2-core machine, s)."""
     return [
-        Job(STEMS[0], load_curves_figure, "sphere-curves", 0.6),
-        Job(STEMS[1], adhesion_map_figure, "sphere-map", 2.0),
-        Job(STEMS[2], alpha_figure, "sphere-alpha", 4.5),
+        Job(STEMS[0], load_curves_figure, "sphere-curves", 1.3),
+        Job(STEMS[1], adhesion_map_figure, "sphere-map", 1.9),
+        Job(STEMS[2], alpha_figure, "sphere-alpha", 4.2),
     ]
