@@ -17,6 +17,7 @@ from linecontact.cli import main  # noqa: E402
 from linecontact.figures import adhesion_map as map_figs  # noqa: E402
 from linecontact.figures import history as history_figs  # noqa: E402
 from linecontact.figures import push as push_figs  # noqa: E402
+from linecontact.figures import sphere as sphere_figs  # noqa: E402
 from linecontact.figures._style import Run  # noqa: E402
 
 
@@ -104,11 +105,16 @@ def test_the_figures_command_writes_the_push_history_and_map_files(tmp_path, cap
     # test_adhesion_map.py)
     tiny = {"n_mu": 2, "mu_min": 0.01, "mu_max": 0.02, "n_y": 5, "y_max": 1.0}
     monkeypatch.setattr(map_figs, "COARSE", tiny)
+    # the sphere's figures on small grids too (their own tests: test_figures_sphere.py)
+    monkeypatch.setattr(sphere_figs, "ALPHA_LAMBDAS", (0.01, 100.0))
+    monkeypatch.setattr(sphere_figs, "MAP_N_LAMBDA", 4)
+    monkeypatch.setattr(sphere_figs, "MAP_N_LOAD", 4)
     assert main(["figures", "--outdir", str(tmp_path)]) == 0
     assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
         [f"{s}.png" for s in STEMS]
         + [f"{j.stem}.png" for j in history_figs.jobs()]
         + ["adhesion_map.png"]
+        + [f"{s}.png" for s in sphere_figs.STEMS]
     )
     assert main(["figures", "--outdir", str(tmp_path), "--format", "gif"]) == 2
     assert "error:" in capsys.readouterr().err

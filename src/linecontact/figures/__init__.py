@@ -5,9 +5,11 @@ One module per family of figures, each with the parameters it draws and why:
 (Figs. 7, 13, 14), :mod:`linecontact.figures.sliding` (Figs. 8--12), and beyond the paper
 :mod:`linecontact.figures.push` (the pushed fibre, :func:`push_figures`),
 :mod:`linecontact.figures.history` (load histories), :mod:`linecontact.figures.fit` (the
-fits of ``linecontact fit-adhesion/fit-friction --plot``) and
-:mod:`linecontact.figures.adhesion_map` (the adhesion map of line contact; with the pushed
-fibre's and the histories', :func:`extra_figures`); the shared plumbing in
+fits of ``linecontact fit-adhesion/fit-friction --plot``),
+:mod:`linecontact.figures.adhesion_map` (the adhesion map of line contact) and
+:mod:`linecontact.figures.sphere` (the adhesive sphere's load curves, adhesion map and COS
+alpha; with the pushed fibre's, the histories' and the map, :func:`extra_figures`); the
+shared plumbing in
 :mod:`linecontact.figures._style`.
 matplotlib is imported only when a figure is drawn.
 """
@@ -25,6 +27,7 @@ from . import history as _history
 from . import normal as _normal
 from . import push as _push
 from . import sliding as _sliding
+from . import sphere as _sphere
 from . import tangential as _tangential
 from ._style import (
     DEFAULT_SIZE,
@@ -320,7 +323,10 @@ def extra_figures(
     (:mod:`linecontact.figures.history`: loops, loss per cycle, traction and slip after
     reversals), then the adhesion map of line contact
     on its coarse grid (:mod:`linecontact.figures.adhesion_map`, ``adhesion_map.png``; its
-    Lennard-Jones curves take most of the time, about 10 s). ``formats``,
+    Lennard-Jones curves take most of the time, about 10 s), then the adhesive sphere's
+    (:mod:`linecontact.figures.sphere`: Maugis--Dugdale load curves, its adhesion map, the
+    COS alpha against the Maugis parameter; ``sphere01_*.png`` to ``sphere03_*.png``, about
+    7 s). ``formats``,
     ``size``, ``progress``, the errors and the atomic writes are those of
     :func:`paper_figures`; one process draws.
 
@@ -330,7 +336,7 @@ def extra_figures(
         The files written, figure by figure, each in the order of ``formats``.
     """
     return _draw_in_one(
-        lambda: _push.jobs() + _history.jobs() + _adhesion_map.jobs(),
+        lambda: _push.jobs() + _history.jobs() + _adhesion_map.jobs() + _sphere.jobs(),
         outdir,
         formats,
         size,
