@@ -173,11 +173,11 @@ MATERIALS: Mapping[str, Material] = types.MappingProxyType(
                 "Single-crystal Si, isotropic equivalent (Voigt-Reuss-Hill average of "
                 "C11=165.7, C12=63.9, C44=79.6 GPa); E/(1-nu^2)=171 GPa vs indentation modulus "
                 "M=165 (100), 173 (110), 175 GPa (111). Directional E: 130 <100>, 169 <110>, "
-                "188 <111>. Polysilicon in tension: 169+-6 GPa, nu 0.22+-0.01 (Sharpe et al.). "
-                "The tip of a silicon AFM probe (with its native oxide).",
+                "188 <111>. Polysilicon in tension: 169+-6 GPa, nu 0.22+-0.01 (W. N. Sharpe Jr., "
+                "B. Yuan, R. Vaidyanathan, R. L. Edwards, Proc. IEEE MEMS 1997, 424-429). The "
+                "tip of a silicon AFM probe (with its native oxide).",
                 "M. A. Hopcroft, W. D. Nix, T. W. Kenny, J. Microelectromech. Syst. 19 (2010) "
-                "229-238. doi:10.1109/JMEMS.2009.2039697; cf. W. N. Sharpe Jr., B. Yuan, R. "
-                "Vaidyanathan, R. L. Edwards, Proc. IEEE MEMS 1997, 424-429 (polysilicon)",
+                "229-238. doi:10.1109/JMEMS.2009.2039697",
                 False,
             ),
             _m(
@@ -201,11 +201,11 @@ MATERIALS: Mapping[str, Material] = types.MappingProxyType(
                 "LPCVD silicon nitride thin film (amorphous, isotropic); bulge test 222+-3 GPa, "
                 "nu 0.28+-0.05; nanoindentation 216+-10 GPa. Stoichiometric / low-stress films "
                 "and bulk ceramic can be up to ~300 GPa. The LPCVD nitride of commercial AFM "
-                "cantilevers and tips: 280-290 GPa, nu 0.20 (Khan et al., surface acoustic waves "
-                "and cantilever resonances). PECVD nitride is softer: 'SiNx-PECVD'.",
+                "cantilevers and tips: 280-290 GPa, nu 0.20 by surface acoustic waves and "
+                "cantilever resonances (A. Khan, J. Philip, P. Hess, J. Appl. Phys. 95 (2004) "
+                "1667-1672, doi:10.1063/1.1638886). PECVD nitride is softer: 'SiNx-PECVD'.",
                 "J. J. Vlassak, W. D. Nix, J. Mater. Res. 7 (1992) 3242-3249. "
-                "doi:10.1557/JMR.1992.3242; cf. A. Khan, J. Philip, P. Hess, J. Appl. Phys. 95 "
-                "(2004) 1667-1672, doi:10.1063/1.1638886 (AFM cantilever nitride)",
+                "doi:10.1557/JMR.1992.3242",
                 True,
             ),
             _m(
