@@ -1,15 +1,18 @@
 """Material presets: the cited numbers, the lookup, the SI layer and the command line."""
 
+import csv
 import dataclasses
 import json
+import math
 import re
 import warnings
+from pathlib import Path
 
 import pytest
 
-from linecontact import Cylinder
+from linecontact import Cylinder, Sphere
 from linecontact.cli import main
-from linecontact.presets import MATERIALS, Material, material_names
+from linecontact.presets import MATERIALS, TIP_MATERIALS, Material, material_names
 
 #: The cited numbers, written out: (E [Pa], nu, (E low, E high) [Pa], confirmed by search).
 #: A silent change of a preset fails here; change both with the source.
@@ -17,6 +20,9 @@ CITED = {
     "Si": (163e9, 0.22, (130e9, 188e9), False),
     "SiO2": (72e9, 0.17, (60e9, 80e9), False),
     "Si3N4": (222e9, 0.28, (200e9, 310e9), True),
+    "SiNx-PECVD": (150e9, 0.25, (120e9, 160e9), True),
+    "DLC": (259e9, 0.25, (100e9, 259e9), True),
+    "ta-C": (759e9, 0.17, (493e9, 781e9), True),
     "Al2O3": (403e9, 0.23, (345e9, 461e9), True),
     "Al2O3-poly": (416e9, 0.231, (300e9, 416e9), True),
     "mica": (54e9, 0.10, (50e9, 60e9), True),
@@ -39,6 +45,9 @@ CITED_SOURCE = {
     "Si": "doi:10.1109/JMEMS.2009.2039697",
     "SiO2": "doi:10.1109/PROC.1982.12331",
     "Si3N4": "doi:10.1557/JMR.1992.3242",
+    "SiNx-PECVD": "doi:10.1016/j.jeurceramsoc.2009.09.020",
+    "DLC": "doi:10.1038/s41467-021-24766-6",
+    "ta-C": "doi:10.1088/0960-1317/15/4/009",
     "Al2O3": "doi:10.6028/jres.064A.022",
     "Al2O3-poly": "doi:10.1111/j.1151-2916.1997.tb03074.x",
     "mica": "doi:10.1029/JB091iB05p04657",
@@ -57,6 +66,7 @@ CITED_SOURCE = {
 }
 
 ADH = ("--work-of-adhesion", "0.1", "--z0", "0.3e-9")
+DOCS = Path(__file__).resolve().parents[1] / "docs"
 
 
 def run(capsys, *argv):
@@ -102,6 +112,136 @@ def test_layered_crystals_normal_and_in_plane():
     assert MATERIALS["HOPG-basal"].E * 10 < MATERIALS["HOPG-in-plane"].E
     for name in ("mica-in-plane", "HOPG-in-plane"):
         assert "not a contact modulus" in MATERIALS[name].description.replace("NOT", "not")
+
+
+# --------------------------------------------------------------------------------------------
+# the tips of AFM probes and colloidal probes
+
+#: E/(1 - nu^2) [Pa] of the tip presets, by hand: 1 - 0.25^2 = 0.9375, 1 - 0.17^2 = 0.9711,
+#: 1 - 0.22^2 = 0.9516, 1 - 0.28^2 = 0.9216.
+TIP_INDENTATION_MODULI = {
+    "Si": 163e9 / 0.9516,
+    "SiO2": 72e9 / 0.9711,
+    "Si3N4": 222e9 / 0.9216,
+    "SiNx-PECVD": 160e9,  # 150 / 0.9375
+    "DLC": 276.26666666666667e9,  # 259 / 0.9375
+    "ta-C": 781.58789002162496e9,  # 759 / 0.9711
+}
+
+
+def test_tip_materials_are_presets_in_table_order():
+    assert TIP_MATERIALS == ("Si", "SiO2", "Si3N4", "SiNx-PECVD", "DLC", "ta-C")
+    order = list(MATERIALS)
+    assert [order.index(name) for name in TIP_MATERIALS] == sorted(
+        order.index(name) for name in TIP_MATERIALS
+    )
+    # the issue's families: silicon, silicon nitride, silica, diamond-like carbon
+    for word in ("silicon", "nitride", "silica", "diamond-like carbon"):
+        assert any(word in MATERIALS[n].description.lower() for n in TIP_MATERIALS), word
+
+
+@pytest.mark.parametrize("name", list(TIP_INDENTATION_MODULI))
+def test_tip_indentation_moduli_by_hand(name):
+    assert MATERIALS[name].indentation_modulus == pytest.approx(
+        TIP_INDENTATION_MODULI[name], rel=1e-14
+    )
+
+
+@pytest.mark.parametrize(
+    "given, name",
+    [
+        ("DLC", "DLC"),
+        ("dlc", "DLC"),
+        ("Dlc", "DLC"),
+        ("ta-c", "ta-C"),
+        ("TA-C", "ta-C"),
+        (" ta-C ", "ta-C"),
+        ("sinx-pecvd", "SiNx-PECVD"),
+        ("SINX-PECVD", "SiNx-PECVD"),
+    ],
+)
+def test_tip_presets_by_name(given, name):
+    assert Material.from_name(given) is MATERIALS[name]
+
+
+def test_tip_presets_order_of_stiffness():
+    m = MATERIALS
+    # hydrogen-free ta-C is the stiffest; hydrogenated DLC about a third of it
+    assert max(TIP_MATERIALS, key=lambda n: m[n].E) == "ta-C"
+    assert 0.25 < m["DLC"].E / m["ta-C"].E < 0.45
+    # LPCVD nitride is stiffer than PECVD nitride, and their ranges meet at most at an edge
+    assert m["SiNx-PECVD"].E < m["Si3N4"].E
+    assert m["SiNx-PECVD"].E_range[1] <= m["Si3N4"].E_range[0]
+    # ta-C's range lies above every other tip preset's value
+    assert all(m[n].E < m["ta-C"].E_range[0] for n in TIP_MATERIALS if n != "ta-C")
+
+
+def test_tip_presets_name_the_other_kind():
+    # each carbon (and each nitride) points to its sibling, so that a reader picks the right one
+    assert "'ta-C'" in MATERIALS["DLC"].description
+    assert "'DLC'" in MATERIALS["ta-C"].description
+    assert "'SiNx-PECVD'" in MATERIALS["Si3N4"].description
+    assert "a-C:H" in MATERIALS["DLC"].description
+
+
+@pytest.mark.parametrize("tip", ["Si", "Si3N4", "SiNx-PECVD", "DLC", "ta-C"])
+def test_a_sphere_from_tip_presets_is_from_their_moduli(tip):
+    t, s = MATERIALS[tip], MATERIALS["SiO2"]
+    adh = dict(work_of_adhesion=0.1, equilibrium_spacing=0.3e-9)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        ref = Sphere.from_materials(20e-9, t.E, t.nu, s.E, s.nu, **adh)
+        got = Sphere.from_presets(20e-9, tip.upper(), "SiO2", **adh)
+    assert got == ref
+    # the composite modulus of two half-spaces, written here: 1/E = 1/M1 + 1/M2
+    assert got.modulus == pytest.approx(
+        1 / (1 / TIP_INDENTATION_MODULI[tip] + 1 / (72e9 / 0.9711)), rel=1e-14
+    )
+
+
+def _docs_table(header_start):
+    """The rows (cells) of the table of docs/sphere.md whose header starts so."""
+    lines = (DOCS / "sphere.md").read_text(encoding="utf-8").splitlines()
+    start = next(i for i, line in enumerate(lines) if line.startswith(header_start))
+    rows = []
+    for line in lines[start + 2 :]:
+        if not line.startswith("|"):
+            break
+        rows.append([cell.strip() for cell in line.strip("|").split("|")])
+    return rows
+
+
+def _gpa(text):
+    return float(text.replace("\N{MINUS SIGN}", "-"))
+
+
+def test_the_docs_table_of_tip_presets_is_the_presets():
+    rows = _docs_table("| preset |")
+    assert [row[0].strip("`") for row in rows] == list(TIP_MATERIALS)
+    for name, _, E, nu, M, reported, confirmed, _ in rows:
+        m = MATERIALS[name.strip("`")]
+        assert _gpa(E) * 1e9 == m.E and float(nu) == m.nu
+        assert M == f"{m.indentation_modulus / 1e9:.1f}"
+        low, high = reported.split("\N{EN DASH}")
+        assert (float(low) * 1e9, float(high) * 1e9) == m.E_range
+        assert confirmed == ("yes" if m.confirmed else "no")
+
+
+def test_the_docs_table_of_tips_on_silica_is_computed():
+    rows = _docs_table("| tip on `SiO2` |")
+    assert [row[0].strip("`") for row in rows] == list(TIP_MATERIALS)
+    w, R = 0.1, 20e-9
+    for name, E, lam, force, over in rows:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            tip = Sphere.from_presets(
+                R, name.strip("`"), "SiO2", work_of_adhesion=w, equilibrium_spacing=0.3e-9
+            )
+            F = tip.pull_off().pull_off_force
+        assert E == f"{tip.modulus / 1e9:.1f}"
+        assert lam == f"{tip.maugis_parameter:.3f}"
+        assert _gpa(force) == round(F * 1e9, 3)
+        assert _gpa(over) == round(F / (math.pi * w * R), 3)
 
 
 # --------------------------------------------------------------------------------------------
@@ -317,6 +457,32 @@ def test_cli_materials_by_name_table_and_csv(capsys, tmp_path):
     text = (tmp_path / "m.csv").read_text()
     assert "name,E_Pa,nu,E_low_Pa,E_high_Pa,description,source,confirmed" in text
     assert "\nHOPG-basal,25000000000.0,0.01," in text
+
+
+def test_cli_materials_lists_the_tip_presets(capsys):
+    code, out, err = run(capsys, "materials", "dlc", "TA-C", "SiNx-pecvd", "--format", "csv")
+    assert code == 0, err
+    rows = list(csv.reader(line for line in out.splitlines() if not line.startswith("#")))
+    assert rows[0] == [
+        "name",
+        "E_Pa",
+        "nu",
+        "E_low_Pa",
+        "E_high_Pa",
+        "description",
+        "source",
+        "confirmed",
+    ]
+    assert [row[:5] for row in rows[1:]] == [
+        ["DLC", "259000000000.0", "0.25", "100000000000.0", "259000000000.0"],
+        ["ta-C", "759000000000.0", "0.17", "493000000000.0", "781000000000.0"],
+        ["SiNx-PECVD", "150000000000.0", "0.25", "120000000000.0", "160000000000.0"],
+    ]
+    code, out, err = run(capsys, "materials")
+    assert code == 0, err
+    rows = [line.split()[0] for line in out.splitlines()[2:]]
+    for name in TIP_MATERIALS:
+        assert name in rows
 
 
 def test_cli_materials_unknown_name(capsys):

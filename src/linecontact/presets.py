@@ -26,6 +26,13 @@ The layered crystals are strongly anisotropic, and there the preset depends on t
   (for stretching or bending a sheet). They are **not** contact moduli; not even for a
   contact on an edge face, whose indentation modulus is far lower.
 
+The tips of AFM probes and colloidal probes are listed in :data:`TIP_MATERIALS`. Most are
+films or coatings whose modulus depends on how they were deposited: LPCVD ``"Si3N4"`` is
+stiffer than ``"SiNx-PECVD"``, and hydrogenated diamond-like carbon (``"DLC"``, a-C:H) has
+about a third of the modulus of hydrogen-free tetrahedral amorphous carbon (``"ta-C"``). A
+coating is a half-space only where it is much thicker than the contact radius; a thinner one
+shares the load with what lies under it (silicon, for most coated tips).
+
 ``E_range`` records where the values scatter (crystal orientation, film deposition, purity,
 size effects); ``source`` the citation; ``confirmed`` whether the number (or the elastic
 constants it was computed from) was seen in a source found by a literature search. The
@@ -43,6 +50,10 @@ Examples
 142.5
 >>> "SiO2" in material_names()
 True
+>>> [Material.from_name(name).name for name in ("dlc", "TA-C", "sinx-pecvd")]
+['DLC', 'ta-C', 'SiNx-PECVD']
+>>> [name for name in TIP_MATERIALS if MATERIALS[name].E > 200e9]
+['Si3N4', 'DLC', 'ta-C']
 """
 
 from __future__ import annotations
@@ -51,7 +62,7 @@ import types
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-__all__ = ["MATERIALS", "Material", "material_names"]
+__all__ = ["MATERIALS", "TIP_MATERIALS", "Material", "material_names"]
 
 
 @dataclass(frozen=True)
@@ -162,7 +173,9 @@ MATERIALS: Mapping[str, Material] = types.MappingProxyType(
                 "Single-crystal Si, isotropic equivalent (Voigt-Reuss-Hill average of "
                 "C11=165.7, C12=63.9, C44=79.6 GPa); E/(1-nu^2)=171 GPa vs indentation modulus "
                 "M=165 (100), 173 (110), 175 GPa (111). Directional E: 130 <100>, 169 <110>, "
-                "188 <111>.",
+                "188 <111>. Polysilicon in tension: 169+-6 GPa, nu 0.22+-0.01 (W. N. Sharpe Jr., "
+                "B. Yuan, R. Vaidyanathan, R. L. Edwards, Proc. IEEE MEMS 1997, 424-429). The "
+                "tip of a silicon AFM probe (with its native oxide).",
                 "M. A. Hopcroft, W. D. Nix, T. W. Kenny, J. Microelectromech. Syst. 19 (2010) "
                 "229-238. doi:10.1109/JMEMS.2009.2039697",
                 False,
@@ -187,9 +200,62 @@ MATERIALS: Mapping[str, Material] = types.MappingProxyType(
                 (200e9, 310e9),
                 "LPCVD silicon nitride thin film (amorphous, isotropic); bulge test 222+-3 GPa, "
                 "nu 0.28+-0.05; nanoindentation 216+-10 GPa. Stoichiometric / low-stress films "
-                "and bulk ceramic can be up to ~300 GPa.",
+                "and bulk ceramic can be up to ~300 GPa. The LPCVD nitride of commercial AFM "
+                "cantilevers and tips: 280-290 GPa, nu 0.20 by surface acoustic waves and "
+                "cantilever resonances (A. Khan, J. Philip, P. Hess, J. Appl. Phys. 95 (2004) "
+                "1667-1672, doi:10.1063/1.1638886). PECVD nitride is softer: 'SiNx-PECVD'.",
                 "J. J. Vlassak, W. D. Nix, J. Mater. Res. 7 (1992) 3242-3249. "
                 "doi:10.1557/JMR.1992.3242",
+                True,
+            ),
+            _m(
+                "SiNx-PECVD",
+                150e9,
+                0.25,
+                (120e9, 160e9),
+                "Plasma-enhanced CVD silicon nitride (amorphous SiNx:H, isotropic), for a tip "
+                "or cantilever of PECVD nitride: nanoindentation of a 218 nm film on Si ~150 "
+                "GPa (hardness 19 GPa); N-rich plasma films deposited at 150-300 C gave "
+                "reduced moduli 120-160 GPa (an abstract; its citation not checked). Stiffer "
+                "with deposition temperature, plasma power and density. nu 0.23-0.25 for "
+                "low-temperature PECVD films (double-membrane bulge test). The ~150 GPa may be "
+                "an indentation modulus (E/(1-nu^2) = 1.07 E).",
+                "'Mechanical properties of PECVD thin ceramic films', J. Eur. Ceram. Soc. 30 "
+                "(2010) 689-697, doi:10.1016/j.jeurceramsoc.2009.09.020 (authors not checked); "
+                "nu: 'Poisson's ratio of low-temperature PECVD silicon nitride thin films' "
+                "(Univ. of Western Australia; authors and journal not checked)",
+                True,
+            ),
+            _m(
+                "DLC",
+                259e9,
+                0.25,
+                (100e9, 259e9),
+                "Diamond-like carbon, hydrogenated amorphous carbon a-C:H (20 at.% H, hardness "
+                "27 GPa): a hard DLC coating. DLC-coated AFM tips rarely state their film; a-C:H "
+                "depends on its hydrogen and sp3 content: 133-213 GPa for dc-plasma DLC from "
+                "benzene (Dorner et al., Wear 249 (2001) 489), below 100 GPa for soft, "
+                "polymer-like films (surface acoustic waves, Phys. Status Solidi A 145 (1994) "
+                "385). "
+                "Hydrogen-free ta-C is far stiffer: 'ta-C'. nu nominal.",
+                "V. R. Salinas Ruiz, T. Kuwahara, J. Galipaud, K. Masenelli-Varlot, M. Ben "
+                "Hassine, C. Heau, M. Stoll, L. Mayrhofer, G. Moras, J. M. Martin, M. Moseler, "
+                "M.-I. de Barros Bouchet, Nat. Commun. 12 (2021) 4550, Table 1. "
+                "doi:10.1038/s41467-021-24766-6",
+                True,
+            ),
+            _m(
+                "ta-C",
+                759e9,
+                0.17,
+                (493e9, 781e9),
+                "Tetrahedral amorphous carbon (hydrogen-free, sp3-rich diamond-like carbon, "
+                "isotropic): uniaxial tension of 1.5 um thick ta-C MEMS specimens with AFM "
+                "digital image correlation, E 759+-22 GPa, nu 0.17+-0.03. Arc-deposited ta-C "
+                "coatings 493-625 GPa, rising with the sp3 fraction (Salinas Ruiz et al., Nat. "
+                "Commun. 12 (2021) 4550). Hydrogenated DLC is softer: 'DLC'.",
+                "S. Cho, I. Chasiotis, T. A. Friedmann, J. P. Sullivan, J. Micromech. Microeng. "
+                "15 (2005) 728-735. doi:10.1088/0960-1317/15/4/009",
                 True,
             ),
             _m(
@@ -381,6 +447,11 @@ MATERIALS: Mapping[str, Material] = types.MappingProxyType(
 )
 
 _BY_LOWER = {name.lower(): name for name in MATERIALS}
+
+#: The presets of common AFM tips and colloidal probes, in table order: silicon (with its
+#: native oxide), silica (oxidised tips, colloidal spheres), LPCVD and PECVD silicon
+#: nitride, and diamond-like carbon (hydrogenated and tetrahedral amorphous carbon).
+TIP_MATERIALS: tuple[str, ...] = ("Si", "SiO2", "Si3N4", "SiNx-PECVD", "DLC", "ta-C")
 
 
 def material_names() -> tuple[str, ...]:
