@@ -8,13 +8,13 @@ import pytest
 
 import linecontact as lc
 from linecontact.errors import ParameterError
+from linecontact.sphere import fits as sf
 from linecontact.sphere import (
     sphere_fit_pull_off,
     sphere_fit_shear_strength,
     sphere_models,
     sphere_which_model,
 )
-from linecontact.sphere import fits as sf
 
 E = 50e9
 W, Z0 = 0.1, 3e-10
