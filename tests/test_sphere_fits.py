@@ -109,7 +109,7 @@ def test_the_bootstrap_gives_an_interval_about_the_fit_from_its_refits():
 
 
 JKR_RADII = np.array([20e-6, 50e-6, 200e-6])  # lambda 7.7 to 17 at w = 1 J/m^2
-DMT_RADII = np.array([2e-9, 4e-9, 8e-9])  # lambda 0.009 to 0.014 at w = 0.002 J/m^2
+DMT_RADII = np.array([2e-9, 4e-9, 8e-9])  # lambda 0.006 to 0.009 at w = 0.002 J/m^2
 
 
 @pytest.mark.parametrize(("R", "w", "limit"), [(JKR_RADII, 1.0, "JKR"), (DMT_RADII, 0.002, "DMT")])

@@ -172,34 +172,35 @@ class SphereAdhesionFit(Result):
 
     Attributes
     ----------
-    work_of_adhesion, equilibrium_spacing : float
-        The fit [J/m^2], [m] (``equilibrium_spacing`` as given when it was fixed).
-    work_of_adhesion_sd, equilibrium_spacing_sd : float
-        Standard uncertainties from the covariance (``0`` for a fixed ``z0``; ``inf`` for a
-        ``z0`` the data do not determine).
-    work_of_adhesion_ci95, equilibrium_spacing_ci95 : (float, float)
-        95 % intervals by parametric bootstrap (the linear ones where no bootstrap ran);
-        ``*_ci95_linear`` from the covariance in the log parameters. For a ``z0`` the data
-        do not determine, both are the search box :data:`SPACING_BOUNDS`.
+    work_of_adhesion : float
+        ``w`` [J/m^2]; ``work_of_adhesion_sd`` its standard uncertainty from the
+        covariance, ``work_of_adhesion_ci95`` its 95 % interval by parametric bootstrap
+        (the linear one where no bootstrap ran), ``work_of_adhesion_ci95_linear`` the one
+        linear in ``ln w``.
+    equilibrium_spacing : float
+        ``z0`` [m] (as given where it was fixed), with ``equilibrium_spacing_sd`` (``0`` for
+        a fixed ``z0``, ``inf`` for one the data do not determine), ``*_ci95`` and
+        ``*_ci95_linear`` as for ``w`` (the search box :data:`SPACING_BOUNDS` for a ``z0``
+        the data do not determine).
     covariance : ndarray, shape (2, 2)
         Of ``(w, z0)`` [J/m^2, m], linearised at the fit (zero row and column for a fixed
-        ``z0``).
-    correlation : float
-        Between ``w`` and ``z0`` (nan for a fixed ``z0``).
-    residuals : ndarray
-        ``F_model - F_measured`` [N] at the data points; ``model`` the fitted pull-offs [N].
+        ``z0``); ``correlation`` between them (nan for a fixed ``z0``).
     maugis_parameter : ndarray
         Maugis' :math:`\lambda` of the fit at each radius.
-    chi2 : float
-        Sum of the squared weighted residuals; ``dof`` the degrees of freedom.
-    fixed_spacing : bool
-        ``z0`` was given, not fitted.
+    model, residuals : ndarray
+        The fitted pull-offs [N] at the data's radii, and those less the data [N].
+    chi2, dof : float, int
+        The sum of the squared weighted residuals (in N^2 without sds), the degrees of
+        freedom.
     identifiable : bool
         Whether the data determine ``z0``: not where every :math:`\lambda` lies in the JKR
         (above 5) or the DMT (below 0.1) limit, where the pull-off does not depend on
-        ``z0``, nor where its relative uncertainty is above 50 %; ``note`` says why. (The
-        correlation of ``w`` and ``z0`` is high, about -0.99, even where the data determine
-        them: both move the pull-off through :math:`\lambda`.)
+        ``z0``, nor where another minimum fits the data as well, nor where its relative
+        uncertainty is above 50 %; ``note`` says why. (The correlation of ``w`` and ``z0``
+        is high, about -0.99, even where the data determine them: both move the pull-off
+        through :math:`\lambda`.)
+    fixed_spacing : bool
+        ``z0`` was given, not fitted.
     refits : int
         The bootstrap refits behind the ``*_ci95`` (0: the linear intervals).
     note : str
@@ -209,30 +210,30 @@ class SphereAdhesionFit(Result):
 
     inputs: ClassVar[tuple[str, ...]] = ("fixed_spacing",)
     whole: ClassVar[tuple[str, ...]] = (
-        "work_of_adhesion_ci95",
-        "equilibrium_spacing_ci95",
-        "work_of_adhesion_ci95_linear",
-        "equilibrium_spacing_ci95_linear",
         "covariance",
+        "work_of_adhesion_ci95",
+        "work_of_adhesion_ci95_linear",
+        "equilibrium_spacing_ci95",
+        "equilibrium_spacing_ci95_linear",
     )
 
     work_of_adhesion: float
-    equilibrium_spacing: float
     work_of_adhesion_sd: float
-    equilibrium_spacing_sd: float
     work_of_adhesion_ci95: tuple[float, float]
-    equilibrium_spacing_ci95: tuple[float, float]
     work_of_adhesion_ci95_linear: tuple[float, float]
+    equilibrium_spacing: float
+    equilibrium_spacing_sd: float
+    equilibrium_spacing_ci95: tuple[float, float]
     equilibrium_spacing_ci95_linear: tuple[float, float]
     covariance: NDArray
     correlation: float
-    residuals: NDArray
-    model: NDArray
     maugis_parameter: NDArray
+    model: NDArray
+    residuals: NDArray
     chi2: float
     dof: int
-    fixed_spacing: bool
     identifiable: bool
+    fixed_spacing: bool
     refits: int
     note: str
     radius: NDArray = field(repr=False)
@@ -392,8 +393,13 @@ def sphere_fit_pull_off(
     :math:`\ln w` and :math:`\ln z_0`, within :data:`WORK_BOUNDS` and :data:`SPACING_BOUNDS`.
     The pull-off is :math:`\bar P(\lambda)\,\pi w R`: the radii separate ``w`` from ``z0``
     only through the Maugis parameter :math:`\lambda \propto R^{1/3} w^{1/3}/z_0`, between
-    the DMT (-2) and JKR (-3/2) limits. Data all in one limit do not determine ``z0``:
-    ``identifiable`` is False, ``note`` says so, and its intervals are the search box.
+    the DMT (-2) and JKR (-3/2) limits. Data all in one limit do not determine ``z0`` (nor
+    which limit: ``w``'s interval then spans its DMT and JKR readings); nor do data with a
+    second minimum that fits them as well (within :math:`\Delta\chi^2 = 5.99`; two radii
+    often have two exact solutions), nor a relative uncertainty of ``z0`` above 50 %:
+    ``identifiable`` is False, ``note`` says why, and ``z0``'s intervals are the search box.
+    The fit starts from the lowest dips of a profile of the cost over 31 ranges
+    since the cost may have several minima.
 
     Parameters
     ----------
@@ -421,7 +427,7 @@ def sphere_fit_pull_off(
 
     Examples
     --------
-    Pull-offs of tips from 5 nm to 2 um (Maugis parameter 0.12 to 0.9), then the fit:
+    Pull-offs of tips from 5 nm to 2 um (Maugis parameter 0.1 to 0.8), then the fit:
 
     >>> from linecontact import Sphere
     >>> R = np.array([5e-9, 20e-9, 100e-9, 500e-9, 2e-6])
