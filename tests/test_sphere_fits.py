@@ -277,6 +277,11 @@ F5 = [-1e-9, -2e-9, -3e-9, -4e-9, -5e-9]
             "below the pull-off",
         ),
         (
+            lambda: sphere_fit_shear_strength([1e-9], [1.0], R_TIP, E, W, Z0),
+            "load",
+            "beyond the contacts",
+        ),
+        (
             lambda: sphere_fit_shear_strength([1e-9], [0.0], R_TIP, E, W, math.nan),
             "equilibrium_spacing",
             "nan",
@@ -290,6 +295,11 @@ F5 = [-1e-9, -2e-9, -3e-9, -4e-9, -5e-9]
             lambda: sphere_which_model(-1e-8, R_TIP, E, equilibrium_spacing=Z0, max_load=-1e-6),
             "max_load",
             "below the pull-off",
+        ),
+        (
+            lambda: sphere_which_model(-1e-8, R_TIP, E, equilibrium_spacing=Z0, max_load=1.0),
+            "max_load",
+            "beyond the contacts",
         ),
     ],
 )

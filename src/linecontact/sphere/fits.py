@@ -658,7 +658,14 @@ def sphere_which_model(
             "max_load",
             f"max_load {load!r} N is below the pull-off {-F!r} N: the tip is off the surface",
         )
-    m = sphere_models(load / (E * h * R), rho, s)
+    try:
+        m = sphere_models(load / (E * h * R), rho, s)
+    except ParameterError as err:  # a load too large for the sphere's domain: as the caller's
+        if err.parameter != "F_over_EhR":
+            raise
+        raise ParameterError(
+            "max_load", f"max_load is beyond the contacts the sphere is solved for: {err}"
+        ) from err
     keys = [f"{q}_error_{k}" for q in ("pull_off", "radius") for k in ("hertz", "dmt", "jkr")]
     return SphereModelChoice(
         work_of_adhesion=w,

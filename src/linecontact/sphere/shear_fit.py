@@ -161,7 +161,14 @@ def sphere_fit_shear_strength(
     ]
     samples = _count("samples", samples, 2)
     seed = _count("seed", seed, 0)
-    A = _areas(F, R, E, w, z0)
+    try:
+        A = _areas(F, R, E, w, z0)
+    except ParameterError as err:  # a load too large for the sphere's domain: as the caller's
+        if err.parameter != "F_over_EhR":
+            raise
+        raise ParameterError(
+            "load", f"a load is beyond the contacts the sphere is solved for: {err}"
+        ) from err
     if np.any(np.isnan(A)):
         i = int(np.flatnonzero(np.isnan(A))[0])
         raise ParameterError(
