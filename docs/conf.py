@@ -180,7 +180,8 @@ API_GROUPS: list[tuple[str, str, list[str]]] = [
         "The Maugis-Dugdale sphere in the wire's input groups, force over ``E h R``: its "
         "contact, its contact under a load, its pull-offs and load curve; which model holds, "
         "and the COS alpha fitted to its curves; the self-consistent Lennard-Jones sphere "
-        "(:doc:`sphere`). In SI units the body "
+        "(:doc:`sphere`); the fits with intervals ((w, z0) from pull-offs, tau0 from "
+        "friction, which model from a pull-off). In SI units the body "
         "``Sphere`` (forces in N), a ``Body`` as the ``Cylinder`` is.",
         [
             "Sphere",
@@ -196,12 +197,18 @@ API_GROUPS: list[tuple[str, str, list[str]]] = [
             "sphere_lj_curve",
             "sphere_work_of_adhesion_from_pull_off",
             "sphere_shear_strength_from_friction",
+            "sphere_fit_pull_off",
+            "sphere_fit_shear_strength",
+            "sphere_which_model",
             "SphereContact",
             "SpherePullOff",
             "SphereLoadCurve",
             "SphereModels",
             "SphereLJPullOff",
             "SphereLJCurve",
+            "SphereAdhesionFit",
+            "SphereShearStrengthFit",
+            "SphereModelChoice",
         ],
     ),
     (

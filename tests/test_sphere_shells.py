@@ -85,8 +85,13 @@ def test_the_groups_give_the_nondimensional_solvers_numbers(capsys):
     ("argv", "flag"),
     [
         (["normal", "--body", "sphere", *SI, "--law", "lennard-jones", "--force", "0"], "--law"),
-        (["curve", "--body", "sphere", "--R-over-h", "10", "--sigma0-over-E", "0.1",
-          "--law", "lennard-jones"], "--law"),
+        (["curve", "--body", "sphere", "--R-over-h", "1e10", "--sigma0-over-E", "0.01",
+          "--law", "lennard-jones"], "--law"),  # Tabor's parameter over 50: no curve
+        (["curve", "--body", "sphere", "--R-over-h", "100", "--sigma0-over-E", "0.01",
+          "--law", "lennard-jones", "--num", "5"], "--num"),
+        (["curve", "--body", "sphere", *SI, "--law", "lennard-jones", "--a-max", "1e-8"],
+         "--a-max"),
+        (["curve", "--body", "sphere", *SI, "--F-max", "1e-9"], "--F-max"),
         (["pulloff", "--body", "sphere", *SI, "--cross-section", "hexagon"], "--cross-section"),
         (["pulloff", "--body", "sphere", *SI, "--corner-radius", "1e-9"], "--corner-radius"),
         (["pulloff", "--body", "sphere", *SI, "--corner-radius", "0"], "--corner-radius"),
@@ -136,6 +141,12 @@ def test_python_refuses_a_wires_problem_and_another_law_naming_the_pair():
         lj.contact(load=0.0)
     with pytest.raises(ValueError, match="under displacement control is not written"):
         lj.pull_off(control="displacement")
+    with pytest.raises(ValueError, match="max_radius, num and num_noncontact are the Dugdale"):
+        lj.load_curve(num=10)
+    with pytest.raises(ValueError, match=r"max_load must be in \[0, 3\.14159e-06\] N"):
+        lj.load_curve(max_load=-1e-9)
+    with pytest.raises(ValueError, match="max_load is the Lennard-Jones curve's end"):
+        tip.load_curve(max_load=1e-9)
     with pytest.raises(ValueError, match="give exactly one of load"):
         tip.contact()
     with pytest.raises(lc.NoEquilibriumError, match=r"load = -1e-06 N is below the pull-off"):
@@ -179,19 +190,44 @@ def test_the_lennard_jones_spheres_pull_off_is_one_number_in_python_and_the_cli(
 
 
 def test_a_colloidal_probe_beyond_the_self_consistent_range_is_the_limit_form(capsys):
-    # a 50 um probe on a soft substrate: Tabor's parameter beyond 20
+    # a 50 um probe on a soft substrate: Tabor's parameter beyond 50
     probe = lc.Sphere.from_modulus(
-        50e-6, 1e9, work_of_adhesion=0.1, equilibrium_spacing=3e-10
+        50e-6, 0.3e9, work_of_adhesion=0.1, equilibrium_spacing=3e-10
     ).under(lc.LennardJones)
-    assert 25 < probe.tabor_parameter < 30
+    assert 55 < probe.tabor_parameter < 65
     got = probe.pull_off()
     assert got.nondimensional.method == "limit"
     assert got.pull_off_force == pytest.approx(-1.5 * np.pi * 0.1 * 50e-6, rel=2e-3)  # JKR
-    si = ["--radius", "50e-6", "--modulus", "1e9", "--work-of-adhesion", "0.1", "--z0", "3e-10"]
+    si = ["--radius", "50e-6", "--modulus", "0.3e9", "--work-of-adhesion", "0.1", "--z0", "3e-10"]
     rec = _cli(capsys, ["pulloff", "--body", "sphere", "--law", "lennard-jones", *si])[0]
     assert rec["F_pulloff_N"] == pytest.approx(got.pull_off_force, rel=ULP)
     assert rec["method"] == "limit"
     assert rec["error_estimate"] == pytest.approx(got.nondimensional.error_estimate, rel=ULP)
+
+
+def test_the_lennard_jones_spheres_curve_is_one_curve_in_python_and_the_cli(capsys):
+    tip = lc.Sphere.from_modulus(20e-9, 50e9, work_of_adhesion=0.1, equilibrium_spacing=3e-10)
+    lj = tip.under(lc.LennardJones)
+    unit = np.pi * 0.1 * 20e-9
+    c = lj.load_curve(max_load=2 * unit)
+    # a second way: the curve in Tabor's units, scaled here
+    ref = lc.sphere_lj_curve(lj.tabor_parameter, F_max=2.0)
+    assert c.load.tolist() == pytest.approx((ref.F_over_piwR * unit).tolist(), rel=1e-12)
+    assert c.approach.tolist() == pytest.approx((ref.approach_over_z0 * 3e-10).tolist(), rel=1e-12)
+    assert c.load[-1] >= 2 * unit and c.stable[-1]
+    assert c.pull_off_force == pytest.approx(lj.pull_off().pull_off_force, rel=1e-4)
+    assert np.min(c.load) >= c.pull_off_force * (1 + 1e-12)
+    si = ["--radius", "20e-9", "--modulus", "50e9", "--work-of-adhesion", "0.1", "--z0", "3e-10"]
+    capsys.readouterr()
+    main(["curve", "--body", "sphere", "--law", "lennard-jones", *si, "--json"])
+    doc = json.loads(capsys.readouterr().out)
+    default = lj.load_curve()
+    assert [r["F_N"] for r in doc["results"]] == pytest.approx(default.load.tolist(), rel=ULP)
+    assert [r["a_m"] for r in doc["results"]] == pytest.approx(
+        default.contact_radius.tolist(), rel=ULP, abs=1e-30
+    )
+    assert doc["parameters"]["F_pulloff_N"] == pytest.approx(default.pull_off_force, rel=ULP)
+    assert doc["parameters"]["tabor_parameter"] == pytest.approx(lj.tabor_parameter, rel=ULP)
 
 
 def test_a_sweep_of_the_contact_and_the_curve_gives_pythons_numbers():

@@ -3,9 +3,10 @@ r""":class:`Sphere`: an AFM tip or a colloidal probe on a substrate, in SI units
 The same body as a wire's (:class:`~linecontact.cylinder._body.Body`: radius, composite
 modulus, adhesion law, built from a modulus, the materials or presets), with the sphere's
 problems: its contact, pull-off (load or displacement control) and load curve under the
-Dugdale law (:mod:`linecontact.sphere`, the Maugis--Dugdale sphere). Forces are in N
-(the scale ``E h R``), not per unit length. A problem that is a wire's only (sliding,
-rolling, the push, the load histories) or the Lennard-Jones law is refused, naming the pair.
+Dugdale law (:mod:`linecontact.sphere`, the Maugis--Dugdale sphere), and its pull-off and
+load curve under the Lennard-Jones law (:mod:`linecontact.sphere.lennard_jones`). Forces are
+in N (the scale ``E h R``), not per unit length. A problem that is a wire's only (sliding,
+rolling, the push, the load histories) is refused, naming the pair.
 """
 
 from __future__ import annotations
@@ -26,7 +27,7 @@ from ..units import Scales, to_si
 from ._body import Body
 from ._checks import _S_LJ
 
-__all__ = ["Sphere", "SphereContactSI", "SphereLoadCurveSI", "SpherePullOffSI"]
+__all__ = ["Sphere", "SphereContactSI", "SphereLJCurveSI", "SphereLoadCurveSI", "SpherePullOffSI"]
 
 
 @dataclass(frozen=True)
@@ -110,6 +111,41 @@ class SphereLoadCurveSI(Result):
 
 
 @dataclass(frozen=True)
+class SphereLJCurveSI(Result):
+    """The Lennard-Jones sphere's load curve in SI units, through its S-shape.
+
+    Attributes
+    ----------
+    load : ndarray
+        [N], compressive positive.
+    approach : ndarray
+        The approach of the far points [m].
+    central_gap : ndarray
+        The gap at the centre [m].
+    contact_radius : ndarray
+        Where the gap crosses ``z0`` [m] (0: none).
+    stable, stable_displacement : ndarray of bool
+        Stable under load control, under displacement control.
+    pull_off_force, jump_in_force : float
+        The load-control pull-off and jump-in [N] (the jump-in NaN where the curve is not
+        S-shaped).
+    nondimensional : SphereLJCurve
+    """
+
+    whole: ClassVar[tuple[str, ...]] = ("pull_off_force", "jump_in_force")
+
+    load: NDArray
+    approach: NDArray
+    central_gap: NDArray
+    contact_radius: NDArray
+    stable: NDArray
+    stable_displacement: NDArray
+    pull_off_force: float
+    jump_in_force: float
+    nondimensional: Any = field(repr=False)
+
+
+@dataclass(frozen=True)
 class Sphere(Body):
     r"""A sphere of radius ``R`` on a substrate, with its adhesion law: a body.
 
@@ -130,7 +166,7 @@ class Sphere(Body):
     WRITTEN: ClassVar[dict[str, tuple[type, ...]]] = {
         "contact": (Dugdale,),
         "pull_off": (Dugdale, LennardJones),
-        "load_curve": (Dugdale,),
+        "load_curve": (Dugdale, LennardJones),
     }
 
     def __getattr__(self, name: str) -> Any:
@@ -270,14 +306,31 @@ class Sphere(Body):
         )
 
     def load_curve(
-        self, *, max_radius: float | None = None, num: int = 200, num_noncontact: int = 40
-    ) -> SphereLoadCurveSI:
+        self,
+        *,
+        max_radius: float | None = None,
+        num: int = 200,
+        num_noncontact: int = 40,
+        max_load: float | None = None,
+    ) -> SphereLoadCurveSI | SphereLJCurveSI:
         """The load curve, both branches, the pull-offs marked.
 
-        Up to the contact radius ``max_radius`` [m]; default: where the load is ten times
-        the pull-off in compression.
+        Under the Dugdale law up to the contact radius ``max_radius`` [m] (default: where the
+        load is ten times the pull-off in compression), ``num`` points on the contact branch
+        and ``num_noncontact`` on the other. Under the Lennard-Jones law the self-consistent
+        curve (:func:`linecontact.sphere.lennard_jones.sphere_lj_curve`, Tabor's parameter up
+        to ``MU_SELF_CONSISTENT``) from a central gap of ``6 z0`` to the compressive load
+        ``max_load`` [N] (default: ``pi w R``, at most ten times that), its points where its
+        states fall.
         """
         self._written("load_curve")
+        if isinstance(self.adhesion, LennardJones):
+            return self._load_curve_lj(max_radius, num, num_noncontact, max_load)
+        if max_load is not None:
+            raise ValueError(
+                "max_load is the Lennard-Jones curve's end: under the Dugdale law the curve "
+                "ends at max_radius [m]"
+            )
         a_max = None
         if max_radius is not None:
             _domain.check_si("max_radius", max_radius, self.radius, "a_max_over_R", "m")
@@ -300,5 +353,34 @@ class Sphere(Body):
             stable_displacement=c.stable_displacement,
             pull_off_load=c.pull_off_load,
             pull_off_displacement=c.pull_off_displacement,
+            nondimensional=c,
+        )
+
+    def _load_curve_lj(
+        self, max_radius: float | None, num: int, num_noncontact: int, max_load: float | None
+    ) -> SphereLJCurveSI:
+        from ..sphere import lennard_jones as _lj
+
+        if max_radius is not None or (num, num_noncontact) != (200, 40):
+            raise ValueError(
+                "max_radius, num and num_noncontact are the Dugdale curve's: the Lennard-Jones "
+                "sphere's curve ends at max_load [N], its points where its states fall"
+            )
+        unit = np.pi * self.work_of_adhesion * self.radius  # the force unit pi w R [N]
+        F_max = 1.0
+        if max_load is not None:
+            _domain.check_si("max_load", max_load, unit, "lj_sphere_F_max", "N")
+            F_max = float(max_load) / unit
+        c = _lj.sphere_lj_curve(self.tabor_parameter, F_max=F_max)
+        z0 = _S_LJ * self.adhesion_range
+        return SphereLJCurveSI(
+            load=c.F_over_piwR * unit,
+            approach=c.approach_over_z0 * z0,
+            central_gap=c.central_gap_over_z0 * z0,
+            contact_radius=c.contact_radius * (self.radius * z0) ** 0.5,
+            stable=c.stable,
+            stable_displacement=c.stable_displacement,
+            pull_off_force=c.F_pulloff_over_piwR * unit,
+            jump_in_force=c.F_jump_in_over_piwR * unit,
             nondimensional=c,
         )

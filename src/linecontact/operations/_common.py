@@ -228,14 +228,13 @@ def is_sphere(args: Any) -> bool:
 def sphere_inputs(args: Any) -> None:
     """Refuse what a sphere has not: ``--length``, a cross-section, a law but Dugdale's.
 
-    Under the Lennard-Jones law its pull-off is written, not its contact and load curve.
+    Under the Lennard-Jones law its pull-off and load curve are written, not its contact.
     """
-    if getattr(args, "law", None) == "lennard-jones" and args.command != "pulloff":
+    if getattr(args, "law", None) == "lennard-jones" and args.command == "normal":
         raise ParameterError(
             "--law",
-            f"--law lennard-jones is not written for a sphere's {args.command} (--body "
-            "sphere): its pull-off is; its contact and load curve are the Dugdale law's "
-            "(--law dugdale)",
+            "--law lennard-jones is not written for a sphere's normal (--body sphere): its "
+            "pull-off and load curve are; its contact is the Dugdale law's (--law dugdale)",
         )
     if getattr(args, "length", None) is not None:
         raise ParameterError(

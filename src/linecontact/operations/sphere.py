@@ -38,6 +38,12 @@ CONTACT_KEYS = {
     "load": "F_N",
     "approach": "delta_m",
 }
+LJ_CURVE_KEYS = {
+    "load": "F_N",
+    "approach": "delta_m",
+    "central_gap": "central_gap_m",
+    "contact_radius": "a_m",
+}
 
 
 def _parameters(args: Inputs, rho: float, s: float, body: Any) -> dict[str, Any]:
@@ -57,15 +63,21 @@ def _table(
     where: tuple[float, float, Any],
     title: str,
     show: list[str],
+    *,
+    whole: dict[str, Any] | None = None,
     **how: Any,
 ) -> Table:
-    """The records of a sphere's ``result``, its SI columns ``keys`` (``shown``) with ``si``."""
+    """The records of a sphere's ``result``, its SI columns ``keys`` (``shown``) with ``si``.
+
+    ``whole``: numbers of the whole result, written among the parameters.
+    """
     extra: dict[str, Any] = {}
     if si is not None:
         cols, more = si_shown(args, si, keys, {}, shown)
         extra.update(cols)
         show = [*show, *more]
-    return records(args, result, _parameters(args, *where), extra, title, show, **how)
+    params = {**_parameters(args, *where), **(whole or {})}
+    return records(args, result, params, extra, title, show, **how)
 
 
 def pulloff(args: Inputs, rho: float, s: float, body: Any) -> Table:
@@ -112,6 +124,62 @@ def _pulloff_lj(args: Inputs, rho: float, s: float, body: Any) -> Table:
         ["F_pulloff_over_piwR", "error_estimate", "maugis_parameter", "method"],
         drop=("F_coarse", "F_fine", "converged"),
     )
+
+
+def _curve_lj(args: Inputs, rho: float, s: float, body: Any) -> Table:
+    """The Lennard-Jones sphere's curve, through its S-shape, to the load ``pi w R``."""
+    from ..sphere import lennard_jones as _lj
+
+    for name, flag in (
+        ("a_max", "--a-max"),
+        ("a_max_over_R", "--a-max-over-R"),
+        ("num", "--num"),
+        ("num_noncontact", "--num-noncontact"),
+    ):
+        if args.get(name) is not None:
+            raise ParameterError(
+                flag,
+                f"{flag} is the Dugdale curve's: the Lennard-Jones sphere's curve ends at the "
+                "load pi w R, its points where its states fall",
+            )
+    checked(R_over_h=rho, sigma0_over_E=s)
+    if s <= 0:
+        raise ParameterError(
+            "--sigma0-over-E", "the Lennard-Jones law needs adhesion: --sigma0-over-E > 0"
+        )
+    mu = float(sphere_tabor_parameter(rho, s))
+    if mu > _lj.MU_SELF_CONSISTENT:
+        raise ParameterError(
+            "--law",
+            f"--law lennard-jones: Tabor's parameter (R w^2/(E^2 z0^3))^(1/3) of this sphere "
+            f"is {mu:.4g}, over {_lj.MU_SELF_CONSISTENT:g}, the largest the Lennard-Jones "
+            "sphere's curve is solved for (its pull-off is given at every value): use --law "
+            "dugdale",
+        )
+    si = None if body is None else made(args, "result", body.load_curve)
+    c = _lj.sphere_lj_curve(mu) if si is None else si.nondimensional
+    return _table(
+        args,
+        c,
+        si,
+        LJ_CURVE_KEYS,
+        list(LJ_CURVE_KEYS.values()),
+        (rho, s, body),
+        f"load curve of a sphere under the Lennard-Jones law (self-consistent, Greenwood "
+        f"1997), from a central gap of 6 z0 to the load pi w R; pull-off "
+        f"{c.F_pulloff_over_piwR:.6g} pi w R (load control, this curve's mesh)",
+        ["central_gap_over_z0", "contact_radius", "F_over_piwR", "stable"],
+        whole=_lj_whole(c, si),
+    )
+
+
+def _lj_whole(c: Any, si: Any) -> dict[str, Any]:
+    """The Lennard-Jones curve's numbers of the whole: Tabor's parameter, the pull-offs."""
+    out = {k: getattr(c, k) for k in ("tabor_parameter", "F_pulloff_over_piwR")}
+    out["F_jump_in_over_piwR"] = c.F_jump_in_over_piwR
+    if si is not None:
+        out["F_pulloff_N"], out["F_jump_in_N"] = si.pull_off_force, si.jump_in_force
+    return out
 
 
 #: Each body's loads of ``normal``: the parameter, its flag, and the other body's spelling.
@@ -205,8 +273,12 @@ def curve(args: Inputs, rho: float, s: float, body: Any) -> Table:
     for name, flag in (("F_max_over_Eh", "--F-max-over-Eh"), ("F_max", "--F-max")):
         if args.get(name) is not None:
             raise ParameterError(
-                flag, f"{flag} is the Lennard-Jones wire's: a sphere's ends at --a-max"
+                flag,
+                f"{flag} is the Lennard-Jones wire's: a sphere's ends at --a-max (under the "
+                "Lennard-Jones law, at the load pi w R)",
             )
+    if args.law == "lennard-jones":
+        return _curve_lj(args, rho, s, body)
     n = {"num": 200 if args.num is None else args.num}
     n["num_noncontact"] = 40 if args.num_noncontact is None else args.num_noncontact
     if args.a_max is not None and args.a_max_over_R is not None:

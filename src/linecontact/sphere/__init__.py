@@ -24,11 +24,19 @@ from __future__ import annotations
 
 from .contact import SphereContact, sphere_contact
 from .curve import SphereLoadCurve, sphere_load_curve
+from .fits import SphereAdhesionFit, SphereModelChoice, sphere_fit_pull_off, sphere_which_model
 from .lennard_jones import SphereLJCurve, SphereLJPullOff, sphere_lj_curve, sphere_lj_pull_off
 from .models import SphereModels, cos_alpha, maugis_parameter_of_cos_alpha, sphere_models
 from .pulloff import SpherePullOff, sphere_contact_for_load, sphere_pull_off
+from .shear_fit import SphereShearStrengthFit, sphere_fit_shear_strength
 
 __all__ = [
+    "SphereAdhesionFit",
+    "SphereModelChoice",
+    "SphereShearStrengthFit",
+    "sphere_fit_pull_off",
+    "sphere_fit_shear_strength",
+    "sphere_which_model",
     "SphereLJCurve",
     "SphereLJPullOff",
     "sphere_lj_curve",
