@@ -45,7 +45,7 @@ def test_the_forward_model_is_the_si_bodys_pull_off():
 @pytest.mark.parametrize(("w", "z0"), [(W, Z0), (0.03, 3e-10), (0.5, 2e-10), (1.0, 4e-10)])
 def test_noise_free_joint_fit_recovers_both_and_reproduces_the_si_pull_offs(w, z0):
     F = si_pull_offs(RADII, w, z0)
-    fit = sphere_fit_pull_off(F, RADII, E, bootstrap=0)
+    fit = sphere_fit_pull_off(RADII, F, E, bootstrap=0)
     assert fit.work_of_adhesion == pytest.approx(w, rel=1e-8)
     assert fit.equilibrium_spacing == pytest.approx(z0, rel=1e-8)
     assert fit.identifiable and not fit.fixed_spacing and fit.dof == 3
@@ -62,7 +62,7 @@ def test_noise_free_joint_fit_recovers_both_and_reproduces_the_si_pull_offs(w, z
 
 def test_fixed_range_fits_w_from_one_point_as_the_inverse_does():
     F = si_pull_offs(RADII[:1], W, Z0)
-    fit = sphere_fit_pull_off(F, RADII[:1], E, equilibrium_spacing=Z0)
+    fit = sphere_fit_pull_off(RADII[:1], F, E, equilibrium_spacing=Z0)
     assert fit.work_of_adhesion == pytest.approx(W, rel=1e-10)
     w_inv = lc.sphere_work_of_adhesion_from_pull_off(F[0], RADII[0], E, Z0)
     assert fit.work_of_adhesion == pytest.approx(w_inv, rel=1e-10)
@@ -81,7 +81,7 @@ def test_the_95_intervals_cover_the_truth_in_most_of_20_repetitions():
     hits_w = hits_z = 0
     for seed in range(20):
         F, sd = noisy(seed, rel=0.01)
-        fit = sphere_fit_pull_off(F, RADII, E, sd=sd, bootstrap=0)
+        fit = sphere_fit_pull_off(RADII, F, E, sd=sd, bootstrap=0)
         lo, hi = fit.work_of_adhesion_ci95
         hits_w += lo <= W <= hi
         lo, hi = fit.equilibrium_spacing_ci95
@@ -93,7 +93,7 @@ def test_the_95_intervals_cover_the_truth_in_most_of_20_repetitions():
 
 def test_the_bootstrap_gives_an_interval_about_the_fit_from_its_refits():
     F, sd = noisy(2026, rel=0.01)
-    fit = sphere_fit_pull_off(F, RADII, E, sd=sd, bootstrap=40, seed=1)
+    fit = sphere_fit_pull_off(RADII, F, E, sd=sd, bootstrap=40, seed=1)
     assert fit.identifiable, fit.note
     assert fit.refits == 40
     for name in ("work_of_adhesion", "equilibrium_spacing"):
@@ -117,7 +117,7 @@ def test_data_all_in_one_limit_do_not_determine_z0_and_say_so(R, w, limit):
     lam = sf._sphere_maugis_parameter(*sf._groups(R, E, w, Z0)[:2])
     assert np.all(lam > 5) if limit == "JKR" else np.all(lam < 0.1)
     F, sd = noisy(3, rel=0.01, R=R, w=w)
-    fit = sphere_fit_pull_off(F, R, E, sd=sd, bootstrap=0)
+    fit = sphere_fit_pull_off(R, F, E, sd=sd, bootstrap=0)
     assert not fit.identifiable
     # the fit may land in either limit: pull-offs proportional to R fit both
     assert "do not determine z0" in fit.note and "cannot tell the two limits apart" in fit.note
@@ -133,14 +133,14 @@ def test_data_all_in_one_limit_do_not_determine_z0_and_say_so(R, w, limit):
 
 
 def test_noise_free_jkr_data_are_flagged_too():
-    fit = sphere_fit_pull_off(sf._pull_offs(JKR_RADII, E, 1.0, Z0), JKR_RADII, E, bootstrap=0)
+    fit = sphere_fit_pull_off(JKR_RADII, sf._pull_offs(JKR_RADII, E, 1.0, Z0), E, bootstrap=0)
     assert not fit.identifiable and "cannot tell the two limits apart" in fit.note
 
 
 def test_two_radii_with_two_exact_solutions_are_flagged():
     R = np.array([1e-8, 1e-6])
     F = sf._pull_offs(R, E, W, Z0)
-    fit = sphere_fit_pull_off(F, R, E, bootstrap=0)
+    fit = sphere_fit_pull_off(R, F, E, bootstrap=0)
     assert not fit.identifiable and "another minimum" in fit.note
     assert np.allclose(fit.model, F, rtol=1e-10)  # whichever it kept fits exactly
 
@@ -244,41 +244,41 @@ F5 = [-1e-9, -2e-9, -3e-9, -4e-9, -5e-9]
 @pytest.mark.parametrize(
     ("call", "name", "match"),
     [
-        (lambda: sphere_fit_pull_off(F5, RADII[:4], E), "radius", "one value per data point"),
-        (lambda: sphere_fit_pull_off(F5[:1], RADII[:1], E), "radius", "at least 2 distinct"),
-        (lambda: sphere_fit_pull_off(F5[:2], [1e-8, 1e-8], E), "radius", "at least 2 distinct"),
-        (lambda: sphere_fit_pull_off([1e-9] + F5[1:], RADII, E), "pull_off_force", r"\(-inf, 0\)"),
-        (lambda: sphere_fit_pull_off([0.0] + F5[1:], RADII, E), "pull_off_force", "got 0"),
-        (lambda: sphere_fit_pull_off([math.nan] + F5[1:], RADII, E), "pull_off_force", "nan"),
-        (lambda: sphere_fit_pull_off(F5, [math.nan, *RADII[1:]], E), "radius", "nan"),
-        (lambda: sphere_fit_pull_off(F5, RADII, [E, E]), "modulus", "single number"),
-        (lambda: sphere_fit_pull_off(F5, RADII, E, sd=[1e-10] * 4), "sd", "one value"),
-        (lambda: sphere_fit_pull_off(F5, RADII, E, sd=[0.0] * 5), "sd", "sd"),
-        (lambda: sphere_fit_pull_off(F5, RADII, E, bootstrap=-1), "bootstrap", "integer"),
-        (lambda: sphere_fit_pull_off(F5, RADII, E, seed=True), "seed", "integer"),
+        (lambda: sphere_fit_pull_off(RADII[:4], F5, E), "radius", "one value per data point"),
+        (lambda: sphere_fit_pull_off(RADII[:1], F5[:1], E), "radius", "at least 2 distinct"),
+        (lambda: sphere_fit_pull_off([1e-8, 1e-8], F5[:2], E), "radius", "at least 2 distinct"),
+        (lambda: sphere_fit_pull_off(RADII, [1e-9] + F5[1:], E), "pull_off_force", r"\(-inf, 0\)"),
+        (lambda: sphere_fit_pull_off(RADII, [0.0] + F5[1:], E), "pull_off_force", "got 0"),
+        (lambda: sphere_fit_pull_off(RADII, [math.nan] + F5[1:], E), "pull_off_force", "nan"),
+        (lambda: sphere_fit_pull_off([math.nan, *RADII[1:]], F5, E), "radius", "nan"),
+        (lambda: sphere_fit_pull_off(RADII, F5, [E, E]), "modulus", "single number"),
+        (lambda: sphere_fit_pull_off(RADII, F5, E, sd=[1e-10] * 4), "sd", "one value"),
+        (lambda: sphere_fit_pull_off(RADII, F5, E, sd=[0.0] * 5), "sd", "sd"),
+        (lambda: sphere_fit_pull_off(RADII, F5, E, bootstrap=-1), "bootstrap", "integer"),
+        (lambda: sphere_fit_pull_off(RADII, F5, E, seed=True), "seed", "integer"),
         (
-            lambda: sphere_fit_pull_off(F5, RADII, E, equilibrium_spacing=-1.0),
+            lambda: sphere_fit_pull_off(RADII, F5, E, equilibrium_spacing=-1.0),
             "equilibrium_spacing",
             r"\(0, inf\)",
         ),
         (
             lambda: sphere_fit_shear_strength([1e-9] * 3, [0.0] * 2, R_TIP, E, W, Z0),
-            "load",
+            "normal_load",
             "one value per data point",
         ),
         (
             lambda: sphere_fit_shear_strength([1e-9, -1e-9], [0.0] * 2, R_TIP, E, W, Z0),
-            "friction",
+            "friction_force",
             r"\(0, inf\)",
         ),
         (
             lambda: sphere_fit_shear_strength([1e-9], [-1e-6], R_TIP, E, W, Z0),
-            "load",
+            "normal_load",
             "below the pull-off",
         ),
         (
             lambda: sphere_fit_shear_strength([1e-9], [1.0], R_TIP, E, W, Z0),
-            "load",
+            "normal_load",
             "beyond the contacts",
         ),
         (

@@ -378,8 +378,8 @@ def _bootstrap(
 
 
 def sphere_fit_pull_off(
-    pull_off_force: ArrayLike,
     radius: ArrayLike,
+    pull_off_force: ArrayLike,
     modulus: float,
     *,
     equilibrium_spacing: float | None = None,
@@ -403,10 +403,10 @@ def sphere_fit_pull_off(
 
     Parameters
     ----------
-    pull_off_force : array_like, 1-D
-        The measured pull-off forces [N], negative (tensile).
     radius : array_like, 1-D
-        The tips' radii [m], one per force (at least two distinct for a joint fit).
+        The tips' radii [m] (at least two distinct for a joint fit).
+    pull_off_force : array_like, 1-D
+        The measured pull-off forces [N], negative (tensile), one per radius.
     modulus : float
         The composite modulus ``E`` [Pa], :math:`1/E = (1-\nu_1^2)/E_1 + (1-\nu_2^2)/E_2`.
     equilibrium_spacing : float, optional
@@ -433,7 +433,7 @@ def sphere_fit_pull_off(
     >>> R = np.array([5e-9, 20e-9, 100e-9, 500e-9, 2e-6])
     >>> F = [Sphere.from_modulus(r, 50e9, work_of_adhesion=0.1, equilibrium_spacing=3e-10)
     ...      .pull_off().pull_off_force for r in R]
-    >>> fit = sphere_fit_pull_off(F, R, 50e9, bootstrap=0)
+    >>> fit = sphere_fit_pull_off(R, F, 50e9, bootstrap=0)
     >>> print(fit.identifiable, f"{fit.work_of_adhesion:.9f} {fit.equilibrium_spacing:.6e}")
     True 0.100000000 3.000000e-10
     """
@@ -651,7 +651,7 @@ def sphere_which_model(
     E = _number("modulus", modulus, "Pa")
     z0 = _number("equilibrium_spacing", equilibrium_spacing, "m")
     load = float(check_array("max_load", max_load, low=-np.inf))
-    w = sphere_fit_pull_off([-F], [R], E, equilibrium_spacing=z0, bootstrap=0).work_of_adhesion
+    w = sphere_fit_pull_off([R], [-F], E, equilibrium_spacing=z0, bootstrap=0).work_of_adhesion
     rho, s, h = _groups(R, E, w, z0)
     if load < -F:
         raise ParameterError(

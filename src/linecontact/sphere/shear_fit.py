@@ -87,8 +87,8 @@ def _through_origin(f: NDArray, A: NDArray, wt: NDArray) -> NDArray:
 
 
 def sphere_fit_shear_strength(
-    friction: ArrayLike,
-    load: ArrayLike,
+    friction_force: ArrayLike,
+    normal_load: ArrayLike,
     radius: float,
     modulus: float,
     work_of_adhesion: float,
@@ -115,9 +115,9 @@ def sphere_fit_shear_strength(
 
     Parameters
     ----------
-    friction : array_like, 1-D
+    friction_force : array_like, 1-D
         Friction forces ``f`` [N], positive.
-    load : array_like, 1-D
+    normal_load : array_like, 1-D
         Normal loads ``F`` [N], compressive positive, above the pull-off; one per force.
     radius, modulus, work_of_adhesion, equilibrium_spacing : float
         ``R`` [m], the composite modulus ``E`` [Pa], ``w`` [J/m^2], ``z0`` [m].
@@ -147,8 +147,8 @@ def sphere_fit_shear_strength(
     >>> print(f"{fit.shear_strength / 1e6:.6f} MPa", fit.dof)
     100.000000 MPa 2
     """
-    f = _vector("friction", friction, None)
-    F = _vector("load", load, f.size, low=-np.inf)
+    f = _vector("friction_force", friction_force, None)
+    F = _vector("normal_load", normal_load, f.size, low=-np.inf)
     R = _number("radius", radius, "m")
     E = _number("modulus", modulus, "Pa")
     w = _number("work_of_adhesion", work_of_adhesion, "J/m^2")
@@ -167,14 +167,15 @@ def sphere_fit_shear_strength(
         if err.parameter != "F_over_EhR":
             raise
         raise ParameterError(
-            "load", f"a load is beyond the contacts the sphere is solved for: {err}"
+            "normal_load",
+            f"normal_load: a load is beyond the contacts the sphere is solved for: {err}",
         ) from err
     if np.any(np.isnan(A)):
         i = int(np.flatnonzero(np.isnan(A))[0])
         raise ParameterError(
-            "load",
-            f"load {float(F[i])!r} N (point {i + 1}) is below the pull-off of this sphere: no "
-            "contact to slide on (check its sign: compressive positive)",
+            "normal_load",
+            f"normal_load {float(F[i])!r} N (point {i + 1}) is below the pull-off of this "
+            "sphere: no contact to slide on (check its sign: compressive positive)",
         )
     wt = np.ones_like(f) if sig is None else (np.min(sig) / sig) ** 2
     tau = float(_through_origin(f, A, wt))
