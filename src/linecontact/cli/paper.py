@@ -307,13 +307,14 @@ def register(sub) -> None:
     fi = sub.add_parser(
         "figures",
         help="draw the figures beyond the paper: the pushed fibre's motion maps and force, "
-        "load-history loops and loss, the adhesion map",
+        "load-history loops and loss, the adhesion map, the sphere's curves, map and alpha",
         description=textwrap.fill(
             "Draw the figures beyond the paper: the pushed fibre's first motion and lateral "
             "force (push01_*.png, ...; docs/push.md), the loops, loss, traction and slip of "
             "tangential load histories (history01_*.png, ...; docs/load-histories.md) and the "
             "adhesion map on a coarse grid (adhesion_map.png; `linecontact map` draws it "
-            "finer, with its data); details: docs/cli.md.",
+            "finer, with its data) and the sphere's load curves, adhesion map and COS alpha "
+            "against lambda (sphere01_*.png, ...; docs/sphere.md); details: docs/cli.md.",
             88,
         ),
         epilog="examples:\n  linecontact figures\n"
