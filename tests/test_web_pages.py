@@ -571,6 +571,13 @@ def test_the_push_page_takes_the_works_of_adhesion_and_a_tip(server, page):
             [("result.contact_radius", "a_m"), ("result.approach", "delta_m")],
         ),
         ("sphere-curve", {}, "curve", [("result.load", "F_N"), ("result.approach", "delta_m")]),
+        ("sphere-lennard-jones", {}, "pulloff", [("result.pull_off_force", "F_pulloff_N")]),
+        (
+            "sphere-lennard-jones-curve",
+            {"radius": ("50", "nm")},
+            "curve",
+            [("result.load", "F_N"), ("result.central_gap", "central_gap_m")],
+        ),
         (
             "sphere",
             {"radius": ("1", "um"), "work_of_adhesion": ("50", "mJ/m^2")},
@@ -591,8 +598,24 @@ def test_a_pages_python_lines_give_the_apis_numbers(server, page, name, fill, co
     for py, key in pairs:
         want = [r[key] for r in api] if len(api) > 1 or isinstance(ran[py], list) else api[0][key]
         # the Lennard-Jones solver's last bits move with the BLAS threads (tests/test_web.py)
-        rel = 1e-6 if name == "lennard-jones" else 1e-9
+        rel = 1e-6 if "lennard-jones" in name else 1e-9
         assert ran[py] == pytest.approx(want, rel=rel), (py, key)
+
+
+def test_the_lennard_jones_sphere_pages_say_the_answer_in_words(server, page):
+    page.goto(f"{server}/sphere-lennard-jones")
+    url, text = _compute(page, "pulloff")
+    assert "Under the Lennard-Jones law it comes off at a pull of" in text
+    assert "Tabor's parameter" in text and "self-consistent method" in text
+    rec = _api(server, "pulloff", urllib.parse.urlsplit(url).query)["results"][0]
+    shown = page.locator("#headline [data-key=F_pulloff_N]").first.get_attribute("data-value")
+    assert float(shown) == pytest.approx(rec["F_pulloff_N"], rel=1e-6)
+    assert rec["F_pulloff_N"] < 0 and rec["method"] == "self-consistent"
+    link = "cylinder_material=Si&substrate_material=SiO2&radius=1e-04&work_of_adhesion=0.1&z0=3e-10"
+    page.goto(f"{server}/sphere-lennard-jones-curve?{link}")
+    _, text = _compute(page, "curve")
+    assert "and jumps in at" in text  # S-shaped: a 100 um probe, Tabor's parameter 2.4
+    page.wait_for_selector("#plot-svg", timeout=WAIT, state="attached")
 
 
 # ------------------------------------------------------------------------------------------
@@ -666,6 +689,8 @@ LINKS = {
     "&z0=3e-10",
     "lennard-jones": "cylinder_material=ZnO&substrate_material=SiO2&radius=5e-08"
     "&work_of_adhesion=0.3&z0=3e-10",
+    "sphere-lennard-jones-curve": "cylinder_material=Si&substrate_material=SiO2&radius=2e-07"
+    "&work_of_adhesion=0.1&z0=3e-10",
 }  # and the fit and the map pages, in their own tests (_fits_both_widths)
 
 

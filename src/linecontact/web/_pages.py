@@ -268,6 +268,29 @@ PAGES: dict[str, dict[str, Any]] = {
             "ys": [{"key": "F_N", "kind": "newton", "label": "load F"}],
         },
     },
+    "sphere-lennard-jones": {
+        "title": "An AFM tip or a colloidal probe under the Lennard-Jones law: pull-off",
+        "question": "How hard must a sphere be pulled off under the full Lennard-Jones law "
+        "(Greenwood's self-consistent sphere, not Dugdale's step)?",
+        "command": "pulloff",
+        "fixed": {"body": "sphere", "law": "lennard-jones"},
+        "alts": _WIRE_ALTS,
+        "fields": _TIP,
+        "plot": None,
+    },
+    "sphere-lennard-jones-curve": {
+        "title": "An AFM tip or a colloidal probe under the Lennard-Jones law: the load curve",
+        "question": "How does the load of a sphere change with its approach under the full "
+        "Lennard-Jones law, through its jump-in and pull-off?",
+        "command": "curve",
+        "fixed": {"body": "sphere", "law": "lennard-jones"},
+        "alts": _WIRE_ALTS,
+        "fields": list(_TIP),
+        "plot": {
+            "x": {"key": "delta_m", "kind": "length", "label": "approach delta"},
+            "ys": [{"key": "F_N", "kind": "newton", "label": "load F"}],
+        },
+    },
     "lennard-jones": {
         "title": "The Lennard-Jones law: pull-off",
         "question": "The pull-off under the full Lennard-Jones law (not Dugdale's step).",

@@ -350,6 +350,22 @@
       return [p("It comes off at a pull of ", val("F_N", r.F_N, newtons(Math.abs(r.F_N))), " (load control), at a contact radius a = ",
         val("a_m", r.a_m, qty(r.a_m, "length", ["radius"])), `; the curve has ${rs.length} points.`)];
     },
+    "sphere-lennard-jones"(doc) {
+      const r = rec(doc), mu = (doc.parameters || {}).tabor_parameter;
+      return [
+        p("Under the Lennard-Jones law it comes off at a pull of ", val("F_pulloff_N", r.F_pulloff_N, newtons(Math.abs(r.F_pulloff_N))),
+          ` (${fmt(r.F_pulloff_over_piwR)} pi w R, within ${fmt(r.error_estimate)}; rigid: -2, JKR: -1.5; Tabor's parameter `,
+          val("tabor_parameter", mu, fmt(mu)), `, solved by the ${r.method} method; the records give the pull-off force as ${fmt(r.F_pulloff_N)} N: a tensile load is negative).`),
+        maugis(r.maugis_parameter),
+      ];
+    },
+    "sphere-lennard-jones-curve"(doc) {
+      const rs = doc.results || [], q = doc.parameters || {};
+      const jump = Number.isFinite(q.F_jump_in_N) ? [", and jumps in at ", val("F_jump_in_N", q.F_jump_in_N, newtons(Math.abs(q.F_jump_in_N)))] : [", without a jump-in (the curve is not S-shaped)"];
+      return [p("It comes off at a pull of ", val("F_pulloff_N", q.F_pulloff_N, newtons(Math.abs(q.F_pulloff_N))),
+        " (load control, on the curve's mesh)", ...jump, `; the curve has ${rs.length} states (Tabor's parameter `,
+        val("tabor_parameter", q.tabor_parameter, fmt(q.tabor_parameter)), ").")];
+    },
     "lennard-jones"(doc) {
       const r = rec(doc);
       return [
