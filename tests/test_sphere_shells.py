@@ -230,6 +230,21 @@ def test_the_lennard_jones_spheres_curve_is_one_curve_in_python_and_the_cli(caps
     assert doc["parameters"]["tabor_parameter"] == pytest.approx(lj.tabor_parameter, rel=ULP)
 
 
+def test_a_sweep_of_the_lennard_jones_pull_off_gives_pythons_numbers():
+    pytest.importorskip("xarray")
+    radii, E = [20e-9, 50e-6], 0.3e9  # Tabor's parameter 0.5 and 59: both methods
+    ds = lc.sweep(
+        "pulloff", body="sphere", law="lennard-jones", radius=radii, modulus=E,
+        work_of_adhesion=0.1, z0=3e-10,
+    )  # fmt: skip
+    for R, method in zip(radii, ("self-consistent", "limit"), strict=True):
+        tip = lc.Sphere.from_modulus(R, E, work_of_adhesion=0.1, equilibrium_spacing=3e-10)
+        want = tip.under(lc.LennardJones).pull_off()
+        got = ds.sel(radius=R)
+        assert float(got["F_pulloff_N"]) == pytest.approx(want.pull_off_force, rel=1e-9)
+        assert str(got["method"].values) == method == want.nondimensional.method
+
+
 def test_a_sweep_of_the_contact_and_the_curve_gives_pythons_numbers():
     pytest.importorskip("xarray")
     common = dict(body="sphere", radius=[20e-9, 1e-6], modulus=50e9, sigma0=1e8, h=1e-9)
