@@ -61,7 +61,7 @@ _SUMMARIES: dict[str, str] = {
     "paper": "redraw the paper's Figs. 2-14 (PNG by default)",
     "figures": (
         "draw the figures beyond the paper: the pushed fibre's motion maps and force, "
-        "load-history loops and loss, the adhesion map"
+        "load-history loops and loss, the adhesion map, the sphere's curves, map and alpha"
     ),
     "cite": "how to cite linecontact and the paper",
     "map": "the adhesion map of line contact: where Hertz, rigid, JKR, Maugis-Dugdale hold",
