@@ -41,7 +41,7 @@ DOMAIN: dict[str, tuple[float, bool, float, bool]] = {
     "push_H_over_R": (0.0, False, 2.0, True),  # a push's height: up to the wire's top
     # the sphere (linecontact.sphere): its force [N] over E h R
     "F_over_EhR": (-1e12, True, 1e12, True),
-    "lj_sphere_F_max": (0.0, True, 10.0, True),  # the Lennard-Jones sphere's curve end [pi w R]
+    "F_max_over_piwR": (0.0, True, 10.0, True),  # the Lennard-Jones sphere's curve end [pi w R]
     "central_gap_over_z0": (0.01, True, 1e6, True),  # the Lennard-Jones law on a rigid cylinder
     # w sqrt(R/z0)/(E z0), the group of the Lennard-Jones law: its curves, states and contacts
     # are solved self-consistently up to lennard_jones._limit.MU_SELF_CONSISTENT; its pull-off
@@ -131,7 +131,7 @@ SCALE_WORDS: dict[str, str] = {
     "F_over_Eh": "times the modulus times the adhesion range",
     "F_over_Eh2": "times the modulus times the adhesion range",
     "F_over_EhR": "times the modulus times the adhesion range times the radius",
-    "lj_sphere_F_max": "times pi w R",
+    "F_max_over_piwR": "times pi w R",
     "tau0_over_E": "times the modulus",
     "friction_tau0_over_E": "times the modulus",
     "T_over_Ea": "times the modulus times the contact half-width",

@@ -369,7 +369,7 @@ class Sphere(Body):
         unit = np.pi * self.work_of_adhesion * self.radius  # the force unit pi w R [N]
         F_max = 1.0
         if max_load is not None:
-            _domain.check_si("max_load", max_load, unit, "lj_sphere_F_max", "N")
+            _domain.check_si("max_load", max_load, unit, "F_max_over_piwR", "N")
             F_max = float(max_load) / unit
         c = _lj.sphere_lj_curve(self.tabor_parameter, F_max=F_max)
         z0 = _S_LJ * self.adhesion_range

@@ -83,6 +83,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 from .._threads import on_one_blas_thread
+from ..closed_forms.sphere import sphere_jkr_approach as _jkr_approach
 from ..errors import ParameterError
 from ..results import Result
 from ._lj_discrete import (
@@ -540,7 +541,7 @@ def _limit(mu: float) -> SphereLJPullOff:
         F_coarse=math.nan,
         F_fine=math.nan,
         central_gap_over_z0=1.0 - P0 / 16.0,
-        approach_over_z0=a * a - math.sqrt(2.0 * math.pi * a * c) - 1.0,
+        approach_over_z0=float(_jkr_approach(a, 1.0, c)) - 1.0,  # groups: R/h = 1, z0 = h
         contact_radius=a * math.sqrt(max(1.0 - crack / hertz, 0.0)),
         edge_radius=a,
         maugis_parameter=_lambda(mu),

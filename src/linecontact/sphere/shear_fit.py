@@ -223,7 +223,7 @@ def _student(dof: int) -> float:
     """Student's t at 97.5 % for ``dof`` degrees of freedom (scipy imported here: slow)."""
     from scipy.stats import t
 
-    return float(t.ppf(0.975, dof))
+    return float(t.ppf(1.0 - 0.05 / 2.0, dof))  # the two-sided 95 % quantile
 
 
 def _shared_spread(
