@@ -118,6 +118,8 @@ class SphereLJCurveSI(Result):
     ----------
     load : ndarray
         [N], compressive positive.
+    load_error : ndarray
+        Each load's estimated error [N] (``error_estimate`` of :class:`SphereLJCurve`).
     approach : ndarray
         The approach of the far points [m].
     central_gap : ndarray
@@ -135,6 +137,7 @@ class SphereLJCurveSI(Result):
     whole: ClassVar[tuple[str, ...]] = ("pull_off_force", "jump_in_force")
 
     load: NDArray
+    load_error: NDArray
     approach: NDArray
     central_gap: NDArray
     contact_radius: NDArray
@@ -375,6 +378,7 @@ class Sphere(Body):
         z0 = _S_LJ * self.adhesion_range
         return SphereLJCurveSI(
             load=c.F_over_piwR * unit,
+            load_error=c.error_estimate * unit,
             approach=c.approach_over_z0 * z0,
             central_gap=c.central_gap_over_z0 * z0,
             contact_radius=c.contact_radius * (self.radius * z0) ** 0.5,

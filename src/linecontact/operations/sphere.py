@@ -40,6 +40,7 @@ CONTACT_KEYS = {
 }
 LJ_CURVE_KEYS = {
     "load": "F_N",
+    "load_error": "F_error_N",
     "approach": "delta_m",
     "central_gap": "central_gap_m",
     "contact_radius": "a_m",

@@ -183,10 +183,28 @@ def _rings(mu: float, centre: float, m: float, level: int, far: float) -> _Mesh:
     edges = g.rho(t)
     edges[0] = 0.0
     mid = g.rho(t[:-1] + 0.5 * T / (n * k))
+    return _mesh(edges, mid, centre, band, h)
+
+
+def _mesh(edges: NDArray, mid: NDArray, centre: float, band: float, h: float) -> _Mesh:
+    """The rings ``edges`` with collocation at ``mid``: their influence matrix and sums."""
     D = _disc(mid[:, None], edges[None, 1:])
     A = D.copy()
     A[:, 1:] -= D[:, :-1]
     return _Mesh(edges, mid, A, np.diff(edges**2), 2.0 * np.diff(edges), centre, band, h)
+
+
+def _coarser(mesh: _Mesh) -> _Mesh:
+    """The rings of ``mesh`` joined in pairs: the mesh it halves (nested exactly).
+
+    The pairs' mid-points in the grid coordinate are the odd edges; an odd last ring stays.
+    """
+    e = mesh.edges
+    if (e.size - 1) % 2:
+        edges, mid = np.r_[e[:-1:2], e[-1]], np.r_[e[1:-1:2], mesh.mid[-1]]
+    else:
+        edges, mid = e[::2], e[1::2]
+    return _mesh(edges, mid, mesh.centre, mesh.band, 2.0 * mesh.h)
 
 
 def _law(z: NDArray) -> tuple[NDArray, NDArray]:

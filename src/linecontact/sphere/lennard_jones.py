@@ -91,6 +91,7 @@ from ._lj_discrete import (
     _FAR_END,
     _N_FAR,
     _START,
+    _coarser,
     _element,
     _fail,
     _guess,
@@ -130,7 +131,14 @@ class _Path:
     """
 
     def __init__(
-        self, mu: float, m: float, far: float, *, centre: float | None = None, level: int = 0
+        self,
+        mu: float,
+        m: float,
+        far: float,
+        *,
+        centre: float | None = None,
+        level: int = 0,
+        estimate: bool = False,
     ) -> None:
         self.mu, self.m, self.far_end, self.level = mu, m, far, level
         self.follow = centre is None
@@ -139,6 +147,10 @@ class _Path:
         self.lu: dict = {}  # the chord Newton's factorisation, shared along a mesh
         self.known: dict[float, _State] = {}
         self.meshes = 1
+        #: each state's error estimate from the nested mesh of half the rings
+        self.estimate = estimate
+        self.errors: dict[float, float] = {}
+        self._coarse: tuple[_Mesh, _Mesh, dict] | None = None
 
     def _mesh_for(self, tau: float) -> _Mesh:
         e = max(tau, 0.0)
@@ -170,7 +182,20 @@ class _Path:
         if s is not None:
             self.states.append(s)
             self.known[tau] = s
+            if self.estimate:
+                self.errors[tau] = self._error(mesh, s)
         return s
+
+    def _error(self, mesh: _Mesh, s: _State) -> float:
+        """The state's load less that of the same state on the mesh it halves.
+
+        NaN where the coarser mesh's state does not converge.
+        """
+        if self._coarse is None or self._coarse[0] is not mesh:
+            self._coarse = (mesh, _coarser(mesh), {})
+        _, coarse, lu = self._coarse
+        c = _state(self.mu, coarse, s.tau, np.interp(coarse.mid, mesh.mid, s.zeta), s.delta, lu)
+        return math.nan if c is None else abs(s.F - c.F)
 
     def _walk(self, tau: float) -> _State | None:
         lo = min(self.states, key=lambda p: abs(p.tau - tau)).tau
@@ -332,10 +357,10 @@ class SphereLJPullOff(Result):
 
 @dataclass(frozen=True)
 class SphereLJCurve(Result):
-    r"""The load curve of the self-consistent Lennard-Jones sphere (one mesh).
+    r"""The load curve of the self-consistent Lennard-Jones sphere.
 
     One point per state, in the order of the curve (the approach growing except across an
-    S-shape's turns).
+    S-shape's turns), each on rings graded about its own edge.
 
     Attributes
     ----------
@@ -343,6 +368,13 @@ class SphereLJCurve(Result):
         The approach :math:`\delta` [:math:`z_0`].
     F_over_piwR : ndarray
         The load [:math:`\pi w R`], compressive positive.
+    error_estimate : ndarray
+        Each load's estimated error [:math:`\pi w R`]: the largest, over it and its two
+        neighbours on the curve, of the difference between a state's load and that of the
+        same state on the nested mesh of half the rings. Three times the Richardson
+        correction of a second-order method, and taken over neighbours, where the
+        correction alone falls short (near a change of the error's sign, or where the edge
+        sits off its mesh's centre); NaN where no such state converges.
     central_gap_over_z0 : ndarray
         The gap at the centre [:math:`z_0`].
     contact_radius : ndarray
@@ -373,6 +405,7 @@ class SphereLJCurve(Result):
 
     approach_over_z0: NDArray
     F_over_piwR: NDArray
+    error_estimate: NDArray
     central_gap_over_z0: NDArray
     contact_radius: NDArray
     stable: NDArray
@@ -586,6 +619,13 @@ def _lambda(mu: float) -> float:
     return LAMBDA_OVER_TABOR * mu
 
 
+def _over_neighbours(e: NDArray) -> NDArray:
+    """The largest of each value and its two neighbours (NaN only where all three are)."""
+    nan = np.full(1, np.nan)
+    with np.errstate(invalid="ignore"):
+        return np.fmax(np.fmax(e, np.r_[e[1:], nan]), np.r_[nan, e[:-1]])
+
+
 def _extrema(F: NDArray) -> tuple[list[int], list[int]]:
     """Indices of the interior local minima and maxima of the sampled load."""
     n = F.size
@@ -630,7 +670,7 @@ def sphere_lj_curve(tabor_parameter: float, *, F_max: float = 1.0, m: float = 1.
         raise ParameterError("F_max", f"F_max must be a number in [0, 10], got {F_max!r}") from None
     if not (0.0 <= F_end <= 10.0):
         raise ParameterError("F_max", f"F_max must be a number in [0, 10], got {F_max!r}")
-    path = _Path(mu, m, _far(mu, F_end))
+    path = _Path(mu, m, _far(mu, F_end), estimate=True)
     h = _element(mu, m)
     states = path.climb(path.far(), lambda st: _past_minimum(st, 0.5) and st[-1].F >= F_end, h)
     F = np.array([s.F for s in states])
@@ -645,6 +685,9 @@ def sphere_lj_curve(tabor_parameter: float, *, F_max: float = 1.0, m: float = 1.
     return SphereLJCurve(
         approach_over_z0=delta,
         F_over_piwR=F,
+        error_estimate=_over_neighbours(
+            np.array([path.errors.get(s.tau, math.nan) for s in states])
+        ),
         central_gap_over_z0=np.array([s.central_gap for s in states]),
         contact_radius=np.array([s.contact_radius for s in states]),
         stable=dF > 0.0,
