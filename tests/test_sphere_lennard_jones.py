@@ -169,20 +169,26 @@ def test_minima_converge_at_second_order(mu, levels, bounds):
     # the minima on one mesh about the pull-off's edge, halved again and again: successive
     # differences fall fourfold (measured: 3.34, then 3.83 at mu = 0; 4.0006, 4.0009 at 1;
     # 4.95 at 10, from the coarsest mesh), and the first two extrapolate to the pull-off
+    F, flat = on_one_blas_thread(_nested_minima)(mu, levels)
+    assert not flat
+    ratio = (F[-3] - F[-2]) / (F[-2] - F[-1])
+    assert bounds[0] < ratio < bounds[1]
+    p = pull_off(mu)
+    assert abs(F[1] + (F[1] - F[0]) / 3 - p.F_pulloff_over_piwR) < 0.2 * p.error_estimate
+
+
+def _nested_minima(mu, levels):
+    """The pull-off's minima on one mesh about its edge and on that mesh halved again."""
     far = lj._far(mu, -1.5)
     path = lj._Path(mu, 1.0, far)
     states = path.climb(path.far(), lambda st: lj._past_minimum(st, 0.5), lj._element(mu, 1.0))
     best, centre, flat = lj._refined(path, states, lj._lowest(mu, states))
-    assert not flat
     F = []
     for level in range(levels):
         nested = lj._Path(mu, 1.0, far, centre=centre, level=level)
         nested.states = [best]
         F.append(lj._in_band(nested).F)
-    ratio = (F[-3] - F[-2]) / (F[-2] - F[-1])
-    assert bounds[0] < ratio < bounds[1]
-    p = pull_off(mu)
-    assert abs(F[1] + (F[1] - F[0]) / 3 - p.F_pulloff_over_piwR) < 0.2 * p.error_estimate
+    return F, flat
 
 
 # ---------------------------------------------------------------------------------------
@@ -248,6 +254,37 @@ def test_curve_at_the_top_of_the_self_consistent_range():
     assert np.min(c.F_over_piwR) >= c.F_pulloff_over_piwR - 1e-12
     assert -0.1 < c.F_jump_in_over_piwR < 0.0
     assert c.F_over_piwR[-1] >= 1.0 and c.stable[-1]
+
+
+@pytest.mark.parametrize("mu", [1.0, 20.0])
+def test_the_curves_error_estimates_bound_the_error_of_each_state(mu):
+    # a second way: each state solved again on rings twice as fine about its own edge; the
+    # error of the default mesh is then 4/3 of the difference (second order). Measured at
+    # mu = 1, 3, 20, 50: the estimate bounds it at 272 of 273 states (one at mu = 3, 1.5
+    # times its estimate), by 0.37 to 0.52 at most at mu = 1, 20, 50
+    states, estimate, err = on_one_blas_thread(_curve_against_finer)(mu)
+    assert np.all(np.isfinite(estimate)) and np.all(estimate > 0)
+    checked = np.isfinite(err)
+    assert np.count_nonzero(checked) >= 8
+    assert np.all(err[checked] < estimate[checked])
+    c = sphere_lj_curve(mu)  # the same states, their estimates the result's
+    assert c.F_over_piwR.tolist() == pytest.approx([s.F for s in states], rel=1e-9)
+    assert c.error_estimate.tolist() == pytest.approx(estimate.tolist(), rel=1e-6)
+
+
+def _curve_against_finer(mu):
+    """The curve's states, their estimates, and (every third) their errors from finer rings."""
+    far = lj._far(mu, 1.0)
+    path = lj._Path(mu, 1.0, far, estimate=True)
+    done = lambda st: lj._past_minimum(st, 0.5) and st[-1].F >= 1.0  # noqa: E731
+    states = path.climb(path.far(), done, lj._element(mu, 1.0))
+    estimate = lj._over_neighbours(np.array([path.errors[s.tau] for s in states]))
+    err = np.full(len(states), np.nan)
+    for i in range(0, len(states), 3):  # every third state (each a mesh of its own)
+        finer = lj._Path(mu, 2.0, far, centre=max(states[i].tau, 0.0))
+        finer.states = [states[i]]
+        err[i] = abs(states[i].F - finer.solve(states[i].tau).F) * 4 / 3
+    return states, estimate, err
 
 
 def test_curve_without_s_shape_at_small_tabor_parameter():

@@ -214,6 +214,7 @@ def test_the_lennard_jones_spheres_curve_is_one_curve_in_python_and_the_cli(caps
     ref = lc.sphere_lj_curve(lj.tabor_parameter, F_max=2.0)
     assert c.load.tolist() == pytest.approx((ref.F_over_piwR * unit).tolist(), rel=1e-12)
     assert c.approach.tolist() == pytest.approx((ref.approach_over_z0 * 3e-10).tolist(), rel=1e-12)
+    assert c.load_error.tolist() == pytest.approx((ref.error_estimate * unit).tolist(), rel=1e-9)
     assert c.load[-1] >= 2 * unit and c.stable[-1]
     assert c.pull_off_force == pytest.approx(lj.pull_off().pull_off_force, rel=1e-4)
     assert np.min(c.load) >= c.pull_off_force * (1 + 1e-12)
@@ -223,6 +224,9 @@ def test_the_lennard_jones_spheres_curve_is_one_curve_in_python_and_the_cli(caps
     doc = json.loads(capsys.readouterr().out)
     default = lj.load_curve()
     assert [r["F_N"] for r in doc["results"]] == pytest.approx(default.load.tolist(), rel=ULP)
+    assert [r["F_error_N"] for r in doc["results"]] == pytest.approx(
+        default.load_error.tolist(), rel=1e-9
+    )
     assert [r["a_m"] for r in doc["results"]] == pytest.approx(
         default.contact_radius.tolist(), rel=ULP, abs=1e-30
     )
