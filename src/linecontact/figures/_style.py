@@ -281,6 +281,21 @@ def _legends(ax, title: str, colors, labels, entries) -> None:
     )
 
 
+def side_legend(ax, handles, labels, title: str) -> None:
+    """A legend outside the axes on the right, from their top (no frame)."""
+    ax.legend(
+        handles,
+        labels,
+        title=title,
+        loc="upper left",
+        bbox_to_anchor=(1.02, 1.0),
+        fontsize=8.5,
+        title_fontsize=9,
+        frameon=False,
+        borderaxespad=0.0,
+    )
+
+
 def _sigma_labels(sigmas) -> list[str]:
     return ["0 (Hertz)" if s == 0 else f"{s:g}" for s in sigmas]
 

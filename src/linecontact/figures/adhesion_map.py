@@ -36,7 +36,7 @@ from ..adhesion_map import (
     domain_mu_max,
 )
 from ..lennard_jones import maugis_parameter_of_mu
-from ._style import DEFAULT_SIZE, Job, Margins, Run, _mpl, _new_axes, _save
+from ._style import DEFAULT_SIZE, Job, Margins, Run, _mpl, _new_axes, _save, side_legend
 
 __all__ = ["COARSE", "STEM", "draw", "figure", "jobs"]
 
@@ -235,17 +235,7 @@ def figure(m: AdhesionMap, run: Run):
         ls = _style(lv, m.tol)
         handles.append(Line2D([], [], color="0.25", ls=ls, lw=1.7 if lv == m.tol else 1.0))
         labels.append(f"error {_pct(lv)}" + (" (tol)" if lv == m.tol else ""))
-    ax.legend(
-        handles,
-        labels,
-        title=f"within {_pct(m.tol)} of the full law",
-        loc="upper left",
-        bbox_to_anchor=(1.02, 1.0),
-        fontsize=8.5,
-        title_fontsize=9,
-        frameon=False,
-        borderaxespad=0.0,
-    )
+    side_legend(ax, handles, labels, f"within {_pct(m.tol)} of the full law")
     c = float(maugis_parameter_of_mu(1.0))  # lambda = c mu^(2/3)
     top = ax.secondary_xaxis(
         "top",

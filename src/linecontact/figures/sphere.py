@@ -67,7 +67,7 @@ from ..closed_forms.sphere import (
 )
 from ..sphere import cos_alpha, sphere_load_curve, sphere_models
 from ..sphere.models import DMT_BELOW, JKR_ABOVE
-from ._style import _PO_KW, Job, Margins, Run, _colors, _legends, _mpl, _new_axes
+from ._style import _PO_KW, Job, Margins, Run, _colors, _legends, _mpl, _new_axes, side_legend
 
 __all__ = [
     "ALPHA_LAMBDAS",
@@ -338,17 +338,7 @@ def adhesion_map_figure(run: Run | None = None, *, tol: float = TOL):
     labels.append(
         f"Johnson-Greenwood:\nDMT below $\\lambda$ = {DMT_BELOW:g},\nJKR above {JKR_ABOVE:g}"
     )
-    ax.legend(
-        handles,
-        labels,
-        title=f"error in $a$ within {_pct(tol)}",
-        loc="upper left",
-        bbox_to_anchor=(1.02, 1.0),
-        fontsize=8.5,
-        title_fontsize=9,
-        frameon=False,
-        borderaxespad=0.0,
-    )
+    side_legend(ax, handles, labels, f"error in $a$ within {_pct(tol)}")
     c = LAMBDA_OVER_TABOR
     top = ax.secondary_xaxis("top", functions=(lambda v: v / c, lambda u: c * u))
     top.set_xlabel(r"Tabor's $\mu_T$ (matched Lennard-Jones law) $= \lambda/1.157$", fontsize=10)
