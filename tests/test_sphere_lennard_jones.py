@@ -33,6 +33,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from linecontact._threads import on_one_blas_thread
 from linecontact.errors import ConvergenceError, ParameterError
@@ -226,6 +228,22 @@ def test_the_limit_forms_constants_are_the_fit_to_the_solver():
     slope, intercept = np.polyfit(np.log(mus), np.log(d), 1)
     assert -slope == pytest.approx(lj._P, rel=1e-5)
     assert math.exp(intercept) == pytest.approx(lj._C, rel=1e-5)
+
+
+@settings(max_examples=12, deadline=None, derandomize=True)
+@given(st.floats(min_value=-3.0, max_value=6.0), st.floats(min_value=1.001, max_value=1.5))
+def test_the_pull_off_at_every_tabor_parameter_is_bounded_and_monotone(log_mu, ratio):
+    # the whole domain, both methods: between the rigid sphere's -2 and JKR's -1.5, with
+    # a small honest estimate, and less tensile as mu grows (a second solve at a larger mu)
+    mu = 10.0**log_mu
+    a, b = sphere_lj_pull_off(mu), sphere_lj_pull_off(mu * ratio)
+    for p in (a, b):
+        assert -2.0 - 1e-6 < p.F_pulloff_over_piwR < -1.5
+        assert p.converged and 0 < p.error_estimate < 1e-4 + 1.5 * lj._C * p.tabor_parameter**-lj._P
+        assert p.method == (
+            "limit" if p.tabor_parameter > MU_SELF_CONSISTENT else "self-consistent"
+        )
+    assert b.F_pulloff_over_piwR > a.F_pulloff_over_piwR - 3 * (a.error_estimate + b.error_estimate)
 
 
 # ---------------------------------------------------------------------------------------
