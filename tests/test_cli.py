@@ -500,3 +500,20 @@ def test_pulloff_law_lennard_jones_si_json():
     )
     assert bad.returncode == 2 and bad.stderr.count("error:") == 1
     assert "Traceback" not in bad.stderr and "--sigma0-over-E" in bad.stderr
+
+
+@pytest.mark.parametrize(
+    ("argv", "said"),
+    [
+        (["pulloff", "--foo", "1"], "linecontact pulloff: error: unrecognized arguments: --foo 1"),
+        (["pulloff", "--body", "sphere", "--num", "3"], "linecontact pulloff: error: unrecognized"),
+        (["--foo"], "linecontact: error: unrecognized arguments: --foo"),
+    ],
+)
+def test_an_unknown_flag_is_named_by_its_command(capsys, argv, said):
+    # found by fuzzing: every unknown flag was said by the top parser, whatever the command
+    with pytest.raises(SystemExit) as exc:
+        main(argv)
+    assert exc.value.code == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err[-1].startswith(said)

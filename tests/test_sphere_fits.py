@@ -308,3 +308,34 @@ def test_bad_input_is_refused_naming_the_parameter(call, name, match):
         call()
     assert err.value.parameter == name
     assert name in str(err.value)
+
+
+# ---------------------------------------------------------------------------------------
+# found by fuzzing (a second hand): wrong units said, not a scipy error or a silent bound
+
+
+@pytest.mark.parametrize(("F", "R"), [(-11.96, 20e-9), (-1.196e-8, 20.0), (-1.196e-17, 20e-9)])
+def test_which_model_refuses_a_pull_off_no_work_of_adhesion_gives(F, R):
+    with pytest.raises(ParameterError, match=r"check the units \(N, m, Pa\)") as err:
+        sphere_which_model(F, R, E, equilibrium_spacing=Z0, max_load=50e-9)
+    assert err.value.parameter == "pull_off_force"
+
+
+def test_which_model_takes_one_largest_load():
+    with pytest.raises(ParameterError, match="max_load must be a single number"):
+        sphere_which_model(-1.2e-8, 20e-9, E, equilibrium_spacing=Z0, max_load=[5e-8, 6e-8])
+
+
+def test_radii_in_nanometres_are_refused_naming_the_units():
+    F = sf._pull_offs(RADII, E, W, Z0)
+    with pytest.raises(ParameterError, match=r"check the units \(N, m, Pa\)"):
+        sphere_fit_pull_off(np.asarray(RADII) * 1e9, F, E)
+
+
+def test_two_radii_in_one_limit_give_an_interval_spanning_both_readings():
+    R = np.geomspace(5e-9, 2e-6, 2)
+    F = sf._pull_offs(R, 1e9, 0.1, 1e-10)  # DMT-like at the fit: lambda 0.005 to 0.04
+    fit = sphere_fit_pull_off(R, F, 1e9, bootstrap=0)
+    assert not fit.identifiable
+    lo, hi = fit.work_of_adhesion_ci95
+    assert lo <= 0.1 <= hi and hi / lo == pytest.approx(4 / 3, rel=1e-9)

@@ -91,6 +91,8 @@ def test_the_groups_give_the_nondimensional_solvers_numbers(capsys):
           "--law", "lennard-jones", "--num", "5"], "--num"),
         (["curve", "--body", "sphere", *SI, "--law", "lennard-jones", "--a-max", "1e-8"],
          "--a-max"),
+        (["curve", "--body", "sphere", "--R-over-h", "1e6", "--sigma0-over-E", "0.5",
+          "--law", "lennard-jones"], "--law"),  # the sphere's range, not the wire's 400
         (["curve", "--body", "sphere", *SI, "--F-max", "1e-9"], "--F-max"),
         (["pulloff", "--body", "sphere", *SI, "--cross-section", "hexagon"], "--cross-section"),
         (["pulloff", "--body", "sphere", *SI, "--corner-radius", "1e-9"], "--corner-radius"),
@@ -147,6 +149,13 @@ def test_python_refuses_a_wires_problem_and_another_law_naming_the_pair():
         lj.load_curve(max_load=-1e-9)
     with pytest.raises(ValueError, match="max_load is the Lennard-Jones curve's end"):
         tip.load_curve(max_load=1e-9)
+    with pytest.raises(ValueError, match=r"max_load must be one number \[N\]"):
+        lj.load_curve(max_load=np.array([1e-9]))
+    with pytest.raises(ValueError, match="under it a sphere's problems are pull_off, load_curve"):
+        lj.contact(load=0.0)
+    probe = lc.Sphere.from_modulus(1e-3, 1e9, adhesion=lc.LennardJones(1.0, 3e-10))
+    with pytest.raises(ValueError, match=r"over 50, .* or a radius below 3\.38e-06 m"):
+        probe.load_curve()  # Tabor's parameter 333, said in SI terms with what to do
     with pytest.raises(ValueError, match="give exactly one of load"):
         tip.contact()
     with pytest.raises(lc.NoEquilibriumError, match=r"load = -1e-06 N is below the pull-off"):
@@ -232,6 +241,15 @@ def test_the_lennard_jones_spheres_curve_is_one_curve_in_python_and_the_cli(caps
     )
     assert doc["parameters"]["F_pulloff_N"] == pytest.approx(default.pull_off_force, rel=ULP)
     assert doc["parameters"]["tabor_parameter"] == pytest.approx(lj.tabor_parameter, rel=ULP)
+
+
+def test_the_curves_refusal_says_a_change_that_works(capsys):
+    argv = ["curve", "--body", "sphere", "--law", "lennard-jones", "--R-over-h", "1e6"]
+    assert main([*argv, "--sigma0-over-E", "0.5"]) == 2
+    err = capsys.readouterr().err
+    assert "over 50" in err and "400" not in err
+    below = float(err.split("--sigma0-over-E below ")[1].split(",")[0])
+    assert main([*argv, "--sigma0-over-E", str(0.999 * below), "--json"]) == 0  # it works
 
 
 def test_a_sweep_of_the_lennard_jones_pull_off_gives_pythons_numbers():

@@ -299,7 +299,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         words = list(argv) if argv is not None else sys.argv[1:]
         parser = build_parser(words)
-        args = parser.parse_args(words)
+        args, extra = parser.parse_known_args(words)
+        if extra:  # said by the command's own parser: "linecontact pulloff: error: ..."
+            command = getattr(args, "command", None)
+            said_by = args._subparsers.choices[command] if command else parser
+            said_by.error(f"unrecognized arguments: {' '.join(extra)}")
     except KeyboardInterrupt:
         print("linecontact: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED

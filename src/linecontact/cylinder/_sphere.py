@@ -155,7 +155,7 @@ class Sphere(Body):
     Build it as a wire is built: :meth:`from_modulus`, :meth:`from_materials` or
     :meth:`from_presets`, the adhesion as ``(sigma0, h)``, ``(w, z0)`` or a law value. Its
     problems are :meth:`contact`, :meth:`pull_off` and :meth:`load_curve` under the Dugdale
-    law; forces in N.
+    law, :meth:`pull_off` and :meth:`load_curve` under the Lennard-Jones law; forces in N.
 
     Examples
     --------
@@ -178,16 +178,19 @@ class Sphere(Body):
         if name in Cylinder.WRITTEN:
             raise AttributeError(
                 f"{name} is not written for a sphere: its problems are "
-                f"{', '.join(self.WRITTEN)} (under the Dugdale law); {name} is a wire's "
+                f"{', '.join(self.WRITTEN)} (the Lennard-Jones law's: pull_off, load_curve); "
+                f"{name} is a wire's "
                 "(Cylinder)"
             )
         raise AttributeError(f"'Sphere' object has no attribute {name!r}")
 
     def _written(self, problem: str) -> None:
         if not isinstance(self.adhesion, self.WRITTEN[problem]):
+            under = [p for p, laws in self.WRITTEN.items() if isinstance(self.adhesion, laws)]
             raise ValueError(
                 f"{problem} is not written for a sphere under the {self.adhesion.name} law "
-                f"(adhesion={self.adhesion!r}): the sphere's problems are the Dugdale law's"
+                f"(adhesion={self.adhesion!r}): under it a sphere's problems are "
+                f"{', '.join(under)}; {problem} is the Dugdale law's"
             )
 
     # groups ---
@@ -369,12 +372,26 @@ class Sphere(Body):
                 "max_radius, num and num_noncontact are the Dugdale curve's: the Lennard-Jones "
                 "sphere's curve ends at max_load [N], its points where its states fall"
             )
+        mu = self.tabor_parameter
+        if mu > _lj.MU_SELF_CONSISTENT:
+            q = _lj.MU_SELF_CONSISTENT / mu  # Tabor's parameter goes as R^(1/3)
+            raise ValueError(
+                f"Tabor's parameter (R w^2/(E^2 z0^3))^(1/3) of this sphere is {mu:.4g} "
+                f"(radius={self.radius!r} m, modulus={self.modulus!r} Pa, "
+                f"adhesion={self.adhesion!r}), over {_lj.MU_SELF_CONSISTENT:g}, the largest the "
+                "Lennard-Jones sphere's curve is solved for (its pull-off is given at every "
+                f"value): use the Dugdale law, or a radius below {self.radius * q**3:.3g} m"
+            )
         unit = np.pi * self.work_of_adhesion * self.radius  # the force unit pi w R [N]
         F_max = 1.0
         if max_load is not None:
+            if np.ndim(max_load) != 0:
+                raise ParameterError(
+                    "max_load", f"max_load must be one number [N], got {max_load!r}"
+                )
             _domain.check_si("max_load", max_load, unit, "F_max_over_piwR", "N")
             F_max = float(max_load) / unit
-        c = _lj.sphere_lj_curve(self.tabor_parameter, F_max=F_max)
+        c = _lj.sphere_lj_curve(mu, F_max=F_max)
         z0 = _S_LJ * self.adhesion_range
         return SphereLJCurveSI(
             load=c.F_over_piwR * unit,

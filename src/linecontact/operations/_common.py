@@ -575,7 +575,11 @@ def groups(args: Any) -> tuple[float, float, Cylinder | None]:
             raise ParameterError(
                 "--R-over-h", "give --R-over-h and --sigma0-over-E (or SI inputs with --radius)"
             )
-        if getattr(args, "law", None) == "lennard-jones" and args.command != "pulloff":
+        if (
+            getattr(args, "law", None) == "lennard-jones"
+            and args.command != "pulloff"
+            and not is_sphere(args)  # a sphere's own range is said by its operation
+        ):
             _check_lennard_jones_groups(args.R_over_h, args.sigma0_over_E)
         return args.R_over_h, args.sigma0_over_E, None
     cyl = cylinder(args)

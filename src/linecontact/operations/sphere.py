@@ -101,7 +101,7 @@ def pulloff(args: Inputs, rho: float, s: float, body: Any) -> Table:
 
 
 def _pulloff_lj(args: Inputs, rho: float, s: float, body: Any) -> Table:
-    """The Lennard-Jones sphere's pull-off (self-consistent up to Tabor's parameter 20)."""
+    """The Lennard-Jones sphere's pull-off (self-consistent up to Tabor's parameter 50)."""
     from ..sphere import lennard_jones as _lj
 
     checked(R_over_h=rho, sigma0_over_E=s)  # the domain of the groups, as the Dugdale law's
@@ -120,8 +120,8 @@ def _pulloff_lj(args: Inputs, rho: float, s: float, body: Any) -> Table:
         ["F_pulloff_N"],
         (rho, s, body),
         "pull-off of a sphere under the Lennard-Jones law (self-consistent to Tabor's "
-        "parameter 20, Greenwood 1997, beyond it the JKR limit corrected; load control; "
-        "F/(pi w R): -2 rigid, -1.5 JKR)",
+        f"parameter {_lj.MU_SELF_CONSISTENT:g}, Greenwood 1997, beyond it the JKR limit "
+        "corrected; load control; F/(pi w R): -2 rigid, -1.5 JKR)",
         ["F_pulloff_over_piwR", "error_estimate", "maugis_parameter", "method"],
         drop=("F_coarse", "F_fine", "converged"),
     )
@@ -150,12 +150,18 @@ def _curve_lj(args: Inputs, rho: float, s: float, body: Any) -> Table:
         )
     mu = float(sphere_tabor_parameter(rho, s))
     if mu > _lj.MU_SELF_CONSISTENT:
+        q = _lj.MU_SELF_CONSISTENT / mu  # Tabor's parameter goes as R^(1/3) (sigma0/E)^(2/3)
+        other = (
+            f"--sigma0-over-E below {s * q**1.5:.3g}, or --R-over-h below {rho * q**3:.3g}"
+            if body is None
+            else f"a --radius below {q**3:.3g} times this one"
+        )
         raise ParameterError(
             "--law",
             f"--law lennard-jones: Tabor's parameter (R w^2/(E^2 z0^3))^(1/3) of this sphere "
             f"is {mu:.4g}, over {_lj.MU_SELF_CONSISTENT:g}, the largest the Lennard-Jones "
             "sphere's curve is solved for (its pull-off is given at every value): use --law "
-            "dugdale",
+            f"dugdale, or {other}",
         )
     si = None if body is None else made(args, "result", body.load_curve)
     c = _lj.sphere_lj_curve(mu) if si is None else si.nondimensional

@@ -159,7 +159,7 @@ class _Grading:
 
 def _element(mu: float, m: float) -> float:
     r"""The element at the edge: :math:`\min(0.05, 0.12\,\mu_T^{-3/2})/m`."""
-    edge = _H_EDGE * mu**-1.5 if mu > 0 else math.inf
+    edge = _H_EDGE * mu**-1.5 if mu > 1e-100 else math.inf  # rigid to rounding below
     return min(_H, edge) / m
 
 

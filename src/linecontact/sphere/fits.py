@@ -465,7 +465,16 @@ def sphere_fit_pull_off(
     one = _one(rows, F.size)
     # w between the pull-off's DMT (2 pi w R) and JKR (1.5 pi w R) values: their middle
     w0 = float(np.median(-F / (1.75 * np.pi * R)))
-    tries = [_solve(one, Fn, sig, p0, lo, hi) for p0 in _start(w0, Fn, rows, sig, z_fixed)]
+    try:
+        tries = [_solve(one, Fn, sig, p0, lo, hi) for p0 in _start(w0, Fn, rows, sig, z_fixed)]
+    except ValueError as err:  # the model out of its domain along the way (not finite)
+        if isinstance(err, ParameterError):
+            raise
+        raise ParameterError(
+            "pull_off_force",
+            "no sphere in the search box (w in [1e-8, 1e3] J/m^2, z0 in [1e-12, 1e-7] m) gives "
+            "pull-offs of this size at these radii: check the units (N, m, Pa)",
+        ) from None
     fit = min(tries, key=lambda t: t.cost)
     p = fit.x
 
@@ -532,6 +541,10 @@ def sphere_fit_pull_off(
         z_lin = SPACING_BOUNDS
     if one_limit:  # the same data at any P(lambda) in [-2, -1.5]: w = w_fit P_fit / P
         bar = float(np.mean(model * fs / (np.pi * w * R)))  # the fit's P(lambda), < 0
+        # without scatter to size them (no sd, no degree of freedom) the intervals are w's
+        # readings alone
+        w_ci = w_ci if np.all(np.isfinite(w_ci)) else (w, w)
+        w_lin = w_lin if np.all(np.isfinite(w_lin)) else (w, w)
         w_ci = (w_ci[0] * -bar / 2, w_ci[1] * -bar / 1.5)
         w_lin = (w_lin[0] * -bar / 2, w_lin[1] * -bar / 1.5)
     return SphereAdhesionFit(
@@ -650,8 +663,16 @@ def sphere_which_model(
     R = _number("radius", radius, "m")
     E = _number("modulus", modulus, "Pa")
     z0 = _number("equilibrium_spacing", equilibrium_spacing, "m")
-    load = float(check_array("max_load", max_load, low=-np.inf))
-    w = sphere_fit_pull_off([R], [-F], E, equilibrium_spacing=z0, bootstrap=0).work_of_adhesion
+    load = _number("max_load", max_load, "N", low=-np.inf)
+    fit = sphere_fit_pull_off([R], [-F], E, equilibrium_spacing=z0, bootstrap=0)
+    w = fit.work_of_adhesion
+    if abs(float(fit.residuals[0])) > 1e-9 * F:  # the search box's end: no w gives it
+        raise ParameterError(
+            "pull_off_force",
+            f"no work of adhesion in [1e-8, 1e3] J/m^2 gives a pull-off of {-F!r} N for a "
+            f"sphere of radius {R!r} m, modulus {E!r} Pa and range {z0!r} m: check the units "
+            "(N, m, Pa)",
+        )
     rho, s, h = _groups(R, E, w, z0)
     if load < -F:
         raise ParameterError(

@@ -102,6 +102,7 @@ from ._lj_discrete import (
 )
 
 __all__ = [
+    "MU_LARGEST",
     "MU_SELF_CONSISTENT",
     "SphereLJCurve",
     "SphereLJPullOff",
@@ -109,6 +110,9 @@ __all__ = [
     "sphere_lj_pull_off",
 ]
 
+#: The largest Tabor parameter taken (beyond, JKR's -1.5 to far below rounding; the state's
+#: numbers would overflow).
+MU_LARGEST = 1e100
 #: The largest Tabor parameter solved self-consistently; beyond, the pull-off is the JKR
 #: limit with a fitted correction (:func:`sphere_lj_pull_off`) and the curve is refused.
 MU_SELF_CONSISTENT = 50.0
@@ -271,28 +275,27 @@ def _far(mu: float, F_max: float) -> float:
     return max(_FAR_END, 4.0 * (1.5 * a3 ** (1.0 / 3.0) + 2.0))
 
 
-def _check_mu(mu, hi: float = math.inf) -> float:
-    """Tabor's parameter, a finite number in ``[0, hi]``."""
-    span = f"[0, {hi:g}]" if math.isfinite(hi) else "[0, inf) (finite)"
+def _number(name: str, value, lo: float, hi: float) -> float:
+    """A real number (not a bool or a string) in ``[lo, hi]``, or a ParameterError naming it."""
+    span = f"[{lo:g}, {hi:g}]"
     try:
-        x = float(mu)
+        if isinstance(value, (bool, str, bytes)):
+            raise TypeError
+        x = float(value)
     except (TypeError, ValueError):
-        raise ParameterError(
-            "tabor_parameter", f"tabor_parameter must be a number in {span}, got {mu!r}"
-        ) from None
-    if not (0.0 <= x <= hi) or not math.isfinite(x):
-        raise ParameterError("tabor_parameter", f"tabor_parameter must lie in {span}, got {mu!r}")
-    return x
+        raise ParameterError(name, f"{name} must be a number in {span}, got {value!r}") from None
+    if not (lo <= x <= hi):
+        raise ParameterError(name, f"{name} must lie in {span}, got {value!r}")
+    return x + 0.0  # -0.0 as 0.0
+
+
+def _check_mu(mu, hi: float = MU_LARGEST) -> float:
+    """Tabor's parameter, a number in ``[0, hi]``."""
+    return _number("tabor_parameter", mu, 0.0, hi)
 
 
 def _check_m(m) -> float:
-    try:
-        x = float(m)
-    except (TypeError, ValueError):
-        raise ParameterError("m", f"m must be a number in [0.25, 16], got {m!r}") from None
-    if not (0.25 <= x <= 16.0):
-        raise ParameterError("m", f"m must be a number in [0.25, 16], got {m!r}")
-    return x
+    return _number("m", m, 1.0, 16.0)
 
 
 # ---------------------------------------------------------------------------------------
@@ -520,10 +523,11 @@ def sphere_lj_pull_off(tabor_parameter: float, *, m: float = 1.0) -> SphereLJPul
     Parameters
     ----------
     tabor_parameter : float
-        Tabor's :math:`\mu_T = (R w^2/(E^2 z_0^3))^{1/3}` [-], finite and at least 0 (0: the
-        rigid sphere).
+        Tabor's :math:`\mu_T = (R w^2/(E^2 z_0^3))^{1/3}` [-], in ``[0, MU_LARGEST]`` (0: the
+        rigid sphere; :data:`MU_LARGEST` is :math:`10^{100}`).
     m : float, optional
-        The resolution: the rings' width over the default's, inverted, in ``[0.25, 16]``.
+        The resolution: the rings' width over the default's, inverted, in ``[1, 16]``
+        (coarser rings do not resolve the edge of the contact at large :math:`\mu_T`).
 
     Returns
     -------
@@ -599,10 +603,10 @@ def _self_consistent(mu: float, m: float = 1.0) -> SphereLJPullOff:
     F0, F1 = lo.F, hi.F
     return SphereLJPullOff(
         tabor_parameter=mu,
-        F_pulloff_over_piwR=F1 + (F1 - F0) / 3.0,
-        error_estimate=abs(F1 - F0) / 3.0,
-        F_coarse=F0,
-        F_fine=F1,
+        F_pulloff_over_piwR=float(F1 + (F1 - F0) / 3.0),
+        error_estimate=float(abs(F1 - F0) / 3.0),
+        F_coarse=float(F0),
+        F_fine=float(F1),
         central_gap_over_z0=hi.central_gap,
         approach_over_z0=hi.delta,
         contact_radius=hi.contact_radius,
@@ -617,6 +621,31 @@ def _lambda(mu: float) -> float:
     from ..closed_forms.sphere import LAMBDA_OVER_TABOR
 
     return LAMBDA_OVER_TABOR * mu
+
+
+def _ended(path: _Path, states: list[_State], F_end: float) -> list[_State]:
+    """The curve ended at its first state past the pull-off with a load of ``F_end`` or more.
+
+    Near a stiff sphere's repulsive wall one step in the edge can take the load from below
+    ``F_end`` to orders of magnitude above it: that state is moved back, by bisection in
+    the edge, until its load is at most ``2 F_end + 1``.
+    """
+    i = int(np.argmin([s.F for s in states]))
+    j = next(k for k in range(i + 1, len(states)) if states[k].F >= F_end)
+    lo, hi = states[j - 1], states[j]
+    top = 2.0 * F_end + 1.0
+    for _ in range(60):
+        if hi.F <= top:
+            break
+        mid = path.solve(0.5 * (lo.tau + hi.tau))
+        if mid is None:
+            break
+        if mid.F >= F_end:
+            hi = mid
+        else:
+            lo = mid
+    kept = states[:j] + ([lo] if lo is not states[j - 1] else [])
+    return [*kept, hi]
 
 
 def _over_neighbours(e: NDArray) -> NDArray:
@@ -673,6 +702,7 @@ def sphere_lj_curve(tabor_parameter: float, *, F_max: float = 1.0, m: float = 1.
     path = _Path(mu, m, _far(mu, F_end), estimate=True)
     h = _element(mu, m)
     states = path.climb(path.far(), lambda st: _past_minimum(st, 0.5) and st[-1].F >= F_end, h)
+    states = _ended(path, states, F_end)
     F = np.array([s.F for s in states])
     i_po = _lowest(mu, states)
     po = _refined(path, states, i_po)[0]
