@@ -279,3 +279,12 @@ def test_a_sweep_of_the_contact_and_the_curve_gives_pythons_numbers():
         c = tip.load_curve(num=10, num_noncontact=3)
         F = curve["F_N"].sel(radius=R).values
         assert F[: c.load.size].tolist() == pytest.approx(c.load.tolist(), rel=ULP)
+
+
+def test_a_spheres_width_warnings_speak_of_a_sphere(capsys):
+    # found by fuzzing: the wire's words (half-width, half-plane, cylinder) for a sphere
+    tiny = ["--radius", "1e-9", "--modulus", "1e12", "--work-of-adhesion", "1e-3", "--z0", "1e-9"]
+    assert main(["curve", "--body", "sphere", "--law", "lennard-jones", *tiny]) == 0
+    err = capsys.readouterr().err
+    assert "the contact radius" in err and "half-space theory" in err
+    assert "half-width" not in err and "cylinder" not in err

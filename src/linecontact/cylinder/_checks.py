@@ -252,7 +252,11 @@ def _small_strain_in_si() -> Iterator[None]:
 
 
 def _warn_small_strain(
-    a: ArrayLike, radius: ArrayLike, what: str = "the contact half-width", stacklevel: int = 3
+    a: ArrayLike,
+    radius: ArrayLike,
+    what: str = "the contact half-width",
+    stacklevel: int = 3,
+    body: str = "cylinder",
 ) -> None:
     """Warn (ModelValidityWarning) for contact half-widths [m] beyond the small-strain range."""
     v, Rv = (np.reshape(x, -1) for x in np.broadcast_arrays(np.asarray(a, float), radius))
@@ -262,7 +266,8 @@ def _warn_small_strain(
         i = int(np.argmax(np.where(wide, v / Rv, -np.inf)))  # the widest, as the solvers say
         warnings.warn(
             f"{what} {float(v[i]):.3g} m is {float(v[i] / Rv[i]):.3g} times the radius, beyond "
-            f"the small-strain range of the half-plane theory (at most {SMALL_STRAIN:g} times "
+            f"the small-strain range of the {'half-space' if body == 'sphere' else 'half-plane'} "
+            f"theory (at most {SMALL_STRAIN:g} times "
             f"the radius, a strain of {SMALL_STRAIN / 2:g}): the results are those of linear "
             "elasticity",
             ModelValidityWarning,
@@ -283,6 +288,7 @@ def _warn_widths(
     what: str = "the contact half-width",
     why: str = "",
     stacklevel=3,
+    body: str = "cylinder",
 ) -> None:
     """Warn for contact half-widths [m] that are no physical width: below WIDTH_MIN or above R.
 
@@ -297,7 +303,7 @@ def _warn_widths(
         tiny = (v > 0) & (v < WIDTH_MIN)
         wide = v > Rv
     if not np.any(wide):
-        _warn_small_strain(v, Rv, what, stacklevel + 1)
+        _warn_small_strain(v, Rv, what, stacklevel + 1, body)
     if np.any(tiny) and not why:
         x = float(v[np.flatnonzero(tiny)[0]])
         warnings.warn(
@@ -312,7 +318,7 @@ def _warn_widths(
         x = float(v[i])
         warnings.warn(
             f"{what} {x:.3g} m is above the radius {float(Rv[i]):g} m: the contact is wider than "
-            "the cylinder (an input in the wrong units? linecontact takes SI units)",
+            f"the {body} (an input in the wrong units? linecontact takes SI units)",
             UnitsWarning,
             stacklevel=stacklevel,
         )

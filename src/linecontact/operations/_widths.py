@@ -30,7 +30,9 @@ def check_widths(table: Table) -> None:
     if table.parameters.get("cross_section", "round") != "round":
         return  # a polygon's contact lies on its facet: a/R says nothing of the strain
     zero = "mechanism" in table.columns and np.any(table.columns["mechanism"] == "zero-width")
+    sphere = table.parameters.get("body") == "sphere"
     for name, what in _WIDTHS.items():
         if name in table.columns:
             why = _ZERO_WIDTH if zero and name == "a_at_pulloff_m" else ""
-            _warn_widths(table.columns[name], R, what, why)
+            said = what.replace("half-width", "radius") if sphere else what
+            _warn_widths(table.columns[name], R, said, why, body="sphere" if sphere else "cylinder")
