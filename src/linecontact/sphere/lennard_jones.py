@@ -395,7 +395,7 @@ class SphereLJCurve(Result):
         The load-control jump-in where the curve is S-shaped (the last local maximum of the
         load before the pull-off) [:math:`\pi w R`]; NaN where there is none.
     n_rings : int
-        Rings of the mesh.
+        Rings of the last state's mesh (each state's is graded about its own edge).
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("tabor_parameter",)
@@ -704,6 +704,7 @@ def sphere_lj_curve(tabor_parameter: float, *, F_max: float = 1.0, m: float = 1.
     states = path.climb(path.far(), lambda st: _past_minimum(st, 0.5) and st[-1].F >= F_end, h)
     states = _ended(path, states, F_end)
     F = np.array([s.F for s in states])
+    path.estimate = False  # the states of the extrema's refinement are not the curve's
     i_po = _lowest(mu, states)
     po = _refined(path, states, i_po)[0]
     jump = math.nan
