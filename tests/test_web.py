@@ -171,6 +171,13 @@ def test_post_takes_json_and_forms(client):
         ("/api/v1/fit-adhesion?data=/etc/passwd", "data"),
         ("/api/v1/normal?R_over_h=100&sigma0_over_E=0.01&F_over_Eh=1 -o /tmp/x.json", "F_over_Eh"),
         ("/api/v1/normal?R_over_h=100&sigma0_over_E=0.01&F_over_Eh=1,--output,/tmp/x", "F_over_Eh"),
+        # found by fuzzing: the SI inputs' domain said without a field (the likeliest one now)
+        (
+            "/api/v1/pulloff?body=sphere&law=lennard-jones&radius=1e-9&modulus=1e6"
+            "&work_of_adhesion=10&z0=1e-11",
+            "modulus",
+        ),
+        ("/api/v1/pulloff?radius=1e-6&modulus=1e10&work_of_adhesion=0.1&z0=10", "z0"),
     ],
 )
 def test_bad_input_is_422_naming_the_field(client, url, parameter):

@@ -13,7 +13,7 @@ from numpy.typing import ArrayLike, NDArray
 from .. import closed_forms as _cf
 from .. import domain as _domain
 from .._validation import check_array
-from ..errors import ModelValidityWarning, UnitsWarning
+from ..errors import ModelValidityWarning, ParameterError, UnitsWarning
 from ..materials import MAUGIS_STRENGTH
 
 #: Plausible SI values: (low, high, unit, what a value outside suggests). A value outside
@@ -176,10 +176,12 @@ def _check_cylinder_si(
     if np.any(bad):
         r, z = _first(bad, R, length)
         guess = _which(l_name, *cands_l)
-        raise ValueError(
+        raise _refused(
+            guess,
+            modulus_name,
             f"radius / {l_name} must be in [{lo / conv:.3g}, {hi / conv:.3g}] (the domain of "
             f"the solvers), got radius={r!r} m, {l_name}={z!r} m; "
-            f"{_units_question(guess, modulus_name, 'm')}"
+            f"{_units_question(guess, modulus_name, 'm')}",
         )
     if stress is None or modulus is None or a_val is None:
         return
@@ -204,10 +206,12 @@ def _check_cylinder_si(
             if by_work
             else f"{a_name}={av!r} Pa"
         )
-        raise ValueError(
+        raise _refused(
+            guess,
+            modulus_name,
             f"{what} must be at most {s_hi:g} times the {modulus_name.replace('_', ' ')}, "
             f"{s_hi * ev:.3g} Pa here, got {modulus_name}={ev!r} Pa (the domain of the "
-            f"solvers); {_units_question(guess, modulus_name, unit)}"
+            f"solvers); {_units_question(guess, modulus_name, unit)}",
         )
     # kappa = (4/pi) (sigma0/E) sqrt(2 R/h), the single group of the Maugis-Dugdale contact
     with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
@@ -216,12 +220,33 @@ def _check_cylinder_si(
     if np.any(bad):
         k, r, ev, av, zv = _first(bad, kap, R, E, a_val, length)
         guess = _which(modulus_name, *cands_s, ("radius", R, "radius"))
-        raise ValueError(
+        raise _refused(
+            guess,
+            modulus_name,
             f"the adhesion of this cylinder is beyond the range of the solvers: kappa = "
             f"(4/pi) sigma0 sqrt(2 R) / (E sqrt(h)) = {k:.3g} must be at most "
             f"{_cf.KAPPA_MAX:g}, got radius={r!r} m, {modulus_name}={ev!r} Pa, {a_name}="
-            f"{av!r} {unit}, {l_name}={zv!r} m; {_units_question(guess, modulus_name, unit)}"
+            f"{av!r} {unit}, {l_name}={zv!r} m; {_units_question(guess, modulus_name, unit)}",
         )
+
+
+#: The SI inputs an error of :func:`_check_cylinder_si` may name (a ParameterError's name).
+_SI_INPUTS = frozenset(
+    {"radius", "modulus", "work_of_adhesion", "equilibrium_spacing", "cohesive_stress",
+     "adhesion_range"}
+)  # fmt: skip
+
+
+def _refused(guess: str, modulus_name: str, message: str) -> ValueError:
+    """The error for inputs outside the solvers' domain, naming the likeliest culprit.
+
+    A ParameterError where that is one SI input (its field on a page, its flag), else a
+    ValueError (the two moduli of a composite one, say).
+    """
+    for name in (guess, modulus_name):
+        if name in _SI_INPUTS:
+            return ParameterError(name, message)
+    return ValueError(message)
 
 
 def _units_question(guess: str, modulus_name: str, unit: str) -> str:
