@@ -51,6 +51,7 @@ FLOORS = {
         "linecontact.adhesion_map",
         "linecontact.facet",
         "linecontact.sphere",
+        "linecontact.bent_wire",
     ],
     "si": [
         "linecontact.cylinder",
