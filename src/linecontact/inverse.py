@@ -15,6 +15,9 @@ The inverse problems of the SI layer, each with the forward model it inverts:
   Maugis--Dugdale contact at the normal load (or the steady-sliding contact when an adhesion
   hysteresis :math:`\Delta w = w_\text{receding} - w_\text{advancing}` is given), or JKR, DMT or
   Hertz when asked;
+* :func:`shear_strength_from_bent_wire`: :math:`\tau_0 = f/(2a)` with ``f`` fitted to the
+  profile of a bent wire (:func:`linecontact.bent_wire.fit_bent_wire`), its uncertainty and
+  those of the wire and the interface propagated;
 * :func:`sphere_work_of_adhesion_from_pull_off` and :func:`sphere_shear_strength_from_friction`:
   the same for a sphere (an AFM tip; forces in N), from the Maugis--Dugdale sphere
   (:mod:`linecontact.sphere`);
@@ -66,6 +69,7 @@ from .sphere import sphere_pull_off as _sphere_pull_off
 from .uncertainty import Estimate, propagate
 
 if TYPE_CHECKING:
+    from .bent_wire import BentWireFit
     from .domain import TooWideError
 
 __all__ = [
@@ -79,6 +83,7 @@ __all__ = [
     "jkr_pull_off_force",
     "propagate",
     "pull_off_force",
+    "shear_strength_from_bent_wire",
     "shear_strength_from_friction",
     "sphere_shear_strength_from_friction",
     "sphere_work_of_adhesion_from_pull_off",
@@ -540,3 +545,106 @@ def sphere_shear_strength_from_friction(
     a = np.asarray(_sphere_contact_for_load(F / unit, rho, s).a_over_R) * R
     tau = f / (np.pi * a * a)
     return tau.item() if scalar else tau
+
+
+def shear_strength_from_bent_wire(
+    fit: BentWireFit,
+    radius: float,
+    modulus: float,
+    contact_modulus: float,
+    work_of_adhesion: float,
+    equilibrium_spacing: float,
+    *,
+    normal_load: float = 0.0,
+    cross_section: CrossSection | None = None,
+    inner_radius: float = 0.0,
+    radius_sd: float = 0.0,
+    modulus_sd: float = 0.0,
+    contact_modulus_sd: float = 0.0,
+    work_of_adhesion_sd: float = 0.0,
+    equilibrium_spacing_sd: float = 0.0,
+    n_samples: int = 4000,
+    seed: int = 0,
+) -> Estimate:
+    r"""The interfacial shear strength [Pa] of a wire from the friction its bent shape shows.
+
+    :math:`\tau_0 = f/(2a)`: ``f`` the friction per unit length fitted to the wire's
+    profile, with the bending stiffness :math:`EI` of its cross-section
+    (:func:`linecontact.bent_wire.bending_stiffness`); ``a`` the half-width of its contact
+    under the normal load, from adhesion (:func:`shear_strength_from_friction`: the stable
+    Maugis--Dugdale contact, on a facet for a faceted wire). The uncertainties propagate by
+    Monte Carlo (:func:`propagate`): the shape's (the fit's covariance), and those of the
+    radius (in both :math:`EI` and ``a``), the moduli and the adhesion, each independent.
+
+    Parameters
+    ----------
+    fit : BentWireFit
+        The fitted profile.
+    radius : float
+        The wire's radius [m] (a polygon's circumradius; a tube's outer radius).
+    modulus : float
+        The wire's Young's modulus along it [Pa], for :math:`EI`.
+    contact_modulus : float
+        The composite plane-strain modulus of the wire on its substrate [Pa]
+        (:func:`linecontact.composite_modulus`).
+    work_of_adhesion, equilibrium_spacing : float
+        ``w`` [J/m^2], ``z0`` [m].
+    normal_load : float, optional
+        The load pressing the wire on the substrate besides adhesion (its weight) [N/m].
+    cross_section : CrossSection, optional
+        ``Polygon(sides, corner_radius)`` for a faceted wire lying on a facet; round by
+        default.
+    inner_radius : float, optional
+        A tube's inner radius [m] (round only; its contact taken as the round wire's).
+    radius_sd, modulus_sd, contact_modulus_sd, work_of_adhesion_sd, equilibrium_spacing_sd : float
+        Standard uncertainties, in the units of their values.
+    n_samples, seed : int, optional
+        The Monte Carlo's draws and seed.
+
+    Returns
+    -------
+    Estimate
+        ``tau0`` [Pa] with its standard uncertainty and 95 % interval.
+    """
+    from .bent_wire import bending_stiffness
+
+    EI = fit.bending_stiffness
+    rel = fit.friction_per_length_sd_shape / fit.friction_per_length
+    if not (np.isfinite(rel) and fit.friction_per_length > 0):
+        raise ParameterError(
+            "fit",
+            "the fit does not determine the friction (zero, or no finite uncertainty): no "
+            "shear strength follows from it",
+        )
+    shape = dict(cross_section=cross_section) if cross_section is not None else {}
+
+    def tau(shape_factor, radius, modulus, contact_modulus, work_of_adhesion, equilibrium_spacing):
+        ei = bending_stiffness(modulus, radius, inner_radius=inner_radius, **shape)
+        f = fit.friction_per_length * shape_factor * np.asarray(ei) / EI
+        return shear_strength_from_friction(
+            f,
+            normal_load,
+            radius,
+            contact_modulus,
+            work_of_adhesion,
+            equilibrium_spacing,
+            **({"cross_section": cross_section} if cross_section is not None else {}),
+        )
+
+    values = dict(
+        shape_factor=1.0,
+        radius=radius,
+        modulus=modulus,
+        contact_modulus=contact_modulus,
+        work_of_adhesion=work_of_adhesion,
+        equilibrium_spacing=equilibrium_spacing,
+    )
+    sds = dict(
+        shape_factor=rel,
+        radius=radius_sd,
+        modulus=modulus_sd,
+        contact_modulus=contact_modulus_sd,
+        work_of_adhesion=work_of_adhesion_sd,
+        equilibrium_spacing=equilibrium_spacing_sd,
+    )
+    return propagate(tau, values, sds, n_samples=n_samples, seed=seed)

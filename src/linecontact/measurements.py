@@ -1,9 +1,11 @@
 """Reading measurements: CSV files with the units in the header, into SI arrays.
 
-The reader of ``linecontact fit-adhesion --data`` and ``linecontact fit-friction --data``,
-for Python users: :func:`read_measurements` reads the same files the command line reads and
-returns SI arrays (m, N/m) ready for :func:`linecontact.inverse.fit_pull_off` and
-:func:`linecontact.inverse.shear_strength_from_friction`.
+The reader of ``linecontact fit-adhesion --data``, ``linecontact fit-friction --data`` and
+``linecontact fit-bent-wire --data`` (a profile, ``x_nm,y_nm``), for Python users:
+:func:`read_measurements` reads the same files the command line reads and returns SI
+arrays (m, N/m) ready for :func:`linecontact.inverse.fit_pull_off`,
+:func:`linecontact.inverse.shear_strength_from_friction` and
+:func:`linecontact.bent_wire.fit_bent_wire`.
 
 The format: lines starting with ``#`` are comments (and empty lines are skipped); then a
 header and rows of numbers. The header names each column with its unit, ``<quantity>_<unit>``
@@ -41,6 +43,10 @@ KINDS: dict[str, dict[str, tuple[str, bool, bool]]] = {
     "friction": {
         "normal_load": ("force", True, False),
         "friction_force": ("force", True, True),
+    },
+    "profile": {
+        "x": ("length", True, False),
+        "y": ("length", True, False),
     },
 }
 
@@ -268,7 +274,7 @@ def read_columns(
 
 def read_measurements(
     path: str | os.PathLike[str],
-    kind: Literal["pull-off", "friction"] = "pull-off",
+    kind: Literal["pull-off", "friction", "profile"] = "pull-off",
     *,
     length: float | None = None,
     source: str | None = None,
@@ -296,7 +302,8 @@ def read_measurements(
     -------
     dict of ndarray
         One 1-D array per quantity in SI units (``"radius"`` [m], ``"pull_off_force"``
-        [N/m]; or ``"normal_load"``, ``"friction_force"`` [N/m]), ``"pull_off_force_sd"`` or
+        [N/m]; or ``"normal_load"``, ``"friction_force"`` [N/m]; or a bent wire's profile,
+        ``"x"``, ``"y"`` [m], in the file's order), ``"pull_off_force_sd"`` or
         ``"friction_force_sd"`` [N/m] where the file has the uncertainty (absent otherwise:
         :func:`linecontact.inverse.fit_pull_off` then weighs the points equally), and
         ``"line"``: each row's line number in the file.
@@ -345,7 +352,7 @@ def read_measurements(
                 f"{label}, row {int(lines[i])}: the pull-off force is "
                 f"{float(F[i])!r} N/m: pull-off forces are tensile, negative"
             )
-    else:
+    elif kind == "friction":
         f = cols["friction_force"]
         if np.any(f <= 0):
             i = int(np.flatnonzero(f <= 0)[0])

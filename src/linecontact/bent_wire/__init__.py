@@ -6,14 +6,19 @@ package holds the forward models, in the groups of the elastica (lengths over th
 length :math:`l`, the friction over :math:`EI/l^3`):
 
 - :func:`dragged_wire` -- a wire dragged at its midpoint, the kinetic case: each half a
-  cantilever under the uniform dead load of friction, at large deflection.
+  cantilever under the uniform dead load of friction, at large deflection;
+- :func:`fit_bent_wire` -- the friction per unit length from a measured profile, by
+  orthogonal least squares over the whole profile, with its covariance and bootstrap
+  intervals (:mod:`.fit`).
 
-The inversion from a measured profile, the other end conditions and the static case are
-not written yet (``docs/bent-wire.md``).
+The shear strength :math:`\tau_0 = f/(2a)` with the library's contact width is
+:func:`linecontact.inverse.shear_strength_from_bent_wire` (the SI layer); the derivations
+are in ``docs/bent-wire.md``.
 """
 
 from __future__ import annotations
 
 from .elastica import DraggedWire, dragged_wire
+from .fit import BentWireFit, fit_bent_wire
 
-__all__ = ["DraggedWire", "dragged_wire"]
+__all__ = ["BentWireFit", "DraggedWire", "dragged_wire", "fit_bent_wire"]
