@@ -42,11 +42,11 @@ def _half(lam: float) -> object:
     ).sol
 
 
-def profile(lam, n=201, noise=0.0, angle=0.3, shift=(1e-6, -2e-6), rng=None, l=L_HALF):
+def profile(lam, n=201, noise=0.0, angle=0.3, shift=(1e-6, -2e-6), rng=None, half=L_HALF):
     """``n`` points at equal arc lengths from end to end [m], turned, moved and noisy."""
     s = np.linspace(-1.0, 1.0, n)
     z = _half(float(lam))(np.abs(s))
-    x, y = np.sign(s) * z[2] * l, z[3] * l
+    x, y = np.sign(s) * z[2] * half, z[3] * half
     c, sn = np.cos(angle), np.sin(angle)
     X, Y = c * x - sn * y + shift[0], sn * x + c * y + shift[1]
     if noise:
@@ -55,8 +55,8 @@ def profile(lam, n=201, noise=0.0, angle=0.3, shift=(1e-6, -2e-6), rng=None, l=L
     return X, Y
 
 
-def friction(lam, l=L_HALF):
-    return lam * EI / l**3
+def friction(lam, half=L_HALF):
+    return lam * EI / half**3
 
 
 @pytest.mark.parametrize("lam", [0.05, 0.5, 3.0, 15.0, 45.0])

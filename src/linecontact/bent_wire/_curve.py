@@ -106,7 +106,6 @@ class Dragged:
         cg, sg = np.cos(tg), np.sin(tg)
         # (value, derivative) pairs on the grid, the derivative from the equations
         k2 = lam_col * (1.0 - g) * cg  # theta''
-        k3 = -lam_col * cg - lam_col * (1.0 - g) * sg * kg  # theta'''
         tl = th_l @ V.T
         table = {
             "x": (c @ Iv.T, cg),

@@ -11,7 +11,7 @@ half-length :math:`l`, turned by :math:`\phi` and moved by :math:`(x_0, y_0)`:
 Each measured point :math:`d_i` stands for the curve's point :math:`s_i` nearest it (its
 foot, the orthogonal projection: position noise along the curve says nothing of the
 shape), except the first and last, which are the wire's ends, ``s = -1`` and ``s = 1``:
-they fix its length. The parameters :math:`q = (p, l, x_0, y_0, \phi)` minimise the sum of
+they fix its length. The parameters :math:`q = (p, half, x_0, y_0, \phi)` minimise the sum of
 squared distances. Levenberg--Marquardt, with the feet moved by a Newton step at every
 step (variable projection: at a foot the distance's derivative in :math:`q` is the normal
 component of :math:`\partial P/\partial q`), for a batch of data sets at once (the
@@ -44,7 +44,7 @@ _CONVERGED = 1e-7
 class Placed:
     """The state of a batch of fits (rows: data sets)."""
 
-    q: NDArray  # (B, k + 4): shape parameters, l, x0, y0, phi
+    q: NDArray  # (B, k + 4): shape parameters, half, x0, y0, phi
     s: NDArray  # (B, N)
     r: NDArray  # (B, N, 2): the residual vectors d - P (normal ones at free feet)
     J: NDArray  # (B, N, 2, k + 4): dP/dq (normal components at free feet)
@@ -58,14 +58,13 @@ class Placed:
 def _evaluate(
     model: Any, lam_names: tuple[str, ...], q: NDArray, s: NDArray, d: NDArray, ends: NDArray
 ) -> tuple[NDArray, ...]:
-    """Project the free points on the curve of ``q`` (one Newton step from ``s``), then
-    the residuals and the Jacobian there."""
+    """The residuals and the Jacobian at ``q``, the free feet first moved by Newton steps."""
     k = q.shape[1] - 4
     model.solve(q[:, :k])
-    l, o, phi = q[:, k], q[:, k + 1 : k + 3], q[:, k + 3]
+    half, o, phi = q[:, k], q[:, k + 1 : k + 3], q[:, k + 3]
     cph, sph = np.cos(phi)[:, None], np.sin(phi)[:, None]
     # the points in the wire's frame
-    rel = (d - o[:, None, :]) / l[:, None, None]
+    rel = (d - o[:, None, :]) / half[:, None, None]
     px = cph * rel[..., 0] + sph * rel[..., 1]
     py = -sph * rel[..., 0] + cph * rel[..., 1]
     for _ in range(2):
@@ -80,16 +79,16 @@ def _evaluate(
     v = model.at(s, names)
     cx, cy = v["x"], v["y"]
     # back in the data's frame
-    Px = o[:, 0, None] + l[:, None] * (cph * cx - sph * cy)
-    Py = o[:, 1, None] + l[:, None] * (sph * cx + cph * cy)
+    Px = o[:, 0, None] + half[:, None] * (cph * cx - sph * cy)
+    Py = o[:, 1, None] + half[:, None] * (sph * cx + cph * cy)
     th = v["theta"] + phi[:, None]
     normal = np.stack([-np.sin(th), np.cos(th)], axis=-1)
     B, N = s.shape
     J = np.empty((B, N, 2, k + 4))
     for i, p in enumerate(lam_names):
         ax, ay = v[f"x_{p}"], v[f"y_{p}"]
-        J[..., 0, i] = l[:, None] * (cph * ax - sph * ay)
-        J[..., 1, i] = l[:, None] * (sph * ax + cph * ay)
+        J[..., 0, i] = half[:, None] * (cph * ax - sph * ay)
+        J[..., 1, i] = half[:, None] * (sph * ax + cph * ay)
     J[..., 0, k] = cph * cx - sph * cy
     J[..., 1, k] = sph * cx + cph * cy
     J[..., 0, k + 1], J[..., 1, k + 1] = 1.0, 0.0

@@ -273,7 +273,7 @@ def fit_bent_wire(
     --------
     >>> import numpy as np
     >>> from linecontact.bent_wire import dragged_wire
-    >>> EI, l, f = 1e-22, 2.5e-6, 0.012  # N m^2, m, N/m
+    >>> EI, l, f = 7e-19, 2.5e-6, 0.012  # N m^2, m, N/m: a ZnO wire 100 nm across
     >>> w = dragged_wire(f * l**3 / EI)
     >>> x = np.concatenate([-w.x_over_l[::-1], w.x_over_l[1:]]) * l
     >>> y = np.concatenate([w.y_over_l[::-1], w.y_over_l[1:]]) * l
@@ -335,12 +335,12 @@ def fit_bent_wire(
     except np.linalg.LinAlgError:
         cov_n = np.full((5, 5), np.nan)
     lam, lam_sd = float(q[0]), math.sqrt(max(cov_n[0, 0], 0.0))
-    l = float(q[1]) * scale
+    half = float(q[1]) * scale
     g = np.array([1.0, -3.0 * lam / q[1], 0, 0, 0])  # d(lam/l^3)/dq, over 1/l^3 (scaled)
     shape_rel_sd = math.sqrt(max(g @ cov_n @ g, 0.0)) / max(abs(lam), 1e-300)
-    f = abs(lam) * EI / l**3
+    f = abs(lam) * EI / half**3
     rel_sd = math.hypot(shape_rel_sd, EI_sd / EI)
-    f_sd = f * rel_sd if lam != 0 else math.sqrt(max(g @ cov_n @ g, 0.0)) * EI / l**3
+    f_sd = f * rel_sd if lam != 0 else math.sqrt(max(g @ cov_n @ g, 0.0)) * EI / half**3
     from scipy.special import ndtri, stdtrit
 
     quant = float(stdtrit(max(dof, 1), 0.975) if noise is None else ndtri(0.975))
@@ -383,13 +383,13 @@ def fit_bent_wire(
     return BentWireFit(
         friction_per_length=f,
         friction_per_length_sd=f_sd,
-        friction_per_length_sd_shape=math.sqrt(max(g @ cov_n @ g, 0.0)) * EI / l**3,
+        friction_per_length_sd_shape=math.sqrt(max(g @ cov_n @ g, 0.0)) * EI / half**3,
         friction_per_length_ci95=ci,
         friction_per_length_bootstrap_sd=fb_sd,
         friction_per_length_bootstrap_ci95=fb_ci,
         friction_group=abs(lam),
         friction_group_sd=lam_sd,
-        half_length=l,
+        half_length=half,
         half_length_sd=math.sqrt(max(cov[1, 1], 0.0)),
         midpoint=(float(o[0] * scale + centre[0]), float(o[1] * scale + centre[1])),
         axis_angle=math.remainder(phi, 2 * math.pi),
@@ -406,7 +406,7 @@ def fit_bent_wire(
         note="; ".join(notes),
         covariance=cov,
         residuals=resid * scale,
-        arc_length=s * l,
+        arc_length=s * half,
         fitted_x=feet[:, 0] * scale + centre[0],
         fitted_y=feet[:, 1] * scale + centre[1],
         curve_x=dense[:, 0] * scale + centre[0],
@@ -439,10 +439,10 @@ def curve_points(curve: Dragged, q: NDArray, s: NDArray) -> NDArray:
     """The placed curve of the parameters ``q`` at the arc lengths ``s`` (scaled), ``(N, 2)``."""
     curve.solve(q[:1])
     v = curve.at(s[None, :], ("x", "y"))
-    l, o, phi = q[1], q[2:4], q[4]
+    half, o, phi = q[1], q[2:4], q[4]
     c, sn = math.cos(phi), math.sin(phi)
     cx, cy = v["x"][0], v["y"][0]
-    return np.stack([o[0] + l * (c * cx - sn * cy), o[1] + l * (sn * cx + c * cy)], axis=1)
+    return np.stack([o[0] + half * (c * cx - sn * cy), o[1] + half * (sn * cx + c * cy)], axis=1)
 
 
 def _bootstrap(
