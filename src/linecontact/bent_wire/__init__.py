@@ -15,5 +15,7 @@ not written yet (``docs/bent-wire.md``).
 from __future__ import annotations
 
 from .elastica import DraggedWire, dragged_wire
+from .sections import bending_stiffness, second_moment_of_area
 
 __all__ = ["DraggedWire", "dragged_wire"]
+__all__ += ["bending_stiffness", "second_moment_of_area"]
