@@ -16,6 +16,8 @@ from __future__ import annotations
 
 from .elastica import DraggedWire, dragged_wire
 from .sections import bending_stiffness, second_moment_of_area
+from .static import NormalFriction, StaticWire, normal_friction_from_curvature, static_wire
 
 __all__ = ["DraggedWire", "dragged_wire"]
 __all__ += ["bending_stiffness", "second_moment_of_area"]
+__all__ += ["NormalFriction", "StaticWire", "normal_friction_from_curvature", "static_wire"]

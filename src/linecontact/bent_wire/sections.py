@@ -115,7 +115,8 @@ def second_moment_of_area(
     if not isinstance(cross_section, (Round, Polygon)):
         raise ParameterError(
             "cross_section",
-            f"cross_section must be Round() or Polygon(sides, corner_radius), got {cross_section!r}",
+            "cross_section must be Round() or Polygon(sides, corner_radius), got "
+            f"{cross_section!r}",
         )
     ri = check_array("inner_radius", inner_radius, low_inclusive=True)
     if isinstance(cross_section, Polygon):
@@ -176,4 +177,6 @@ def bending_stiffness(
     6.8722e-19
     """
     e = check_array("modulus", modulus)
-    return _out(np.asarray(e * second_moment_of_area(radius, cross_section, inner_radius=inner_radius)))
+    return _out(
+        np.asarray(e * second_moment_of_area(radius, cross_section, inner_radius=inner_radius))
+    )
