@@ -7,6 +7,11 @@ length :math:`l`, the friction over :math:`EI/l^3`):
 
 - :func:`dragged_wire` -- a wire dragged at its midpoint, the kinetic case: each half a
   cantilever under the uniform dead load of friction, at large deflection;
+- :func:`static_wire` -- a wire held at rest by friction normal to it (the static case),
+  the rod integrated from a free end; :func:`normal_friction_from_curvature`, the exact
+  inversion :math:`f_n = EI(\kappa'' + \kappa^3/2)` of a shape;
+- :func:`bending_stiffness` -- :math:`EI` of the cross-section: round, a tube, a rounded
+  regular polygon (:mod:`.sections`);
 - :func:`fit_bent_wire` -- the friction per unit length from a measured profile, by
   orthogonal least squares over the whole profile, with its covariance and bootstrap
   intervals (:mod:`.fit`).
@@ -19,6 +24,20 @@ are in ``docs/bent-wire.md``.
 from __future__ import annotations
 
 from .elastica import DraggedWire, dragged_wire
-from .fit import BentWireFit, fit_bent_wire
+from .fit import MODELS, BentWireFit, fit_bent_wire
+from .sections import bending_stiffness, second_moment_of_area
+from .static import NormalFriction, StaticWire, normal_friction_from_curvature, static_wire
 
-__all__ = ["BentWireFit", "DraggedWire", "dragged_wire", "fit_bent_wire"]
+__all__ = [
+    "MODELS",
+    "BentWireFit",
+    "DraggedWire",
+    "NormalFriction",
+    "StaticWire",
+    "bending_stiffness",
+    "dragged_wire",
+    "fit_bent_wire",
+    "normal_friction_from_curvature",
+    "second_moment_of_area",
+    "static_wire",
+]
