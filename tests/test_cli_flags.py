@@ -26,7 +26,7 @@ SI = (
     "normal, pulloff, curve, slide-init, roll, cycle, history, fit-adhesion, fit-friction, "
     "slide, push"
 )
-GROUPS = {"SI": SI, "data": SI + ", map, materials"}
+GROUPS = {"SI": SI, "data": SI + ", fit-bent-wire, map, materials"}
 
 
 def _commands(cell: str) -> set[str]:

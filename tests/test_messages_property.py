@@ -157,6 +157,13 @@ def bases(tmp) -> dict[str, list[list[str]]]:
     (tmp / "radius-dir").mkdir(exist_ok=True)
     frictions = tmp / "radius-dir" / "x.csv"
     frictions.write_text("normal_load_N_per_m,friction_force_N_per_m\n0.5,0.2\n1.0,0.3\n")
+    # a wire dragged at its midpoint (a small bending: the parabola of a short cantilever)
+    s = np.linspace(-1, 1, 41)
+    profile = tmp / "radius-dir" / "profile.csv"
+    profile.write_text(
+        "x_nm,y_nm\n"
+        + "".join(f"{2500 * v},{-40 * v * v * (6 - 4 * abs(v) + v * v) / 3}\n" for v in s)
+    )
     out = str(tmp / "z0" / "out.json")
     figs = str(tmp / "radius-figs")
     return {
@@ -235,6 +242,20 @@ def bases(tmp) -> dict[str, list[list[str]]]:
              "--half-width-sd", "1e-10", "--samples", "20"],
             ["fit-friction", "--data", str(frictions), "--radius", "50e-9", *PRESETS, *WORK,
              "--samples", "20"],
+        ],
+        "fit-bent-wire": [
+            ["fit-bent-wire", "--data", str(profile), "--radius", "50e-9", "--modulus", "140e9",
+             "--bootstrap", "10"],
+            ["fit-bent-wire", "--data", str(profile), "--radius", "50e-9", "--radius-sd", "1%",
+             "--cylinder-material", "ZnO", "--modulus-sd", "1e9", "--bootstrap", "0", *WORK,
+             "--work-of-adhesion-sd", "0.01", "--z0-sd", "1e-11", "--substrate-material", "SiO2",
+             "--samples", "20", "--noise", "1e-9", "--load", "0.01"],
+            ["fit-bent-wire", "--data", str(profile), "--radius", "50e-9", "--modulus", "140e9",
+             "--cross-section", "hexagon", "--corner-radius", "5e-9", "--bootstrap", "0", *WORK,
+             "--contact-modulus", "50e9", "--samples", "20"],
+            ["fit-bent-wire", "--data", str(profile), "--radius", "50e-9", "--modulus", "140e9",
+             "--inner-radius", "20e-9", "--bootstrap", "0", *WORK, "--nu1", "0.3", "--E2",
+             "70e9", "--nu2", "0.17", "--samples", "20", "--seed", "2"],
         ],
         "slide": [
             ["slide", *SLIDE_SI, "--h1", "1e-9", "--load", "0.05", "--tau0", "5e8", "--length",

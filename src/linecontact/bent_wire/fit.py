@@ -47,6 +47,8 @@ MIN_POINTS = 8
 _BACK = 6.0
 #: The runs test's z below which the residuals are not noise (a chance of 3e-5 for noise).
 _RUNS_Z = -4.0
+#: The intervals' confidence level.
+LEVEL = 0.95
 #: The replicates of the bootstrap, by default.
 BOOTSTRAP = 200
 
@@ -338,12 +340,20 @@ def fit_bent_wire(
     half = float(q[1]) * scale
     g = np.array([1.0, -3.0 * lam / q[1], 0, 0, 0])  # d(lam/l^3)/dq, over 1/l^3 (scaled)
     shape_rel_sd = math.sqrt(max(g @ cov_n @ g, 0.0)) / max(abs(lam), 1e-300)
-    f = abs(lam) * EI / half**3
+    with np.errstate(over="ignore"):  # refused just below
+        f = abs(lam) * EI / half**3
+    if not math.isfinite(f):
+        raise ParameterError(
+            "bending_stiffness",
+            f"bending_stiffness {EI!r} N m^2 over the half-length {half!r} m cubed gives no "
+            "finite friction: are the profile in m and the stiffness in N m^2?",
+        )
     rel_sd = math.hypot(shape_rel_sd, EI_sd / EI)
     f_sd = f * rel_sd if lam != 0 else math.sqrt(max(g @ cov_n @ g, 0.0)) * EI / half**3
     from scipy.special import ndtri, stdtrit
 
-    quant = float(stdtrit(max(dof, 1), 0.975) if noise is None else ndtri(0.975))
+    tail = 0.5 + LEVEL / 2.0
+    quant = float(stdtrit(max(dof, 1), tail) if noise is None else ndtri(tail))
     ci = (max(f - quant * f_sd, 0.0), f + quant * f_sd)
     # the bootstrap over residuals: the fitted profile, residuals drawn again, refitted
     fb_sd, fb_ci, failed = math.nan, (math.nan, math.nan), 0
@@ -354,7 +364,7 @@ def fit_bent_wire(
         fb = fb * EIb / scale**3
         if fb.size >= 2:
             fb_sd = float(np.std(fb, ddof=1))
-            lo_b, hi_b = np.percentile(fb, [2.5, 97.5])
+            lo_b, hi_b = np.percentile(fb, [50.0 * (1 - LEVEL), 50.0 * (1 + LEVEL)])
             fb_ci = (float(lo_b), float(hi_b))
     cov = cov_n.copy()
     unit = np.array([1.0, scale, scale, scale, 1.0])

@@ -54,6 +54,7 @@ _SUMMARIES: dict[str, str] = {
     "history": "a tangential load history with memory: zones, slip, energy per step",
     "fit-adhesion": "work of adhesion (and range) from pull-off forces, with uncertainty",
     "fit-friction": "interfacial shear strength from friction forces, with uncertainty",
+    "fit-bent-wire": "friction per unit length (and tau0) from the profile of a bent wire",
     "slide": (
         "steady sliding: adhesive zones, eccentricity, load and moment (trailing h1, leading h2)"
     ),
@@ -90,7 +91,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
 
 _COMMANDS = (
     "normal, pulloff, curve, slide-init, roll, cycle, history, slide, push, fit-adhesion, "
-    "fit-friction, paper, figures, map, materials, sweep, serve or cite"
+    "fit-friction, fit-bent-wire, paper, figures, map, materials, sweep, serve or cite"
 )
 
 

@@ -45,6 +45,7 @@ FAMILIES: dict[str, str] = {
     "history": "history",
     "fit-adhesion": "fit",
     "fit-friction": "fit",
+    "fit-bent-wire": "bent_wire",
     "slide": "sliding",
     "push": "push",
     "map": "adhesion_map",
