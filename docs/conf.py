@@ -212,6 +212,26 @@ API_GROUPS: list[tuple[str, str, list[str]]] = [
         ],
     ),
     (
+        "A wire bent by friction: the friction from its shape",
+        "The wire dragged at its midpoint (the kinetic case, the elastica) and the wire held by "
+        "friction normal to it (the static case); the bending stiffness of its cross-section; "
+        "the friction per unit length fitted to a measured profile with its intervals, and the "
+        "shear strength from it (:doc:`bent-wire`).",
+        [
+            "fit_bent_wire",
+            "BentWireFit",
+            "shear_strength_from_bent_wire",
+            "bending_stiffness",
+            "second_moment_of_area",
+            "dragged_wire",
+            "DraggedWire",
+            "static_wire",
+            "StaticWire",
+            "normal_friction_from_curvature",
+            "NormalFriction",
+        ],
+    ),
+    (
         "Sliding and rolling",
         "Steady sliding, the initiation of sliding and steady rolling, with the nano-scale "
         "friction law (constant shear stress) or Coulomb friction.",

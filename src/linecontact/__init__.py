@@ -52,6 +52,18 @@ with _imports_interruptible():
     from .closed_forms import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
     from .cylinder import Body, Cylinder, Sphere
     from .errors import ConvergenceError, CouplingWarning, ModelValidityWarning, NoEquilibriumError
+    from .bent_wire import (
+        BentWireFit,
+        DraggedWire,
+        NormalFriction,
+        StaticWire,
+        bending_stiffness,
+        dragged_wire,
+        fit_bent_wire,
+        normal_friction_from_curvature,
+        second_moment_of_area,
+        static_wire,
+    )
     from .facet import (
         FacetContact,
         FacetLoadCurve,
@@ -67,6 +79,7 @@ with _imports_interruptible():
     from .inverse import (
         fit_pull_off,
         propagate,
+        shear_strength_from_bent_wire,
         shear_strength_from_friction,
         sphere_shear_strength_from_friction,
         sphere_work_of_adhesion_from_pull_off,
@@ -137,6 +150,17 @@ with _imports_interruptible():
     )
 
 __all__ = [
+    "BentWireFit",
+    "DraggedWire",
+    "NormalFriction",
+    "StaticWire",
+    "bending_stiffness",
+    "dragged_wire",
+    "fit_bent_wire",
+    "normal_friction_from_curvature",
+    "second_moment_of_area",
+    "shear_strength_from_bent_wire",
+    "static_wire",
     "Body",
     "Sphere",
     "SphereContact",
