@@ -16,6 +16,15 @@ lengths, turned and moved, prints:
   from draw to draw, the median width of the covariance's 95 % interval (and how often it
   covered the truth), all relative to f; and over ``--boot-draws`` draws the median width of
   the bootstrap's 95 % interval (200 refits).
+
+Measured on the 2-core development machine, shared (load 1.3 to 1.8), at c988a3d: the fit
+with its intervals 0.64-1.00 s (best of 3; single calls 0.64-1.66 s as the other load on
+the machine came and went, the same in a fresh process), the fit alone 0.008 s; the
+noiseless errors of f below 1e-11 for groups 0.03 to 27 (end lags 0.3 % to 86 % of l); at
+2 nm noise and 500 points the scatter of f 0.33 % and the 95 % intervals 1.4 % wide
+(covariance and bootstrap alike), at 10 nm 1.7 % and 7.1-7.3 %; at 250 points 0.31 % and
+1.9 %, 2.4 % and 9.2-9.6 %; the covariance's intervals covered the truth in 79 of 80 draws.
+``--draws 0`` prints the times and the noiseless errors alone.
 """
 
 from __future__ import annotations
@@ -132,7 +141,8 @@ def main() -> None:
     print(f"ZnO wire: EI = {EI:.4g} N m^2, l = {HALF * 1e6:g} um\n")
     timing()
     noiseless()
-    noisy(args.draws, min(args.boot_draws, args.draws))
+    if args.draws > 0:
+        noisy(args.draws, min(args.boot_draws, args.draws))
 
 
 if __name__ == "__main__":
