@@ -6,6 +6,7 @@ One module per family of figures, each with the parameters it draws and why:
 :mod:`linecontact.figures.push` (the pushed fibre, :func:`push_figures`),
 :mod:`linecontact.figures.history` (load histories), :mod:`linecontact.figures.fit` (the
 fits of ``linecontact fit-adhesion/fit-friction --plot``),
+:mod:`linecontact.figures.bent_wire` (a bent wire's fit, ``fit-bent-wire --plot``),
 :mod:`linecontact.figures.adhesion_map` (the adhesion map of line contact) and
 :mod:`linecontact.figures.sphere` (the adhesive sphere's load curves, adhesion map and COS
 alpha; with the pushed fibre's, the histories' and the map, :func:`extra_figures`); the

@@ -1,0 +1,242 @@
+r"""The figure of a bent wire's fit (issue 35): the profile, the fitted wire, the residuals.
+
+One figure, :func:`bent_wire_fit`, of a :class:`~linecontact.bent_wire.BentWireFit`
+(:func:`linecontact.bent_wire.fit_bent_wire`; ``linecontact fit-bent-wire --plot FILE``),
+drawn with the helpers of :mod:`linecontact.figures._style`. No physics is computed here:
+every number drawn is one of the fit's.
+
+Top panel
+    The profile's points and the fitted wire over them (``fit.curve_x``, ``fit.curve_y``),
+    in the profile's own coordinates at equal aspect (a wire that looks straight is one
+    whose bending is small against its length: the residuals below show the fit's detail);
+    the midpoint (``fit.midpoint``) and an arrow along the drag (``fit.drag_angle``, the
+    midpoint ahead of the ends), a fifth of the wire's length long. Beside it, the friction
+    per unit length :math:`f` in nN/µm (= mN/m) with its 95 % intervals, from the covariance
+    and from the bootstrap, the position noise, the half-length, the bending stiffness, and
+    the fit's note when the data do not determine :math:`f`.
+Bottom panel
+    Each point's signed distance to the fitted wire (``fit.residuals``, nm) against its
+    foot's arc length from the midpoint (``fit.arc_length``), with the band of
+    :math:`\pm 2` noises (``fit.noise``): independent noise leaves about 95 % of the points
+    inside it and no long runs of one sign.
+
+matplotlib is imported only when the figure is drawn.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import textwrap
+
+import numpy as np
+
+from ..bent_wire.fit import BentWireFit
+from ..errors import ParameterError
+from ._style import DEFAULT_SIZE, Margins, Run, _colors, _new_figure, check_size
+from .fit import _target, _write
+
+__all__ = ["ARROW_FRACTION", "LENGTH_UNITS", "bent_wire_fit"]
+
+#: The display units of the profile's lengths: unit -> its size [m].
+LENGTH_UNITS = {"nm": 1e-9, "um": 1e-6, "m": 1.0}
+_UNIT_TEXT = {"um": r"$\mu$m"}
+#: The drag arrow's length, as a fraction of the wire's length.
+ARROW_FRACTION = 0.2
+_MARGINS = Margins(left=0.95, right=3.35)
+_NM = 1e9  # m -> nm
+_F = 1e3  # N/m -> nN/um (mN/m)
+
+
+def _unit(units: str) -> str:
+    if not isinstance(units, str) or units not in LENGTH_UNITS:
+        raise ParameterError(
+            "units", f"units must be one of {', '.join(LENGTH_UNITS)}, got {units!r}"
+        )
+    return units
+
+
+def bent_wire_fit(
+    fit: BentWireFit,
+    path: str | os.PathLike | None = None,
+    *,
+    units: str = "nm",
+    size=DEFAULT_SIZE,
+):
+    """Draw a bent wire's fit: the profile with the fitted wire over it, and the residuals.
+
+    Parameters
+    ----------
+    fit : BentWireFit
+        The fit (:func:`linecontact.bent_wire.fit_bent_wire`), with its data.
+    path : str or os.PathLike, optional
+        The file; its extension sets the format (``.png``, ``.svg``, ``.pdf``). Written
+        atomically (it appears only once complete), replacing a file of that name. Without
+        it the figure is returned, not written.
+    units : {"nm", "um", "m"}, default "nm"
+        The unit of the profile's coordinates and of the arc length; the residuals are in
+        nm whatever it is.
+    size : (float, float)
+        Inches, between :data:`~linecontact.figures.MIN_SIZE` and
+        :data:`~linecontact.figures.MAX_SIZE`.
+
+    Returns
+    -------
+    pathlib.Path or matplotlib.figure.Figure
+        The file written; the figure (on the Agg canvas, no pyplot) when ``path`` is None.
+
+    Raises
+    ------
+    ImportError
+        If matplotlib is not installed.
+    ValueError
+        For an extension that names no format, a size outside the accepted range, or
+        ``units`` not one of those listed (a :class:`~linecontact.errors.ParameterError`).
+    """
+    unit = _unit(units)
+    target = None if path is None else _target(path)
+    fig = _figure(fit, Run(size=check_size(size)), unit)
+    if target is None:
+        return fig
+    return _write(fig, *target)
+
+
+def _interval(ci: tuple[float, float]) -> str:
+    lo, hi = ci
+    if not (math.isfinite(lo) and math.isfinite(hi)):
+        return "none"
+    return f"[{lo * _F:.4g}, {hi * _F:.4g}]"
+
+
+def _summary(fit: BentWireFit) -> str:
+    """The text beside the profile: f with its intervals, the noise, the wire."""
+    f = fit.friction_per_length * _F
+    boot = (
+        f"bootstrap ({fit.bootstrap - fit.bootstrap_failed} refits): "
+        + _interval(fit.friction_per_length_bootstrap_ci95)
+        if fit.bootstrap
+        else "bootstrap: not drawn"
+    )
+    noise = "given" if fit.noise_given else "from the residuals"
+    lines = [
+        rf"$f$ = {f:.4g} nN/$\mu$m (mN/m)",
+        f"   sd {fit.friction_per_length_sd * _F:.2g} (covariance)",
+        "95 % intervals [nN/$\\mu$m]:",
+        "   covariance: " + _interval(fit.friction_per_length_ci95),
+        "   " + boot,
+        f"noise {fit.noise * _NM:.3g} nm ({noise})",
+        rf"half-length $l$ = {fit.half_length * 1e6:.4g} $\mu$m",
+        rf"$EI$ = {fit.bending_stiffness:.3g} N m$^2$",
+        rf"group $f l^3/EI$ = {fit.friction_group:.3g}",
+        f"{fit.points} points, {fit.dof} degrees of freedom",
+    ]
+    if not fit.determined and fit.note:
+        lines += ["", *textwrap.wrap(fit.note.replace("$", r"\$"), 46)]
+    return "\n".join(lines)
+
+
+def _figure(fit: BentWireFit, run: Run, unit: str = "nm"):
+    k = 1.0 / LENGTH_UNITS[unit]  # m -> display
+    ut = _UNIT_TEXT.get(unit, unit)
+    fig = _new_figure(run, _MARGINS)
+    gs = fig.add_gridspec(2, 1, height_ratios=(2.2, 1.0), hspace=0.42)
+    ax = fig.add_subplot(gs[0])
+    ax2 = fig.add_subplot(gs[1])
+    for a in (ax, ax2):
+        a.grid(True, color="0.88", linewidth=0.6)
+        a.tick_params(labelsize=10)
+    col_fit, col_mid = _colors(2)
+
+    # the profile, the fitted wire, the midpoint and the drag
+    ax.set_title(
+        "friction from the shape of a wire dragged at its midpoint: elastica fit", fontsize=11
+    )
+    ax.set_xlabel(rf"$x$ [{ut}]", fontsize=12)
+    ax.set_ylabel(rf"$y$ [{ut}]", fontsize=12)
+    x, y = np.asarray(fit.x, float), np.asarray(fit.y, float)
+    ax.plot(
+        x * k,
+        y * k,
+        ls="none",
+        marker="o",
+        ms=3,
+        mfc="none",
+        mec="0.3",
+        mew=0.7,
+        label=f"profile ({fit.points} points)",
+    )
+    ax.plot(
+        np.asarray(fit.curve_x) * k,
+        np.asarray(fit.curve_y) * k,
+        color=col_fit,
+        lw=1.8,
+        label="fitted wire (elastica)",
+    )
+    mx, my = fit.midpoint
+    ax.plot(
+        [mx * k],
+        [my * k],
+        ls="none",
+        marker="D",
+        ms=7,
+        mfc=col_mid,
+        mec="k",
+        zorder=5,
+        label="midpoint",
+    )
+    reach = ARROW_FRACTION * 2.0 * fit.half_length
+    tip = (mx + reach * math.cos(fit.drag_angle), my + reach * math.sin(fit.drag_angle))
+    arrow = ax.annotate(
+        "",
+        xy=(tip[0] * k, tip[1] * k),
+        xytext=(mx * k, my * k),
+        arrowprops=dict(arrowstyle="-|>", color="k", lw=1.4, shrinkA=0, shrinkB=0),
+    )
+    arrow.set_gid("drag")
+    # the word beside the arrow's middle, on its side away from the wire's first end
+    c, sn = math.cos(fit.drag_angle), math.sin(fit.drag_angle)
+    ax.annotate(
+        "drag",
+        xy=((mx + tip[0]) / 2 * k, (my + tip[1]) / 2 * k),
+        xytext=(10 * sn, -10 * c),
+        textcoords="offset points",
+        ha="left" if sn >= 0 else "right",
+        va="center",
+        fontsize=9,
+    )
+    ax.update_datalim(np.array([[mx, my], tip]) * k)
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.autoscale_view()
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8.5, frameon=False)
+    ax.text(
+        1.02,
+        0.0,
+        _summary(fit),
+        transform=ax.transAxes,
+        ha="left",
+        va="bottom",
+        fontsize=8,
+        bbox=dict(boxstyle="round,pad=0.4", fc="white", ec="0.6", lw=0.7),
+    )
+
+    # the residuals along the wire, with the band of +-2 noises
+    s = np.asarray(fit.arc_length, float) * k
+    r = np.asarray(fit.residuals, float) * _NM
+    two = 2.0 * fit.noise * _NM
+    ends = (-fit.half_length * k, fit.half_length * k)
+    ax2.fill_between(
+        ends,
+        [-two, -two],
+        [two, two],
+        color=col_fit,
+        alpha=0.18,
+        lw=0,
+        label=rf"$\pm 2$ noise ($\pm${two:.3g} nm)",
+    )
+    ax2.axhline(0.0, color="0.4", lw=0.8)
+    ax2.plot(s, r, ls="none", marker="o", ms=3, mfc="k", mec="k", label="residuals")
+    ax2.set_xlim(*ends)
+    ax2.set_xlabel(rf"arc length from the midpoint [{ut}]", fontsize=11)
+    ax2.set_ylabel("residual [nm]", fontsize=11)
+    ax2.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8.5, frameon=False)
+    return fig
