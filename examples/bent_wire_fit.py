@@ -13,7 +13,9 @@ The script writes the profile to ``profile.csv`` in the current directory (``x_n
 the format that ``linecontact.read_measurements(..., "profile")`` reads), reads it back,
 fits f with :func:`linecontact.bent_wire.fit_bent_wire` (orthogonal least squares over the
 whole profile, its 95 % intervals from the covariance and from a bootstrap of 200 refits)
-and prints it against the truth. With a path argument it also draws the fit (matplotlib).
+and prints it against the truth; then the interfacial shear strength tau0 = f/(2a) with the
+contact width of the wire on silica under adhesion (w = 0.2 J/m^2, z0 = 0.3 nm, 2 % on the
+radius). With a path argument it also draws the fit (matplotlib).
 
 Run: ``python examples/bent_wire_fit.py [fit.png]``
 """
@@ -24,13 +26,15 @@ import sys
 import numpy as np
 from numpy.polynomial import chebyshev as C
 
-from linecontact import read_measurements
-from linecontact.bent_wire import dragged_wire, fit_bent_wire
+from linecontact import composite_modulus, read_measurements, shear_strength_from_bent_wire
+from linecontact.bent_wire import bending_stiffness, dragged_wire, fit_bent_wire
 
 # %%
 # The wire
 # --------
-# The bending stiffness of a solid round wire, :math:`EI = E \pi r^4/4`; each half
+# The bending stiffness of a solid round wire, :math:`EI = E \pi r^4/4`
+# (:func:`linecontact.bent_wire.bending_stiffness`, which also takes a tube or a faceted
+# wire); each half
 # (:math:`l` = 2.5 µm) is a cantilever under the friction's uniform load, so the shape
 # depends on the one group :math:`\Lambda = f l^3/EI`.
 
@@ -38,7 +42,7 @@ DIAMETER, LENGTH, MODULUS = 100e-9, 5e-6, 140e9  # m, m, Pa
 F_TRUE = 12e-3  # N/m (12 nN/um)
 POINTS, NOISE, SEED = 250, 2e-9, 2026  # -, m, -
 
-EI = MODULUS * math.pi * (DIAMETER / 2) ** 4 / 4  # N m^2
+EI = bending_stiffness(MODULUS, DIAMETER / 2)  # N m^2
 half = LENGTH / 2
 group = F_TRUE * half**3 / EI
 print(
@@ -122,3 +126,28 @@ if len(sys.argv) > 1:
     from linecontact.figures.bent_wire import bent_wire_fit
 
     bent_wire_fit(fit, sys.argv[1])
+
+# %%
+# The shear strength
+# ------------------
+# :math:`\tau_0 = f/(2a)`, with :math:`a` the half-width of the wire's Maugis--Dugdale
+# contact on silica under adhesion alone (its weight is a thousand times smaller). The
+# uncertainties of the shape, of the radius (in both :math:`EI` and :math:`a`: 2 % here)
+# and of the work of adhesion (10 %) propagate by Monte Carlo.
+
+contact = composite_modulus(MODULUS, 0.36, 72e9, 0.17)  # ZnO on silica [Pa]
+tau = shear_strength_from_bent_wire(
+    fit,
+    DIAMETER / 2,
+    MODULUS,
+    contact,
+    0.2,
+    0.3e-9,
+    radius_sd=0.02 * DIAMETER / 2,
+    work_of_adhesion_sd=0.02,
+)
+print(
+    f"\ntau0 = f/(2a) = {tau.value / 1e6:.3f} MPa, sd {tau.sd / 1e6:.3f}, 95 % interval "
+    f"[{tau.ci95[0] / 1e6:.3f}, {tau.ci95[1] / 1e6:.3f}] MPa (a = "
+    f"{fit.friction_per_length / (2 * tau.value) * 1e9:.2f} nm)"
+)
