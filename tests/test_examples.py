@@ -83,6 +83,14 @@ def test_sweep_pulloff(tmp_path):
             ],
         ),
         (
+            "bent_wire_fit.py",
+            [
+                "the truth inside them: True and True",
+                "noise from the residuals 2.04 nm (truth 2)",
+                "tau0 = f/(2a) = 1.918 MPa",
+            ],
+        ),
+        (
             "faceted_wire.py",
             [
                 "facet width 50.00 nm, pull-off  -17.107 N/m (corner-pinned",

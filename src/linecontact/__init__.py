@@ -49,9 +49,6 @@ from ._interrupt import imports_interruptible as _imports_interruptible
 with _imports_interruptible():
     from . import _moved, laws
     from ._version import __version__
-    from .closed_forms import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
-    from .cylinder import Body, Cylinder, Sphere
-    from .errors import ConvergenceError, CouplingWarning, ModelValidityWarning, NoEquilibriumError
     from .bent_wire import (
         BentWireFit,
         DraggedWire,
@@ -64,6 +61,9 @@ with _imports_interruptible():
         second_moment_of_area,
         static_wire,
     )
+    from .closed_forms import hertz_load, jkr_load, kappa, maugis_parameter, zero_width_load
+    from .cylinder import Body, Cylinder, Sphere
+    from .errors import ConvergenceError, CouplingWarning, ModelValidityWarning, NoEquilibriumError
     from .facet import (
         FacetContact,
         FacetLoadCurve,
