@@ -70,37 +70,111 @@ def _text(ax) -> str:
     return "\n".join(t.get_text() for t in ax.texts)
 
 
-def test_the_profile_panel_draws_the_fits_arrays(fit):
+def _wire_frame(fit, x, y):
+    """The points [m] in the wire's frame, written here: turned about the fitted midpoint so
+    that the axis (cos, sin of axis_angle) is the first coordinate and the drag (of
+    drag_angle) the second (a 2-by-2 matrix whose rows are the two directions)."""
+    rows = np.array(
+        [
+            [np.cos(fit.axis_angle), np.sin(fit.axis_angle)],
+            [np.cos(fit.drag_angle), np.sin(fit.drag_angle)],
+        ]
+    )
+    along, across = rows @ (np.stack([x, y]) - np.array(fit.midpoint)[:, None])
+    return along, across
+
+
+def _scale_factor(fig, ax):
+    """The axes' data spans per inch, along over across, from the drawn figure."""
+    fig.canvas.draw()
+    box = ax.get_window_extent()  # pixels
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    return ((x1 - x0) / box.width) / ((y1 - y0) / box.height)
+
+
+def test_the_profile_panel_draws_the_fit_in_the_wires_frame(fit):
     fig = bw_figs.bent_wire_fit(fit)
     ax, ax2 = fig.axes
     pts = _line(ax, "profile")
-    assert_allclose(pts.get_xdata(), fit.x * 1e9, rtol=1e-14)
-    assert_allclose(pts.get_ydata(), fit.y * 1e9, rtol=1e-14)
+    along, across = _wire_frame(fit, fit.x, fit.y)
+    assert_allclose(pts.get_xdata(), along * 1e9, rtol=1e-12, atol=1e-9)
+    assert_allclose(pts.get_ydata(), across * 1e9, rtol=1e-12, atol=1e-9)
     assert pts.get_linestyle() == "None" and "120 points" in pts.get_label()
     wire = _line(ax, "fitted wire")
-    assert_allclose(wire.get_xdata(), fit.curve_x * 1e9, rtol=1e-14)
-    assert_allclose(wire.get_ydata(), fit.curve_y * 1e9, rtol=1e-14)
+    c_along, c_across = _wire_frame(fit, fit.curve_x, fit.curve_y)
+    assert_allclose(wire.get_xdata(), c_along * 1e9, rtol=1e-12, atol=1e-9)
+    assert_allclose(wire.get_ydata(), c_across * 1e9, rtol=1e-12, atol=1e-9)
+    # a rotation: the distances to the midpoint are kept
+    r = np.hypot(fit.x - fit.midpoint[0], fit.y - fit.midpoint[1])
+    assert_allclose(np.hypot(pts.get_xdata(), pts.get_ydata()), r * 1e9, rtol=1e-12)
     mid = _line(ax, "midpoint")
-    assert_allclose(np.r_[mid.get_xdata(), mid.get_ydata()], np.array(fit.midpoint) * 1e9)
-    assert ax.get_aspect() == 1.0  # equal aspect: the wire's shape as imaged
-    assert ax.get_xlabel() == "$x$ [nm]" and ax.get_ylabel() == "$y$ [nm]"
+    assert_allclose(np.r_[mid.get_xdata(), mid.get_ydata()], [0.0, 0.0], atol=0)
+    # the fitted wire runs from one end to the other through the midpoint, half a length
+    # each way along the axis (more than its projection: the ends lag and turn)
+    assert c_along[0] < 0 < c_along[-1]
+    assert max(-c_along[0], c_along[-1]) <= fit.half_length
+    assert np.abs(c_across).min() * 1e9 < 1e-6 and c_across.max() * 1e9 < 1e-6
+    # the ends drawn below the midpoint: they lag behind it, the wire bent by the drag
+    for line in (pts, wire):
+        ys = line.get_ydata()
+        assert ys[0] < 0 and ys[-1] < 0
+        assert ys[0] < -5 * fit.noise * 1e9 and ys[-1] < -5 * fit.noise * 1e9
+    # independently of the fit's angles: the chord of the data's ends is drawn (nearly)
+    # level, and the midpoint above the middle of the chord
+    d_along = pts.get_xdata()[-1] - pts.get_xdata()[0]
+    d_across = pts.get_ydata()[-1] - pts.get_ydata()[0]
+    assert abs(d_across) / abs(d_along) < 0.01
+    assert (pts.get_ydata()[0] + pts.get_ydata()[-1]) / 2 < 0
+    # not at equal aspect: the bend (tens of nm over micrometres) is exaggerated, by the
+    # factor written in the panel
+    assert ax.get_aspect() == "auto"
+    assert ax.get_xlabel() == "along the wire's axis [nm]"
+    assert ax.get_ylabel() == "across it, towards the drag [nm]"
+    (note,) = [t for t in ax.texts if t.get_gid() == "scale"]
+    written = float(re.search(r"exaggerated \u00d7([0-9.]+)", note.get_text()).group(1))
+    factor = _scale_factor(fig, ax)
+    assert factor > 1.05
+    assert written == pytest.approx(factor, rel=2e-3)
 
 
-def test_the_drag_arrow_starts_at_the_midpoint_and_points_ahead_of_the_ends(fit):
+def test_a_typical_bend_fills_the_panel():
+    # 12 mN/m on the ZnO wire: the ends lag by about 85 nm over 5 um, a wire that looks
+    # straight at equal scales; in the wire's frame the bend spans most of the panel's height
+    out = fit_bent_wire(*_profile(noise=2e-9), EI, bootstrap=0)
+    fig = bw_figs.bent_wire_fit(out)
+    ax = fig.axes[0]
+    wire = _line(ax, "fitted wire")
+    ys = wire.get_ydata()
+    lag = -(ys[0] + ys[-1]) / 2  # nm
+    assert 70 < lag < 100
+    (y0, y1) = ax.get_ylim()
+    assert lag / (y1 - y0) > 0.6
+    factor = _scale_factor(fig, ax)
+    assert factor > 10
+    (note,) = [t for t in ax.texts if t.get_gid() == "scale"]
+    written = re.fullmatch(r"transverse scale exaggerated \u00d7([0-9.]+)", note.get_text())
+    assert float(written.group(1)) == pytest.approx(factor, rel=2e-3)
+
+
+def test_the_drag_arrow_starts_at_the_midpoint_and_points_up(fit):
     ax = bw_figs.bent_wire_fit(fit).axes[0]
     (arrow,) = [t for t in ax.texts if t.get_gid() == "drag"]
     tail, head = np.array(arrow.xyann), np.array(arrow.xy)
-    assert_allclose(tail, np.array(fit.midpoint) * 1e9, rtol=1e-14)
+    assert_allclose(tail, [0.0, 0.0], atol=0)
     d = head - tail
-    assert np.hypot(*d) == pytest.approx(bw_figs.ARROW_FRACTION * 2 * fit.half_length * 1e9)
-    assert math.atan2(d[1], d[0]) == pytest.approx(fit.drag_angle, abs=1e-12)
-    # independently of the fit's angles: from the chord of the data's ends to the midpoint
-    # (the ends lag behind it), and across the wire's axis (the chord)
-    chord = np.array([fit.x[-1] - fit.x[0], fit.y[-1] - fit.y[0]])
-    ends = np.array([fit.x[0] + fit.x[-1], fit.y[0] + fit.y[-1]]) / 2
-    ahead = np.array(fit.midpoint) - ends
-    assert np.dot(d, ahead) > 0
-    assert abs(np.dot(d, chord)) / (np.hypot(*d) * np.hypot(*chord)) < 0.05
+    assert d[0] == 0 and d[1] > 0  # +across: towards the drag
+    # a fifth of the span across of what is drawn
+    _, across = _wire_frame(fit, fit.x, fit.y)
+    _, c_across = _wire_frame(fit, fit.curve_x, fit.curve_y)
+    both = np.concatenate([across, c_across]) * 1e9
+    assert d[1] == pytest.approx(bw_figs.ARROW_FRACTION * (both.max() - both.min()), rel=1e-9)
+    # the arrow and the whole wire in view
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    assert y0 < both.min() and max(both.max(), d[1]) < y1
+    along = np.concatenate(
+        [_wire_frame(fit, fit.x, fit.y)[0], _wire_frame(fit, fit.curve_x, fit.curve_y)[0]]
+    )
+    assert x0 < along.min() * 1e9 and along.max() * 1e9 < x1
     assert "drag" in [t.get_text() for t in ax.texts]
 
 
@@ -147,9 +221,15 @@ def test_an_undetermined_fit_shows_its_note_and_no_bootstrap(straight):
 def test_the_units_are_those_asked(fit):
     fig = bw_figs.bent_wire_fit(fit, units="um")
     ax, ax2 = fig.axes
-    assert_allclose(_line(ax, "profile").get_xdata(), fit.x * 1e6, rtol=1e-14)
-    assert_allclose(_line(ax, "fitted wire").get_ydata(), fit.curve_y * 1e6, rtol=1e-14)
-    assert ax.get_xlabel() == r"$x$ [$\mu$m]"
+    along, _ = _wire_frame(fit, fit.x, fit.y)
+    _, c_across = _wire_frame(fit, fit.curve_x, fit.curve_y)
+    assert_allclose(_line(ax, "profile").get_xdata(), along * 1e6, rtol=1e-12, atol=1e-12)
+    assert_allclose(_line(ax, "fitted wire").get_ydata(), c_across * 1e6, rtol=1e-12, atol=1e-12)
+    assert ax.get_xlabel() == r"along the wire's axis [$\mu$m]"
+    assert ax.get_ylabel() == r"across it, towards the drag [$\mu$m]"
+    (arrow,) = [t for t in ax.texts if t.get_gid() == "drag"]
+    span = np.ptp(np.concatenate([_wire_frame(fit, fit.x, fit.y)[1], c_across])) * 1e6
+    assert arrow.xy[1] == pytest.approx(bw_figs.ARROW_FRACTION * span, rel=1e-9)
     assert_allclose(_line(ax2, "residuals").get_xdata(), fit.arc_length * 1e6, rtol=1e-14)
     # the residuals stay in nm
     assert_allclose(_line(ax2, "residuals").get_ydata(), fit.residuals * 1e9, rtol=1e-14)
@@ -192,12 +272,26 @@ def test_a_strongly_bent_wire_in_um_clips_nothing():
     out = fit_bent_wire(*_profile(f=0.4, angle=-2.0), EI, bootstrap=0)
     fig = bw_figs.bent_wire_fit(out, units="um", size=figs.MIN_SIZE)
     _clips_nothing(fig)
-    # the whole wire and the arrow are in view
+    # the whole wire and the arrow are in view, in the wire's frame
     ax = fig.axes[0]
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     (arrow,) = [t for t in ax.texts if t.get_gid() == "drag"]
-    for px, py in [*zip(out.x * 1e6, out.y * 1e6, strict=True), arrow.xy]:
+    along, across = _wire_frame(out, out.x, out.y)
+    for px, py in [*zip(along * 1e6, across * 1e6, strict=True), arrow.xy]:
         assert x0 <= px <= x1 and y0 <= py <= y1
+    # bent so far the ends lag by more than a third of the half-length: still drawn below
+    # the midpoint, and the note's factor is that of the axes
+    assert across[0] < -out.half_length / 3 and across[-1] < -out.half_length / 3
+    (note,) = [t for t in ax.texts if t.get_gid() == "scale"]
+    factor = _scale_factor(fig, ax)
+    m = re.search(r"\u00d7([0-9.]+)", note.get_text())
+    if m is None:
+        assert note.get_text() == "equal scales along and across"
+        assert abs(math.log(factor)) < math.log(1.05) + 1e-3
+    elif "exaggerated" in note.get_text():
+        assert float(m.group(1)) == pytest.approx(factor, rel=2e-3)
+    else:
+        assert float(m.group(1)) == pytest.approx(factor, rel=1e-2)
 
 
 def test_the_default_size_and_every_legend_entry_drawn_with_data(fit):

@@ -3,14 +3,19 @@ r"""The figure of a bent wire's fit (issue 35): the profile, the fitted wire, th
 One figure, :func:`bent_wire_fit`, of a :class:`~linecontact.bent_wire.BentWireFit`
 (:func:`linecontact.bent_wire.fit_bent_wire`; ``linecontact fit-bent-wire --plot FILE``),
 drawn with the helpers of :mod:`linecontact.figures._style`. No physics is computed here:
-every number drawn is one of the fit's.
+every number drawn is one of the fit's (turned into the wire's frame, geometry only).
 
 Top panel
-    The profile's points and the fitted wire over them (``fit.curve_x``, ``fit.curve_y``),
-    in the profile's own coordinates at equal aspect (a wire that looks straight is one
-    whose bending is small against its length: the residuals below show the fit's detail);
-    the midpoint (``fit.midpoint``) and an arrow along the drag (``fit.drag_angle``, the
-    midpoint ahead of the ends), a fifth of the wire's length long. Beside it, the friction
+    The profile's points and the fitted wire over them (``fit.x``, ``fit.y``;
+    ``fit.curve_x``, ``fit.curve_y``) in the wire's frame: each point relative to the
+    fitted midpoint (``fit.midpoint``), projected on the wire's axis (``fit.axis_angle``:
+    *along*, the abscissa) and on the drag's direction (``fit.drag_angle``: *across*, the
+    ordinate), a rotation about the midpoint (a mirror image of the profile as imaged when
+    the drag is clockwise from the axis). The midpoint sits at (0, 0), the ends lag below it
+    at negative *across*, and the arrow of the drag points up from it, a fifth of the
+    *across* span long. The aspect is not equal: a wire bent by 85 nm over 5 µm would look
+    straight at equal scales, so the transverse scale is exaggerated, by the factor written
+    in the panel (the axes' data spans per inch, along over across). Beside it, the friction
     per unit length :math:`f` in nN/µm (= mN/m) with its 95 % intervals, from the covariance
     and from the bootstrap, the position noise, the half-length, the bending stiffness, and
     the fit's note when the data do not determine :math:`f`.
@@ -41,7 +46,8 @@ __all__ = ["ARROW_FRACTION", "LENGTH_UNITS", "bent_wire_fit"]
 #: The display units of the profile's lengths: unit -> its size [m].
 LENGTH_UNITS = {"nm": 1e-9, "um": 1e-6, "m": 1.0}
 _UNIT_TEXT = {"um": r"$\mu$m"}
-#: The drag arrow's length, as a fraction of the wire's length.
+#: The drag arrow's length, as a fraction of the span of the top panel's data across the
+#: wire (the points' and the fitted wire's).
 ARROW_FRACTION = 0.2
 _MARGINS = Margins(left=0.95, right=3.35)
 _NM = 1e9  # m -> nm
@@ -135,6 +141,27 @@ def _summary(fit: BentWireFit) -> str:
     return "\n".join(lines)
 
 
+def _frame(fit: BentWireFit, x, y) -> tuple[np.ndarray, np.ndarray]:
+    """Points in the wire's frame [m]: along its axis and across it, towards the drag."""
+    dx = np.asarray(x, float) - fit.midpoint[0]
+    dy = np.asarray(y, float) - fit.midpoint[1]
+    a, d = fit.axis_angle, fit.drag_angle
+    return dx * math.cos(a) + dy * math.sin(a), dx * math.cos(d) + dy * math.sin(d)
+
+
+def _exaggeration(fig, ax) -> str:
+    """The note of the transverse scale: the axes' data spans per inch, along over across."""
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    box = ax.get_position()
+    w, h = fig.get_size_inches()
+    factor = ((x1 - x0) / (box.width * w)) / ((y1 - y0) / (box.height * h))
+    if factor >= 1.05:
+        return f"transverse scale exaggerated \u00d7{factor:.3g}"
+    if factor > 1 / 1.05:
+        return "equal scales along and across"
+    return f"transverse scale \u00d7{factor:.2g} the axial"
+
+
 def _figure(fit: BentWireFit, run: Run, unit: str = "nm"):
     k = 1.0 / LENGTH_UNITS[unit]  # m -> display
     ut = _UNIT_TEXT.get(unit, unit)
@@ -147,16 +174,18 @@ def _figure(fit: BentWireFit, run: Run, unit: str = "nm"):
         a.tick_params(labelsize=10)
     col_fit, col_mid = _colors(2)
 
-    # the profile, the fitted wire, the midpoint and the drag
+    # the profile, the fitted wire, the midpoint and the drag, in the wire's frame: along its
+    # axis and across it towards the drag, from the midpoint
     ax.set_title(
         "friction from the shape of a wire dragged at its midpoint: elastica fit", fontsize=11
     )
-    ax.set_xlabel(rf"$x$ [{ut}]", fontsize=12)
-    ax.set_ylabel(rf"$y$ [{ut}]", fontsize=12)
-    x, y = np.asarray(fit.x, float), np.asarray(fit.y, float)
+    ax.set_xlabel(rf"along the wire's axis [{ut}]", fontsize=11)
+    ax.set_ylabel(rf"across it, towards the drag [{ut}]", fontsize=11)
+    along_p, across_p = _frame(fit, fit.x, fit.y)
+    along_c, across_c = _frame(fit, fit.curve_x, fit.curve_y)
     ax.plot(
-        x * k,
-        y * k,
+        along_p * k,
+        across_p * k,
         ls="none",
         marker="o",
         ms=3,
@@ -165,17 +194,10 @@ def _figure(fit: BentWireFit, run: Run, unit: str = "nm"):
         mew=0.7,
         label=f"profile ({fit.points} points)",
     )
+    ax.plot(along_c * k, across_c * k, color=col_fit, lw=1.8, label="fitted wire (elastica)")
     ax.plot(
-        np.asarray(fit.curve_x) * k,
-        np.asarray(fit.curve_y) * k,
-        color=col_fit,
-        lw=1.8,
-        label="fitted wire (elastica)",
-    )
-    mx, my = fit.midpoint
-    ax.plot(
-        [mx * k],
-        [my * k],
+        [0.0],
+        [0.0],
         ls="none",
         marker="D",
         ms=7,
@@ -184,29 +206,42 @@ def _figure(fit: BentWireFit, run: Run, unit: str = "nm"):
         zorder=5,
         label="midpoint",
     )
-    reach = ARROW_FRACTION * 2.0 * fit.half_length
-    tip = (mx + reach * math.cos(fit.drag_angle), my + reach * math.sin(fit.drag_angle))
+    span = float(np.ptp(np.concatenate([across_p, across_c])))
+    if not span > 0:  # a wire drawn exactly straight: the arrow as long as it is
+        span = 2.0 * fit.half_length
+    reach = ARROW_FRACTION * span * k
     arrow = ax.annotate(
         "",
-        xy=(tip[0] * k, tip[1] * k),
-        xytext=(mx * k, my * k),
+        xy=(0.0, reach),
+        xytext=(0.0, 0.0),
         arrowprops=dict(arrowstyle="-|>", color="k", lw=1.4, shrinkA=0, shrinkB=0),
     )
     arrow.set_gid("drag")
-    # the word beside the arrow's middle, on its side away from the wire's first end
-    c, sn = math.cos(fit.drag_angle), math.sin(fit.drag_angle)
     ax.annotate(
         "drag",
-        xy=((mx + tip[0]) / 2 * k, (my + tip[1]) / 2 * k),
-        xytext=(10 * sn, -10 * c),
+        xy=(0.0, reach / 2),
+        xytext=(6, 0),
         textcoords="offset points",
-        ha="left" if sn >= 0 else "right",
+        ha="left",
         va="center",
         fontsize=9,
     )
-    ax.update_datalim(np.array([[mx, my], tip]) * k)
-    ax.set_aspect("equal", adjustable="datalim")
+    ax.update_datalim([(0.0, 0.0), (0.0, reach)])
     ax.autoscale_view()
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    ax.set_xlim(x0, x1)  # fixed: the factor below is that of these limits
+    ax.set_ylim(y0, y1)
+    ax.text(
+        0.5,
+        0.04,
+        _exaggeration(fig, ax),
+        transform=ax.transAxes,
+        ha="center",
+        va="bottom",
+        fontsize=8.5,
+        color="0.25",
+        bbox=dict(boxstyle="round,pad=0.25", fc="white", ec="none", alpha=0.8),
+    ).set_gid("scale")
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8.5, frameon=False)
     ax.text(
         1.02,
