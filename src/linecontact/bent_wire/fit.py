@@ -32,13 +32,30 @@ from .._validation import check_array
 from ..errors import ConvergenceError, ParameterError
 from ..results import Result
 from ._curve import Dragged
+from ._held import Held, _mode_integral
 from ._placement import place
 from .elastica import LAMBDA_MAX
 
 __all__ = ["MODELS", "BentWireFit", "fit_bent_wire"]
 
-#: The models a profile is fitted with.
-MODELS = ("dragged",)
+#: The models a profile is fitted with: the wire dragged at its midpoint (kinetic friction),
+#: the wire held at rest by static friction normal to it, its ends free.
+MODELS = ("dragged", "held")
+#: What each model's wire is, for a message.
+_WHAT = {"dragged": "dragged at its midpoint", "held": "held at rest by friction, its ends free"}
+#: The held wire's most curvature modes, and the bound of their coefficients.
+HELD_MODES = 12
+_COEF = 500.0
+#: The segments of the coarser polyline of the held wire's first guess.
+_COARSE = 40
+#: The modes beyond Schwarz's choice (f_n, a second derivative of the shape, is more
+#: sensitive to the modes left out than the shape is).
+_EXTRA = 1
+#: The arc lengths (over l, from the midpoint) of the fitted curve drawn and of f_n, and the
+#: trapezoidal rule's weights of a mean over them.
+_DENSE = np.linspace(-1.0, 1.0, 401)
+_TRAPEZOID = np.full(401, 1.0 / 400)
+_TRAPEZOID[[0, -1]] /= 2
 #: The fewest points of a profile (five parameters, and the ends count twice).
 MIN_POINTS = 8
 #: How far back along the wire a point's foot may lie from the one before, in noises (the
@@ -60,7 +77,9 @@ class BentWireFit(Result):
     Attributes
     ----------
     friction_per_length : float
-        :math:`f` [N/m].
+        :math:`f` [N/m]: the uniform kinetic friction of the dragged wire; for the held
+        wire the largest :math:`|f_n|` along it, the static friction it needs at its most
+        loaded point (the static friction's strength is at least this).
     friction_per_length_sd : float
         Its standard uncertainty from the covariance [N/m]: the shape's, and the bending
         stiffness's where given, in quadrature.
@@ -81,7 +100,8 @@ class BentWireFit(Result):
         The angle of the wire's axis (the chord of its ends, from the first point's end to
         the last's) to the profile's ``x`` axis [rad].
     drag_angle : float
-        The direction of the drag, the midpoint ahead of the ends [rad].
+        The direction of the drag, the midpoint ahead of the ends [rad] (nan for the held
+        wire).
     bending_stiffness, bending_stiffness_sd : float
         :math:`EI` [N m^2], as given.
     noise : float
@@ -115,6 +135,13 @@ class BentWireFit(Result):
         The fitted wire, 401 points from end to end [m].
     x, y : ndarray
         The profile as given [m].
+    normal_friction, normal_friction_sd : ndarray
+        The held wire's friction per unit length normal to it, :math:`f_n = EI(\kappa'' +
+        \kappa^3/2)`, and its standard uncertainty, at the 401 points of the fitted curve
+        [N/m] (empty for the dragged wire, whose friction is uniform).
+    modes : int
+        The held wire's curvature modes, as Schwarz's criterion chose them (0 for the
+        dragged wire).
     bootstrap, bootstrap_failed, seed : int
         Replicates asked, replicates that did not converge (left out), the seed.
     steps : int
@@ -162,6 +189,9 @@ class BentWireFit(Result):
     curve_y: NDArray = field(repr=False)
     x: NDArray = field(repr=False)
     y: NDArray = field(repr=False)
+    normal_friction: NDArray = field(repr=False, default_factory=lambda: np.zeros(0))
+    normal_friction_sd: NDArray = field(repr=False, default_factory=lambda: np.zeros(0))
+    modes: int = 0
     bootstrap: int = 0
     bootstrap_failed: int = 0
     seed: int = 0
@@ -254,8 +284,11 @@ def fit_bent_wire(
         Replicates of the bootstrap over residuals, in ``[0, 10000]`` (0: none).
     seed : int, optional
         The bootstrap's seed.
-    model : {"dragged"}
-        The wire dragged at its midpoint, the kinetic case.
+    model : {"dragged", "held"}
+        ``"dragged"``: the wire dragged at its midpoint, the kinetic case (uniform
+        friction). ``"held"``: the wire held at rest by static friction normal to it, its
+        ends free (the static case): its curvature as a few free-free modes, as many as
+        Schwarz's criterion chooses; ``f`` the largest :math:`|f_n|` along it.
 
     Returns
     -------
@@ -296,20 +329,25 @@ def fit_bent_wire(
     centre = d.mean(axis=0)
     scale = float(np.hypot(*(d[1:] - d[:-1]).T).sum() / 2.0)
     dn = (d - centre) / scale
-    curve = Dragged()
-    q0, s0 = _start(dn, curve)
-    bounds = np.array(
-        [[-LAMBDA_MAX, LAMBDA_MAX], [0.05, 20.0], [-50.0, 50.0], [-50.0, 50.0], [-50.0, 50.0]]
-    )
-    fit = place(curve, Dragged.shape_names, dn[None], q0, s0, bounds)
+    curve: Any
+    if model == "dragged":
+        curve = Dragged()
+        q0, s0 = _start(dn, curve)
+        bounds = np.array(
+            [[-LAMBDA_MAX, LAMBDA_MAX], [0.05, 20.0], [-50.0, 50.0], [-50.0, 50.0], [-50.0, 50.0]]
+        )
+        fit = place(curve, curve.shape_names, dn[None], q0, s0, bounds)
+    else:
+        curve, fit, bounds = _held(dn)
+    k = len(curve.shape_names)
     if not fit.converged[0]:
         raise ConvergenceError(
-            f"the bent wire's fit did not converge ({len(d)} points; friction group "
-            f"{fit.q[0, 0]:.6g} after {fit.steps[0]} steps): is the profile a wire dragged at "
-            "its midpoint, its points in order from one end to the other?"
+            f"the bent wire's fit did not converge ({len(d)} points, model {model!r}, after "
+            f"{fit.steps[0]} steps): is the profile a wire {_WHAT[model]}, its points in "
+            "order from one end to the other?"
         )
     q, s = fit.q[0], fit.s[0]
-    if abs(q[0]) >= LAMBDA_MAX * (1 - 1e-9):
+    if model == "dragged" and abs(q[0]) >= LAMBDA_MAX * (1 - 1e-9):
         raise ParameterError(
             "x",
             f"the profile is bent beyond the model's range (friction group {LAMBDA_MAX:g}, "
@@ -317,11 +355,11 @@ def fit_bent_wire(
         )
     free = fit.free[0]
     n_ends = int((~free).sum())
-    dof = int(free.sum()) + 2 * n_ends - 5
+    dof = int(free.sum()) + 2 * n_ends - (k + 4)
     rss = float(fit.cost[0])
     sigma_hat = math.sqrt(rss / dof) if dof > 0 else math.nan
     # the points must follow the curve in order (a profile folding back does not)
-    back = np.flatnonzero(np.diff(s) < -_BACK * max(sigma_hat, 1e-12) / q[1])
+    back = np.flatnonzero(np.diff(s) < -_BACK * max(sigma_hat, 1e-12) / q[k])
     if back.size:
         i = int(back[0]) + 1
         raise ParameterError(
@@ -330,26 +368,26 @@ def fit_bent_wire(
             "points must be in order along one curve, from one end to the other",
         )
     sigma = sigma_hat if noise is None else noise / scale
-    J = fit.J[0].reshape(-1, 5)
-    A = J.T @ J
+    J = fit.J[0].reshape(-1, k + 4)
     try:
-        cov_n = sigma**2 * np.linalg.inv(A)
+        cov_n = sigma**2 * np.linalg.inv(J.T @ J)
     except np.linalg.LinAlgError:
-        cov_n = np.full((5, 5), np.nan)
-    lam, lam_sd = float(q[0]), math.sqrt(max(cov_n[0, 0], 0.0))
-    half = float(q[1]) * scale
-    g = np.array([1.0, -3.0 * lam / q[1], 0, 0, 0])  # d(lam/l^3)/dq, over 1/l^3 (scaled)
-    shape_rel_sd = math.sqrt(max(g @ cov_n @ g, 0.0)) / max(abs(lam), 1e-300)
+        cov_n = np.full((k + 4, k + 4), np.nan)
+    # the friction's group and its gradient in the parameters; then f = group EI / l^3
+    group, ggrad, fn, fn_grad = _friction(model, curve, q)
+    half = float(q[k]) * scale
+    g = ggrad / q[k] ** 3
+    g[k] -= 3.0 * group / q[k] ** 4  # d(group / l^3)/dq (scaled)
     with np.errstate(over="ignore"):  # refused just below
-        f = abs(lam) * EI / half**3
+        f = group * EI / half**3
     if not math.isfinite(f):
         raise ParameterError(
             "bending_stiffness",
             f"bending_stiffness {EI!r} N m^2 over the half-length {half!r} m cubed gives no "
             "finite friction: are the profile in m and the stiffness in N m^2?",
         )
-    rel_sd = math.hypot(shape_rel_sd, EI_sd / EI)
-    f_sd = f * rel_sd if lam != 0 else math.sqrt(max(g @ cov_n @ g, 0.0)) * EI / half**3
+    f_sd_shape = math.sqrt(max(g @ cov_n @ g, 0.0)) * EI / scale**3
+    f_sd = math.hypot(f_sd_shape, f * EI_sd / EI)
     from scipy.special import ndtri, stdtrit
 
     tail = 0.5 + LEVEL / 2.0
@@ -358,7 +396,7 @@ def fit_bent_wire(
     # the bootstrap over residuals: the fitted profile, residuals drawn again, refitted
     fb_sd, fb_ci, failed = math.nan, (math.nan, math.nan), 0
     if B:
-        fb, failed = _bootstrap(curve, fit, q, s, dof, B, seed, bounds)
+        fb, failed = _bootstrap(model, curve, fit, q, s, dof, B, seed, bounds)
         rng = np.random.default_rng([seed, 1])
         EIb = EI + EI_sd * rng.standard_normal(fb.size) if EI_sd else np.full(fb.size, EI)
         fb = fb * EIb / scale**3
@@ -366,9 +404,8 @@ def fit_bent_wire(
             fb_sd = float(np.std(fb, ddof=1))
             lo_b, hi_b = np.percentile(fb, [50.0 * (1 - LEVEL), 50.0 * (1 + LEVEL)])
             fb_ci = (float(lo_b), float(hi_b))
-    cov = cov_n.copy()
-    unit = np.array([1.0, scale, scale, scale, 1.0])
-    cov *= unit[:, None] * unit[None, :]
+    unit = np.array([1.0] * k + [scale, scale, scale, 1.0])
+    cov = cov_n * unit[:, None] * unit[None, :]
     notes = []
     if not ci[0] > 0:
         notes.append(
@@ -386,24 +423,32 @@ def fit_bent_wire(
     if B and failed > B // 10:
         notes.append(f"{failed} of {B} bootstrap refits did not converge")
     # the fitted curve and the feet, in the profile's coordinates
-    phi, o = float(q[4]), q[2:4]
-    dense = curve_points(curve, q, np.linspace(-1.0, 1.0, 401))
+    phi, o = float(q[k + 3]), q[k + 1 : k + 3]
+    dense = curve_points(curve, q, _DENSE)
     feet = curve_points(curve, q, s)
-    sign = 1.0 if lam >= 0 else -1.0
+    if model == "dragged":
+        drag = math.remainder(phi + math.copysign(math.pi / 2, q[0]), 2 * math.pi)
+        fn_si, fn_sd = np.zeros(0), np.zeros(0)
+    else:
+        drag = math.nan
+        fn_si = fn * EI / half**3
+        G = fn_grad / q[k] ** 3
+        G[:, k] -= 3.0 * fn / q[k] ** 4
+        fn_sd = np.sqrt(np.maximum(np.einsum("ni,ij,nj->n", G, cov_n, G), 0.0)) * EI / scale**3
     return BentWireFit(
         friction_per_length=f,
         friction_per_length_sd=f_sd,
-        friction_per_length_sd_shape=math.sqrt(max(g @ cov_n @ g, 0.0)) * EI / half**3,
+        friction_per_length_sd_shape=f_sd_shape,
         friction_per_length_ci95=ci,
         friction_per_length_bootstrap_sd=fb_sd,
         friction_per_length_bootstrap_ci95=fb_ci,
-        friction_group=abs(lam),
-        friction_group_sd=lam_sd,
+        friction_group=group,
+        friction_group_sd=math.sqrt(max(ggrad @ cov_n @ ggrad, 0.0)),
         half_length=half,
-        half_length_sd=math.sqrt(max(cov[1, 1], 0.0)),
+        half_length_sd=math.sqrt(max(cov[k, k], 0.0)),
         midpoint=(float(o[0] * scale + centre[0]), float(o[1] * scale + centre[1])),
         axis_angle=math.remainder(phi, 2 * math.pi),
-        drag_angle=math.remainder(phi + sign * math.pi / 2, 2 * math.pi),
+        drag_angle=drag,
         bending_stiffness=EI,
         bending_stiffness_sd=EI_sd,
         noise=float(sigma * scale),
@@ -423,6 +468,9 @@ def fit_bent_wire(
         curve_y=dense[:, 1] * scale + centre[1],
         x=d[:, 0].copy(),
         y=d[:, 1].copy(),
+        normal_friction=fn_si,
+        normal_friction_sd=fn_sd,
+        modes=k if model == "held" else 0,
         bootstrap=B,
         bootstrap_failed=failed,
         seed=seed,
@@ -430,6 +478,26 @@ def fit_bent_wire(
         converged=True,
         model=model,
     )
+
+
+def _friction(model: str, curve: Any, q: NDArray) -> tuple[float, NDArray, NDArray, NDArray]:
+    r"""The friction's group and its gradient in ``q``; the held wire's f_n group on the curve.
+
+    Dragged: :math:`|\Lambda|`. Held: the mean of :math:`|f_n| l^3/EI` along the wire
+    (the static friction that holds it, averaged; by the trapezoidal rule on
+    :data:`_DENSE`); with the group :math:`f_n l^3/EI` at :data:`_DENSE` and its gradient.
+    """
+    k = len(curve.shape_names)
+    grad = np.zeros(k + 4)
+    if model == "dragged":
+        grad[0] = 1.0 if q[0] >= 0 else -1.0
+        return abs(float(q[0])), grad, np.zeros(0), np.zeros((0, k + 4))
+    fn, fg = curve.normal_friction(q[:k], _DENSE)
+    weight = _TRAPEZOID * np.sign(fn)  # the mean of |f_n| along the wire, and its gradient
+    grad[:k] = weight @ fg
+    full = np.zeros((fn.size, k + 4))
+    full[:, :k] = fg
+    return float(_TRAPEZOID @ np.abs(fn)), grad, fn, full
 
 
 def _runs(resid: NDArray) -> float:
@@ -445,18 +513,20 @@ def _runs(resid: NDArray) -> float:
     return (runs - mean) / math.sqrt(var) if var > 0 else 0.0
 
 
-def curve_points(curve: Dragged, q: NDArray, s: NDArray) -> NDArray:
+def curve_points(curve: Any, q: NDArray, s: NDArray) -> NDArray:
     """The placed curve of the parameters ``q`` at the arc lengths ``s`` (scaled), ``(N, 2)``."""
-    curve.solve(q[:1])
+    k = len(curve.shape_names)
+    curve.solve(q[None, :k])
     v = curve.at(s[None, :], ("x", "y"))
-    half, o, phi = q[1], q[2:4], q[4]
+    half, o, phi = q[k], q[k + 1 : k + 3], q[k + 3]
     c, sn = math.cos(phi), math.sin(phi)
     cx, cy = v["x"][0], v["y"][0]
     return np.stack([o[0] + half * (c * cx - sn * cy), o[1] + half * (sn * cx + c * cy)], axis=1)
 
 
 def _bootstrap(
-    curve: Dragged,
+    model: str,
+    curve: Any,
     fit: Any,
     q: NDArray,
     s: NDArray,
@@ -465,7 +535,11 @@ def _bootstrap(
     seed: int,
     bounds: NDArray,
 ) -> tuple[NDArray, int]:
-    """``lam / l^3`` (scaled) of ``B`` refits to the fitted profile plus drawn residuals."""
+    """The friction's group over ``l^3`` (scaled) of ``B`` refits, and the refits failed.
+
+    The refits are to the fitted profile plus residuals drawn again.
+    """
+    k = len(curve.shape_names)
     free = fit.free[0]
     r, normal = fit.r[0], fit.normal[0]
     feet = curve_points(curve, q, s)
@@ -483,7 +557,68 @@ def _bootstrap(
     )
     qs = np.repeat(q[None], B, axis=0)
     ss = np.repeat(s[None], B, axis=0)
-    refit = place(Dragged(), Dragged.shape_names, dstar, qs, ss, bounds, xtol=1e-9, damping=1e-9)
-    ok = refit.converged & (np.abs(refit.q[:, 0]) < LAMBDA_MAX * (1 - 1e-9))
-    out = np.abs(refit.q[ok, 0]) / refit.q[ok, 1] ** 3
+    again = Dragged() if model == "dragged" else Held(k)
+    refit = place(again, again.shape_names, dstar, qs, ss, bounds, xtol=1e-9, damping=1e-9)
+    ok = refit.converged.copy()
+    if model == "dragged":
+        ok &= np.abs(refit.q[:, 0]) < LAMBDA_MAX * (1 - 1e-9)
+        group = np.abs(refit.q[:, 0])
+    else:
+        group = np.array([_friction(model, again, row)[0] for row in refit.q])
+    out = group[ok] / refit.q[ok, k] ** 3
     return out, int(B - ok.sum())
+
+
+def _held(dn: NDArray) -> tuple[Held, Any, NDArray]:
+    r"""The held wire fitted with the number of modes that the BIC chooses, from 1 up.
+
+    The first guess of each: the modes' angle fitted linearly to the polyline's segment
+    angles (the noise averages out over many segments), the wire's angle and midpoint at
+    the middle of the polyline. The rule: the least :math:`n \ln(\text{RSS}/n) + p \ln n`
+    (Schwarz's criterion, :math:`n` the residuals counted as in ``dof``, :math:`p` the
+    parameters), over at most :data:`HELD_MODES` modes and a quarter of the points.
+    """
+    # a coarser polyline (every w-th point): its angles and length little spoiled by the noise
+    w = max(1, len(dn) // _COARSE)
+    pick = np.unique(np.r_[np.arange(0, len(dn), w), len(dn) - 1])
+    seg = dn[pick[1:]] - dn[pick[:-1]]
+    arc = np.concatenate([[0.0], np.cumsum(np.hypot(*seg.T))])
+    half = arc[-1] / 2.0
+    sc = arc / half - 1.0
+    mids = (sc[1:] + sc[:-1]) / 2.0
+    angle = np.unwrap(np.arctan2(seg[:, 1], seg[:, 0]))
+    phi0 = float(np.interp(0.0, mids, angle))
+    o0 = np.array([np.interp(0.0, sc, dn[pick, 0]), np.interp(0.0, sc, dn[pick, 1])])
+    s = np.interp(np.arange(len(dn)), pick, sc)  # the points' arc lengths, first guess
+    n = len(dn) + 2
+    best: tuple[float, Held, Any] | None = None
+    fits = {}
+    kmax = max(1, min(HELD_MODES, (len(dn) - 5) // 4))
+    for K in range(1, kmax + 1):
+        curve = Held(K)
+        psi = np.array([_mode_integral(j, mids) for j in range(K)]).T
+        c0, *_ = np.linalg.lstsq(psi, angle - phi0, rcond=None)
+        q0 = np.concatenate([c0, [1.0 * half, o0[0], o0[1], phi0]])
+        bounds = np.array(
+            [[-_COEF, _COEF]] * K + [[0.05, 20.0], [-50.0, 50.0], [-50.0, 50.0], [-50.0, 50.0]]
+        )
+        fit = place(curve, curve.shape_names, dn[None], q0[None], s[None], bounds)
+        if not fit.converged[0]:
+            continue
+        fits[K] = (curve, fit)
+        bic = n * math.log(max(float(fit.cost[0]), 1e-300) / n) + (K + 4) * math.log(n)
+        if best is None or bic < best[0]:
+            best = (bic, curve, fit)
+    if best is None:
+        raise ConvergenceError(
+            f"the held wire's fit did not converge at any number of modes up to {kmax} "
+            f"({len(dn)} points): is the profile a wire held at rest, its points in order "
+            "from one end to the other?"
+        )
+    _, curve, fit = best
+    if _EXTRA and curve.K + _EXTRA in fits:
+        curve, fit = fits[curve.K + _EXTRA]
+    bounds = np.array(
+        [[-_COEF, _COEF]] * curve.K + [[0.05, 20.0], [-50.0, 50.0], [-50.0, 50.0], [-50.0, 50.0]]
+    )
+    return curve, fit, bounds
