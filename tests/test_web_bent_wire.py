@@ -290,6 +290,11 @@ def test_the_plots_carry_the_points_the_fitted_wire_and_the_residuals(server, pa
     caption = page.inner_text("#residuals figcaption")
     assert f"±2 noises (±{_fmt(2 * fit.noise * 1e9)} nm)" in caption
     assert page.locator("#download-svg").count() == 1  # the profile's plot downloads
+    page.click("#details summary")  # the table open: no overflow at a desktop's and a phone's
+    for width in (1280, 390):
+        page.set_viewport_size({"width": width, "height": 900})
+        over = page.evaluate("document.documentElement.scrollWidth - window.innerWidth")
+        assert over <= 0, (width, over)
 
 
 def test_an_undetermined_friction_and_no_interface_are_said(server, page, tmp_path):
