@@ -37,8 +37,9 @@ def _f(name: str, label: str, kind: str = "none", default: str = "", **kw: Any) 
 
     Its request name, its label (the words its messages use), its kind of unit, its default
     in SI units; ``many`` (several values, comma-separated), ``unit`` (the unit first
-    chosen), ``alt`` (``group:option``: shown when that option is chosen), ``aux`` (a field
-    of the page's second request: the map's wire), ``optional``.
+    chosen), ``alt`` (``group:option``, or ``group:one|other``: shown when that option, or
+    one of those, is chosen), ``aux`` (a field of the page's second request: the map's
+    wire), ``optional``.
     """
     return {"name": name, "label": label, "kind": kind, "default": default, **kw}
 
@@ -99,7 +100,8 @@ _TIP = [
     _f("radius", "tip radius R", "length", "2e-08"),
 ]
 
-#: The pages: path -> title, what it answers, command, fields, fixed parameters, plot.
+#: The pages: path -> title, what it answers, command, fields, fixed parameters, plot (an
+#: upload page: ``upload``, its label ``upload_label``; further figures: ``figures``).
 #: The headline (the answer in words) and the Python lines of each page are written by
 #: ``static/app.js``, by the page's name.
 PAGES: dict[str, dict[str, Any]] = {
@@ -321,6 +323,81 @@ PAGES: dict[str, dict[str, Any]] = {
             "ys": [{"key": "F_N_per_m", "kind": "force", "label": "pull-off force"}],
         },
     },
+    "bent-wire": {
+        "title": "Friction from the shape of a bent wire (profile upload)",
+        "question": "Which friction per unit length f (and interfacial shear strength tau0) "
+        "bent the wire dragged at its midpoint into the shape imaged?",
+        "command": "fit-bent-wire",
+        "upload": True,
+        "upload_label": "the wire's profile (CSV: x_nm,y_nm, points from end to end)",
+        "alts": {
+            "elastic": {
+                "label": "the wire's Young's modulus (its bending stiffness EI) from",
+                "options": [["presets", "the wire's material"], ["modulus", "a modulus E"]],
+            },
+            "tau0": {
+                "label": "tau0 = f/(2a), the contact's half-width a from",
+                "options": [
+                    ["none", "(none: the friction f alone)"],
+                    ["presets", "w, z0 and the substrate's material"],
+                    ["moduli", "w, z0 and the substrate's E2, nu2"],
+                    ["composite", "w, z0 and the contact's composite modulus"],
+                ],
+            },
+        },
+        "fields": [
+            _f("cylinder_material", "wire material", "material", "ZnO", alt="elastic:presets"),
+            _f("modulus", "wire's Young's modulus E", "modulus", "1.4e11", alt="elastic:modulus"),
+            _f(
+                "nu1",
+                "wire's Poisson ratio nu1 (for tau0's contact)",
+                "none",
+                "0.36",
+                alt="elastic:modulus",
+                optional=True,
+            ),
+            _f("radius", "radius R (a polygon's circumradius)", "length", "5e-08"),
+            *_SHAPE,
+            _f("inner_radius", "a tube's inner radius (optional)", "length", "", optional=True),
+            _f(
+                "noise",
+                "position noise, its sd (optional: from the residuals)",
+                "length",
+                "",
+                optional=True,
+            ),
+            _f("bootstrap", "bootstrap refits (0 to 10000)", "none", "200"),
+            _f(
+                "work_of_adhesion",
+                "work of adhesion w",
+                "work",
+                "0.3",
+                alt="tau0:presets|moduli|composite",
+            ),
+            _f(
+                "z0",
+                "equilibrium spacing z0",
+                "length",
+                "3e-10",
+                alt="tau0:presets|moduli|composite",
+            ),
+            _f("substrate_material", "substrate material", "material", "SiO2", alt="tau0:presets"),
+            _f("E2", "substrate's Young's modulus E2", "modulus", "7.2e10", alt="tau0:moduli"),
+            _f("nu2", "substrate's Poisson ratio nu2", "none", "0.17", alt="tau0:moduli"),
+            _f(
+                "contact_modulus",
+                "contact's composite modulus E*",
+                "modulus",
+                "4.8e10",
+                alt="tau0:composite",
+            ),
+        ],
+        "plot": {
+            "x": {"key": "x_m", "kind": "length", "label": "x"},
+            "ys": [{"key": "y_m", "kind": "length", "label": "y"}],
+        },
+        "figures": ["residuals"],
+    },
     "map": {
         "title": "The adhesion map (quick grid), your wire marked",
         "question": "Which model (Hertz, rigid, JKR, Maugis-Dugdale) holds for your wire?",
@@ -499,12 +576,15 @@ def page_html(name: str) -> str:
     alts = "".join(_alternative(g, a) for g, a in (p.get("alts") or {}).items())
     fields = "".join(_field(f, p["command"]) for f in p["fields"])
     upload = (
-        "<div class='field'><label for='f-data'>measurements (CSV, units in the header)</label>"
+        "<div class='field'><label for='f-data'>"
+        f"{html.escape(p.get('upload_label', 'measurements (CSV, units in the header)'))}</label>"
         "<div class='control'><input type='file' id='f-data' name='data' accept='.csv'></div>"
         "<div class='message' id='m-data' role='alert'></div></div>"
         if p.get("upload")
         else ""
     )
+    # the page's further figures (the bent wire's residuals): empty places for static/app.js
+    figures = "".join(f"<figure id='{html.escape(x)}'></figure>" for x in p.get("figures", ()))
     return (
         _head(p["title"]) + f"<h1>{html.escape(p['title'])}</h1>"
         f"<p class='question'>{html.escape(p['question'])}</p>"
@@ -514,7 +594,7 @@ def page_html(name: str) -> str:
         "<button type='button' id='cancel' hidden>Cancel</button></div></form>"
         "<div id='status' role='status'></div><div id='form-error' class='error'></div>"
         "<section id='answer' aria-live='polite'></section>"
-        "<figure id='plot'></figure><figure id='motion'></figure>"
+        f"<figure id='plot'></figure><figure id='motion'></figure>{figures}"
         "<details id='details'><summary>All values: the table, the nondimensional groups and "
         "the solver's diagnostics</summary><section id='results'></section></details>"
         "<div id='downloads'></div>"

@@ -69,11 +69,13 @@
   // ---------------------------------------------------------------------------------------
   // the form: alternatives, parsing, the page's state in its link
 
+  // a field's alternative: its group and the options it belongs to ("tau0:presets|moduli")
+  const altGroup = (f) => (f.alt ? f.alt.split(":")[0] : null);
+  const altOptions = (f) => (f.alt ? f.alt.split(":")[1].split("|") : []);
   function active(f) {
     if (!f.alt) return true;
-    const [g, opt] = f.alt.split(":");
-    const sel = $("a-" + g);
-    return !sel || sel.value === opt;
+    const sel = $("a-" + altGroup(f));
+    return !sel || altOptions(f).includes(sel.value);
   }
   function showAlternatives() {
     for (const f of spec.fields) {
@@ -150,9 +152,18 @@
     const q = new URLSearchParams(location.search);
     const linked = [...q.keys()].some((k) => k in fields);
     for (const [g, a] of Object.entries(spec.alts || {})) { // the alternative the link gives
+      let given = null;
       for (const [opt] of a.options) {
-        if (spec.fields.some((f) => f.alt === `${g}:${opt}` && !chosen(f) && q.has(f.name))) $("a-" + g).value = opt;
+        if (spec.fields.some((f) => f.alt === `${g}:${opt}` && !chosen(f) && q.has(f.name))) given = opt;
       }
+      if (given === null) { // else the option most of the link's keys belong to (a list's too)
+        let most = 0;
+        for (const [opt] of a.options) {
+          const n = spec.fields.filter((f) => altGroup(f) === g && altOptions(f).includes(opt) && q.has(f.name)).length;
+          if (n > most) { most = n; given = opt; }
+        }
+      }
+      if (given !== null) $("a-" + g).value = given;
     }
     for (const f of spec.fields) {
       const el = $("f-" + f.name);
@@ -179,11 +190,11 @@
         + `(the API answers 422 for ${unknown.length > 1 ? "them" : "it"})`);
     }
     for (const [g, a] of Object.entries(spec.alts || {})) {
-      const given = keys.filter((k) => fields[k] && fields[k].alt && fields[k].alt.split(":")[0] === g);
+      const given = keys.filter((k) => fields[k] && altGroup(fields[k]) === g);
       const off = given.filter((k) => !active(fields[k]));
       if (!off.length) continue;
       const chosen = given.filter((k) => active(fields[k]));
-      const words = a.options.filter(([opt]) => given.some((k) => fields[k].alt === `${g}:${opt}`)).map((o) => o[1]);
+      const words = a.options.filter(([opt]) => given.some((k) => altOptions(fields[k]).includes(opt))).map((o) => o[1]);
       said.push(`this link sets ${quote(chosen)} and ${quote(off)}, alternatives of “${a.label}” `
         + `(${words.join("; ")}): the page takes one of them`);
     }
@@ -418,6 +429,36 @@
       }
       return out;
     },
+    "bent-wire"(doc) {
+      const r = rec(doc), q = doc.parameters || {};
+      const f = (si) => fmt(si / 1e-3) + " nN/µm"; // = mN/m
+      const finite = (k) => Array.isArray(r[k]) && r[k].length === 2 && r[k].every(Number.isFinite);
+      const ci = (k, unit) => (finite(k) ? [val(k, r[k], `${unit(r[k][0]).split(" ")[0]} to ${unit(r[k][1])}`)] : ["—"]);
+      const boot = finite("friction_per_length_bootstrap_ci95_N_per_m")
+        ? [`; the bootstrap's, from ${q.bootstrap} refits: `, ...ci("friction_per_length_bootstrap_ci95_N_per_m", f)] : [];
+      const out = [p("The friction per unit length f = ", val("friction_per_length_N_per_m", r.friction_per_length_N_per_m, f(r.friction_per_length_N_per_m)),
+        " (95 % interval ", ...ci("friction_per_length_ci95_N_per_m", f), ...boot, ").")];
+      const nm = (si) => fmt(si / 1e-9) + " nm";
+      out.push(p(`Fitted to ${r.points} points: the wire's half-length l = `, val("half_length_m", r.half_length_m, qty(r.half_length_m, "length", ["radius"])),
+        ", the friction group f l³/EI = ", val("friction_group", r.friction_group, fmt(r.friction_group)), ", the position noise ",
+        val("noise_m", r.noise_m, nm(r.noise_m)), current && current.values.noise
+          ? ` (as given; the residuals' estimate ${nm(r.noise_estimated_m)})` : " (the residuals' estimate)", "."));
+      if (Number.isFinite(r.tau0_Pa)) {
+        out.push(p("The interfacial shear strength tau0 = f/(2a) = ", val("tau0_Pa", r.tau0_Pa, qty(r.tau0_Pa, "stress")),
+          " (95 % interval ", ...ci("tau0_ci95_Pa", (x) => qty(x, "stress")), "), over a contact half-width a = ",
+          val("contact_half_width_m", r.contact_half_width_m, nm(r.contact_half_width_m)), "."));
+      } else {
+        out.push(p("tau0 = f/(2a) is not computed: it needs the contact's half-width a, from the work of adhesion w, z0 and the substrate (choose them under “tau0 = f/(2a)” above)."));
+      }
+      const note = (r.note || "").split("; ").filter((x) => x && !x.startsWith("tau0 needs"));
+      if (note.length || r.determined === false) {
+        const words = inWords(note.join("; ") || "the data do not determine f");
+        const said = p(r.determined === false ? "Beware: " + words[0].toLowerCase() + words.slice(1) : words, ".");
+        said.id = "bent-wire-note";
+        out.push(said);
+      }
+      return out;
+    },
     fit(doc) {
       const r = rec(doc);
       const ci = (k, kind) => (Array.isArray(r[k]) ? ` (95 % interval ${qty(r[k][0], kind, ["z0"])} to ${qty(r[k][1], kind, ["z0"])})` : "");
@@ -481,7 +522,9 @@
     const td = document.createElement("td");
     td.dataset.key = key;
     td.dataset.value = v === null ? "null" : typeof v === "object" ? JSON.stringify(v) : String(v);
-    td.textContent = v === null ? "—" : typeof v === "number" ? fmt(v, 5) : Array.isArray(v) ? v.map((x) => fmt(x, 5)).join(", ") : typeof v === "object" ? JSON.stringify(v) : String(v);
+    td.textContent = v === null ? "—" : typeof v === "number" ? fmt(v, 5)
+      : Array.isArray(v) ? (v.length > 8 ? `${v.length} values (in the JSON and CSV)` : v.map((x) => fmt(x, 5)).join(", "))
+      : typeof v === "object" ? JSON.stringify(v) : String(v);
     return td;
   }
   function results(doc) {
@@ -553,6 +596,12 @@
     if (y0 === y1) { y0 -= Math.abs(y0) * 0.1 || 1; y1 += Math.abs(y1) * 0.1 || 1; }
     const pad = (y1 - y0) * 0.05;
     y0 -= pad; y1 += pad;
+    if (P.equal) { // equal scales: the shorter range widened about its middle
+      const per = Math.max((x1 - x0) / (W - L - R), (y1 - y0) / (H - B - T));
+      const [cx, cy] = [(x0 + x1) / 2, (y0 + y1) / 2];
+      [x0, x1] = [cx - per * (W - L - R) / 2, cx + per * (W - L - R) / 2];
+      [y0, y1] = [cy - per * (H - B - T) / 2, cy + per * (H - B - T) / 2];
+    }
     const view = { x0, x1, y0, y1 };
     const svg = document.createElementNS(NS, "svg");
     svg.setAttribute("viewBox", `0 0 ${W} ${H}`);
@@ -765,6 +814,30 @@
     plot(layers, { xlabel: X.label, ylabel: Y.label, legend: rows ? "band: w at the ends of its 95 % interval, z0 at its fit;" : "" });
   }
 
+  // the bent wire's profile and the fitted wire over it, at equal scales; its residuals
+  // against the arc length from the midpoint, with the band of +-2 noises (figures/bent_wire)
+  function bentPlot(doc) {
+    const r = rec(doc);
+    if (!Array.isArray(r.x_m) || !r.x_m.length || !Array.isArray(r.curve_x_m)) return;
+    const xs = [...r.x_m, ...r.curve_x_m], ys = [...r.y_m, ...r.curve_y_m];
+    const span = Math.max(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys));
+    const [u, k] = span < 1e-4 ? ["nm", 1e-9] : ["µm", 1e-6];
+    const layers = [
+      { label: "the profile (data)", pts: r.x_m.map((x, i) => [x / k, r.y_m[i] / k]) },
+      { label: "the fitted wire", line: true, points: false, color: COLORS[1], pts: r.curve_x_m.map((x, i) => [x / k, r.curve_y_m[i] / k]) },
+    ];
+    if (Array.isArray(r.midpoint_m)) layers.push({ label: "its midpoint", color: COLORS[2], pts: [[r.midpoint_m[0] / k, r.midpoint_m[1] / k]] });
+    plot(layers, { xlabel: `x [${u}]`, ylabel: `y [${u}]`, equal: true, legend: "Equal scales (the residuals below show the fit's detail);" });
+    if (!Array.isArray(r.residuals_m) || !Array.isArray(r.arc_length_m)) return;
+    const two = 2 * r.noise_m / 1e-9, ends = [-r.half_length_m / k, r.half_length_m / k];
+    plot([
+      { label: `±2 noises (±${fmt(two)} nm)`, pts: [], band: ends.map((x) => [x, -two, two]), color: COLORS[1] },
+      { label: "residuals", pts: r.arc_length_m.map((x, i) => [x / k, r.residuals_m[i] / 1e-9]), color: COLORS[0] },
+    ], { xlabel: `arc length from the midpoint [${u}]`, ylabel: "residual [nm]",
+      legend: "Each point's signed distance to the fitted wire: noise leaves about 95 % inside the band and no long runs of one sign;" },
+    null, "residuals", "residuals-svg");
+  }
+
   // the motion map of the pushed wire: first motion over push height and friction stress
   async function motion(values) {
     const fig = $("motion");
@@ -857,11 +930,13 @@
     const { values, aux } = current;
     const mark = await marked(aux);
     if (mine !== generation) return; // a newer computation was asked for
-    current.data = (doc.parameters || {}).data;
+    const file = spec.upload && $("f-data").files[0];
+    current.data = (doc.parameters || {}).data || (file && file.name); // the file as the user named it
     equivalent(values, python || (mark && mark.python)); // with the answer, not after its plot
     headline(doc, mark);
     warnings([...(doc.warnings || []), ...((mark && mark.warnings) || [])]);
     if (spec.page === "fit") fitPlot(doc, null);
+    else if (spec.page === "bent-wire") bentPlot(doc);
     else {
       const extra = await flatPush(values);
       if (mine !== generation) return;
@@ -902,7 +977,7 @@
     generation += 1;
     if (job) { clearTimeout(job); job = null; }
     clearMessages();
-    for (const id of ["answer", "plot", "motion", "results", "downloads"]) $(id).textContent = "";
+    for (const id of ["answer", "plot", "motion", "residuals", "results", "downloads"]) if ($(id)) $(id).textContent = "";
     const main = inputs(false), aux = inputs(true);
     const errors = { ...main.errors, ...aux.errors };
     if (Object.keys(errors).length) { // nothing computed with a number the user did not mean
