@@ -364,3 +364,32 @@ def test_the_gallery_example_runs_and_recovers_f(tmp_path):
     assert lines[0].startswith("# synthetic:") and lines[1] == "x_nm,y_nm"
     assert len(lines) == 2 + 250
     assert (tmp_path / "fig.png").read_bytes()[:8] == PNG
+
+
+def test_the_held_wire_draws_its_normal_friction_with_its_band():
+    """The static case: three panels, the third f_n along the wire (nN/um) and its band."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from linecontact.bent_wire import fit_bent_wire
+
+    s = np.linspace(-1.0, 1.0, 120)
+    theta = 1.5 * s**2 * (1 - s**2 / 2)  # any smooth free-free-ish bend
+    x = np.concatenate([[0.0], np.cumsum(np.cos(theta[1:]) * np.diff(s))]) * 2.5e-6
+    y = np.concatenate([[0.0], np.cumsum(np.sin(theta[1:]) * np.diff(s))]) * 2.5e-6
+    rng = np.random.default_rng(4)
+    x, y = x + 2e-9 * rng.standard_normal(s.size), y + 2e-9 * rng.standard_normal(s.size)
+    fit = fit_bent_wire(x, y, 7e-19, model="held", bootstrap=0)
+    fig = bw_figs.bent_wire_fit(fit)
+    try:
+        axes = fig.axes
+        assert len(axes) == 3
+        line = next(ln for ln in axes[2].get_lines() if len(ln.get_xdata()) == 401)
+        assert np.allclose(line.get_ydata(), fit.normal_friction * 1e3)
+        assert np.allclose(line.get_xdata(), np.linspace(-1, 1, 401) * fit.half_length * 1e9)
+        assert "f_n" in axes[2].get_ylabel()
+        assert not any(t.get_gid() == "drag" for t in axes[0].texts)  # no drag: at rest
+    finally:
+        import matplotlib.pyplot as plt
+
+        plt.close(fig)

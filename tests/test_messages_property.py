@@ -254,6 +254,8 @@ def bases(tmp) -> dict[str, list[list[str]]]:
              "--cross-section", "hexagon", "--corner-radius", "5e-9", "--bootstrap", "0", *WORK,
              "--contact-modulus", "50e9", "--samples", "20"],
             ["fit-bent-wire", "--data", str(profile), "--radius", "50e-9", "--modulus", "140e9",
+             "--model", "held", "--bootstrap", "5"],
+            ["fit-bent-wire", "--data", str(profile), "--radius", "50e-9", "--modulus", "140e9",
              "--inner-radius", "20e-9", "--bootstrap", "0", *WORK, "--nu1", "0.3", "--E2",
              "70e9", "--nu2", "0.17", "--samples", "20", "--seed", "2"],
         ],

@@ -148,7 +148,8 @@ def place(
         # what an undamped (Gauss--Newton) step would gain: nothing beyond rounding, done
         with np.errstate(all="ignore"):
             gn = np.linalg.solve(A + 1e-300 * np.eye(nq), gvec[..., None])[..., 0]
-        done |= np.einsum("bi,bi->b", gvec, gn) <= _FLAT * cost
+        small = np.all(np.abs(gn) <= _CONVERGED * np.maximum(1.0, np.abs(q)), axis=1)
+        done |= (np.einsum("bi,bi->b", gvec, gn) <= _FLAT * cost) & small
         delta[done] = 0.0
         trial = np.clip(q + delta, lo, hi)
         s_t, r_t, J_t, n_t, f_t, c_t = _evaluate(model, shape_names, trial, s, d, ends)

@@ -595,6 +595,8 @@ def _held(dn: NDArray) -> tuple[Held, Any, NDArray]:
     fits = {}
     kmax = max(1, min(HELD_MODES, (len(dn) - 5) // 4))
     for K in range(1, kmax + 1):
+        if best is not None and K > best[1].K + _EXTRA + 1:
+            break  # two past the least criterion and its extra mode: it rises from here
         curve = Held(K)
         psi = np.array([_mode_integral(j, mids) for j in range(K)]).T
         c0, *_ = np.linalg.lstsq(psi, angle - phi0, rcond=None)

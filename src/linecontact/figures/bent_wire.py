@@ -117,6 +117,7 @@ def _interval(ci: tuple[float, float]) -> str:
 def _summary(fit: BentWireFit) -> str:
     """The text beside the profile: f with its intervals, the noise, the wire."""
     f = fit.friction_per_length * _F
+    name = r"mean $|f_n|$" if fit.model == "held" else "$f$"
     boot = (
         f"bootstrap ({fit.bootstrap - fit.bootstrap_failed} refits): "
         + _interval(fit.friction_per_length_bootstrap_ci95)
@@ -125,7 +126,7 @@ def _summary(fit: BentWireFit) -> str:
     )
     noise = "given" if fit.noise_given else "from the residuals"
     lines = [
-        rf"$f$ = {f:.4g} nN/$\mu$m (mN/m)",
+        rf"{name} = {f:.4g} nN/$\mu$m (mN/m)",
         f"   sd {fit.friction_per_length_sd * _F:.2g} (covariance)",
         "95 % intervals [nN/$\\mu$m]:",
         "   covariance: " + _interval(fit.friction_per_length_ci95),
@@ -136,6 +137,9 @@ def _summary(fit: BentWireFit) -> str:
         rf"group $f l^3/EI$ = {fit.friction_group:.3g}",
         f"{fit.points} points, {fit.dof} degrees of freedom",
     ]
+    if fit.model == "held":
+        lines[-2] = rf"group mean $|f_n| l^3/EI$ = {fit.friction_group:.3g}"
+        lines.append(f"{fit.modes} curvature modes")
     if not fit.determined and fit.note:
         lines += ["", *textwrap.wrap(fit.note.replace("$", r"\$"), 46)]
     return "\n".join(lines)
@@ -145,7 +149,8 @@ def _frame(fit: BentWireFit, x, y) -> tuple[np.ndarray, np.ndarray]:
     """Points in the wire's frame [m]: along its axis and across it, towards the drag."""
     dx = np.asarray(x, float) - fit.midpoint[0]
     dy = np.asarray(y, float) - fit.midpoint[1]
-    a, d = fit.axis_angle, fit.drag_angle
+    a = fit.axis_angle
+    d = fit.drag_angle if math.isfinite(fit.drag_angle) else a + math.pi / 2  # held: the normal
     return dx * math.cos(a) + dy * math.sin(a), dx * math.cos(d) + dy * math.sin(d)
 
 
@@ -166,10 +171,18 @@ def _figure(fit: BentWireFit, run: Run, unit: str = "nm"):
     k = 1.0 / LENGTH_UNITS[unit]  # m -> display
     ut = _UNIT_TEXT.get(unit, unit)
     fig = _new_figure(run, _MARGINS)
-    gs = fig.add_gridspec(2, 1, height_ratios=(2.2, 1.0), hspace=0.42)
+    held = fit.model == "held"
+    if held:
+        gs = fig.add_gridspec(3, 1, height_ratios=(2.0, 1.0, 1.0), hspace=0.55)
+    else:
+        gs = fig.add_gridspec(2, 1, height_ratios=(2.2, 1.0), hspace=0.42)
     ax = fig.add_subplot(gs[0])
     ax2 = fig.add_subplot(gs[1])
-    for a in (ax, ax2):
+    panels = [ax, ax2]
+    if held:
+        ax3 = fig.add_subplot(gs[2])
+        panels.append(ax3)
+    for a in panels:
         a.grid(True, color="0.88", linewidth=0.6)
         a.tick_params(labelsize=10)
     col_fit, col_mid = _colors(2)
@@ -177,10 +190,15 @@ def _figure(fit: BentWireFit, run: Run, unit: str = "nm"):
     # the profile, the fitted wire, the midpoint and the drag, in the wire's frame: along its
     # axis and across it towards the drag, from the midpoint
     ax.set_title(
-        "friction from the shape of a wire dragged at its midpoint: elastica fit", fontsize=11
+        "static friction holding a bent wire: its curvature modes fitted"
+        if held
+        else "friction from the shape of a wire dragged at its midpoint: elastica fit",
+        fontsize=11,
     )
     ax.set_xlabel(rf"along the wire's axis [{ut}]", fontsize=11)
-    ax.set_ylabel(rf"across it, towards the drag [{ut}]", fontsize=11)
+    ax.set_ylabel(
+        rf"across it [{ut}]" if held else rf"across it, towards the drag [{ut}]", fontsize=11
+    )
     along_p, across_p = _frame(fit, fit.x, fit.y)
     along_c, across_c = _frame(fit, fit.curve_x, fit.curve_y)
     ax.plot(
@@ -194,7 +212,13 @@ def _figure(fit: BentWireFit, run: Run, unit: str = "nm"):
         mew=0.7,
         label=f"profile ({fit.points} points)",
     )
-    ax.plot(along_c * k, across_c * k, color=col_fit, lw=1.8, label="fitted wire (elastica)")
+    ax.plot(
+        along_c * k,
+        across_c * k,
+        color=col_fit,
+        lw=1.8,
+        label="fitted wire (modes)" if held else "fitted wire (elastica)",
+    )
     ax.plot(
         [0.0],
         [0.0],
@@ -206,50 +230,56 @@ def _figure(fit: BentWireFit, run: Run, unit: str = "nm"):
         zorder=5,
         label="midpoint",
     )
-    span = float(np.ptp(np.concatenate([across_p, across_c])))
-    if not span > 0:  # a wire drawn exactly straight: the arrow as long as it is
-        span = 2.0 * fit.half_length
-    reach = ARROW_FRACTION * span * k
-    arrow = ax.annotate(
-        "",
-        xy=(0.0, reach),
-        xytext=(0.0, 0.0),
-        arrowprops=dict(arrowstyle="-|>", color="k", lw=1.4, shrinkA=0, shrinkB=0),
-    )
-    arrow.set_gid("drag")
-    ax.annotate(
-        "drag",
-        xy=(0.0, reach / 2),
-        xytext=(6, 0),
-        textcoords="offset points",
-        ha="left",
-        va="center",
-        fontsize=9,
-    )
-    ax.update_datalim([(0.0, 0.0), (0.0, reach)])
+    if not held:  # the drag, from the midpoint
+        span = float(np.ptp(np.concatenate([across_p, across_c])))
+        if not span > 0:  # a wire drawn exactly straight: the arrow as long as it is
+            span = 2.0 * fit.half_length
+        reach = ARROW_FRACTION * span * k
+        arrow = ax.annotate(
+            "",
+            xy=(0.0, reach),
+            xytext=(0.0, 0.0),
+            arrowprops=dict(arrowstyle="-|>", color="k", lw=1.4, shrinkA=0, shrinkB=0),
+        )
+        arrow.set_gid("drag")
+        ax.annotate(
+            "drag",
+            xy=(0.0, reach / 2),
+            xytext=(6, 0),
+            textcoords="offset points",
+            ha="left",
+            va="center",
+            fontsize=9,
+        )
+        ax.update_datalim([(0.0, 0.0), (0.0, reach)])
+    if held:  # a wire held in its shape is bent much: drawn as it is, at equal scales
+        ax.set_aspect("equal", adjustable="datalim")
     ax.autoscale_view()
-    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-    ax.set_xlim(x0, x1)  # fixed: the factor below is that of these limits
-    ax.set_ylim(y0, y1)
-    ax.text(
-        0.5,
-        0.04,
-        _exaggeration(fig, ax),
-        transform=ax.transAxes,
-        ha="center",
-        va="bottom",
-        fontsize=8.5,
-        color="0.25",
-        bbox=dict(boxstyle="round,pad=0.25", fc="white", ec="none", alpha=0.8),
-    ).set_gid("scale")
+    if not held:
+        (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+        ax.set_xlim(x0, x1)  # fixed: the factor below is that of these limits
+        ax.set_ylim(y0, y1)
+        ax.text(
+            0.5,
+            0.04,
+            _exaggeration(fig, ax),
+            transform=ax.transAxes,
+            ha="center",
+            va="bottom",
+            fontsize=8.5,
+            color="0.25",
+            bbox=dict(boxstyle="round,pad=0.25", fc="white", ec="none", alpha=0.8),
+        ).set_gid("scale")
     ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8.5, frameon=False)
+    # the summary beside the profile; the held wire's, taller than its panel, beside the
+    # panels below it (their legends then inside them)
     ax.text(
         1.02,
-        0.0,
+        1.0 if held else 0.0,
         _summary(fit),
-        transform=ax.transAxes,
+        transform=(ax2 if held else ax).transAxes,
         ha="left",
-        va="bottom",
+        va="top" if held else "bottom",
         fontsize=8,
         bbox=dict(boxstyle="round,pad=0.4", fc="white", ec="0.6", lw=0.7),
     )
@@ -273,5 +303,20 @@ def _figure(fit: BentWireFit, run: Run, unit: str = "nm"):
     ax2.set_xlim(*ends)
     ax2.set_xlabel(rf"arc length from the midpoint [{ut}]", fontsize=11)
     ax2.set_ylabel("residual [nm]", fontsize=11)
-    ax2.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8.5, frameon=False)
+    if held:
+        ax2.legend(loc="upper right", fontsize=7.5, framealpha=0.8, ncols=2)
+    else:
+        ax2.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=8.5, frameon=False)
+    if held:  # the friction normal to the wire along it, with its band of +-2 sd
+        sd = np.linspace(ends[0], ends[1], len(fit.normal_friction))
+        fn = np.asarray(fit.normal_friction) * _F
+        band = 2.0 * np.asarray(fit.normal_friction_sd) * _F
+        ax3.fill_between(sd, fn - band, fn + band, color=col_fit, alpha=0.18, lw=0,
+                         label=r"$\pm 2$ sd")  # fmt: skip
+        ax3.plot(sd, fn, color=col_fit, lw=1.6, label=r"$f_n = EI(\kappa'' + \kappa^3/2)$")
+        ax3.axhline(0.0, color="0.4", lw=0.8)
+        ax3.set_xlim(*ends)
+        ax3.set_xlabel(rf"arc length from the midpoint [{ut}]", fontsize=11)
+        ax3.set_ylabel(r"$f_n$ [nN/$\mu$m]", fontsize=11)
+        ax3.legend(loc="upper center", fontsize=7.5, framealpha=0.8, ncols=2)
     return fig

@@ -290,9 +290,22 @@ def _run(args: Inputs) -> Table:
         curve_x_m=fit.curve_x.tolist(),
         curve_y_m=fit.curve_y.tolist(),
     )
+    if args.model == "held":
+        rec.update(
+            modes=fit.modes,
+            curve_arc_length_m=np.linspace(-fit.half_length, fit.half_length, 401).tolist(),
+            normal_friction_N_per_m=fit.normal_friction.tolist(),
+            normal_friction_sd_N_per_m=fit.normal_friction_sd.tolist(),
+        )
     args.drawing = ("bent_wire_fit", (fit,), {})
     return _table(args, rec, params)
 
+
+#: The table's title of each model.
+_TITLES = {
+    "dragged": "friction per unit length from the profile of a wire dragged at its midpoint",
+    "held": "static friction per unit length (averaged along the wire) holding a bent wire",
+}
 
 #: The columns of the readable table (the lists are in the JSON and CSV only).
 _SHOWN = (
@@ -337,7 +350,7 @@ def _table(args: Inputs, rec: dict[str, Any], params: dict[str, Any]) -> Table:
         "contact_half_width_m": "m",
     }
     shown = tuple(k for k in _SHOWN if k in cols)
-    title = "friction per unit length from the profile of a wire dragged at its midpoint"
+    title = _TITLES[args.model]
     return Table(cols, params, units, args.command_line(), title, show=shown)
 
 
@@ -366,7 +379,8 @@ _PARAMETERS = (
     ),
     Parameter(
         "model",
-        "the wire dragged at its midpoint, the kinetic case (default: %(default)s)",
+        "dragged: at its midpoint (kinetic); held: at rest by static friction (default: "
+        "%(default)s)",
         kind="text",
         choices=MODELS,
         default="dragged",
@@ -453,7 +467,7 @@ _PARAMETERS = (
 )
 
 _ENTRIES = (
-    Entry(("data", "model"), "CSV of x_<unit>,y_<unit>, end to end; the model (default: dragged)"),
+    Entry(("data", "model"), "CSV of x_<unit>,y_<unit>, end to end; dragged (default) or held"),
     Entry(("noise", "bootstrap"), "noise sd [m] (default: the residuals'); refits (default: 200)"),
     Entry(("radius", "radius_sd"), "radius [m] (a polygon's circumradius) (sd: [m] or N%%)"),
     Entry(
@@ -479,9 +493,10 @@ OPERATIONS = {
     "fit-bent-wire": Operation(
         "fit-bent-wire",
         "friction per unit length (and tau0) from the profile of a bent wire",
-        "The friction per unit length f of a wire dragged at its midpoint, fitted to its "
-        "imaged profile (the elastica, whole-profile least squares) with covariance and "
-        "bootstrap intervals; tau0 = f/(2a) where the interface is given. docs/bent-wire.md.",
+        "The friction per unit length f of a wire dragged at its midpoint (or the static "
+        "friction holding a wire at rest, --model held), fitted to its imaged profile "
+        "(whole-profile least squares) with intervals; tau0 = f/(2a) where the interface "
+        "is given. docs/bent-wire.md.",
         (
             "linecontact fit-bent-wire --data profile.csv --radius 50e-9 --modulus 140e9",
             "linecontact fit-bent-wire --data profile.csv --radius 50e-9 --modulus 140e9 "
