@@ -78,8 +78,8 @@ class BentWireFit(Result):
     ----------
     friction_per_length : float
         :math:`f` [N/m]: the uniform kinetic friction of the dragged wire; for the held
-        wire the largest :math:`|f_n|` along it, the static friction it needs at its most
-        loaded point (the static friction's strength is at least this).
+        wire the mean of :math:`|f_n|` along it, the static friction that holds it,
+        averaged (its strength is at least the largest, :attr:`normal_friction_largest`).
     friction_per_length_sd : float
         Its standard uncertainty from the covariance [N/m]: the shape's, and the bending
         stiffness's where given, in quadrature.
@@ -140,8 +140,12 @@ class BentWireFit(Result):
         \kappa^3/2)`, and its standard uncertainty, at the 401 points of the fitted curve
         [N/m] (empty for the dragged wire, whose friction is uniform).
     modes : int
-        The held wire's curvature modes, as Schwarz's criterion chose them (0 for the
-        dragged wire).
+        The held wire's curvature modes, as Schwarz's criterion chose them, plus one (0 for
+        the dragged wire).
+    normal_friction_largest : float
+        The held wire's largest :math:`|f_n|` [N/m], with no interval: the maximum of a
+        noisy second derivative, its scatter large and biased upward (``docs/bent-wire.md``);
+        nan for the dragged wire.
     bootstrap, bootstrap_failed, seed : int
         Replicates asked, replicates that did not converge (left out), the seed.
     steps : int
@@ -150,6 +154,7 @@ class BentWireFit(Result):
     model : str
     """
 
+    derived: ClassVar[tuple[str, ...]] = ("normal_friction_largest",)
     whole: ClassVar[tuple[str, ...]] = (
         "friction_per_length_ci95",
         "friction_per_length_bootstrap_ci95",
@@ -198,6 +203,12 @@ class BentWireFit(Result):
     steps: int = 0
     converged: bool = True
     model: str = "dragged"
+
+    @property
+    def normal_friction_largest(self) -> float:
+        """The held wire's largest :math:`|f_n|` [N/m] (nan for the dragged wire)."""
+        fn = np.asarray(self.normal_friction)
+        return float(np.max(np.abs(fn))) if fn.size else math.nan
 
 
 def _count(name: str, v: Any, lo: int, hi: int) -> int:
@@ -288,7 +299,7 @@ def fit_bent_wire(
         ``"dragged"``: the wire dragged at its midpoint, the kinetic case (uniform
         friction). ``"held"``: the wire held at rest by static friction normal to it, its
         ends free (the static case): its curvature as a few free-free modes, as many as
-        Schwarz's criterion chooses; ``f`` the largest :math:`|f_n|` along it.
+        Schwarz's criterion chooses, plus one; ``f`` the mean of :math:`|f_n|` along it.
 
     Returns
     -------

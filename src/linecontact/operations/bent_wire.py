@@ -17,6 +17,7 @@ import numpy as np
 
 from .. import inverse as inv
 from ..bent_wire import MODELS, bending_stiffness, fit_bent_wire
+from ..cylinder import Cylinder
 from ..errors import ParameterError
 from ..geometry import NAMED_SIDES, cross_section
 from ..materials import composite_modulus
@@ -35,6 +36,8 @@ _CONTACT = "the contact, for tau0 = f/(2a) (optional)"
 
 #: What the API's names of parameters are on the command line.
 _FLAGS = {
+    "height": "--push-height",
+    "receding_work_of_adhesion": "--work-of-adhesion-receding",
     "x": "--data",
     "y": "--data",
     "noise": "--noise",
@@ -264,6 +267,8 @@ def _run(args: Inputs) -> Table:
             raise _flagged(exc) from None
         except ValueError as exc:
             raise ParameterError("--work-of-adhesion", str(exc)) from None
+        if args.push_height is not None:
+            rec.update(_push(args, shape, Ec, tau.value, load))
         rec.update(
             tau0_Pa=tau.value,
             tau0_sd_Pa=tau.sd,
@@ -272,6 +277,14 @@ def _run(args: Inputs) -> Table:
         )
         params.update(normal_load_N_per_m=load, samples=args.samples)
     else:
+        if args.push_height is not None or args.work_of_adhesion_receding is not None:
+            flag = (
+                "--push-height" if args.push_height is not None else "--work-of-adhesion-receding"
+            )
+            raise ParameterError(
+                flag,
+                f"{flag}: the push needs tau0: give --work-of-adhesion, --z0 and the substrate",
+            )
         rec.update(tau0_Pa=None, tau0_sd_Pa=None, tau0_ci95_Pa=None, contact_half_width_m=None)
     rec.update(
         midpoint_m=list(fit.midpoint),
@@ -293,6 +306,7 @@ def _run(args: Inputs) -> Table:
     if args.model == "held":
         rec.update(
             modes=fit.modes,
+            normal_friction_largest_N_per_m=fit.normal_friction_largest,
             curve_arc_length_m=np.linspace(-fit.half_length, fit.half_length, 401).tolist(),
             normal_friction_N_per_m=fit.normal_friction.tolist(),
             normal_friction_sd_N_per_m=fit.normal_friction_sd.tolist(),
@@ -352,6 +366,39 @@ def _table(args: Inputs, rec: dict[str, Any], params: dict[str, Any]) -> Table:
     shown = tuple(k for k in _SHOWN if k in cols)
     title = _TITLES[args.model]
     return Table(cols, params, units, args.command_line(), title, show=shown)
+
+
+def _push(args: Inputs, shape: Any, Ec: float, tau0: float, load: float) -> dict[str, Any]:
+    """What a push at ``--push-height`` does to the wire, with the fitted tau0 (docs/push.md)."""
+    if shape is not None:
+        raise ParameterError(
+            "--push-height", "--push-height: the push of a faceted wire is not written (round only)"
+        )
+    positive("--push-height", args.push_height)
+    w1 = args.work_of_adhesion_receding
+    if w1 is None:
+        w1 = args.work_of_adhesion
+    try:
+        cyl = Cylinder.from_modulus(
+            args.radius, Ec, work_of_adhesion=args.work_of_adhesion, equilibrium_spacing=args.z0
+        )
+        push = cyl.push(
+            friction_stress=tau0,
+            height=args.push_height,
+            receding_work_of_adhesion=w1,
+            normal_load=load,
+        )
+    except ParameterError as exc:
+        raise _flagged(exc) from None
+    except ValueError as exc:
+        raise ParameterError("--push-height", f"--push-height: {exc}") from None
+    return {
+        "push_height_m": args.push_height,
+        "push_first_motion": str(push.first_motion),
+        "push_rolling_resistance_N_per_m": float(push.rolling_resistance),
+        "push_sliding_resistance_N_per_m": float(push.sliding_resistance),
+        "push_critical_height_m": float(push.critical_height),
+    }
 
 
 def _sd(p: Parameter) -> Parameter:
@@ -451,6 +498,20 @@ _PARAMETERS = (
         group=_CONTACT,
     ),
     Parameter(
+        "push_height",
+        "then a push at this height [m]: stay, roll or slide (docs/push.md)",
+        unit="m",
+        metavar="H",
+        group=_CONTACT,
+    ),
+    Parameter(
+        "work_of_adhesion_receding",
+        "the push's receding w [J/m^2] (default: w, no hysteresis)",
+        unit="J/m^2",
+        metavar="W1",
+        group=_CONTACT,
+    ),
+    Parameter(
         "samples",
         "Monte Carlo samples of tau0 (default: %(default)s)",
         kind="integer",
@@ -476,7 +537,7 @@ _ENTRIES = (
     ),
     Entry(
         ("cross_section", "corner_radius", "inner_radius"),
-        "%(default)s or a polygon; its corner radius [m]; a tube's bore radius [m]",
+        "%(default)s or a polygon; its corner radius [m]; a tube's bore [m]",
     ),
     Entry(
         ("work_of_adhesion", "work_of_adhesion_sd", "z0", "z0_sd"),
@@ -484,19 +545,21 @@ _ENTRIES = (
     ),
     Entry(
         ("contact_modulus", "nu1", "E2", "nu2", "substrate_material"),
-        "composite modulus [Pa], or the wire's nu1 and the substrate's E2 [Pa], nu2 or preset",
+        "composite E* [Pa], or nu1 and the substrate's E2 [Pa], nu2 or preset",
     ),
     Entry(("samples", "seed"), "Monte Carlo samples of tau0, seed (default: %(default)s, 0)"),
+    Entry(
+        ("push_height", "work_of_adhesion_receding"),
+        "then a push at H [m]; its receding w [J/m^2] (default: w)",
+    ),
 )
 
 OPERATIONS = {
     "fit-bent-wire": Operation(
         "fit-bent-wire",
         "friction per unit length (and tau0) from the profile of a bent wire",
-        "The friction per unit length f of a wire dragged at its midpoint (or the static "
-        "friction holding a wire at rest, --model held), fitted to its imaged profile "
-        "(whole-profile least squares) with intervals; tau0 = f/(2a) where the interface "
-        "is given. docs/bent-wire.md.",
+        "Friction per unit length f of a wire dragged at its midpoint (or held at rest: "
+        "--model held) from its imaged profile, with intervals; tau0 = f/(2a).",
         (
             "linecontact fit-bent-wire --data profile.csv --radius 50e-9 --modulus 140e9",
             "linecontact fit-bent-wire --data profile.csv --radius 50e-9 --modulus 140e9 "
