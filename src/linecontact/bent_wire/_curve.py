@@ -55,6 +55,15 @@ def _tables(n: int, m: int) -> tuple[NDArray, NDArray, NDArray, NDArray]:
     return g, value, deriv, integ
 
 
+def _cells(v: NDArray, d: NDArray) -> NDArray:
+    """``(B * (m + 1), 4)``: at each grid point its value and slope and the next point's."""
+    nxt = (
+        np.concatenate([v[:, 1:], v[:, -1:]], axis=1),
+        np.concatenate([d[:, 1:], d[:, -1:]], axis=1),
+    )
+    return np.stack([v, d, *nxt], axis=-1).reshape(-1, 4)
+
+
 class Dragged:
     """The wire dragged at its midpoint, tabulated for a batch of friction groups.
 
@@ -115,8 +124,9 @@ class Dragged:
             "x_lam": (-(s * th_l) @ Iv.T, -sg * tl),
             "y_lam": ((c * th_l) @ Iv.T, cg * tl),
         }
-        # per quantity one array (B * (m + 1), 2): a value and its derivative gathered at once
-        self.table = {k: np.stack(pair, axis=-1).reshape(-1, 2) for k, pair in table.items()}
+        # per quantity one array (B * (m + 1), 4): a cell's two ends, each value and
+        # derivative, gathered at once (the last row of each batch row a copy, never read)
+        self.table = {k: _cells(*pair) for k, pair in table.items()}
 
     def at(self, s: NDArray, names: tuple[str, ...]) -> dict[str, NDArray]:
         """``names`` of the table at the arc lengths ``s`` (shape ``(B, N)``, in ``[-1, 1]``).
@@ -137,9 +147,8 @@ class Dragged:
         row = (np.arange(s.shape[0]) * (m + 1))[:, None] + j
         out = {}
         for name in names:
-            tab = self.table[name]
-            lo, hi = tab[row], tab[row + 1]
-            val = h00 * lo[..., 0] + h10 * lo[..., 1] + h01 * hi[..., 0] + h11 * hi[..., 1]
+            c = self.table[name][row]
+            val = h00 * c[..., 0] + h10 * c[..., 1] + h01 * c[..., 2] + h11 * c[..., 3]
             if name in ("x", "theta"):
                 val = val * side
             if name in ("y", "theta", "kappa"):

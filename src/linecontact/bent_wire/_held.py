@@ -28,6 +28,8 @@ from numpy.polynomial import legendre as _leg
 from numpy.polynomial import polynomial as _poly
 from numpy.typing import NDArray
 
+from ._curve import _cells
+
 __all__ = ["Held"]
 
 #: Grid intervals along the whole wire.
@@ -94,7 +96,7 @@ class Held:
             dgy = -sn * kap * psi + cs * phi
             table[f"x_c{k}"] = (_cumulative(gx, dgx, h, mid), gx)
             table[f"y_c{k}"] = (_cumulative(gy, dgy, h, mid), gy)
-        self.table = {k: np.stack(pair, axis=-1).reshape(-1, 2) for k, pair in table.items()}
+        self.table = {k: _cells(*pair) for k, pair in table.items()}
         self.rows = c.shape[0]
         self.converged = np.ones(c.shape[0], bool)
 
@@ -111,9 +113,8 @@ class Held:
         row = (np.arange(s.shape[0]) * (m + 1))[:, None] + j
         out = {}
         for name in names:
-            tab = self.table[name]
-            lo, hi = tab[row], tab[row + 1]
-            out[name] = h00 * lo[..., 0] + h10 * lo[..., 1] + h01 * hi[..., 0] + h11 * hi[..., 1]
+            c = self.table[name][row]
+            out[name] = h00 * c[..., 0] + h10 * c[..., 1] + h01 * c[..., 2] + h11 * c[..., 3]
         return out
 
     def normal_friction(self, coef: NDArray, s: NDArray) -> tuple[NDArray, NDArray]:

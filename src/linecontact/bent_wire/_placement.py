@@ -56,7 +56,13 @@ class Placed:
 
 
 def _evaluate(
-    model: Any, lam_names: tuple[str, ...], q: NDArray, s: NDArray, d: NDArray, ends: NDArray
+    model: Any,
+    lam_names: tuple[str, ...],
+    q: NDArray,
+    s: NDArray,
+    d: NDArray,
+    ends: NDArray,
+    projections: int = 2,
 ) -> tuple[NDArray, ...]:
     """The residuals and the Jacobian at ``q``, the free feet first moved by Newton steps."""
     k = q.shape[1] - 4
@@ -67,7 +73,7 @@ def _evaluate(
     rel = (d - o[:, None, :]) / half[:, None, None]
     px = cph * rel[..., 0] + sph * rel[..., 1]
     py = -sph * rel[..., 0] + cph * rel[..., 1]
-    for _ in range(2):
+    for _ in range(projections):
         v = model.at(s, ("x", "y", "theta", "kappa"))
         ex, ey = px - v["x"], py - v["y"]
         ct, st = np.cos(v["theta"]), np.sin(v["theta"])
@@ -118,6 +124,7 @@ def place(
     maxit: int = _MAXIT,
     xtol: float = _XTOL,
     damping: float = 1e-3,
+    projections: int = 2,
 ) -> Placed:
     """Fit the model to the data sets ``d`` (``(B, N, 2)``) from ``q0``, ``s0``.
 
@@ -125,7 +132,8 @@ def place(
     first and last points are the ends. Returns the batch's :class:`Placed` state; a row
     converged when its last step moved no parameter by more than :data:`_XTOL` (relative to
     one, the parameters being of order one; ``xtol``), starting from the damping
-    ``damping`` (small from a start near the solution: Gauss--Newton steps).
+    ``damping`` (small from a start near the solution: Gauss--Newton steps), the feet moved
+    by ``projections`` Newton steps at each step (one, from feet already near theirs).
     """
     B, N, _ = d.shape
     ends = np.zeros((B, N), bool)
@@ -152,7 +160,7 @@ def place(
         done |= (np.einsum("bi,bi->b", gvec, gn) <= _FLAT * cost) & small
         delta[done] = 0.0
         trial = np.clip(q + delta, lo, hi)
-        s_t, r_t, J_t, n_t, f_t, c_t = _evaluate(model, shape_names, trial, s, d, ends)
+        s_t, r_t, J_t, n_t, f_t, c_t = _evaluate(model, shape_names, trial, s, d, ends, projections)
         better = (c_t <= cost) & ~done
         moved = np.max(np.abs(trial - q), axis=1)
         q = np.where(better[:, None], trial, q)

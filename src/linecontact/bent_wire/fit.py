@@ -569,7 +569,9 @@ def _bootstrap(
     qs = np.repeat(q[None], B, axis=0)
     ss = np.repeat(s[None], B, axis=0)
     again = Dragged() if model == "dragged" else Held(k)
-    refit = place(again, again.shape_names, dstar, qs, ss, bounds, xtol=1e-9, damping=1e-9)
+    refit = place(
+        again, again.shape_names, dstar, qs, ss, bounds, xtol=1e-9, damping=1e-9, projections=1
+    )
     ok = refit.converged.copy()
     if model == "dragged":
         ok &= np.abs(refit.q[:, 0]) < LAMBDA_MAX * (1 - 1e-9)
