@@ -6,7 +6,12 @@ gives, and uploaded on ``/bent-wire`` in a real headless browser (Chromium from 
 driven by Playwright, as ``tests/test_web_pages.py``). The page's numbers are compared with
 the Python API's (:func:`linecontact.bent_wire.fit_bent_wire`,
 :func:`linecontact.inverse.shear_strength_from_bent_wire`) and with its own command line
-run here, to the digits shown and to the JSON's; its plots with the file's points.
+run here, to the digits shown and to the JSON's; its plots with the file's points, turned
+into the wire's frame here from the API's midpoint and angles (the dragged wire's transverse
+scale exaggerated, by the factor its caption says). A wire held at rest by static friction
+(``model="held"``) is made here too, its tangent integrated by ``solve_ivp`` from a
+curvature outside the fit's modes: its mean |f_n| is the API's and the command line's, and
+its plot of f_n along the wire the record's.
 """
 
 from __future__ import annotations
@@ -242,6 +247,43 @@ def test_the_page_gives_the_apis_and_the_command_lines_friction_and_tau0(
     assert "/tmp" not in page.inner_text("body")  # no server path
 
 
+def _frame(fit: Any, x: np.ndarray, y: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Points in the wire's frame [m], from the fit's numbers: along its axis and across it
+    (towards the drag; the held wire: the axis turned by +90 degrees), from its midpoint."""
+    a = fit.axis_angle
+    d = fit.drag_angle if np.isfinite(fit.drag_angle) else a + np.pi / 2
+    dx, dy = x - fit.midpoint[0], y - fit.midpoint[1]
+    return dx * np.cos(a) + dy * np.sin(a), dx * np.cos(d) + dy * np.sin(d)
+
+
+def _dots(page, svg: str) -> np.ndarray:
+    """A plot's points: their values (data-x, data-y) and where they are drawn (cx, cy)."""
+    return np.array(
+        page.locator(f"#{svg} circle").evaluate_all(
+            "cs => cs.map((c) => [c.dataset.x, c.dataset.y, c.getAttribute('cx'), "
+            "c.getAttribute('cy')].map(Number))"
+        )
+    )
+
+
+def _polyline(page, svg: str) -> np.ndarray:
+    """The screen coordinates of a plot's one line."""
+    line = page.locator(f"#{svg} polyline.series")
+    assert line.count() == 1
+    pts = line.get_attribute("points").split()
+    return np.array([[float(v) for v in q.split(",")] for q in pts])
+
+
+def _scales(xy: np.ndarray) -> tuple[float, float]:
+    """Pixels per unit across the screen and up it, from the points' values and places."""
+    sx = np.polyfit(xy[:, 0], xy[:, 2], 1)
+    sy = np.polyfit(xy[:, 1], xy[:, 3], 1)
+    # the places are the values' affine images (to the screen's rounding of 1e-9 px or so)
+    assert np.abs(np.polyval(sx, xy[:, 0]) - xy[:, 2]).max() < 1e-6
+    assert np.abs(np.polyval(sy, xy[:, 1]) - xy[:, 3]).max() < 1e-6
+    return float(sx[0]), float(sy[0])
+
+
 def test_the_plots_carry_the_points_the_fitted_wire_and_the_residuals(server, page, bent):
     page.goto(f"{server}/bent-wire")
     page.set_input_files("#f-data", str(bent))
@@ -250,51 +292,197 @@ def test_the_plots_carry_the_points_the_fitted_wire_and_the_residuals(server, pa
     x, y = _read(bent)
     fit = fit_bent_wire(x, y, float(bending_stiffness(Material.from_name("ZnO").E, RADIUS)))
 
-    # the profile: the file's points in nm, the midpoint, and the wire (401 points)
-    dots = page.locator("#plot-svg circle")
-    xy = np.array(
-        dots.evaluate_all("cs => cs.map((c) => [c.dataset.x, c.dataset.y, c.getAttribute('cx'), "
-                          "c.getAttribute('cy')].map(Number))")
-    )  # fmt: skip
-    assert len(xy) == len(x) + 1
-    np.testing.assert_allclose(xy[: len(x), 0], x * 1e9, rtol=1e-12)
-    np.testing.assert_allclose(xy[: len(x), 1], y * 1e9, rtol=1e-12)
-    np.testing.assert_allclose(xy[-1, :2], np.array(fit.midpoint) * 1e9, rtol=1e-6)
-    # equal scales: a nanometre is as long across as up
-    sx = np.polyfit(xy[:, 0], xy[:, 2], 1)[0]
-    sy = np.polyfit(xy[:, 1], xy[:, 3], 1)[0]
-    assert sx > 0 and sy == pytest.approx(-sx, rel=1e-9)
-    curve = page.locator("#plot-svg polyline.series")
-    assert curve.count() == 1
-    screen = np.array(
-        [[float(v) for v in q.split(",")] for q in curve.get_attribute("points").split()]
-    )
+    # the profile in the wire's frame (the rotation from the API's midpoint and angles), nm
+    along, across = _frame(fit, x, y)
+    assert np.ptp(across) < 0.05 * np.ptp(along)  # bent little: straight at equal scales
+    xy = _dots(page, "plot-svg")
+    assert len(xy) == len(x) + 1  # the points, then the midpoint
+    np.testing.assert_allclose(xy[: len(x), 0], along * 1e9, rtol=0, atol=1e-4)
+    np.testing.assert_allclose(xy[: len(x), 1], across * 1e9, rtol=0, atol=1e-4)
+    assert xy[-1, 0] == 0 and xy[-1, 1] == 0  # the midpoint at the origin
+    assert across[[0, -1]].max() < -10e-9  # the ends lag behind the midpoint
+    # not at equal scales: a nanometre across is drawn longer than one along, by the
+    # factor the caption says
+    sx, sy = _scales(xy)
+    assert sx > 0 and sy < 0
+    factor = -sy / sx
+    assert factor > 5
+    caption = page.inner_text("#plot figcaption")
+    said = re.search(r"The transverse scale is exaggerated ×([\d.]+)", caption)
+    assert said is not None, caption
+    assert float(said.group(1)) == pytest.approx(factor, rel=1e-3)
+    assert "along the wire's axis [nm]" in page.locator("#plot-svg").text_content()
+    assert "across it, towards the drag [nm]" in page.locator("#plot-svg").text_content()
+    # the fitted wire (401 points), back from the screen to nm by the points' own scale
+    screen = _polyline(page, "plot-svg")
     assert len(screen) == 401
-    # back from the screen to nm by the points' own scale: the fitted wire of the API
     b = np.polyfit(xy[:, 2], xy[:, 0], 1)
     c = np.polyfit(xy[:, 3], xy[:, 1], 1)
-    wire = np.column_stack([np.polyval(b, screen[:, 0]), np.polyval(c, screen[:, 1])])
-    np.testing.assert_allclose(wire[:, 0], fit.curve_x * 1e9, atol=0.05)  # nm
-    np.testing.assert_allclose(wire[:, 1], fit.curve_y * 1e9, atol=0.05)
+    wire_along, wire_across = _frame(fit, fit.curve_x, fit.curve_y)
+    np.testing.assert_allclose(np.polyval(b, screen[:, 0]), wire_along * 1e9, atol=0.05)
+    np.testing.assert_allclose(np.polyval(c, screen[:, 1]), wire_across * 1e9, atol=0.01)
 
     # the residuals against the arc length, in nm, and the band of +-2 noises
-    res = np.array(
-        page.locator("#residuals-svg circle").evaluate_all(
-            "cs => cs.map((c) => [Number(c.dataset.x), Number(c.dataset.y)])"
-        )
-    )
+    res = _dots(page, "residuals-svg")
     assert len(res) == len(x)
     np.testing.assert_allclose(res[:, 0], fit.arc_length * 1e9, rtol=1e-6, atol=1e-6)
     np.testing.assert_allclose(res[:, 1], fit.residuals * 1e9, rtol=1e-6, atol=1e-6)
     assert page.locator("#residuals-svg polygon.band").count() == 1
     caption = page.inner_text("#residuals figcaption")
     assert f"±2 noises (±{_fmt(2 * fit.noise * 1e9)} nm)" in caption
+    assert page.inner_text("#normal-friction") == ""  # the held wire's f_n: not drawn
     assert page.locator("#download-svg").count() == 1  # the profile's plot downloads
     page.click("#details summary")  # the table open: no overflow at a desktop's and a phone's
     for width in (1280, 390):
         page.set_viewport_size({"width": width, "height": 900})
         over = page.evaluate("document.documentElement.scrollWidth - window.innerWidth")
         assert over <= 0, (width, over)
+
+
+# ------------------------------------------------------------------------------------------
+# the held wire
+
+
+def _held_curvature(s: np.ndarray) -> np.ndarray:
+    """l kappa(s) of the held profile: a shape the fit's modes do not contain exactly."""
+    return 3.0 * np.sin(np.pi * (s + 1) / 2) ** 2 * (1 + s / 2)
+
+
+def _held_profile(points: int = 250, noise: float = 3e-9, seed: int = 11) -> str:
+    """The CSV of a wire held at rest in the shape of :func:`_held_curvature` (x_nm,y_nm, end
+    to end, half-length 2.5 um), its tangent integrated by solve_ivp, with position noise."""
+    from scipy.integrate import solve_ivp
+
+    def rhs(s, u):
+        return [_held_curvature(s), np.cos(u[0]), np.sin(u[0])]
+
+    s = np.linspace(-1.0, 1.0, points)
+    sol = solve_ivp(rhs, (-1.0, 1.0), [0.0, 0.0, 0.0], t_eval=s, rtol=1e-12, atol=1e-14)
+    assert sol.success
+    rng = np.random.default_rng(seed)
+    x = sol.y[1] * HALF_LENGTH + noise * rng.standard_normal(points)
+    y = sol.y[2] * HALF_LENGTH + noise * rng.standard_normal(points)
+    rows = "".join(f"{a * 1e9:.4f},{b * 1e9:.4f}\n" for a, b in zip(x, y, strict=True))
+    return "x_nm,y_nm\n" + rows
+
+
+def _held_mean_friction(EI: float) -> float:
+    """The held profile's mean |f_n| = EI |kappa'' + kappa^3/2| along it [N/m], kappa''
+    by central differences on a fine grid (not the library's modes)."""
+    s = np.linspace(-1.0, 1.0, 40001)
+    k = _held_curvature(s)
+    kpp = np.gradient(np.gradient(k, s), s)
+    fn = EI / HALF_LENGTH**3 * (kpp + k**3 / 2)
+    return float(np.trapezoid(np.abs(fn), s) / 2)
+
+
+def test_the_held_model_gives_the_apis_static_friction_and_its_profile(
+    server, page, tmp_path, capsys
+):
+    held = tmp_path / "held.csv"
+    held.write_text(_held_profile())
+    page.goto(f"{server}/bent-wire")
+    assert page.input_value("#f-model") == "dragged"  # the default
+    options = page.locator("#f-model option").all_inner_texts()
+    assert options == ["dragged", "held"]
+    assert "held at rest (static friction)" in page.inner_text("#w-model label")
+    page.select_option("#a-elastic", "modulus")
+    page.fill("#f-modulus", "140")  # GPa
+    page.select_option("#f-model", "held")
+    page.set_input_files("#f-data", str(held))
+    text = _compute(page)
+    page.wait_for_selector("#normal-friction-svg", timeout=WAIT, state="attached")
+
+    # the Python API on the points read here
+    x, y = _read(held)
+    EI = float(bending_stiffness(MODULUS, RADIUS))
+    fit = fit_bent_wire(x, y, EI, model="held")
+    assert fit.model == "held" and fit.determined and fit.modes >= 2
+    assert not np.isfinite(fit.drag_angle)
+    # the profile's own mean |f_n|, by finite differences: inside the fit's interval
+    lo, hi = fit.friction_per_length_ci95
+    assert lo < _held_mean_friction(EI) < hi
+
+    f, f_text = _shown(page, "friction_per_length_N_per_m")
+    assert f == pytest.approx(fit.friction_per_length, rel=1e-8)
+    assert f_text == f"{_fmt(f / 1e-3)} nN/µm"
+    ci, ci_text = _shown(page, "friction_per_length_ci95_N_per_m")
+    assert ci == pytest.approx(fit.friction_per_length_ci95, rel=1e-8)
+    assert ci_text == f"{_fmt(ci[0] / 1e-3)} to {_fmt(ci[1] / 1e-3)} nN/µm"
+    boot, boot_text = _shown(page, "friction_per_length_bootstrap_ci95_N_per_m")
+    assert boot == pytest.approx(fit.friction_per_length_bootstrap_ci95, rel=1e-8)
+    assert (
+        "The static friction holding the wire, averaged along it: mean |f_n| = "
+        f"{f_text} (95 % interval {ci_text}; the bootstrap's, from 200 refits: {boot_text})."
+    ) in text
+    assert f"Fitted to 250 points, with {fit.modes} curvature modes" in text
+    g, _ = _shown(page, "friction_group")
+    assert g == pytest.approx(fit.friction_group, rel=1e-8)
+    assert "the friction group mean |f_n| l³/EI = " in text
+    assert "tau0 = mean |f_n|/(2a) is not computed" in text
+
+    # the command line the page shows, run here: the same numbers
+    line = page.inner_text("#cli")
+    assert "--model held" in line and "--data held.csv" in line
+    argv = shlex.split(line)[1:]
+    argv[argv.index("--data") + 1] = str(held)
+    cli = _cli(capsys, argv)
+    assert cli["modes"] == fit.modes and cli["drag_angle"] is None
+    for key, value in [
+        ("friction_per_length_N_per_m", f),
+        ("friction_per_length_ci95_N_per_m", ci),
+        ("friction_per_length_bootstrap_ci95_N_per_m", boot),
+    ]:
+        assert cli[key] == pytest.approx(value, rel=1e-8), key
+
+    # the profile in the wire's frame (across: the axis turned by +90 degrees), at equal
+    # scales: the held wire is bent much
+    along, across = _frame(fit, x, y)
+    xy = _dots(page, "plot-svg")
+    assert len(xy) == len(x) + 1
+    np.testing.assert_allclose(xy[: len(x), 0], along * 1e9, rtol=0, atol=1e-3)
+    np.testing.assert_allclose(xy[: len(x), 1], across * 1e9, rtol=0, atol=1e-3)
+    sx, sy = _scales(xy)
+    assert sx > 0 and sy == pytest.approx(-sx, rel=1e-9)
+    assert "across it [nm]" in page.locator("#plot-svg").text_content()
+    assert "exaggerated" not in page.inner_text("#plot figcaption")
+    assert len(_dots(page, "residuals-svg")) == len(x)
+
+    # f_n along the wire [nN/um] against the arc length [nm]: the line is the record's
+    # normal_friction (an affine image of it and of curve_arc_length on the screen), the
+    # band its +-2 sd
+    fn = np.asarray(cli["normal_friction_N_per_m"]) * 1e3
+    sd = np.asarray(cli["normal_friction_sd_N_per_m"]) * 1e3
+    s = np.asarray(cli["curve_arc_length_m"]) * 1e9
+    assert len(fn) == len(sd) == len(s) == 401
+    np.testing.assert_allclose(
+        fn, fit.normal_friction * 1e3, rtol=1e-6, atol=1e-6 * np.abs(fn).max()
+    )
+    assert np.mean(np.abs(fn)) == pytest.approx(f * 1e3, rel=0.01)  # its mean |f_n|
+    screen = _polyline(page, "normal-friction-svg")
+    assert len(screen) == 401
+    bx = np.polyfit(s, screen[:, 0], 1)
+    by = np.polyfit(fn, screen[:, 1], 1)
+    assert bx[0] > 0 and by[0] < 0
+    assert np.abs(np.polyval(bx, s) - screen[:, 0]).max() < 1e-6
+    assert np.abs(np.polyval(by, fn) - screen[:, 1]).max() < 1e-6
+    # the y axis's ticks read in nN/um: each label (3 digits) is the value at its place
+    ticks = page.locator("#normal-friction-svg text[text-anchor='end']").evaluate_all(
+        "ts => ts.map((t) => [Number(t.getAttribute('y')), Number(t.textContent)])"
+    )
+    assert len(ticks) == 5
+    for place, label in ticks:
+        value = (place - 4 - by[1]) / by[0]
+        assert label == pytest.approx(value, rel=5.01e-3, abs=1e-3 * np.ptp(fn))
+    band = page.locator("#normal-friction-svg polygon.band")
+    assert band.count() == 1
+    edge = np.array(
+        [[float(v) for v in q.split(",")] for q in band.get_attribute("points").split()]
+    )
+    assert len(edge) == 2 * 401
+    np.testing.assert_allclose(edge[:401, 1], np.polyval(by, fn + 2 * sd), atol=1e-3)
+    np.testing.assert_allclose(edge[401:, 1], np.polyval(by, (fn - 2 * sd)[::-1]), atol=1e-3)
+    assert "f_n [nN/µm]" in page.locator("#normal-friction-svg").text_content()
 
 
 def test_an_undetermined_friction_and_no_interface_are_said(server, page, tmp_path):

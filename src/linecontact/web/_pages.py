@@ -326,7 +326,9 @@ PAGES: dict[str, dict[str, Any]] = {
     "bent-wire": {
         "title": "Friction from the shape of a bent wire (profile upload)",
         "question": "Which friction per unit length f (and interfacial shear strength tau0) "
-        "bent the wire dragged at its midpoint into the shape imaged?",
+        "bent the wire dragged at its midpoint into the shape imaged, or, for a wire held at "
+        "rest in its bent shape, which static friction holds it there (its mean |f_n| along "
+        "the wire, and f_n along it)?",
         "command": "fit-bent-wire",
         "upload": True,
         "upload_label": "the wire's profile (CSV: x_nm,y_nm, points from end to end)",
@@ -346,6 +348,13 @@ PAGES: dict[str, dict[str, Any]] = {
             },
         },
         "fields": [
+            _f(
+                "model",
+                "the model: dragged at its midpoint (kinetic friction) or held at rest "
+                "(static friction)",
+                "choice",
+                "dragged",
+            ),
             _f("cylinder_material", "wire material", "material", "ZnO", alt="elastic:presets"),
             _f("modulus", "wire's Young's modulus E", "modulus", "1.4e11", alt="elastic:modulus"),
             _f(
@@ -396,7 +405,7 @@ PAGES: dict[str, dict[str, Any]] = {
             "x": {"key": "x_m", "kind": "length", "label": "x"},
             "ys": [{"key": "y_m", "kind": "length", "label": "y"}],
         },
-        "figures": ["residuals"],
+        "figures": ["residuals", "normal-friction"],
     },
     "map": {
         "title": "The adhesion map (quick grid), your wire marked",

@@ -431,28 +431,32 @@
     },
     "bent-wire"(doc) {
       const r = rec(doc), q = doc.parameters || {};
+      const held = q.model === "held"; // a wire held at rest: f is the mean |f_n| along it
       const f = (si) => fmt(si / 1e-3) + " nN/µm"; // = mN/m
       const finite = (k) => Array.isArray(r[k]) && r[k].length === 2 && r[k].every(Number.isFinite);
       const ci = (k, unit) => (finite(k) ? [val(k, r[k], `${unit(r[k][0]).split(" ")[0]} to ${unit(r[k][1])}`)] : ["—"]);
       const boot = finite("friction_per_length_bootstrap_ci95_N_per_m")
         ? [`; the bootstrap's, from ${q.bootstrap} refits: `, ...ci("friction_per_length_bootstrap_ci95_N_per_m", f)] : [];
-      const out = [p("The friction per unit length f = ", val("friction_per_length_N_per_m", r.friction_per_length_N_per_m, f(r.friction_per_length_N_per_m)),
+      const name = held ? "mean |f_n|" : "f";
+      const out = [p(held ? "The static friction holding the wire, averaged along it: mean |f_n| = " : "The friction per unit length f = ",
+        val("friction_per_length_N_per_m", r.friction_per_length_N_per_m, f(r.friction_per_length_N_per_m)),
         " (95 % interval ", ...ci("friction_per_length_ci95_N_per_m", f), ...boot, ").")];
       const nm = (si) => fmt(si / 1e-9) + " nm";
-      out.push(p(`Fitted to ${r.points} points: the wire's half-length l = `, val("half_length_m", r.half_length_m, qty(r.half_length_m, "length", ["radius"])),
-        ", the friction group f l³/EI = ", val("friction_group", r.friction_group, fmt(r.friction_group)), ", the position noise ",
+      const modes = held ? [`, with ${r.modes} curvature mode${r.modes === 1 ? "" : "s"} (as Schwarz's criterion chose them; f_n along the wire is plotted below)`] : [];
+      out.push(p(`Fitted to ${r.points} points`, ...modes, ": the wire's half-length l = ", val("half_length_m", r.half_length_m, qty(r.half_length_m, "length", ["radius"])),
+        `, the friction group ${name} l³/EI = `, val("friction_group", r.friction_group, fmt(r.friction_group)), ", the position noise ",
         val("noise_m", r.noise_m, nm(r.noise_m)), current && current.values.noise
           ? ` (as given; the residuals' estimate ${nm(r.noise_estimated_m)})` : " (the residuals' estimate)", "."));
       if (Number.isFinite(r.tau0_Pa)) {
-        out.push(p("The interfacial shear strength tau0 = f/(2a) = ", val("tau0_Pa", r.tau0_Pa, qty(r.tau0_Pa, "stress")),
+        out.push(p(`The interfacial shear strength tau0 = ${name}/(2a) = `, val("tau0_Pa", r.tau0_Pa, qty(r.tau0_Pa, "stress")),
           " (95 % interval ", ...ci("tau0_ci95_Pa", (x) => qty(x, "stress")), "), over a contact half-width a = ",
           val("contact_half_width_m", r.contact_half_width_m, nm(r.contact_half_width_m)), "."));
       } else {
-        out.push(p("tau0 = f/(2a) is not computed: it needs the contact's half-width a, from the work of adhesion w, z0 and the substrate (choose them under “tau0 = f/(2a)” above)."));
+        out.push(p(`tau0 = ${name}/(2a) is not computed: it needs the contact's half-width a, from the work of adhesion w, z0 and the substrate (choose them under “tau0 = f/(2a)” above).`));
       }
       const note = (r.note || "").split("; ").filter((x) => x && !x.startsWith("tau0 needs"));
       if (note.length || r.determined === false) {
-        const words = inWords(note.join("; ") || "the data do not determine f");
+        const words = inWords(note.join("; ") || `the data do not determine ${name}`);
         const said = p(r.determined === false ? "Beware: " + words[0].toLowerCase() + words.slice(1) : words, ".");
         said.id = "bent-wire-note";
         out.push(said);
@@ -814,20 +818,40 @@
     plot(layers, { xlabel: X.label, ylabel: Y.label, legend: rows ? "band: w at the ends of its 95 % interval, z0 at its fit;" : "" });
   }
 
-  // the bent wire's profile and the fitted wire over it, at equal scales; its residuals
-  // against the arc length from the midpoint, with the band of +-2 noises (figures/bent_wire)
+  // the bent wire's profile and the fitted wire over it in the wire's frame, as the library's
+  // figure draws them (figures/bent_wire): from the fitted midpoint, along the axis (angle a)
+  // and across it towards the drag (angle d; the held wire: a + pi/2). A dragged wire, bent
+  // by tens of nm over µm, looks straight at equal scales: its transverse scale is
+  // exaggerated; the held wire, bent much, is drawn at equal scales. Below, the residuals
+  // against the arc length from the midpoint with the band of +-2 noises; for the held wire,
+  // the friction normal to it, f_n, along it with its band of +-2 sd
   function bentPlot(doc) {
-    const r = rec(doc);
-    if (!Array.isArray(r.x_m) || !r.x_m.length || !Array.isArray(r.curve_x_m)) return;
-    const xs = [...r.x_m, ...r.curve_x_m], ys = [...r.y_m, ...r.curve_y_m];
-    const span = Math.max(Math.max(...xs) - Math.min(...xs), Math.max(...ys) - Math.min(...ys));
-    const [u, k] = span < 1e-4 ? ["nm", 1e-9] : ["µm", 1e-6];
+    const r = rec(doc), held = (doc.parameters || {}).model === "held";
+    const fnFig = $("normal-friction");
+    if (fnFig) fnFig.textContent = "";
+    if (!Array.isArray(r.x_m) || !r.x_m.length || !Array.isArray(r.curve_x_m) || !Array.isArray(r.midpoint_m)) return;
+    const a = r.axis_angle, d = Number.isFinite(r.drag_angle) ? r.drag_angle : a + Math.PI / 2;
+    const [mx, my] = r.midpoint_m;
+    const frame = (x, y) => [(x - mx) * Math.cos(a) + (y - my) * Math.sin(a), (x - mx) * Math.cos(d) + (y - my) * Math.sin(d)];
+    const pts = r.x_m.map((x, i) => frame(x, r.y_m[i])), wire = r.curve_x_m.map((x, i) => frame(x, r.curve_y_m[i]));
+    const all = [...pts, ...wire, [0, 0]];
+    const range = (j) => Math.max(...all.map((q) => q[j])) - Math.min(...all.map((q) => q[j]));
+    const [u, k] = Math.max(range(0), range(1)) < 1e-4 ? ["nm", 1e-9] : ["µm", 1e-6];
     const layers = [
-      { label: "the profile (data)", pts: r.x_m.map((x, i) => [x / k, r.y_m[i] / k]) },
-      { label: "the fitted wire", line: true, points: false, color: COLORS[1], pts: r.curve_x_m.map((x, i) => [x / k, r.curve_y_m[i] / k]) },
+      { label: "the profile (data)", pts: pts.map((q) => [q[0] / k, q[1] / k]) },
+      { label: "the fitted wire", line: true, points: false, color: COLORS[1], pts: wire.map((q) => [q[0] / k, q[1] / k]) },
+      { label: "its midpoint", color: COLORS[2], pts: [[0, 0]] },
     ];
-    if (Array.isArray(r.midpoint_m)) layers.push({ label: "its midpoint", color: COLORS[2], pts: [[r.midpoint_m[0] / k, r.midpoint_m[1] / k]] });
-    plot(layers, { xlabel: `x [${u}]`, ylabel: `y [${u}]`, equal: true, legend: "Equal scales (the residuals below show the fit's detail);" });
+    let scale = "Equal scales along and across (the residuals below show the fit's detail);";
+    if (!held) { // the transverse scale's exaggeration: the lengths per pixel, along over across
+      const AREA = [547, 300]; // plot()'s drawing area [px]: W - L - R by H - B - T
+      const factor = (range(0) / AREA[0]) / (range(1) * 1.1 / AREA[1]); // plot() pads y by 5 % each side
+      scale = factor >= 1.05 ? `The transverse scale is exaggerated ×${fmt(factor, 3)} (a wire bent this little looks straight at equal scales);`
+        : factor > 1 / 1.05 ? "Nearly equal scales along and across;"
+        : `The transverse scale is ×${fmt(factor, 2)} the axial;`;
+    }
+    plot(layers, { xlabel: `along the wire's axis [${u}]`, ylabel: held ? `across it [${u}]` : `across it, towards the drag [${u}]`,
+      equal: held, legend: `In the wire's frame, from its midpoint. ${scale}` });
     if (!Array.isArray(r.residuals_m) || !Array.isArray(r.arc_length_m)) return;
     const two = 2 * r.noise_m / 1e-9, ends = [-r.half_length_m / k, r.half_length_m / k];
     plot([
@@ -836,6 +860,15 @@
     ], { xlabel: `arc length from the midpoint [${u}]`, ylabel: "residual [nm]",
       legend: "Each point's signed distance to the fitted wire: noise leaves about 95 % inside the band and no long runs of one sign;" },
     null, "residuals", "residuals-svg");
+    const fn = r.normal_friction_N_per_m, sd = r.normal_friction_sd_N_per_m, s = r.curve_arc_length_m;
+    if (!held || !fnFig || !Array.isArray(fn) || !Array.isArray(s) || !Array.isArray(sd)) return;
+    const F = 1e-3; // N/m -> nN/µm
+    plot([
+      { label: "±2 sd", pts: [], band: s.map((x, i) => [x / k, (fn[i] - 2 * sd[i]) / F, (fn[i] + 2 * sd[i]) / F]), color: COLORS[1] },
+      { label: "f_n = EI(κ'' + κ³/2)", line: true, points: false, pts: s.map((x, i) => [x / k, fn[i] / F]), color: COLORS[1] },
+    ], { xlabel: `arc length from the midpoint [${u}]`, ylabel: "f_n [nN/µm]",
+      legend: `The static friction normal to the wire along it (its mean |f_n|, ${fmt(r.friction_per_length_N_per_m / F)} nN/µm, is the headline's);` },
+    null, "normal-friction", "normal-friction-svg");
   }
 
   // the motion map of the pushed wire: first motion over push height and friction stress
@@ -977,7 +1010,7 @@
     generation += 1;
     if (job) { clearTimeout(job); job = null; }
     clearMessages();
-    for (const id of ["answer", "plot", "motion", "residuals", "results", "downloads"]) if ($(id)) $(id).textContent = "";
+    for (const id of ["answer", "plot", "motion", "residuals", "normal-friction", "results", "downloads"]) if ($(id)) $(id).textContent = "";
     const main = inputs(false), aux = inputs(true);
     const errors = { ...main.errors, ...aux.errors };
     if (Object.keys(errors).length) { // nothing computed with a number the user did not mean
