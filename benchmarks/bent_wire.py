@@ -17,13 +17,14 @@ lengths, turned and moved, prints:
   covered the truth), all relative to f; and over ``--boot-draws`` draws the median width of
   the bootstrap's 95 % interval (200 refits).
 
-Measured on the 2-core development machine, shared (load 1.3 to 1.8), at c988a3d: the fit
-with its intervals 0.64-1.00 s (best of 3; single calls 0.64-1.66 s as the other load on
-the machine came and went, the same in a fresh process), the fit alone 0.008 s; the
-noiseless errors of f below 1e-11 for groups 0.03 to 27 (end lags 0.3 % to 86 % of l); at
+Measured on the 2-core development machine: the fit with its intervals 0.535 s (best of
+3, load 0.8, after a cell's two ends were gathered at once and the refits' feet moved by one
+Newton step; 0.64-1.00 s before, at c988a3d, on a shared machine), the fit alone 0.008 s;
+the noiseless errors of f below 1e-11 for groups 0.03 to 27 (end lags 0.3 % to 86 % of l); at
 2 nm noise and 500 points the scatter of f 0.33 % and the 95 % intervals 1.4 % wide
 (covariance and bootstrap alike), at 10 nm 1.7 % and 7.1-7.3 %; at 250 points 0.31 % and
-1.9 %, 2.4 % and 9.2-9.6 %; the covariance's intervals covered the truth in 79 of 80 draws.
+1.9 %, 2.4 % and 9.2-9.6 %; the covariance's intervals covered the truth in 79 of 80 draws
+(c988a3d).
 ``--draws 0`` prints the times and the noiseless errors alone.
 """
 
