@@ -404,6 +404,7 @@ def test_every_option_is_documented_and_every_command_has_examples(capsys):
         "materials",
         "fit-adhesion",
         "fit-friction",
+        "fit-bent-wire",
         "cite",
         "sweep",
         "serve",

@@ -39,8 +39,8 @@ def strict_json(text):
         (
             [],
             r"give a command: normal, pulloff, curve, slide-init, roll, cycle, history, slide, "
-            r"push, fit-adhesion, fit-friction, paper, figures, map, materials, sweep, serve or "
-            r"cite",
+            r"push, fit-adhesion, fit-friction, fit-bent-wire, paper, figures, map, materials, "
+            r"sweep, serve or cite",
         ),
         (
             ["curve", *G, "-o", "/nonexistent-dir/curve.csv"],

@@ -136,7 +136,7 @@ def test_every_card_of_the_gallery_has_its_figure(site):
         elif in_card and tag == "img":
             cards[-1].append(a["src"])
     examples = sorted(EXAMPLES.glob("*.py"))
-    assert len(cards) == len(examples) == 10, (len(cards), [e.name for e in examples])
+    assert len(cards) == len(examples) == 11, (len(cards), [e.name for e in examples])
     for images in cards:
         assert images, "a card without an image"
         src = images[0]

@@ -25,7 +25,7 @@ from __future__ import annotations
 
 from .elastica import DraggedWire, dragged_wire
 from .fit import MODELS, BentWireFit, fit_bent_wire
-from .sections import bending_stiffness, second_moment_of_area
+from .sections import bending_stiffness, bending_stiffness_sd, second_moment_of_area
 from .static import NormalFriction, StaticWire, normal_friction_from_curvature, static_wire
 
 __all__ = [
@@ -35,6 +35,7 @@ __all__ = [
     "NormalFriction",
     "StaticWire",
     "bending_stiffness",
+    "bending_stiffness_sd",
     "dragged_wire",
     "fit_bent_wire",
     "normal_friction_from_curvature",

@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from .. import inverse as inv
-from ..bent_wire import MODELS, bending_stiffness, fit_bent_wire
+from ..bent_wire import MODELS, bending_stiffness, bending_stiffness_sd, fit_bent_wire
 from ..cylinder import Cylinder
 from ..errors import ParameterError
 from ..geometry import NAMED_SIDES, cross_section
@@ -170,17 +170,15 @@ def _run(args: Inputs) -> Table:
             "--samples", f"--samples must be an integer in [10, 1000000], got {args.samples}"
         )
     try:
-        with np.errstate(over="ignore", invalid="ignore"):  # refused just below
+        with np.errstate(over="ignore", invalid="ignore", under="ignore"):  # refused below
             EI = float(bending_stiffness(E1, args.radius, **kw))
-            dR = float(bending_stiffness(E1, args.radius * (1 + 1e-6), **kw)) - EI
-        if not (math.isfinite(EI) and math.isfinite(dR) and EI > 0):
+            EI_sd = bending_stiffness_sd(E1, args.radius, **kw, modulus_sd=E_sd, radius_sd=R_sd)
+        if not (math.isfinite(EI) and math.isfinite(EI_sd) and EI > 0):
             raise ParameterError(
                 "--radius",
                 f"--radius {args.radius!r} m and --modulus {E1!r} Pa give no bending stiffness "
                 "(zero or not finite): are they in m and Pa?",
             )
-        # the stiffness's uncertainty from the radius's and the modulus's (by differences)
-        EI_sd = math.hypot(EI * E_sd / E1, dR / (1e-6 * args.radius) * R_sd)
     except ParameterError as exc:
         raise _flagged(exc) from None
     try:
