@@ -360,12 +360,18 @@ def extrema(F: NDArray) -> tuple[list[int], list[int]]:
 
 
 def turning_points(
-    mu: float, grid: _Grid, states: list[_Solved]
-) -> tuple[_Solved, _Solved | None, list[int]]:
-    """Pull-off (global minimum) and jump-in (the last maximum before it) of sampled states.
+    mu: float, grid: _Grid, states: list[_Solved], local_minimum: bool = True
+) -> tuple[_Solved, _Solved | None, _Solved | None, list[int]]:
+    """The extrema of sampled states, each located by :func:`refine`.
 
-    Raises ``ConvergenceError`` where either's error estimate exceeds :data:`_RESOLVED` of
-    it (the meshes do not resolve it: never a number that looks converged).
+    ``(pull-off, jump-in, local minimum, indices)``: the pull-off is the global minimum;
+    the jump-in the last maximum before it and the local minimum the last minimum before
+    that, where the curve is S-shaped (``None`` otherwise, or without ``local_minimum``);
+    ``indices`` those of the samples nearest each extremum of the sampled load. Each is
+    found by the same bracketed search (:func:`_parabola` on the curve's own solver), a
+    maximum with the opposite sign. Raises ``ConvergenceError`` where the estimate of any
+    exceeds :data:`_RESOLVED` of it (the meshes do not resolve it: never a number that
+    looks converged).
     """
     F = np.array([s.F for s in states])
     idx_min, idx_max = extrema(F)
@@ -373,17 +379,20 @@ def turning_points(
         raise fail("pull-off search (no minimum of the load)", mu, states[-1].zeta0)
     i_po = min(idx_min, key=lambda i: F[i])
     po = refine(mu, grid, states, i_po, 1.0)
-    jump = None
+    jump = low = None
     before = [i for i in idx_max if i < i_po]
     if before:  # the last maximum before the pull-off branch: the snap into contact
         jump = refine(mu, grid, states, before[-1], -1.0)
-    for what, t in (("pull-off", po), ("jump-in", jump)):
+        lows = [i for i in idx_min if i < before[-1]]
+        if lows and local_minimum:  # the local minimum of the S before it
+            low = refine(mu, grid, states, lows[-1], 1.0)
+    for what, t in (("pull-off", po), ("jump-in", jump), ("local minimum", low)):
         if t is not None and not t.error <= _RESOLVED * abs(t.F):
             raise ConvergenceError(
                 f"Lennard-Jones {what} not resolved at mu={mu!r}: its error estimate "
                 f"{t.error:.3g} exceeds {_RESOLVED:g} of the load {t.F:.6g}"
             )
-    return po, jump, sorted(idx_min + idx_max)
+    return po, jump, low, sorted(idx_min + idx_max)
 
 
 # ---------------------------------------------------------------------------------------
@@ -449,7 +458,7 @@ def pull_off_search(mu: float, grid: _Grid) -> tuple[_Solved, _Solved | None]:
         if a > _JUMP * states[-1].edge:
             states.append(_md_state(mu, grid, a))
         states = _bracket(mu, grid, states)
-    po, jump, _ = turning_points(mu, grid, states)
+    po, jump, _, _ = turning_points(mu, grid, states, local_minimum=False)
     return po, jump
 
 

@@ -106,15 +106,44 @@ def _check_mu(mu) -> float:
 
 @dataclass(frozen=True)
 class LJCurve(Result):
-    """The load curve ``F(g0)`` under the Lennard-Jones law (nondimensional, as :class:`LJState`).
+    r"""The load curve ``F(g0)`` under the Lennard-Jones law (nondimensional, as :class:`LJState`).
 
     Columns (one per point, the central gap decreasing): ``central_gap_over_z0``, ``F``,
     ``error_estimate``, ``half_width``, ``stable`` (under load control: :math:`dF/dg_0 < 0`) and
     ``turning`` (the extrema of the load: pull-off and, where the curve is S-shaped, the
-    jump-in load and the local minimum before it). ``pull_off`` holds the pull-off point.
+    jump-in load and the local minimum before it). The extrema are located (a bracketed
+    search on the solver, not the nearest sample) and are points of the curve; ``turning``
+    marks them. ``error_estimate`` bounds the error of ``F`` at the point's central gap:
+    the largest Richardson estimate of the point and its two neighbours, plus
+    :math:`|dF/dg_0|` times the estimated error of the central gap (a state held at its edge
+    has its central gap extrapolated too). ``pull_off`` holds the pull-off point.
+
+    Attributes
+    ----------
+    F_local_minimum, central_gap_at_local_minimum : float
+        The local minimum of the S-shaped curve (before the jump-in, the central gap
+        decreasing) and where it occurs; ``nan`` where the curve has one minimum.
+    F_local_minimum_error_estimate, central_gap_at_local_minimum_error_estimate : float
+        Their estimated errors. The central gap of an extremum is ill-conditioned: its
+        estimate is :math:`\sqrt{2 \epsilon_F/|F''|}` (the gaps whose load lies within the
+        load's estimate :math:`\epsilon_F` of the extremum) plus the central gap's own.
+    F_jump_in_error_estimate, central_gap_at_jump_in_error_estimate : float
+        The same for the jump-in (``pull_off.F_jump_in``); ``nan`` where there is none.
+    central_gap_at_pulloff_error_estimate : float
+        The same for the pull-off's central gap (its load's estimate is
+        ``pull_off.error_estimate``).
     """
 
     inputs: ClassVar[tuple[str, ...]] = ("mu",)
+    whole: ClassVar[tuple[str, ...]] = (
+        "F_local_minimum",
+        "central_gap_at_local_minimum",
+        "F_local_minimum_error_estimate",
+        "central_gap_at_local_minimum_error_estimate",
+        "F_jump_in_error_estimate",
+        "central_gap_at_jump_in_error_estimate",
+        "central_gap_at_pulloff_error_estimate",
+    )
 
     central_gap_over_z0: NDArray
     F: NDArray
@@ -124,6 +153,13 @@ class LJCurve(Result):
     turning: NDArray
     mu: float
     pull_off: LJPullOff = field(repr=False)
+    F_local_minimum: float = math.nan
+    central_gap_at_local_minimum: float = math.nan
+    F_local_minimum_error_estimate: float = math.nan
+    central_gap_at_local_minimum_error_estimate: float = math.nan
+    F_jump_in_error_estimate: float = math.nan
+    central_gap_at_jump_in_error_estimate: float = math.nan
+    central_gap_at_pulloff_error_estimate: float = math.nan
 
 
 @dataclass(frozen=True)
@@ -178,6 +214,20 @@ def _pull_off_of(mu, po, jump) -> LJPullOff:
         n=int(po.mesh.nodes.size),
         converged=True,
     )
+
+
+def _gap_of_extremum(z: NDArray, F: NDArray, k: int, error: float) -> float:
+    r"""The uncertainty of the central gap of the extremum ``k`` of the curve ``(z, F)``.
+
+    :math:`\sqrt{2 \epsilon/|F''|}`, :math:`F''` of the parabola through the point and its two
+    neighbours: the central gaps where the load lies within its error ``error`` of the
+    extremum (a flat minimum fixes its place only to the root of its load's error).
+    """
+    if k == 0 or k == z.size - 1:
+        return math.nan
+    x, y = z[k - 1 : k + 2], F[k - 1 : k + 2]
+    d2 = 2.0 * ((y[2] - y[1]) / (x[2] - x[1]) - (y[1] - y[0]) / (x[1] - x[0])) / (x[2] - x[0])
+    return math.sqrt(2.0 * error / abs(d2)) if d2 != 0.0 else math.inf
 
 
 #: Default end of a curve: three times the rigid cylinder's pull-off, compressive.
@@ -238,22 +288,48 @@ class LJContinuation:
         states = states[
             : 1 + next(i for i, s in enumerate(states) if s.F >= F_max and s.half_width > 0)
         ]
-        po, jump, turns = _b.turning_points(mu, grid, states)
-        z = np.array([s.central_gap for s in states])
-        F = np.array([s.F for s in states])
+        po, jump, low, _ = _b.turning_points(mu, grid, states)
+        located = [t for t in (po, jump, low) if t is not None]
+        points = sorted(
+            states + [t for t in located if not any(t is s for s in states)],
+            key=lambda s: -s.central_gap,
+        )
+        z = np.array([s.central_gap for s in points])
+        F = np.array([s.F for s in points])
         with np.errstate(divide="ignore", invalid="ignore"):
             dF = np.gradient(F, z)
+        own = np.array([s.error for s in points])
+        near = np.maximum(own, np.maximum(np.r_[own[1:], 0.0], np.r_[0.0, own[:-1]]))
+        gap_error = np.array([s.gap_error for s in points])
         turning = np.zeros(z.size, bool)
-        turning[turns] = True
+        at = {id(s): i for i, s in enumerate(points)}
+        for t in located:
+            turning[at[id(t)]] = True
+
+        def where(t: _Solved | None) -> tuple[float, float]:
+            """The estimates of an extremum's load and central gap."""
+            if t is None:
+                return math.nan, math.nan
+            k = at[id(t)]
+            return float(near[k]), _gap_of_extremum(z, F, k, float(near[k])) + t.gap_error
+
+        lo, jp, pk = where(low), where(jump), where(po)
         return LJCurve(
             central_gap_over_z0=z,
             F=F,
-            error_estimate=np.array([s.error for s in states]),
-            half_width=np.array([s.half_width for s in states]),
+            error_estimate=near + np.abs(np.nan_to_num(dF)) * gap_error,
+            half_width=np.array([s.half_width for s in points]),
             stable=dF < 0,
             turning=turning,
             mu=mu,
             pull_off=_pull_off_of(mu, po, jump),
+            F_local_minimum=math.nan if low is None else low.F,
+            central_gap_at_local_minimum=math.nan if low is None else low.central_gap,
+            F_local_minimum_error_estimate=lo[0],
+            central_gap_at_local_minimum_error_estimate=lo[1],
+            F_jump_in_error_estimate=jp[0],
+            central_gap_at_jump_in_error_estimate=jp[1],
+            central_gap_at_pulloff_error_estimate=pk[1],
         )
 
     @on_one_blas_thread

@@ -436,6 +436,9 @@ class _Solved:
     mesh: _Mesh
     edge: float = 0.0  # where the gap crosses _EDGE_GAP z0 (the edge held, or found)
     central_gap: float = math.nan  # reported: zeta0, or its extrapolation at an edge held
+    #: estimated error of ``central_gap`` (0 where it is the control held): the change of its
+    #: extrapolation from the coarser pair of meshes, as the load's ``error``
+    gap_error: float = 0.0
 
 
 def _solve(zeta0: float, mu: float, meshes: tuple[_Mesh, _Mesh, _Mesh], guess) -> _Solved | None:
@@ -512,14 +515,16 @@ def _finish(
     if len(loads) == 3:
         c = loads[2]
         error = max(abs(r_fine - (m + (m - c) / 3.0)), 1e-15 * abs(r_fine))
+        gap_error = abs(gap - (gaps[1] + (gaps[1] - gaps[2]) / 3.0))
     else:  # the coarsest mesh cannot hold the state: the whole change of the load
         error = abs(f - m)
+        gap_error = abs(gaps[0] - gaps[1])
     P = _law(zeta)[0]
     rigid = zeta0 + 0.5 * fine.nodes**2
     res = float(np.max(np.abs(zeta - rigid + (2 * mu / math.pi) * (fine.K @ P)) / zeta))
     hw = _half_width(fine.nodes, zeta)
     e = _half_width(fine.nodes, zeta, _EDGE_GAP) if edge is None else edge
-    return _Solved(zeta0, r_fine, error, f, hw, res, zeta, fine, e, gap)
+    return _Solved(zeta0, r_fine, error, f, hw, res, zeta, fine, e, gap, gap_error)
 
 
 def _check_m(m) -> int:
