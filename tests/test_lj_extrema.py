@@ -37,10 +37,20 @@ def test_every_point_of_the_curve_within_its_estimate_of_a_refined_state(pair):
     # state is the more accurate, and the difference reached 0.44 of the estimate at most
     # (mu = 30). The Richardson estimate of the state alone, without the neighbours and the
     # central gap's term, was exceeded up to 9 times (against m = 1280) and fails here.
+    # The half-width likewise (the fine mesh's crossing of z0, its estimate the largest
+    # change from the middle mesh among the point and its neighbours).
     mu, c, ref, _ = pair
-    for g, F, est in zip(c.central_gap_over_z0, c.F, c.error_estimate, strict=True):
+    for g, F, est, w, west in zip(
+        c.central_gap_over_z0,
+        c.F,
+        c.error_estimate,
+        c.half_width,
+        c.half_width_error_estimate,
+        strict=True,
+    ):
         s = ref.state(float(g))
         assert abs(s.F - F) <= est, (mu, g, F, s.F, est)
+        assert abs(s.half_width - w) <= west, (mu, g, w, s.half_width, west)
 
 
 def test_the_located_extrema_agree_with_the_refined_ones_within_their_estimates(pair):

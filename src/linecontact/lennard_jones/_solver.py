@@ -439,6 +439,8 @@ class _Solved:
     #: estimated error of ``central_gap`` (0 where it is the control held): the change of its
     #: extrapolation from the coarser pair of meshes, as the load's ``error``
     gap_error: float = 0.0
+    #: estimated error of ``half_width`` (extrapolated as the load; :func:`_finish`)
+    half_width_error: float = 0.0
 
 
 def _solve(zeta0: float, mu: float, meshes: tuple[_Mesh, _Mesh, _Mesh], guess) -> _Solved | None:
@@ -497,6 +499,7 @@ def _finish(
     fine = meshes[0]
     loads = [2.0 * float(fine.w @ _law(zeta)[0])]
     gaps = [zeta0]
+    widths = [_half_width(fine.nodes, zeta)]
     for k, mesh in enumerate(meshes[1:], start=1):
         if edge is None:
             zk, _, okk = _newton(zeta0, mu, mesh, zeta[:: 2**k])
@@ -507,6 +510,7 @@ def _finish(
             break
         loads.append(2.0 * float(mesh.w @ _law(zk)[0]))
         gaps.append(z0k)
+        widths.append(_half_width(mesh.nodes, zk))
     if len(loads) == 1:  # the middle mesh cannot hold the state: no estimate
         return None
     f, m = loads[:2]
@@ -522,9 +526,23 @@ def _finish(
     P = _law(zeta)[0]
     rigid = zeta0 + 0.5 * fine.nodes**2
     res = float(np.max(np.abs(zeta - rigid + (2 * mu / math.pi) * (fine.K @ P)) / zeta))
-    hw = _half_width(fine.nodes, zeta)
+    hw, hw_error = _extrapolated_width(widths)
     e = _half_width(fine.nodes, zeta, _EDGE_GAP) if edge is None else edge
-    return _Solved(zeta0, r_fine, error, f, hw, res, zeta, fine, e, gap, gap_error)
+    return _Solved(zeta0, r_fine, error, f, hw, res, zeta, fine, e, gap, gap_error, hw_error)
+
+
+def _extrapolated_width(widths: list[float]) -> tuple[float, float]:
+    """The half-width of the repulsive region and its estimate from the meshes' widths.
+
+    Each mesh's width is where its gap crosses ``z0`` (linear between its nodes). The fine
+    mesh's width, its estimate the whole change from the middle mesh's: extrapolated as the
+    load, the width moved by as much as the change itself from one state to the next (the
+    crossing within an element is not a smooth function of the element's size).
+    """
+    w = widths
+    if len(w) < 2:
+        return w[0], math.inf
+    return w[0], abs(w[0] - w[1])
 
 
 def _check_m(m) -> int:
