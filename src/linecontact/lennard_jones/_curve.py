@@ -308,10 +308,15 @@ class LJContinuation:
         ]
         po, jump, low, _ = _b.turning_points(mu, grid, states)
         located = [t for t in (po, jump, low) if t is not None]
-        points = sorted(
-            states + [t for t in located if not any(t is s for s in states)],
-            key=lambda s: -s.central_gap,
-        )
+        extra = [t for t in located if not any(t is s for s in states)]
+        # a sample solved again at its own central gap (the search found nothing better)
+        # gives way to the located state: the central gap stays strictly decreasing
+        kept = [
+            s
+            for s in states
+            if not any(abs(s.central_gap - t.central_gap) <= 1e-5 * t.central_gap for t in extra)
+        ]
+        points = sorted(kept + extra, key=lambda s: -s.central_gap)
         z = np.array([s.central_gap for s in points])
         F = np.array([s.F for s in points])
         with np.errstate(divide="ignore", invalid="ignore"):
