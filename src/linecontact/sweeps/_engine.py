@@ -1,11 +1,13 @@
 """Running a sweep: its blocks in this process, or on Dask workers; kept as they finish.
 
 ``workers=1`` (and no scheduler) computes the blocks here, one after the other. More workers
-start a :class:`dask.distributed.LocalCluster` of processes; ``scheduler="tcp://host:port"``
-sends the blocks to a running ``dask.distributed`` cluster (its workers need linecontact
-installed; they return the blocks here, so they need no shared disk). Either way the blocks
-are the same computations and give the same dataset. A progress bar on stderr (tqdm) counts
-the points.
+compute them in a pool of that many local processes (forked where the system can, one BLAS
+thread each): the cheapest executor on one machine, which a local Dask cluster is not (its
+scheduler, nannies and serialisation made a 2-worker sweep slower than one). ``scheduler=
+"tcp://host:port"`` sends the blocks to a running ``dask.distributed`` cluster (its workers
+need linecontact installed; they return the blocks here, so they need no shared disk). Either
+way the blocks are the same computations and give the same dataset. A progress bar on
+stderr (tqdm) counts the points.
 """
 
 from __future__ import annotations
@@ -245,6 +247,55 @@ def _local(p: Plan, todo: list[int], bl: list[tuple[slice, ...]]) -> Iterator[Bl
         yield evaluate(p, k, bl[k])
 
 
+def _one_thread() -> None:
+    """A pool worker's start: one BLAS thread (the workers share the cores among them)."""
+    from threadpoolctl import threadpool_limits
+
+    threadpool_limits(1)
+
+
+def _processes(
+    p: Plan, todo: list[int], bl: list[tuple[slice, ...]], workers: int
+) -> Iterator[Block]:
+    """The blocks ``todo`` in a pool of ``workers`` local processes, as they finish.
+
+    Forked where the system can (the workers inherit the imported library: no start-up, and
+    a script needs no ``if __name__ == "__main__"`` guard), else spawned; at most two blocks
+    a worker in flight, the rest queued here; ended at the first failure or interrupt.
+    """
+    import multiprocessing
+    from concurrent.futures import FIRST_COMPLETED, Future, ProcessPoolExecutor, wait
+
+    method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
+    with warnings.catch_warnings():
+        # Python >= 3.12 warns that fork() in a process with threads (BLAS pools) may
+        # deadlock the child; the workers run NumPy and SciPy only, as the map's
+        warnings.filterwarnings("ignore", message=".*fork.*", category=DeprecationWarning)
+        pool = ProcessPoolExecutor(
+            workers, mp_context=multiprocessing.get_context(method), initializer=_one_thread
+        )
+    queue = list(todo)
+    running: set[Future[Block]] = set()
+    try:
+        with warnings.catch_warnings():
+            warnings.filterwarnings("ignore", message=".*fork.*", category=DeprecationWarning)
+            while queue and len(running) < 2 * workers:
+                k = queue.pop(0)
+                running.add(pool.submit(evaluate, p, k, bl[k]))
+        while running:
+            finished, running = wait(running, return_when=FIRST_COMPLETED)
+            for fut in finished:
+                block = fut.result()
+                if queue:
+                    k = queue.pop(0)
+                    running.add(pool.submit(evaluate, p, k, bl[k]))
+                yield block
+    except BaseException:
+        pool.shutdown(wait=False, cancel_futures=True)
+        raise
+    pool.shutdown(wait=True)
+
+
 #: Seconds to wait for a scheduler to answer (a TCP connection, then Dask's handshake).
 CONNECT_TIMEOUT = 10.0
 
@@ -466,6 +517,8 @@ def _compute(
             if client is not None:
                 client.close()
             stream = _local(p, todo, bl)
+        elif scheduler is None:
+            stream = _processes(p, todo, bl, min(workers, len(todo)))
         else:
             stream = _dask(p, todo, bl, workers, client)
         for block in stream:
