@@ -535,3 +535,24 @@ def test_the_progress_bar_is_on_stderr_when_asked(tmp_path, capsys):
     assert main([*argv, "-o", str(tmp_path / "b.zarr")]) == 0  # not a terminal: no bar
     out, err = capsys.readouterr()
     assert out == "" and "sweep pulloff" not in err and err.startswith("wrote ")
+
+
+def test_a_script_without_a_main_guard_runs_two_workers(tmp_path):
+    """The local pool forks where it can: a plain script's ``workers=2`` needs no guard (a
+    local Dask cluster spawned its workers, which re-ran the script and failed to start)."""
+    script = tmp_path / "plain.py"
+    script.write_text(
+        "import linecontact as lc\n"
+        "kw = dict(R_over_h='3:300:4:log', sigma0_over_E=[0.02, 0.2], law='lennard-jones')\n"
+        "two = lc.sweep('pulloff', **kw, chunk_points=2, workers=2)\n"
+        "one = lc.sweep('pulloff', **kw, chunk_points=2)\n"
+        "import numpy as np\n"
+        "a, b = two['F_pulloff_over_Eh'].values, one['F_pulloff_over_Eh'].values\n"
+        "print('same', bool(np.allclose(a, b, rtol=1e-9, atol=0)), a.size)\n"
+    )
+    env = {**os.environ, "OPENBLAS_NUM_THREADS": "1"}
+    done = subprocess.run(
+        [sys.executable, str(script)], env=env, capture_output=True, text=True, timeout=300
+    )
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert "same True 8" in done.stdout, done.stdout

@@ -1,4 +1,4 @@
-"""Parameter studies: every flag of a subcommand a range, labelled arrays out, on Dask.
+"""Parameter studies: every flag of a subcommand a range, labelled arrays out, in parallel.
 
 ``linecontact sweep COMMAND [its flags] -o OUT`` and :func:`sweep` run a subcommand over the
 outer product of the values of its swept flags (a flag with several values, or a range
@@ -9,7 +9,7 @@ provenance block in the attributes. Each point is what ``linecontact COMMAND`` g
 (the same code, the same checks); the Dugdale pull-off is computed a block at a time.
 
 The blocks are kept as they finish (``OUT.partial/``); the same command again goes on
-where a stopped run ended. ``workers`` > 1 runs them on a local Dask cluster of processes,
+where a stopped run ended. ``workers`` > 1 runs them in a pool of local processes,
 ``scheduler`` on a running ``dask.distributed`` cluster. Needs the extra ``[sweep]``
 (xarray, dask[distributed], zarr, netCDF4, tqdm, pandas). docs/sweeps.md.
 """
@@ -82,7 +82,7 @@ def sweep(
         A store to write (``.zarr`` or ``.nc``); the blocks kept as they finish, so that the
         same call again goes on where a stopped one ended. None: in memory.
     workers : int
-        Processes of a local Dask cluster (1: this process).
+        Local processes (1: this process).
     scheduler : str, optional
         The address of a running ``dask.distributed`` scheduler.
     progress : bool or None
