@@ -154,10 +154,22 @@ def _task(task: tuple[int, float, NDArray, str | None, str]) -> tuple[int, _Row]
     return k, row
 
 
-def _worker_init(row_of: Callable[[float, NDArray], _Row]) -> None:
-    """Ctrl-C stops the map in the parent process, which then ends the workers."""
+def _worker_init(row_of: Callable[[float, NDArray], _Row], blas: int | None) -> None:
+    """Ctrl-C stops the map in the parent process, which then ends the workers.
+
+    A worker runs ``blas`` BLAS threads (the cores shared among the workers; None: as the
+    user's environment says): a forked one
+    inherits the parent's BLAS already started with its threads, which the environment
+    (:func:`_blas_threads`, for spawned ones) no longer sets. With two forked workers each
+    on the parent's two threads, the map took as long as on one worker.
+    """
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     _ROW[:] = [row_of]
+    if blas is not None:
+        import scipy.linalg  # noqa: F401 - SciPy's BLAS loads lazily: loaded, then limited
+        from threadpoolctl import threadpool_limits
+
+        threadpool_limits(blas)
 
 
 _BLAS_THREADS = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
@@ -199,12 +211,16 @@ def _run(
 
     method = "fork" if "fork" in multiprocessing.get_all_start_methods() else "spawn"
     ctx = multiprocessing.get_context(method)
-    with warnings.catch_warnings(), _blas_threads(max(1, _cores() // workers)):
+    blas = max(1, _cores() // workers)
+    said = any(v in os.environ for v in _BLAS_THREADS)  # the user's word stands
+    with warnings.catch_warnings(), _blas_threads(blas):
         # Python >= 3.12 warns that fork() in a process with threads (BLAS pools) may
         # deadlock the child; the workers only run NumPy and SciPy, as the figures' worker
         warnings.filterwarnings("ignore", message=".*fork.*", category=DeprecationWarning)
         # the row's function reaches forked workers as it is, spawned ones by name
-        pool = ctx.Pool(workers, initializer=_worker_init, initargs=(row_of,))
+        pool = ctx.Pool(
+            workers, initializer=_worker_init, initargs=(row_of, None if said else blas)
+        )
     try:
         for k, row in pool.imap_unordered(_task, sorted(tasks, key=lambda t: -t[1])):
             done(k, row)

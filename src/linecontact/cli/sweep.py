@@ -140,9 +140,7 @@ def register(sub: Any) -> None:
     )
     g = sw.add_argument_group("the sweep's own options (anywhere among the flags)")
     g.add_argument("-o", "--output", metavar="OUT", help="the store: OUT.zarr or OUT.nc (required)")
-    g.add_argument(
-        "--workers", type=int, metavar="N", help="local processes (default: the cores)"
-    )
+    g.add_argument("--workers", type=int, metavar="N", help="local processes (default: the cores)")
     g.add_argument("--scheduler", metavar="ADDRESS", help="a dask.distributed scheduler instead")
     g.add_argument("--chunk-points", type=int, metavar="N", help="the most points of a block")
     g.add_argument(
