@@ -20,6 +20,7 @@ from .._validation import (
     broadcast,
     scalar_or_array,
 )
+from ..closed_forms.maugis_dugdale import _at_minimum
 from ..results import SI, Result, as_result
 from ..sie import _in_chunks
 from .contact import _ustar
@@ -98,7 +99,8 @@ def _pulloff_arrays(rho: NDArray, s: NDArray, scalar: bool = False, keys=None):
     points (bounded memory for any number of them).
     """
     if scalar:
-        return _pulloff_flat(*_num._scalars(rho, s))
+        rho0, s0 = _num._scalars(rho, s)
+        return _pulloff_flat(rho0, s0, keys)
     shape = np.shape(rho)
     rho = np.asarray(rho, dtype=float).reshape(-1)
     s = np.asarray(s, dtype=float).reshape(-1)
@@ -118,13 +120,13 @@ def _pulloff_flat(rho: NDArray, s: NDArray, keys=None):
     fin = np.isfinite(us)
     with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
         uf = where(fin, us, 1.0)  # kappa = 0: no interior minimum (any finite u will do)
-        bp = _cf._branch_point(uf, kap)
+        abar, X, Ct, phi = _at_minimum(uf, kap)
         sq = np.sqrt(2 / rho)
-        A_min = where(fin, bp["abar"] * sq, 0.0)
-        C_min = where(fin, bp["X"] * bp["Ct"] * sq, 0.0)
-        F_min = where(fin, _num._minimum((np.pi / 2) * bp["phi"], F0), F0)
+        A_min = where(fin, abar * sq, 0.0)
+        C_min = where(fin, X * Ct * sq, 0.0)
+        F_min = where(fin, _num._minimum((np.pi / 2) * phi, F0), F0)
         # the load minimum along the branch in units of Phi = (2/pi) F/(Eh) (contact_for_load)
-        phi_min = where(fin, _num._minimum(bp["phi"], F0 * (2 / np.pi)), F0 * (2 / np.pi))
+        phi_min = where(fin, _num._minimum(phi, F0 * (2 / np.pi)), F0 * (2 / np.pi))
     zero_c = sq * 2 / (kap * _cf.LN2 + np.sqrt(kap * kap * _cf.LN2**2 + 4))
     # the pull-off force is the minimum of the load, at the width of u* (however small: the
     # stability of every state is judged against it); the label says whether the contact
@@ -191,7 +193,21 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     scalar = scalar_or_array(rho, s)
     rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     _cf._check_kappa(rho, s)
-    d = _pulloff_arrays(rho, s, scalar)
-    del d["us"], d["phi_min"]
+    d = _pulloff_arrays(rho, s, scalar, _PUBLIC_KEYS)
+    # the minimum is the pull-off: the same arrays under both names (no copy per name)
+    d["F_minimum_over_Eh"] = d["F_pulloff_over_Eh"]
+    d["a_over_R_at_minimum"] = d["a_over_R_at_pulloff"]
     lam = _cf._maugis_parameter(rho, s)
     return as_result(PullOff, scalar, R_over_h=rho, sigma0_over_E=s, maugis_parameter=lam, **d)
+
+
+#: The entries of :func:`_pulloff_flat` that :func:`pull_off` returns, but for the two it
+#: names twice (joined once: a 1e7-point call holds no array it does not return).
+_PUBLIC_KEYS = (
+    "F_pulloff_over_Eh",
+    "a_over_R_at_pulloff",
+    "c_over_R_at_pulloff",
+    "mechanism",
+    "F_zero_width_over_Eh",
+    "kappa",
+)
