@@ -291,24 +291,19 @@ def _u_stationary(kap: NDArray | np.float64) -> NDArray | np.float64:
         u_large = np.sqrt(4 / (kap * kap) + LN2 * LN2)
         u0 = _where(u_small < 1.0, u_small, u_large)
         w0 = np.minimum(np.maximum(np.log(u0), _WS_LO), _WS_HI)
-        lk = np.log(kap)
-        if scalar:
-            lo, hi = _full(w0, _WS_LO), _full(w0, _WS_HI)
-            (w, _, _), _ = _iterate(_stationary_step, (w0, lo, hi), (lk,), 100)
-        else:
-            w = _stationary_arrays(w0, lk)
+        w = _stationary_plain(w0, np.log(kap))
         u = np.exp(w)
     return u if scalar else u.reshape(shape)
 
 
-#: Plain Newton steps that :func:`_stationary_arrays` takes on every point before it checks
+#: Plain Newton steps that :func:`_stationary_plain` takes on every point before it checks
 #: them (from the asymptotes three steps reach rounding for every kappa of 1e-9 to 1e12,
 #: the fourth is the check).
 _FAST_STEPS = 4
 
 
 def _plain_pieces(u: NDArray) -> tuple[NDArray, ...]:
-    """``q``, ``St``, ``Ct``, ``L``, ``F1``, ``F2`` of :func:`_scaled` at the load minimum (arrays).
+    """``q``, ``St``, ``Ct``, ``L``, ``F1``, ``F2`` of :func:`_scaled` at the load minimum.
 
     In fewer operations than :func:`_scaled`: ``F1 = St Ct - 4 u q`` in closed form also
     below ``u = 1``, where it cancels (relative error ~1e-16 / u^2); at the load minimum
@@ -321,7 +316,7 @@ def _plain_pieces(u: NDArray) -> tuple[NDArray, ...]:
     St = -np.expm1(-2 * u)
     Ct = 1 + q
     sh = np.sinh(0.5 * u)  # inf beyond u ~ 1420, where the other branch is taken
-    L = np.where(u < 1.0, np.log1p(2 * sh * sh), u + np.log1p(q) - LN2)
+    L = _where(u < 1.0, np.log1p(2 * sh * sh), u + np.log1p(q) - LN2)
     F1 = St * Ct - 4 * u * q
     F2 = u * St - Ct * L
     return q, St, Ct, L, F1, F2
@@ -330,11 +325,8 @@ def _plain_pieces(u: NDArray) -> tuple[NDArray, ...]:
 def _at_minimum(u, kap) -> tuple:
     """Abar, X, Ct and Phi = (2/pi) F/(Eh) at the load minimum ``u`` (see :func:`_branch_point`).
 
-    Arrays by :func:`_plain_pieces`, NumPy scalars by :func:`_branch_point`.
+    By :func:`_plain_pieces`; flat arrays or NumPy scalars.
     """
-    if not isinstance(u, np.ndarray):
-        bp = _branch_point(u, kap)
-        return bp["abar"], bp["X"], bp["Ct"], bp["phi"]
     _, St, Ct, _, F1, F2 = _plain_pieces(u)
     kF2 = kap * F2
     X = 2.0 / (kF2 + np.sqrt(kF2 * kF2 + 4 * F1))
@@ -343,7 +335,7 @@ def _at_minimum(u, kap) -> tuple:
 
 
 def _stationary_newton(w: NDArray, lk: NDArray) -> tuple[NDArray, NDArray]:
-    """One plain Newton step of ln kappa_s(u) = ln kappa in w = ln u (flat arrays).
+    """One plain Newton step of ln kappa_s(u) = ln kappa in w = ln u (flat arrays or scalars).
 
     The step of :func:`_stationary_step` without its bracket, on pieces of fewer
     operations: ``F1 = St Ct - 4 u q`` in closed form also below ``u = 1``, where it cancels
@@ -367,8 +359,11 @@ def _stationary_newton(w: NDArray, lk: NDArray) -> tuple[NDArray, NDArray]:
     return w - dw, dw
 
 
-def _stationary_arrays(w0: NDArray, lk: NDArray) -> NDArray:
-    """W = ln u of the load minimum for flat arrays: plain Newton, checked, bracketed where not.
+def _stationary_plain(w0, lk):
+    """W = ln u of the load minimum: plain Newton, checked, bracketed where it is not enough.
+
+    Flat arrays or NumPy scalars (the same steps: a point alone and in a batch agree to
+    rounding).
 
     :data:`_FAST_STEPS` plain steps (:func:`_stationary_newton`) on every point, with no
     bracket and no bookkeeping of which points are done; a point whose last step is at
@@ -379,7 +374,12 @@ def _stationary_arrays(w0: NDArray, lk: NDArray) -> NDArray:
     w = w0
     for _ in range(_FAST_STEPS):
         w, dw = _stationary_newton(w, lk)
-    ok = (abs(dw) <= 1e-15 * np.maximum(1.0, abs(w))) & (w >= _WS_LO) & (w <= _WS_HI)
+    ok = (abs(dw) <= 1e-15 * _maximum(1.0, abs(w))) & (w >= _WS_LO) & (w <= _WS_HI)
+    if not isinstance(ok, np.ndarray):
+        if not ok:
+            lo, hi = _full(w0, _WS_LO), _full(w0, _WS_HI)
+            (w, _, _), _ = _iterate(_stationary_step, (w0, lo, hi), (lk,), 100)
+        return w
     if not ok.all():
         bad = ~ok
         w0b = w0[bad]
