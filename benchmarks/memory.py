@@ -14,7 +14,10 @@ result alive (Linux, ``/proc/self/statm``; glibc's ``MALLOC_MMAP_THRESHOLD_`` is
 that freed arrays leave the resident set; an upper bound: the peak includes the process
 before the call). The closed forms work on chunks of points (``linecontact.sie._in_chunks``),
 so the extra memory per point falls with the number of points and the time per point stays
-flat. A 1e7-point run of the sliding calls takes minutes.
+flat. Beside it, the peak per point that ``tracemalloc`` traces during the call, over the
+inputs (the result included: what the call allocates at its highest; ``pull_off``'s target,
+issue 36, is under 100 bytes at 1e7 points). A 1e7-point run of the sliding calls takes
+minutes.
 """
 
 from __future__ import annotations
@@ -93,8 +96,9 @@ def _now() -> int:
 def child(name: str, n: int, what: str) -> None:
     """Measure one call at one size in this (fresh) process; print a JSON line.
 
-    ``what``: ``"time"`` (the mean of enough calls to fill 0.2 s) or ``"memory"`` (the
-    first call's peak less what it keeps).
+    ``what``: ``"time"`` (the mean of enough calls to fill 0.2 s), ``"memory"`` (the
+    first call's peak less what it keeps) or ``"traced"`` (the peak that ``tracemalloc``
+    traces during the first call, the result included).
     """
     import linecontact as lc
 
@@ -104,6 +108,14 @@ def child(name: str, n: int, what: str) -> None:
     if what == "memory":
         res = _call(name, x)()
         print(json.dumps(dict(extra=(_peak() - _now()) / n)))
+        del res
+        return
+    if what == "traced":
+        import tracemalloc
+
+        tracemalloc.start()
+        res = _call(name, x)()
+        print(json.dumps(dict(traced=tracemalloc.get_traced_memory()[1] / n)))
         del res
         return
     total, reps = 0.0, 0
@@ -135,14 +147,15 @@ def main() -> None:
         out = subprocess.run(cmd, capture_output=True, text=True, check=True, **kw).stdout
         return json.loads(out.strip().splitlines()[-1])
 
-    print(f"{'call':<26}{'points':>10}{'us/point':>10}{'extra B/point':>15}")
+    print(f"{'call':<26}{'points':>10}{'us/point':>10}{'extra B/point':>15}{'peak B/point':>14}")
     for name in a.calls.split(","):
         first = None
         for n in sizes:
             us, extra = run(name, n, "time")["us"], run(name, n, "memory")["extra"]
+            traced = run(name, n, "traced")["traced"]
             first = us if first is None else first
             print(
-                f"{name:<26}{n:>10.0e}{us:>10.3f}{extra:>15.0f}"
+                f"{name:<26}{n:>10.0e}{us:>10.3f}{extra:>15.0f}{traced:>14.0f}"
                 f"   (time x{us / first:.2f} of the first size)",
                 flush=True,
             )

@@ -115,14 +115,15 @@ def _iterate(step, state: tuple, params: tuple, maxiter: int, done=None):
             its[idx[stop]] = k
             break
         if stop.any():
-            fin = idx[stop]
+            # the masks as indices once (each array indexed by them: no mask scanned again)
+            s_at, keep = np.flatnonzero(stop), np.flatnonzero(~stop)
+            fin = idx[s_at]
             for o, v in zip(out, cur, strict=True):
-                o[fin] = v[stop]
+                o[fin] = v.take(s_at, axis=0)
             its[fin] = k
-            keep = ~stop
             idx = idx[keep]
-            cur = tuple(v[keep] for v in cur)
-            par = tuple(p[keep] for p in par)
+            cur = tuple(v.take(keep, axis=0) for v in cur)
+            par = tuple(p.take(keep, axis=0) for p in par)
     return tuple(out), its
 
 

@@ -20,6 +20,7 @@ from .._validation import (
     broadcast,
     scalar_or_array,
 )
+from ..closed_forms.maugis_dugdale import _at_minimum
 from ..results import SI, Result, as_result
 from ..sie import _in_chunks
 from .contact import _ustar
@@ -98,12 +99,44 @@ def _pulloff_arrays(rho: NDArray, s: NDArray, scalar: bool = False, keys=None):
     points (bounded memory for any number of them).
     """
     if scalar:
-        return _pulloff_flat(*_num._scalars(rho, s))
+        rho0, s0 = _num._scalars(rho, s)
+        return _pulloff_flat(rho0, s0, keys)
     shape = np.shape(rho)
     rho = np.asarray(rho, dtype=float).reshape(-1)
     s = np.asarray(s, dtype=float).reshape(-1)
     d = _in_chunks(functools.partial(_pulloff_flat, keys=keys), rho.size, rho, s)
     return {k: np.reshape(v, shape) for k, v in d.items()}
+
+
+def _c_at_pulloff(A_min, C_min, sq, kap):
+    """C/R at pull-off: ``C_min``, or the touching state's where the width is 0 (Eq. 14).
+
+    For arrays the touching state is evaluated at those points only.
+    """
+    if not isinstance(A_min, np.ndarray):
+        return C_min if A_min > 0 else _zero_c(sq, kap)
+    touch = np.flatnonzero(~(A_min > 0))
+    if touch.size == 0:
+        return C_min
+    C = np.array(C_min, dtype=float)
+    C[touch] = _zero_c(np.broadcast_to(sq, C.shape)[touch], np.broadcast_to(kap, C.shape)[touch])
+    return C
+
+
+def _zero_c(sq, kap):
+    """C/R of the touching state (a = 0) for group kappa; ``sq = sqrt(2 / (R/h))``."""
+    return sq * 2 / (kap * _cf.LN2 + np.sqrt(kap * kap * _cf.LN2**2 + 4))
+
+
+#: The two labels, indexed by ``snap`` (an array of them taken at once).
+_MECHANISMS = np.array(["zero-width", "snap-off"])
+
+
+def _mechanism(snap):
+    """``"snap-off"`` where ``snap``, ``"zero-width"`` elsewhere (arrays or a bool)."""
+    if isinstance(snap, np.ndarray):
+        return _MECHANISMS.take(snap.astype(np.intp))
+    return "snap-off" if snap else "zero-width"
 
 
 def _pulloff_flat(rho: NDArray, s: NDArray, keys=None):
@@ -115,17 +148,18 @@ def _pulloff_flat(rho: NDArray, s: NDArray, keys=None):
     kap = _cf._kappa(rho, s)
     F0 = _cf._zero_width(rho, s)
     us = _ustar(kap)
-    fin = np.isfinite(us)
+    fin: NDArray | bool = np.isfinite(us)
+    if isinstance(fin, np.ndarray) and fin.all():
+        fin = True  # kappa > 0 everywhere (the usual batch): each where below is its value
     with np.errstate(over="ignore", invalid="ignore", divide="ignore", under="ignore"):
         uf = where(fin, us, 1.0)  # kappa = 0: no interior minimum (any finite u will do)
-        bp = _cf._branch_point(uf, kap)
+        abar, X, Ct, phi = _at_minimum(uf, kap)
         sq = np.sqrt(2 / rho)
-        A_min = where(fin, bp["abar"] * sq, 0.0)
-        C_min = where(fin, bp["X"] * bp["Ct"] * sq, 0.0)
-        F_min = where(fin, _num._minimum((np.pi / 2) * bp["phi"], F0), F0)
+        A_min = where(fin, abar * sq, 0.0)
+        C_min = where(fin, X * Ct * sq, 0.0)
+        F_min = where(fin, _num._minimum((np.pi / 2) * phi, F0), F0)
         # the load minimum along the branch in units of Phi = (2/pi) F/(Eh) (contact_for_load)
-        phi_min = where(fin, _num._minimum(bp["phi"], F0 * (2 / np.pi)), F0 * (2 / np.pi))
-    zero_c = sq * 2 / (kap * _cf.LN2 + np.sqrt(kap * kap * _cf.LN2**2 + 4))
+        phi_min = where(fin, _num._minimum(phi, F0 * (2 / np.pi)), F0 * (2 / np.pi))
     # the pull-off force is the minimum of the load, at the width of u* (however small: the
     # stability of every state is judged against it); the label says whether the contact
     # lets go from a width the continuum model resolves (at least the range h) or peels
@@ -136,8 +170,8 @@ def _pulloff_flat(rho: NDArray, s: NDArray, keys=None):
     d = dict(
         F_pulloff_over_Eh=F_min,
         a_over_R_at_pulloff=A_min,
-        c_over_R_at_pulloff=where(A_min > 0, C_min, zero_c),
-        mechanism=where(snap, "snap-off", "zero-width"),
+        c_over_R_at_pulloff=_c_at_pulloff(A_min, C_min, sq, kap),
+        mechanism=_mechanism(snap),
         F_zero_width_over_Eh=F0,
         F_minimum_over_Eh=F_min,
         a_over_R_at_minimum=A_min,
@@ -191,7 +225,21 @@ def pull_off(R_over_h: ArrayLike, sigma0_over_E: ArrayLike) -> PullOff:
     scalar = scalar_or_array(rho, s)
     rho, s = broadcast(R_over_h=rho, sigma0_over_E=s)
     _cf._check_kappa(rho, s)
-    d = _pulloff_arrays(rho, s, scalar)
-    del d["us"], d["phi_min"]
+    d = _pulloff_arrays(rho, s, scalar, _PUBLIC_KEYS)
+    # the minimum is the pull-off: the same arrays under both names (no copy per name)
+    d["F_minimum_over_Eh"] = d["F_pulloff_over_Eh"]
+    d["a_over_R_at_minimum"] = d["a_over_R_at_pulloff"]
     lam = _cf._maugis_parameter(rho, s)
     return as_result(PullOff, scalar, R_over_h=rho, sigma0_over_E=s, maugis_parameter=lam, **d)
+
+
+#: The entries of :func:`_pulloff_flat` that :func:`pull_off` returns, but for the two it
+#: names twice (joined once: a 1e7-point call holds no array it does not return).
+_PUBLIC_KEYS = (
+    "F_pulloff_over_Eh",
+    "a_over_R_at_pulloff",
+    "c_over_R_at_pulloff",
+    "mechanism",
+    "F_zero_width_over_Eh",
+    "kappa",
+)

@@ -168,8 +168,14 @@ def _newton2(evaluate, u1, u2, params, *, nextra=0, maxiter=60, tol=1e-15, floor
         nrm = _num._maximum(abs(cur[0]), abs(cur[1]))
         nn = _num._maximum(abs(r[0]), abs(r[1]))
         ok = (abs(nn) < np.inf) & ((nn < nrm) | (nn <= floor))
-        cur = tuple(where(ok, a, b) for a, b in zip(r, cur, strict=True))
-        u1, u2 = where(ok, n1, u1), where(ok, n2, u2)
+        # every trial accepted (the usual case in a batch): the trial's arrays themselves
+        every = isinstance(ok, np.ndarray) and bool(ok.all())
+        every = every and all(isinstance(a, np.ndarray) and a.shape == ok.shape for a in r)
+        if every:
+            cur, u1, u2 = tuple(r), n1, n2
+        else:
+            cur = tuple(where(ok, a, b) for a, b in zip(r, cur, strict=True))
+            u1, u2 = where(ok, n1, u1), where(ok, n2, u2)
         # a step at rounding level: quadratic convergence leaves nothing to gain
         small = (abs(lam * d1) <= 1e-12 * _num._maximum(u1, 1e-3)) & (
             abs(lam * d2) <= 1e-12 * _num._maximum(u2, 1e-3)
@@ -179,6 +185,8 @@ def _newton2(evaluate, u1, u2, params, *, nextra=0, maxiter=60, tol=1e-15, floor
         give_up = ~ok & (tries >= 12)
         steps = steps + where(ok, 1.0, 0.0)
         stop = (ok & (small | converged | (steps >= maxiter))) | give_up
+        if every:
+            return (u1, u2, *cur, nd1, nd2, nlam, 0.0 * tries, steps), stop
         d1, d2 = where(ok, nd1, d1), where(ok, nd2, d2)
         lam = where(ok, nlam, 0.5 * lam)
         tries = where(ok, 0.0, tries + 1)
