@@ -49,13 +49,15 @@ WORDS = [
 
 
 def _copy_package(dest: Path, patch: bool) -> Path:
-    """A copy of the package at ``dest/linecontact``; ``patch``: its pull-off kernel doubled."""
+    """A copy of the package at ``dest/linecontact``; ``patch``: its pull-off kernel changed
+    (the minimum it reports halved, so that the pull-off is twice it)."""
     shutil.copytree(PKG, dest / "linecontact", ignore=shutil.ignore_patterns("__pycache__"))
     if patch:
         f = dest / "linecontact" / "normal" / "pulloff.py"
         text = f.read_text()
-        assert text.count("F_pulloff_over_Eh=F_min,") == 1
-        f.write_text(text.replace("F_pulloff_over_Eh=F_min,", "F_pulloff_over_Eh=2.0 * F_min,"))
+        line = 'd["F_minimum_over_Eh"] = d["F_pulloff_over_Eh"]'
+        assert text.count(line) == 1
+        f.write_text(text.replace(line, line + " / 2.0"))
     return dest
 
 
