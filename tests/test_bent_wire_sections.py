@@ -186,3 +186,21 @@ def test_bad_input_is_refused_naming_it(call, name, match):
     with pytest.raises(ParameterError, match=match) as err:
         call()
     assert err.value.parameter == name
+
+
+def test_the_stiffness_uncertainty_from_the_radius_and_the_modulus():
+    """sd(EI): 4 EI sd_R/R (EI ~ R^4) and EI sd_E/E, in quadrature; a polygon whose corners
+    round it whole (corner radius = circumradius) has the disc's, and takes a difference."""
+    from linecontact.bent_wire import bending_stiffness_sd
+    from linecontact.geometry import Polygon
+
+    ei = bending_stiffness(140e9, 50e-9)
+    r = bending_stiffness_sd(140e9, 50e-9, radius_sd=1e-9)
+    assert r == pytest.approx(4 * ei * 1e-9 / 50e-9, rel=1e-5)
+    e = bending_stiffness_sd(140e9, 50e-9, modulus_sd=14e9)
+    assert e == pytest.approx(0.1 * ei, rel=1e-12)
+    both = bending_stiffness_sd(140e9, 50e-9, modulus_sd=14e9, radius_sd=1e-9)
+    assert both == pytest.approx(np.hypot(r, e), rel=1e-12)
+    disc = bending_stiffness_sd(140e9, 50e-9, Polygon(6, 50e-9), radius_sd=1e-9)
+    assert np.isfinite(disc) and disc > 0
+    assert bending_stiffness_sd(140e9, 50e-9) == 0.0

@@ -194,7 +194,7 @@ def bending_stiffness_sd(
     r"""The standard uncertainty of :math:`EI` [N m^2] from those of the modulus and radius.
 
     Linearised, the two independent: :math:`EI\,\sigma_E/E` in quadrature with
-    :math:`\partial(EI)/\partial R\;\sigma_R`, the derivative by a central difference
+    :math:`\partial(EI)/\partial R\;\sigma_R`, the derivative by a forward difference
     (:math:`4EI/R` for a solid section; a tube's bore or a polygon's corners held).
 
     Examples
@@ -206,7 +206,7 @@ def bending_stiffness_sd(
     ei = float(bending_stiffness(modulus, radius, cross_section, inner_radius=inner_radius))
     E_sd = float(check_array("modulus_sd", modulus_sd, low_inclusive=True))
     R_sd = float(check_array("radius_sd", radius_sd, low_inclusive=True))
+    # a forward difference: a smaller radius may fall below a polygon's corner radius
     step = 1e-6 * float(radius)
     up = float(bending_stiffness(modulus, radius + step, cross_section, inner_radius=inner_radius))
-    dn = float(bending_stiffness(modulus, radius - step, cross_section, inner_radius=inner_radius))
-    return math.hypot(ei * E_sd / float(modulus), (up - dn) / (2 * step) * R_sd)
+    return math.hypot(ei * E_sd / float(modulus), (up - ei) / step * R_sd)
