@@ -64,6 +64,28 @@ def _cells(v: NDArray, d: NDArray) -> NDArray:
     return np.stack([v, d, *nxt], axis=-1).reshape(-1, 4)
 
 
+def _hermite(
+    tables: dict[str, NDArray], names: tuple[str, ...], u: NDArray, m: int, length: float
+) -> dict[str, NDArray]:
+    """``names`` of ``tables`` (:func:`_cells`) by cubic Hermite interpolation.
+
+    ``u`` (``(B, N)``) is the position in cells, ``[0, m]``, on a grid of ``m`` cells spanning
+    ``length`` of the arc length (the derivatives are per unit arc length).
+    """
+    j = np.minimum(u.astype(np.intp), m - 1)
+    tau = u - j
+    h = length / m
+    t2, t3 = tau * tau, tau * tau * tau
+    h00, h10 = 2 * t3 - 3 * t2 + 1, (t3 - 2 * t2 + tau) * h
+    h01, h11 = -2 * t3 + 3 * t2, (t3 - t2) * h
+    row = (np.arange(u.shape[0]) * (m + 1))[:, None] + j
+    out = {}
+    for name in names:
+        c = tables[name][row]
+        out[name] = h00 * c[..., 0] + h10 * c[..., 1] + h01 * c[..., 2] + h11 * c[..., 3]
+    return out
+
+
 class Dragged:
     """The wire dragged at its midpoint, tabulated for a batch of friction groups.
 
@@ -135,20 +157,9 @@ class Dragged:
         odd, the curvature ``kappa`` even; ``y``, ``theta`` and ``kappa`` (and ``x_lam``,
         which is even in the group) mirrored for a negative group.
         """
-        m = _CELLS
         side = np.where(s < 0, -1.0, 1.0)
-        u = np.abs(s)
-        j = np.minimum((u * m).astype(np.intp), m - 1)
-        tau = u * m - j
-        h = 1.0 / m
-        t2, t3 = tau * tau, tau * tau * tau
-        h00, h10 = 2 * t3 - 3 * t2 + 1, (t3 - 2 * t2 + tau) * h
-        h01, h11 = -2 * t3 + 3 * t2, (t3 - t2) * h
-        row = (np.arange(s.shape[0]) * (m + 1))[:, None] + j
-        out = {}
-        for name in names:
-            c = self.table[name][row]
-            val = h00 * c[..., 0] + h10 * c[..., 1] + h01 * c[..., 2] + h11 * c[..., 3]
+        out = _hermite(self.table, names, np.abs(s) * _CELLS, _CELLS, 1.0)
+        for name, val in out.items():
             if name in ("x", "theta"):
                 val = val * side
             if name in ("y", "theta", "kappa"):

@@ -28,7 +28,7 @@ from numpy.polynomial import legendre as _leg
 from numpy.polynomial import polynomial as _poly
 from numpy.typing import NDArray
 
-from ._curve import _cells
+from ._curve import _cells, _hermite
 
 __all__ = ["Held"]
 
@@ -102,20 +102,8 @@ class Held:
 
     def at(self, s: NDArray, names: tuple[str, ...]) -> dict[str, NDArray]:
         """``names`` of the table at the arc lengths ``s`` (``(B, N)``, in ``[-1, 1]``)."""
-        m = _CELLS
-        u = (np.clip(s, -1.0, 1.0) + 1.0) * (m / 2.0)
-        j = np.minimum(u.astype(np.intp), m - 1)
-        tau = u - j
-        h = 2.0 / m
-        t2, t3 = tau * tau, tau * tau * tau
-        h00, h10 = 2 * t3 - 3 * t2 + 1, (t3 - 2 * t2 + tau) * h
-        h01, h11 = -2 * t3 + 3 * t2, (t3 - t2) * h
-        row = (np.arange(s.shape[0]) * (m + 1))[:, None] + j
-        out = {}
-        for name in names:
-            c = self.table[name][row]
-            out[name] = h00 * c[..., 0] + h10 * c[..., 1] + h01 * c[..., 2] + h11 * c[..., 3]
-        return out
+        u = (np.clip(s, -1.0, 1.0) + 1.0) * (_CELLS / 2.0)
+        return _hermite(self.table, names, u, _CELLS, 2.0)
 
     def normal_friction(self, coef: NDArray, s: NDArray) -> tuple[NDArray, NDArray]:
         r"""The group :math:`f_n l^3/EI = \kappa'' + \kappa^3/2` at ``s``, and its gradient.
