@@ -52,7 +52,9 @@ class LJState(Result):
     error_estimate : float
         Estimated absolute error of ``F`` (its change from the coarser pair of meshes).
     half_width : float
-        Half-width of the repulsive region (the gap below ``z0``), 0 where there is none.
+        Half-width of the repulsive region, 0 where there is none: the outermost place where
+        the gap crosses ``z0`` (the cubic through the nodal gaps about it), extrapolated as
+        ``F`` (``docs/lennard-jones.md``; its estimate: :attr:`LJCurve.half_width_error_estimate`).
     residual : float
         Largest residual of the gap equation at the nodes, relative to the gap there.
     n : int
@@ -117,10 +119,10 @@ class LJCurve(Result):
     the largest Richardson estimate of the point and its two neighbours, plus
     :math:`|dF/dg_0|` times the estimated error of the central gap (a state held at its edge
     has its central gap extrapolated too). ``half_width`` is the outermost place where
-    the fine mesh's gap, linear between its nodes, crosses :math:`z_0` (0 where the gap
-    exceeds :math:`z_0` everywhere); ``half_width_error_estimate`` is the largest change of
-    it from the middle mesh at the point and its two neighbours (plus
-    :math:`|d(\text{half-width})/dg_0|` times the central gap's estimate). ``pull_off``
+    the gap crosses :math:`z_0` (the cubic through the nodal gaps about it; 0 where the gap
+    exceeds :math:`z_0` everywhere), extrapolated as the load; ``half_width_error_estimate``
+    is, as the load's, the largest Richardson estimate of the point and its two neighbours
+    plus :math:`|d(\text{half-width})/dg_0|` times the central gap's estimate. ``pull_off``
     holds the pull-off point.
 
     Attributes

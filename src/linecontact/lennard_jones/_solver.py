@@ -410,18 +410,65 @@ def _newton(
 
 
 def _half_width(nodes: NDArray, zeta: NDArray, level: float = 1.0) -> float:
-    """Half-width of the repulsive region: the outermost ``xi`` where the gap crosses ``z0``.
+    """The outermost ``xi`` where the gap crosses ``level z0``, linear between the nodes.
 
-    (Or where it crosses ``level z0``: the edge the meshes follow, :func:`_follow`.)
+    The edge the meshes follow (``level`` :data:`_EDGE_GAP`, :func:`_follow`); the reported
+    half-width is :func:`_width`'s.
     """
-    inside = np.nonzero(zeta < level)[0]
-    if inside.size == 0:
+    i = _last_below(zeta, level)
+    if i < 0:
         return 0.0
-    i = int(inside[-1])
     if i + 1 >= nodes.size:
         return float(nodes[-1])
     t = (level - zeta[i]) / (zeta[i + 1] - zeta[i])
     return float(nodes[i] + t * (nodes[i + 1] - nodes[i]))
+
+
+def _width(nodes: NDArray, zeta: NDArray) -> float:
+    r"""The half-width of the repulsive region: the outermost ``xi`` where the gap crosses ``z0``.
+
+    The crossing of the cubic through the four nodal gaps about it (the two nodes either side
+    of the outermost node below ``z0``; three one side at the ends of the mesh), by Newton
+    from the linear interpolation. The nodal gaps converge with the mesh as the load does;
+    the error of a linear interpolation between them depends on where in its element the
+    crossing falls, which no extrapolation in the element size removes (the cubic's is
+    fourth order). 0 where every nodal gap exceeds ``z0``; the end of the mesh where none does.
+    """
+    i = _last_below(zeta, 1.0)
+    if i < 0:
+        return 0.0
+    if i + 1 >= nodes.size:
+        return float(nodes[-1])
+    j = min(max(i - 1, 0), nodes.size - 4)
+    x = [float(v - nodes[i]) for v in nodes[j : j + 4]]
+    y = [float(v) - 1.0 for v in zeta[j : j + 4]]
+    b = x[i + 1 - j]
+    t = -y[i - j] * b / (y[i + 1 - j] - y[i - j])
+    for _ in range(30):  # p(t) and p'(t) of the Lagrange cubic
+        p = dp = 0.0
+        for k in range(4):
+            num, dnum = 1.0, 0.0
+            den = 1.0
+            for m in range(4):
+                if m != k:
+                    dnum = dnum * (t - x[m]) + num
+                    num *= t - x[m]
+                    den *= x[k] - x[m]
+            p += y[k] * num / den
+            dp += y[k] * dnum / den
+        step = p / dp if dp != 0.0 else 0.0
+        t -= step
+        if not 0.0 <= t <= b:  # not monotone here: the linear crossing
+            return _half_width(nodes, zeta)
+        if abs(step) <= 1e-15 * b:
+            break
+    return float(nodes[i] + t)
+
+
+def _last_below(zeta: NDArray, level: float) -> int:
+    """The last node whose gap is below ``level`` ``z0`` (-1 where there is none)."""
+    inside = np.nonzero(zeta < level)[0]
+    return int(inside[-1]) if inside.size else -1
 
 
 @dataclass(frozen=True)
@@ -499,7 +546,7 @@ def _finish(
     fine = meshes[0]
     loads = [2.0 * float(fine.w @ _law(zeta)[0])]
     gaps = [zeta0]
-    widths = [_half_width(fine.nodes, zeta)]
+    widths = [_width(fine.nodes, zeta)]
     for k, mesh in enumerate(meshes[1:], start=1):
         if edge is None:
             zk, _, okk = _newton(zeta0, mu, mesh, zeta[:: 2**k])
@@ -510,7 +557,7 @@ def _finish(
             break
         loads.append(2.0 * float(mesh.w @ _law(zk)[0]))
         gaps.append(z0k)
-        widths.append(_half_width(mesh.nodes, zk))
+        widths.append(_width(mesh.nodes, zk))
     if len(loads) == 1:  # the middle mesh cannot hold the state: no estimate
         return None
     f, m = loads[:2]
@@ -534,16 +581,20 @@ def _finish(
 def _width_and_estimate(widths: list[float]) -> tuple[float, float]:
     """The half-width of the repulsive region and its estimate from the meshes' widths.
 
-    Each mesh's width is where its gap crosses ``z0`` (linear between its nodes). The fine
-    mesh's width, its estimate the whole change from the middle mesh's. Not extrapolated as
-    the load: against four times the elements the extrapolated width was often further off
-    than the fine mesh's (the crossing within an element is not a smooth function of the
-    element's size; ``docs/lennard-jones.md``).
+    Each mesh's width is :func:`_width`'s; extrapolated and estimated as the load is (the
+    Richardson extrapolation of the two finer, its change from the coarser pair's; with two
+    meshes, the whole change). Where a mesh finds no contact and another does (a contact
+    forming between them), the fine mesh's width and the largest change as its estimate.
     """
     w = widths
     if len(w) < 2:
         return w[0], math.inf
-    return w[0], abs(w[0] - w[1])
+    r = w[0] + (w[0] - w[1]) / 3.0
+    if min(w) <= 0.0:
+        return w[0], max(abs(v - w[0]) for v in w[1:])
+    if len(w) == 2:
+        return r, abs(w[0] - w[1])
+    return r, max(abs(r - (w[1] + (w[1] - w[2]) / 3.0)), 1e-15 * r)
 
 
 def _check_m(m) -> int:
