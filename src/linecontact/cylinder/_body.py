@@ -10,12 +10,14 @@ length) and :class:`~linecontact.Sphere` (an AFM tip or a colloidal probe, force
 from __future__ import annotations
 
 import warnings
+from collections.abc import Callable
 from dataclasses import dataclass, fields
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 from numpy.typing import ArrayLike
 
+from .. import domain as _domain
 from .._validation import scalar
 from ..errors import CouplingWarning, UnitsWarning
 from ..laws._values import Dugdale, Law
@@ -330,6 +332,33 @@ class Body:
         if name not in units:
             raise ValueError(f"scale must be one of {', '.join(units)}, got {name!r}")
         return units[name]
+
+    # the problems every body shares ---
+    def _dugdale_curve(
+        self,
+        curve: Callable[..., Any],
+        max_width_name: str,
+        max_width: float | None,
+        num: int,
+        num_noncontact: int,
+    ) -> Any:
+        """The nondimensional Dugdale load curve ``curve`` of this body, up to ``max_width`` [m].
+
+        ``curve`` is the geometry's function of ``(R/h, sigma0/E)`` (a wire's or a
+        sphere's); ``max_width`` (a half-width or a radius, None: the function's default) is
+        checked under the caller's name ``max_width_name``, then given over ``R``.
+        """
+        a_max = None
+        if max_width is not None:
+            _domain.check_si(max_width_name, max_width, self.radius, "a_max_over_R", "m")
+            a_max = self.over(max_width, "R")
+        return curve(
+            self.R_over_h,
+            self.sigma0_over_E,
+            a_max_over_R=a_max,
+            num=num,
+            num_noncontact=num_noncontact,
+        )
 
     def in_si(self, value: ArrayLike, scale: str) -> Any:
         """``value`` given over the group ``scale`` (:meth:`scale`) in SI units."""

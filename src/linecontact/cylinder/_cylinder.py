@@ -438,17 +438,9 @@ class Cylinder(Body):
                 "max_load ends the load curve of the Lennard-Jones law: the Dugdale law's "
                 "ends at max_half_width"
             )
-        a_max = None
-        if max_half_width is not None:
-            _domain.check_si("max_half_width", max_half_width, self.radius, "a_max_over_R", "m")
-            a_max = self.over(max_half_width, "R")
         with _small_strain_in_si():
-            c = _normal.load_curve(
-                self.R_over_h,
-                self.sigma0_over_E,
-                a_max_over_R=a_max,
-                num=num,
-                num_noncontact=num_noncontact,
+            c = self._dugdale_curve(
+                _normal.load_curve, "max_half_width", max_half_width, num, num_noncontact
             )
         curve = _si_load_curve(self, c)
         _warn_small_strain(curve.contact_half_width, self.radius, stacklevel=3)

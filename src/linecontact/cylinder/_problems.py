@@ -30,6 +30,7 @@ from ..tangential import (
     sliding_initiation_coulomb,
     steady_rolling_coulomb,
 )
+from ..tangential._core import _one_of
 from ..tangential.initiation import _CATTANEO_MINDLIN, _INITIATION
 from ..tangential.rolling import _CARTER, _ROLLING
 from ..units import Scales, to_si
@@ -70,8 +71,7 @@ def _cylinder_tangential(
     cylinder._written(problem.replace(" ", "_"))
     policy = failure_policy(on_failure)
     coulomb = _is_coulomb(friction_stress, friction_coefficient)
-    if (d_over_a is None) == (tangential_load is None):
-        raise ValueError("give exactly one of d_over_a or tangential_load [N/m]")
+    _one_of(d_over_a, tangential_load, "tangential_load [N/m]")
     E = cylinder.modulus
     rolling = problem == "steady rolling"
     pb = (
@@ -103,10 +103,7 @@ def _cylinder_tangential(
         _refuse_adhesion_with_coulomb(cylinder)
         if cylinder.cross_section.kind != "round":  # its shear bound is the Hertz pressure's
             cylinder._not_written(f"{problem} with friction_coefficient (Coulomb friction)")
-    contact = cylinder._for_load("normal_load", F)
-    a = np.asarray(contact.contact_half_width)
-    if coulomb:
-        _check_hertz_width("normal_load", F, a / cylinder.radius, cylinder.radius)
+    contact, a = _normal_contact(cylinder, F, coulomb)
     unit, group, full = _tangential_scales(coulomb, fr, F, a, E)
     if d is None:
         _domain.check_si("tangential_load", st, unit, group, "N/m")
@@ -139,6 +136,18 @@ def _cylinder_tangential(
         r,
         contact,
     )
+
+
+def _normal_contact(cylinder: Any, F: Any, coulomb: bool) -> tuple[Any, NDArray]:
+    """``(contact, a)``: the stable normal contact under ``F`` [N/m] and its half-width [m].
+
+    Under Coulomb friction the (Hertz) contact must be as wide as the solvers' domain.
+    """
+    contact = cylinder._for_load("normal_load", F)
+    a = np.asarray(contact.contact_half_width)
+    if coulomb:
+        _check_hertz_width("normal_load", F, a / cylinder.radius, cylinder.radius)
+    return contact, a
 
 
 def _tangential_scales(coulomb: bool, fr: Any, F: Any, a: Any, E: float) -> tuple[Any, str, Any]:
@@ -495,11 +504,8 @@ def _history_contact(cylinder, normal_load, friction_stress, friction_coefficien
         F = scalar("normal_load", normal_load, low=-np.inf)
         fr = scalar("friction_stress", friction_stress)
         _domain.check_si("friction_stress", fr, cylinder.modulus, "tau0_over_E", "Pa")
-    contact = cylinder._for_load("normal_load", F)
-    a = float(contact.contact_half_width)
-    if coulomb:
-        _check_hertz_width("normal_load", F, a / cylinder.radius, cylinder.radius)
-    return F, a, fr, coulomb, contact
+    contact, a = _normal_contact(cylinder, F, coulomb)
+    return F, float(a), fr, coulomb, contact
 
 
 def _history_solve(

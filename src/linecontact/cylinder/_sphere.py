@@ -248,12 +248,8 @@ class Sphere(Body):
             _domain.check_si("contact_radius", radii, self.radius, "a_over_R", "m")
             a_over_R = radii / self.radius
             r = _sphere.sphere_contact(a_over_R, rho, s)
-        si = to_si(r, self._scales())
         return SphereContactSI(
-            contact_radius=si["contact_radius"],
-            adhesive_zone_radius=si["adhesive_zone_radius"],
-            load=si["load"],
-            approach=si["approach"],
+            **to_si(r, self._scales()),
             stable=r.stable,
             stable_displacement=r.stable_displacement,
             nondimensional=r,
@@ -279,12 +275,8 @@ class Sphere(Body):
         if isinstance(self.adhesion, LennardJones):
             return self._pull_off_lj(control)
         p = _sphere.sphere_pull_off(self.R_over_h, self.sigma0_over_E, control=control)
-        si = to_si(p, self._scales())
         return SpherePullOffSI(
-            pull_off_force=si["pull_off_force"],
-            contact_radius_at_pull_off=si["contact_radius_at_pull_off"],
-            adhesive_zone_radius_at_pull_off=si["adhesive_zone_radius_at_pull_off"],
-            approach_at_pull_off=si["approach_at_pull_off"],
+            **to_si(p, self._scales()),
             mechanism=p.mechanism,
             control=control,
             nondimensional=p,
@@ -337,24 +329,12 @@ class Sphere(Body):
                 "max_load is the Lennard-Jones curve's end: under the Dugdale law the curve "
                 "ends at max_radius [m]"
             )
-        a_max = None
-        if max_radius is not None:
-            _domain.check_si("max_radius", max_radius, self.radius, "a_max_over_R", "m")
-            a_max = max_radius / self.radius
-        c = _sphere.sphere_load_curve(
-            self.R_over_h,
-            self.sigma0_over_E,
-            a_max_over_R=a_max,
-            num=num,
-            num_noncontact=num_noncontact,
+        c = self._dugdale_curve(
+            _sphere.sphere_load_curve, "max_radius", max_radius, num, num_noncontact
         )
-        si = to_si(c, self._scales())
         return SphereLoadCurveSI(
             branch=c.branch,
-            contact_radius=si["contact_radius"],
-            adhesive_zone_radius=si["adhesive_zone_radius"],
-            load=si["load"],
-            approach=si["approach"],
+            **to_si(c, self._scales()),
             stable=c.stable,
             stable_displacement=c.stable_displacement,
             pull_off_load=c.pull_off_load,

@@ -553,16 +553,21 @@ def _run(
         creep = np.where(stick, 0.0, creep)
     else:
         creep = None
+    # the load in the caller's unit: the one given, exactly, or the one of the d/a given
+    if T_target is not None:
+        load = g
+    else:
+        load = arrays[0] * T_unit if pb.constant else T_unit
+    # the inputs under the caller's names, for the errors at a failing point
+    labels = {**dict(zip(names, arrays, strict=True)), given[0]: g}
     if policy == "raise":
-        labels = dict(zip(names, arrays, strict=True))
-        labels[given[0]] = g
         _raise_sliding(
             pb.name,
             sliding,
             labels,
             given[0],
             load_name,
-            g if d_over_a is None else (arrays[0] * T_unit if pb.constant else T_unit),
+            load,
             2 * arrays[0] if pb.constant else np.ones(shape),
         )
     converged = np.ones(shape, bool)
@@ -571,8 +576,6 @@ def _run(
             ((out["tail"] <= 10 * tol) & (out["force"] <= 1e-10) & np.isfinite(out["T"])) | ~act
         ).reshape(shape)
         if policy == "raise":
-            labels = dict(zip(names, arrays, strict=True))
-            labels[given[0]] = g
             _raise_unconverged(pb.name, converged, labels, out, n)
     diag = dict(
         n_collocation=out["n"].reshape(shape),
@@ -585,11 +588,6 @@ def _run(
         d_over_a=dl,
         T_over_T_full_slip=T_unit / pb.T_full,
     )
-    # the load in the caller's unit: the one given, exactly, or the one of the d/a given
-    if T_target is not None:
-        load = g
-    else:
-        load = arrays[0] * T_unit if pb.constant else T_unit
     return arrays, load, creep, diag, scalar
 
 
