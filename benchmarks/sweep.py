@@ -97,6 +97,23 @@ def big(side: int, tmp: str) -> None:
         print(err)
     import linecontact as lc
 
+    # the same numbers by the bare vectorised calls in this process (issue 36: the CLI
+    # sweep within 2x of them), in blocks of 1e6 points (as the sweep's blocks: memory)
+    def bare() -> None:
+        R = np.geomspace(10e-9, 200e-9, side)
+        w = np.geomspace(0.01, 1, side)
+        for k in range(0, side * side, 10**6):
+            flat = np.arange(k, min(k + 10**6, side * side))
+            s0, h = lc.adhesion_from_work(w[flat % side], 3e-10)
+            r = lc.pull_off(R[flat // side] / h, s0 / 1.2e11)
+            r.F_pulloff_over_Eh * (1.2e11 * h)
+
+    t_bare, _ = best(bare, repeat=1)
+    print(
+        f"  the bare vectorised calls in one process: {t_bare:.1f} s; the CLI sweep "
+        f"{wall / t_bare:.2f}x of them (target <= 2x)"
+    )
+
     ds = lc.open_sweep(out)
     i, j = side // 3, 2 * side // 3
     point = ds.isel(radius=i, work_of_adhesion=j)

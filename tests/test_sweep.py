@@ -556,3 +556,36 @@ def test_a_script_without_a_main_guard_runs_two_workers(tmp_path):
     )
     assert done.returncode == 0, done.stderr[-2000:]
     assert "same True 8" in done.stdout, done.stdout
+
+
+def test_text_is_stored_as_codes_and_read_back_as_the_sweep_gave_it(tmp_path):
+    # a store keeps text as int32 codes into its attribute "categories" (issue 36: ten
+    # million strings cost 7 s of 18); open_sweep gives back the text of the sweep in
+    # memory, reasons with numbers in them and the padding of curves of several records
+    # included, in blocks of one point (every block its own categories)
+    cases = [
+        ("normal", dict(R_over_h=100, sigma0_over_E=0.01, F_over_Eh=[-5.0, 0.0, 1.0])),
+        ("pulloff", dict(R_over_h=[1e-9, 2e-9, 100.0], sigma0_over_E=[0.01, 0.1])),
+        ("curve", dict(R_over_h=100, sigma0_over_E=[0.01, 0.1], num=[5, 8])),
+    ]
+    for command, kw in cases:
+        out = tmp_path / f"{command}.zarr"
+        mem = lc.sweep(command, **kw)
+        lc.sweep(command, **kw, output=str(out), chunk_points=1)
+        raw = xr.open_zarr(out, consolidated=False)
+        back = lc.open_sweep(out)
+        for name in ("state", "reason"):
+            assert raw[name].dtype == np.int32
+            cats = json.loads(raw[name].attrs["categories"])
+            assert cats[0] == "" and len(set(cats)) == len(cats)
+            assert "categories" not in back[name].attrs
+            assert _words(back[name]) == _words(mem[name]), name
+        text = [n for n in mem.data_vars if mem[n].dtype.kind == "O"]
+        for name in text:
+            assert _words(back[name]) == _words(mem[name]), name
+        for name in set(mem.data_vars) - set(text):
+            np.testing.assert_array_equal(back[name].values, mem[name].values)
+
+
+def _words(v):
+    return [str(x) for x in np.asarray(v.values).ravel().tolist()]

@@ -111,12 +111,12 @@ def store_identity(path: str | os.PathLike[str]) -> str | None:
     return ident if isinstance(ident, str) else None
 
 
-def _encode(data: dict[str, np.ndarray]) -> dict[str, np.ndarray]:
+def _encode(block: Block) -> dict[str, np.ndarray]:
     """Arrays for ``np.savez``: strings as codes into their categories (no pickles)."""
     out: dict[str, np.ndarray] = {}
-    for k, v in data.items():
+    for k, v in block.data.items():
         if is_text(v.dtype):
-            cats, at = codes(v)
+            cats, at = block.coded(k) if v.dtype.kind == "O" else codes(v)
             out[f"{k}.codes"] = at
             out[f"{k}.cats"] = np.array([str(c) for c in cats.tolist()] or [""])  # no pickle
         else:
@@ -316,7 +316,7 @@ class Partial:
         meta["index"] = block.index
         meta["shapes"] = {k: v.shape for k, v in block.data.items()}
         meta["kinds"] = {k: _kind(v) for k, v in block.data.items()}
-        arrays = _encode(block.data)
+        arrays = _encode(block)
         arrays[_META] = np.array(json.dumps(meta))
         with atomic_file(
             self.dir / f"block-{block.index:06d}.npz", name="a block of the sweep"
@@ -346,6 +346,17 @@ class Partial:
             if name not in z.files and f"{name}.codes" not in z.files:
                 return None
             return _decode(z, name)
+
+    def coded(self, index: int, name: str) -> tuple[list[str], np.ndarray] | None:
+        """A text variable of a block kept on disk as ``(categories, codes)`` (None: none).
+
+        As :meth:`load` gives it, without making its strings: ``categories[codes]``.
+        """
+        assert self.dir is not None
+        with np.load(self.dir / f"block-{index:06d}.npz") as z:
+            if f"{name}.codes" not in z.files:
+                return None
+            return [str(c) for c in z[f"{name}.cats"].tolist()], np.asarray(z[f"{name}.codes"])
 
     def remove(self) -> None:
         """Forget the kept blocks (once the store is written)."""
