@@ -317,11 +317,8 @@ def fit_pull_off(
     chi2 = float(np.sum((resid / sig) ** 2))
     dof = F.size - n_par
     scale = 1.0 if have_sd else (chi2 / dof if dof > 0 else math.nan)
-    with np.errstate(all="ignore"):
-        try:
-            cov_log = np.linalg.inv(J.T @ J) * scale
-        except np.linalg.LinAlgError:
-            cov_log = np.full((n_par, n_par), np.inf)
+    # the correlation does not depend on the scale (zero for an exact fit without sds)
+    cov_log, corr = _log_covariance(J, scale)
     w = math.exp(p[0])
     z0 = z_fixed if fixed else math.exp(p[1])
     D = np.array([w, z0])[:n_par]
@@ -337,13 +334,6 @@ def fit_pull_off(
             if fixed
             else (float(z0 * np.exp(-1.96 * sd_log[1])), float(z0 * np.exp(1.96 * sd_log[1])))
         )
-    # the correlation does not depend on the scale (zero for an exact fit without sds)
-    with np.errstate(all="ignore"):
-        try:
-            unit = np.linalg.inv(J.T @ J)
-        except np.linalg.LinAlgError:
-            unit = np.full((n_par, n_par), np.nan)
-    corr = math.nan if fixed else float(unit[0, 1] / math.sqrt(unit[0, 0] * unit[1, 1]))
     ci_w, ci_z = ci_lin_w, ci_lin_z
     identifiable = True
     note = ""
@@ -433,6 +423,22 @@ def fit_pull_off(
         w_sd_in,
         z_sd_in,
     )
+
+
+def _log_covariance(J: NDArray, scale: float) -> tuple[NDArray, float]:
+    """The covariance of the log parameters, ``scale (J^T J)^-1``, and their correlation.
+
+    The correlation is that of ``(J^T J)^-1`` (independent of the scale: defined even for an
+    exact fit without sds); nan for one parameter, inf where ``J^T J`` is singular.
+    """
+    n = J.shape[1]
+    with np.errstate(all="ignore"):
+        try:
+            inv = np.linalg.inv(J.T @ J)
+        except np.linalg.LinAlgError:
+            return np.full((n, n), np.inf), math.nan
+        corr = math.nan if n == 1 else float(inv[0, 1] / math.sqrt(inv[0, 0] * inv[1, 1]))
+    return inv * scale, corr
 
 
 def _is_count(v: object, lo: int) -> bool:

@@ -42,6 +42,7 @@ from .._least_squares import _refit_rows, _rows_or_nan, _solve
 from .._validation import check_array
 from ..closed_forms.sphere import _sphere_maugis_parameter
 from ..errors import ParameterError
+from ..fits import _log_covariance
 from ..materials import MAUGIS_STRENGTH
 from ..results import Result
 from .models import DMT_BELOW, JKR_ABOVE, SphereModels, sphere_models
@@ -277,22 +278,6 @@ def _start(
     pad = np.concatenate([[np.inf], cost, [np.inf]])
     dips = np.flatnonzero((cost <= pad[:-2]) & (cost <= pad[2:]) & np.isfinite(cost))
     return P[dips[np.argsort(cost[dips])][:_STARTS]]
-
-
-def _log_covariance(J: NDArray, scale: float) -> tuple[NDArray, float]:
-    """The covariance of the log parameters, ``scale (J^T J)^-1``, and their correlation.
-
-    The correlation is that of ``(J^T J)^-1`` (independent of the scale: defined even for an
-    exact fit without sds); nan for one parameter, inf where ``J^T J`` is singular.
-    """
-    n = J.shape[1]
-    with np.errstate(all="ignore"):
-        try:
-            inv = np.linalg.inv(J.T @ J)
-        except np.linalg.LinAlgError:
-            return np.full((n, n), np.inf), math.nan
-        corr = math.nan if n == 1 else float(inv[0, 1] / math.sqrt(inv[0, 0] * inv[1, 1]))
-    return inv * scale, corr
 
 
 def _around(value: float, sd_log: float) -> tuple[float, float]:
