@@ -42,6 +42,7 @@ from ._pull_off_model import (
 from ._validation import check_array
 from .cylinder import _check_cylinder_si, _plausible
 from .results import Result
+from .sphere.fits import _covariance, _log_covariance
 
 __all__ = [
     "AdhesionFit",
@@ -321,9 +322,7 @@ def fit_pull_off(
     cov_log, corr = _log_covariance(J, scale)
     w = math.exp(p[0])
     z0 = z_fixed if fixed else math.exp(p[1])
-    D = np.array([w, z0])[:n_par]
-    cov = np.zeros((2, 2))
-    cov[:n_par, :n_par] = cov_log * np.outer(D, D)
+    cov = _covariance(cov_log, w, z0)
     sd_log = np.sqrt(np.clip(np.diag(cov_log), 0, None))
     w_sd = float(np.sqrt(cov[0, 0]))
     z_sd = float(np.sqrt(cov[1, 1]))
@@ -423,22 +422,6 @@ def fit_pull_off(
         w_sd_in,
         z_sd_in,
     )
-
-
-def _log_covariance(J: NDArray, scale: float) -> tuple[NDArray, float]:
-    """The covariance of the log parameters, ``scale (J^T J)^-1``, and their correlation.
-
-    The correlation is that of ``(J^T J)^-1`` (independent of the scale: defined even for an
-    exact fit without sds); nan for one parameter, inf where ``J^T J`` is singular.
-    """
-    n = J.shape[1]
-    with np.errstate(all="ignore"):
-        try:
-            inv = np.linalg.inv(J.T @ J)
-        except np.linalg.LinAlgError:
-            return np.full((n, n), np.inf), math.nan
-        corr = math.nan if n == 1 else float(inv[0, 1] / math.sqrt(inv[0, 0] * inv[1, 1]))
-    return inv * scale, corr
 
 
 def _is_count(v: object, lo: int) -> bool:

@@ -42,7 +42,6 @@ from .._least_squares import _refit_rows, _rows_or_nan, _solve
 from .._validation import check_array
 from ..closed_forms.sphere import _sphere_maugis_parameter
 from ..errors import ParameterError
-from ..fits import _log_covariance
 from ..materials import MAUGIS_STRENGTH
 from ..results import Result
 from .models import DMT_BELOW, JKR_ABOVE, SphereModels, sphere_models
@@ -280,6 +279,34 @@ def _start(
     return P[dips[np.argsort(cost[dips])][:_STARTS]]
 
 
+def _log_covariance(J: NDArray, scale: float) -> tuple[NDArray, float]:
+    """The covariance of the log parameters, ``scale (J^T J)^-1``, and their correlation.
+
+    The correlation is that of ``(J^T J)^-1`` (independent of the scale: defined even for an
+    exact fit without sds); nan for one parameter, inf where ``J^T J`` is singular.
+    """
+    n = J.shape[1]
+    with np.errstate(all="ignore"):
+        try:
+            inv = np.linalg.inv(J.T @ J)
+        except np.linalg.LinAlgError:
+            return np.full((n, n), np.inf), math.nan
+        corr = math.nan if n == 1 else float(inv[0, 1] / math.sqrt(inv[0, 0] * inv[1, 1]))
+    return inv * scale, corr
+
+
+def _covariance(cov_log: NDArray, w: float, z0: float) -> NDArray:
+    """The covariance of ``(w, z0)`` [J/m^2, m] from that of their logarithms.
+
+    ``cov_log`` is of ``ln w`` alone (a fixed ``z0``: zero row and column) or of both.
+    """
+    n = cov_log.shape[0]
+    scales = np.array([w, z0])[:n]
+    cov = np.zeros((2, 2))
+    cov[:n, :n] = cov_log * np.outer(scales, scales)
+    return cov
+
+
 def _around(value: float, sd_log: float) -> tuple[float, float]:
     """The 95 % interval of a value whose logarithm has the standard deviation ``sd_log``."""
     with np.errstate(over="ignore"):  # a parameter the data do not bound: inf
@@ -479,9 +506,7 @@ def sphere_fit_pull_off(
     sd_log = np.sqrt(np.clip(np.diag(cov_log), 0.0, None))
     w = math.exp(p[0])
     z0 = z_fixed if z_fixed is not None else math.exp(p[1])
-    scales = np.array([w, z0])[:n]
-    cov = np.zeros((2, 2))
-    cov[:n, :n] = cov_log * np.outer(scales, scales)
+    cov = _covariance(cov_log, w, z0)
     lam = np.asarray(_sphere_maugis_parameter(*_groups(R, E, w, z0)[:2]), float)
     w_lin = _around(w, float(sd_log[0]))
     z_lin = (z0, z0) if fixed else _around(z0, float(sd_log[1]))
