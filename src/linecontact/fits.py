@@ -42,7 +42,7 @@ from ._pull_off_model import (
 from ._validation import check_array
 from .cylinder import _check_cylinder_si, _plausible
 from .results import Result
-from .sphere.fits import _covariance, _log_covariance
+from .sphere.fits import _covariance, _log_covariance, _on_bounds
 
 __all__ = [
     "AdhesionFit",
@@ -358,7 +358,7 @@ def fit_pull_off(
             "the model fits the data exactly and no sd was given: there is no scatter to "
             "estimate an uncertainty from (give the forces' standard deviations)"
         )
-    at_bound = np.isclose(p, lo, rtol=0, atol=1e-6) | np.isclose(p, hi, rtol=0, atol=1e-6)
+    at_bound = _on_bounds(p, lo, hi)
     if np.any(at_bound):
         note = (note + "; " if note else "") + (
             "the fit ended on the bounds of the search (w in [1e-8, 1e3] J/m^2, z0 in "
@@ -379,7 +379,7 @@ def fit_pull_off(
                 lambda P: _model_rows(P, R, E, z_fixed if fixed else None), Fb, sig, p, lo, hi
             )
             # a refit on a bound: one by one, which may stop inside (where the cost is flat)
-            edge = np.isclose(pb, lo, rtol=0, atol=1e-6) | np.isclose(pb, hi, rtol=0, atol=1e-6)
+            edge = _on_bounds(pb, lo, hi)
             pb[np.any(edge, axis=1)] = np.nan
         left = np.flatnonzero(np.isnan(pb[:, 0]))
         bar.update(n_boot - left.size)  # the skipped and the batched ones

@@ -307,6 +307,11 @@ def _covariance(cov_log: NDArray, w: float, z0: float) -> NDArray:
     return cov
 
 
+def _on_bounds(p: NDArray, lo: NDArray, hi: NDArray) -> NDArray:
+    """Where the log parameters ``p`` lie on the search box ``[lo, hi]`` (to 1e-6)."""
+    return np.isclose(p, lo, rtol=0, atol=1e-6) | np.isclose(p, hi, rtol=0, atol=1e-6)
+
+
 def _around(value: float, sd_log: float) -> tuple[float, float]:
     """The 95 % interval of a value whose logarithm has the standard deviation ``sd_log``."""
     with np.errstate(over="ignore"):  # a parameter the data do not bound: inf
@@ -382,7 +387,7 @@ def _bootstrap(
     lo, hi = box
     out = _refit_rows(rows, data, noise, p, lo, hi)
     if redo_edges:
-        edge = np.isclose(out, lo, rtol=0, atol=1e-6) | np.isclose(out, hi, rtol=0, atol=1e-6)
+        edge = _on_bounds(out, lo, hi)
         out[np.any(edge, axis=1)] = np.nan
     for i in np.flatnonzero(np.any(np.isnan(out), axis=1)):
         out[i] = one_fit(data[i])
@@ -526,7 +531,7 @@ def sphere_fit_pull_off(
             "the model fits the data exactly and no sd was given: no scatter to estimate an "
             "uncertainty from (give the forces' standard deviations)"
         )
-    if np.any(np.isclose(p, lo, rtol=0, atol=1e-6) | np.isclose(p, hi, rtol=0, atol=1e-6)):
+    if np.any(_on_bounds(p, lo, hi)):
         notes.append(
             "the fit ended on the search box (w in [1e-8, 1e3] J/m^2, z0 in [1e-12, 1e-7] "
             "m): these may not be pull-offs of this model (check the units)"
