@@ -42,6 +42,7 @@ from ._pull_off_model import (
 from ._validation import check_array
 from .cylinder import _check_cylinder_si, _plausible
 from .results import Result
+from .sphere.fits import _covariance, _log_covariance, _on_bounds
 
 __all__ = [
     "AdhesionFit",
@@ -317,16 +318,11 @@ def fit_pull_off(
     chi2 = float(np.sum((resid / sig) ** 2))
     dof = F.size - n_par
     scale = 1.0 if have_sd else (chi2 / dof if dof > 0 else math.nan)
-    with np.errstate(all="ignore"):
-        try:
-            cov_log = np.linalg.inv(J.T @ J) * scale
-        except np.linalg.LinAlgError:
-            cov_log = np.full((n_par, n_par), np.inf)
+    # the correlation does not depend on the scale (zero for an exact fit without sds)
+    cov_log, corr = _log_covariance(J, scale)
     w = math.exp(p[0])
     z0 = z_fixed if fixed else math.exp(p[1])
-    D = np.array([w, z0])[:n_par]
-    cov = np.zeros((2, 2))
-    cov[:n_par, :n_par] = cov_log * np.outer(D, D)
+    cov = _covariance(cov_log, w, z0)
     sd_log = np.sqrt(np.clip(np.diag(cov_log), 0, None))
     w_sd = float(np.sqrt(cov[0, 0]))
     z_sd = float(np.sqrt(cov[1, 1]))
@@ -337,13 +333,6 @@ def fit_pull_off(
             if fixed
             else (float(z0 * np.exp(-1.96 * sd_log[1])), float(z0 * np.exp(1.96 * sd_log[1])))
         )
-    # the correlation does not depend on the scale (zero for an exact fit without sds)
-    with np.errstate(all="ignore"):
-        try:
-            unit = np.linalg.inv(J.T @ J)
-        except np.linalg.LinAlgError:
-            unit = np.full((n_par, n_par), np.nan)
-    corr = math.nan if fixed else float(unit[0, 1] / math.sqrt(unit[0, 0] * unit[1, 1]))
     ci_w, ci_z = ci_lin_w, ci_lin_z
     identifiable = True
     note = ""
@@ -369,7 +358,7 @@ def fit_pull_off(
             "the model fits the data exactly and no sd was given: there is no scatter to "
             "estimate an uncertainty from (give the forces' standard deviations)"
         )
-    at_bound = np.isclose(p, lo, rtol=0, atol=1e-6) | np.isclose(p, hi, rtol=0, atol=1e-6)
+    at_bound = _on_bounds(p, lo, hi)
     if np.any(at_bound):
         note = (note + "; " if note else "") + (
             "the fit ended on the bounds of the search (w in [1e-8, 1e3] J/m^2, z0 in "
@@ -390,7 +379,7 @@ def fit_pull_off(
                 lambda P: _model_rows(P, R, E, z_fixed if fixed else None), Fb, sig, p, lo, hi
             )
             # a refit on a bound: one by one, which may stop inside (where the cost is flat)
-            edge = np.isclose(pb, lo, rtol=0, atol=1e-6) | np.isclose(pb, hi, rtol=0, atol=1e-6)
+            edge = _on_bounds(pb, lo, hi)
             pb[np.any(edge, axis=1)] = np.nan
         left = np.flatnonzero(np.isnan(pb[:, 0]))
         bar.update(n_boot - left.size)  # the skipped and the batched ones

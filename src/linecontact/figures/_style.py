@@ -154,6 +154,21 @@ def _new_axes(run: Run, margins: Margins, title: str, xlabel: str, ylabel: str):
     return fig, ax
 
 
+def _map_axes(run: Run, margins: Margins, title: str, xlabel: str, ylabel: str, x, y):
+    """A map's axes (:func:`_new_axes`), both scales logarithmic, spanning the grid ``x, y``."""
+    fig, ax = _new_axes(run, margins, title, xlabel, ylabel)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xlim(x[0], x[-1])
+    ax.set_ylim(y[0], y[-1])
+    return fig, ax
+
+
+def _pct(v: float) -> str:
+    """A fraction in percent, as the maps' titles and legends write it."""
+    return f"{100 * v:g} %"
+
+
 def _colors(n: int) -> list:
     cmap = _mpl()[3]["viridis"]
     return [cmap(x) for x in np.linspace(0.0, 0.85, n)]
@@ -260,15 +275,14 @@ def _save(fig, outdir: pathlib.Path, stem: str, formats: tuple[str, ...]) -> lis
 def _legends(ax, title: str, colors, labels, entries) -> None:
     """Colour key (top) and line-style key (bottom), both outside the axes on the right."""
     Line2D = _mpl()[2]
-    key = ax.legend(
+    key = side_legend(
+        ax,
         [Line2D([], [], color=c, lw=2.5) for c in colors],
         labels,
-        title=title,
-        loc="upper left",
-        bbox_to_anchor=(1.02, 1.0),
+        title,
         fontsize=9,
         title_fontsize=10,
-        borderaxespad=0.0,
+        frameon=None,
     )
     ax.add_artist(key)
     ax.legend(
@@ -281,17 +295,29 @@ def _legends(ax, title: str, colors, labels, entries) -> None:
     )
 
 
-def side_legend(ax, handles, labels, title: str) -> None:
-    """A legend outside the axes on the right, from their top (no frame)."""
-    ax.legend(
+def side_legend(
+    ax,
+    handles,
+    labels,
+    title: str,
+    *,
+    fontsize: float = 8.5,
+    title_fontsize: float = 9,
+    frameon: bool | None = False,
+):
+    """A legend outside the axes on the right, from their top (no frame unless ``frameon``).
+
+    ``frameon=None``: the style's frame. Returns the legend.
+    """
+    return ax.legend(
         handles,
         labels,
         title=title,
         loc="upper left",
         bbox_to_anchor=(1.02, 1.0),
-        fontsize=8.5,
-        title_fontsize=9,
-        frameon=False,
+        fontsize=fontsize,
+        title_fontsize=title_fontsize,
+        frameon=frameon,
         borderaxespad=0.0,
     )
 

@@ -36,7 +36,7 @@ from ..adhesion_map import (
     domain_mu_max,
 )
 from ..lennard_jones import maugis_parameter_of_mu
-from ._style import DEFAULT_SIZE, Job, Margins, Run, _mpl, _new_axes, _save, side_legend
+from ._style import DEFAULT_SIZE, Job, Margins, Run, _map_axes, _mpl, _pct, _save, side_legend
 
 __all__ = ["COARSE", "STEM", "draw", "figure", "jobs"]
 
@@ -77,10 +77,6 @@ def _levels(tol: float) -> list[float]:
 def _style(level: float, tol: float) -> str:
     """Solid at ``tol``, dotted below it, dashed above."""
     return "-" if level == tol else (":" if level < tol else "--")
-
-
-def _pct(v: float) -> str:
-    return f"{100 * v:g} %"
 
 
 def _segments(path) -> list[np.ndarray]:
@@ -161,18 +157,16 @@ def figure(m: AdhesionMap, run: Run):
             f"{lam.size} and {y.size}"
         )
     X, Y = np.meshgrid(lam, y, indexing="ij")
-    fig, ax = _new_axes(
+    fig, ax = _map_axes(
         run,
         _MARGINS,
         f"adhesion map of line contact: models within {_pct(m.tol)} of the Lennard-Jones "
         "law's contact half-width",
         r"Maugis parameter $\lambda$ of the matched Dugdale step",
         r"load above pull-off $(F - F_{po})/|F_{po}|$",
+        lam,
+        y,
     )
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    ax.set_xlim(lam[0], lam[-1])
-    ax.set_ylim(y[0], y[-1])
     handles: list = []
     labels: list[str] = []
     # the full law has no repulsive region below the onset load: no width to compare

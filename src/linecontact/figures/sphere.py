@@ -67,7 +67,19 @@ from ..closed_forms.sphere import (
 )
 from ..sphere import cos_alpha, sphere_load_curve, sphere_models
 from ..sphere.models import DMT_BELOW, JKR_ABOVE
-from ._style import _PO_KW, Job, Margins, Run, _colors, _legends, _mpl, _new_axes, side_legend
+from ._style import (
+    _PO_KW,
+    Job,
+    Margins,
+    Run,
+    _colors,
+    _legends,
+    _map_axes,
+    _mpl,
+    _new_axes,
+    _pct,
+    side_legend,
+)
 
 __all__ = [
     "ALPHA_LAMBDAS",
@@ -273,10 +285,6 @@ def map_data(
     return out
 
 
-def _pct(v: float) -> str:
-    return f"{100 * v:g} %"
-
-
 def adhesion_map_figure(run: Run | None = None, *, tol: float = TOL):
     """sphere02: the sphere's adhesion map (a matplotlib Figure)."""
     from matplotlib import rc_context
@@ -287,18 +295,16 @@ def adhesion_map_figure(run: Run | None = None, *, tol: float = TOL):
     d = run.data(("sphere", "map", tol), lambda: map_data(tol=tol), "the sphere's adhesion map")
     lam, P = d["lam"], d["P"]
     X, Y = np.meshgrid(lam, P, indexing="ij")
-    fig, ax = _new_axes(
+    fig, ax = _map_axes(
         run,
         _margins_top(0.75),
         f"adhesion map of the sphere: models within {_pct(tol)} of the Maugis-Dugdale "
         "contact radius",
         r"Maugis parameter $\lambda$",
         r"load $\bar P = F/(\pi w R)$ (compressive)",
+        lam,
+        P,
     )
-    ax.set_xscale("log")
-    ax.set_yscale("log")
-    ax.set_xlim(lam[0], lam[-1])
-    ax.set_ylim(P[0], P[-1])
     handles: list = []
     labels: list[str] = []
     errors = np.stack([d[name] for name in _MAP_COLORS])

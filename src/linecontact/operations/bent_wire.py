@@ -71,6 +71,27 @@ def _flagged(exc: ParameterError) -> ParameterError:
     return ParameterError(flag, message)
 
 
+def _plausible(
+    flag: str,
+    value: float,
+    bounds: tuple[float, float],
+    unit: str,
+    what: str,
+    notes: tuple[str, str] = ("", ""),
+) -> None:
+    """Refuse a value that is not positive or lies outside ``bounds`` (in another unit?).
+
+    ``notes`` follow the lower and the upper bound in the message (what lies there).
+    """
+    positive(flag, value)
+    if not bounds[0] <= value <= bounds[1]:
+        raise ParameterError(
+            flag,
+            f"{flag} {value!r} {unit} is no {what} (from {bounds[0]:g} {unit}{notes[0]} to "
+            f"{bounds[1]:g} {unit}{notes[1]}): is it in {unit}?",
+        )
+
+
 def _wire_modulus(args: Inputs) -> tuple[float, float | None, dict[str, Any]]:
     """The wire's Young's modulus [Pa], its Poisson ratio where known, and their record."""
     if args.modulus is not None and args.cylinder_material is not None:
@@ -91,13 +112,14 @@ def _wire_modulus(args: Inputs) -> tuple[float, float | None, dict[str, Any]]:
             "the bending stiffness needs the wire's Young's modulus: --modulus [Pa] or "
             "--cylinder-material",
         )
-    positive("--modulus", args.modulus)
-    if not _MODULI[0] <= args.modulus <= _MODULI[1]:
-        raise ParameterError(
-            "--modulus",
-            f"--modulus {args.modulus!r} Pa is no Young's modulus of a wire (from "
-            f"{_MODULI[0]:g} Pa, a gel, to {_MODULI[1]:g} Pa, beyond diamond): is it in Pa?",
-        )
+    _plausible(
+        "--modulus",
+        args.modulus,
+        _MODULI,
+        "Pa",
+        "Young's modulus of a wire",
+        (", a gel,", ", beyond diamond"),
+    )
     return args.modulus, args.nu1, {"modulus_Pa": args.modulus}
 
 
@@ -142,13 +164,7 @@ def _run(args: Inputs) -> Table:
         raise ParameterError("--data", "give the profile: --data FILE (a CSV of x_nm,y_nm)")
     if args.radius is None:
         raise ParameterError("--radius", "the bending stiffness needs the wire's --radius [m]")
-    positive("--radius", args.radius)
-    if not _RADII[0] <= args.radius <= _RADII[1]:
-        raise ParameterError(
-            "--radius",
-            f"--radius {args.radius!r} m is no wire's radius (from {_RADII[0]:g} m to "
-            f"{_RADII[1]:g} m): is it in m?",
-        )
+    _plausible("--radius", args.radius, _RADII, "m", "wire's radius")
     positive("--noise", args.noise)
     E1, nu1, mat = _wire_modulus(args)
     shape: Any = None

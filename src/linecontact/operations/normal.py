@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -367,12 +369,32 @@ def _wire(args: Inputs) -> tuple[float, float, Any, dict[str, Any] | None]:
     return rho, s, cyl, g
 
 
-def _cmd_pulloff(args: Inputs) -> Table:
-    rho, s, cyl, g = _wire(args)
-    if is_sphere(args):
-        return _sphere.pulloff(args, rho, s, cyl)
-    if args.law == "lennard-jones":
-        return _cmd_pulloff_lj(args, rho, s, cyl)
+def _sphere_or_law(
+    sphere: Callable[..., Table], lennard_jones: Callable[..., Table]
+) -> Callable[[Callable[..., Table]], Callable[[Inputs], Table]]:
+    """A command whose sphere (``--body sphere``) and Lennard-Jones law are their own.
+
+    The decorated function answers for the Dugdale law's wire, given
+    ``(args, R/h, sigma0/E, the body or None, a polygon's groups or None)``.
+    """
+
+    def decorate(dugdale: Callable[..., Table]) -> Callable[[Inputs], Table]:
+        @functools.wraps(dugdale)
+        def command(args: Inputs) -> Table:
+            rho, s, cyl, g = _wire(args)
+            if is_sphere(args):
+                return sphere(args, rho, s, cyl)
+            if args.law == "lennard-jones":
+                return lennard_jones(args, rho, s, cyl)
+            return dugdale(args, rho, s, cyl, g)
+
+        return command
+
+    return decorate
+
+
+@_sphere_or_law(_sphere.pulloff, _cmd_pulloff_lj)
+def _cmd_pulloff(args: Inputs, rho: float, s: float, cyl: Cylinder | None, g) -> Table:
     si = None if cyl is None else made(args, "result", cyl.pull_off)
     if si is not None:
         p = si.nondimensional
@@ -516,12 +538,8 @@ def _curve_table(
     return records(args, c, params, extra, title, show)
 
 
-def _cmd_curve(args: Inputs) -> Table:
-    rho, s, cyl, g = _wire(args)
-    if is_sphere(args):
-        return _sphere.curve(args, rho, s, cyl)
-    if args.law == "lennard-jones":
-        return _cmd_curve_lj(args, rho, s, cyl)
+@_sphere_or_law(_sphere.curve, _cmd_curve_lj)
+def _cmd_curve(args: Inputs, rho: float, s: float, cyl: Cylinder | None, g) -> Table:
     if args.F_max_over_Eh is not None or args.F_max is not None:
         raise ParameterError(
             "--F-max-over-Eh" if args.F_max_over_Eh is not None else "--F-max",

@@ -100,16 +100,21 @@ def pulloff(args: Inputs, rho: float, s: float, body: Any) -> Table:
     )
 
 
-def _pulloff_lj(args: Inputs, rho: float, s: float, body: Any) -> Table:
-    """The Lennard-Jones sphere's pull-off (self-consistent up to Tabor's parameter 50)."""
-    from ..sphere import lennard_jones as _lj
-
-    checked(R_over_h=rho, sigma0_over_E=s)  # the domain of the groups, as the Dugdale law's
+def _lj_tabor_parameter(rho: float, s: float) -> float:
+    """Tabor's parameter of a Lennard-Jones sphere, its groups checked as the Dugdale law's."""
+    checked(R_over_h=rho, sigma0_over_E=s)
     if s <= 0:
         raise ParameterError(
             "--sigma0-over-E", "the Lennard-Jones law needs adhesion: --sigma0-over-E > 0"
         )
-    mu = float(sphere_tabor_parameter(rho, s))
+    return float(sphere_tabor_parameter(rho, s))
+
+
+def _pulloff_lj(args: Inputs, rho: float, s: float, body: Any) -> Table:
+    """The Lennard-Jones sphere's pull-off (self-consistent up to Tabor's parameter 50)."""
+    from ..sphere import lennard_jones as _lj
+
+    mu = _lj_tabor_parameter(rho, s)
     si = None if body is None else made(args, "result", body.pull_off)
     p = _lj.sphere_lj_pull_off(mu) if si is None else si.nondimensional
     return _table(
@@ -143,12 +148,7 @@ def _curve_lj(args: Inputs, rho: float, s: float, body: Any) -> Table:
                 f"{flag} is the Dugdale curve's: the Lennard-Jones sphere's curve ends at the "
                 "load pi w R, its points where its states fall",
             )
-    checked(R_over_h=rho, sigma0_over_E=s)
-    if s <= 0:
-        raise ParameterError(
-            "--sigma0-over-E", "the Lennard-Jones law needs adhesion: --sigma0-over-E > 0"
-        )
-    mu = float(sphere_tabor_parameter(rho, s))
+    mu = _lj_tabor_parameter(rho, s)
     if mu > _lj.MU_SELF_CONSISTENT:
         q = _lj.MU_SELF_CONSISTENT / mu  # Tabor's parameter goes as R^(1/3) (sigma0/E)^(2/3)
         other = (

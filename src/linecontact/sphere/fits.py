@@ -295,6 +295,23 @@ def _log_covariance(J: NDArray, scale: float) -> tuple[NDArray, float]:
     return inv * scale, corr
 
 
+def _covariance(cov_log: NDArray, w: float, z0: float) -> NDArray:
+    """The covariance of ``(w, z0)`` [J/m^2, m] from that of their logarithms.
+
+    ``cov_log`` is of ``ln w`` alone (a fixed ``z0``: zero row and column) or of both.
+    """
+    n = cov_log.shape[0]
+    scales = np.array([w, z0])[:n]
+    cov = np.zeros((2, 2))
+    cov[:n, :n] = cov_log * np.outer(scales, scales)
+    return cov
+
+
+def _on_bounds(p: NDArray, lo: NDArray, hi: NDArray) -> NDArray:
+    """Where the log parameters ``p`` lie on the search box ``[lo, hi]`` (to 1e-6)."""
+    return np.isclose(p, lo, rtol=0, atol=1e-6) | np.isclose(p, hi, rtol=0, atol=1e-6)
+
+
 def _around(value: float, sd_log: float) -> tuple[float, float]:
     """The 95 % interval of a value whose logarithm has the standard deviation ``sd_log``."""
     with np.errstate(over="ignore"):  # a parameter the data do not bound: inf
@@ -370,7 +387,7 @@ def _bootstrap(
     lo, hi = box
     out = _refit_rows(rows, data, noise, p, lo, hi)
     if redo_edges:
-        edge = np.isclose(out, lo, rtol=0, atol=1e-6) | np.isclose(out, hi, rtol=0, atol=1e-6)
+        edge = _on_bounds(out, lo, hi)
         out[np.any(edge, axis=1)] = np.nan
     for i in np.flatnonzero(np.any(np.isnan(out), axis=1)):
         out[i] = one_fit(data[i])
@@ -494,9 +511,7 @@ def sphere_fit_pull_off(
     sd_log = np.sqrt(np.clip(np.diag(cov_log), 0.0, None))
     w = math.exp(p[0])
     z0 = z_fixed if z_fixed is not None else math.exp(p[1])
-    scales = np.array([w, z0])[:n]
-    cov = np.zeros((2, 2))
-    cov[:n, :n] = cov_log * np.outer(scales, scales)
+    cov = _covariance(cov_log, w, z0)
     lam = np.asarray(_sphere_maugis_parameter(*_groups(R, E, w, z0)[:2]), float)
     w_lin = _around(w, float(sd_log[0]))
     z_lin = (z0, z0) if fixed else _around(z0, float(sd_log[1]))
@@ -516,7 +531,7 @@ def sphere_fit_pull_off(
             "the model fits the data exactly and no sd was given: no scatter to estimate an "
             "uncertainty from (give the forces' standard deviations)"
         )
-    if np.any(np.isclose(p, lo, rtol=0, atol=1e-6) | np.isclose(p, hi, rtol=0, atol=1e-6)):
+    if np.any(_on_bounds(p, lo, hi)):
         notes.append(
             "the fit ended on the search box (w in [1e-8, 1e3] J/m^2, z0 in [1e-12, 1e-7] "
             "m): these may not be pull-offs of this model (check the units)"

@@ -100,65 +100,79 @@ _TIP = [
     _f("radius", "tip radius R", "length", "2e-08"),
 ]
 
+
+def _axis(key: str, kind: str, label: str) -> dict[str, str]:
+    """A plotted quantity: its key in the answer, its kind of unit, its label."""
+    return {"key": key, "kind": kind, "label": label}
+
+
+def _plot(x: tuple[str, str, str], *ys: tuple[str, str, str], **kw: Any) -> dict[str, Any]:
+    """A page's plot: ``x`` and each of ``ys`` as (key, kind, label).
+
+    ``ylabel``, ``points``, ``color`` and ``legend`` as ``static/app.js`` reads them.
+    """
+    return {"x": _axis(*x), "ys": [_axis(*y) for y in ys], **kw}
+
+
+def _page(
+    title: str,
+    question: str,
+    command: str,
+    fields: list[dict[str, Any]],
+    plot: dict[str, Any] | None = None,
+    *,
+    alts: dict[str, Any] | None = _WIRE_ALTS,
+    **kw: Any,
+) -> dict[str, Any]:
+    """A page: its title, the question it answers, its command, its fields and its plot.
+
+    ``alts``, the alternatives its fields are grouped in (a wire's elasticity and adhesion
+    unless said); ``fixed`` (parameters the page always sends), ``upload``,
+    ``upload_label``, ``job``, ``mark``, ``figures`` as :data:`PAGES` says.
+    """
+    page = {"title": title, "question": question, "command": command, **kw}
+    if alts is not None:
+        page["alts"] = alts
+    return {**page, "fields": list(fields), "plot": plot}
+
+
+#: A sphere's load curve against its approach (under either law).
+_SPHERE_CURVE_PLOT = _plot(("delta_m", "length", "approach delta"), ("F_N", "newton", "load F"))
+
 #: The pages: path -> title, what it answers, command, fields, fixed parameters, plot (an
 #: upload page: ``upload``, its label ``upload_label``; further figures: ``figures``).
 #: The headline (the answer in words) and the Python lines of each page are written by
 #: ``static/app.js``, by the page's name.
 PAGES: dict[str, dict[str, Any]] = {
-    "pulloff": {
-        "title": "Contact and pull-off of a wire",
-        "question": "How hard must the wire be pulled to come off the substrate?",
-        "command": "pulloff",
-        "alts": _WIRE_ALTS,
-        "fields": [*_WIRE, *_SHAPE, {**_LENGTH, "default": "5e-06"}],
-        "plot": None,
-    },
-    "contact": {
-        "title": "Contact width under a load",
-        "question": "How wide is the contact under these loads?",
-        "command": "normal",
-        "alts": _WIRE_ALTS,
-        "fields": [
+    "pulloff": _page(
+        "Contact and pull-off of a wire",
+        "How hard must the wire be pulled to come off the substrate?",
+        "pulloff",
+        [*_WIRE, *_SHAPE, {**_LENGTH, "default": "5e-06"}],
+    ),
+    "contact": _page(
+        "Contact width under a load",
+        "How wide is the contact under these loads?",
+        "normal",
+        [
             *_WIRE,
             *_SHAPE,
             _f("load", "normal loads F (comma-separated)", "force", "0,1,5,10", many=True),
         ],
-        "plot": {
-            "x": {"key": "F_N_per_m", "kind": "force", "label": "load F"},
-            "ys": [{"key": "a_m", "kind": "length", "label": "contact half-width a"}],
-        },
-    },
-    "curve": {
-        "title": "The load curve",
-        "question": "How does the load change with the contact width, and where does it pull off?",
-        "command": "curve",
-        "alts": _WIRE_ALTS,
-        "fields": [*_WIRE, *_SHAPE],
-        "plot": {
-            "x": {"key": "a_m", "kind": "length", "label": "contact half-width a"},
-            "ys": [{"key": "F_N_per_m", "kind": "force", "label": "load F"}],
-        },
-    },
-    "push": {
-        "title": "A wire pushed sideways: stay, roll or slide",
-        "question": "Pushed sideways at a height H, does the wire roll or slide first, and at "
-        "what push?",
-        "command": "push",
-        "alts": {
-            "elastic": _WIRE_ALTS["elastic"],
-            "adhesion": {
-                "label": "adhesion given as",
-                "options": [
-                    ["works", "receding and advancing works of adhesion"],
-                    ["ranges", "adhesive stress and ranges (sigma0, h2, h1)"],
-                ],
-            },
-            "pusher": {
-                "label": "pushed by",
-                "options": [["flat", "a flat push at heights H"], ["tip", "a tip at heights H"]],
-            },
-        },
-        "fields": [
+        _plot(("F_N_per_m", "force", "load F"), ("a_m", "length", "contact half-width a")),
+    ),
+    "curve": _page(
+        "The load curve",
+        "How does the load change with the contact width, and where does it pull off?",
+        "curve",
+        [*_WIRE, *_SHAPE],
+        _plot(("a_m", "length", "contact half-width a"), ("F_N_per_m", "force", "load F")),
+    ),
+    "push": _page(
+        "A wire pushed sideways: stay, roll or slide",
+        "Pushed sideways at a height H, does the wire roll or slide first, and at what push?",
+        "push",
+        [
             *_ELASTIC,
             _f("radius", "radius R", "length", "5e-08"),
             _f(
@@ -201,21 +215,32 @@ PAGES: dict[str, dict[str, Any]] = {
             _f("push", "a push Q (optional): stay, roll or slide?", "force", "", optional=True),
             {**_LENGTH, "default": "5e-06"},
         ],
-        "plot": {
-            "x": {"key": "H_m", "kind": "length", "label": "push height H"},
-            "ys": [
-                {"key": "Q_roll_N_per_m", "kind": "force", "label": "to roll, Q_roll"},
-                {"key": "Q_slide_N_per_m", "kind": "force", "label": "to slide, Q_slide"},
-            ],
-            "ylabel": "push Q",
+        _plot(
+            ("H_m", "length", "push height H"),
+            ("Q_roll_N_per_m", "force", "to roll, Q_roll"),
+            ("Q_slide_N_per_m", "force", "to slide, Q_slide"),
+            ylabel="push Q",
+        ),
+        alts={
+            "elastic": _WIRE_ALTS["elastic"],
+            "adhesion": {
+                "label": "adhesion given as",
+                "options": [
+                    ["works", "receding and advancing works of adhesion"],
+                    ["ranges", "adhesive stress and ranges (sigma0, h2, h1)"],
+                ],
+            },
+            "pusher": {
+                "label": "pushed by",
+                "options": [["flat", "a flat push at heights H"], ["tip", "a tip at heights H"]],
+            },
         },
-    },  # fmt: skip
-    "cycle": {
-        "title": "Energy lost per cycle",
-        "question": "How much energy does a tangential cycle of this amplitude dissipate?",
-        "command": "cycle",
-        "alts": _WIRE_ALTS,
-        "fields": [
+    ),  # fmt: skip
+    "cycle": _page(
+        "Energy lost per cycle",
+        "How much energy does a tangential cycle of this amplitude dissipate?",
+        "cycle",
+        [
             *_WIRE,
             _f("load", "normal load F", "force", "1"),
             _f("tau0", "interfacial shear strength tau0", "stress", "1e7"),
@@ -227,87 +252,67 @@ PAGES: dict[str, dict[str, Any]] = {
                 many=True,
             ),
         ],  # fmt: skip
-        "plot": {
-            "x": {"key": "T_amplitude_N_per_m", "kind": "force", "label": "amplitude T*"},
-            "ys": [{"key": "W_J_per_m", "kind": "energy", "label": "energy lost per cycle W"}],
-        },
-    },
-    "sphere": {
-        "title": "An AFM tip or a colloidal probe: pull-off",
-        "question": "How hard must a sphere (an AFM tip, a colloidal probe) be pulled to come "
+        _plot(
+            ("T_amplitude_N_per_m", "force", "amplitude T*"),
+            ("W_J_per_m", "energy", "energy lost per cycle W"),
+        ),
+    ),
+    "sphere": _page(
+        "An AFM tip or a colloidal probe: pull-off",
+        "How hard must a sphere (an AFM tip, a colloidal probe) be pulled to come "
         "off the substrate?",
-        "command": "pulloff",
-        "fixed": {"body": "sphere"},
-        "alts": _WIRE_ALTS,
-        "fields": _TIP,
-        "plot": None,
-    },
-    "sphere-contact": {
-        "title": "An AFM tip or a colloidal probe: contact radius under a load",
-        "question": "How large is the contact of a sphere under these loads?",
-        "command": "normal",
-        "fixed": {"body": "sphere"},
-        "alts": _WIRE_ALTS,
-        "fields": [
+        "pulloff",
+        _TIP,
+        fixed={"body": "sphere"},
+    ),
+    "sphere-contact": _page(
+        "An AFM tip or a colloidal probe: contact radius under a load",
+        "How large is the contact of a sphere under these loads?",
+        "normal",
+        [
             *_TIP,
             _f("force", "loads F (comma-separated)", "newton", "0,1e-9,5e-9,1e-8", many=True),
         ],
-        "plot": {
-            "x": {"key": "F_N", "kind": "newton", "label": "load F"},
-            "ys": [{"key": "a_m", "kind": "length", "label": "contact radius a"}],
-        },
-    },
-    "sphere-curve": {
-        "title": "An AFM tip or a colloidal probe: the load curve",
-        "question": "How does the load of a sphere change with its approach, and where does "
-        "it pull off?",
-        "command": "curve",
-        "fixed": {"body": "sphere"},
-        "alts": _WIRE_ALTS,
-        "fields": list(_TIP),
-        "plot": {
-            "x": {"key": "delta_m", "kind": "length", "label": "approach delta"},
-            "ys": [{"key": "F_N", "kind": "newton", "label": "load F"}],
-        },
-    },
-    "sphere-lennard-jones": {
-        "title": "An AFM tip or a colloidal probe under the Lennard-Jones law: pull-off",
-        "question": "How hard must a sphere be pulled off under the full Lennard-Jones law "
+        _plot(("F_N", "newton", "load F"), ("a_m", "length", "contact radius a")),
+        fixed={"body": "sphere"},
+    ),
+    "sphere-curve": _page(
+        "An AFM tip or a colloidal probe: the load curve",
+        "How does the load of a sphere change with its approach, and where does it pull off?",
+        "curve",
+        _TIP,
+        _SPHERE_CURVE_PLOT,
+        fixed={"body": "sphere"},
+    ),
+    "sphere-lennard-jones": _page(
+        "An AFM tip or a colloidal probe under the Lennard-Jones law: pull-off",
+        "How hard must a sphere be pulled off under the full Lennard-Jones law "
         "(Greenwood's self-consistent sphere, not Dugdale's step)?",
-        "command": "pulloff",
-        "fixed": {"body": "sphere", "law": "lennard-jones"},
-        "alts": _WIRE_ALTS,
-        "fields": _TIP,
-        "plot": None,
-    },
-    "sphere-lennard-jones-curve": {
-        "title": "An AFM tip or a colloidal probe under the Lennard-Jones law: the load curve",
-        "question": "How does the load of a sphere change with its approach under the full "
+        "pulloff",
+        _TIP,
+        fixed={"body": "sphere", "law": "lennard-jones"},
+    ),
+    "sphere-lennard-jones-curve": _page(
+        "An AFM tip or a colloidal probe under the Lennard-Jones law: the load curve",
+        "How does the load of a sphere change with its approach under the full "
         "Lennard-Jones law, through its jump-in and pull-off?",
-        "command": "curve",
-        "fixed": {"body": "sphere", "law": "lennard-jones"},
-        "alts": _WIRE_ALTS,
-        "fields": list(_TIP),
-        "plot": {
-            "x": {"key": "delta_m", "kind": "length", "label": "approach delta"},
-            "ys": [{"key": "F_N", "kind": "newton", "label": "load F"}],
-        },
-    },
-    "lennard-jones": {
-        "title": "The Lennard-Jones law: pull-off",
-        "question": "The pull-off under the full Lennard-Jones law (not Dugdale's step).",
-        "command": "pulloff",
-        "fixed": {"law": "lennard-jones"},
-        "alts": _WIRE_ALTS,
-        "fields": list(_WIRE),
-        "plot": None,
-    },
-    "fit": {
-        "title": "Work of adhesion from pull-off forces (CSV upload)",
-        "question": "Which work of adhesion (and range z0) explain the measured pull-offs?",
-        "command": "fit-adhesion",
-        "upload": True,
-        "fields": [
+        "curve",
+        _TIP,
+        _SPHERE_CURVE_PLOT,
+        fixed={"body": "sphere", "law": "lennard-jones"},
+    ),
+    "lennard-jones": _page(
+        "The Lennard-Jones law: pull-off",
+        "The pull-off under the full Lennard-Jones law (not Dugdale's step).",
+        "pulloff",
+        _WIRE,
+        fixed={"law": "lennard-jones"},
+    ),
+    "fit": _page(
+        "Work of adhesion from pull-off forces (CSV upload)",
+        "Which work of adhesion (and range z0) explain the measured pull-offs?",
+        "fit-adhesion",
+        [
             _f("cylinder_material", "wire material", "material", "SiO2"),
             _f("substrate_material", "substrate material", "material", "Si"),
             _f(
@@ -318,36 +323,18 @@ PAGES: dict[str, dict[str, Any]] = {
                 optional=True,
             ),
         ],  # fmt: skip
-        "plot": {
-            "x": {"key": "radius_m", "kind": "length", "label": "radius R"},
-            "ys": [{"key": "F_N_per_m", "kind": "force", "label": "pull-off force"}],
-        },
-    },
-    "bent-wire": {
-        "title": "Friction from the shape of a bent wire (profile upload)",
-        "question": "Which friction per unit length f (and interfacial shear strength tau0) "
+        _plot(("radius_m", "length", "radius R"), ("F_N_per_m", "force", "pull-off force")),
+        alts=None,
+        upload=True,
+    ),
+    "bent-wire": _page(
+        "Friction from the shape of a bent wire (profile upload)",
+        "Which friction per unit length f (and interfacial shear strength tau0) "
         "bent the wire dragged at its midpoint into the shape imaged, or, for a wire held at "
         "rest in its bent shape, which static friction holds it there (its mean |f_n| along "
         "the wire, and f_n along it)?",
-        "command": "fit-bent-wire",
-        "upload": True,
-        "upload_label": "the wire's profile (CSV: x_nm,y_nm, points from end to end)",
-        "alts": {
-            "elastic": {
-                "label": "the wire's Young's modulus (its bending stiffness EI) from",
-                "options": [["presets", "the wire's material"], ["modulus", "a modulus E"]],
-            },
-            "tau0": {
-                "label": "tau0 = f/(2a), the contact's half-width a from",
-                "options": [
-                    ["none", "(none: the friction f alone)"],
-                    ["presets", "w, z0 and the substrate's material"],
-                    ["moduli", "w, z0 and the substrate's E2, nu2"],
-                    ["composite", "w, z0 and the contact's composite modulus"],
-                ],
-            },
-        },
-        "fields": [
+        "fit-bent-wire",
+        [
             _f(
                 "model",
                 "the model: dragged at its midpoint (kinetic friction) or held at rest "
@@ -401,35 +388,46 @@ PAGES: dict[str, dict[str, Any]] = {
                 alt="tau0:composite",
             ),
         ],
-        "plot": {
-            "x": {"key": "x_m", "kind": "length", "label": "x"},
-            "ys": [{"key": "y_m", "kind": "length", "label": "y"}],
+        _plot(("x_m", "length", "x"), ("y_m", "length", "y")),
+        alts={
+            "elastic": {
+                "label": "the wire's Young's modulus (its bending stiffness EI) from",
+                "options": [["presets", "the wire's material"], ["modulus", "a modulus E"]],
+            },
+            "tau0": {
+                "label": "tau0 = f/(2a), the contact's half-width a from",
+                "options": [
+                    ["none", "(none: the friction f alone)"],
+                    ["presets", "w, z0 and the substrate's material"],
+                    ["moduli", "w, z0 and the substrate's E2, nu2"],
+                    ["composite", "w, z0 and the contact's composite modulus"],
+                ],
+            },
         },
-        "figures": ["residuals", "normal-friction"],
-    },
-    "map": {
-        "title": "The adhesion map (quick grid), your wire marked",
-        "question": "Which model (Hertz, rigid, JKR, Maugis-Dugdale) holds for your wire?",
-        "command": "map",
-        "fixed": {"quick": "true"},
-        "job": True,
-        "alts": _WIRE_ALTS,
-        "fields": [{**f, "aux": True} for f in _WIRE],
-        "plot": {
-            "x": {"key": "maugis_parameter", "kind": "none", "label": "Maugis parameter"},
-            "ys": [
-                {
-                    "key": "load_above_pulloff_over_abs_pulloff",
-                    "kind": "none",
-                    "label": "load above pull-off / |pull-off|",
-                }
-            ],
-            "points": True,
-            "color": "agrees_md",
-            "legend": "blue: Maugis-Dugdale agrees with the full law, grey: it does not",
-        },
-        "mark": {"command": "pulloff", "key": "maugis_parameter", "label": "your wire"},
-    },
+        upload=True,
+        upload_label="the wire's profile (CSV: x_nm,y_nm, points from end to end)",
+        figures=["residuals", "normal-friction"],
+    ),
+    "map": _page(
+        "The adhesion map (quick grid), your wire marked",
+        "Which model (Hertz, rigid, JKR, Maugis-Dugdale) holds for your wire?",
+        "map",
+        [{**f, "aux": True} for f in _WIRE],
+        _plot(
+            ("maugis_parameter", "none", "Maugis parameter"),
+            (
+                "load_above_pulloff_over_abs_pulloff",
+                "none",
+                "load above pull-off / |pull-off|",
+            ),
+            points=True,
+            color="agrees_md",
+            legend="blue: Maugis-Dugdale agrees with the full law, grey: it does not",
+        ),
+        fixed={"quick": "true"},
+        job=True,
+        mark={"command": "pulloff", "key": "maugis_parameter", "label": "your wire"},
+    ),
 }
 
 
