@@ -120,6 +120,7 @@ def atomic_file(
     mode: str = "wb",
     *,
     name: str = "the output",
+    durable: bool = True,
     **open_kwargs: Any,
 ) -> Iterator[IO[Any]]:
     """A file object for ``path`` whose contents appear there only once complete.
@@ -132,6 +133,10 @@ def atomic_file(
         ``"wb"`` or ``"w"``.
     name : str
         How the caller names the path in messages.
+    durable : bool
+        Flush the file to the disk before it is renamed (``fsync``), so that a power failure
+        leaves the old file or the whole new one. ``False`` where the reader checks the file
+        whole anyway (a sweep's kept blocks: a torn one is computed again).
     **open_kwargs
         Passed to :func:`os.fdopen` (``encoding``, ``newline``).
 
@@ -156,7 +161,8 @@ def atomic_file(
         with os.fdopen(fd, mode, **open_kwargs) as fh:
             yield fh
             fh.flush()
-            os.fsync(fh.fileno())
+            if durable:
+                os.fsync(fh.fileno())
         os.chmod(tmp, new_file_mode(target))  # mkstemp made it 0600
         os.replace(tmp, target)
     except BaseException as exc:

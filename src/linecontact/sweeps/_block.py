@@ -45,6 +45,18 @@ def to_text(v: np.ndarray) -> np.ndarray:
 def codes(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """``(categories, codes)`` of text ``v``: ``categories[codes] == v``."""
     flat = v.ravel()
+    if flat.dtype.kind in "TUS" and flat.size:  # NumPy strings: compared in C, a pass a value
+        at = np.full(flat.shape, -1, np.int32)
+        found: list[str] = []
+        rest = np.arange(flat.size)
+        while rest.size and len(found) < 32:
+            word = flat[rest[0]]
+            same = flat[rest] == word
+            at[rest[same]] = len(found)
+            found.append(str(word))
+            rest = rest[~same]
+        if not rest.size:
+            return np.array(found, dtype=object), at.reshape(v.shape)
     cats = list(dict.fromkeys(str(x) for x in set(flat.tolist())))
     if len(cats) <= 32:  # a few labels (state, mechanism): one comparison each
         at = np.zeros(flat.shape, np.int32)
@@ -58,9 +70,13 @@ def codes(v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def _objects(v: np.ndarray) -> np.ndarray:
     """NumPy strings as an array of Python strings, each distinct one made once."""
-    cats, at = codes(v)
+    return _from_codes(*codes(v))
+
+
+def _from_codes(cats: np.ndarray, at: np.ndarray) -> np.ndarray:
+    """``cats[at]``, an array of Python strings (also 0-d; empty where there are none)."""
     if not cats.size:
-        return np.empty(v.shape, dtype=object)
+        return np.empty(at.shape, dtype=object)
     out = cats[at]
     return out if isinstance(out, np.ndarray) else np.array(out, dtype=object)  # 0-d: a str
 
@@ -87,6 +103,8 @@ class Block:
     code : str
         The digest of the build that computed it (:func:`linecontact._fingerprint
         .code_digest`).
+    kept : bool
+        Whether the worker kept it already (its ``data`` then empty).
     """
 
     index: int
@@ -96,13 +114,17 @@ class Block:
     warnings: list[tuple[str, str]] = field(default_factory=list)
     at: dict[str, Any] = field(default_factory=dict)
     code: str = ""
+    kept: bool = False
+    #: ``(categories, codes)`` of text columns, where known (:meth:`coded` makes the rest)
+    coded_text: dict[str, tuple[np.ndarray, np.ndarray]] = field(
+        default_factory=dict, repr=False, compare=False
+    )
 
     def coded(self, name: str) -> tuple[np.ndarray, np.ndarray]:
         """``(categories, codes)`` of the text column ``name`` (:func:`codes`), made once."""
-        made = self.__dict__.setdefault("_coded", {})
-        if name not in made:
-            made[name] = codes(self.data[name])
-        return made[name]
+        if name not in self.coded_text:
+            self.coded_text[name] = codes(self.data[name])
+        return self.coded_text[name]
 
     def __getstate__(self) -> dict[str, Any]:
         """A block sent from a worker: its text as codes into its few distinct values.
@@ -113,14 +135,14 @@ class Block:
         """
         state = dict(self.__dict__)
         text = [k for k, v in self.data.items() if v.dtype.kind == "O"]
-        state["_coded"] = {k: self.coded(k) for k in text}
+        state["coded_text"] = {k: self.coded(k) for k in text}
         state["data"] = {k: v for k, v in self.data.items() if k not in text}
         state["_order"] = list(self.data)
         return state
 
     def __setstate__(self, state: dict[str, Any]) -> None:
         order = state.pop("_order")
-        coded = state["_coded"]
+        coded = state["coded_text"]
         data = state["data"]
         state["data"] = {k: data[k] if k in data else coded[k][0][coded[k][1]] for k in order}
         self.__dict__.update(state)
@@ -204,14 +226,33 @@ def assemble(
     n: int,
     pieces: list[tuple[np.ndarray, dict[str, np.ndarray], int]],
     failed: dict[int, tuple[str, str]],
+    coded: dict[str, tuple[np.ndarray, np.ndarray]] | None = None,
 ) -> dict[str, np.ndarray]:
+    """The columns of a block from its pieces (flat indices, columns, records) and failures.
+
+    ``coded``, where given, receives ``(categories, codes)`` of the text columns made from
+    codes (a block at once: :attr:`Block.coded_text`, no text compared again).
+    """
     recs = max([r for _, _, r in pieces], default=1)
     cols: dict[str, np.ndarray] = {}
     if len(pieces) == 1 and not failed and recs == 1 and np.array_equal(pieces[0][0], np.arange(n)):
         # one call gave every point in order (a block at once): its columns, not copies
-        out = {k: _column(np.asarray(v)).reshape(shape) for k, v in pieces[0][1].items()}
+        made = {} if coded is None else coded
+        out = {}
+        for k, v in pieces[0][1].items():
+            v = np.asarray(v)
+            if v.dtype.kind in "TUS":  # NumPy strings: Python strings made from their codes
+                cats, at = codes(v)
+                made[k] = cats, at.reshape(shape)
+                out[k] = _from_codes(cats, made[k][1])
+            else:
+                out[k] = _column(v).reshape(shape)
         for k, fill in (("state", "ok"), ("reason", "")):
-            out[k] = _objects(out[k]) if k in out else np.full(shape, fill, dtype=object)
+            if k not in out:
+                made[k] = np.array([fill], dtype=object), np.zeros(shape, np.int32)
+                out[k] = np.full(shape, fill, dtype=object)
+            elif k not in made:
+                out[k] = _objects(out[k])
         return out
     for idx, columns, r in pieces:
         for k, v in columns.items():

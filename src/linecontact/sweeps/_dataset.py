@@ -221,7 +221,13 @@ def write(ds: Any, output: str | os.PathLike[str], overwrite: bool) -> None:
         try:
             with dask.config.set(scheduler="threads", num_workers=threads):
                 if fmt == "zarr":
-                    enc.to_zarr(target, mode="w", consolidated=False, encoding=_zarr_encoding(enc))
+                    enc.to_zarr(
+                        target,
+                        mode="w",
+                        consolidated=False,
+                        encoding=_zarr_encoding(enc),
+                        write_empty_chunks=True,  # (not each chunk compared with its fill)
+                    )
                 else:
                     enc.to_netcdf(target, engine=_netcdf_engine())
         except OSError as exc:
@@ -261,9 +267,11 @@ def _zarr_encoding(ds: Any) -> dict[str, dict[str, Any]]:
     return {name: dict(codec) for name in ds.data_vars}
 
 
-#: The most values of one chunk of a store (8 MB of floats): blocks of a few points (a
-#: point-by-point sweep) are joined, a block of a million points is cut.
-STORE_CHUNK = 1_000_000
+#: The most values of one chunk of a store (16 MB of floats): blocks of a few points (a
+#: point-by-point sweep) are joined, a block of two million points is cut. (Each chunk
+#: costs its own task and file: a 1e7-point sweep wrote in 3.5, 3.1 and 2.8 s with chunks
+#: of 0.4, 1 and 2 million values.)
+STORE_CHUNK = 2_000_000
 
 
 def _store_chunks(ds: Any) -> dict[str, int]:

@@ -199,11 +199,12 @@ def pulloff_block(p: Plan, index: int, block: tuple[slice, ...]) -> Any:
     cols = {k: np.asarray(c) for k, c in table.columns.items()}
     idx = np.flatnonzero(ok)
     failed = {i: ("invalid", why) for i, why in reasons.items()}
-    data = assemble(shape, n, [(idx, cols, 1)], failed) if idx.size else None
+    coded: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+    data = assemble(shape, n, [(idx, cols, 1)], failed, coded) if idx.size else None
     if data is None:
         return None
     units = {k: table.units.get(k) or unit_of(k) for k in cols}
-    return Block(index, data, units, {}, list(said))
+    return Block(index, data, units, {}, list(said), coded_text=coded)
 
 
 #: The points outside the domain of a block that are said as the command line says them (each
