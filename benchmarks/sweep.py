@@ -1,6 +1,6 @@
 """Sweeps at scale: a 1e7-point pull-off sweep, the overhead at 1e6, Lennard-Jones curves.
 
-    python benchmarks/sweep.py [--only big,overhead,curves] [--side 3163] [--curves 200]
+    python benchmarks/sweep.py [--only big,overhead,curves,scaling] [--side 3163] [--curves 200]
 
 Issue 23 asks, on 2 cores:
 
@@ -18,6 +18,12 @@ Issue 23 asks, on 2 cores:
    mu from 0.09 to 30, the Maugis parameter from 0.1 to 8) with ``--workers 1`` and ``2``:
    the speed-up (issue: 1.7x or better on 2 workers), and the largest relative difference of
    the two datasets (only BLAS round-off may differ).
+
+4. ``scaling``: the wall time of ``--scaling-curves`` Lennard-Jones curves and of the
+   ``--scaling-side`` squared closed-form sweep above against ``--workers`` 1, 2, 4, ... up to
+   the cores of the machine: the speed-up and the efficiency (speed-up over workers), each
+   run a new process writing Zarr (issue 36: parallelism that pays, near-linear on 16 cores
+   where a machine has them).
 
 Run with one BLAS thread (``OPENBLAS_NUM_THREADS=1``, set here for the child processes) on
 an idle machine: a shared 2-core machine slows every figure.
@@ -220,18 +226,54 @@ def curves(n: int, tmp: str) -> None:
     )
 
 
+def scaling(n: int, side: int, tmp: str) -> None:
+    """The speed-up against workers: 1, 2, 4, ... up to the cores of this machine."""
+    cores = os.cpu_count() or 1
+    counts = [w for w in (1, 2, 4, 8, 16, 32, 64) if w <= cores]
+    jobs = {
+        f"{n} Lennard-Jones curves": [
+            "curve", "--law", "lennard-jones", "--R-over-h", "1000",
+            "--sigma0-over-E", f"0.003:1:{n}:log",
+        ],
+        f"{side * side:.0e} closed-form pull-offs": [
+            "pulloff", "--radius", f"10e-9:200e-9:{side}:log", "--modulus", "1.2e11",
+            "--work-of-adhesion", f"0.01:1:{side}:log", "--z0", "3e-10",
+        ],
+    }  # fmt: skip
+    print(f"scaling: wall time against --workers on {cores} cores (each a new process, to Zarr)")
+    print(f"  {'sweep':>28} {'workers':>7} {'wall s':>7} {'speed-up':>8} {'efficiency':>10}")
+    for name, words in jobs.items():
+        first = None
+        for w in counts:
+            out = os.path.join(tmp, f"scaling{w}.zarr")
+            cmd = [sys.executable, "-m", "linecontact", "sweep", *words, "-o", out]
+            wall, _, code, err = run_measured([*cmd, "--workers", str(w), "--quiet"])
+            if code:
+                print(err)
+            first = first or wall
+            print(f"  {name:>28} {w:7d} {wall:7.1f} {first / wall:7.2f}x {first / wall / w:10.2f}")
+            shutil.rmtree(out, ignore_errors=True)
+
+
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--only", default="big,overhead,curves")
+    ap.add_argument("--only", default="big,overhead,curves,scaling")
     ap.add_argument("--side", type=int, default=3163)
     ap.add_argument("--curves", type=int, default=200)
+    ap.add_argument("--scaling-curves", type=int, default=64)
+    ap.add_argument("--scaling-side", type=int, default=3163)
     args = ap.parse_args()
     print(f"OPENBLAS_NUM_THREADS={ENV['OPENBLAS_NUM_THREADS']}; {os.cpu_count()} cores")
     tmp = tempfile.mkdtemp(prefix="lc-sweep-bench-")
     try:
+        parts = {
+            "big": lambda: big(args.side, tmp),
+            "overhead": lambda: overhead(tmp),
+            "curves": lambda: curves(args.curves, tmp),
+            "scaling": lambda: scaling(args.scaling_curves, args.scaling_side, tmp),
+        }
         for part in args.only.split(","):
-            {"big": lambda: big(args.side, tmp), "overhead": lambda: overhead(tmp),
-             "curves": lambda: curves(args.curves, tmp)}[part]()  # fmt: skip
+            parts[part]()
     finally:
         shutil.rmtree(tmp, ignore_errors=True)
 
