@@ -261,7 +261,7 @@ def _zarr_encoding(ds: Any) -> dict[str, dict[str, Any]]:
             "compressors": BloscCodec(cname="lz4", clevel=5, shuffle="shuffle")
         }
     else:  # pragma: no cover - zarr 2
-        from numcodecs import Blosc  # type: ignore[import-untyped]
+        from numcodecs import Blosc
 
         codec = {"compressor": Blosc(cname="lz4", clevel=5, shuffle=Blosc.SHUFFLE)}
     return {name: dict(codec) for name in ds.data_vars}
