@@ -187,29 +187,50 @@ def _guess(kap, r, lab_hi):
     return _num._minimum(_num._maximum(g, _LAB_LO), lab_hi)
 
 
-def _minimum_step(x0, D0, x, D, lo, hi, nlo, nhi, ph, u1, u2, du1, du2, kap, r, lab_hi, phi0):
-    """One step of the bracketed secant on dPhi/dabar in ``ln abar``, per point.
+def _propose(xm, Dm, x0, D0, x, D, lo, hi, nlo, nhi, lab_hi):
+    """The next ``ln abar`` of the search (:func:`_minimum_step`) from its last three points.
 
-    ``lo`` (``nlo`` = 1 once a slope there was negative) and ``hi`` (``nhi`` = 1 once one
-    was positive) bracket the minimum; until both are found the search walks down (or up)
-    from the start, by the secant where it points that way (at most four times the last
-    step) or by doubling steps, never past ``_LAB_LO`` (``lab_hi``, where the load rises
-    as Hertz's). Inside the bracket: the secant, bisection where it would leave it. Each
-    point is solved from the tangent at the last (:func:`_phi_at`). A point stops where
-    the load is flat to round-off (:func:`_flat`), at a step below 1e-10 in ``ln abar``, or at
-    an end of the range that the load still rises (falls) from.
+    Inverse quadratic interpolation of dPhi/dabar in abar through the three, or the secant
+    through the last two (in abar; in ``ln abar`` where that would pass zero width): near
+    the minimum the slope is linear in abar, and in ``ln abar`` it is convex (the secant
+    there crept to a minimum at small abar a fraction of the way a step; the secant alone,
+    in abar, undershot for several steps before it converged).
     """
     where, mx, mn = _num._where, _num._maximum, _num._minimum
     dx = x - x0
     known = abs(dx) < np.inf
     step = where(known, abs(dx), 0.5)
-    xs = x - D * dx / (D - D0)
+    ab, ab0, abm = np.exp(x), np.exp(x0), np.exp(xm)
+    s1 = (ab - ab0) / (D - D0)  # divided differences of abar(D), Newton's form
+    secant = ab - D * s1
+    q = secant + D * D0 * ((ab0 - abm) / (D0 - Dm) - s1) / (Dm - D)
+    a_next = where((abs(q) < np.inf) & (q > 0), q, secant)
+    xs = where(a_next > 0, np.log(mx(a_next, 1e-300)), x - D * dx / (D - D0))
     fin = abs(xs) < np.inf
     both = (nlo > 0) & (nhi > 0)
     inside = where(fin & (xs > lo) & (xs < hi), xs, 0.5 * (lo + hi))
     down = where(fin & (xs < x), mx(xs, x - 4 * step), x - 2 * step)
     up = where(fin & (xs > x), mn(xs, x + 4 * step), x + 2 * step)
-    nx = where(both, inside, where(nlo > 0, mn(up, lab_hi), mx(down, _LAB_LO)))
+    return where(both, inside, where(nlo > 0, mn(up, lab_hi), mx(down, _LAB_LO)))
+
+
+def _minimum_step(
+    xm, Dm, x0, D0, x, D, lo, hi, nlo, nhi, ph, u1, u2, du1, du2, kap, r, lab_hi, phi0
+):
+    """One step of the bracketed search for the zero of dPhi/dabar, per point.
+
+    ``lo`` (``nlo`` = 1 once a slope there was negative) and ``hi`` (``nhi`` = 1 once one
+    was positive) bracket the minimum; until both are found the search walks down (or up)
+    from the start, by the interpolation where it points that way (at most four times the
+    last step) or by doubling steps, never past ``_LAB_LO`` (``lab_hi``, where the load rises
+    as Hertz's). Inside the bracket: the interpolation (:func:`_propose`), bisection where it
+    would leave it. Each point is solved from the tangent at the last (:func:`_phi_at`). A
+    point stops where the load is flat to round-off (:func:`_flat`), at a step below 1e-10 in
+    ``ln abar``, or at an end of the range that the load still rises (falls) from.
+    """
+    mx = _num._maximum
+    where = _num._where
+    nx = _propose(xm, Dm, x0, D0, x, D, lo, hi, nlo, nhi, lab_hi)
     ph, Dn, u1, u2, du1, du2 = _phi_at(nx, kap, r, (x, u1, u2, du1, du2))
     neg, pos = Dn < 0, Dn > 0
     lo, nlo = where(neg, nx, lo), where(neg, 1.0, nlo)
@@ -221,7 +242,7 @@ def _minimum_step(x0, D0, x, D, lo, hi, nlo, nhi, ph, u1, u2, du1, du2, kap, r, 
         | (pos & (nlo == 0) & (nx <= _LAB_LO))
         | (neg & (nhi == 0) & (nx >= lab_hi))
     )
-    return (x, D, nx, Dn, lo, hi, nlo, nhi, ph, u1, u2, du1, du2), stop
+    return (x0, D0, x, D, nx, Dn, lo, hi, nlo, nhi, ph, u1, u2, du1, du2), stop
 
 
 def _pulloff_flat(kap, r):
@@ -245,6 +266,8 @@ def _pulloff_flat(kap, r):
     start = (
         nan,
         nan,
+        nan,
+        nan,
         x,
         D,
         _num._full(x, _LAB_LO),
@@ -261,7 +284,7 @@ def _pulloff_flat(kap, r):
     if not isinstance(kap, np.ndarray):
         start, done = _num._scalars(*start), bool(done)
     state, _ = _num._iterate(_minimum_step, start, (kap, r, lab_hi, phi0), 100, done=done)
-    lab_min, ph = state[2], state[8]
+    lab_min, ph = state[4], state[10]
     interior = (lab_min > _LAB_LO) & (lab_min < lab_hi) & (ph < phi0)
     phi_min = _num._where(interior, ph, phi0)
     lab_min = _num._where(interior, lab_min, -np.inf)
