@@ -3,10 +3,10 @@
     python benchmarks/push.py
 
 Prints the best-of-3 wall time of ``push`` over 10,000 random points (the closed forms; the
-sliding pull-off search and the sliding inverse take most of it; target under 10 us per
-point, issue 22), then the pull-off search alone against the former one (a grid of 41
-closed forms per point refined by a secant, kept here as the reference: before/after), with
-the worst difference of the pull-off force between them, and over the same points the worst
+sliding inverse takes most of it, and the sliding pull-off search where the load lies below
+the zero-width load; target under 10 us per point, issues 22 and 36), then the pull-off
+search alone against the former one (a grid of 41 closed forms per point refined by a
+secant, kept here as the reference: before/after), with the worst difference of the pull-off force between them, and over the same points the worst
 relative residuals of
 
 - Kendall's energy balance ``Q_roll H = R dw`` against the moment ``M - e F`` of the

@@ -328,3 +328,35 @@ def test_a_tip_low_on_the_fibre_lifts_it_off_first():
     assert 0.05 < Q_lift < 0.088 and Q_lift < p.Q_roll_over_Eh2[0]
     assert list(p.first_motion) == ["lift-off", "lift-off"]
     assert list(p.state) == ["rest", "lift-off"]
+
+
+def test_loads_above_the_zero_width_load_skip_the_pull_off_search_and_agree():
+    # push asks the sliding branch's pull-off search only where its load could lie below
+    # the pull-off force (at or below the zero-width load, which bounds it; or with a tip);
+    # elsewhere the bracket starts at zero width. The widths must be those of
+    # sliding_contact_for_load, which searches every point, for interior minima (whose
+    # lower end then differs) as for minima at zero width, and for loads on both sides.
+    from linecontact.closed_forms import _kappa
+    from linecontact.sliding.pulloff import _zero_width
+
+    rng = np.random.default_rng(36)
+    n = 3000
+    rho = 10 ** rng.uniform(1, 4, n)
+    r = 10 ** rng.uniform(0, 1, n)
+    s = 10 ** rng.uniform(-3, -1, n)
+    po = lc.sliding_pull_off(rho, r, s)
+    X1, X2, _ = _zero_width(_kappa(rho, s), r)
+    F_zero = -(np.pi / 4) * _kappa(rho, s) * (X1 + X2)
+    np.testing.assert_allclose(F_zero, po.F_zero_width_over_Eh2, rtol=1e-14)
+    depth = rng.uniform(0.0, 1.0, n)  # between the pull-off and the zero-width load ...
+    F = np.where(
+        rng.random(n) < 0.5,
+        po.F_pulloff_over_Eh2 + depth * (F_zero - po.F_pulloff_over_Eh2) * 0.999 + 1e-12,
+        F_zero + rng.uniform(1e-6, 3.0, n) * np.abs(F_zero),  # ... or above the latter
+    )
+    interior = po.mechanism == "snap-off"
+    skipped = F > F_zero * (1 - 1e-9)
+    assert (interior & skipped).sum() > 100 and (interior & ~skipped).sum() > 100
+    p = lc.push(rho, r, s, 1e-3, F, 1.0)
+    c = lc.sliding_contact_for_load(F, rho, r, s, method="closed-form")
+    np.testing.assert_allclose(p.a_slide_over_R, c.a_over_R, rtol=1e-13)

@@ -327,21 +327,25 @@ def _checked(rho, r, s, tau, F, H, Q, mu) -> _Inputs:
         k = dF_per_P / q_per_P
     else:
         arm, k = H, np.zeros(H.shape)
+    # without a tip the sliding contact is asked for at the load given only (with one, at
+    # the loads it adds too: NaN, any load)
+    only = np.where(k == 0, F, np.nan)
     return _Inputs(rho, r, s, tau, F, H, Q, mu, arm, k, s * (r - 1.0), tip, scalar, shape,
-                   *_branch_ends(rho, r, s, scalar))  # fmt: skip
+                   *_branch_ends(rho, r, s, only, scalar))  # fmt: skip
 
 
-def _branch_ends(rho, r, s, scalar: bool):
+def _branch_ends(rho, r, s, F, scalar: bool):
     """The lower ends of the stable branches (sliding, at rest) at every point, once.
 
     The pull-off searches of :func:`~linecontact.sliding_contact_for_load` and
     :func:`~linecontact.contact_for_load`, on NumPy scalars for a scalar call (their fast
-    paths) kept as arrays of one point; kappa is checked here (as the inverses would).
+    paths) kept as arrays of one point; kappa is checked here (as the inverses would). The
+    sliding one only where the load ``F`` (NaN: any) asks for it (:func:`_sliding_ends`).
     """
     if not scalar:
-        return _sliding_ends(rho, r, s), _pulloff_arrays(rho, s)
-    rho0, r0, s0 = (np.float64(v[0]) for v in (rho, r, s))
-    slide = tuple(np.reshape(e, 1) for e in _sliding_ends(rho0, r0, s0))
+        return _sliding_ends(rho, r, s, F), _pulloff_arrays(rho, s)
+    rho0, r0, s0, F0 = (np.float64(v[0]) for v in (rho, r, s, F))
+    slide = tuple(np.reshape(e, 1) for e in _sliding_ends(rho0, r0, s0, F0))
     rest = {k: np.reshape(v, 1) for k, v in _pulloff_arrays(rho0, s0, True).items()}
     return slide, rest
 

@@ -23,7 +23,7 @@ from ..errors import NoEquilibriumError
 from ..sie import _in_chunks
 from ._checks import _broadcast_state, _check_state_inputs, _flat_points
 from .contact import SlidingContact, _pack, _solve_closed_form, _solve_split
-from .pulloff import _LAB_DEEP, _phi_at, _pulloff_flat
+from .pulloff import _LAB_DEEP, _phi_at, _pulloff_flat, _zero_width
 
 
 def _pulloff_end(r, s, kap):
@@ -51,15 +51,38 @@ def _pulloff_end(r, s, kap):
     return lab_lo, phi_po
 
 
-def _sliding_ends(rho, r, s):
+def _sliding_ends(rho, r, s, F=None):
     """Check kappa and compute :func:`_pulloff_end` once, on flat checked arrays.
 
     For :func:`_sliding_for_load` called many times at the same points (``push``'s tip);
     the arrays are indexed by the caller like the points.
+
+    ``F`` (like the points; NaN: any load) where the caller knows the only load it will
+    ask for: a point whose load lies above its zero-width load (the pull-off force is at
+    most that) needs no pull-off search. Its ends are those of a minimum at zero width,
+    ``_LAB_DEEP`` and the zero-width load: the load there is below the target everywhere
+    below the stable root (it falls from the zero-width load to its minimum, then rises),
+    so the bracket holds the same root (``push``: the search was half its time).
     """
     _cf._check_kappa(rho, s, "R_over_h2")
     with np.errstate(over="ignore", invalid="ignore", divide="ignore"):
-        return _pulloff_end(r, s, _cf._kappa(rho, s))
+        kap = _cf._kappa(rho, s)
+        if F is None:
+            return _pulloff_end(r, s, kap)
+        X1, X2, _ = _zero_width(kap, r)
+        phi0 = -0.5 * kap * (X1 + X2)
+        F0 = (np.pi / 2) * phi0
+        # (strictly above, by more than the search's own round-off: at the zero-width load
+        # itself the two ends differ in which width they report)
+        above = (s > 0) & (F > F0 + 1e-9 * abs(F0))
+        if not isinstance(s, np.ndarray):
+            return (np.float64(_LAB_DEEP), phi0) if above else _pulloff_end(r, s, kap)
+        lab_lo = np.full(s.shape, _LAB_DEEP)
+        phi_po = np.where(above, phi0, 0.0)
+        need = ~above
+        if need.any():
+            lab_lo[need], phi_po[need] = _pulloff_end(r[need], s[need], kap[need])
+        return lab_lo, phi_po
 
 
 def _lower_end(F, rho, r, s, kap, phi_t, report: bool = False, ends=None):
