@@ -6,8 +6,8 @@ Prints the best-of-3 wall time of ``push`` over 10,000 random points (the closed
 sliding inverse takes most of it, and the sliding pull-off search where the load lies below
 the zero-width load; target under 10 us per point, issues 22 and 36), then the pull-off
 search alone against the former one (a grid of 41 closed forms per point refined by a
-secant, kept here as the reference: before/after), with the worst difference of the pull-off force between them, and over the same points the worst
-relative residuals of
+secant, kept here as the reference: before/after), with the worst difference of the
+pull-off force between them, and over the same points the worst relative residuals of
 
 - Kendall's energy balance ``Q_roll H = R dw`` against the moment ``M - e F`` of the
   sliding solution at ``a_slide``;
