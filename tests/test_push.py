@@ -360,3 +360,21 @@ def test_loads_above_the_zero_width_load_skip_the_pull_off_search_and_agree():
     p = lc.push(rho, r, s, 1e-3, F, 1.0)
     c = lc.sliding_contact_for_load(F, rho, r, s, method="closed-form")
     np.testing.assert_allclose(p.a_slide_over_R, c.a_over_R, rtol=1e-13)
+
+
+def test_the_onset_under_a_lifting_tip_close_to_the_pull_off_at_rest_settles():
+    # F lies 0.7 % above the pull-off force at rest and the tip lifts (dF/P < 0): the width
+    # at rest is ill-conditioned in the load there, and the plain iteration of the onset
+    # cycled at 3.8e-14 of it, so push raised ConvergenceError for a state it had found.
+    # Independent: the onset carries the contact at rest at the load the tip leaves,
+    # F + dF(Q_onset), by the normal solver in its own groups (range h2).
+    rho, r, s = 11.761964175819415, 1.3267231952126142, 0.025804769969068223
+    tau = 0.0039845549435044095
+    F, H, mu = -0.23530981465212072, 0.8289336282929719, 0.058125025364371696
+    p = lc.push(rho, r, s, tau, F, H, tip_friction=mu)
+    t = lc.tip_push(H, mu)
+    assert t.dF_per_P < 0 and F < 0.99 * float(lc.pull_off(rho, s).F_pulloff_over_Eh)
+    load = F + t.dF_per_P / t.Q_per_P * p.Q_onset_over_Eh2
+    a = lc.contact_for_load(load, rho, s).a_over_R
+    assert p.a_rest_over_R == pytest.approx(a, rel=1e-12)
+    assert p.Q_onset_over_Eh2 == pytest.approx(2 * a * rho * tau, rel=1e-12)
