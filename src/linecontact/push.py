@@ -467,7 +467,9 @@ def _contact_at_rest(p: _Inputs) -> _Contact:
         # settled at 1e-14 of the onset, or where the iteration has reached the round-off of
         # the width it inverts: close to the pull-off the width is ill-conditioned in the
         # load, and the steps cycle there (seen at 3.8e-14 of the onset: 60 steps never
-        # reached 1e-14, and push raised for a state that it had found)
+        # reached 1e-14, and push raised for a state that it had found). A step that no
+        # longer halves and is below 1e-12 of the onset stops it there: to about that step
+        # (the steps shrank by 20 times each before the cycle)
         stalled = (new >= 0.5 * change) & (new <= 1e-12 * scale)
         done = (new <= 1e-14 * scale) | stalled
         a[act], Q[act], conv[act] = a_i, Q_i, c_i & done
