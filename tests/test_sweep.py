@@ -583,8 +583,8 @@ def test_text_is_stored_as_codes_and_read_back_as_the_sweep_gave_it(tmp_path):
         text = [n for n in mem.data_vars if mem[n].dtype.kind == "O"]
         for name in text:
             assert _words(back[name]) == _words(mem[name]), name
-        for name in set(mem.data_vars) - set(text):
-            np.testing.assert_array_equal(back[name].values, mem[name].values)
+        for name in set(mem.data_vars) - set(text):  # (blocks of one point: another path)
+            np.testing.assert_allclose(back[name].values, mem[name].values, rtol=1e-12)
 
 
 def _words(v):
